@@ -1,0 +1,177 @@
+//! A case: one texture, one sampler state, one lookup, and (in fixtures) the oracle's expectation.
+
+use crate::enums::*;
+use crate::expect::Expectation;
+use serde::{Deserialize, Serialize};
+
+/// Stored depth values of one image (one mip level, all layers / cube faces).
+///
+/// Layout: x fastest, then y, then layer. Cube faces are layers in GL order
+/// (+X, -X, +Y, -Y, +Z, -Z); a cube array has 6 layers per cube.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Texels {
+    /// Unorm integers at the format's bit depth (also R8 colour values). Uploaded as integers so the
+    /// stored value is exact.
+    Unorm(Vec<u32>),
+    /// Floating-point depth (D32F, D32F_S8). Finite values; the upload clamps them to [0,1].
+    Float(Vec<f32>),
+}
+
+impl Texels {
+    pub fn len(&self) -> usize {
+        match self {
+            Texels::Unorm(v) => v.len(),
+            Texels::Float(v) => v.len(),
+        }
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// One mip level.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Level {
+    pub width: u32,
+    pub height: u32,
+    /// Array layers (6 for a cube, 6 x n for a cube array, 1 otherwise).
+    pub layers: u32,
+    pub depth: Texels,
+    /// Stencil indices for DEPTH_STENCIL formats, same layout as `depth`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stencil: Option<Vec<u8>>,
+}
+
+impl Level {
+    pub fn texel_count(&self) -> usize {
+        self.width as usize * self.height as usize * self.layers as usize
+    }
+}
+
+/// The texture object: target, format and the images of its levels (levels[0] is level base).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Texture {
+    pub target: Target,
+    pub format: Format,
+    /// TEXTURE_BASE_LEVEL; `levels[0]` is this level.
+    #[serde(default)]
+    pub base_level: u32,
+    pub levels: Vec<Level>,
+}
+
+/// Sampler / texture-parameter state that takes part in the lookup.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Sampler {
+    pub compare_mode: CompareMode,
+    pub compare_func: CompareFunc,
+    /// DEPTH_TEXTURE_MODE (compatibility / legacy paths only). `None`: the context's default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub depth_texture_mode: Option<DepthTextureMode>,
+    /// DEPTH_STENCIL_TEXTURE_MODE. `None`: default (DEPTH_COMPONENT).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub depth_stencil_mode: Option<DepthStencilMode>,
+    pub min_filter: Filter,
+    pub mag_filter: Filter,
+    pub wrap_s: Wrap,
+    pub wrap_t: Wrap,
+    pub wrap_r: Wrap,
+    /// TEXTURE_BORDER_COLOR; the depth border is its first component.
+    pub border: [f32; 4],
+    #[serde(default = "default_min_lod")]
+    pub min_lod: f32,
+    #[serde(default = "default_max_lod")]
+    pub max_lod: f32,
+    /// TEXTURE_LOD_BIAS (not in ES).
+    #[serde(default)]
+    pub lod_bias: f32,
+    /// TEXTURE_MAX_LEVEL; `None`: default (1000).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_level: Option<u32>,
+    /// TEXTURE_COMPARE_FAIL_VALUE_ARB (arb_ambient) or SHADOW_AMBIENT_SGIX (sgix_ambient).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fail_value: Option<f32>,
+}
+
+fn default_min_lod() -> f32 {
+    -1000.0
+}
+fn default_max_lod() -> f32 {
+    1000.0
+}
+
+/// The lookup: coordinates, reference value and level of detail.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Lookup {
+    /// (s, t, r, q) as passed to the API. Meaning by target: 1D (s), 2D/rect (s,t), 1D array
+    /// (s, layer), 2D array (s,t,layer), cube (s,t,r direction), cube array (s,t,r direction; the
+    /// layer is `layer`). Rectangle coordinates are unnormalized.
+    #[serde(with = "crate::real::array4")]
+    pub coord: [f64; 4],
+    /// For cube arrays: the layer (cube index) coordinate.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub layer: f64,
+    /// The reference value R / Dref as passed (before any projective divide).
+    #[serde(with = "crate::real")]
+    pub dref: f64,
+    /// Projective lookup: s, t, (r) and Dref are divided by q.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub projective: bool,
+    /// log2 of the scale factor (lambda_base), as realized by explicit LOD or gradients.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub lod: f64,
+    /// Shader bias added to lambda_base (GLSL bias argument).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub bias: f64,
+}
+
+fn is_zero(v: &f64) -> bool {
+    *v == 0.0
+}
+fn is_false(v: &bool) -> bool {
+    !*v
+}
+
+/// One test case. Fixture files hold these with `expect` filled in by the oracle.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Case {
+    /// Stable, readable id, e.g. `gl46/2d/d24/nearest/lequal/ref=0.5/dt=0.25`.
+    pub id: String,
+    pub spec: Spec,
+    /// The API paths this case applies to.
+    pub api: Vec<ApiPath>,
+    pub texture: Texture,
+    pub sampler: Sampler,
+    pub lookup: Lookup,
+    /// The oracle's expectation (present in fixtures).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub expect: Option<Expectation>,
+}
+
+impl Sampler {
+    /// A sampler with the GL defaults for everything but the compare state and filters.
+    pub fn new(compare_mode: CompareMode, compare_func: CompareFunc, filter: Filter) -> Sampler {
+        let mag = if matches!(filter, Filter::Nearest | Filter::NearestMipmapNearest | Filter::NearestMipmapLinear) {
+            Filter::Nearest
+        } else {
+            Filter::Linear
+        };
+        Sampler {
+            compare_mode,
+            compare_func,
+            depth_texture_mode: None,
+            depth_stencil_mode: None,
+            min_filter: filter,
+            mag_filter: mag,
+            wrap_s: Wrap::ClampToEdge,
+            wrap_t: Wrap::ClampToEdge,
+            wrap_r: Wrap::ClampToEdge,
+            border: [0.0; 4],
+            min_lod: default_min_lod(),
+            max_lod: default_max_lod(),
+            lod_bias: 0.0,
+            max_level: None,
+            fail_value: None,
+        }
+    }
+}

@@ -1,0 +1,165 @@
+//! What the oracle expects (carried in fixtures) and what a backend observed.
+
+use crate::enums::*;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// A closed interval [lo, hi] of acceptable values of r.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Interval {
+    pub lo: f64,
+    pub hi: f64,
+}
+
+impl Interval {
+    pub fn point(v: f64) -> Interval {
+        Interval { lo: v, hi: v }
+    }
+    pub fn new(lo: f64, hi: f64) -> Interval {
+        Interval { lo, hi }
+    }
+    pub fn contains(&self, v: f64) -> bool {
+        v >= self.lo && v <= self.hi
+    }
+}
+
+/// A union of closed intervals. Empty means nothing is acceptable.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct Acceptance(pub Vec<Interval>);
+
+impl Acceptance {
+    pub fn contains(&self, v: f64) -> bool {
+        self.0.iter().any(|i| i.contains(v))
+    }
+    /// Every interval of `self` lies inside some interval of `other` (other accepts at least as much).
+    pub fn is_subset_of(&self, other: &Acceptance) -> bool {
+        self.0
+            .iter()
+            .all(|i| other.0.iter().any(|o| o.lo <= i.lo && i.hi <= o.hi))
+    }
+    pub fn min(&self) -> Option<f64> {
+        self.0.iter().map(|i| i.lo).reduce(f64::min)
+    }
+    pub fn max(&self) -> Option<f64> {
+        self.0.iter().map(|i| i.hi).reduce(f64::max)
+    }
+}
+
+impl std::fmt::Display for Acceptance {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.0.is_empty() {
+            return f.write_str("{}");
+        }
+        let parts: Vec<String> = self
+            .0
+            .iter()
+            .map(|i| {
+                if i.lo == i.hi {
+                    format!("{{{}}}", i.lo)
+                } else {
+                    format!("[{}, {}]", i.lo, i.hi)
+                }
+            })
+            .collect();
+        f.write_str(&parts.join(" ∪ "))
+    }
+}
+
+/// The oracle's expectation for one case, as stored in fixtures.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Expectation {
+    /// r computed by the specification's pseudocode with exact arithmetic. `None` where the spec
+    /// gives no single value (e.g. a NaN reference).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spec_value: Option<f64>,
+    /// Acceptable values of r under each precision profile.
+    pub accept: BTreeMap<Profile, Acceptance>,
+    /// How r appears in the observed RGBA, per API path the case applies to.
+    pub layout: BTreeMap<ApiPath, [Channel; 4]>,
+    /// Set when the specs leave the result open; says why.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub implementation_defined: Option<String>,
+    /// The sections the result rests on, e.g. "GL 4.6 §8.23.1 Table 8.23".
+    pub citations: Vec<String>,
+}
+
+/// The outcome of checking one observation against an expectation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Judgement {
+    /// Inside the strict acceptance set.
+    Strict,
+    /// Inside lenient, outside strict.
+    LenientOnly,
+    /// Outside lenient.
+    Outside,
+}
+
+impl Expectation {
+    /// Does `rgba`, observed through `api`, lie in the acceptance set of `profile`?
+    /// Channels marked `Unused` are ignored; `Zero`/`One` must be exact.
+    /// Returns `None` when the expectation has no layout for that API path.
+    pub fn accepts(&self, profile: Profile, api: ApiPath, rgba: [f64; 4]) -> Option<bool> {
+        let layout = self.layout.get(&api)?;
+        let acc = self.accept.get(&profile)?;
+        Some(layout.iter().zip(rgba).all(|(ch, v)| match ch {
+            Channel::R => acc.contains(v),
+            Channel::Zero => v == 0.0,
+            Channel::One => v == 1.0,
+            Channel::Unused => true,
+        }))
+    }
+
+    /// Strict / lenient-only / outside, for one observation.
+    pub fn judge(&self, api: ApiPath, rgba: [f64; 4]) -> Option<Judgement> {
+        if self.accepts(Profile::Strict, api, rgba)? {
+            Some(Judgement::Strict)
+        } else if self.accepts(Profile::Lenient, api, rgba)? {
+            Some(Judgement::LenientOnly)
+        } else {
+            Some(Judgement::Outside)
+        }
+    }
+}
+
+/// What a backend returned for one case on one API path.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Observation {
+    pub case_id: String,
+    pub api: ApiPath,
+    /// The four channels as read back (from a float target where the backend can).
+    #[serde(with = "crate::real::array4")]
+    pub rgba: [f64; 4],
+    /// What the backend read back of the stored level-0 depth texels, where the API allows; the
+    /// verdict then uses these instead of the fixture's values.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stored: Option<crate::case::Texels>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+/// One texel of a lookup's footprint, for failure dumps.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FootprintTexel {
+    /// Mip level (relative to level base).
+    pub level: u32,
+    /// Texel coordinates (x, y, layer); `None` for a border texel.
+    pub xyz: Option<[u32; 3]>,
+    /// The stored value as written in the fixture (integer for unorm) and as a real.
+    pub stored: f64,
+    /// Dt after the specification's clamping.
+    pub dt: f64,
+    /// Per-texel comparison: `Some(pass)`, or `None` when the texel is within reference precision
+    /// (either outcome allowed).
+    pub pass: Option<bool>,
+    /// Filter weight of this texel in the spec value.
+    pub weight: f64,
+}
+
+/// The texels a lookup touched.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct Footprint {
+    /// Dref after projective divide and clamping.
+    pub dref: f64,
+    pub texels: Vec<FootprintTexel>,
+}

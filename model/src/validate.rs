@@ -1,0 +1,214 @@
+//! Structural validation of a case. Anything a backend or the oracle would choke on is rejected here
+//! with an error naming the case and the field. (Semantic legality, e.g. a compare function a spec
+//! does not define, is the oracle's business: it answers with that spec's GL error.)
+
+use crate::{Case, ModelError, Target, Texels};
+
+/// Largest texel count accepted for one level (16 Mi texels); larger is treated as absurd input.
+pub const MAX_TEXELS_PER_LEVEL: usize = 1 << 24;
+/// Largest width, height or layer count.
+pub const MAX_DIMENSION: u32 = 16384;
+
+fn invalid(case: &Case, field: impl Into<String>, msg: impl Into<String>) -> ModelError {
+    ModelError::Invalid {
+        case: case.id.clone(),
+        field: field.into(),
+        msg: msg.into(),
+    }
+}
+
+/// Checks the structure of `case`.
+pub fn validate(case: &Case) -> Result<(), ModelError> {
+    if case.id.is_empty() {
+        return Err(invalid(case, "id", "empty id"));
+    }
+    if case.api.is_empty() {
+        return Err(invalid(case, "api", "no API path"));
+    }
+    let tex = &case.texture;
+    if tex.levels.is_empty() {
+        return Err(invalid(case, "texture.levels", "no levels"));
+    }
+    if tex.levels.len() > 16 {
+        return Err(invalid(case, "texture.levels", format!("{} levels (at most 16)", tex.levels.len())));
+    }
+    if tex.base_level > 15 {
+        return Err(invalid(case, "texture.base_level", format!("{} (at most 15)", tex.base_level)));
+    }
+    if tex.target.is_rect() && tex.levels.len() > 1 {
+        return Err(invalid(case, "texture.levels", "rectangle textures have exactly one level"));
+    }
+    let bits = tex.format.unorm_bits();
+    for (i, lvl) in tex.levels.iter().enumerate() {
+        let f = |name: &str| format!("texture.levels[{i}].{name}");
+        for (name, v) in [("width", lvl.width), ("height", lvl.height), ("layers", lvl.layers)] {
+            if v == 0 || v > MAX_DIMENSION {
+                return Err(invalid(case, f(name), format!("{v} is outside 1..={MAX_DIMENSION}")));
+            }
+        }
+        let n = lvl.texel_count();
+        if n > MAX_TEXELS_PER_LEVEL {
+            return Err(invalid(case, f("width"), format!("{n} texels in one level (at most {MAX_TEXELS_PER_LEVEL})")));
+        }
+        match tex.target {
+            Target::T1d | Target::T1dArray if lvl.height != 1 => {
+                return Err(invalid(case, f("height"), "1D targets have height 1"));
+            }
+            Target::Cube | Target::CubeArray => {
+                if lvl.width != lvl.height {
+                    return Err(invalid(case, f("width"), "cube faces must be square"));
+                }
+                if lvl.layers % 6 != 0 {
+                    return Err(invalid(case, f("layers"), "cube layers must be a multiple of 6"));
+                }
+                if tex.target == Target::Cube && lvl.layers != 6 {
+                    return Err(invalid(case, f("layers"), "a cube map has 6 faces"));
+                }
+            }
+            Target::T1d | Target::T2d | Target::Rect if lvl.layers != 1 => {
+                return Err(invalid(case, f("layers"), "non-array targets have 1 layer"));
+            }
+            _ => {}
+        }
+        if lvl.depth.len() != n {
+            return Err(invalid(case, f("depth"), format!("{} values for {} texels", lvl.depth.len(), n)));
+        }
+        match (&lvl.depth, bits) {
+            (Texels::Unorm(v), Some(b)) => {
+                let max = if b == 32 { u32::MAX } else { (1u32 << b) - 1 };
+                if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| **x > max) {
+                    return Err(invalid(case, format!("{}[{j}]", f("depth")), format!("{x} exceeds {b}-bit unorm maximum {max}")));
+                }
+            }
+            (Texels::Float(v), None) => {
+                if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
+                    return Err(invalid(case, format!("{}[{j}]", f("depth")), format!("{x} is not finite")));
+                }
+            }
+            (Texels::Unorm(_), None) => {
+                return Err(invalid(case, f("depth"), format!("format {} stores floats, got unorm integers", tex.format)));
+            }
+            (Texels::Float(_), Some(_)) => {
+                return Err(invalid(case, f("depth"), format!("format {} stores unorm integers, got floats", tex.format)));
+            }
+        }
+        match (&lvl.stencil, tex.format.has_stencil()) {
+            (Some(s), true) if s.len() != n => {
+                return Err(invalid(case, f("stencil"), format!("{} values for {} texels", s.len(), n)));
+            }
+            (Some(_), false) => {
+                return Err(invalid(case, f("stencil"), format!("format {} has no stencil", tex.format)));
+            }
+            _ => {}
+        }
+    }
+    let s = &case.sampler;
+    for (name, v) in [("min_lod", s.min_lod), ("max_lod", s.max_lod), ("lod_bias", s.lod_bias)] {
+        if !v.is_finite() {
+            return Err(invalid(case, format!("sampler.{name}"), format!("{v} is not finite")));
+        }
+    }
+    if let Some(v) = s.fail_value {
+        if !v.is_finite() {
+            return Err(invalid(case, "sampler.fail_value", format!("{v} is not finite")));
+        }
+    }
+    if let Some((j, v)) = s.border.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+        return Err(invalid(case, format!("sampler.border[{j}]"), format!("{v} is not finite")));
+    }
+    let l = &case.lookup;
+    for (name, v) in [("lod", l.lod), ("bias", l.bias), ("layer", l.layer)] {
+        if !v.is_finite() {
+            return Err(invalid(case, format!("lookup.{name}"), format!("{v} is not finite")));
+        }
+    }
+    if l.projective && l.coord[3] == 0.0 {
+        return Err(invalid(case, "lookup.coord[3]", "projective lookup with q = 0"));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::*;
+
+    fn case() -> Case {
+        Case {
+            id: "t".into(),
+            spec: Spec::Gl46,
+            api: vec![ApiPath::GlslCore],
+            texture: Texture {
+                target: Target::T2d,
+                format: Format::D16,
+                base_level: 0,
+                levels: vec![Level { width: 2, height: 1, layers: 1, depth: Texels::Unorm(vec![0, 65535]), stencil: None }],
+            },
+            sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
+            lookup: Lookup { coord: [0.25, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0 },
+            expect: None,
+        }
+    }
+
+    #[test]
+    fn accepts_a_good_case_and_round_trips() {
+        let c = case();
+        validate(&c).unwrap();
+        let json = serde_json::to_string(&c).unwrap();
+        let back: Case = serde_json::from_str(&json).unwrap();
+        assert_eq!(back, c);
+    }
+
+    #[test]
+    fn non_finite_reference_round_trips_as_string() {
+        let mut c = case();
+        c.lookup.dref = f64::NAN;
+        c.lookup.coord[0] = f64::NEG_INFINITY;
+        let json = serde_json::to_string(&c).unwrap();
+        assert!(json.contains("\"dref\":\"nan\""), "{json}");
+        assert!(json.contains("\"-inf\""), "{json}");
+        let back: Case = serde_json::from_str(&json).unwrap();
+        assert!(back.lookup.dref.is_nan());
+        assert_eq!(back.lookup.coord[0], f64::NEG_INFINITY);
+    }
+
+    #[test]
+    fn rejects_out_of_range_unorm_naming_the_field() {
+        let mut c = case();
+        c.texture.levels[0].depth = Texels::Unorm(vec![0, 70000]);
+        let e = validate(&c).unwrap_err().to_string();
+        assert!(e.contains("texture.levels[0].depth[1]") && e.contains("`t`"), "{e}");
+    }
+
+    #[test]
+    fn rejects_absurd_sizes() {
+        let mut c = case();
+        c.texture.levels[0].width = 1 << 30;
+        let e = validate(&c).unwrap_err().to_string();
+        assert!(e.contains("width"), "{e}");
+    }
+
+    #[test]
+    fn rejects_texel_count_mismatch_and_unknown_enum() {
+        let mut c = case();
+        c.texture.levels[0].depth = Texels::Unorm(vec![1]);
+        assert!(validate(&c).unwrap_err().to_string().contains("depth"));
+        let json = serde_json::to_string(&case()).unwrap().replace("\"lequal\"", "\"lequalish\"");
+        let e = serde_json::from_str::<Case>(&json).unwrap_err().to_string();
+        assert!(e.contains("lequalish"), "{e}");
+    }
+
+    #[test]
+    fn judge_uses_layout_and_profiles() {
+        let mut accept = std::collections::BTreeMap::new();
+        accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
+        accept.insert(Profile::Lenient, Acceptance(vec![Interval::new(0.9, 1.0)]));
+        let mut layout = std::collections::BTreeMap::new();
+        layout.insert(ApiPath::FixedFunction, [Channel::R, Channel::R, Channel::R, Channel::One]);
+        let e = Expectation { spec_value: Some(1.0), accept, layout, implementation_defined: None, citations: vec![] };
+        assert_eq!(e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 1.0]), Some(Judgement::Strict));
+        assert_eq!(e.judge(ApiPath::FixedFunction, [0.95, 1.0, 1.0, 1.0]), Some(Judgement::LenientOnly));
+        assert_eq!(e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 0.0]), Some(Judgement::Outside));
+        assert_eq!(e.judge(ApiPath::GlslCore, [1.0; 4]), None);
+    }
+}

@@ -1,0 +1,9 @@
+//! `shadowcheck gen` (being built).
+use std::process::ExitCode;
+
+#[derive(clap::Args)]
+pub struct Args {}
+
+pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
+    anyhow::bail!("`gen` is not built yet")
+}

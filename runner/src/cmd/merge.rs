@@ -1,0 +1,9 @@
+//! `shadowcheck merge` (being built).
+use std::process::ExitCode;
+
+#[derive(clap::Args)]
+pub struct Args {}
+
+pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
+    anyhow::bail!("`merge` is not built yet")
+}

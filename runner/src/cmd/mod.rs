@@ -1,0 +1,6 @@
+//! One module per subcommand. Each has `Args` (clap) and `main(Args) -> anyhow::Result<ExitCode>`.
+pub mod explain;
+pub mod gen;
+pub mod gl_worker;
+pub mod merge;
+pub mod run;

@@ -1,0 +1,9 @@
+//! `shadowcheck run` (being built).
+use std::process::ExitCode;
+
+#[derive(clap::Args)]
+pub struct Args {}
+
+pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
+    anyhow::bail!("`run` is not built yet")
+}

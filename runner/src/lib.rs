@@ -1,0 +1,1 @@
+//! shadowcheck-runner library: backends, verdicts, baselines, reporters. The binary is src/main.rs.

@@ -1,0 +1,47 @@
+//! `shadowcheck`: the command-line edge. Each subcommand lives in `cmd/`; the library crate
+//! (`shadowcheck_runner`) does the work and never prints.
+
+use clap::{Parser, Subcommand};
+
+mod cmd;
+
+#[derive(Parser)]
+#[command(name = "shadowcheck", version, about = "Conformance harness and spec-derived oracle for depth-texture comparison (shadow sampling) in OpenGL and OpenGL ES")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Show what the specifications say about one case: spec value, acceptance per profile, derivation.
+    Explain(cmd::explain::Args),
+    /// Generate fixtures from a named grid.
+    Gen(cmd::gen::Args),
+    /// Run fixtures against backends and report verdicts.
+    Run(cmd::run::Args),
+    /// Merge result files of shards into one.
+    Merge(cmd::merge::Args),
+    /// (internal) A GL worker process speaking runner/PROTOCOL.md on stdin/stdout.
+    #[command(hide = true)]
+    GlWorker(cmd::gl_worker::Args),
+}
+
+fn main() -> std::process::ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Explain(a) => cmd::explain::main(a),
+        Command::Gen(a) => cmd::gen::main(a),
+        Command::Run(a) => cmd::run::main(a),
+        Command::Merge(a) => cmd::merge::main(a),
+        Command::GlWorker(a) => cmd::gl_worker::main(a),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("shadowcheck: error: {e:#}");
+            // Documented in README.md: 96 = setup error / bad input.
+            std::process::ExitCode::from(96)
+        }
+    }
+}
