@@ -1,1 +1,3 @@
 //! shadowcheck-runner library: backends, verdicts, baselines, reporters. The binary is src/main.rs.
+
+pub mod gl;

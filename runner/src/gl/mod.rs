@@ -1,0 +1,1 @@
+//! GL driver backends (EGL, OSMesa) — being built.
