@@ -1,1 +1,277 @@
-//! placeholder
+//! shadowcheck's own texture unit with depth comparison ("shadow" sampling), one variant per
+//! specification ([`Spec`]): SGIX_shadow (+ ambient), ARB_shadow (+ ambient), EXT_shadow_funcs,
+//! ES 2.0 + EXT_shadow_samplers, GL 3.0–4.6 and ES 3.x.
+//!
+//! It is written from the specification texts independently of the oracle (this crate depends on
+//! the model only), so the two check each other. It is an *implementation*: one answer per lookup,
+//! in f32 arithmetic like a GPU, with percentage-closer filtering where the specs leave filtered
+//! comparisons implementation-dependent.
+//!
+//! Layers:
+//! - [`SoftUnit`]: a case in, RGBA per API path out ([`SoftUnit::sample`], [`SoftUnit::sample_batch`]).
+//! - [`PreparedTexture`] + [`SamplerState`] + [`Coords`]: the raw lookup
+//!   ([`PreparedTexture::lookup`]) for benchmarks: prepare once, look up many times, no allocation.
+//! - [`Fault`] / [`Faults`]: seedable bugs for mutation testing ([`SoftUnit::with_fault`]).
+//!
+//! Module map: `storage` (texel conversion), `wrap` (Table 8.20), `lod` (§8.14.1/§8.14.3),
+//! `cube` (§8.13), `compare` (per-spec comparison rules), `sampler` (resolved state,
+//! completeness), `filter` (the lookup, PCF), `layout` (RGBA per API path), `faults`.
+
+pub mod compare;
+pub mod cube;
+pub mod faults;
+pub mod filter;
+pub mod layout;
+pub mod lod;
+pub mod sampler;
+pub mod storage;
+pub mod wrap;
+
+#[cfg(test)]
+mod tests;
+
+pub use faults::{Fault, Faults};
+pub use filter::Coords;
+pub use layout::Layout;
+pub use sampler::{Kind, SamplerState};
+pub use storage::PreparedTexture;
+
+use shadowcheck_model::{ApiPath, Case, CompareFunc, Format, Lookup, Spec, Target, Wrap};
+
+/// Why the unit gives no result for a case. Every variant is a reason suitable for a Skip.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SoftError {
+    #[error("invalid case: {0}")]
+    Invalid(String),
+    #[error("this unit implements {unit}, the case is for {case}")]
+    SpecMismatch { unit: Spec, case: Spec },
+    #[error("{spec} does not define {what}")]
+    Undefined { spec: Spec, what: &'static str },
+    #[error("{spec} does not define compare function {func}")]
+    CompareFunc { spec: Spec, func: CompareFunc },
+    #[error("{spec} does not accept wrap mode {wrap} for this texture")]
+    Wrap { spec: Spec, wrap: Wrap },
+    #[error("{spec} has no internal format {format}")]
+    Format { spec: Spec, format: Format },
+    #[error("API path {api} does not exist under {spec}")]
+    ApiPath { spec: Spec, api: ApiPath },
+    #[error("API path {api} has no shadow lookup for {target} textures")]
+    Target { api: ApiPath, target: Target },
+    #[error("projective lookups do not exist for {target} textures")]
+    Projective { target: Target },
+    #[error("the result is undefined: {0}")]
+    UndefinedResult(&'static str),
+}
+
+/// The API paths each spec variant has (see `layout` for what each returns).
+pub fn path_exists(spec: Spec, api: ApiPath) -> bool {
+    use ApiPath as A;
+    match spec {
+        Spec::Sgix | Spec::SgixAmbient => matches!(api, A::FixedFunction | A::ArbFp | A::Glsl120),
+        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => matches!(api, A::FixedFunction | A::ArbFp | A::Glsl120 | A::Glsl130),
+        Spec::Gl46 => matches!(api, A::FixedFunction | A::ArbFp | A::Glsl120 | A::Glsl130 | A::GlslCore),
+        Spec::Es2Ext => api == A::Es100Ext,
+        Spec::Gles32 => api == A::Es300,
+    }
+}
+
+/// The targets a path can sample with a shadow lookup: fixed function 1D/2D/rect/cube;
+/// ARB_fragment_program_shadow SHADOW1D/2D/RECT; GLSL 1.20 shadow1D/2D/2DRect; GLSL ≥ 1.30 all;
+/// EXT_shadow_samplers 2D; GLSL ES 3.x 2D, 2D array, cube, cube array.
+pub fn path_targets(api: ApiPath, target: Target) -> bool {
+    use Target as T;
+    match api {
+        ApiPath::FixedFunction => matches!(target, T::T1d | T::T2d | T::Rect | T::Cube),
+        ApiPath::ArbFp | ApiPath::Glsl120 => matches!(target, T::T1d | T::T2d | T::Rect),
+        ApiPath::Glsl130 | ApiPath::GlslCore => true,
+        ApiPath::Es100Ext => target == T::T2d,
+        ApiPath::Es300 => matches!(target, T::T2d | T::T2dArray | T::Cube | T::CubeArray),
+    }
+}
+
+/// One result of [`SoftUnit::sample_batch`]: case index, API path, RGBA or the reason for none.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BatchResult {
+    pub case: usize,
+    pub api: ApiPath,
+    pub rgba: Result<[f32; 4], SoftError>,
+}
+
+/// A texture unit implementing one specification variant, optionally with seeded faults.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SoftUnit {
+    spec: Spec,
+    faults: Faults,
+}
+
+impl SoftUnit {
+    /// The correct unit for `spec`.
+    pub fn new(spec: Spec) -> SoftUnit {
+        SoftUnit {
+            spec,
+            faults: Faults::NONE,
+        }
+    }
+    /// The same unit with `fault` switched on as well.
+    pub fn with_fault(self, fault: Fault) -> SoftUnit {
+        SoftUnit {
+            faults: self.faults.with(fault),
+            ..self
+        }
+    }
+    /// The same unit with exactly the faults in `faults`.
+    pub fn with_faults(self, faults: Faults) -> SoftUnit {
+        SoftUnit { faults, ..self }
+    }
+    pub fn spec(&self) -> Spec {
+        self.spec
+    }
+    pub fn faults(&self) -> Faults {
+        self.faults
+    }
+
+    /// Converts the case's texture (allocates; see [`PreparedTexture::prepare_into`] to reuse).
+    pub fn prepare_texture(&self, case: &Case) -> Result<PreparedTexture, SoftError> {
+        PreparedTexture::new(&case.texture, self.faults)
+    }
+
+    /// Resolves the case's sampler state against a prepared texture.
+    pub fn sampler_state(&self, case: &Case, tex: &PreparedTexture) -> Result<SamplerState, SoftError> {
+        SamplerState::new(self.spec, &case.sampler, tex, self.faults)
+    }
+
+    /// The lookup coordinates of `case` as f32, after the projective divide (s, t, (r) and Dref
+    /// divided by q), with the layer coordinate moved to `layer` for array targets.
+    pub fn coords(&self, target: Target, l: &Lookup) -> Result<Coords, SoftError> {
+        let f = self.faults;
+        let (mut s, mut t, mut r) = (l.coord[0] as f32, l.coord[1] as f32, l.coord[2] as f32);
+        let mut dref = l.dref as f32;
+        if l.projective {
+            if !matches!(target, Target::T1d | Target::T2d | Target::Rect) {
+                return Err(SoftError::Projective { target });
+            }
+            let q = l.coord[3] as f32;
+            if !f.has(Fault::ProjectiveDivideMissing) {
+                s /= q;
+                t /= q;
+                r /= q;
+                if !f.has(Fault::RefNotDividedByQ) {
+                    dref /= q;
+                }
+            }
+        }
+        let layer = match target {
+            Target::T1dArray => t,
+            Target::T2dArray => r,
+            Target::CubeArray => l.layer as f32,
+            _ => 0.0,
+        };
+        if target.is_cube() && cube::select(s, t, r, f).is_none() {
+            return Err(SoftError::UndefinedResult("cube direction has no major axis (zero or NaN)"));
+        }
+        Ok(Coords {
+            s,
+            t,
+            r,
+            layer,
+            dref,
+            lambda_base: l.lod as f32,
+            bias: l.bias as f32,
+        })
+    }
+
+    /// Checks that `api` exists for this spec and can sample the case's target and wrap modes.
+    fn check_path(&self, case: &Case, api: ApiPath) -> Result<(), SoftError> {
+        if !path_exists(self.spec, api) {
+            return Err(SoftError::ApiPath { spec: self.spec, api });
+        }
+        let target = case.texture.target;
+        if !path_targets(api, target) {
+            return Err(SoftError::Target { api, target });
+        }
+        let s = &case.sampler;
+        if api == ApiPath::GlslCore && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::Clamp) {
+            // CLAMP exists only in the compatibility profile.
+            return Err(SoftError::Wrap {
+                spec: self.spec,
+                wrap: Wrap::Clamp,
+            });
+        }
+        Ok(())
+    }
+
+    /// RGBA for one case on one API path. The case must be for this unit's spec.
+    pub fn sample(&self, case: &Case, api: ApiPath) -> Result<[f32; 4], SoftError> {
+        let mut tex = PreparedTexture::default();
+        self.sample_with(case, api, &mut tex)
+    }
+
+    /// RGBA for every API path of the case, in `case.api` order.
+    pub fn sample_all(&self, case: &Case) -> Vec<(ApiPath, Result<[f32; 4], SoftError>)> {
+        let mut out = Vec::with_capacity(case.api.len());
+        self.sample_batch(std::slice::from_ref(case), &mut out);
+        out.into_iter().map(|b| (b.api, b.rgba)).collect()
+    }
+
+    /// Batch form: appends one [`BatchResult`] to `out` for every (case, API path) pair, cases in
+    /// order and each case's paths in `case.api` order. The texture of each case is converted
+    /// once (into one reused scratch buffer) and shared by its paths; nothing is allocated per
+    /// case except error messages. Cases for another spec give [`SoftError::SpecMismatch`].
+    pub fn sample_batch(&self, cases: &[Case], out: &mut Vec<BatchResult>) {
+        let mut tex = PreparedTexture::default();
+        for (i, case) in cases.iter().enumerate() {
+            match self.prepare_case(case, &mut tex) {
+                Ok((st, coords)) => {
+                    for &api in &case.api {
+                        let rgba = self.finish(case, api, &tex, &st, &coords);
+                        out.push(BatchResult { case: i, api, rgba });
+                    }
+                }
+                Err(e) => {
+                    for &api in &case.api {
+                        out.push(BatchResult {
+                            case: i,
+                            api,
+                            rgba: Err(e.clone()),
+                        });
+                    }
+                }
+            }
+        }
+    }
+
+    fn sample_with(&self, case: &Case, api: ApiPath, tex: &mut PreparedTexture) -> Result<[f32; 4], SoftError> {
+        let (st, coords) = self.prepare_case(case, tex)?;
+        self.finish(case, api, tex, &st, &coords)
+    }
+
+    /// Path-independent part: validation, texture conversion, sampler state, coordinates.
+    fn prepare_case(&self, case: &Case, tex: &mut PreparedTexture) -> Result<(SamplerState, Coords), SoftError> {
+        if case.spec != self.spec {
+            return Err(SoftError::SpecMismatch {
+                unit: self.spec,
+                case: case.spec,
+            });
+        }
+        shadowcheck_model::validate::validate(case).map_err(|e| SoftError::Invalid(e.to_string()))?;
+        tex.prepare_into(&case.texture, self.faults)?;
+        let st = SamplerState::new(self.spec, &case.sampler, tex, self.faults)?;
+        let coords = self.coords(case.texture.target, &case.lookup)?;
+        Ok((st, coords))
+    }
+
+    /// Path-dependent part: path checks, completeness, the lookup, the layout.
+    fn finish(&self, case: &Case, api: ApiPath, tex: &PreparedTexture, st: &SamplerState, c: &Coords) -> Result<[f32; 4], SoftError> {
+        self.check_path(case, api)?;
+        let lay = layout::resolve(self.spec, api, st.kind, case.sampler.depth_texture_mode, self.faults)?;
+        if !st.complete {
+            return Ok(layout::INCOMPLETE);
+        }
+        Ok(lay.apply(tex.lookup(st, c)))
+    }
+}
+
+/// Samples `case` on `api` with the unit for `case.spec` (and `faults`).
+pub fn sample_case(case: &Case, api: ApiPath, faults: Faults) -> Result<[f32; 4], SoftError> {
+    SoftUnit::new(case.spec).with_faults(faults).sample(case, api)
+}

@@ -1,0 +1,168 @@
+//! Seedable faults: realistic texture-unit bugs that can be switched on one at a time (or several)
+//! to check that the harness catches them (`shadowcheck mutants`).
+//!
+//! A [`SoftUnit`](crate::SoftUnit) carries a [`Faults`] bitset. The sampler code tests single bits
+//! at the places where the corresponding real-world bug would sit; with no fault set every test is
+//! one predictable branch on a field that is already in cache, so the correct unit pays almost
+//! nothing for the switches.
+
+use std::fmt;
+
+macro_rules! faults {
+    ($( $(#[$m:meta])* $var:ident = $key:literal ),+ $(,)?) => {
+        /// One seedable fault. The key is the name used on the command line and in reports.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+        #[repr(u8)]
+        pub enum Fault { $( $(#[$m])* $var ),+ }
+        impl Fault {
+            /// Every fault, in declaration order.
+            pub const ALL: &'static [Fault] = &[$(Fault::$var),+];
+            /// Short stable name (kebab-case).
+            pub fn key(self) -> &'static str { match self { $(Fault::$var => $key),+ } }
+            /// Parses a name written by [`Fault::key`].
+            pub fn from_key(s: &str) -> Option<Fault> { match s { $($key => Some(Fault::$var),)+ _ => None } }
+        }
+    };
+}
+
+faults! {
+    // --- reference value and Dt clamping (GL 4.6 §8.23.1, ARB_shadow, EXT_shadow_samplers) ---
+    /// Dref clamped to [0,1] even for floating-point depth formats (GL 3.0+ clamps only fixed-point).
+    RefClampedForFloat = "ref-clamped-for-float",
+    /// Dref never clamped, even for fixed-point formats / specs that always clamp.
+    RefNotClamped = "ref-not-clamped",
+    /// Dt clamped to [0,1] at sample time for floating-point formats (visible with a border > 1).
+    DtClampedForFloat = "dt-clamped-for-float",
+    /// Dt (incl. the border depth) not clamped for fixed-point formats.
+    DtNotClamped = "dt-not-clamped",
+    // --- filtering (PCF) ---
+    /// Filter the depth values first, then compare once (no percentage-closer filtering).
+    FilterThenCompare = "filter-then-compare",
+    /// LINEAR weights computed from u instead of u - 1/2 (footprint and weights off by half a texel).
+    PcfHalfTexelOff = "pcf-half-texel-off",
+    /// LINEAR filtering ignores the second texel in each direction (weights 1,0).
+    LinearAsNearest = "linear-as-nearest",
+    // --- comparison functions (Table 8.23) ---
+    /// LEQUAL and GEQUAL swapped.
+    LequalGequalSwapped = "lequal-gequal-swapped",
+    /// LESS evaluated as LEQUAL.
+    LessAsLequal = "less-as-lequal",
+    /// GREATER evaluated as GEQUAL.
+    GreaterAsGequal = "greater-as-gequal",
+    /// EQUAL / NOTEQUAL compare with a tolerance of 2^-12 instead of exactly.
+    EqualWithTolerance = "equal-with-tolerance",
+    /// NOTEQUAL implemented as (Dref < Dt || Dref > Dt): a NaN reference fails instead of passing.
+    NanOrderedNotequal = "nan-ordered-notequal",
+    /// ALWAYS and NEVER swapped.
+    AlwaysNeverSwapped = "always-never-swapped",
+    /// SGIX operators read as ARB issue 2 describes them (R <= texel for TEXTURE_LEQUAL_R_SGIX).
+    SgixOperatorsReversed = "sgix-operators-reversed",
+    // --- fail / ambient value ---
+    /// The ambient / fail value replaces 1.0 for passing texels instead of 0.0 for failing ones.
+    AmbientAppliedToPass = "ambient-applied-to-pass",
+    /// The ambient / fail value is ignored (0.0 used).
+    AmbientIgnored = "ambient-ignored",
+    // --- result layout (DEPTH_TEXTURE_MODE, Table 16.1) ---
+    /// DEPTH_TEXTURE_MODE RED returned as LUMINANCE (r,r,r,1).
+    RedModeAsLuminance = "red-mode-as-luminance",
+    /// INTENSITY returned as LUMINANCE (alpha 1 instead of r).
+    IntensityAsLuminance = "intensity-as-luminance",
+    /// Wrong default DEPTH_TEXTURE_MODE in compatibility paths (RED instead of LUMINANCE).
+    WrongDefaultDepthMode = "wrong-default-depth-mode",
+    // --- which textures take part ---
+    /// Comparison applied to a colour (R8) texture instead of being bypassed.
+    CompareAppliedToColour = "compare-applied-to-colour",
+    /// DEPTH_STENCIL_TEXTURE_MODE = STENCIL_INDEX ignored (depth returned).
+    StencilModeIgnored = "stencil-mode-ignored",
+    // --- completeness (§8.17, §11.1.3.5) ---
+    /// An incomplete texture is sampled as if complete instead of returning 0 / (0,0,0,1).
+    IncompleteNotZero = "incomplete-not-zero",
+    /// Missing mip levels not detected (mipmap filters sample what exists).
+    MipmapCompletenessIgnored = "mipmap-completeness-ignored",
+    /// The ES rule "sized depth, compare NONE, non-NEAREST filter is incomplete" ignored.
+    EsDepthFilterCompletenessIgnored = "es-depth-filter-completeness-ignored",
+    // --- coordinates ---
+    /// Projective lookups: nothing is divided by q.
+    ProjectiveDivideMissing = "projective-divide-missing",
+    /// Projective lookups: coordinates divided by q but Dref not.
+    RefNotDividedByQ = "ref-not-divided-by-q",
+    /// Array layer truncated (floor) instead of rounded.
+    LayerTruncated = "layer-truncated",
+    /// Cube map -Y face: t_c taken as +r_z instead of -r_z.
+    CubeNegYFlipped = "cube-neg-y-flipped",
+    // --- level of detail (§8.14) ---
+    /// NEAREST-mipmap level selection one level too far (d + 1, clamped to q).
+    MipLevelOffByOne = "mip-level-off-by-one",
+    /// Trilinear (… _MIPMAP_LINEAR) filters use level d1 only, no blend.
+    TrilinearNoBlend = "trilinear-no-blend",
+    /// TEXTURE_LOD_BIAS ignored.
+    LodBiasIgnored = "lod-bias-ignored",
+    /// TEXTURE_MIN_LOD / TEXTURE_MAX_LOD clamp ignored.
+    LodClampIgnored = "lod-clamp-ignored",
+    /// TEXTURE_MAX_LEVEL ignored when computing q.
+    MaxLevelIgnored = "max-level-ignored",
+    // --- wrapping and border (§8.14.2) ---
+    /// CLAMP_TO_BORDER behaves as CLAMP_TO_EDGE (border never used).
+    BorderIgnored = "border-ignored",
+    /// Border depth read from the alpha component of TEXTURE_BORDER_COLOR.
+    BorderDepthFromAlpha = "border-depth-from-alpha",
+    /// MIRRORED_REPEAT mirrors without the (size - 1) offset (off by one texel).
+    MirroredRepeatOffByOne = "mirrored-repeat-off-by-one",
+    // --- storage ---
+    /// Unorm conversion c / 2^b instead of c / (2^b - 1).
+    UnormDividedByPowerOfTwo = "unorm-divided-by-power-of-two",
+}
+
+impl fmt::Display for Fault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.key())
+    }
+}
+
+/// A set of faults (bitset over [`Fault`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Faults(u64);
+
+impl Faults {
+    /// No fault: the correct texture unit.
+    pub const NONE: Faults = Faults(0);
+
+    pub fn with(self, f: Fault) -> Faults {
+        Faults(self.0 | (1u64 << f as u8))
+    }
+    #[inline(always)]
+    pub fn has(self, f: Fault) -> bool {
+        self.0 & (1u64 << f as u8) != 0
+    }
+    pub fn is_empty(self) -> bool {
+        self.0 == 0
+    }
+    /// The faults in the set, in declaration order.
+    pub fn iter(self) -> impl Iterator<Item = Fault> {
+        Fault::ALL.iter().copied().filter(move |f| self.has(*f))
+    }
+}
+
+impl FromIterator<Fault> for Faults {
+    fn from_iter<I: IntoIterator<Item = Fault>>(it: I) -> Faults {
+        it.into_iter().fold(Faults::NONE, Faults::with)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_round_trip_and_fit_the_bitset() {
+        assert!(Fault::ALL.len() >= 30 && Fault::ALL.len() <= 64);
+        for f in Fault::ALL {
+            assert_eq!(Fault::from_key(f.key()), Some(*f));
+        }
+        let set: Faults = [Fault::BorderIgnored, Fault::LessAsLequal].into_iter().collect();
+        assert!(set.has(Fault::BorderIgnored) && set.has(Fault::LessAsLequal));
+        assert!(!set.has(Fault::AmbientIgnored));
+        assert_eq!(set.iter().count(), 2);
+        assert!(Faults::NONE.is_empty());
+    }
+}

@@ -1,0 +1,271 @@
+//! The lookup: addressing (target, cube face, array layer), texel fetch with border, NEAREST and
+//! LINEAR filtering within a level with percentage-closer filtering (compare each texel, then
+//! weight), and the blend between two levels.
+//!
+//! PCF is used for every spec variant: SGIX_shadow compares before filtering by definition; the
+//! later specs make the filtered r implementation-dependent ("proportional to the number of
+//! comparison passes or failures", GL 4.6 §8.23.1) and comparing each texel of the §8.14.2 LINEAR
+//! footprint, then applying the bilinear weights, is the natural implementation of that.
+
+use crate::compare::passes;
+use crate::cube;
+use crate::faults::Fault;
+use crate::lod::{self, LevelChoice};
+use crate::sampler::{Kind, SamplerState};
+use crate::storage::{clamp01, LevelDesc, PreparedTexture};
+use crate::wrap;
+use shadowcheck_model::{Target, Wrap};
+
+/// Coordinates of one lookup after the projective divide, as f32 (the API passes floats).
+///
+/// `s`, `t`, `r` per target: 1D (s), 2D / rect (s, t), cube and cube array (s, t, r) direction.
+/// `layer` is the array layer coordinate for 1D / 2D arrays and the cube index for cube arrays.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Coords {
+    pub s: f32,
+    pub t: f32,
+    pub r: f32,
+    pub layer: f32,
+    /// Reference value Dref (after any projective divide, before clamping).
+    pub dref: f32,
+    /// λ_base (as from derivatives or an explicit LOD).
+    pub lambda_base: f32,
+    /// Shader bias.
+    pub bias: f32,
+}
+
+/// Where in the texture one lookup reads: normalized (or, for rectangles, unnormalized) s, t
+/// within an image, the layer of that image and, for cubes, the face.
+#[derive(Debug, Clone, Copy)]
+struct Address {
+    s: f32,
+    t: f32,
+    /// Array layer coordinate (already rounded) before clamping to the level's layer count; for
+    /// cube arrays the cube index.
+    layer: i64,
+    face: Option<cube::Face>,
+}
+
+/// layer = clamp(⌊layer + ½⌋, 0, layers − 1) (§8.14.2, the ⌊x + ½⌋ form footnote 4 allows).
+#[inline(always)]
+fn round_layer(x: f32, st: &SamplerState) -> i64 {
+    if st.faults.has(Fault::LayerTruncated) {
+        wrap::floor_i64(x)
+    } else {
+        wrap::floor_i64(x + 0.5)
+    }
+}
+
+impl PreparedTexture {
+    /// One lookup: r for `c` under `st` (the comparison result, filtered; Dt for compare mode NONE;
+    /// the colour for R8; St for stencil mode). Completeness is not checked here: callers look at
+    /// `st.complete` first (an incomplete texture returns 0 / (0,0,0,1), §11.1.3.5).
+    #[inline]
+    pub fn lookup(&self, st: &SamplerState, c: &Coords) -> f32 {
+        let lambda = lod::lambda(&st.lod, c.lambda_base, c.bias, st.faults);
+        let choice = lod::choose(&st.lod, lambda, st.faults);
+        let addr = self.address(st, c);
+        let dref = if st.clamp.dref { clamp01(c.dref) } else { c.dref };
+        match choice {
+            LevelChoice::Single { level, linear } => self.sample_level(st, level, linear, &addr, dref),
+            LevelChoice::Blend { d1, d2, frac, linear } => {
+                let t1 = self.sample_level(st, d1, linear, &addr, dref);
+                let t2 = self.sample_level(st, d2, linear, &addr, dref);
+                (1.0 - frac) * t1 + frac * t2
+            }
+        }
+    }
+
+    fn address(&self, st: &SamplerState, c: &Coords) -> Address {
+        match self.target() {
+            Target::T1d => Address {
+                s: c.s,
+                t: 0.0,
+                layer: 0,
+                face: None,
+            },
+            Target::T2d | Target::Rect => Address {
+                s: c.s,
+                t: c.t,
+                layer: 0,
+                face: None,
+            },
+            Target::T1dArray => Address {
+                s: c.s,
+                t: 0.0,
+                layer: round_layer(c.layer, st),
+                face: None,
+            },
+            Target::T2dArray => Address {
+                s: c.s,
+                t: c.t,
+                layer: round_layer(c.layer, st),
+                face: None,
+            },
+            Target::Cube | Target::CubeArray => {
+                // A direction without a major axis is rejected before the lookup; fall back to +X.
+                let (face, s, t) = cube::select(c.s, c.t, c.r, st.faults).unwrap_or((0, 0.5, 0.5));
+                let layer = if self.target() == Target::CubeArray {
+                    round_layer(c.layer, st)
+                } else {
+                    0
+                };
+                Address {
+                    s,
+                    t,
+                    layer,
+                    face: Some(face),
+                }
+            }
+        }
+    }
+
+    /// The prepared level for absolute level `level` (clamped to what exists, which only matters
+    /// when a fault lets an incomplete texture be sampled).
+    #[inline(always)]
+    fn level_desc(&self, st: &SamplerState, level: u32) -> &LevelDesc {
+        let i = (level.saturating_sub(st.lod.level_base) as usize).min(self.levels.len().saturating_sub(1));
+        &self.levels[i]
+    }
+
+    /// The storage layer for the address within level `l`.
+    #[inline(always)]
+    fn storage_layer(&self, l: &LevelDesc, a: &Address) -> u32 {
+        match a.face {
+            None => a.layer.clamp(0, l.layers as i64 - 1) as u32,
+            Some(face) => {
+                let cubes = (l.layers / 6).max(1) as i64;
+                (a.layer.clamp(0, cubes - 1) * 6) as u32 + face as u32
+            }
+        }
+    }
+
+    /// The raw value at (i, j) of `layer`, or the border value outside the image.
+    #[inline(always)]
+    fn fetch(&self, st: &SamplerState, l: &LevelDesc, i: i64, j: i64, layer: u32) -> f32 {
+        if i < 0 || j < 0 || i >= l.width as i64 || j >= l.height as i64 {
+            return st.border;
+        }
+        if st.kind == Kind::Stencil {
+            self.stencil_texel(l, i as u32, j as u32, layer)
+        } else {
+            self.texel(l, i as u32, j as u32, layer)
+        }
+    }
+
+    /// What one texel contributes to the filter: pass / fail value for comparisons, the clamped Dt,
+    /// the colour or the stencil index.
+    #[inline(always)]
+    fn resolve(&self, st: &SamplerState, v: f32, dref: f32) -> f32 {
+        match st.kind {
+            Kind::Compare => {
+                let dt = if st.clamp.dt { clamp01(v) } else { v };
+                if passes(st.op, dref, dt, st.faults) {
+                    st.pass
+                } else {
+                    st.fail
+                }
+            }
+            Kind::Depth => {
+                if st.clamp.dt {
+                    clamp01(v)
+                } else {
+                    v
+                }
+            }
+            Kind::Colour | Kind::Stencil => v,
+        }
+    }
+
+    /// Per-texel value at (i, j) of a cube face with seamless filtering: locations one texel past
+    /// an edge read the neighbouring face (§8.13.1); corners are handled by the caller.
+    #[inline]
+    fn fetch_seamless(&self, st: &SamplerState, l: &LevelDesc, face: u8, i: i64, j: i64, cube_base: u32) -> Option<f32> {
+        let (f, i, j) = cube::neighbour(face, i, j, l.width as i64)?;
+        Some(self.fetch(st, l, i, j, cube_base + f as u32))
+    }
+
+    /// NEAREST or LINEAR filtering within one level (§8.14.2), with PCF for comparisons.
+    fn sample_level(&self, st: &SamplerState, level: u32, linear: bool, a: &Address, dref: f32) -> f32 {
+        let l = self.level_desc(st, level);
+        let layer = self.storage_layer(l, a);
+        let rect = self.target() == Target::Rect;
+        let (w, h) = (l.width, l.height);
+        // Equation 8.10: u = w_s · s (rectangles: u = s).
+        let u = if rect { a.s } else { a.s * w as f32 };
+        let v = if rect { a.t } else { a.t * h as f32 };
+        let one_d = matches!(self.target(), Target::T1d | Target::T1dArray);
+        let (ws, wt) = if st.seamless {
+            (Wrap::ClampToEdge, Wrap::ClampToEdge)
+        } else {
+            (st.wrap_s, st.wrap_t)
+        };
+        let f = st.faults;
+
+        if !linear || f.has(Fault::LinearAsNearest) {
+            let i = wrap::nearest(ws, u, w, f);
+            let j = if one_d { 0 } else { wrap::nearest(wt, v, h, f) };
+            return self.resolve(st, self.fetch(st, l, i, j, layer), dref);
+        }
+
+        // LINEAR: i0, i1, α and j0, j1, β (§8.14.2); seamless cubes use CLAMP_TO_BORDER and then
+        // replace border locations by the neighbouring face's texels (§8.13.1).
+        let (ls, lt) = if st.seamless {
+            (Wrap::ClampToBorder, Wrap::ClampToBorder)
+        } else {
+            (ws, wt)
+        };
+        let (i0, i1, alpha) = wrap::linear(ls, u, w, f);
+        let (j0, j1, beta) = if one_d { (0, 0, 0.0) } else { wrap::linear(lt, v, h, f) };
+        let raw: [f32; 4];
+        let mut missing = None;
+        if let (true, Some(face)) = (st.seamless, a.face) {
+            let base = layer - face as u32;
+            let pos = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
+            let mut r = [0.0f32; 4];
+            for (k, &(i, j)) in pos.iter().enumerate() {
+                match self.fetch_seamless(st, l, face, i, j, base) {
+                    Some(x) => r[k] = x,
+                    None => missing = Some(k),
+                }
+            }
+            raw = r;
+        } else {
+            raw = [
+                self.fetch(st, l, i0, j0, layer),
+                self.fetch(st, l, i1, j0, layer),
+                self.fetch(st, l, i0, j1, layer),
+                self.fetch(st, l, i1, j1, layer),
+            ];
+        }
+        let weights = [
+            (1.0 - alpha) * (1.0 - beta),
+            alpha * (1.0 - beta),
+            (1.0 - alpha) * beta,
+            alpha * beta,
+        ];
+
+        if st.kind == Kind::Compare && f.has(Fault::FilterThenCompare) {
+            let mut d = [0.0f32; 4];
+            for k in 0..4 {
+                d[k] = if st.clamp.dt { clamp01(raw[k]) } else { raw[k] };
+            }
+            if let Some(m) = missing {
+                d[m] = (d.iter().sum::<f32>() - d[m]) / 3.0;
+            }
+            let filtered: f32 = (0..4).map(|k| weights[k] * d[k]).sum();
+            return if passes(st.op, dref, filtered, f) { st.pass } else { st.fail };
+        }
+
+        let mut vals = [0.0f32; 4];
+        for k in 0..4 {
+            vals[k] = self.resolve(st, raw[k], dref);
+        }
+        if let Some(m) = missing {
+            // Cube corner: no unique neighbour; use the average of the three available texels'
+            // values (the recommended method of §8.13.1, applied to the per-texel results).
+            vals[m] = (vals.iter().sum::<f32>() - vals[m]) / 3.0;
+        }
+        weights[0] * vals[0] + weights[1] * vals[1] + weights[2] * vals[2] + weights[3] * vals[3]
+    }
+}

@@ -1,0 +1,342 @@
+//! The sampler state resolved once per (spec, sampler, texture): what a texel contributes, the
+//! comparison, clamping, fail value, wrap modes, border, level range and completeness.
+//!
+//! Everything that can be decided without the lookup's coordinates is decided here, so the
+//! per-lookup code only reads plain fields.
+
+use crate::compare::{self, ClampRule, CompareOp};
+use crate::faults::{Fault, Faults};
+use crate::lod::LodParams;
+use crate::storage::{clamp01, PreparedTexture};
+use crate::SoftError;
+use shadowcheck_model::{CompareMode, DepthStencilMode, Filter, Format, Sampler, Spec, Target, Wrap};
+
+/// What a fetched texel turns into before filtering.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Depth texture with TEXTURE_COMPARE_MODE = COMPARE_*: each texel becomes pass / fail value.
+    Compare,
+    /// Depth texture with compare mode NONE: r = Dt.
+    Depth,
+    /// Colour texture (R8): comparison bypassed (§8.23.1 "texture comparison is bypassed").
+    Colour,
+    /// DEPTH_STENCIL with DEPTH_STENCIL_TEXTURE_MODE = STENCIL_INDEX: r = St (§8.23.1).
+    Stencil,
+}
+
+/// Resolved sampler state (see the module docs). Build with [`SamplerState::new`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct SamplerState {
+    pub kind: Kind,
+    pub op: CompareOp,
+    pub clamp: ClampRule,
+    /// Value of a passing / failing texel (1.0 / 0.0, or the ambient / fail value).
+    pub pass: f32,
+    pub fail: f32,
+    pub wrap_s: Wrap,
+    pub wrap_t: Wrap,
+    /// The value a border texel holds (TEXTURE_BORDER_COLOR[0] for depth, §8.14.2).
+    pub border: f32,
+    pub lod: LodParams,
+    /// Seamless cube filtering (§8.13.1; always on in ES 3.x, off by default in GL).
+    pub seamless: bool,
+    /// Texture completeness (§8.17) for this sampler.
+    pub complete: bool,
+    pub faults: Faults,
+}
+
+fn undefined(spec: Spec, what: &'static str) -> SoftError {
+    SoftError::Undefined { spec, what }
+}
+
+fn is_es(spec: Spec) -> bool {
+    matches!(spec, Spec::Es2Ext | Spec::Gles32)
+}
+
+/// Wrap modes the spec accepts (GL 4.6 Table 8.17, ES 3.2 Table 8.19, ES 2.0 Table 3.10); for
+/// rectangle textures only the clamping modes exist.
+fn check_wrap(spec: Spec, target: Target, w: Wrap) -> Result<(), SoftError> {
+    let ok = match spec {
+        Spec::Es2Ext => matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat),
+        Spec::Gles32 => !matches!(w, Wrap::MirrorClampToEdge | Wrap::Clamp),
+        _ => true,
+    };
+    if !ok {
+        return Err(SoftError::Wrap { spec, wrap: w });
+    }
+    if target.is_rect() && !matches!(w, Wrap::ClampToEdge | Wrap::ClampToBorder | Wrap::Clamp) {
+        return Err(SoftError::Wrap { spec, wrap: w });
+    }
+    Ok(())
+}
+
+/// Formats each spec has (ES 3.2 Table 8.11 has no DEPTH_COMPONENT32; ES 2.0 with
+/// OES_depth_texture / OES_packed_depth_stencil has no floating-point depth).
+fn check_format(spec: Spec, f: Format) -> Result<(), SoftError> {
+    let ok = match spec {
+        Spec::Gles32 => f != Format::D32,
+        Spec::Es2Ext => !matches!(f, Format::D32 | Format::D32f | Format::D32fS8),
+        _ => true,
+    };
+    if ok {
+        Ok(())
+    } else {
+        Err(SoftError::Format { spec, format: f })
+    }
+}
+
+/// Filters that need only one texel: MAG NEAREST with MIN NEAREST or NEAREST_MIPMAP_NEAREST.
+pub fn is_nearest_only(s: &Sampler) -> bool {
+    s.mag_filter == Filter::Nearest && matches!(s.min_filter, Filter::Nearest | Filter::NearestMipmapNearest)
+}
+
+impl SamplerState {
+    /// Resolves `s` for `tex` under `spec`. Errors name state the spec does not define.
+    pub fn new(spec: Spec, s: &Sampler, tex: &PreparedTexture, faults: Faults) -> Result<SamplerState, SoftError> {
+        let format = tex.format();
+        let target = tex.target();
+        check_format(spec, format)?;
+        check_wrap(spec, target, s.wrap_s)?;
+        check_wrap(spec, target, s.wrap_t)?;
+        // Only s and t address a rectangle; wrap_r is still checked against the spec's enums.
+        check_wrap(spec, if target.is_rect() { Target::T2d } else { target }, s.wrap_r)?;
+        if !matches!(s.mag_filter, Filter::Nearest | Filter::Linear) {
+            return Err(undefined(spec, "a mipmap TEXTURE_MAG_FILTER"));
+        }
+        if target.is_rect() && s.min_filter.is_mipmap() {
+            return Err(undefined(spec, "mipmap minification on rectangle textures (§8.14.3)"));
+        }
+        if is_es(spec) && s.lod_bias != 0.0 {
+            return Err(undefined(spec, "TEXTURE_LOD_BIAS (not in OpenGL ES)"));
+        }
+        if s.min_lod > s.max_lod {
+            return Err(SoftError::UndefinedResult(
+                "TEXTURE_MIN_LOD > TEXTURE_MAX_LOD makes λ undefined (eq. 8.9)",
+            ));
+        }
+
+        // Which texels take part (§8.23.1).
+        let stencil_mode = format.has_stencil() && s.depth_stencil_mode == Some(DepthStencilMode::StencilIndex);
+        if stencil_mode && !matches!(spec, Spec::Gl46 | Spec::Gles32) {
+            return Err(undefined(spec, "DEPTH_STENCIL_TEXTURE_MODE"));
+        }
+        let compare_on = s.compare_mode == CompareMode::Compare;
+        let kind = if !format.is_depth() {
+            if compare_on && faults.has(Fault::CompareAppliedToColour) {
+                Kind::Compare
+            } else {
+                Kind::Colour
+            }
+        } else if stencil_mode && !faults.has(Fault::StencilModeIgnored) {
+            if !tex.has_stencil() {
+                return Err(SoftError::Invalid(
+                    "DEPTH_STENCIL_TEXTURE_MODE is STENCIL_INDEX but the case has no stencil values".into(),
+                ));
+            }
+            Kind::Stencil
+        } else if compare_on {
+            Kind::Compare
+        } else {
+            Kind::Depth
+        };
+        let op = if kind == Kind::Compare {
+            compare::resolve_op(spec, s.compare_func, faults)?
+        } else {
+            CompareOp::Always
+        };
+        let clamp = compare::clamp_rule(spec, format, faults);
+        let (pass, fail) = compare::pass_fail_values(spec, s.fail_value, faults);
+
+        // Border (§8.14.2): the first component is the depth value; ES 3.2 clamps border values
+        // to the format's range ([0, 1] for unorm).
+        let mut border = if faults.has(Fault::BorderDepthFromAlpha) {
+            s.border[3]
+        } else {
+            s.border[0]
+        };
+        if spec == Spec::Gles32 && format.is_fixed_point() {
+            border = clamp01(border);
+        }
+
+        // Level range (§8.14.3): p = ⌊log2(maxsize)⌋ + level_base, q = min(p, level_max).
+        let base = tex.base_level;
+        let level_max = s.max_level.unwrap_or(1000);
+        let p = tex.max_mip_index() + base;
+        let q = if faults.has(Fault::MaxLevelIgnored) { p } else { p.min(level_max) };
+        let q_sample = q.max(base);
+
+        // Completeness (§8.17).
+        let mip_complete = base <= level_max && q - base.min(q) < tex.chain_len;
+        let mut complete = true;
+        if s.min_filter.is_mipmap() && !mip_complete && !faults.has(Fault::MipmapCompletenessIgnored) {
+            complete = false;
+        }
+        let nearest_only = is_nearest_only(s);
+        if !nearest_only && stencil_mode {
+            complete = false;
+        }
+        if spec == Spec::Gles32
+            && !nearest_only
+            && format.is_depth()
+            && format.is_sized()
+            && !compare_on
+            && !faults.has(Fault::EsDepthFilterCompletenessIgnored)
+        {
+            // ES 3.2 §8.17: sized depth format, TEXTURE_COMPARE_MODE NONE, non-NEAREST filtering.
+            complete = false;
+        }
+        if faults.has(Fault::IncompleteNotZero) {
+            complete = true;
+        }
+
+        Ok(SamplerState {
+            kind,
+            op,
+            clamp,
+            pass,
+            fail,
+            wrap_s: s.wrap_s,
+            wrap_t: s.wrap_t,
+            border,
+            lod: LodParams {
+                lod_bias: s.lod_bias,
+                min_lod: s.min_lod,
+                max_lod: s.max_lod,
+                level_base: base,
+                q: q_sample,
+                min_filter: s.min_filter,
+                mag_filter: s.mag_filter,
+            },
+            seamless: spec == Spec::Gles32 && target.is_cube(),
+            complete,
+            faults,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use shadowcheck_model::{CompareFunc, Level, Texels, Texture};
+
+    fn tex(format: Format, sizes: &[(u32, u32)]) -> PreparedTexture {
+        let levels = sizes
+            .iter()
+            .map(|&(w, h)| {
+                let n = (w * h) as usize;
+                let depth = if format.is_fixed_point() {
+                    Texels::Unorm(vec![0; n])
+                } else {
+                    Texels::Float(vec![0.0; n])
+                };
+                Level {
+                    width: w,
+                    height: h,
+                    layers: 1,
+                    depth,
+                    stencil: format.has_stencil().then(|| vec![0; n]),
+                }
+            })
+            .collect();
+        PreparedTexture::new(
+            &Texture {
+                target: Target::T2d,
+                format,
+                base_level: 0,
+                levels,
+            },
+            Faults::NONE,
+        )
+        .unwrap()
+    }
+    fn sampler(filter: Filter) -> Sampler {
+        Sampler::new(CompareMode::Compare, CompareFunc::Lequal, filter)
+    }
+
+    #[test]
+    fn mipmap_filter_needs_full_chain() {
+        let t = tex(Format::D16, &[(4, 4), (2, 2)]);
+        let st = SamplerState::new(Spec::Gl46, &sampler(Filter::NearestMipmapNearest), &t, Faults::NONE).unwrap();
+        assert!(!st.complete);
+        // TEXTURE_MAX_LEVEL 1 makes q = 1: the two levels suffice.
+        let mut s = sampler(Filter::NearestMipmapNearest);
+        s.max_level = Some(1);
+        assert!(SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE).unwrap().complete);
+        // Non-mipmap filters only need the base level.
+        assert!(
+            SamplerState::new(Spec::Gl46, &sampler(Filter::Linear), &t, Faults::NONE)
+                .unwrap()
+                .complete
+        );
+        let t = tex(Format::D16, &[(4, 4), (2, 2), (1, 1)]);
+        assert!(
+            SamplerState::new(Spec::Gl46, &sampler(Filter::LinearMipmapLinear), &t, Faults::NONE)
+                .unwrap()
+                .complete
+        );
+    }
+
+    #[test]
+    fn es_sized_depth_with_compare_none_and_linear_is_incomplete() {
+        let t = tex(Format::D24, &[(2, 2)]);
+        let mut s = sampler(Filter::Linear);
+        s.compare_mode = CompareMode::None;
+        assert!(!SamplerState::new(Spec::Gles32, &s, &t, Faults::NONE).unwrap().complete);
+        assert!(SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE).unwrap().complete);
+        s.compare_mode = CompareMode::Compare;
+        assert!(SamplerState::new(Spec::Gles32, &s, &t, Faults::NONE).unwrap().complete);
+        // The unsized format is not caught by the rule.
+        let mut s = sampler(Filter::Linear);
+        s.compare_mode = CompareMode::None;
+        assert!(
+            SamplerState::new(Spec::Gles32, &s, &tex(Format::DepthUnsized, &[(2, 2)]), Faults::NONE)
+                .unwrap()
+                .complete
+        );
+    }
+
+    #[test]
+    fn stencil_mode_needs_nearest() {
+        let t = tex(Format::D24S8, &[(2, 2)]);
+        let mut s = sampler(Filter::Linear);
+        s.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
+        let st = SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE).unwrap();
+        assert_eq!((st.kind, st.complete), (Kind::Stencil, false));
+        let mut s = sampler(Filter::Nearest);
+        s.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
+        assert!(SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE).unwrap().complete);
+        assert!(SamplerState::new(Spec::Arb, &s, &t, Faults::NONE).is_err());
+    }
+
+    #[test]
+    fn spec_specific_state_errors() {
+        let t = tex(Format::D16, &[(2, 2)]);
+        let mut s = sampler(Filter::Nearest);
+        s.lod_bias = 1.0;
+        assert!(SamplerState::new(Spec::Gles32, &s, &t, Faults::NONE).is_err());
+        assert!(SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE).is_ok());
+        let mut s = sampler(Filter::Nearest);
+        s.wrap_s = Wrap::ClampToBorder;
+        assert!(SamplerState::new(Spec::Es2Ext, &s, &t, Faults::NONE).is_err());
+        assert!(SamplerState::new(Spec::Gles32, &s, &t, Faults::NONE).is_ok());
+        assert!(SamplerState::new(Spec::Gles32, &sampler(Filter::Nearest), &tex(Format::D32, &[(1, 1)]), Faults::NONE).is_err());
+    }
+
+    #[test]
+    fn es_border_is_clamped_for_unorm() {
+        let mut s = sampler(Filter::Nearest);
+        s.border = [1.5, 0.0, 0.0, 0.0];
+        assert_eq!(
+            SamplerState::new(Spec::Gles32, &s, &tex(Format::D16, &[(1, 1)]), Faults::NONE)
+                .unwrap()
+                .border,
+            1.0
+        );
+        assert_eq!(
+            SamplerState::new(Spec::Gles32, &s, &tex(Format::D32f, &[(1, 1)]), Faults::NONE)
+                .unwrap()
+                .border,
+            1.5
+        );
+    }
+}
