@@ -35,7 +35,7 @@ pub fn select(rx: f32, ry: f32, rz: f32, faults: Faults) -> Option<(Face, f32, f
         (5, -rx, -ry, rz)
     };
     let m = ma.abs();
-    if !(m > 0.0) {
+    if m.is_nan() || m == 0.0 {
         return None;
     }
     Some((face, 0.5 * (sc / m + 1.0), 0.5 * (tc / m + 1.0)))

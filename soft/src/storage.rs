@@ -152,6 +152,7 @@ pub fn unorm_to_f32(c: u32, div: f64) -> f32 {
 
 /// Clamp to [0, 1]; NaN maps to 0 (the IEEE 754-2008 minNum/maxNum behaviour GPUs implement).
 #[inline(always)]
+#[allow(clippy::manual_clamp)] // f32::clamp keeps NaN; max/min map it to 0 on purpose
 pub fn clamp01(x: f32) -> f32 {
     x.max(0.0).min(1.0)
 }
