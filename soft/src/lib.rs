@@ -25,6 +25,7 @@ pub mod layout;
 pub mod lod;
 pub mod sampler;
 pub mod storage;
+pub mod witness;
 pub mod wrap;
 
 #[cfg(test)]
@@ -188,6 +189,13 @@ impl SoftUnit {
         let target = case.texture.target;
         if !path_targets(api, target) {
             return Err(SoftError::Target { api, target });
+        }
+        if api == ApiPath::Es100Ext && case.lookup.bias != 0.0 {
+            // EXT_shadow_samplers: shadow2DEXT(sampler, vec3) and shadow2DProjEXT(sampler, vec4) only.
+            return Err(SoftError::Undefined {
+                spec: self.spec,
+                what: "a bias argument to shadow2DEXT",
+            });
         }
         let s = &case.sampler;
         if api == ApiPath::GlslCore && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::Clamp) {

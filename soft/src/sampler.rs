@@ -109,6 +109,15 @@ impl SamplerState {
         if is_es(spec) && s.lod_bias != 0.0 {
             return Err(undefined(spec, "TEXTURE_LOD_BIAS (not in OpenGL ES)"));
         }
+        if spec == Spec::Es2Ext {
+            // ES 2.0 has no TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD.
+            if tex.base_level != 0 || s.max_level.is_some() {
+                return Err(undefined(spec, "TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL (not in OpenGL ES 2.0)"));
+            }
+            if s.min_lod != -1000.0 || s.max_lod != 1000.0 {
+                return Err(undefined(spec, "TEXTURE_MIN_LOD / TEXTURE_MAX_LOD (not in OpenGL ES 2.0)"));
+            }
+        }
         if s.min_lod > s.max_lod {
             return Err(SoftError::UndefinedResult(
                 "TEXTURE_MIN_LOD > TEXTURE_MAX_LOD makes λ undefined (eq. 8.9)",

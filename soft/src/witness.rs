@@ -1,0 +1,277 @@
+//! A witness for every seedable fault: a small case (and API path) on which the faulty unit's
+//! RGBA differs from the correct unit's. The test below proves each fault switch is live; the
+//! mutants command can use the witnesses to tell "the suite misses this fault" from "the fault
+//! is dead code".
+
+use crate::faults::Fault;
+use shadowcheck_model::*;
+
+/// D16 integer for x (exact for the values used here).
+fn d16(x: f64) -> u32 {
+    (x * 65535.0).round() as u32
+}
+
+/// A 2D case with one `w`×`h` level of unorm D16 texels, NEAREST, Dref 0.5, lookup at the centre.
+fn case(spec: Spec, w: u32, h: u32, texels: Vec<u32>, func: CompareFunc) -> Case {
+    Case {
+        id: "witness".into(),
+        spec,
+        api: vec![match spec {
+            Spec::Gl46 => ApiPath::GlslCore,
+            Spec::Gles32 => ApiPath::Es300,
+            Spec::Es2Ext => ApiPath::Es100Ext,
+            _ => ApiPath::FixedFunction,
+        }],
+        texture: Texture {
+            target: Target::T2d,
+            format: Format::D16,
+            base_level: 0,
+            levels: vec![Level {
+                width: w,
+                height: h,
+                layers: 1,
+                depth: Texels::Unorm(texels),
+                stencil: None,
+            }],
+        },
+        sampler: Sampler::new(CompareMode::Compare, func, Filter::Nearest),
+        lookup: Lookup {
+            coord: [0.5, 0.5, 0.0, 1.0],
+            layer: 0.0,
+            dref: 0.5,
+            projective: false,
+            lod: 0.0,
+            bias: 0.0,
+        },
+        expect: None,
+    }
+}
+
+fn gl(texels: Vec<u32>, w: u32, func: CompareFunc) -> Case {
+    case(Spec::Gl46, w, 1, texels, func)
+}
+
+fn float1(dt: f32, dref: f64, func: CompareFunc) -> Case {
+    let mut c = gl(vec![0], 1, func);
+    c.texture.format = Format::D32f;
+    c.texture.levels[0].depth = Texels::Float(vec![dt]);
+    c.lookup.dref = dref;
+    c
+}
+
+fn linear_pair() -> Case {
+    // 2x1 [Dt 0, Dt 1], s = ½, LEQUAL with Dref ½: PCF gives ½.
+    let mut c = gl(vec![0, 65535], 2, CompareFunc::Lequal);
+    c.sampler.min_filter = Filter::Linear;
+    c.sampler.mag_filter = Filter::Linear;
+    c
+}
+
+fn border(format: Format, func: CompareFunc, border: [f32; 4], dref: f64) -> Case {
+    let mut c = gl(vec![0, 0], 2, func);
+    if format == Format::D32f {
+        c.texture.format = format;
+        c.texture.levels[0].depth = Texels::Float(vec![0.0, 0.0]);
+    }
+    c.sampler.wrap_s = Wrap::ClampToBorder;
+    c.sampler.border = border;
+    c.lookup.coord[0] = 1.5;
+    c.lookup.dref = dref;
+    c
+}
+
+fn mips(filter: Filter, lod: f64) -> Case {
+    // 4x4 -> 2x2 -> 1x1; only level 1 passes.
+    let mut c = case(Spec::Gl46, 4, 4, vec![0; 16], CompareFunc::Lequal);
+    c.texture.levels.push(Level {
+        width: 2,
+        height: 2,
+        layers: 1,
+        depth: Texels::Unorm(vec![65535; 4]),
+        stencil: None,
+    });
+    c.texture.levels.push(Level {
+        width: 1,
+        height: 1,
+        layers: 1,
+        depth: Texels::Unorm(vec![0]),
+        stencil: None,
+    });
+    c.sampler.min_filter = filter;
+    c.lookup.lod = lod;
+    c
+}
+
+fn with_api(mut c: Case, api: ApiPath) -> Case {
+    c.api = vec![api];
+    c
+}
+
+/// A case on which `fault` changes the result, and the API path to look at.
+pub fn witness(fault: Fault) -> (Case, ApiPath) {
+    use CompareFunc as C;
+    let c = match fault {
+        Fault::RefClampedForFloat => float1(1.0, 1.5, C::Lequal),
+        Fault::RefNotClamped => {
+            let mut c = gl(vec![65535], 1, C::Lequal);
+            c.lookup.dref = 1.5;
+            c
+        }
+        Fault::DtClampedForFloat => border(Format::D32f, C::Less, [1.5, 0.0, 0.0, 0.0], 1.2),
+        Fault::DtNotClamped => border(Format::D16, C::Less, [1.5, 0.0, 0.0, 0.0], 1.2),
+        Fault::FilterThenCompare | Fault::PcfHalfTexelOff | Fault::LinearAsNearest => linear_pair(),
+        Fault::LequalGequalSwapped => gl(vec![65535], 1, C::Lequal),
+        Fault::LessAsLequal | Fault::GreaterAsGequal => {
+            let mut c = gl(vec![d16(0.6)], 1, if fault == Fault::LessAsLequal { C::Less } else { C::Greater });
+            c.lookup.dref = 0.6;
+            c
+        }
+        Fault::EqualWithTolerance => {
+            let mut c = gl(vec![d16(0.6)], 1, C::Equal);
+            c.lookup.dref = 0.6001;
+            c
+        }
+        Fault::NanOrderedNotequal => float1(0.5, f64::NAN, C::Notequal),
+        Fault::AlwaysNeverSwapped => gl(vec![0], 1, C::Always),
+        Fault::SgixOperatorsReversed => case(Spec::Sgix, 1, 1, vec![d16(0.2)], C::LequalRSgix),
+        Fault::AmbientAppliedToPass | Fault::AmbientIgnored => {
+            let pass = fault == Fault::AmbientAppliedToPass;
+            let mut c = case(Spec::ArbAmbient, 1, 1, vec![if pass { 65535 } else { 0 }], C::Lequal);
+            c.sampler.fail_value = Some(0.25);
+            c
+        }
+        Fault::RedModeAsLuminance | Fault::IntensityAsLuminance | Fault::WrongDefaultDepthMode => {
+            let (texel, mode) = match fault {
+                Fault::RedModeAsLuminance => (65535, Some(DepthTextureMode::Red)),
+                Fault::IntensityAsLuminance => (0, Some(DepthTextureMode::Intensity)),
+                _ => (65535, None),
+            };
+            let mut c = with_api(gl(vec![texel], 1, C::Lequal), ApiPath::FixedFunction);
+            c.sampler.depth_texture_mode = mode;
+            c
+        }
+        Fault::CompareAppliedToColour => {
+            let mut c = gl(vec![51], 1, C::Lequal);
+            c.texture.format = Format::R8;
+            c
+        }
+        Fault::StencilModeIgnored => {
+            let mut c = gl(vec![0], 1, C::Lequal);
+            c.texture.format = Format::D24S8;
+            c.texture.levels[0].stencil = Some(vec![7]);
+            c.sampler.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
+            c
+        }
+        Fault::IncompleteNotZero | Fault::MipmapCompletenessIgnored => {
+            let mut c = case(Spec::Gl46, 2, 2, vec![65535; 4], C::Lequal);
+            c.sampler.min_filter = Filter::LinearMipmapLinear;
+            c
+        }
+        Fault::EsDepthFilterCompletenessIgnored => {
+            let mut c = case(Spec::Gles32, 1, 1, vec![65535], C::Lequal);
+            c.sampler.compare_mode = CompareMode::None;
+            c.sampler.min_filter = Filter::Linear;
+            c
+        }
+        Fault::ProjectiveDivideMissing | Fault::RefNotDividedByQ => {
+            let mut c = case(Spec::Gl46, 2, 2, vec![0, d16(0.6), 0, 0], C::Lequal);
+            c.lookup.coord = [1.5, 0.5, 0.0, 2.0];
+            c.lookup.dref = 1.2;
+            c.lookup.projective = true;
+            c
+        }
+        Fault::LayerTruncated => {
+            let mut c = gl(vec![0, 0, 65535], 1, C::Lequal);
+            c.texture.target = Target::T2dArray;
+            c.texture.levels[0].layers = 3;
+            c.lookup.coord[2] = 1.5;
+            c
+        }
+        Fault::CubeNegYFlipped => {
+            // 2x2 faces; on -Y only row 0 passes. Direction (0.1, -1, 0.5): t_c = -r_z -> t = ¼, row 0.
+            let mut texels = vec![0; 24];
+            texels[12] = 65535;
+            texels[13] = 65535;
+            let mut c = case(Spec::Gl46, 2, 2, vec![], C::Lequal);
+            c.texture.target = Target::Cube;
+            c.texture.levels[0] = Level {
+                width: 2,
+                height: 2,
+                layers: 6,
+                depth: Texels::Unorm(texels),
+                stencil: None,
+            };
+            c.lookup.coord = [0.1, -1.0, 0.5, 1.0];
+            c
+        }
+        Fault::MipLevelOffByOne => mips(Filter::NearestMipmapNearest, 0.25),
+        Fault::TrilinearNoBlend => mips(Filter::LinearMipmapLinear, 0.25),
+        Fault::LodBiasIgnored => {
+            let mut c = mips(Filter::NearestMipmapNearest, 0.0);
+            c.sampler.lod_bias = 1.0;
+            c
+        }
+        Fault::LodClampIgnored => {
+            let mut c = mips(Filter::NearestMipmapNearest, 1.0);
+            c.sampler.max_lod = 0.4;
+            c
+        }
+        Fault::MaxLevelIgnored => {
+            let mut c = mips(Filter::NearestMipmapNearest, 1.0);
+            c.sampler.max_level = Some(0);
+            c
+        }
+        Fault::BorderIgnored | Fault::BorderDepthFromAlpha => border(Format::D16, C::Lequal, [1.0, 0.0, 0.0, 0.0], 0.5),
+        Fault::MirroredRepeatOffByOne => {
+            // s = 0.3 on 4 texels: u = 1.2, i = 1 -> (3) − mirror(1 − 4) = 3 − 2 = 1.
+            let mut c = gl(vec![65535, 0, 0, 0], 4, C::Lequal);
+            c.sampler.wrap_s = Wrap::MirroredRepeat;
+            c.lookup.coord[0] = 0.3;
+            c
+        }
+        Fault::UnormDividedByPowerOfTwo => {
+            let mut c = gl(vec![65535], 1, C::Lequal);
+            c.lookup.dref = 1.0;
+            c
+        }
+    };
+    let api = c.api[0];
+    (c, api)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::SoftUnit;
+
+    #[test]
+    fn every_fault_has_a_witness() {
+        for &f in Fault::ALL {
+            let (c, api) = witness(f);
+            shadowcheck_model::validate::validate(&c).unwrap();
+            let good = SoftUnit::new(c.spec).sample(&c, api).unwrap();
+            let bad = SoftUnit::new(c.spec).with_fault(f).sample(&c, api).unwrap();
+            assert_ne!(
+                good.map(f32::to_bits),
+                bad.map(f32::to_bits),
+                "{f}: correct {good:?}, faulty {bad:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn witnesses_give_the_hand_computed_correct_values() {
+        // A few of the correct values, from the spec text (see each builder's comment).
+        let r = |f| {
+            let (c, api) = witness(f);
+            SoftUnit::new(c.spec).sample(&c, api).unwrap()
+        };
+        assert_eq!(r(Fault::FilterThenCompare)[0], 0.5); // PCF ½·0 + ½·1
+        assert_eq!(r(Fault::RefClampedForFloat)[0], 0.0); // D32F: 1.5 ≤ 1.0 fails
+        assert_eq!(r(Fault::DtClampedForFloat)[0], 1.0); // 1.2 < border 1.5
+        assert_eq!(r(Fault::WrongDefaultDepthMode), [1.0, 1.0, 1.0, 1.0]); // LUMINANCE default
+        assert_eq!(r(Fault::CubeNegYFlipped)[0], 1.0);
+        assert_eq!(r(Fault::MirroredRepeatOffByOne)[0], 0.0); // texel 1 (Dt 0) fails
+        assert_eq!(r(Fault::AmbientIgnored), [0.25, 0.25, 0.25, 1.0]);
+    }
+}
