@@ -25,6 +25,9 @@ enum Command {
     /// (internal) A GL worker process speaking runner/PROTOCOL.md on stdin/stdout.
     #[command(hide = true)]
     GlWorker(cmd::gl_worker::Args),
+    /// (internal) The `mock:` backend's process, speaking runner/PROTOCOL.md (runner self-tests).
+    #[command(hide = true)]
+    MockWorker(cmd::mock_worker::Args),
 }
 
 fn main() -> std::process::ExitCode {
@@ -35,6 +38,7 @@ fn main() -> std::process::ExitCode {
         Command::Run(a) => cmd::run::main(a),
         Command::Merge(a) => cmd::merge::main(a),
         Command::GlWorker(a) => cmd::gl_worker::main(a),
+        Command::MockWorker(a) => cmd::mock_worker::main(a),
     };
     match result {
         Ok(code) => code,

@@ -3,4 +3,5 @@ pub mod explain;
 pub mod gen;
 pub mod gl_worker;
 pub mod merge;
+pub mod mock_worker;
 pub mod run;

@@ -1,9 +1,158 @@
-//! `shadowcheck run` (being built).
+//! `shadowcheck run`: fixtures → backends → verdicts → reports. Exit codes: runner/README.md.
+
+use anyhow::{bail, Context};
+use shadowcheck_runner::backend::{self, Backend, Options};
+use shadowcheck_runner::baseline::{Baseline, Lists, RegexList};
+use shadowcheck_runner::events::{exit, Fanout, RunMeta};
+use shadowcheck_runner::report::{self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports};
+use shadowcheck_runner::resume::{self, Prior, RESULTS_FILE};
+use shadowcheck_runner::run::{self, Settings};
+use shadowcheck_runner::shard::Shard;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::Duration;
+
+/// The fixtures run when `--fixtures` is not given.
+pub const DEFAULT_FIXTURES: &str = "cases/fixtures";
+
+/// The Debian packages that provide the GL drivers the GL backends use.
+pub const MESA_INSTALL: &str = "apt-get install -y libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers";
 
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Backend to run (repeatable): soft, soft:<spec>, exec:<command>, egl:<driver>..., osmesa:<driver>...,
+    /// mock:<script>. Default: soft plus every GL driver found on this machine.
+    #[arg(long = "backend", short = 'b', value_name = "B")]
+    backends: Vec<String>,
+    /// Fixture file or directory (repeatable). Default: cases/fixtures.
+    #[arg(long, value_name = "PATH")]
+    fixtures: Vec<PathBuf>,
+    /// Only cases whose id matches this regular expression.
+    #[arg(long, value_name = "PATTERN")]
+    cases: Option<String>,
+    /// Only shard K of N (1-based; by a hash of the case id).
+    #[arg(long, value_name = "K/N")]
+    shard: Option<Shard>,
+    /// Expected failures, deqp-runner `test,Status` CSV (a previous failures.csv works).
+    #[arg(long, value_name = "FILE")]
+    baseline: Option<PathBuf>,
+    /// Tests to skip: one regex per line, `#` comments.
+    #[arg(long, value_name = "FILE")]
+    skips: Option<PathBuf>,
+    /// Tests known to be flaky: one regex per line; their failures are KnownFlake.
+    #[arg(long, value_name = "FILE")]
+    flakes: Option<PathBuf>,
+    /// Output directory. Default: out/<backend names>.
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// Finish an interrupted run in --out: tests already in results.jsonl are not run again.
+    #[arg(long)]
+    resume: bool,
+    /// Seconds an external implementation may take for one group of cases.
+    #[arg(long, value_name = "SECS", default_value_t = 10.0)]
+    timeout: f64,
+    /// Print the time spent per backend (lookups vs. verdicts and reporting).
+    #[arg(long)]
+    profile: bool,
+    /// Do not re-run regressions to detect flakes.
+    #[arg(long)]
+    no_rerun: bool,
+    /// Show implementations' stderr lines and restarts.
+    #[arg(long, short = 'v')]
+    verbose: bool,
+}
 
-pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("`run` is not built yet")
+/// `out/<backends>` with characters unfit for a file name replaced.
+fn default_out(backends: &[String]) -> PathBuf {
+    let name = if backends.is_empty() { "all".to_string() } else { backends.join("+") };
+    let slug: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() || "-_+.=".contains(c) { c } else { '_' })
+        .take(80)
+        .collect();
+    Path::new("out").join(slug)
+}
+
+fn lists(a: &Args) -> anyhow::Result<Lists> {
+    Ok(Lists {
+        baseline: a.baseline.as_deref().map(Baseline::load).transpose()?.unwrap_or_default(),
+        skips: a.skips.as_deref().map(RegexList::load).transpose()?.unwrap_or_default(),
+        flakes: a.flakes.as_deref().map(RegexList::load).transpose()?.unwrap_or_default(),
+    })
+}
+
+pub fn main(a: Args) -> anyhow::Result<ExitCode> {
+    let pattern = a.cases.as_deref().map(regex::Regex::new).transpose().context("--cases")?;
+    if !(a.timeout > 0.0 && a.timeout.is_finite()) {
+        bail!("--timeout must be a positive number of seconds");
+    }
+    let lists = lists(&a)?;
+    let fixtures = if a.fixtures.is_empty() { vec![PathBuf::from(DEFAULT_FIXTURES)] } else { a.fixtures.clone() };
+
+    let names = if a.backends.is_empty() {
+        let names = backend::default_backends();
+        if names.len() == 1 {
+            eprintln!("shadowcheck: no GL driver found on this machine; running the soft backend only. Install Mesa for the GL backends: {MESA_INSTALL}");
+        }
+        names
+    } else {
+        a.backends.clone()
+    };
+    let out_dir = a.out.clone().unwrap_or_else(|| default_out(&a.backends));
+    std::fs::create_dir_all(&out_dir).with_context(|| format!("creating {}", out_dir.display()))?;
+
+    let meta = RunMeta {
+        backends: names.clone(),
+        fixtures: fixtures.iter().map(|p| p.display().to_string()).collect(),
+        cases: a.cases.clone(),
+        shard: a.shard.map(|s| s.to_string()),
+        baseline: a.baseline.as_ref().map(|p| p.display().to_string()),
+        ..RunMeta::new()
+    };
+    let results_path = out_dir.join(RESULTS_FILE);
+    let (prior, jsonl) = if a.resume && results_path.exists() {
+        resume::truncate_partial_line(&results_path)?;
+        let prior = Prior::read(&results_path)?;
+        if let Some(m) = &prior.meta {
+            if *m != meta {
+                bail!(
+                    "--resume: {} was written by a different selection ({:?}); give the same --backend/--fixtures/--cases/--shard/--baseline, or drop --resume",
+                    results_path.display(),
+                    m
+                );
+            }
+        }
+        (prior, JsonlReporter::append(&results_path)?)
+    } else {
+        (Prior::default(), JsonlReporter::create(&results_path, &meta)?)
+    };
+
+    let opts = Options { timeout: Duration::from_secs_f64(a.timeout) };
+    let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(names.len());
+    for n in &names {
+        backends.push(backend::open(n, &opts)?);
+    }
+
+    let mut set = run::load_cases(&fixtures);
+    let loaded_any = !set.files.is_empty();
+    set.select(pattern.as_ref(), a.shard);
+    if !loaded_any && set.cases.is_empty() {
+        for e in &set.errors {
+            eprintln!("shadowcheck: error: {}: {}", e.file, e.message);
+        }
+        bail!("no fixture could be loaded from {}", meta.fixtures.join(", "));
+    }
+
+    let mut fanout = Fanout::default();
+    fanout.reporters.push(Box::new(TerminalReporter::new(a.profile, a.verbose)));
+    fanout.reporters.push(Box::new(jsonl));
+    fanout.reporters.extend(report::file_reporters(&out_dir, &FileReports::default()));
+    let settings = Settings { lists, rerun_regressions: !a.no_rerun, explicit_fixtures: !a.fixtures.is_empty() };
+    let (_, summary, _) = run::run_all(&mut backends, &set, &prior, &settings, &mut fanout, &out_dir);
+    drop(backends);
+    if let Some((_, e)) = fanout.error {
+        eprintln!("shadowcheck: error: writing reports in {}: {e}", out_dir.display());
+        return Ok(ExitCode::from(exit::SETUP));
+    }
+    Ok(ExitCode::from(summary.exit_code))
 }

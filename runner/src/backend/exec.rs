@@ -1,0 +1,428 @@
+//! `exec:` backends: an implementation in a child process speaking runner/PROTOCOL.md.
+//!
+//! Pipelined: a group of cases is written, then `flush`, then the answers are read (a reader
+//! thread drains stdout, so a process that answers while reading never blocks on a full pipe).
+//! A process that dies, stalls or answers garbage is killed; the unanswered part of the group is
+//! bisected in fresh processes until the case that does it is alone (Crash or Timeout), and the
+//! run goes on. The GL backends and the mock use the same machinery.
+
+use super::protocol::{self, Answer, ApiResultMsg};
+use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome, Options};
+use shadowcheck_model::{ApiPath, Case};
+use std::collections::VecDeque;
+use std::io::{BufRead, BufReader, BufWriter, Write};
+use std::path::PathBuf;
+use std::process::{Child, ChildStdin, Command, Stdio};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::sync::{Arc, Mutex};
+use std::thread::JoinHandle;
+use std::time::{Duration, Instant};
+
+/// The program to start, with its arguments and extra environment.
+#[derive(Debug, Clone)]
+pub struct ProcessCommand {
+    pub program: PathBuf,
+    pub args: Vec<String>,
+    pub env: Vec<(String, String)>,
+}
+
+/// Splits a command line on whitespace, honouring '...' and "..." quoting and backslash escapes.
+/// No shell is involved (so killing the process kills the implementation itself).
+pub fn split_command(s: &str) -> Result<Vec<String>, String> {
+    let mut out = vec![];
+    let mut cur = String::new();
+    let mut in_word = false;
+    let mut chars = s.chars();
+    while let Some(c) = chars.next() {
+        match c {
+            '\'' => {
+                in_word = true;
+                loop {
+                    match chars.next() {
+                        Some('\'') => break,
+                        Some(ch) => cur.push(ch),
+                        None => return Err(format!("unclosed ' in `{s}`")),
+                    }
+                }
+            }
+            '"' => {
+                in_word = true;
+                loop {
+                    match chars.next() {
+                        Some('"') => break,
+                        Some('\\') => cur.push(chars.next().ok_or_else(|| format!("trailing \\ in `{s}`"))?),
+                        Some(ch) => cur.push(ch),
+                        None => return Err(format!("unclosed \" in `{s}`")),
+                    }
+                }
+            }
+            '\\' => {
+                in_word = true;
+                cur.push(chars.next().ok_or_else(|| format!("trailing \\ in `{s}`"))?);
+            }
+            c if c.is_whitespace() => {
+                if in_word {
+                    out.push(std::mem::take(&mut cur));
+                    in_word = false;
+                }
+            }
+            c => {
+                in_word = true;
+                cur.push(c);
+            }
+        }
+    }
+    if in_word {
+        out.push(cur);
+    }
+    Ok(out)
+}
+
+/// Keeps the last lines a process wrote to stderr.
+type Tail = Arc<Mutex<VecDeque<String>>>;
+const TAIL_LINES: usize = 8;
+
+/// One running implementation process.
+struct Proc {
+    child: Child,
+    stdin: Option<BufWriter<ChildStdin>>,
+    lines: Receiver<String>,
+    tail: Tail,
+    stderr_thread: Option<JoinHandle<()>>,
+}
+
+impl Proc {
+    fn spawn(cmd: &ProcessCommand, diags: &Arc<Mutex<Vec<String>>>) -> Result<Proc, String> {
+        let mut c = Command::new(&cmd.program);
+        c.args(&cmd.args).stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped());
+        for (k, v) in &cmd.env {
+            c.env(k, v);
+        }
+        let mut child = c.spawn().map_err(|e| format!("cannot start `{}`: {e}", cmd.program.display()))?;
+        let (Some(stdin), Some(stdout), Some(stderr)) = (child.stdin.take(), child.stdout.take(), child.stderr.take()) else {
+            let _ = child.kill();
+            return Err("child pipes missing".to_string());
+        };
+        let (tx, lines) = mpsc::channel();
+        std::thread::spawn(move || {
+            for line in BufReader::new(stdout).lines() {
+                match line {
+                    Ok(l) => {
+                        if tx.send(l).is_err() {
+                            break;
+                        }
+                    }
+                    Err(_) => break,
+                }
+            }
+        });
+        let tail: Tail = Arc::new(Mutex::new(VecDeque::new()));
+        let (t2, d2) = (tail.clone(), diags.clone());
+        let stderr_thread = std::thread::spawn(move || {
+            for line in BufReader::new(stderr).lines().map_while(Result::ok) {
+                if let Ok(mut t) = t2.lock() {
+                    if t.len() == TAIL_LINES {
+                        t.pop_front();
+                    }
+                    t.push_back(line.clone());
+                }
+                if let Ok(mut d) = d2.lock() {
+                    if d.len() < 10_000 {
+                        d.push(line);
+                    }
+                }
+            }
+        });
+        Ok(Proc { child, stdin: Some(BufWriter::with_capacity(1 << 16, stdin)), lines, tail, stderr_thread: Some(stderr_thread) })
+    }
+
+    fn send(&mut self, line: &[u8]) -> std::io::Result<()> {
+        let w = self.stdin.as_mut().ok_or(std::io::ErrorKind::BrokenPipe)?;
+        w.write_all(line)?;
+        w.write_all(b"\n")
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.stdin.as_mut().ok_or(std::io::ErrorKind::BrokenPipe)?.flush()
+    }
+
+    /// Kills the process and says how it ended, with its last stderr lines.
+    fn kill(mut self) -> String {
+        let _ = self.child.kill();
+        let status = self.child.wait().map(|s| s.to_string()).unwrap_or_else(|e| e.to_string());
+        // Give the stderr reader a moment to drain what the process wrote before dying.
+        if let Some(h) = self.stderr_thread.take() {
+            let t0 = Instant::now();
+            while !h.is_finished() && t0.elapsed() < Duration::from_millis(300) {
+                std::thread::sleep(Duration::from_millis(5));
+            }
+        }
+        let tail: Vec<String> = self.tail.lock().map(|t| t.iter().cloned().collect()).unwrap_or_default();
+        if tail.is_empty() {
+            status
+        } else {
+            format!("{status}; stderr: {}", tail.join(" | "))
+        }
+    }
+
+    /// Ends the process politely (`bye`, stdin closed), killing it if it lingers.
+    fn finish(mut self) {
+        let _ = self.send(br#"{"type":"bye"}"#);
+        let _ = self.flush();
+        drop(self.stdin.take());
+        let t0 = Instant::now();
+        while t0.elapsed() < Duration::from_secs(1) {
+            if let Ok(Some(_)) = self.child.try_wait() {
+                return;
+            }
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        self.kill();
+    }
+}
+
+enum Failure {
+    /// Unparsable or out-of-order answer: the case it should have answered is Crash.
+    Protocol(String),
+    /// The process exited or closed stdout.
+    Died,
+    /// No answer before the deadline.
+    Stalled,
+}
+
+/// A backend speaking PROTOCOL.md through a child process.
+pub struct ExecBackend {
+    name: String,
+    cmd: ProcessCommand,
+    timeout: Duration,
+    caps: Capabilities,
+    wants_expect: bool,
+    proc: Option<Proc>,
+    diags: Arc<Mutex<Vec<String>>>,
+    /// How many processes were started (the first one included).
+    pub spawns: usize,
+}
+
+impl ExecBackend {
+    /// Starts the process and reads its capabilities.
+    pub fn start(name: &str, cmd: ProcessCommand, opts: &Options) -> Result<ExecBackend, BackendError> {
+        let mut b = ExecBackend {
+            name: name.to_string(),
+            cmd,
+            timeout: opts.timeout,
+            caps: Capabilities::default(),
+            wants_expect: false,
+            proc: None,
+            diags: Arc::new(Mutex::new(vec![])),
+            spawns: 0,
+        };
+        let hello = b.ensure().map_err(|msg| BackendError::Setup { backend: name.to_string(), msg })?;
+        if let Some(h) = hello {
+            b.caps = h.capabilities;
+            b.wants_expect = h.wants_expect;
+            if let Some(n) = h.name {
+                b.push_diag(format!("implementation: {n}"));
+            }
+        }
+        Ok(b)
+    }
+
+    fn push_diag(&self, msg: String) {
+        if let Ok(mut d) = self.diags.lock() {
+            d.push(msg);
+        }
+    }
+
+    /// Makes sure a greeted process is running; returns its hello when it had to start one.
+    fn ensure(&mut self) -> Result<Option<protocol::Hello>, String> {
+        if self.proc.is_some() {
+            return Ok(None);
+        }
+        let mut p = Proc::spawn(&self.cmd, &self.diags)?;
+        self.spawns += 1;
+        let hello = protocol::hello_line();
+        if let Err(e) = p.send(hello.as_bytes()).and_then(|_| p.flush()) {
+            let how = p.kill();
+            return Err(format!("handshake failed: {e} ({how})"));
+        }
+        let line = match p.lines.recv_timeout(self.timeout) {
+            Ok(l) => l,
+            Err(RecvTimeoutError::Timeout) => {
+                let how = p.kill();
+                return Err(format!("no hello within {:?} ({how})", self.timeout));
+            }
+            Err(RecvTimeoutError::Disconnected) => {
+                let how = p.kill();
+                return Err(format!("exited before its hello ({how})"));
+            }
+        };
+        match protocol::parse_hello(&line) {
+            Ok(h) => {
+                self.proc = Some(p);
+                Ok(Some(h))
+            }
+            Err(e) => {
+                let how = p.kill();
+                Err(format!("bad hello: {e} ({how})"))
+            }
+        }
+    }
+
+    /// One attempt at a group in the current process: the answers received, and why it stopped
+    /// early if it did.
+    fn attempt(&mut self, group: &[&Case]) -> (Vec<CaseOutcome>, Option<Failure>) {
+        let Some(p) = self.proc.as_mut() else { return (vec![], Some(Failure::Died)) };
+        let mut buf = Vec::with_capacity(4096);
+        let mut write_err = None;
+        for c in group {
+            buf.clear();
+            protocol::write_case(&mut buf, c, self.wants_expect);
+            if let Err(e) = p.send(&buf) {
+                write_err = Some(e);
+                break;
+            }
+        }
+        if write_err.is_none() {
+            if let Err(e) = p.send(br#"{"type":"flush"}"#).and_then(|_| p.flush()) {
+                write_err = Some(e);
+            }
+        }
+        let deadline = Instant::now() + self.timeout;
+        let mut out = Vec::with_capacity(group.len());
+        for c in group {
+            let wait = deadline.saturating_duration_since(Instant::now());
+            let line = match p.lines.recv_timeout(wait) {
+                Ok(l) => l,
+                Err(RecvTimeoutError::Timeout) => return (out, Some(Failure::Stalled)),
+                Err(RecvTimeoutError::Disconnected) => return (out, Some(Failure::Died)),
+            };
+            match protocol::parse_answer(&line) {
+                Ok(a) if a.case_id() == c.id => out.push(to_outcome(c, a)),
+                Ok(a) => {
+                    let msg = format!("answer for `{}` where `{}` was expected", a.case_id(), c.id);
+                    return (out, Some(Failure::Protocol(msg)));
+                }
+                Err(e) => return (out, Some(Failure::Protocol(format!("bad answer line: {e}: {}", clip(&line))))),
+            }
+        }
+        let _ = write_err; // every case was answered: a late write error does not matter
+        (out, None)
+    }
+
+    fn kill_proc(&mut self) -> String {
+        self.proc.take().map(|p| p.kill()).unwrap_or_else(|| "not running".to_string())
+    }
+
+    /// Runs a group, bisecting whatever a dying or stalling process leaves unanswered.
+    fn run_group(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
+        let mut results = Vec::with_capacity(cases.len());
+        while results.len() < cases.len() {
+            let rest = &cases[results.len()..];
+            if let Err(msg) = self.ensure() {
+                // The implementation cannot even start again: nothing more can run.
+                let msg = format!("cannot restart the implementation: {msg}");
+                results.extend(rest.iter().map(|_| CaseOutcome::Crash(msg.clone())));
+                break;
+            }
+            let (answers, failure) = self.attempt(rest);
+            results.extend(answers);
+            let Some(failure) = failure else { break };
+            let rest = &cases[results.len()..];
+            match failure {
+                Failure::Protocol(msg) => {
+                    let how = self.kill_proc();
+                    self.push_diag(format!("{}: protocol error on `{}`: {msg}; restarting ({how})", self.name, rest[0].id));
+                    results.push(CaseOutcome::Crash(format!("protocol error: {msg}")));
+                }
+                Failure::Died | Failure::Stalled => {
+                    let stalled = matches!(failure, Failure::Stalled);
+                    let how = self.kill_proc();
+                    if rest.len() == 1 {
+                        let what = if stalled {
+                            CaseOutcome::Timeout(format!("no answer within {:?}", self.timeout))
+                        } else {
+                            CaseOutcome::Crash(format!("the process died on this case: {how}"))
+                        };
+                        self.push_diag(format!("{}: `{}`: {}", self.name, rest[0].id, if stalled { "timeout" } else { "crash" }));
+                        results.push(what);
+                    } else {
+                        let mid = rest.len() / 2;
+                        let (a, b) = rest.split_at(mid);
+                        let (a, b) = (a.to_vec(), b.to_vec());
+                        results.extend(self.run_group(&a));
+                        results.extend(self.run_group(&b));
+                    }
+                }
+            }
+        }
+        results
+    }
+}
+
+fn clip(s: &str) -> String {
+    if s.len() > 200 {
+        let mut end = 200;
+        while !s.is_char_boundary(end) {
+            end -= 1;
+        }
+        format!("{}...", &s[..end])
+    } else {
+        s.to_string()
+    }
+}
+
+fn to_outcome(case: &Case, a: Answer) -> CaseOutcome {
+    match a {
+        Answer::Skip { reason, .. } => CaseOutcome::Skip(reason),
+        Answer::Error { message, .. } => CaseOutcome::Error(message),
+        Answer::Observation { results, .. } => {
+            let mut v = Vec::with_capacity(results.len());
+            for ApiResultMsg { api, rgba, stored } in results {
+                match ApiPath::from_key(&api) {
+                    Some(a) if case.api.contains(&a) => v.push((a, ApiOutcome::Rgba { rgba: rgba.0, stored })),
+                    _ => return CaseOutcome::Error(format!("result for API path `{api}`, which the case does not have")),
+                }
+            }
+            CaseOutcome::Observed(v)
+        }
+    }
+}
+
+impl Backend for ExecBackend {
+    fn name(&self) -> &str {
+        &self.name
+    }
+    fn capabilities(&self) -> &Capabilities {
+        &self.caps
+    }
+    fn batch_size(&self) -> usize {
+        64
+    }
+    fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
+        self.run_group(cases)
+    }
+    fn take_diagnostics(&mut self) -> Vec<String> {
+        self.diags.lock().map(|mut d| std::mem::take(&mut *d)).unwrap_or_default()
+    }
+}
+
+impl Drop for ExecBackend {
+    fn drop(&mut self) {
+        if let Some(p) = self.proc.take() {
+            p.finish();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn split_command_quotes_like_a_shell() {
+        assert_eq!(split_command("python3 a.py --x").unwrap(), ["python3", "a.py", "--x"]);
+        assert_eq!(split_command(" 'a b' \"c \\\" d\" e\\ f ").unwrap(), ["a b", "c \" d", "e f"]);
+        assert_eq!(split_command("''").unwrap(), [""]);
+        assert!(split_command("'open").is_err());
+    }
+}

@@ -1,0 +1,227 @@
+//! `mock:<script>`: a scripted implementation for testing the runner itself (in the spirit of
+//! deqp-runner's mock suite). It runs as a child process (`shadowcheck mock-worker SCRIPT`) speaking
+//! PROTOCOL.md, so crashes and hangs are real.
+//!
+//! The script is a comma-separated list of `action=REGEX` (REGEX on the case id; `action` alone
+//! means every case); the first matching action wins, the default is `pass`:
+//! - `pass`: answers a value inside the strict acceptance set, laid out per API path;
+//! - `warn`: a value inside lenient but outside strict (Fail-level value when there is none);
+//! - `fail`: r = -1 (outside every acceptance set);
+//! - `skip`: answers skip; `error`: answers an error message;
+//! - `crash`: exits with status 3 on reading the case; `hang`: stops answering;
+//! - `garbage`: answers a line that is not JSON;
+//! - `flaky`: fails the first time it sees the case in this process, passes afterwards.
+//!
+//! Options (same list): `buffer` answers only at `flush` (like a GPU implementation; default is to
+//! answer each case as it is read); `slow=MS` sleeps MS milliseconds per case.
+//! Environment: `SHADOWCHECK_MOCK_KILL_RUNNER=REGEX` makes the worker SIGKILL its parent (the
+//! runner) on the first case whose id matches, to test that a killed run can be resumed.
+
+use super::protocol::{self, Answer, ApiResultMsg, Hello, Request};
+use super::Capabilities;
+use crate::events::Rgba;
+use regex::Regex;
+use shadowcheck_model::{Case, Channel, Profile};
+use std::collections::HashSet;
+use std::io::{BufRead, Write};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Action {
+    Pass,
+    Warn,
+    Fail,
+    Skip,
+    Error,
+    Crash,
+    Hang,
+    Garbage,
+    Flaky,
+}
+
+/// A parsed mock script.
+#[derive(Debug, Clone)]
+pub struct Script {
+    rules: Vec<(Action, Option<Regex>)>,
+    pub buffer: bool,
+    pub slow_ms: u64,
+}
+
+impl Script {
+    pub fn parse(s: &str) -> Result<Script, String> {
+        let mut script = Script { rules: vec![], buffer: false, slow_ms: 0 };
+        for item in s.split(',').map(str::trim).filter(|i| !i.is_empty()) {
+            let (key, val) = match item.split_once('=') {
+                Some((k, v)) => (k, Some(v)),
+                None => (item, None),
+            };
+            let action = match key {
+                "buffer" => {
+                    script.buffer = true;
+                    continue;
+                }
+                "slow" => {
+                    script.slow_ms = val.and_then(|v| v.parse().ok()).ok_or("slow=MS needs a number of milliseconds")?;
+                    continue;
+                }
+                "pass" => Action::Pass,
+                "warn" => Action::Warn,
+                "fail" => Action::Fail,
+                "skip" => Action::Skip,
+                "error" => Action::Error,
+                "crash" => Action::Crash,
+                "hang" => Action::Hang,
+                "garbage" => Action::Garbage,
+                "flaky" => Action::Flaky,
+                other => return Err(format!("unknown mock action `{other}`")),
+            };
+            let re = val.map(|v| Regex::new(v).map_err(|e| format!("mock `{item}`: {e}"))).transpose()?;
+            script.rules.push((action, re));
+        }
+        Ok(script)
+    }
+
+    pub fn action(&self, id: &str) -> Action {
+        self.rules
+            .iter()
+            .find(|(_, re)| re.as_ref().is_none_or(|r| r.is_match(id)))
+            .map(|(a, _)| *a)
+            .unwrap_or(Action::Pass)
+    }
+}
+
+/// The RGBA a path shows for r, per the expectation's layout (unused channels 0).
+fn laid_out(case: &Case, api: shadowcheck_model::ApiPath, r: f64) -> [f64; 4] {
+    let layout = case.expect.as_ref().and_then(|e| e.layout.get(&api)).copied().unwrap_or([Channel::R; 4]);
+    layout.map(|c| match c {
+        Channel::R => r,
+        Channel::One => 1.0,
+        Channel::Zero | Channel::Unused => 0.0,
+    })
+}
+
+fn strict_value(case: &Case) -> Option<f64> {
+    let e = case.expect.as_ref()?;
+    let acc = e.accept.get(&Profile::Strict)?;
+    match e.spec_value {
+        Some(v) if acc.contains(v) => Some(v),
+        _ => acc.0.first().map(|i| i.lo),
+    }
+}
+
+fn warn_value(case: &Case) -> Option<f64> {
+    let e = case.expect.as_ref()?;
+    let (strict, lenient) = (e.accept.get(&Profile::Strict)?, e.accept.get(&Profile::Lenient)?);
+    lenient.0.iter().flat_map(|i| [i.lo, i.hi, (i.lo + i.hi) / 2.0]).find(|v| !strict.contains(*v))
+}
+
+fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Answer {
+    let id = case.id.clone();
+    let value = match action {
+        Action::Skip => return Answer::Skip { case_id: id, reason: "mock: scripted skip".into() },
+        Action::Error => return Answer::Error { case_id: id, message: "mock: scripted error".into() },
+        Action::Fail => Some(-1.0),
+        Action::Warn => warn_value(case).or(Some(-1.0)),
+        Action::Flaky if seen.insert(case.id.clone()) => Some(-1.0),
+        _ => strict_value(case),
+    };
+    let Some(r) = value else {
+        return Answer::Skip { case_id: id, reason: "mock: the case carries no expectation to answer from".into() };
+    };
+    let results = case
+        .api
+        .iter()
+        .map(|&a| ApiResultMsg { api: a.key().to_string(), rgba: Rgba(laid_out(case, a, r)), stored: None })
+        .collect();
+    Answer::Observation { case_id: id, results }
+}
+
+fn kill_parent() {
+    let ppid = std::os::unix::process::parent_id();
+    let _ = std::process::Command::new("kill").args(["-KILL", &ppid.to_string()]).status();
+}
+
+/// The worker loop: reads requests from `input`, answers on `output`. Returns the exit status.
+pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> std::io::Result<i32> {
+    let kill_runner = std::env::var("SHADOWCHECK_MOCK_KILL_RUNNER").ok().and_then(|r| Regex::new(&r).ok());
+    let mut seen = HashSet::new();
+    let mut pending: Vec<String> = vec![];
+    for line in input.lines() {
+        let line = line?;
+        if line.trim().is_empty() {
+            continue;
+        }
+        let req: Request = match serde_json::from_str(&line) {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!("mock: cannot read `{line}`: {e}");
+                return Ok(2);
+            }
+        };
+        match req {
+            Request::Hello { .. } => {
+                let hello = Hello {
+                    kind: "hello".into(),
+                    protocol: protocol::PROTOCOL_VERSION,
+                    name: Some("shadowcheck mock".into()),
+                    capabilities: Capabilities::all(),
+                    wants_expect: true,
+                };
+                serde_json::to_writer(&mut output, &hello)?;
+                output.write_all(b"\n")?;
+                output.flush()?;
+            }
+            Request::Case { case } => {
+                if kill_runner.as_ref().is_some_and(|r| r.is_match(&case.id)) {
+                    kill_parent();
+                }
+                if script.slow_ms > 0 {
+                    std::thread::sleep(std::time::Duration::from_millis(script.slow_ms));
+                }
+                let action = script.action(&case.id);
+                match action {
+                    Action::Crash => {
+                        eprintln!("mock: crashing on {}", case.id);
+                        return Ok(3);
+                    }
+                    Action::Hang => loop {
+                        std::thread::sleep(std::time::Duration::from_secs(3600));
+                    },
+                    Action::Garbage => pending.push("this is not json".to_string()),
+                    _ => pending.push(serde_json::to_string(&answer(&case, action, &mut seen))?),
+                }
+                if !script.buffer {
+                    for l in pending.drain(..) {
+                        writeln!(output, "{l}")?;
+                    }
+                    output.flush()?;
+                }
+            }
+            Request::Flush => {
+                for l in pending.drain(..) {
+                    writeln!(output, "{l}")?;
+                }
+                output.flush()?;
+            }
+            Request::Bye => break,
+        }
+    }
+    Ok(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn script_first_matching_rule_wins() {
+        let s = Script::parse("crash=boom,fail=lequal,buffer,slow=5").unwrap();
+        assert_eq!(s.action("x/boom/lequal"), Action::Crash);
+        assert_eq!(s.action("x/lequal"), Action::Fail);
+        assert_eq!(s.action("x/gequal"), Action::Pass);
+        assert!(s.buffer);
+        assert_eq!(s.slow_ms, 5);
+        assert!(Script::parse("explode").is_err());
+        assert!(Script::parse("fail=(").is_err());
+        assert_eq!(Script::parse("fail").unwrap().action("anything"), Action::Fail);
+    }
+}

@@ -1,0 +1,77 @@
+//! `soft` and `soft:<spec>`: the project's own texture unit (shadowcheck-soft), in process.
+//!
+//! `soft:<spec>` runs one specification variant and skips cases written for another spec;
+//! `soft` runs each case under its own spec's variant. In-process and allocation-light: one
+//! `SoftUnit` per spec, built once; each lookup returns four f32 channels.
+
+use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome};
+use shadowcheck_model::{Case, Spec};
+use shadowcheck_soft::SoftUnit;
+
+pub struct SoftBackend {
+    name: String,
+    /// `Some(spec)` for `soft:<spec>`.
+    only: Option<Spec>,
+    /// One unit per spec, indexed like `Spec::ALL`, built on first use.
+    units: Vec<Option<SoftUnit>>,
+    caps: Capabilities,
+}
+
+impl SoftBackend {
+    /// `variant`: empty for `soft`, a spec key for `soft:<spec>`.
+    pub fn new(name: &str, variant: &str) -> Result<SoftBackend, BackendError> {
+        let only = if variant.is_empty() {
+            None
+        } else {
+            Some(Spec::from_key(variant).ok_or_else(|| BackendError::Setup {
+                backend: name.to_string(),
+                msg: format!(
+                    "unknown soft variant `{variant}` (expected one of: {})",
+                    Spec::ALL.iter().map(|s| s.key()).collect::<Vec<_>>().join(", ")
+                ),
+            })?)
+        };
+        Ok(SoftBackend { name: name.to_string(), only, units: Spec::ALL.iter().map(|_| None).collect(), caps: Capabilities::all() })
+    }
+
+    fn unit(&mut self, spec: Spec) -> &SoftUnit {
+        let i = Spec::ALL.iter().position(|s| *s == spec).unwrap_or(0);
+        self.units[i].get_or_insert_with(|| SoftUnit::new(spec))
+    }
+
+    fn run_one(&mut self, case: &Case) -> CaseOutcome {
+        if let Some(only) = self.only {
+            if case.spec != only {
+                return CaseOutcome::Skip(format!("case is for spec {}", case.spec));
+            }
+        }
+        let unit = self.unit(case.spec);
+        let results = case
+            .api
+            .iter()
+            .map(|&api| {
+                let out = match unit.sample(case, api) {
+                    Ok(v) => ApiOutcome::Rgba { rgba: v.map(f64::from), stored: None },
+                    Err(e) => ApiOutcome::Skip(e.to_string()),
+                };
+                (api, out)
+            })
+            .collect();
+        CaseOutcome::Observed(results)
+    }
+}
+
+impl Backend for SoftBackend {
+    fn name(&self) -> &str {
+        &self.name
+    }
+    fn capabilities(&self) -> &Capabilities {
+        &self.caps
+    }
+    fn batch_size(&self) -> usize {
+        1024
+    }
+    fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
+        cases.iter().map(|c| self.run_one(c)).collect()
+    }
+}

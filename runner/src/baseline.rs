@@ -1,0 +1,182 @@
+//! Baselines, skips and flakes lists, in deqp-runner's formats.
+//!
+//! - Baseline: CSV lines `test,Status` (e.g. `gl46/2d/d16/...@core,Fail`); `#` starts a comment, blank
+//!   lines are ignored, a test listed twice is an error. `failures.csv` of a run is a valid baseline.
+//! - Skips and flakes: one regular expression per line (matched anywhere in the test name, anchor
+//!   with `^...$` for exact names), `#` comments.
+
+use crate::verdict::{Outcome, Status};
+use regex::RegexSet;
+use std::collections::HashMap;
+use std::path::Path;
+
+#[derive(Debug, thiserror::Error)]
+pub enum ListError {
+    #[error("{file}: {source}")]
+    Io { file: String, source: std::io::Error },
+    #[error("{file}:{line}: {msg}")]
+    Bad { file: String, line: usize, msg: String },
+}
+
+fn read(path: &Path) -> Result<String, ListError> {
+    std::fs::read_to_string(path).map_err(|source| ListError::Io { file: path.display().to_string(), source })
+}
+
+/// Expected statuses of known failures.
+#[derive(Debug, Default, Clone)]
+pub struct Baseline {
+    entries: HashMap<String, Status>,
+}
+
+impl Baseline {
+    pub fn load(path: &Path) -> Result<Baseline, ListError> {
+        Baseline::parse(&read(path)?, &path.display().to_string())
+    }
+
+    pub fn parse(text: &str, file: &str) -> Result<Baseline, ListError> {
+        let mut entries = HashMap::new();
+        for (i, raw) in text.lines().enumerate() {
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let bad = |msg: String| ListError::Bad { file: file.to_string(), line: i + 1, msg };
+            // The status is the last field; test names may not contain commas (ids never do).
+            let (test, status) = line.rsplit_once(',').ok_or_else(|| bad("expected `test,Status`".into()))?;
+            let status: Status = status.trim().parse().map_err(bad)?;
+            let status = match status {
+                Status::Plain(o) => Status::Plain(o),
+                // deqp-runner writes the raw status; accept a final status only where it is one.
+                s => return Err(bad(format!("`{s}` is not a status a baseline can expect (use Fail, Crash, Timeout, ...)"))),
+            };
+            if entries.insert(test.trim().to_string(), status).is_some() {
+                return Err(bad(format!("`{}` is listed twice", test.trim())));
+            }
+        }
+        Ok(Baseline { entries })
+    }
+
+    pub fn get(&self, test: &str) -> Option<Status> {
+        self.entries.get(test).copied()
+    }
+
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+}
+
+/// A list of regular expressions (skips, flakes).
+#[derive(Debug, Clone)]
+pub struct RegexList {
+    set: RegexSet,
+    patterns: Vec<String>,
+}
+
+impl Default for RegexList {
+    fn default() -> Self {
+        RegexList { set: RegexSet::empty(), patterns: vec![] }
+    }
+}
+
+impl RegexList {
+    pub fn load(path: &Path) -> Result<RegexList, ListError> {
+        RegexList::parse(&read(path)?, &path.display().to_string())
+    }
+
+    pub fn parse(text: &str, file: &str) -> Result<RegexList, ListError> {
+        let mut patterns = vec![];
+        for (i, raw) in text.lines().enumerate() {
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            regex::Regex::new(line).map_err(|e| ListError::Bad { file: file.to_string(), line: i + 1, msg: e.to_string() })?;
+            patterns.push(line.to_string());
+        }
+        let set = RegexSet::new(&patterns).map_err(|e| ListError::Bad { file: file.to_string(), line: 0, msg: e.to_string() })?;
+        Ok(RegexList { set, patterns })
+    }
+
+    /// The first pattern matching `test`.
+    pub fn matching(&self, test: &str) -> Option<&str> {
+        self.set.matches(test).iter().next().map(|i| self.patterns[i].as_str())
+    }
+}
+
+/// Everything that turns an outcome into a final status.
+#[derive(Debug, Default, Clone)]
+pub struct Lists {
+    pub baseline: Baseline,
+    pub skips: RegexList,
+    pub flakes: RegexList,
+}
+
+impl Lists {
+    /// The final status of `outcome` for `test`, as deqp-runner decides it:
+    /// a failure matching the flakes list is KnownFlake; a failure listed in the baseline with the
+    /// same status is ExpectedFail (with another failure status it stays a regression); a test
+    /// listed as failing that passes, warns or is skipped is UnexpectedImprovement.
+    pub fn status(&self, test: &str, outcome: Outcome) -> (Status, Option<String>) {
+        let listed = self.baseline.get(test);
+        if outcome.is_failure() {
+            if self.flakes.matching(test).is_some() {
+                return (Status::KnownFlake, None);
+            }
+            return match listed {
+                Some(Status::Plain(o)) if o == outcome => (Status::ExpectedFail, None),
+                Some(s) => (Status::Plain(outcome), Some(format!("baseline expects {s}"))),
+                None => (Status::Plain(outcome), None),
+            };
+        }
+        match listed {
+            Some(Status::Plain(o)) if o.is_failure() => (Status::UnexpectedImprovement(outcome), Some(format!("baseline expects {o}"))),
+            _ => (Status::Plain(outcome), None),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn baseline_reads_deqp_csv_and_rejects_duplicates() {
+        let b = Baseline::parse("# known\n\na@core,Fail\nb@ff,Crash\n", "b.csv").unwrap();
+        assert_eq!(b.get("a@core"), Some(Status::Plain(Outcome::Fail)));
+        assert_eq!(b.get("b@ff"), Some(Status::Plain(Outcome::Crash)));
+        assert_eq!(b.len(), 2);
+        let e = Baseline::parse("a@core,Fail\na@core,Crash\n", "b.csv").unwrap_err().to_string();
+        assert!(e.contains("b.csv:2") && e.contains("twice"), "{e}");
+        assert!(Baseline::parse("a@core,Broken\n", "b.csv").is_err());
+        assert!(Baseline::parse("just-a-name\n", "b.csv").is_err());
+    }
+
+    #[test]
+    fn lists_decide_like_deqp_runner() {
+        let lists = Lists {
+            baseline: Baseline::parse("f@core,Fail\nc@core,Crash\n", "b").unwrap(),
+            skips: RegexList::default(),
+            flakes: RegexList::parse("# flaky\n^flaky/\n", "f").unwrap(),
+        };
+        assert_eq!(lists.status("f@core", Outcome::Fail).0, Status::ExpectedFail);
+        assert_eq!(lists.status("f@core", Outcome::Pass).0, Status::UnexpectedImprovement(Outcome::Pass));
+        assert_eq!(lists.status("f@core", Outcome::Skip).0, Status::UnexpectedImprovement(Outcome::Skip));
+        assert_eq!(lists.status("c@core", Outcome::Fail).0, Status::Plain(Outcome::Fail));
+        assert_eq!(lists.status("new@core", Outcome::Timeout).0, Status::Plain(Outcome::Timeout));
+        assert_eq!(lists.status("flaky/x@core", Outcome::Crash).0, Status::KnownFlake);
+        assert_eq!(lists.status("flaky/x@core", Outcome::Pass).0, Status::Plain(Outcome::Pass));
+    }
+
+    #[test]
+    fn regex_list_reports_bad_line() {
+        let e = RegexList::parse("ok\n(unclosed\n", "s.txt").unwrap_err().to_string();
+        assert!(e.starts_with("s.txt:2:"), "{e}");
+        let l = RegexList::parse("lequal", "s").unwrap();
+        assert_eq!(l.matching("gl46/2d/lequal@core"), Some("lequal"));
+        assert_eq!(l.matching("gl46/2d/gequal@core"), None);
+    }
+}

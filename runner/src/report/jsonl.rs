@@ -1,0 +1,41 @@
+//! results.jsonl: one [`Line`] per record, appended and flushed as each test finishes, so a
+//! killed run leaves everything finished so far on disk (and `--resume` can continue it).
+
+use crate::events::{Event, Line, Reporter, RunMeta};
+use std::fs::{File, OpenOptions};
+use std::io::{BufWriter, Write};
+use std::path::Path;
+
+pub struct JsonlReporter {
+    out: BufWriter<File>,
+}
+
+impl JsonlReporter {
+    /// Starts `path` afresh with `meta` as its first line.
+    pub fn create(path: &Path, meta: &RunMeta) -> std::io::Result<JsonlReporter> {
+        let mut r = JsonlReporter { out: BufWriter::new(File::create(path)?) };
+        r.write(&Line::Meta(meta.clone()))?;
+        Ok(r)
+    }
+
+    /// Appends to an existing file (`--resume`; cut any partial last line first).
+    pub fn append(path: &Path) -> std::io::Result<JsonlReporter> {
+        Ok(JsonlReporter { out: BufWriter::new(OpenOptions::new().append(true).open(path)?) })
+    }
+
+    fn write(&mut self, line: &Line) -> std::io::Result<()> {
+        serde_json::to_writer(&mut self.out, line)?;
+        self.out.write_all(b"\n")?;
+        self.out.flush()
+    }
+}
+
+impl Reporter for JsonlReporter {
+    fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
+        match ev {
+            Event::CaseFinished { result, replayed: false } => self.write(&Line::Result(Box::new((*result).clone()))),
+            Event::LoadError(e) => self.write(&Line::LoadError((*e).clone())),
+            _ => Ok(()),
+        }
+    }
+}

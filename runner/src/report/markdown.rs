@@ -1,0 +1,79 @@
+//! report.md: totals, tables by spec / func / filter / format, load errors and failure dumps.
+
+use super::{breakdown, dump, wants_dump};
+use crate::events::{Event, LoadError, Reporter, Summary, TestResult};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Dumps beyond this many are summarized (the full list is in report.json).
+const MAX_DUMPS: usize = 500;
+
+pub struct MarkdownReporter {
+    dir: PathBuf,
+}
+
+impl MarkdownReporter {
+    pub fn new(dir: &Path) -> MarkdownReporter {
+        MarkdownReporter { dir: dir.to_path_buf() }
+    }
+}
+
+pub fn render(results: &[TestResult], errors: &[LoadError], summary: &Summary) -> String {
+    let mut s = String::new();
+    let c = &summary.counts;
+    let _ = writeln!(s, "# shadowcheck report\n");
+    let _ = writeln!(s, "Backends: {}\n", summary.backends.iter().map(|b| format!("`{b}`")).collect::<Vec<_>>().join(", "));
+    let _ = writeln!(s, "| status | tests |\n|---|---:|");
+    for (name, n) in [
+        ("Pass", c.pass),
+        ("Warn", c.warn),
+        ("Fail", c.fail),
+        ("Crash", c.crash),
+        ("Timeout", c.timeout),
+        ("Skip", c.skip),
+        ("ExpectedFail", c.expected_fail),
+        ("UnexpectedImprovement", c.unexpected_improvement),
+        ("Flake", c.flake),
+        ("KnownFlake", c.known_flake),
+    ] {
+        if n > 0 {
+            let _ = writeln!(s, "| {name} | {n} |");
+        }
+    }
+    let _ = writeln!(s, "| **total** | **{}** |\n", c.total());
+    let _ = writeln!(s, "Load errors: {}. Exit code: {}.\n", summary.load_errors, summary.exit_code);
+    for (dim, rows) in breakdown(results) {
+        let _ = writeln!(s, "## By {dim}\n\n| {dim} | tests | pass | warn | fail | skip | other |\n|---|---:|---:|---:|---:|---:|---:|");
+        for (k, r) in rows {
+            let _ = writeln!(s, "| `{k}` | {} | {} | {} | {} | {} | {} |", r.tests, r.pass, r.warn, r.fail, r.skip, r.other);
+        }
+        s.push('\n');
+    }
+    if !errors.is_empty() {
+        let _ = writeln!(s, "## Load errors\n");
+        for e in errors {
+            let _ = writeln!(s, "- `{}` {}: {}", e.file, e.case.as_deref().map(|c| format!("case `{c}`")).unwrap_or_default(), e.message);
+        }
+        s.push('\n');
+    }
+    let dumps: Vec<&TestResult> = results.iter().filter(|r| wants_dump(r)).collect();
+    if !dumps.is_empty() {
+        let _ = writeln!(s, "## Failures and warnings ({})\n", dumps.len());
+        for r in dumps.iter().take(MAX_DUMPS) {
+            let _ = writeln!(s, "```text\n{}```\n", dump(r, ""));
+        }
+        if dumps.len() > MAX_DUMPS {
+            let _ = writeln!(s, "... and {} more (see report.json).", dumps.len() - MAX_DUMPS);
+        }
+    }
+    s
+}
+
+impl Reporter for MarkdownReporter {
+    fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
+        if let Event::RunFinished { results, load_errors, summary } = ev {
+            std::fs::write(self.dir.join("report.md"), render(results, load_errors, summary))?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,163 @@
+//! Reporters: subscribers to the runner's [`Event`](crate::events::Event) stream.
+//!
+//! Files written under the output directory:
+//! - `results.jsonl`: one JSON record per line, appended and flushed as each test finishes
+//!   ([`jsonl`]); what `--resume` and `merge` read back;
+//! - `results.csv`: `test,status,duration,backend` (deqp-runner's columns plus the backend);
+//! - `failures.csv`: `test,Status` of every failing test, usable as the next `--baseline`;
+//! - `junit.xml`: one test suite per backend (quick-junit);
+//! - `report.json`: summary and every result, with `schema_version`;
+//! - `report.md`: summary tables and failure dumps.
+//!
+//! The terminal reporter shows progress on stderr and the summary on stdout.
+
+pub mod csv;
+pub mod json;
+pub mod jsonl;
+pub mod junit;
+pub mod markdown;
+pub mod terminal;
+
+use crate::events::{Reporter, TestResult};
+use crate::verdict::Outcome;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// A number as short as it reads (no trailing zeros), non-finite as nan/inf.
+pub fn num(v: f64) -> String {
+    if v.is_nan() {
+        "nan".into()
+    } else if v.is_infinite() {
+        if v > 0.0 { "inf".into() } else { "-inf".into() }
+    } else {
+        format!("{v}")
+    }
+}
+
+/// Tests whose outcome deserves a dump: anything that did not plainly pass or skip.
+pub fn wants_dump(r: &TestResult) -> bool {
+    matches!(r.outcome, Outcome::Fail | Outcome::Warn | Outcome::Crash | Outcome::Timeout) || r.status.is_improvement()
+}
+
+/// The failure dump of one test: id, expected (spec value and acceptance per profile), observed
+/// (four channels), the footprint (texels, stored depth, per-texel compare, weights) and the
+/// command that re-runs the case alone. `indent` prefixes every line.
+pub fn dump(r: &TestResult, indent: &str) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{indent}{}  {}  [{}]", r.status, r.test, r.backend);
+    if let Some(reason) = &r.reason {
+        let _ = writeln!(s, "{indent}  reason:    {reason}");
+    }
+    if let Some(e) = &r.expected {
+        let sv = e.spec_value.map(num).unwrap_or_else(|| "none".into());
+        let _ = writeln!(
+            s,
+            "{indent}  expected:  spec value {sv}; strict {}; lenient {}; layout ({}); verdict by {}",
+            e.strict, e.lenient, e.layout, e.profile
+        );
+        if !e.citations.is_empty() {
+            let _ = writeln!(s, "{indent}  cites:     {}", e.citations.join("; "));
+        }
+    }
+    if let Some(o) = &r.observed {
+        let ch: Vec<String> = o.0.iter().map(|v| num(*v)).collect();
+        let _ = writeln!(s, "{indent}  observed:  rgba ({})", ch.join(", "));
+    }
+    if let Some(f) = &r.footprint {
+        let _ = writeln!(s, "{indent}  footprint: Dref {} ({} texels)", num(f.dref), f.texels.len());
+        let _ = writeln!(s, "{indent}    {:<5} {:<16} {:<14} {:<12} {:<8} {}", "level", "texel x,y,layer", "stored", "Dt", "compare", "weight");
+        for t in &f.texels {
+            let xyz = t.xyz.map(|[x, y, z]| format!("{x},{y},{z}")).unwrap_or_else(|| "border".into());
+            let pass = match t.pass {
+                Some(true) => "pass",
+                Some(false) => "fail",
+                None => "either",
+            };
+            let _ = writeln!(
+                s,
+                "{indent}    {:<5} {:<16} {:<14} {:<12} {:<8} {}",
+                t.level,
+                xyz,
+                num(t.stored),
+                num(t.dt),
+                pass,
+                num(t.weight)
+            );
+        }
+    }
+    let _ = writeln!(s, "{indent}  re-run:    {}", r.rerun_command());
+    s
+}
+
+/// Per-value counts for one grid dimension.
+#[derive(Debug, Default, Clone)]
+pub struct Row {
+    pub tests: usize,
+    pub pass: usize,
+    pub warn: usize,
+    pub fail: usize,
+    pub skip: usize,
+    pub other: usize,
+}
+
+/// Counts by spec, compare func, filter and format (the dimensions of the summary tables).
+pub fn breakdown(results: &[TestResult]) -> Vec<(&'static str, BTreeMap<String, Row>)> {
+    let dims: [(&'static str, fn(&TestResult) -> &str); 4] = [
+        ("spec", |r| &r.tags.spec),
+        ("func", |r| &r.tags.func),
+        ("filter", |r| &r.tags.filter),
+        ("format", |r| &r.tags.format),
+    ];
+    dims.iter()
+        .map(|(name, key)| {
+            let mut m: BTreeMap<String, Row> = BTreeMap::new();
+            for r in results {
+                let row = m.entry(key(r).to_string()).or_default();
+                row.tests += 1;
+                match r.status.column() {
+                    "Pass" => row.pass += 1,
+                    "Warn" => row.warn += 1,
+                    "Fail" | "Crash" | "Timeout" => row.fail += 1,
+                    "Skip" => row.skip += 1,
+                    _ => row.other += 1,
+                }
+            }
+            (*name, m)
+        })
+        .collect()
+}
+
+/// Which file reporters to attach.
+#[derive(Debug, Clone)]
+pub struct FileReports {
+    pub csv: bool,
+    pub junit: bool,
+    pub json: bool,
+    pub markdown: bool,
+}
+
+impl Default for FileReports {
+    fn default() -> Self {
+        FileReports { csv: true, junit: true, json: true, markdown: true }
+    }
+}
+
+/// The end-of-run file reporters for `dir` (results.jsonl is attached separately, since `merge`
+/// does not rewrite it the same way).
+pub fn file_reporters(dir: &Path, which: &FileReports) -> Vec<Box<dyn Reporter>> {
+    let mut v: Vec<Box<dyn Reporter>> = vec![];
+    if which.csv {
+        v.push(Box::new(csv::CsvReporter::new(dir)));
+    }
+    if which.junit {
+        v.push(Box::new(junit::JunitReporter::new(dir)));
+    }
+    if which.json {
+        v.push(Box::new(json::JsonReporter::new(dir)));
+    }
+    if which.markdown {
+        v.push(Box::new(markdown::MarkdownReporter::new(dir)));
+    }
+    v
+}

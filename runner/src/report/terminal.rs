@@ -1,0 +1,132 @@
+//! The terminal: a progress bar on stderr for long runs (when stderr is a terminal), load errors
+//! and diagnostics on stderr as they come, and at the end the summary table by spec / func /
+//! filter / format and the dumps of regressions on stdout.
+
+use super::{breakdown, dump};
+use crate::events::{Event, Reporter};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use std::io::{IsTerminal, Write};
+
+/// Regressions dumped in full on the terminal (all of them are in report.md / report.json).
+const MAX_DUMPS: usize = 20;
+/// Runs with fewer tests than this show no progress bar.
+const BAR_MIN_TESTS: usize = 2000;
+
+pub struct TerminalReporter {
+    bar: Option<ProgressBar>,
+    /// Print per-backend timings (`--profile`).
+    pub profile: bool,
+    /// Show diagnostics of implementations (stderr lines, restarts).
+    pub verbose: bool,
+}
+
+impl TerminalReporter {
+    pub fn new(profile: bool, verbose: bool) -> TerminalReporter {
+        TerminalReporter { bar: None, profile, verbose }
+    }
+
+    fn err_line(&self, msg: &str) {
+        match &self.bar {
+            Some(b) => b.println(msg),
+            None => eprintln!("{msg}"),
+        }
+    }
+}
+
+impl Reporter for TerminalReporter {
+    fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
+        match ev {
+            Event::RunStarted { backends, tests, out_dir } => {
+                eprintln!("shadowcheck: {tests} tests on {} -> {}", backends.join(", "), out_dir.display());
+                if *tests >= BAR_MIN_TESTS && std::io::stderr().is_terminal() {
+                    let bar = ProgressBar::with_draw_target(Some(*tests as u64), ProgressDrawTarget::stderr());
+                    if let Ok(style) = ProgressStyle::with_template("{spinner} [{elapsed_precise}] {bar:40} {pos}/{len} {msg}") {
+                        bar.set_style(style);
+                    }
+                    self.bar = Some(bar);
+                }
+            }
+            Event::LoadError(e) => {
+                let case = e.case.as_deref().map(|c| format!(" case `{c}`")).unwrap_or_default();
+                self.err_line(&format!("error: {}{case}: {}", e.file, e.message));
+            }
+            Event::BackendStarted { backend, .. } => {
+                if let Some(b) = &self.bar {
+                    b.set_message(backend.to_string());
+                }
+            }
+            Event::Diagnostic { backend, message } => {
+                if self.verbose {
+                    self.err_line(&format!("[{backend}] {message}"));
+                }
+            }
+            Event::CaseFinished { result, .. } => {
+                if let Some(b) = &self.bar {
+                    if result.rerun.is_none() {
+                        b.inc(1);
+                    }
+                }
+            }
+            Event::BackendFinished { backend, counts, timing } => {
+                let line = format!(
+                    "{backend}: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} improvement, {} flake",
+                    counts.pass,
+                    counts.warn,
+                    counts.fail,
+                    counts.crash,
+                    counts.timeout,
+                    counts.skip,
+                    counts.expected_fail,
+                    counts.unexpected_improvement,
+                    counts.flake + counts.known_flake
+                );
+                self.err_line(&line);
+                if self.profile {
+                    let rate = if timing.backend_s > 0.0 { timing.cases_sent as f64 / timing.backend_s } else { 0.0 };
+                    self.err_line(&format!(
+                        "profile {backend}: {} cases sent, {:.3} s in the backend ({rate:.0} cases/s), {:.3} s judging and reporting",
+                        timing.cases_sent, timing.backend_s, timing.verdict_s
+                    ));
+                }
+            }
+            Event::RunFinished { results, summary, .. } => {
+                if let Some(b) = self.bar.take() {
+                    b.finish_and_clear();
+                }
+                let mut out = std::io::stdout().lock();
+                for (dim, rows) in breakdown(results) {
+                    writeln!(out, "{dim:<24} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}", "tests", "pass", "warn", "fail", "skip", "other")?;
+                    for (k, r) in rows {
+                        writeln!(out, "  {k:<22} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}", r.tests, r.pass, r.warn, r.fail, r.skip, r.other)?;
+                    }
+                }
+                let regressions: Vec<_> = results.iter().filter(|r| r.status.is_regression() || r.status.is_improvement()).collect();
+                for r in regressions.iter().take(MAX_DUMPS) {
+                    write!(out, "\n{}", dump(r, ""))?;
+                }
+                if regressions.len() > MAX_DUMPS {
+                    writeln!(out, "\n... {} more in report.md", regressions.len() - MAX_DUMPS)?;
+                }
+                let c = &summary.counts;
+                writeln!(
+                    out,
+                    "\nshadowcheck: {} tests: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} unexpected improvement, {} flake, {} known flake; {} load errors; exit code {}",
+                    c.total(),
+                    c.pass,
+                    c.warn,
+                    c.fail,
+                    c.crash,
+                    c.timeout,
+                    c.skip,
+                    c.expected_fail,
+                    c.unexpected_improvement,
+                    c.flake,
+                    c.known_flake,
+                    summary.load_errors,
+                    summary.exit_code
+                )?;
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,350 @@
+//! The run: cases in, events out.
+//!
+//! For each backend: cases already finished in a resumed run are replayed; the skips list and the
+//! backend's capabilities turn the rest into Skip (with the reason) or a case to send; cases go to
+//! the backend in batches, each answer is judged ([`crate::verdict`]), given its final status by
+//! the lists ([`crate::baseline`]) and sent as a `CaseFinished` event (results.jsonl is written by a
+//! reporter, flushed per record). Regressions are then re-run once: a different outcome is a Flake.
+
+use crate::backend::{ApiOutcome, Backend, CaseOutcome, Support};
+use crate::baseline::Lists;
+use crate::events::{Counts, Event, Fanout, LoadError, Rgba, Summary, Tags, TestResult, Timing};
+use crate::resume::Prior;
+use crate::shard::Shard;
+use crate::verdict::{self, Outcome, Status};
+use shadowcheck_model::{ApiPath, Case};
+use std::borrow::Cow;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// A case and the fixture file it came from.
+#[derive(Debug, Clone)]
+pub struct Loaded {
+    pub case: Case,
+    pub file: usize,
+}
+
+/// The cases of a run and what went wrong loading them.
+#[derive(Debug, Default)]
+pub struct CaseSet {
+    pub files: Vec<String>,
+    pub cases: Vec<Loaded>,
+    pub errors: Vec<LoadError>,
+}
+
+/// Loads every fixture under `paths`. Bad files and bad cases become [`LoadError`]s naming file and
+/// case; everything else loads. A case id seen twice keeps its first occurrence.
+pub fn load_cases(paths: &[PathBuf]) -> CaseSet {
+    let mut set = CaseSet::default();
+    let mut seen: HashMap<String, usize> = HashMap::new();
+    for root in paths {
+        let files = match shadowcheck_cases::fixtures::fixture_paths(root) {
+            Ok(f) => f,
+            Err(e) => {
+                set.errors.push(LoadError { file: root.display().to_string(), case: None, message: e.to_string() });
+                continue;
+            }
+        };
+        for path in files {
+            let file = path.display().to_string();
+            match shadowcheck_cases::fixtures::load_file_lenient(&path) {
+                Ok((ff, errs)) => {
+                    for e in errs {
+                        let case = e.case_id().map(str::to_string);
+                        set.errors.push(LoadError { file: file.clone(), case, message: e.to_string() });
+                    }
+                    let idx = set.files.len();
+                    set.files.push(file.clone());
+                    for case in ff.cases {
+                        if let Some(&first) = seen.get(&case.id) {
+                            set.errors.push(LoadError {
+                                file: file.clone(),
+                                case: Some(case.id.clone()),
+                                message: format!("duplicate case id (first in {})", set.files[first]),
+                            });
+                            continue;
+                        }
+                        seen.insert(case.id.clone(), idx);
+                        set.cases.push(Loaded { case, file: idx });
+                    }
+                }
+                Err(e) => set.errors.push(LoadError { file, case: None, message: e.to_string() }),
+            }
+        }
+    }
+    set
+}
+
+impl CaseSet {
+    /// Keeps the cases whose id matches `pattern` and that belong to `shard`.
+    pub fn select(&mut self, pattern: Option<&regex::Regex>, shard: Option<Shard>) {
+        self.cases.retain(|l| pattern.is_none_or(|p| p.is_match(&l.case.id)) && shard.is_none_or(|s| s.contains(&l.case.id)));
+    }
+    pub fn tests(&self) -> usize {
+        self.cases.iter().map(|l| l.case.api.len()).sum()
+    }
+}
+
+/// How the run behaves.
+#[derive(Debug, Default)]
+pub struct Settings {
+    pub lists: Lists,
+    /// Re-run regressions once to detect flakes (deqp-runner does; on by default).
+    pub rerun_regressions: bool,
+    /// Fixtures were named on the command line: the re-run command of a test names its file.
+    pub explicit_fixtures: bool,
+}
+
+struct Ctx<'a> {
+    settings: &'a Settings,
+    fanout: &'a mut Fanout,
+    results: Vec<TestResult>,
+}
+
+impl Ctx<'_> {
+    fn finish(&mut self, r: TestResult, replayed: bool) {
+        self.fanout.emit(&Event::CaseFinished { result: &r, replayed });
+        self.results.push(r);
+    }
+}
+
+fn base_result(backend: &str, case: &Case, api: ApiPath, fixtures: Option<&str>) -> TestResult {
+    TestResult {
+        backend: backend.to_string(),
+        test: TestResult::name(&case.id, api),
+        case_id: case.id.clone(),
+        api,
+        status: Status::Plain(Outcome::Skip),
+        outcome: Outcome::Skip,
+        reason: None,
+        duration: 0.0,
+        tags: Tags::of(case),
+        observed: None,
+        expected: None,
+        footprint: None,
+        rerun: None,
+        fixtures: fixtures.map(str::to_string),
+    }
+}
+
+/// The raw outcome of each API path of `sent` from the backend's answer.
+fn judge_outcome(backend: &str, sent: &Case, outcome: &CaseOutcome, duration: f64, fixtures: Option<&str>) -> Vec<TestResult> {
+    sent.api
+        .iter()
+        .map(|&api| {
+            let mut r = base_result(backend, sent, api, fixtures);
+            r.duration = duration;
+            let (o, reason) = match outcome {
+                CaseOutcome::Skip(m) => (Outcome::Skip, Some(m.clone())),
+                CaseOutcome::Error(m) => (Outcome::Fail, Some(format!("implementation error: {m}"))),
+                CaseOutcome::Crash(m) => (Outcome::Crash, Some(m.clone())),
+                CaseOutcome::Timeout(m) => (Outcome::Timeout, Some(m.clone())),
+                CaseOutcome::Observed(v) => match v.iter().find(|(a, _)| *a == api).map(|(_, o)| o) {
+                    None => (Outcome::Skip, Some("the backend returned no result for this API path".to_string())),
+                    Some(ApiOutcome::Skip(m)) => (Outcome::Skip, Some(m.clone())),
+                    Some(ApiOutcome::Rgba { rgba, stored }) => {
+                        let j = verdict::judge(sent, api, *rgba, stored.as_ref());
+                        r.observed = Some(Rgba(*rgba));
+                        r.expected = j.expected;
+                        r.footprint = j.footprint;
+                        (j.outcome, j.reason)
+                    }
+                },
+            };
+            r.outcome = o;
+            r.reason = reason;
+            r
+        })
+        .collect()
+}
+
+/// Runs the selected cases on one backend. `prior`: results of a resumed run (replayed, not re-run).
+pub fn run_backend(
+    backend: &mut dyn Backend,
+    set: &CaseSet,
+    prior: &Prior,
+    settings: &Settings,
+    fanout: &mut Fanout,
+) -> (Vec<TestResult>, Timing) {
+    let name = backend.name().to_string();
+    let mut ctx = Ctx { settings, fanout, results: Vec::with_capacity(set.tests()) };
+    let mut timing = Timing::default();
+    ctx.fanout.emit(&Event::BackendStarted { backend: &name, tests: set.tests() });
+    let lists = &settings.lists;
+    let file_of = |l: &Loaded| settings.explicit_fixtures.then(|| set.files[l.file].as_str());
+    let mut to_send: Vec<(Cow<'_, Case>, Option<&str>)> = Vec::new();
+    for l in &set.cases {
+        let case = &l.case;
+        let fixtures = file_of(l);
+        // Resumed: every test of the case already on disk.
+        let done: Vec<&TestResult> = case.api.iter().filter_map(|&a| prior.get(&name, &TestResult::name(&case.id, a))).collect();
+        if done.len() == case.api.len() {
+            for r in done {
+                ctx.finish(r.clone(), true);
+            }
+            continue;
+        }
+        let mut apis = Vec::with_capacity(case.api.len());
+        for &api in &case.api {
+            let test = TestResult::name(&case.id, api);
+            match lists.skips.matching(&test) {
+                Some(re) => {
+                    let mut r = base_result(&name, case, api, fixtures);
+                    r.reason = Some(format!("skips list: `{re}`"));
+                    ctx.finish(r, false);
+                }
+                None => apis.push(api),
+            }
+        }
+        if apis.is_empty() {
+            continue;
+        }
+        let narrowed = if apis.len() == case.api.len() { Cow::Borrowed(case) } else { Cow::Owned(Case { api: apis, ..case.clone() }) };
+        match backend.capabilities().support(&narrowed) {
+            Support::Skip(reason) => {
+                for &api in &narrowed.api {
+                    let mut r = base_result(&name, case, api, fixtures);
+                    r.reason = Some(reason.clone());
+                    ctx.finish(r, false);
+                }
+            }
+            Support::Run { apis, others } => {
+                if let Some(reason) = others {
+                    for &api in narrowed.api.iter().filter(|a| !apis.contains(a)) {
+                        let mut r = base_result(&name, case, api, fixtures);
+                        r.reason = Some(reason.clone());
+                        ctx.finish(r, false);
+                    }
+                }
+                if apis.len() == narrowed.api.len() {
+                    to_send.push((narrowed, fixtures));
+                } else {
+                    to_send.push((Cow::Owned(Case { api: apis, ..narrowed.into_owned() }), fixtures));
+                }
+            }
+        }
+    }
+    let batch = backend.batch_size().max(1);
+    for chunk in to_send.chunks(batch) {
+        let refs: Vec<&Case> = chunk.iter().map(|(c, _)| c.as_ref()).collect();
+        let t0 = Instant::now();
+        let outcomes = backend.run_batch(&refs);
+        let dt = t0.elapsed().as_secs_f64();
+        timing.backend_s += dt;
+        timing.cases_sent += refs.len();
+        let per_case = dt / refs.len() as f64;
+        let t1 = Instant::now();
+        let missing = CaseOutcome::Crash("the backend gave no answer".into());
+        for ((case, fixtures), outcome) in chunk.iter().zip(outcomes.iter().chain(std::iter::repeat(&missing))) {
+            for mut r in judge_outcome(&name, case, outcome, per_case, *fixtures) {
+                let (status, note) = lists.status(&r.test, r.outcome);
+                r.status = status;
+                if let Some(n) = note {
+                    r.reason = Some(match r.reason.take() {
+                        Some(old) => format!("{old}; {n}"),
+                        None => n,
+                    });
+                }
+                ctx.finish(r, false);
+            }
+        }
+        timing.verdict_s += t1.elapsed().as_secs_f64();
+        for d in backend.take_diagnostics() {
+            ctx.fanout.emit(&Event::Diagnostic { backend: &name, message: &d });
+        }
+    }
+    if settings.rerun_regressions {
+        rerun_regressions(backend, set, &mut ctx);
+    }
+    let mut counts = Counts::default();
+    for r in &ctx.results {
+        counts.add(r.status);
+    }
+    ctx.fanout.emit(&Event::BackendFinished { backend: &name, counts: &counts, timing: &timing });
+    (ctx.results, timing)
+}
+
+/// Re-runs the cases of regressions not yet re-run; a test whose outcome changes is a Flake.
+fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>) {
+    let name = backend.name().to_string();
+    let mut by_case: HashMap<&str, Vec<usize>> = HashMap::new();
+    for (i, r) in ctx.results.iter().enumerate() {
+        if r.status.is_regression() && r.rerun.is_none() {
+            by_case.entry(r.case_id.as_str()).or_default().push(i);
+        }
+    }
+    if by_case.is_empty() {
+        return;
+    }
+    // The same narrowing as the first run: only the API paths that regressed.
+    let cases: Vec<(Case, Vec<usize>, Option<&str>)> = set
+        .cases
+        .iter()
+        .filter_map(|l| {
+            let idx = by_case.get(l.case.id.as_str())?;
+            let apis = idx.iter().map(|&i| ctx.results[i].api).collect();
+            let file = ctx.settings.explicit_fixtures.then(|| set.files[l.file].as_str());
+            Some((Case { api: apis, ..l.case.clone() }, idx.clone(), file))
+        })
+        .collect();
+    let refs: Vec<&Case> = cases.iter().map(|(c, _, _)| c).collect();
+    let mut outcomes = Vec::with_capacity(refs.len());
+    for chunk in refs.chunks(backend.batch_size().max(1)) {
+        outcomes.extend(backend.run_batch(chunk));
+    }
+    for d in backend.take_diagnostics() {
+        ctx.fanout.emit(&Event::Diagnostic { backend: &name, message: &d });
+    }
+    for ((case, idx, file), outcome) in cases.iter().zip(outcomes.iter()) {
+        let again = judge_outcome(&name, case, outcome, 0.0, *file);
+        for (&i, second) in idx.iter().zip(again) {
+            let r = &mut ctx.results[i];
+            r.rerun = Some(second.outcome);
+            if second.outcome != r.outcome {
+                r.status = Status::Flake;
+                r.reason = Some(format!("{}; re-run gave {}", r.reason.clone().unwrap_or_default(), second.outcome));
+            }
+            let r = r.clone();
+            ctx.fanout.emit(&Event::CaseFinished { result: &r, replayed: false });
+        }
+    }
+}
+
+/// Results in report order: by backend, then by test name.
+pub fn sort_results(results: &mut [TestResult]) {
+    results.sort_by(|a, b| (a.backend.as_str(), a.test.as_str()).cmp(&(b.backend.as_str(), b.test.as_str())));
+}
+
+/// Runs every backend over `set` and finishes the run (sorted results, summary, `RunFinished`).
+pub fn run_all(
+    backends: &mut [Box<dyn Backend>],
+    set: &CaseSet,
+    prior: &Prior,
+    settings: &Settings,
+    fanout: &mut Fanout,
+    out_dir: &Path,
+) -> (Vec<TestResult>, Summary, Vec<Timing>) {
+    let names: Vec<String> = backends.iter().map(|b| b.name().to_string()).collect();
+    fanout.emit(&Event::RunStarted { backends: &names, tests: set.tests() * names.len(), out_dir });
+    for e in &set.errors {
+        fanout.emit(&Event::LoadError(e));
+    }
+    let mut all = Vec::new();
+    let mut timings = Vec::new();
+    for b in backends.iter_mut() {
+        let (r, t) = run_backend(b.as_mut(), set, prior, settings, fanout);
+        all.extend(r);
+        timings.push(t);
+    }
+    let summary = finish(names, &mut all, &set.errors, fanout);
+    (all, summary, timings)
+}
+
+/// Sorts, totals and announces the end of a run (shared with `merge`).
+pub fn finish(backends: Vec<String>, results: &mut [TestResult], errors: &[LoadError], fanout: &mut Fanout) -> Summary {
+    sort_results(results);
+    let summary = Summary::new(backends, results, errors.len());
+    fanout.emit(&Event::RunFinished { results, load_errors: errors, summary: &summary });
+    summary
+}

@@ -1,0 +1,304 @@
+//! Verdicts: from what a backend observed to a status.
+//!
+//! Two layers, as in deqp-runner:
+//! - [`Outcome`]: the raw result of one test on one backend (Pass, Warn, Fail, Skip, Crash, Timeout);
+//! - [`Status`]: the outcome after the baseline, the flake list and the flake re-run
+//!   (ExpectedFail, UnexpectedImprovement(outcome), Flake, KnownFlake, or the outcome itself).
+//!
+//! An observation is judged against the case's expectation (the oracle's, stored in the fixture),
+//! re-evaluated by the oracle when the backend read back the stored texels: Pass inside the
+//! `strict` acceptance set, Warn inside `lenient` only, Fail outside `lenient`.
+
+use serde::{Deserialize, Serialize};
+use shadowcheck_model::{Case, Channel, Expectation, Footprint, Judgement, Profile, Texels};
+use std::fmt;
+use std::str::FromStr;
+
+/// The raw result of one test (`<case id>@<api>`) on one backend.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+pub enum Outcome {
+    /// Inside the strict acceptance set.
+    Pass,
+    /// Inside lenient, outside strict.
+    Warn,
+    /// Outside lenient, or the implementation reported an error for a lookup it claims to support.
+    Fail,
+    /// Not run (with a reason).
+    Skip,
+    /// The implementation's process died on this case (found by bisection).
+    Crash,
+    /// The implementation did not answer this case in time (found by bisection).
+    Timeout,
+}
+
+impl Outcome {
+    /// Fail, Crash and Timeout: the outcomes a baseline may excuse.
+    pub fn is_failure(self) -> bool {
+        matches!(self, Outcome::Fail | Outcome::Crash | Outcome::Timeout)
+    }
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Outcome::Pass => "Pass",
+            Outcome::Warn => "Warn",
+            Outcome::Fail => "Fail",
+            Outcome::Skip => "Skip",
+            Outcome::Crash => "Crash",
+            Outcome::Timeout => "Timeout",
+        }
+    }
+}
+
+impl fmt::Display for Outcome {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl FromStr for Outcome {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Ok(match s {
+            "Pass" => Outcome::Pass,
+            "Warn" => Outcome::Warn,
+            "Fail" => Outcome::Fail,
+            "Skip" => Outcome::Skip,
+            "Crash" => Outcome::Crash,
+            "Timeout" => Outcome::Timeout,
+            _ => return Err(format!("unknown outcome `{s}` (Pass, Warn, Fail, Skip, Crash, Timeout)")),
+        })
+    }
+}
+
+/// The final status of a test, written as deqp-runner writes it (`Fail`, `ExpectedFail`,
+/// `UnexpectedImprovement(Pass)`, ...).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Status {
+    /// The raw outcome, not changed by any list.
+    Plain(Outcome),
+    /// A failure listed in the baseline with this very status.
+    ExpectedFail,
+    /// Listed in the baseline as failing, but now passes (or is skipped): update the baseline.
+    UnexpectedImprovement(Outcome),
+    /// A failure whose re-run gave a different outcome.
+    Flake,
+    /// A failure of a test matching the flakes list.
+    KnownFlake,
+}
+
+impl Status {
+    /// Fail, Crash, Timeout not excused by the baseline: the run is a regression (exit code 100).
+    pub fn is_regression(self) -> bool {
+        matches!(self, Status::Plain(o) if o.is_failure())
+    }
+    pub fn is_improvement(self) -> bool {
+        matches!(self, Status::UnexpectedImprovement(_))
+    }
+    /// Short column name for summaries.
+    pub fn column(self) -> &'static str {
+        match self {
+            Status::Plain(o) => o.as_str(),
+            Status::ExpectedFail => "ExpectedFail",
+            Status::UnexpectedImprovement(_) => "UnexpectedImprovement",
+            Status::Flake => "Flake",
+            Status::KnownFlake => "KnownFlake",
+        }
+    }
+}
+
+impl From<Outcome> for Status {
+    fn from(o: Outcome) -> Status {
+        Status::Plain(o)
+    }
+}
+
+impl fmt::Display for Status {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Status::UnexpectedImprovement(o) => write!(f, "UnexpectedImprovement({o})"),
+            s => f.write_str(s.column()),
+        }
+    }
+}
+
+impl FromStr for Status {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Ok(match s {
+            "ExpectedFail" => Status::ExpectedFail,
+            "Flake" => Status::Flake,
+            "KnownFlake" => Status::KnownFlake,
+            _ => match s.strip_prefix("UnexpectedImprovement(").and_then(|r| r.strip_suffix(')')) {
+                Some(inner) => Status::UnexpectedImprovement(inner.parse()?),
+                None => Status::Plain(s.parse()?),
+            },
+        })
+    }
+}
+
+impl Serialize for Status {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
+impl<'de> Deserialize<'de> for Status {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let s = String::deserialize(d)?;
+        s.parse().map_err(serde::de::Error::custom)
+    }
+}
+
+/// What the verdict of one observation rests on, kept for the reports.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ExpectedSummary {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spec_value: Option<f64>,
+    /// Acceptance set under `strict`, as text (e.g. `{1}` or `[0.25, 0.5]`).
+    pub strict: String,
+    /// Acceptance set under `lenient`.
+    pub lenient: String,
+    /// Channel layout of the API path (`r`, `0`, `1`, `-`).
+    pub layout: String,
+    /// The profile that decided the verdict (`strict` for Pass, `lenient` for Warn and Fail).
+    pub profile: Profile,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub citations: Vec<String>,
+}
+
+/// The verdict on one observation.
+#[derive(Debug, Clone)]
+pub struct Judged {
+    pub outcome: Outcome,
+    pub reason: Option<String>,
+    pub expected: Option<ExpectedSummary>,
+    /// The oracle's footprint of the lookup, filled for Warn and Fail (for the dump).
+    pub footprint: Option<Footprint>,
+}
+
+/// Runs the oracle, turning a panic (e.g. a part not written yet) into an error string, so that a
+/// single bad case never takes the run down.
+pub fn oracle_evaluate(case: &Case) -> Result<shadowcheck_oracle::Evaluation, String> {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| shadowcheck_oracle::evaluate(case))) {
+        Ok(Ok(ev)) => Ok(ev),
+        Ok(Err(e)) => Err(e.to_string()),
+        Err(p) => Err(format!(
+            "oracle panicked: {}",
+            p.downcast_ref::<&str>().copied().or(p.downcast_ref::<String>().map(|s| s.as_str())).unwrap_or("?")
+        )),
+    }
+}
+
+fn layout_text(layout: &[Channel; 4]) -> String {
+    layout.iter().map(|c| c.key()).collect::<Vec<_>>().join(",")
+}
+
+fn summary(e: &Expectation, layout: &[Channel; 4], profile: Profile) -> ExpectedSummary {
+    let get = |p| e.accept.get(&p).map(|a| a.to_string()).unwrap_or_else(|| "(none)".into());
+    ExpectedSummary {
+        spec_value: e.spec_value,
+        strict: get(Profile::Strict),
+        lenient: get(Profile::Lenient),
+        layout: layout_text(layout),
+        profile,
+        citations: e.citations.clone(),
+    }
+}
+
+/// Judges `rgba` observed through `api` for `case`. `stored`: the level-0 texels the backend read
+/// back; the oracle then re-evaluates the case with those texels (PROTOCOL.md §2).
+pub fn judge(case: &Case, api: shadowcheck_model::ApiPath, rgba: [f64; 4], stored: Option<&Texels>) -> Judged {
+    // The case the verdict is about: with the texels the implementation really stored, if known.
+    let restored;
+    let (subject, mut evaluation) = match stored {
+        Some(t) if case.texture.levels.first().map(|l| &l.depth) != Some(t) => {
+            let mut c = case.clone();
+            if let Some(l) = c.texture.levels.first_mut() {
+                l.depth = t.clone();
+            }
+            c.expect = None;
+            restored = c;
+            (&restored, None)
+        }
+        _ => (case, None),
+    };
+    let expect = match &subject.expect {
+        Some(e) => e.clone(),
+        None => match oracle_evaluate(subject) {
+            Ok(ev) => {
+                let e = ev.expect.clone();
+                evaluation = Some(ev);
+                e
+            }
+            Err(msg) => {
+                return Judged {
+                    outcome: Outcome::Skip,
+                    reason: Some(format!("no expectation for this case: {msg}")),
+                    expected: None,
+                    footprint: None,
+                }
+            }
+        },
+    };
+    let Some(layout) = expect.layout.get(&api).copied() else {
+        return Judged {
+            outcome: Outcome::Skip,
+            reason: Some(format!("the expectation has no layout for API path `{api}`")),
+            expected: None,
+            footprint: None,
+        };
+    };
+    let judgement = expect.judge(api, rgba).unwrap_or(Judgement::Outside);
+    let (outcome, profile) = match judgement {
+        Judgement::Strict => (Outcome::Pass, Profile::Strict),
+        Judgement::LenientOnly => (Outcome::Warn, Profile::Lenient),
+        Judgement::Outside => (Outcome::Fail, Profile::Lenient),
+    };
+    let mut footprint = None;
+    let mut reason = None;
+    if outcome != Outcome::Pass {
+        reason = Some(match judgement {
+            Judgement::LenientOnly => "inside the lenient acceptance set, outside strict".to_string(),
+            _ => "outside the lenient acceptance set".to_string(),
+        });
+        let ev = match evaluation {
+            Some(ev) => Ok(ev),
+            None => oracle_evaluate(subject),
+        };
+        match ev {
+            Ok(ev) => footprint = Some(ev.footprint),
+            Err(msg) => reason = reason.map(|r| format!("{r} (no footprint: {msg})")),
+        }
+    }
+    Judged { outcome, reason, expected: Some(summary(&expect, &layout, profile)), footprint }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn status_text_round_trips_like_deqp_runner() {
+        for s in [
+            Status::Plain(Outcome::Fail),
+            Status::Plain(Outcome::Crash),
+            Status::ExpectedFail,
+            Status::UnexpectedImprovement(Outcome::Pass),
+            Status::Flake,
+            Status::KnownFlake,
+        ] {
+            assert_eq!(s.to_string().parse::<Status>().unwrap(), s);
+        }
+        assert_eq!(Status::UnexpectedImprovement(Outcome::Warn).to_string(), "UnexpectedImprovement(Warn)");
+        assert!("Failed".parse::<Status>().is_err());
+        assert!("UnexpectedImprovement(Bogus)".parse::<Status>().is_err());
+    }
+
+    #[test]
+    fn only_unexcused_failures_are_regressions() {
+        assert!(Status::Plain(Outcome::Timeout).is_regression());
+        assert!(!Status::Plain(Outcome::Warn).is_regression());
+        assert!(!Status::ExpectedFail.is_regression());
+        assert!(!Status::Flake.is_regression());
+        assert!(Status::UnexpectedImprovement(Outcome::Pass).is_improvement());
+    }
+}
