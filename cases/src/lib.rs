@@ -1,1 +1,18 @@
-//! placeholder
+//! shadowcheck-cases: the grids that enumerate depth-comparison cases, the generator that writes
+//! them as JSON fixtures with the oracle's expectations, and the fixture loader.
+//!
+//! - [`dsl`]: a small typed grid DSL (cartesian product, filters that say why, derived values);
+//! - [`build`]: stored texel values per format, textures per target, lookups at known positions;
+//! - [`grids`]: the named grids (`smoke`, `default`, `exhaustive`) and [`grids::generate`];
+//! - [`fixtures`]: the versioned fixture file format, its writer and loaders;
+//! - [`coverage`]: cases per spec x target x format x filter x func.
+//!
+//! The format is documented in cases/README.md; its JSON Schema is cases/schema/fixture.schema.json.
+
+pub mod build;
+pub mod coverage;
+pub mod dsl;
+pub mod fixtures;
+pub mod grids;
+
+pub use grids::GridError;

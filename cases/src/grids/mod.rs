@@ -1,0 +1,207 @@
+//! The named grids (`smoke`, `default`, `exhaustive`) and the generator that turns them into
+//! fixture files with the oracle's expectations filled in.
+
+pub mod cells;
+pub mod draft;
+pub mod exhaustive;
+pub mod families;
+pub mod specs;
+
+use crate::fixtures::{self, FixtureFile};
+use draft::Draft;
+use shadowcheck_model::{Case, SCHEMA_VERSION};
+use shadowcheck_oracle::OracleError;
+use std::collections::{BTreeMap, BTreeSet, HashSet};
+
+/// `shadowcheck-cases <version>`: written into every fixture file.
+pub const GENERATOR: &str = concat!("shadowcheck-cases ", env!("CARGO_PKG_VERSION"));
+
+/// Errors from building a grid.
+#[derive(Debug, thiserror::Error)]
+pub enum GridError {
+    #[error("unknown grid `{name}` (known: {})", names().join(", "))]
+    UnknownGrid { name: String },
+    #[error("grid `{grid}`: duplicate case id `{id}`")]
+    DuplicateId { grid: String, id: String },
+    #[error("grid `{grid}`: case `{id}`: no API path applies to it")]
+    NoApi { grid: String, id: String },
+    /// The oracle rejected a generated case: the grid is missing a filter for an illegal
+    /// combination, or the case is malformed. Either way the grid must be fixed, not the fixture.
+    #[error("grid `{grid}`: the oracle rejects a generated case (the grid needs a filter for it): {source}")]
+    Oracle { grid: String, source: OracleError },
+    #[error(transparent)]
+    Fixture(#[from] fixtures::FixtureError),
+}
+
+/// The grids `shadowcheck gen --grid` knows.
+pub fn names() -> &'static [&'static str] {
+    &["smoke", "default", "exhaustive"]
+}
+
+/// The seed the committed `default` fixtures are generated with.
+pub const DEFAULT_SEED: u64 = 0;
+/// Cases in the seeded random family of `default`, per spec.
+const RANDOM_PER_SPEC: usize = 30;
+
+/// The cases of a grid before the oracle has seen them (not for `exhaustive`, which is streamed).
+pub fn drafts(name: &str, seed: u64) -> Result<Vec<Draft>, GridError> {
+    match name {
+        "default" => Ok(default_drafts(seed)),
+        "smoke" => Ok(smoke_drafts(seed)),
+        _ => Err(GridError::UnknownGrid { name: name.to_string() }),
+    }
+}
+
+fn default_drafts(seed: u64) -> Vec<Draft> {
+    let mut out = Vec::new();
+    for d in specs::all() {
+        for cell in cells::cells(&d).into_items() {
+            out.extend(cells::drafts(&cell));
+        }
+        out.extend(families::clamp(&d));
+        out.extend(families::exact(&d));
+        out.extend(families::pcf(&d));
+        out.extend(families::mip(&d));
+        out.extend(families::wrap(&d));
+        out.extend(families::cube(&d));
+        out.extend(families::layer(&d));
+        out.extend(families::dtm(&d));
+        out.extend(families::stencil(&d));
+        out.extend(families::incomplete(&d));
+        out.extend(families::proj(&d));
+        out.extend(families::ambient(&d));
+        out.extend(families::random(&d, seed, RANDOM_PER_SPEC));
+    }
+    out
+}
+
+/// One of everything: the first `default` case for each new (spec, value) of every dimension and
+/// each family, so every target, format, filter, func, family, DEPTH_TEXTURE_MODE and wrap mode of
+/// each spec appears at least once.
+fn smoke_drafts(seed: u64) -> Vec<Draft> {
+    let mut seen: HashSet<String> = HashSet::new();
+    let mut out = Vec::new();
+    for x in default_drafts(seed) {
+        let c = &x.cell;
+        let s = &x.sampler;
+        let keys = [
+            format!("target {}", c.target),
+            format!("format {}", c.format),
+            format!("filter {}", c.filter),
+            format!("func {}", c.func_key()),
+            format!("family {}", x.family),
+            format!("dtm {:?}", c.dtm),
+            format!("wrap {}", s.wrap_s),
+            format!("dsm {:?}", s.depth_stencil_mode),
+            format!("target-format {} {}", c.target, c.format),
+        ];
+        let mut new = false;
+        for k in keys {
+            new |= seen.insert(format!("{} {k}", c.spec));
+        }
+        if new {
+            out.push(x);
+        }
+    }
+    out
+}
+
+/// Turns drafts into cases and checks what the oracle cannot: unique ids, a non-empty API list.
+fn to_cases(grid: &str, drafts: Vec<Draft>) -> Result<Vec<(String, Case)>, GridError> {
+    let mut ids = HashSet::new();
+    let mut out = Vec::with_capacity(drafts.len());
+    for x in drafts {
+        let file = x.file(grid);
+        let case = x.into_case();
+        if !ids.insert(case.id.clone()) {
+            return Err(GridError::DuplicateId { grid: grid.into(), id: case.id });
+        }
+        if case.api.is_empty() {
+            return Err(GridError::NoApi { grid: grid.into(), id: case.id });
+        }
+        out.push((file, case));
+    }
+    Ok(out)
+}
+
+/// Fills `expect` from the oracle, on all cores; the order of `cases` is kept.
+pub fn fill_expectations(grid: &str, cases: &mut [Case]) -> Result<(), GridError> {
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).clamp(1, 16);
+    let chunk = cases.len().div_ceil(threads).max(1);
+    let results: Vec<Result<(), OracleError>> = std::thread::scope(|s| {
+        let handles: Vec<_> = cases
+            .chunks_mut(chunk)
+            .map(|part| {
+                s.spawn(move || {
+                    for c in part.iter_mut() {
+                        c.expect = Some(shadowcheck_oracle::evaluate(c)?.expect);
+                    }
+                    Ok(())
+                })
+            })
+            .collect();
+        // A panicking oracle is a bug to report, not something to recover from: re-raise it.
+        handles.into_iter().map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))).collect()
+    });
+    for r in results {
+        r.map_err(|source| GridError::Oracle { grid: grid.into(), source })?;
+    }
+    Ok(())
+}
+
+/// Groups cases into files (sorted by relative path; cases keep generation order inside a file).
+fn into_files(grid: &str, seed: u64, cases: Vec<(String, Case)>) -> Vec<(String, FixtureFile)> {
+    let mut files: BTreeMap<String, Vec<Case>> = BTreeMap::new();
+    for (file, case) in cases {
+        files.entry(file).or_default().push(case);
+    }
+    files
+        .into_iter()
+        .map(|(rel, cases)| (rel, FixtureFile { schema_version: SCHEMA_VERSION, generator: GENERATOR.to_string(), grid: grid.to_string(), seed, cases }))
+        .collect()
+}
+
+/// Generates a grid with expectations filled in, as (relative path, file) pairs sorted by path.
+/// For `exhaustive` this holds everything in memory; prefer [`for_each_file`] there.
+pub fn generate(name: &str, seed: u64) -> Result<Vec<(String, FixtureFile)>, GridError> {
+    let mut out = Vec::new();
+    for_each_file(name, seed, |rel, file| {
+        out.push((rel, file));
+        Ok(())
+    })?;
+    Ok(out)
+}
+
+/// Generates a grid file by file, handing each to `sink` as soon as it is complete (so `exhaustive`
+/// never needs to be in memory at once). Files arrive sorted by relative path.
+pub fn for_each_file(name: &str, seed: u64, mut sink: impl FnMut(String, FixtureFile) -> Result<(), GridError>) -> Result<(), GridError> {
+    if name == "exhaustive" {
+        for (rel, drafts) in exhaustive::chunks() {
+            let cases = to_cases(name, drafts)?;
+            let (files, mut cases): (Vec<String>, Vec<Case>) = cases.into_iter().unzip();
+            fill_expectations(name, &mut cases)?;
+            let _ = files;
+            sink(rel, FixtureFile { schema_version: SCHEMA_VERSION, generator: GENERATOR.to_string(), grid: name.to_string(), seed, cases })?;
+        }
+        return Ok(());
+    }
+    let cases = to_cases(name, drafts(name, seed)?)?;
+    let (files, mut cases): (Vec<String>, Vec<Case>) = cases.into_iter().unzip();
+    fill_expectations(name, &mut cases)?;
+    for (rel, file) in into_files(name, seed, files.into_iter().zip(cases).collect()) {
+        sink(rel, file)?;
+    }
+    Ok(())
+}
+
+/// The cases of a grid without expectations (ids, API lists and structure only): what the
+/// generator would evaluate. Used by tests that must not depend on the oracle.
+pub fn unfilled(name: &str, seed: u64) -> Result<Vec<(String, FixtureFile)>, GridError> {
+    let cases = to_cases(name, drafts(name, seed)?)?;
+    Ok(into_files(name, seed, cases))
+}
+
+/// Distinct relative paths of a list of files (for reports).
+pub fn paths(files: &[(String, FixtureFile)]) -> BTreeSet<&str> {
+    files.iter().map(|(p, _)| p.as_str()).collect()
+}

@@ -1,0 +1,166 @@
+//! What each specification variant allows: the values of each grid dimension, and the API paths a
+//! case reaches. Everything a spec does not define is left out here (or pruned by a named filter in
+//! the grids), so that no generated case is one the oracle answers with a GL error.
+
+use shadowcheck_model::*;
+
+/// The dimensions one spec allows.
+#[derive(Debug, Clone)]
+pub struct SpecDims {
+    pub spec: Spec,
+    /// Compare functions (SGIX: its two operators; ARB_shadow: LEQUAL/GEQUAL; later: the eight).
+    pub funcs: &'static [CompareFunc],
+    pub targets: &'static [Target],
+    pub formats: &'static [Format],
+    pub filters: &'static [Filter],
+    /// DEPTH_TEXTURE_MODE values that can be set (`None` = default, always present).
+    pub dtms: &'static [DepthTextureMode],
+    pub wraps: &'static [Wrap],
+    /// TEXTURE_LOD_BIAS exists (not in ES).
+    pub lod_bias: bool,
+    /// DEPTH_STENCIL_TEXTURE_MODE exists (GL 4.3, ES 3.1).
+    pub stencil_mode: bool,
+    /// The fail / ambient value exists (sgix_ambient, arb_ambient).
+    pub fail_value: bool,
+}
+
+use CompareFunc as F;
+use DepthTextureMode as M;
+use Format as Fo;
+use Target as T;
+use Wrap as W;
+
+const SGIX_FUNCS: &[CompareFunc] = &[F::LequalRSgix, F::GequalRSgix];
+const ARB_FUNCS: &[CompareFunc] = &[F::Lequal, F::Gequal];
+const CORE_FUNCS: &[CompareFunc] = &CompareFunc::CORE;
+const ALL_FILTERS: &[Filter] = Filter::ALL;
+/// Formats of the ARB_depth_texture / SGIX_depth_texture era, plus a colour texture.
+const LEGACY_FORMATS: &[Format] = &[Fo::DepthUnsized, Fo::D16, Fo::D24, Fo::D32, Fo::R8];
+const LEGACY_DTMS: &[DepthTextureMode] = &[M::Luminance, M::Intensity, M::Alpha];
+
+/// The specs, in the order grids and coverage tables list them.
+pub fn all() -> Vec<SpecDims> {
+    Spec::ALL.iter().map(|s| dims(*s)).collect()
+}
+
+pub fn dims(spec: Spec) -> SpecDims {
+    match spec {
+        // SGIX_shadow: GL 1.1-era fixed function; SGIX_depth_texture formats; wraps CLAMP, REPEAT
+        // (the SGIX_shadow state table); the result is always LUMINANCE.
+        Spec::Sgix | Spec::SgixAmbient => SpecDims {
+            spec,
+            funcs: SGIX_FUNCS,
+            targets: &[T::T1d, T::T2d],
+            formats: LEGACY_FORMATS,
+            filters: ALL_FILTERS,
+            dtms: &[],
+            wraps: &[W::Clamp, W::Repeat],
+            lod_bias: false,
+            stencil_mode: false,
+            fail_value: spec == Spec::SgixAmbient,
+        },
+        // ARB_shadow / EXT_shadow_funcs: ARB_depth_texture (1D, 2D) plus rectangle textures
+        // (ARB_fragment_program_shadow SHADOWRECT); GL 1.4 wrap modes.
+        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => SpecDims {
+            spec,
+            funcs: if spec == Spec::ExtFuncs { CORE_FUNCS } else { ARB_FUNCS },
+            targets: &[T::T1d, T::T2d, T::Rect],
+            formats: LEGACY_FORMATS,
+            filters: ALL_FILTERS,
+            dtms: LEGACY_DTMS,
+            wraps: &[W::Repeat, W::Clamp, W::ClampToEdge, W::ClampToBorder, W::MirroredRepeat],
+            lod_bias: true,
+            stencil_mode: false,
+            fail_value: spec == Spec::ArbAmbient,
+        },
+        // ES 2.0 + OES_depth_texture (TEXTURE_2D only, unsized DEPTH_COMPONENT) + EXT_shadow_samplers.
+        Spec::Es2Ext => SpecDims {
+            spec,
+            funcs: CORE_FUNCS,
+            targets: &[T::T2d],
+            formats: &[Fo::DepthUnsized, Fo::R8],
+            filters: ALL_FILTERS,
+            dtms: &[],
+            wraps: &[W::Repeat, W::ClampToEdge, W::MirroredRepeat],
+            lod_bias: false,
+            stencil_mode: false,
+            fail_value: false,
+        },
+        Spec::Gl46 => SpecDims {
+            spec,
+            funcs: CORE_FUNCS,
+            targets: Target::ALL,
+            formats: Format::ALL,
+            filters: ALL_FILTERS,
+            dtms: &[M::Luminance, M::Intensity, M::Alpha, M::Red],
+            wraps: &[W::Repeat, W::ClampToEdge, W::ClampToBorder, W::MirroredRepeat, W::MirrorClampToEdge, W::Clamp],
+            lod_bias: true,
+            stencil_mode: true,
+            fail_value: false,
+        },
+        // ES 3.2: no 1D, rectangle or unsized/32-bit unorm depth; CLAMP_TO_BORDER since 3.2.
+        Spec::Gles32 => SpecDims {
+            spec,
+            funcs: CORE_FUNCS,
+            targets: &[T::T2d, T::Cube, T::T2dArray, T::CubeArray],
+            formats: &[Fo::D16, Fo::D24, Fo::D32f, Fo::D24S8, Fo::D32fS8, Fo::R8],
+            filters: ALL_FILTERS,
+            dtms: &[],
+            wraps: &[W::Repeat, W::ClampToEdge, W::MirroredRepeat, W::ClampToBorder],
+            lod_bias: false,
+            stencil_mode: true,
+            fail_value: false,
+        },
+    }
+}
+
+/// Rectangle textures allow only NEAREST and LINEAR minification (GL 4.6 §8.10: INVALID_ENUM
+/// otherwise) and have one level.
+pub fn filter_allowed(target: Target, filter: Filter) -> bool {
+    !(target.is_rect() && filter.is_mipmap())
+}
+
+/// The API paths through which a case reaches the texture unit (see cases/README.md, "API paths").
+///
+/// - SGIX_shadow: fixed function only (it predates programmable shading).
+/// - ARB_shadow (+ambient), EXT_shadow_funcs: fixed function, ARB_fragment_program_shadow
+///   (SHADOW1D/2D/RECT) and GLSL 1.10/1.20 `shadow1D/2D/2DRect` (vec4 by DEPTH_TEXTURE_MODE). GLSL 1.30
+///   is GL 3.0, whose rules (no clamp for float depth, RED mode) are the `gl46` variant's.
+/// - ES 2.0 + EXT_shadow_samplers: GLSL ES 1.00 `shadow2DEXT`.
+/// - GL 3.0-4.6: core GLSL for every target; in a compatibility context GLSL 1.30 (no rectangle or
+///   cube-array shadow samplers), GLSL 1.20 and fixed function (1D, 2D, rectangle only: cube maps
+///   use s,t,r for the direction, leaving no R). DEPTH_TEXTURE_MODE and CLAMP exist only in the
+///   compatibility profile, so cases setting them leave out `core`; stencil texturing needs an
+///   integer sampler (GLSL 4.30+), so it is `core` only.
+/// - ES 3.x: GLSL ES 3.00.
+pub fn apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
+    use ApiPath as A;
+    let legacy_target = matches!(target, T::T1d | T::T2d | T::Rect);
+    let stencil = sampler.depth_stencil_mode == Some(DepthStencilMode::StencilIndex);
+    let compat_only = sampler.depth_texture_mode.is_some()
+        || [sampler.wrap_s, sampler.wrap_t, sampler.wrap_r].contains(&W::Clamp);
+    match spec {
+        Spec::Sgix | Spec::SgixAmbient => vec![A::FixedFunction],
+        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => vec![A::FixedFunction, A::ArbFp, A::Glsl120],
+        Spec::Es2Ext => vec![A::Es100Ext],
+        Spec::Gles32 => vec![A::Es300],
+        Spec::Gl46 => {
+            if stencil {
+                return vec![A::GlslCore];
+            }
+            let mut v = Vec::new();
+            if legacy_target {
+                v.push(A::FixedFunction);
+                v.push(A::Glsl120);
+            }
+            if !matches!(target, T::Rect | T::CubeArray) {
+                v.push(A::Glsl130);
+            }
+            if !compat_only {
+                v.push(A::GlslCore);
+            }
+            v.sort();
+            v
+        }
+    }
+}
