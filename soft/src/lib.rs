@@ -17,6 +17,7 @@
 //! `cube` (§8.13), `compare` (per-spec comparison rules), `sampler` (resolved state,
 //! completeness), `filter` (the lookup, PCF), `layout` (RGBA per API path), `faults`.
 
+pub mod bench;
 pub mod compare;
 pub mod cube;
 pub mod faults;

@@ -45,7 +45,14 @@ pub fn wrap(mode: Wrap, coord: i64, size: i64, linear: bool, faults: Faults) -> 
                 coord.clamp(0, size - 1)
             }
         }
-        Wrap::Repeat => coord.rem_euclid(size),
+        Wrap::Repeat => {
+            if size & (size - 1) == 0 {
+                // Power of two: two's-complement masking is the Euclidean remainder, without a division.
+                coord & (size - 1)
+            } else {
+                coord.rem_euclid(size)
+            }
+        }
         Wrap::MirroredRepeat => {
             // ES 3.2 Table 8.21 (the GL 4.6 row is misprinted): (size−1) − mirror(fmod(coord, 2·size) − size).
             let m = coord.rem_euclid(2 * size) - size;
