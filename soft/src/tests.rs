@@ -519,3 +519,142 @@ fn filter_faults_change_results() {
     assert_eq!(f(Fault::LequalGequalSwapped), 0.5);
     assert_eq!(f(Fault::LinearAsNearest), 1.0);
 }
+
+#[test]
+fn every_function_of_every_spec_end_to_end() {
+    // Dt = 0.6 (D16 39321), references below / equal / above; expected r from Table 8.23 (GL 4.6),
+    // Table 8.22 (ES 3.2), EXT_shadow_samplers / EXT_shadow_funcs / ARB_shadow tables (R vs Dt),
+    // and SGIX_shadow (texel vs R). Ambient variants use fail value 0.25.
+    use CompareFunc as C;
+    let refs = [0.2, 0.6, 1.0];
+    let core: [(C, [bool; 3]); 8] = [
+        (C::Lequal, [true, true, false]),
+        (C::Gequal, [false, true, true]),
+        (C::Less, [true, false, false]),
+        (C::Greater, [false, false, true]),
+        (C::Equal, [false, true, false]),
+        (C::Notequal, [true, false, true]),
+        (C::Always, [true, true, true]),
+        (C::Never, [false, false, false]),
+    ];
+    let sgix: [(C, [bool; 3]); 2] = [(C::LequalRSgix, [false, true, true]), (C::GequalRSgix, [true, true, false])];
+    for spec in Spec::ALL.iter().copied() {
+        let rows: Vec<(C, [bool; 3])> = match spec {
+            Spec::Sgix | Spec::SgixAmbient => sgix.to_vec(),
+            Spec::Arb | Spec::ArbAmbient => core[..2].to_vec(),
+            _ => core.to_vec(),
+        };
+        let fail = if matches!(spec, Spec::SgixAmbient | Spec::ArbAmbient) {
+            0.25
+        } else {
+            0.0
+        };
+        for (func, want) in rows {
+            for (dref, pass) in refs.iter().zip(want) {
+                let mut c = case2d(spec, Format::D16, 1, 1, vec![d16(0.6)], func, Filter::Nearest);
+                c.sampler.fail_value = Some(0.25);
+                c.lookup.dref = *dref;
+                assert_eq!(r(&c), if pass { 1.0 } else { fail }, "{spec} {func} Dref {dref}");
+            }
+        }
+    }
+}
+
+#[test]
+fn one_d_array_and_cube_array_layers() {
+    // 1D array: layer from t (§8.14.2), LINEAR along s only: 2 texels [fail, pass] per layer,
+    // layer 1 = [pass, pass]. s = ½ -> α = ½.
+    let mut c = case2d(Spec::Gl46, Format::D16, 2, 1, vec![], CompareFunc::Lequal, Filter::Linear);
+    c.texture.target = Target::T1dArray;
+    c.texture.levels[0] = Level {
+        width: 2,
+        height: 1,
+        layers: 2,
+        depth: Texels::Unorm(vec![0, 65535, 65535, 65535]),
+        stencil: None,
+    };
+    c.lookup.coord = [0.5, 0.0, 0.0, 1.0];
+    assert_eq!(r(&c), 0.5);
+    c.lookup.coord = [0.5, 0.7, 0.0, 1.0]; // ⌊0.7 + ½⌋ = 1
+    assert_eq!(r(&c), 1.0);
+    // Cube array with 2 cubes; only cube 1's +Z face passes. Cube index from lookup.layer.
+    let mut texels = vec![0u32; 12];
+    texels[6 + 4] = 65535;
+    let mut c = case2d(Spec::Gl46, Format::D16, 1, 1, vec![], CompareFunc::Lequal, Filter::Nearest);
+    c.texture.target = Target::CubeArray;
+    c.texture.levels[0] = Level {
+        width: 1,
+        height: 1,
+        layers: 12,
+        depth: Texels::Unorm(texels),
+        stencil: None,
+    };
+    c.lookup.coord = [0.0, 0.0, 1.0, 1.0];
+    c.lookup.layer = 0.0;
+    assert_eq!(r(&c), 0.0);
+    c.lookup.layer = 0.5;
+    assert_eq!(r(&c), 1.0);
+    c.lookup.layer = 9.0; // clamped to the last cube
+    assert_eq!(r(&c), 1.0);
+}
+
+#[test]
+fn wrap_modes_end_to_end() {
+    // 4x1 [pass, fail, fail, fail] (only texel 0 passes), NEAREST, various s.
+    let mk = |wrap: Wrap, s: f64| {
+        let mut c = case2d(
+            Spec::Gl46,
+            Format::D16,
+            4,
+            1,
+            vec![65535, 0, 0, 0],
+            CompareFunc::Lequal,
+            Filter::Nearest,
+        );
+        c.sampler.wrap_s = wrap;
+        c.lookup.coord[0] = s;
+        r(&c)
+    };
+    assert_eq!(mk(Wrap::Repeat, 1.1), 1.0); // u = 4.4 -> 4 mod 4 = 0
+    assert_eq!(mk(Wrap::ClampToEdge, 1.1), 0.0); // -> 3
+    assert_eq!(mk(Wrap::MirroredRepeat, 1.9), 1.0); // u = 7.6 -> 7: (3) − mirror(7 − 4) = 0
+    assert_eq!(mk(Wrap::MirrorClampToEdge, -0.1), 1.0); // u = −0.4 -> −1: mirror = 0
+    assert_eq!(mk(Wrap::MirrorClampToEdge, -0.3), 0.0); // u = −1.2 -> −2: mirror = 1
+                                                        // Legacy CLAMP exists only in the compatibility profile: an error on the core path,
+                                                        // s clamped to 0 on the fixed-function path.
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        4,
+        1,
+        vec![65535, 0, 0, 0],
+        CompareFunc::Lequal,
+        Filter::Nearest,
+    );
+    c.sampler.wrap_s = Wrap::Clamp;
+    c.lookup.coord[0] = -5.0;
+    assert!(matches!(
+        SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::GlslCore),
+        Err(SoftError::Wrap { .. })
+    ));
+    assert_eq!(SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::FixedFunction).unwrap(), [1.0; 4]);
+}
+
+#[test]
+fn compare_none_returns_filtered_depth() {
+    // §8.23.1: compare mode NONE -> r = Dt; LINEAR between Dt 0.2 and 0.6 at α = ½ -> 0.4;
+    // fixed function with INTENSITY spreads it to all four channels.
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        2,
+        1,
+        vec![d16(0.2), d16(0.6)],
+        CompareFunc::Lequal,
+        Filter::Linear,
+    );
+    c.sampler.compare_mode = CompareMode::None;
+    c.sampler.depth_texture_mode = Some(DepthTextureMode::Intensity);
+    let got = SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::FixedFunction).unwrap();
+    assert!(got.iter().all(|v| (v - 0.4).abs() < 1e-6), "{got:?}");
+}
