@@ -1,9 +1,28 @@
-//! `shadowcheck gl_worker` (being built).
+//! `shadowcheck gl-worker --backend egl:llvmpipe:core`: one GL context speaking runner/PROTOCOL.md on
+//! stdin/stdout. Started by the runner with the driver env vars already set (`gl::worker_command`).
+use shadowcheck_runner::gl::{worker, BackendName};
 use std::process::ExitCode;
 
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Backend name: egl|osmesa : llvmpipe|softpipe|zink : core|compat|es3|es2.
+    #[arg(long)]
+    backend: String,
+    /// Only create the context and print `ok <name>` or `unavailable: <reason>`, then exit.
+    #[arg(long)]
+    probe: bool,
+}
 
-pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("`gl_worker` is not built yet")
+pub fn main(args: Args) -> anyhow::Result<ExitCode> {
+    let name: BackendName = args.backend.parse()?;
+    if args.probe {
+        let (ok, line) = worker::probe_line(name);
+        println!("{line}");
+        return Ok(if ok { ExitCode::SUCCESS } else { ExitCode::from(1) });
+    }
+    let mut w = worker::Worker::start(name)?;
+    let stdin = std::io::stdin();
+    let stdout = std::io::stdout();
+    worker::serve(&mut w, stdin.lock(), std::io::BufWriter::new(stdout.lock()))?;
+    Ok(ExitCode::SUCCESS)
 }

@@ -1,0 +1,341 @@
+//! Drawing a batch of cases: each (case, API path) writes one pixel of an RGBA32F framebuffer, so
+//! results are not quantized and all four channels are observed; the batch is read back at once.
+//!
+//! Consecutive cases with the same texture and sampler state share one texture object (the grid
+//! emits them together: only the reference or the coordinate changes), which keeps uploads and
+//! read-backs off the hot path.
+
+use super::legacy::{self, Legacy};
+use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
+use super::protocol::PathResult;
+use super::texture;
+use super::GlError;
+use glow::HasContext;
+use shadowcheck_model::{ApiPath, Case, Target, Texels};
+use std::collections::HashMap;
+
+/// Width and height of the result framebuffer: one pixel per (case, path).
+const FB_SIZE: i32 = 256;
+
+/// The answer for one case.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Answer {
+    Observation(Vec<PathResult>),
+    Skip(String),
+    Error(String),
+}
+
+struct Program {
+    program: glow::Program,
+    u_p: Option<glow::UniformLocation>,
+    u_x: Option<glow::UniformLocation>,
+    u_dx: Option<glow::UniformLocation>,
+    u_dy: Option<glow::UniformLocation>,
+    u_c: Option<glow::UniformLocation>,
+}
+
+enum Compiled {
+    Glsl(Program),
+    Arb(u32),
+    Fixed,
+}
+
+/// The GL objects of a worker and its program cache.
+pub struct Renderer {
+    pub gl: glow::Context,
+    pub info: GlInfo,
+    legacy: Option<Legacy>,
+    fbo: glow::Framebuffer,
+    vao: glow::VertexArray,
+    programs: HashMap<ShaderKey, Result<Compiled, String>>,
+}
+
+/// A drawn path waiting for read-back.
+struct Pending {
+    case: usize,
+    path: ApiPath,
+    slot: usize,
+    note: String,
+}
+
+/// The texture of the previous case, reused while texture and sampler state are unchanged.
+struct Current {
+    texture: glow::Texture,
+    key: (shadowcheck_model::Texture, shadowcheck_model::Sampler),
+    stored: Option<Texels>,
+}
+
+impl Renderer {
+    /// Sets up the framebuffer and the full-screen triangle.
+    ///
+    /// # Safety
+    /// `gl` must be current on this thread for the Renderer's whole life.
+    pub unsafe fn new(gl: glow::Context, info: GlInfo, legacy: Option<Legacy>) -> Result<Renderer, GlError> {
+        let color = gl.create_texture().map_err(GlError::Gl)?;
+        gl.bind_texture(glow::TEXTURE_2D, Some(color));
+        gl.tex_image_2d(glow::TEXTURE_2D, 0, glow::RGBA32F as i32, FB_SIZE, FB_SIZE, 0, glow::RGBA, glow::FLOAT, glow::PixelUnpackData::Slice(None));
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
+        let fbo = gl.create_framebuffer().map_err(GlError::Gl)?;
+        gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+        gl.framebuffer_texture_2d(glow::FRAMEBUFFER, glow::COLOR_ATTACHMENT0, glow::TEXTURE_2D, Some(color), 0);
+        let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
+        if status != glow::FRAMEBUFFER_COMPLETE {
+            return Err(GlError::Gl(format!("RGBA32F framebuffer incomplete (status 0x{status:04X})")));
+        }
+        gl.bind_texture(glow::TEXTURE_2D, None);
+        let vao = gl.create_vertex_array().map_err(GlError::Gl)?;
+        gl.bind_vertex_array(Some(vao));
+        let vbo = gl.create_buffer().map_err(GlError::Gl)?;
+        gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
+        let tri: [f32; 6] = [-1.0, -1.0, 3.0, -1.0, -1.0, 3.0];
+        let bytes: Vec<u8> = tri.iter().flat_map(|f| f.to_ne_bytes()).collect();
+        gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &bytes, glow::STATIC_DRAW);
+        gl.vertex_attrib_pointer_f32(0, 2, glow::FLOAT, false, 8, 0);
+        gl.enable_vertex_attrib_array(0);
+        gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+        gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
+        gl.disable(glow::DITHER);
+        texture::check(&gl, "framebuffer setup")?;
+        Ok(Renderer { gl, info, legacy, fbo, vao, programs: HashMap::new() })
+    }
+
+    unsafe fn compile(&mut self, key: &ShaderKey) -> Result<Compiled, String> {
+        let gl = &self.gl;
+        match key.path {
+            ApiPath::FixedFunction => Ok(Compiled::Fixed),
+            ApiPath::ArbFp => {
+                let l = self.legacy.as_ref().ok_or("legacy entry points not loaded")?;
+                l.arbfp_program(gl, &super::shaders::arbfp(key)).map(Compiled::Arb).map_err(|e| e.to_string())
+            }
+            _ => {
+                let (vs, fs) = super::shaders::glsl(&self.info, key);
+                let program = gl.create_program()?;
+                for (ty, src) in [(glow::VERTEX_SHADER, &vs), (glow::FRAGMENT_SHADER, &fs)] {
+                    let sh = gl.create_shader(ty)?;
+                    gl.shader_source(sh, src);
+                    gl.compile_shader(sh);
+                    if !gl.get_shader_compile_status(sh) {
+                        return Err(format!("shader compile failed: {}\n{src}", gl.get_shader_info_log(sh).trim()));
+                    }
+                    gl.attach_shader(program, sh);
+                    gl.delete_shader(sh);
+                }
+                gl.bind_attrib_location(program, 0, "a_pos");
+                gl.link_program(program);
+                if !gl.get_program_link_status(program) {
+                    return Err(format!("program link failed: {}\n{fs}", gl.get_program_info_log(program).trim()));
+                }
+                gl.use_program(Some(program));
+                let u = |n: &str| gl.get_uniform_location(program, n);
+                if let Some(t) = u("u_tex") {
+                    gl.uniform_1_i32(Some(&t), 0);
+                }
+                Ok(Compiled::Glsl(Program { program, u_p: u("u_p"), u_x: u("u_x"), u_dx: u("u_dx"), u_dy: u("u_dy"), u_c: u("u_c") }))
+            }
+        }
+    }
+
+    unsafe fn draw(&mut self, plan: &Plan, target: Target, slot: usize) -> Result<(), String> {
+        if !self.programs.contains_key(&plan.key) {
+            let c = self.compile(&plan.key);
+            self.programs.insert(plan.key, c);
+        }
+        let (x, y) = ((slot as i32) % FB_SIZE, (slot as i32) / FB_SIZE);
+        let gl = &self.gl;
+        gl.viewport(x, y, 1, 1);
+        let centre = [x as f32 + 0.5, y as f32 + 0.5];
+        match self.programs.get(&plan.key) {
+            Some(Ok(Compiled::Glsl(p))) => {
+                gl.use_program(Some(p.program));
+                gl.uniform_4_f32_slice(p.u_p.as_ref(), &plan.p);
+                gl.uniform_1_f32(p.u_x.as_ref(), plan.x);
+                gl.uniform_4_f32_slice(p.u_dx.as_ref(), &plan.dx);
+                gl.uniform_4_f32_slice(p.u_dy.as_ref(), &plan.dy);
+                gl.uniform_2_f32(p.u_c.as_ref(), centre[0], centre[1]);
+                gl.bind_vertex_array(Some(self.vao));
+                gl.draw_arrays(glow::TRIANGLES, 0, 3);
+            }
+            Some(Ok(Compiled::Arb(id))) => {
+                let l = self.legacy.as_ref().ok_or("legacy entry points not loaded")?;
+                gl.use_program(None);
+                gl.enable(legacy::GL_FRAGMENT_PROGRAM_ARB);
+                l.bind_arbfp(*id);
+                l.arbfp_local(0, plan.p);
+                l.arbfp_local(1, plan.dx);
+                l.arbfp_local(2, plan.dy);
+                l.arbfp_local(3, [centre[0], centre[1], 0.0, 0.0]);
+                l.fullscreen_triangle();
+                gl.disable(legacy::GL_FRAGMENT_PROGRAM_ARB);
+            }
+            Some(Ok(Compiled::Fixed)) => {
+                let l = self.legacy.as_ref().ok_or("legacy entry points not loaded")?;
+                gl.use_program(None);
+                let enable = target.gl();
+                gl.enable(enable);
+                l.tex_envi(legacy::GL_TEXTURE_ENV, legacy::GL_TEXTURE_ENV_MODE, legacy::GL_REPLACE as i32);
+                // REPLACE takes the colour of ALPHA textures and the alpha of LUMINANCE ones from
+                // the fragment: (0,0,0,1) gives the layouts of GL 2.1 Table 3.20.
+                l.color4f([0.0, 0.0, 0.0, 1.0]);
+                let tc = match target {
+                    Target::Cube => [plan.p[0], plan.p[1], plan.p[2], 1.0],
+                    _ => plan.p,
+                };
+                l.tex_coord4f(tc);
+                l.fullscreen_triangle();
+                gl.disable(enable);
+            }
+            Some(Err(e)) => return Err(e.clone()),
+            None => return Err("program cache miss".into()),
+        }
+        Ok(())
+    }
+
+    unsafe fn read(&self, used: usize) -> Vec<[f32; 4]> {
+        let rows = used.div_ceil(FB_SIZE as usize).max(1) as i32;
+        let mut buf = vec![0u8; (FB_SIZE * rows) as usize * 16];
+        self.gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
+        self.gl.read_pixels(0, 0, FB_SIZE, rows, glow::RGBA, glow::FLOAT, glow::PixelPackData::Slice(Some(&mut buf)));
+        buf.chunks_exact(16)
+            .map(|c| {
+                let f = |i: usize| f32::from_ne_bytes([c[i], c[i + 1], c[i + 2], c[i + 3]]);
+                [f(0), f(4), f(8), f(12)]
+            })
+            .collect()
+    }
+
+    unsafe fn clear(&self) {
+        self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(self.fbo));
+        self.gl.viewport(0, 0, FB_SIZE, FB_SIZE);
+        // A pixel no draw wrote reads back as -1, which no path can return.
+        self.gl.clear_color(-1.0, -1.0, -1.0, -1.0);
+        self.gl.clear(glow::COLOR_BUFFER_BIT);
+    }
+
+    /// Why a case cannot run on this context at all (before planning paths).
+    fn case_skip(&self, case: &Case) -> Option<String> {
+        if self.info.es && case.sampler.lod_bias != 0.0 {
+            return Some("OpenGL ES has no TEXTURE_LOD_BIAS".into());
+        }
+        if case.sampler.fail_value.is_some() && !self.info.has_ext("GL_ARB_shadow_ambient") {
+            return Some("GL_ARB_shadow_ambient not exposed (TEXTURE_COMPARE_FAIL_VALUE_ARB)".into());
+        }
+        if !self.info.targets().contains(&case.texture.target) {
+            return Some(format!("target {} not supported by this context", case.texture.target));
+        }
+        None
+    }
+
+    /// Runs a batch and answers every case, in order.
+    ///
+    /// # Safety
+    /// The renderer's context must be current.
+    pub unsafe fn run_batch(&mut self, cases: &[Case]) -> Vec<Answer> {
+        let mut answers: Vec<Option<Answer>> = vec![None; cases.len()];
+        let mut results: Vec<Vec<PathResult>> = vec![Vec::new(); cases.len()];
+        let mut pending: Vec<Pending> = Vec::new();
+        let mut current: Option<Current> = None;
+        let mut stored_of: Vec<Option<Texels>> = vec![None; cases.len()];
+        let capacity = (FB_SIZE * FB_SIZE) as usize;
+        let paths = self.info.paths();
+        self.clear();
+        for (ci, case) in cases.iter().enumerate() {
+            if let Some(why) = self.case_skip(case) {
+                answers[ci] = Some(Answer::Skip(why));
+                continue;
+            }
+            let mut plans = Vec::new();
+            let mut skipped = Vec::new();
+            for &path in &case.api {
+                if !paths.contains(&path) {
+                    skipped.push(format!("{path}: not run by this context"));
+                    continue;
+                }
+                match paths::plan(path, case) {
+                    Ok(p) => plans.push(p),
+                    Err(why) => skipped.push(why),
+                }
+            }
+            if plans.is_empty() {
+                answers[ci] = Some(Answer::Skip(skipped.join("; ")));
+                continue;
+            }
+            // The case's texture: reuse while texture and sampler are unchanged.
+            let key = (case.texture.clone(), case.sampler.clone());
+            if current.as_ref().is_none_or(|c| c.key != key) {
+                if let Some(c) = current.take() {
+                    self.gl.delete_texture(c.texture);
+                }
+                while self.gl.get_error() != glow::NO_ERROR {}
+                match texture::create(&self.gl, &self.info, case) {
+                    Ok(t) => {
+                        let stored = if self.info.es { None } else { texture::read_back(&self.gl, case).ok() };
+                        current = Some(Current { texture: t, key, stored });
+                    }
+                    Err(e) => {
+                        answers[ci] = Some(Answer::Error(e.to_string()));
+                        continue;
+                    }
+                }
+            }
+            let stored = current.as_ref().and_then(|c| c.stored.clone());
+            let mut failed = None;
+            for plan in &plans {
+                if pending.len() == capacity {
+                    self.collect(&mut pending, &mut results);
+                    self.clear();
+                }
+                let slot = pending.len();
+                if let Err(e) = self.draw(plan, case.texture.target, slot) {
+                    failed = Some(format!("{}: {e}", plan.key.path));
+                    break;
+                }
+                let how = if plan.key.form == LodForm::Constant { "fixed-function".to_string() } else { plan.note.clone() };
+                pending.push(Pending { case: ci, path: plan.key.path, slot, note: how });
+            }
+            if let Err(e) = texture::check(&self.gl, "drawing") {
+                failed = failed.or(Some(e.to_string()));
+            }
+            if let Some(msg) = failed {
+                pending.retain(|p| p.case != ci);
+                answers[ci] = Some(Answer::Error(msg));
+                continue;
+            }
+            stored_of[ci] = stored;
+        }
+        if let Some(c) = current.take() {
+            self.gl.delete_texture(c.texture);
+        }
+        self.collect(&mut pending, &mut results);
+        answers
+            .into_iter()
+            .zip(results)
+            .zip(stored_of)
+            .map(|((a, mut r), stored)| {
+                a.unwrap_or_else(|| {
+                    for e in &mut r {
+                        e.stored = stored.clone();
+                    }
+                    Answer::Observation(r)
+                })
+            })
+            .collect()
+    }
+
+    /// Reads back the pending pixels into `results`.
+    unsafe fn collect(&self, pending: &mut Vec<Pending>, results: &mut [Vec<PathResult>]) {
+        if pending.is_empty() {
+            return;
+        }
+        let px = self.read(pending.len());
+        for p in pending.drain(..) {
+            let v = px.get(p.slot).copied().unwrap_or([f32::NAN; 4]);
+            results[p.case].push(PathResult {
+                api: p.path,
+                rgba: v.map(|c| c as f64),
+                stored: None,
+                note: Some(p.note),
+            });
+        }
+    }
+}

@@ -1,0 +1,200 @@
+//! Backend names: `egl:<driver>:<api>` and `osmesa:<driver>:<api>`.
+//!
+//! A name says which window-system layer creates the context (EGL surfaceless or OSMesa), which Mesa
+//! Gallium driver runs it, and which kind of context is asked for. The driver is chosen by
+//! environment variables that must be set before Mesa loads, which is why every backend runs in its
+//! own worker process (see [`super::worker_command`]).
+
+use super::GlError;
+use shadowcheck_model::ApiPath;
+
+/// The layer that creates the context.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Platform {
+    /// EGL on `EGL_PLATFORM_SURFACELESS_MESA`, rendering into an FBO.
+    Egl,
+    /// OSMesa (`libOSMesa.so.8`), desktop GL only.
+    Osmesa,
+}
+
+/// The Mesa Gallium driver.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Driver {
+    Llvmpipe,
+    Softpipe,
+    /// GL on Vulkan, over lavapipe on these machines.
+    Zink,
+}
+
+/// The kind of context.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ContextApi {
+    /// Desktop GL core profile.
+    Core,
+    /// Desktop GL compatibility profile.
+    Compat,
+    /// OpenGL ES 3.x.
+    Es3,
+    /// OpenGL ES 2.0 (Mesa hands out an ES 3.x context; only ES 2.0 paths are run on it).
+    Es2,
+}
+
+/// A parsed backend name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct BackendName {
+    pub platform: Platform,
+    pub driver: Driver,
+    pub api: ContextApi,
+}
+
+impl Platform {
+    pub fn key(self) -> &'static str {
+        match self {
+            Platform::Egl => "egl",
+            Platform::Osmesa => "osmesa",
+        }
+    }
+}
+
+impl Driver {
+    pub const ALL: [Driver; 3] = [Driver::Llvmpipe, Driver::Softpipe, Driver::Zink];
+    pub fn key(self) -> &'static str {
+        match self {
+            Driver::Llvmpipe => "llvmpipe",
+            Driver::Softpipe => "softpipe",
+            Driver::Zink => "zink",
+        }
+    }
+}
+
+impl ContextApi {
+    pub const ALL: [ContextApi; 4] = [ContextApi::Core, ContextApi::Compat, ContextApi::Es3, ContextApi::Es2];
+    pub fn key(self) -> &'static str {
+        match self {
+            ContextApi::Core => "core",
+            ContextApi::Compat => "compat",
+            ContextApi::Es3 => "es3",
+            ContextApi::Es2 => "es2",
+        }
+    }
+    /// OpenGL ES (rather than desktop GL).
+    pub fn is_es(self) -> bool {
+        matches!(self, ContextApi::Es3 | ContextApi::Es2)
+    }
+    /// The API paths a context of this kind can run (before asking the driver what it exposes).
+    pub fn paths(self) -> &'static [ApiPath] {
+        match self {
+            ContextApi::Core => &[ApiPath::GlslCore],
+            ContextApi::Compat => &[ApiPath::FixedFunction, ApiPath::Glsl120, ApiPath::Glsl130, ApiPath::ArbFp],
+            ContextApi::Es3 => &[ApiPath::Es300],
+            ContextApi::Es2 => &[ApiPath::Es100Ext],
+        }
+    }
+}
+
+impl BackendName {
+    /// Every combination, in a stable order (EGL first).
+    pub fn all() -> Vec<BackendName> {
+        let mut v = Vec::new();
+        for platform in [Platform::Egl, Platform::Osmesa] {
+            for driver in Driver::ALL {
+                for api in ContextApi::ALL {
+                    v.push(BackendName { platform, driver, api });
+                }
+            }
+        }
+        v
+    }
+
+    /// Why this combination can never work, independent of what is installed.
+    pub fn static_unavailability(self) -> Option<String> {
+        if self.platform == Platform::Osmesa && self.api.is_es() {
+            return Some("OSMesa creates desktop GL contexts only (no OpenGL ES); use egl:".to_string()
+                + self.driver.key()
+                + ":"
+                + self.api.key());
+        }
+        if self.platform == Platform::Osmesa && self.driver == Driver::Zink {
+            return Some(
+                "OSMesa with GALLIUM_DRIVER=zink segfaults in Mesa 22.3 (zink needs a winsys OSMesa does not give it); use egl:zink:*"
+                    .to_string(),
+            );
+        }
+        None
+    }
+
+    /// Environment variables that select the driver; set before the driver library loads.
+    pub fn env(self) -> Vec<(String, String)> {
+        let mut env = vec![
+            ("LIBGL_ALWAYS_SOFTWARE".to_string(), "1".to_string()),
+            ("GALLIUM_DRIVER".to_string(), self.driver.key().to_string()),
+        ];
+        if self.platform == Platform::Egl {
+            env.push(("EGL_PLATFORM".to_string(), "surfaceless".to_string()));
+        }
+        env
+    }
+}
+
+impl std::fmt::Display for BackendName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}:{}:{}", self.platform.key(), self.driver.key(), self.api.key())
+    }
+}
+
+impl std::str::FromStr for BackendName {
+    type Err = GlError;
+    fn from_str(s: &str) -> Result<Self, GlError> {
+        let bad = |why: &str| GlError::BadName { name: s.to_string(), why: why.to_string() };
+        let parts: Vec<&str> = s.split(':').collect();
+        if parts.len() != 3 {
+            return Err(bad("expected egl|osmesa:llvmpipe|softpipe|zink:core|compat|es3|es2"));
+        }
+        let platform = match parts[0] {
+            "egl" => Platform::Egl,
+            "osmesa" => Platform::Osmesa,
+            _ => return Err(bad("platform must be egl or osmesa")),
+        };
+        let driver = Driver::ALL
+            .into_iter()
+            .find(|d| d.key() == parts[1])
+            .ok_or_else(|| bad("driver must be llvmpipe, softpipe or zink"))?;
+        let api = ContextApi::ALL
+            .into_iter()
+            .find(|a| a.key() == parts[2])
+            .ok_or_else(|| bad("api must be core, compat, es3 or es2"))?;
+        Ok(BackendName { platform, driver, api })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for b in BackendName::all() {
+            let s = b.to_string();
+            assert_eq!(s.parse::<BackendName>().unwrap(), b);
+        }
+        assert_eq!(BackendName::all().len(), 24);
+    }
+
+    #[test]
+    fn bad_names_say_why() {
+        let e = "egl:swrast:core".parse::<BackendName>().unwrap_err().to_string();
+        assert!(e.contains("driver"), "{e}");
+        assert!("egl:llvmpipe".parse::<BackendName>().is_err());
+    }
+
+    #[test]
+    fn osmesa_zink_and_osmesa_es_are_unavailable_with_a_reason() {
+        let z: BackendName = "osmesa:zink:core".parse().unwrap();
+        assert!(z.static_unavailability().unwrap().contains("segfault"));
+        let e: BackendName = "osmesa:llvmpipe:es3".parse().unwrap();
+        assert!(e.static_unavailability().unwrap().contains("OpenGL ES"));
+        let ok: BackendName = "egl:zink:es2".parse().unwrap();
+        assert!(ok.static_unavailability().is_none());
+        assert!(ok.env().contains(&("GALLIUM_DRIVER".to_string(), "zink".to_string())));
+    }
+}

@@ -1,0 +1,425 @@
+//! How each API path realizes a case: which sampler type and lookup function, and the values that
+//! go into the shader's uniforms.
+//!
+//! The case's level of detail is lambda_base = `lookup.lod` plus the shader bias `lookup.bias`
+//! (GL 4.6 §8.14.1). A path realizes it, in order of preference:
+//! - `Lod`: an explicit-LOD function (`textureLod`), exact;
+//! - `Grad`: explicit gradients (`textureGrad`) whose scale factor is 2^lod;
+//! - `Implicit`: the implicit-derivative function (`texture`, `shadow2D`, ARB `TEX`/`TXB`) on a
+//!   coordinate that varies across the 2x2 pixel quad by exactly those gradients, while being exactly
+//!   the case's coordinate at the written pixel's centre (the offset is 0 there); the bias form
+//!   passes `lookup.bias`.
+//! Where a sampler type has no bias form but has `Lod`/`Grad`, the bias is folded into the explicit
+//! LOD (same lambda' by §8.14.1, noted in the result). Anything else is skipped with the reason.
+
+use super::names::ContextApi;
+use shadowcheck_model::{ApiPath, Case, CompareMode, DepthStencilMode, Filter, Target};
+use std::collections::HashSet;
+
+/// What the current context is and exposes.
+#[derive(Debug, Clone)]
+pub struct GlInfo {
+    pub api: ContextApi,
+    pub es: bool,
+    pub compat: bool,
+    /// (major, minor) from GL_VERSION.
+    pub version: (u32, u32),
+    /// GLSL version * 100 (e.g. 450, 320 for ES 3.20).
+    pub glsl: u32,
+    pub renderer: String,
+    pub version_string: String,
+    pub extensions: HashSet<String>,
+}
+
+impl GlInfo {
+    pub fn has_ext(&self, e: &str) -> bool {
+        self.extensions.contains(e)
+    }
+    pub fn at_least(&self, major: u32, minor: u32) -> bool {
+        self.version >= (major, minor)
+    }
+    pub fn cube_array(&self) -> bool {
+        if self.es {
+            self.at_least(3, 2) || self.has_ext("GL_OES_texture_cube_map_array") || self.has_ext("GL_EXT_texture_cube_map_array")
+        } else {
+            self.at_least(4, 0) || self.has_ext("GL_ARB_texture_cube_map_array")
+        }
+    }
+    pub fn arbfp_shadow(&self) -> bool {
+        self.compat && self.has_ext("GL_ARB_fragment_program") && self.has_ext("GL_ARB_fragment_program_shadow")
+    }
+    pub fn shadow_samplers_es2(&self) -> bool {
+        self.has_ext("GL_EXT_shadow_samplers")
+    }
+    /// The paths of this context that can run here.
+    pub fn paths(&self) -> Vec<ApiPath> {
+        self.api
+            .paths()
+            .iter()
+            .copied()
+            .filter(|p| match p {
+                ApiPath::ArbFp => self.arbfp_shadow(),
+                ApiPath::Glsl130 => self.glsl >= 130,
+                ApiPath::Es100Ext => self.shadow_samplers_es2(),
+                _ => true,
+            })
+            .collect()
+    }
+    /// Targets a case may use on this context.
+    pub fn targets(&self) -> Vec<Target> {
+        let mut v = if self.es || self.api == ContextApi::Es2 {
+            vec![Target::T2d, Target::Cube, Target::T2dArray]
+        } else {
+            vec![Target::T1d, Target::T2d, Target::Rect, Target::Cube, Target::T1dArray, Target::T2dArray]
+        };
+        if self.api == ContextApi::Es2 {
+            v = vec![Target::T2d];
+        } else if self.cube_array() {
+            v.push(Target::CubeArray);
+        }
+        v
+    }
+}
+
+/// The GLSL sampler family.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SamplerKind {
+    /// `sampler*Shadow`: depth comparison.
+    Shadow,
+    /// `sampler*`: compare mode NONE or a colour texture (r = the filtered value).
+    Float,
+    /// `usampler*`: DEPTH_STENCIL_TEXTURE_MODE = STENCIL_INDEX.
+    Uint,
+}
+
+/// How lambda is realized.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum LodForm {
+    Lod,
+    Grad,
+    /// Implicit derivatives; `true`: the bias form.
+    Implicit(bool),
+    /// Fixed-function: constant texture coordinates (lambda_base = -inf).
+    Constant,
+}
+
+/// The shader variant: programs are cached by this key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct ShaderKey {
+    pub path: ApiPath,
+    pub target: Target,
+    pub kind: SamplerKind,
+    pub form: LodForm,
+    pub proj: bool,
+}
+
+/// One API path's plan for one case.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    pub key: ShaderKey,
+    /// The lookup vector P (layout per target, see `shaders::p_expr`).
+    pub p: [f32; 4],
+    /// lod / bias / cube-array compare value.
+    pub x: f32,
+    pub dx: [f32; 4],
+    pub dy: [f32; 4],
+    pub note: String,
+}
+
+/// The sampler family a case needs.
+pub fn sampler_kind(case: &Case) -> SamplerKind {
+    let f = case.texture.format;
+    if f.has_stencil() && case.sampler.depth_stencil_mode == Some(DepthStencilMode::StencilIndex) {
+        SamplerKind::Uint
+    } else if f.is_depth() && case.sampler.compare_mode == CompareMode::Compare {
+        SamplerKind::Shadow
+    } else {
+        SamplerKind::Float
+    }
+}
+
+/// The shading-language dialect of a path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Dialect {
+    Modern,
+    Es3,
+    Glsl120,
+    Es100,
+    ArbFp,
+    Ff,
+}
+
+fn dialect(path: ApiPath) -> Dialect {
+    match path {
+        ApiPath::GlslCore | ApiPath::Glsl130 => Dialect::Modern,
+        ApiPath::Es300 => Dialect::Es3,
+        ApiPath::Glsl120 => Dialect::Glsl120,
+        ApiPath::Es100Ext => Dialect::Es100,
+        ApiPath::ArbFp => Dialect::ArbFp,
+        ApiPath::FixedFunction => Dialect::Ff,
+    }
+}
+
+/// Does the language have this lookup function? (GLSL 4.60 §8.9.2, GLSL ES 3.20 §8.9.2,
+/// GLSL 1.20 §8.7, EXT_shadow_samplers, ARB_fragment_program(_shadow).)
+pub fn available(path: ApiPath, kind: SamplerKind, target: Target, form: LodForm, proj: bool) -> bool {
+    use Target::*;
+    let d = dialect(path);
+    let es_target = matches!(target, T2d | Cube | T2dArray | CubeArray);
+    if matches!(d, Dialect::Es3) && !es_target {
+        return false;
+    }
+    if proj && !matches!(target, T1d | T2d | Rect) {
+        return false;
+    }
+    match d {
+        Dialect::Ff => form == LodForm::Constant && (matches!(target, T1d | T2d | Rect) || (kind != SamplerKind::Shadow && target == Cube)),
+        Dialect::ArbFp => match form {
+            LodForm::Implicit(bias) => {
+                kind != SamplerKind::Uint
+                    && (matches!(target, T1d | T2d | Rect) || (kind == SamplerKind::Float && target == Cube))
+                    && !(bias && (proj || target == Rect))
+            }
+            _ => false,
+        },
+        Dialect::Es100 => target == T2d && kind != SamplerKind::Uint && form == LodForm::Implicit(false),
+        Dialect::Glsl120 => match form {
+            LodForm::Implicit(bias) => {
+                kind != SamplerKind::Uint
+                    && (matches!(target, T1d | T2d | Rect) || (kind == SamplerKind::Float && target == Cube))
+                    && !(bias && target == Rect)
+            }
+            _ => false,
+        },
+        Dialect::Modern | Dialect::Es3 => {
+            let es = d == Dialect::Es3;
+            if kind == SamplerKind::Shadow {
+                match form {
+                    LodForm::Lod => matches!(target, T1d | T2d) || (!proj && target == T1dArray),
+                    LodForm::Grad => target != CubeArray,
+                    LodForm::Implicit(true) => matches!(target, T1d | T2d) || (!proj && matches!(target, Cube | T1dArray)),
+                    LodForm::Implicit(false) => true,
+                    LodForm::Constant => false,
+                }
+            } else {
+                match form {
+                    LodForm::Lod => target != Rect && !(proj && es && target != T2d),
+                    LodForm::Grad => true,
+                    LodForm::Implicit(bias) => !(bias && target == Rect),
+                    LodForm::Constant => false,
+                }
+            }
+        }
+    }
+}
+
+/// The `c` of GL 4.6 §8.14 (mag/min switch-over point).
+fn switch_over(case: &Case) -> f64 {
+    let s = &case.sampler;
+    if s.mag_filter == Filter::Linear && matches!(s.min_filter, Filter::NearestMipmapNearest | Filter::NearestMipmapLinear) {
+        0.5
+    } else {
+        0.0
+    }
+}
+
+/// Is the fixed-function lookup (constant coordinates: lambda_base = -inf, so lambda' = min_lod)
+/// certain to give the same filter and level as the case's lambda?
+fn constant_coords_equivalent(case: &Case) -> bool {
+    let s = &case.sampler;
+    let f32r = |v: f64| v as f32 as f64;
+    let lam = (f32r(case.lookup.lod) + s.lod_bias as f64 + f32r(case.lookup.bias)).clamp(s.min_lod as f64, (s.max_lod as f64).max(s.min_lod as f64));
+    let lam_ff = s.min_lod as f64;
+    let c = switch_over(case);
+    (lam <= c && lam_ff <= c) || (lam > c && lam_ff > c && !s.min_filter.is_mipmap())
+}
+
+/// Plans `path` for `case`, or says why it cannot be run.
+pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
+    let kind = sampler_kind(case);
+    let t = case.texture.target;
+    let l = &case.lookup;
+    let proj = l.projective;
+    let (lod, bias) = (l.lod as f32, l.bias as f32);
+    let forms: Vec<(LodForm, &str)> = if path == ApiPath::FixedFunction {
+        vec![(LodForm::Constant, "constant texture coordinates")]
+    } else if bias == 0.0 {
+        vec![(LodForm::Lod, "explicit LOD"), (LodForm::Grad, "explicit gradients"), (LodForm::Implicit(false), "implicit derivatives")]
+    } else {
+        vec![
+            (LodForm::Implicit(true), "implicit derivatives with bias"),
+            (LodForm::Lod, "explicit LOD = lod + bias (no bias form)"),
+            (LodForm::Grad, "gradients for lod + bias (no bias form)"),
+        ]
+    };
+    let (form, how) = forms
+        .into_iter()
+        .find(|(f, _)| available(path, kind, t, *f, proj))
+        .ok_or_else(|| {
+            format!(
+                "{} has no {}{:?} lookup on a {} texture{}",
+                path,
+                if proj { "projective " } else { "" },
+                kind,
+                t,
+                if bias != 0.0 { " with a shader bias" } else { "" }
+            )
+        })?;
+    if form == LodForm::Constant && !constant_coords_equivalent(case) {
+        return Err(format!(
+            "fixed-function texturing cannot realize lambda_base={} bias={} exactly (constant coordinates give lambda=min_lod)",
+            l.lod, l.bias
+        ));
+    }
+    let key = ShaderKey { path, target: t, kind, form, proj };
+    let folded = matches!(form, LodForm::Lod | LodForm::Grad) && bias != 0.0;
+    let lod_eff = if folded { lod + bias } else { lod };
+    let c = [l.coord[0] as f32, l.coord[1] as f32, l.coord[2] as f32, l.coord[3] as f32];
+    let q = if proj { c[3] } else { 1.0 };
+    let dref = l.dref as f32;
+    let shadow = kind == SamplerKind::Shadow;
+    // P by target (see shaders::p_expr).
+    let p = match t {
+        Target::T1d | Target::T2d | Target::Rect => [c[0], if t == Target::T1d { 0.0 } else { c[1] }, if shadow { dref } else { 0.0 }, q],
+        Target::T1dArray => [c[0], c[1], dref, 1.0],
+        Target::T2dArray => [c[0], c[1], c[2], dref],
+        Target::Cube => [c[0], c[1], c[2], dref],
+        Target::CubeArray => [c[0], c[1], c[2], l.layer as f32],
+    };
+    let x = match form {
+        _ if shadow && t == Target::CubeArray => dref,
+        LodForm::Lod => lod_eff,
+        LodForm::Implicit(true) => bias,
+        _ => 0.0,
+    };
+    let (mut dx, mut dy) = gradients(case, lod_eff);
+    if let LodForm::Implicit(_) = form {
+        if proj {
+            // The function divides by q, so the coordinate must vary q times faster.
+            for g in [&mut dx, &mut dy] {
+                g[0] *= q;
+                g[1] *= q;
+            }
+        }
+    }
+    if path == ApiPath::ArbFp && form == LodForm::Implicit(true) {
+        // TXB takes the bias in the fourth component.
+        let mut p = p;
+        p[3] = bias;
+        return Ok(Plan { key, p, x, dx, dy, note: format!("ARB fp TXB, {how}") });
+    }
+    Ok(Plan { key, p, x, dx, dy, note: how.to_string() })
+}
+
+/// Screen-space gradients of the lookup coordinate giving a scale factor rho = 2^lod
+/// (GL 4.6 §8.14.1: u = s * w_base, rho = max of the lengths of the derivative vectors; cube maps
+/// measure the face coordinates sc/|ma|, tc/|ma| mapped to [0,1] by (x+1)/2, §8.13).
+pub fn gradients(case: &Case, lod: f32) -> ([f32; 4], [f32; 4]) {
+    let scale = (lod.clamp(-64.0, 64.0) as f64).exp2();
+    let lvl = &case.texture.levels[0];
+    let (w, h) = (lvl.width as f64, lvl.height as f64);
+    let mut dx = [0f32; 4];
+    let mut dy = [0f32; 4];
+    match case.texture.target {
+        Target::T1d | Target::T1dArray => dx[0] = (scale / w) as f32,
+        Target::T2d | Target::T2dArray => {
+            dx[0] = (scale / w) as f32;
+            dy[1] = (scale / h) as f32;
+        }
+        Target::Rect => {
+            dx[0] = scale as f32;
+            dy[1] = scale as f32;
+        }
+        Target::Cube | Target::CubeArray => {
+            let c = &case.lookup.coord;
+            let m = (0..3).max_by(|&a, &b| c[a].abs().total_cmp(&c[b].abs())).unwrap_or(2);
+            let ma = c[m].abs().max(f64::MIN_POSITIVE);
+            let g = (scale * 2.0 * ma / w) as f32;
+            let minor: Vec<usize> = (0..3).filter(|&i| i != m).collect();
+            dx[minor[0]] = g;
+            dy[minor[1]] = g;
+        }
+    }
+    (dx, dy)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use shadowcheck_model::*;
+
+    fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
+        Case {
+            id: "t".into(),
+            spec: Spec::Gl46,
+            api: vec![ApiPath::GlslCore],
+            texture: Texture {
+                target,
+                format: Format::D16,
+                base_level: 0,
+                levels: vec![Level { width: w, height: h, layers, depth: Texels::Unorm(vec![0; (w * h * layers) as usize]), stencil: None }],
+            },
+            sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
+            lookup: Lookup { coord: [0.5, 0.5, 0.5, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0 },
+            expect: None,
+        }
+    }
+
+    #[test]
+    fn glsl_function_availability_follows_the_language_tables() {
+        use LodForm::*;
+        // GLSL 4.60 §8.9.2: textureLod exists for 1D/2D/1DArray shadow only; no textureGrad on cube array shadow.
+        assert!(available(ApiPath::GlslCore, SamplerKind::Shadow, Target::T2d, Lod, true));
+        assert!(!available(ApiPath::GlslCore, SamplerKind::Shadow, Target::Cube, Lod, false));
+        assert!(available(ApiPath::GlslCore, SamplerKind::Shadow, Target::Cube, Grad, false));
+        assert!(!available(ApiPath::GlslCore, SamplerKind::Shadow, Target::CubeArray, Grad, false));
+        assert!(!available(ApiPath::GlslCore, SamplerKind::Shadow, Target::T2dArray, Implicit(true), false));
+        // GLSL ES 3.00 has no 1D or rectangle samplers.
+        assert!(!available(ApiPath::Es300, SamplerKind::Shadow, Target::T1d, Implicit(false), false));
+        // Projective forms exist for 1D, 2D and rect only.
+        assert!(!available(ApiPath::GlslCore, SamplerKind::Shadow, Target::Cube, Grad, true));
+        // Fixed-function shadow: 1D, 2D, rect.
+        assert!(available(ApiPath::FixedFunction, SamplerKind::Shadow, Target::Rect, Constant, false));
+        assert!(!available(ApiPath::FixedFunction, SamplerKind::Shadow, Target::Cube, Constant, false));
+    }
+
+    #[test]
+    fn plan_prefers_explicit_lod_and_puts_dref_where_the_language_wants_it() {
+        let c = case(Target::T2d, 4, 4, 1);
+        let p = plan(ApiPath::GlslCore, &c).unwrap();
+        assert_eq!(p.key.form, LodForm::Lod);
+        assert_eq!(p.p, [0.5, 0.5, 0.5, 1.0]);
+        let mut ca = case(Target::CubeArray, 4, 4, 12);
+        ca.lookup.layer = 1.0;
+        ca.lookup.dref = 0.25;
+        let p = plan(ApiPath::GlslCore, &ca).unwrap();
+        assert_eq!(p.key.form, LodForm::Implicit(false));
+        assert_eq!((p.p[3], p.x), (1.0, 0.25));
+        let mut b = case(Target::T2dArray, 4, 4, 2);
+        b.lookup.bias = 1.0;
+        let p = plan(ApiPath::GlslCore, &b).unwrap();
+        assert_eq!(p.key.form, LodForm::Grad, "bias folded into gradients");
+    }
+
+    #[test]
+    fn gradients_give_rho_two_to_the_lod() {
+        let c = case(Target::T2d, 8, 4, 1);
+        let (dx, dy) = gradients(&c, 1.0);
+        assert_eq!((dx[0] * 8.0, dy[1] * 4.0), (2.0, 2.0));
+        let mut cube = case(Target::Cube, 4, 4, 6);
+        cube.lookup.coord = [0.1, -0.2, -2.0, 1.0];
+        let (dx, dy) = gradients(&cube, 0.0);
+        // major axis r (|ma| = 2): one texel of a 4-wide face is 2*|ma|/4 in direction units.
+        assert_eq!((dx[0], dy[1], dx[2], dy[2]), (1.0, 1.0, 0.0, 0.0));
+    }
+
+    #[test]
+    fn fixed_function_skips_when_lambda_would_matter() {
+        let mut c = case(Target::T2d, 4, 4, 1);
+        c.api = vec![ApiPath::FixedFunction];
+        assert!(plan(ApiPath::FixedFunction, &c).is_ok());
+        c.sampler.min_filter = Filter::LinearMipmapLinear;
+        c.lookup.lod = 1.0;
+        assert!(plan(ApiPath::FixedFunction, &c).unwrap_err().contains("lambda"));
+    }
+}

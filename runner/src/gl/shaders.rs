@@ -1,0 +1,205 @@
+//! Shader and ARB fragment program text for a [`ShaderKey`].
+//!
+//! Every program reads the case from uniforms (exact f32 values): `u_p` the lookup vector P,
+//! `u_x` the LOD / bias / cube-array compare value, `u_dx`/`u_dy` the gradients and `u_c` the centre
+//! of the written pixel. With implicit derivatives the coordinate is
+//! `u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy`, which is exactly `u_p`
+//! at the written pixel and varies by the gradients across its 2x2 quad.
+
+use super::paths::{GlInfo, LodForm, SamplerKind, ShaderKey};
+use shadowcheck_model::{ApiPath, Target};
+
+fn sampler_type(kind: SamplerKind, target: Target) -> String {
+    let base = match target {
+        Target::T1d => "1D",
+        Target::T2d => "2D",
+        Target::Rect => "2DRect",
+        Target::Cube => "Cube",
+        Target::T1dArray => "1DArray",
+        Target::T2dArray => "2DArray",
+        Target::CubeArray => "CubeArray",
+    };
+    match kind {
+        SamplerKind::Shadow => format!("sampler{base}Shadow"),
+        SamplerKind::Float => format!("sampler{base}"),
+        SamplerKind::Uint => format!("usampler{base}"),
+    }
+}
+
+/// The argument P built from the vec4 `p` (layout from `paths::plan`).
+fn p_expr(kind: SamplerKind, target: Target, proj: bool) -> &'static str {
+    use Target::*;
+    if proj {
+        return "p";
+    }
+    match (kind == SamplerKind::Shadow, target) {
+        (true, T1d | T2d | Rect | T1dArray) => "p.xyz",
+        (true, Cube | T2dArray | CubeArray) => "p",
+        (false, T1d) => "p.x",
+        (false, T2d | Rect | T1dArray) => "p.xy",
+        (false, Cube | T2dArray) => "p.xyz",
+        (false, CubeArray) => "p",
+    }
+}
+
+fn grad_swizzle(target: Target) -> &'static str {
+    match target {
+        Target::T1d | Target::T1dArray => ".x",
+        Target::T2d | Target::Rect | Target::T2dArray => ".xy",
+        Target::Cube | Target::CubeArray => ".xyz",
+    }
+}
+
+/// The lookup call for GLSL >= 1.30 and GLSL ES 3.00.
+fn modern_call(key: &ShaderKey) -> String {
+    let s = if key.proj { "Proj" } else { "" };
+    let p = p_expr(key.kind, key.target, key.proj);
+    let g = grad_swizzle(key.target);
+    let cube_array_shadow = key.kind == SamplerKind::Shadow && key.target == Target::CubeArray;
+    match key.form {
+        LodForm::Lod => format!("texture{s}Lod(u_tex, {p}, u_x)"),
+        LodForm::Grad => format!("texture{s}Grad(u_tex, {p}, u_dx{g}, u_dy{g})"),
+        LodForm::Implicit(true) => format!("texture{s}(u_tex, {p}, u_x)"),
+        LodForm::Implicit(false) if cube_array_shadow => "texture(u_tex, p, u_x)".to_string(),
+        LodForm::Implicit(false) | LodForm::Constant => format!("texture{s}(u_tex, {p})"),
+    }
+}
+
+/// The lookup call for GLSL 1.20 (`shadow1D`, `shadow2DRectProj`, `texture2D`, ...) and ES 1.00.
+fn legacy_call(key: &ShaderKey) -> String {
+    let s = if key.proj { "Proj" } else { "" };
+    let p = p_expr(key.kind, key.target, key.proj);
+    let t = match key.target {
+        Target::T1d => "1D",
+        Target::Rect => "2DRect",
+        Target::Cube => "Cube",
+        _ => "2D",
+    };
+    let f = match (key.path, key.kind) {
+        (ApiPath::Es100Ext, SamplerKind::Shadow) => format!("shadow2D{s}EXT"),
+        (_, SamplerKind::Shadow) => format!("shadow{t}{s}"),
+        _ => format!("texture{t}{s}"),
+    };
+    let bias = if key.form == LodForm::Implicit(true) { ", u_x" } else { "" };
+    format!("{f}(u_tex, {p}{bias})")
+}
+
+/// (vertex source, fragment source) for a GLSL path.
+pub fn glsl(info: &GlInfo, key: &ShaderKey) -> (String, String) {
+    let cube_array = key.target == Target::CubeArray;
+    let rect = key.target == Target::Rect;
+    let (header, vin, fout, out_decl) = match key.path {
+        ApiPath::GlslCore => {
+            let v = if info.glsl >= 400 { "#version 400 core\n" } else { "#version 330 core\n" };
+            let mut h = v.to_string();
+            if cube_array && info.glsl < 400 {
+                h += "#extension GL_ARB_texture_cube_map_array : require\n";
+            }
+            (h, "in", "o", "out vec4 o;\n")
+        }
+        ApiPath::Glsl130 => {
+            let mut h = "#version 130\n".to_string();
+            if rect {
+                h += "#extension GL_ARB_texture_rectangle : require\n";
+            }
+            if cube_array {
+                h += "#extension GL_ARB_texture_cube_map_array : require\n";
+            }
+            (h, "in", "o", "out vec4 o;\n")
+        }
+        ApiPath::Es300 => {
+            let mut h = if cube_array && info.glsl >= 320 {
+                "#version 320 es\n".to_string()
+            } else if cube_array {
+                "#version 310 es\n#extension GL_OES_texture_cube_map_array : require\n".to_string()
+            } else {
+                "#version 300 es\n".to_string()
+            };
+            h += "precision highp float;\nprecision highp int;\n";
+            (h, "in", "o", "out vec4 o;\n")
+        }
+        ApiPath::Glsl120 => {
+            let mut h = "#version 120\n".to_string();
+            if rect {
+                h += "#extension GL_ARB_texture_rectangle : require\n";
+            }
+            (h, "attribute", "gl_FragColor", "")
+        }
+        ApiPath::Es100Ext => (
+            "#version 100\n#extension GL_EXT_shadow_samplers : require\nprecision highp float;\n".to_string(),
+            "attribute",
+            "gl_FragColor",
+            "",
+        ),
+        ApiPath::FixedFunction | ApiPath::ArbFp => (String::new(), "in", "o", ""),
+    };
+    let vs = format!("{header}{vin} vec2 a_pos;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); }}\n");
+    let prec = if matches!(key.path, ApiPath::Es300 | ApiPath::Es100Ext) { "highp " } else { "" };
+    let p_line = match key.form {
+        LodForm::Implicit(_) => "vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;",
+        _ => "vec4 p = u_p;",
+    };
+    let vec4_result = matches!(key.path, ApiPath::Glsl120) || key.kind != SamplerKind::Shadow;
+    let call = match key.path {
+        ApiPath::Glsl120 | ApiPath::Es100Ext => legacy_call(key),
+        _ => modern_call(key),
+    };
+    let store = if vec4_result { format!("{fout} = vec4({call});") } else { format!("{fout} = vec4({call}, 0.0, 0.0, 1.0);") };
+    let fs = format!(
+        "{header}uniform {prec}{} u_tex;\nuniform vec4 u_p;\nuniform float u_x;\nuniform vec4 u_dx;\nuniform vec4 u_dy;\nuniform vec2 u_c;\n{out_decl}void main() {{\n  {p_line}\n  {store}\n}}\n",
+        sampler_type(key.kind, key.target)
+    );
+    (vs, fs)
+}
+
+/// ARB fragment program text (ARB_fragment_program + ARB_fragment_program_shadow); the program
+/// locals are 0 = P, 1 = dx, 2 = dy, 3 = pixel centre.
+pub fn arbfp(key: &ShaderKey) -> String {
+    let shadow = key.kind == SamplerKind::Shadow;
+    let target = match key.target {
+        Target::T1d => "1D",
+        Target::Rect => "RECT",
+        Target::Cube => "CUBE",
+        _ => "2D",
+    };
+    let op = match (key.proj, key.form) {
+        (true, _) => "TXP",
+        (false, LodForm::Implicit(true)) => "TXB",
+        _ => "TEX",
+    };
+    let option = if shadow { "OPTION ARB_fragment_program_shadow;\n" } else { "" };
+    let t = if shadow { format!("SHADOW{target}") } else { target.to_string() };
+    format!(
+        "!!ARBfp1.0\n{option}PARAM p = program.local[0];\nPARAM dx = program.local[1];\nPARAM dy = program.local[2];\nPARAM c = program.local[3];\nTEMP d, q;\nSUB d, fragment.position, c;\nMAD q, d.x, dx, p;\nMAD q, d.y, dy, q;\n{op} result.color, q, texture[0], {t};\nEND\n"
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
+        let k = ShaderKey { path: ApiPath::GlslCore, target: Target::T2d, kind: SamplerKind::Shadow, form: LodForm::Lod, proj: false };
+        assert_eq!(modern_call(&k), "textureLod(u_tex, p.xyz, u_x)");
+        let k = ShaderKey { target: Target::CubeArray, form: LodForm::Implicit(false), ..k };
+        assert_eq!(modern_call(&k), "texture(u_tex, p, u_x)");
+        let k = ShaderKey { target: Target::Rect, form: LodForm::Grad, proj: true, ..k };
+        assert_eq!(modern_call(&k), "textureProjGrad(u_tex, p, u_dx.xy, u_dy.xy)");
+    }
+
+    #[test]
+    fn legacy_calls_use_the_glsl_120_names() {
+        let k = ShaderKey { path: ApiPath::Glsl120, target: Target::Rect, kind: SamplerKind::Shadow, form: LodForm::Implicit(false), proj: true };
+        assert_eq!(legacy_call(&k), "shadow2DRectProj(u_tex, p)");
+        let k = ShaderKey { path: ApiPath::Es100Ext, target: Target::T2d, ..k };
+        assert_eq!(legacy_call(&k), "shadow2DProjEXT(u_tex, p)");
+    }
+
+    #[test]
+    fn arb_program_uses_the_shadow_target_and_txb_for_bias() {
+        let k = ShaderKey { path: ApiPath::ArbFp, target: Target::T2d, kind: SamplerKind::Shadow, form: LodForm::Implicit(true), proj: false };
+        let s = arbfp(&k);
+        assert!(s.contains("OPTION ARB_fragment_program_shadow;") && s.contains("TXB result.color, q, texture[0], SHADOW2D;"), "{s}");
+    }
+}

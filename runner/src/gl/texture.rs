@@ -1,0 +1,252 @@
+//! Texture creation with exact texel control, sampler state, and read-back of what was stored.
+//!
+//! Unorm formats are uploaded as integers at (or above) the format's bit depth so the stored value
+//! is the case's integer whatever rounding the driver does for floats (DESIGN.md: FLOAT uploads to
+//! DEPTH_COMPONENT24 truncate on Mesa). Desktop GL reads level 0 back with glGetTexImage so the
+//! verdict can use what was really stored.
+
+use super::paths::GlInfo;
+use super::GlError;
+use glow::HasContext;
+use shadowcheck_model::{Case, Format, Level, Target, Texels};
+
+const GL_DEPTH_TEXTURE_MODE: u32 = 0x884B;
+const GL_DEPTH_STENCIL_TEXTURE_MODE: u32 = 0x90EA;
+const GL_TEXTURE_COMPARE_FAIL_VALUE_ARB: u32 = 0x80BF;
+
+/// Pixel transfer format/type for a texture format: (internal format, format, type, bytes/texel).
+pub fn transfer(format: Format) -> (i32, u32, u32, usize) {
+    match format {
+        Format::D16 => (glow::DEPTH_COMPONENT16 as i32, glow::DEPTH_COMPONENT, glow::UNSIGNED_SHORT, 2),
+        Format::DepthUnsized => (glow::DEPTH_COMPONENT as i32, glow::DEPTH_COMPONENT, glow::UNSIGNED_SHORT, 2),
+        Format::D24 => (glow::DEPTH_COMPONENT24 as i32, glow::DEPTH_COMPONENT, glow::UNSIGNED_INT, 4),
+        Format::D32 => (glow::DEPTH_COMPONENT32 as i32, glow::DEPTH_COMPONENT, glow::UNSIGNED_INT, 4),
+        Format::D32f => (glow::DEPTH_COMPONENT32F as i32, glow::DEPTH_COMPONENT, glow::FLOAT, 4),
+        Format::D24S8 => (glow::DEPTH24_STENCIL8 as i32, glow::DEPTH_STENCIL, glow::UNSIGNED_INT_24_8, 4),
+        Format::D32fS8 => (glow::DEPTH32F_STENCIL8 as i32, glow::DEPTH_STENCIL, glow::FLOAT_32_UNSIGNED_INT_24_8_REV, 8),
+        Format::R8 => (glow::R8 as i32, glow::RED, glow::UNSIGNED_BYTE, 1),
+    }
+}
+
+/// A 24-bit unorm integer as the 32-bit unorm integer that converts back to it exactly
+/// (bit replication: c * (2^32-1)/(2^24-1) rounded, the top byte repeated into the low byte).
+fn widen24(c: u32) -> u32 {
+    (c << 8) | (c >> 16)
+}
+
+/// The bytes to upload for one level.
+pub fn level_bytes(format: Format, level: &Level) -> Result<Vec<u8>, GlError> {
+    let n = level.texel_count();
+    let stencil = |i: usize| level.stencil.as_ref().and_then(|s| s.get(i)).copied().unwrap_or(0) as u32;
+    let mut out = Vec::with_capacity(n * transfer(format).3);
+    match (&level.depth, format) {
+        (Texels::Unorm(v), Format::D16 | Format::DepthUnsized) => v.iter().for_each(|&c| out.extend_from_slice(&(c as u16).to_ne_bytes())),
+        (Texels::Unorm(v), Format::D24) => v.iter().for_each(|&c| out.extend_from_slice(&widen24(c).to_ne_bytes())),
+        (Texels::Unorm(v), Format::D32) => v.iter().for_each(|&c| out.extend_from_slice(&c.to_ne_bytes())),
+        (Texels::Unorm(v), Format::D24S8) => {
+            v.iter().enumerate().for_each(|(i, &c)| out.extend_from_slice(&((c << 8) | stencil(i)).to_ne_bytes()))
+        }
+        (Texels::Unorm(v), Format::R8) => v.iter().for_each(|&c| out.push(c as u8)),
+        (Texels::Float(v), Format::D32f) => v.iter().for_each(|&f| out.extend_from_slice(&f.to_ne_bytes())),
+        (Texels::Float(v), Format::D32fS8) => v.iter().enumerate().for_each(|(i, &f)| {
+            out.extend_from_slice(&f.to_ne_bytes());
+            out.extend_from_slice(&stencil(i).to_ne_bytes());
+        }),
+        _ => return Err(GlError::Gl(format!("texel encoding does not match format {format}"))),
+    }
+    Ok(out)
+}
+
+/// Decodes read-back bytes into the fixture's encoding.
+pub fn decode_stored(format: Format, bytes: &[u8]) -> Texels {
+    let u32s = |step: usize| bytes.chunks_exact(step).map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]));
+    match format {
+        Format::D16 | Format::DepthUnsized => {
+            Texels::Unorm(bytes.chunks_exact(2).map(|c| u16::from_ne_bytes([c[0], c[1]]) as u32).collect())
+        }
+        // UNSIGNED_INT from a 24-bit store: c * (2^32-1)/(2^24-1) rounded; the top 24 bits are c.
+        Format::D24 | Format::D24S8 => Texels::Unorm(u32s(4).map(|u| u >> 8).collect()),
+        Format::D32 => Texels::Unorm(u32s(4).collect()),
+        Format::D32f => Texels::Float(u32s(4).map(f32::from_bits).collect()),
+        Format::D32fS8 => Texels::Float(u32s(8).map(f32::from_bits).collect()),
+        Format::R8 => Texels::Unorm(bytes.iter().map(|&b| b as u32).collect()),
+    }
+}
+
+fn face_targets(target: Target) -> Vec<u32> {
+    if target == Target::Cube {
+        (0..6).map(|f| glow::TEXTURE_CUBE_MAP_POSITIVE_X + f).collect()
+    } else {
+        vec![target.gl()]
+    }
+}
+
+/// Creates the texture of `case`, uploads every level and sets the sampler state on the texture
+/// object. Leaves it bound to unit 0. Returns GL errors raised on the way as `GlError::Gl`.
+///
+/// # Safety
+/// `gl` must be current.
+pub unsafe fn create(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<glow::Texture, GlError> {
+    let t = &case.texture;
+    let target = t.target.gl();
+    let (ifmt, fmt, ty, bpt) = transfer(t.format);
+    let tex = gl.create_texture().map_err(GlError::Gl)?;
+    gl.active_texture(glow::TEXTURE0);
+    gl.bind_texture(target, Some(tex));
+    for (i, lvl) in t.levels.iter().enumerate() {
+        let level = (t.base_level as usize + i) as i32;
+        let bytes = level_bytes(t.format, lvl)?;
+        let (w, h, l) = (lvl.width as i32, lvl.height as i32, lvl.layers as i32);
+        let data = glow::PixelUnpackData::Slice(Some(&bytes));
+        match t.target {
+            Target::T1d => gl.tex_image_1d(target, level, ifmt, w, 0, fmt, ty, data),
+            Target::T2d | Target::Rect => gl.tex_image_2d(target, level, ifmt, w, h, 0, fmt, ty, data),
+            Target::T1dArray => gl.tex_image_2d(target, level, ifmt, w, l, 0, fmt, ty, data),
+            Target::T2dArray | Target::CubeArray => gl.tex_image_3d(target, level, ifmt, w, h, l, 0, fmt, ty, data),
+            Target::Cube => {
+                let face = (w * h) as usize * bpt;
+                for (f, ft) in face_targets(Target::Cube).into_iter().enumerate() {
+                    let part = bytes.get(f * face..(f + 1) * face).ok_or_else(|| GlError::Gl("cube level has fewer than 6 faces".into()))?;
+                    gl.tex_image_2d(ft, level, ifmt, w, h, 0, fmt, ty, glow::PixelUnpackData::Slice(Some(part)));
+                }
+            }
+        }
+    }
+    check(gl, "texture upload (glTexImage*)")?;
+    set_state(gl, info, case)?;
+    Ok(tex)
+}
+
+fn check_err(gl: &glow::Context) -> Option<u32> {
+    // SAFETY: a context is current (callers are unsafe fns that require it).
+    let e = unsafe { gl.get_error() };
+    (e != glow::NO_ERROR).then_some(e)
+}
+
+/// Name of a GL error code.
+pub fn error_name(e: u32) -> String {
+    match e {
+        glow::INVALID_ENUM => "GL_INVALID_ENUM".into(),
+        glow::INVALID_VALUE => "GL_INVALID_VALUE".into(),
+        glow::INVALID_OPERATION => "GL_INVALID_OPERATION".into(),
+        glow::OUT_OF_MEMORY => "GL_OUT_OF_MEMORY".into(),
+        glow::INVALID_FRAMEBUFFER_OPERATION => "GL_INVALID_FRAMEBUFFER_OPERATION".into(),
+        other => format!("GL error 0x{other:04X}"),
+    }
+}
+
+/// Turns a pending GL error into `GlError::Gl` naming `what`.
+pub fn check(gl: &glow::Context, what: &str) -> Result<(), GlError> {
+    match check_err(gl) {
+        None => Ok(()),
+        Some(e) => {
+            while check_err(gl).is_some() {}
+            Err(GlError::Gl(format!("{what} raised {}", error_name(e))))
+        }
+    }
+}
+
+unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<(), GlError> {
+    let target = case.texture.target.gl();
+    let s = &case.sampler;
+    let t = &case.texture;
+    let pi = |p: u32, v: u32, name: &str| -> Result<(), GlError> {
+        gl.tex_parameter_i32(target, p, v as i32);
+        check(gl, &format!("glTexParameteri({name})"))
+    };
+    if t.base_level != 0 {
+        pi(glow::TEXTURE_BASE_LEVEL, t.base_level, "TEXTURE_BASE_LEVEL")?;
+    }
+    if let Some(m) = s.max_level {
+        pi(glow::TEXTURE_MAX_LEVEL, m, "TEXTURE_MAX_LEVEL")?;
+    }
+    pi(glow::TEXTURE_MIN_FILTER, s.min_filter.gl(), "TEXTURE_MIN_FILTER")?;
+    pi(glow::TEXTURE_MAG_FILTER, s.mag_filter.gl(), "TEXTURE_MAG_FILTER")?;
+    // Only the wraps of coordinates the target uses: a rectangle texture rejects REPEAT even for
+    // a coordinate it never wraps.
+    pi(glow::TEXTURE_WRAP_S, s.wrap_s.gl(), "TEXTURE_WRAP_S")?;
+    if t.target.dims() == 2 {
+        pi(glow::TEXTURE_WRAP_T, s.wrap_t.gl(), "TEXTURE_WRAP_T")?;
+    }
+    if t.target.is_cube() {
+        pi(glow::TEXTURE_WRAP_R, s.wrap_r.gl(), "TEXTURE_WRAP_R")?;
+    }
+    if s.border != [0.0; 4] {
+        gl.tex_parameter_f32_slice(target, glow::TEXTURE_BORDER_COLOR, &s.border);
+        check(gl, "glTexParameterfv(TEXTURE_BORDER_COLOR)")?;
+    }
+    if s.min_lod != -1000.0 {
+        gl.tex_parameter_f32(target, glow::TEXTURE_MIN_LOD, s.min_lod);
+        check(gl, "glTexParameterf(TEXTURE_MIN_LOD)")?;
+    }
+    if s.max_lod != 1000.0 {
+        gl.tex_parameter_f32(target, glow::TEXTURE_MAX_LOD, s.max_lod);
+        check(gl, "glTexParameterf(TEXTURE_MAX_LOD)")?;
+    }
+    if s.lod_bias != 0.0 {
+        gl.tex_parameter_f32(target, glow::TEXTURE_LOD_BIAS, s.lod_bias);
+        check(gl, "glTexParameterf(TEXTURE_LOD_BIAS)")?;
+    }
+    pi(glow::TEXTURE_COMPARE_MODE, s.compare_mode.gl(), "TEXTURE_COMPARE_MODE")?;
+    pi(glow::TEXTURE_COMPARE_FUNC, s.compare_func.gl(), "TEXTURE_COMPARE_FUNC")?;
+    if let (Some(m), true) = (s.depth_texture_mode, info.compat) {
+        pi(GL_DEPTH_TEXTURE_MODE, m.gl(), "DEPTH_TEXTURE_MODE")?;
+    }
+    if let Some(m) = s.depth_stencil_mode {
+        pi(GL_DEPTH_STENCIL_TEXTURE_MODE, m.gl(), "DEPTH_STENCIL_TEXTURE_MODE")?;
+    }
+    if let Some(v) = s.fail_value {
+        gl.tex_parameter_f32(target, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, v);
+        check(gl, "glTexParameterf(TEXTURE_COMPARE_FAIL_VALUE_ARB)")?;
+    }
+    Ok(())
+}
+
+/// Reads level `base_level` back (desktop GL only), in the fixture's encoding.
+///
+/// # Safety
+/// `gl` must be current and `tex` bound to unit 0 on its target.
+pub unsafe fn read_back(gl: &glow::Context, case: &Case) -> Result<Texels, GlError> {
+    let t = &case.texture;
+    let lvl = t.levels.first().ok_or_else(|| GlError::Gl("no levels".into()))?;
+    let (_, fmt, ty, bpt) = transfer(t.format);
+    let mut all = Vec::with_capacity(lvl.texel_count() * bpt);
+    let targets = face_targets(t.target);
+    let per = lvl.texel_count() * bpt / targets.len();
+    for ft in targets {
+        let mut buf = vec![0u8; per];
+        gl.get_tex_image(ft, t.base_level as i32, fmt, ty, glow::PixelPackData::Slice(Some(&mut buf)));
+        all.extend_from_slice(&buf);
+    }
+    check(gl, "glGetTexImage")?;
+    Ok(decode_stored(t.format, &all))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn d24_widening_is_exact_under_round_to_nearest_and_shift() {
+        // GL 4.6 §2.3.5: f = c / (2^b - 1). The widened 32-bit integer must convert back to c both
+        // by rounding (exact conversion) and by dropping the low byte (what drivers do).
+        for c in [0u32, 1, 2, 0x7FFFFF, 0x800000, 0xFFFFFE, 0xFFFFFF, 12345678 & 0xFFFFFF] {
+            let u = widen24(c) as f64;
+            let back = (u / 4294967295.0 * 16777215.0).round() as u32;
+            assert_eq!(back, c, "round trip of {c}");
+            assert_eq!(widen24(c) >> 8, c);
+        }
+    }
+
+    #[test]
+    fn level_bytes_pack_stencil_and_floats() {
+        let lvl = Level { width: 2, height: 1, layers: 1, depth: Texels::Unorm(vec![1, 0xFFFFFF]), stencil: Some(vec![7, 9]) };
+        let b = level_bytes(Format::D24S8, &lvl).unwrap();
+        assert_eq!(u32::from_ne_bytes([b[0], b[1], b[2], b[3]]), (1 << 8) | 7);
+        assert_eq!(decode_stored(Format::D24S8, &b), Texels::Unorm(vec![1, 0xFFFFFF]));
+        let f = Level { width: 1, height: 1, layers: 1, depth: Texels::Float(vec![0.25]), stencil: None };
+        let b = level_bytes(Format::D32fS8, &f).unwrap();
+        assert_eq!(b.len(), 8);
+        assert_eq!(decode_stored(Format::D32fS8, &b), Texels::Float(vec![0.25]));
+    }
+}

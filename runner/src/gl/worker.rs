@@ -1,0 +1,272 @@
+//! The worker process: creates the context for one backend, answers the PROTOCOL.md handshake with
+//! what this context can check, then draws each batch of cases when it reads `flush`.
+
+use super::context::GlContext;
+use super::draw::{Answer, Renderer};
+use super::legacy::Legacy;
+use super::names::{BackendName, ContextApi};
+use super::paths::GlInfo;
+use super::protocol::{Capabilities, Incoming, Outgoing, PROTOCOL_VERSION};
+use super::GlError;
+use shadowcheck_model::{Case, Format, Spec};
+use std::ffi::c_void;
+use std::io::{BufRead, Write};
+
+/// Extensions reported in the handshake (those that matter for depth comparison).
+const RELEVANT_EXTENSIONS: &[&str] = &[
+    "GL_ARB_depth_texture",
+    "GL_ARB_shadow",
+    "GL_ARB_shadow_ambient",
+    "GL_EXT_shadow_funcs",
+    "GL_SGIX_shadow",
+    "GL_SGIX_shadow_ambient",
+    "GL_SGIX_depth_texture",
+    "GL_ARB_fragment_program",
+    "GL_ARB_fragment_program_shadow",
+    "GL_EXT_shadow_samplers",
+    "GL_OES_depth_texture",
+    "GL_ARB_depth_buffer_float",
+    "GL_ARB_texture_rectangle",
+    "GL_ARB_texture_cube_map_array",
+    "GL_OES_texture_cube_map_array",
+    "GL_EXT_texture_cube_map_array",
+    "GL_EXT_texture_shadow_lod",
+    "GL_ARB_stencil_texturing",
+    "GL_ARB_texture_mirror_clamp_to_edge",
+    "GL_EXT_texture_mirror_clamp_to_edge",
+    "GL_EXT_color_buffer_float",
+];
+
+/// A live worker: context, GL and renderer.
+pub struct Worker {
+    pub name: BackendName,
+    renderer: Renderer,
+    _ctx: GlContext,
+}
+
+fn parse_version(s: &str) -> (u32, u32) {
+    let v = s.trim_start_matches("OpenGL ES GLSL ES ").trim_start_matches("OpenGL ES ");
+    let num = v.split_whitespace().next().unwrap_or("0.0");
+    let mut it = num.split('.');
+    let major = it.next().and_then(|x| x.parse().ok()).unwrap_or(0);
+    let minor = it.next().map(|x| x.chars().take_while(|c| c.is_ascii_digit()).collect::<String>()).and_then(|x| x.parse().ok()).unwrap_or(0);
+    (major, minor)
+}
+
+impl Worker {
+    /// Creates the context (driver env vars must already be set) and checks the driver is the one
+    /// asked for.
+    pub fn start(name: BackendName) -> Result<Worker, GlError> {
+        let ctx = GlContext::create(name)?;
+        let loader = |s: &str| ctx.get_proc(s);
+        // glow panics on a missing GL_VERSION; check first.
+        let get_string = loader("glGetString");
+        if get_string.is_null() {
+            return Err(GlError::MissingEntryPoint("glGetString".into()));
+        }
+        type FnGetString = unsafe extern "system" fn(u32) -> *const u8;
+        // SAFETY: glGetString has this signature; the context is current.
+        let gs: FnGetString = unsafe { std::mem::transmute::<*const c_void, FnGetString>(get_string) };
+        // SAFETY: GL_VERSION is a valid enum; the result is null or a NUL-terminated string.
+        let v = unsafe { gs(glow::VERSION) };
+        if v.is_null() {
+            return Err(GlError::ContextFailed("glGetString(GL_VERSION) returned NULL".into()));
+        }
+        // SAFETY: the context is current and the loader returns its entry points.
+        let gl = unsafe { glow::Context::from_loader_function(|s| loader(s)) };
+        use glow::HasContext;
+        // SAFETY: context current.
+        let (renderer, version_string, glsl_string) = unsafe {
+            (gl.get_parameter_string(glow::RENDERER), gl.get_parameter_string(glow::VERSION), gl.get_parameter_string(glow::SHADING_LANGUAGE_VERSION))
+        };
+        if !renderer.to_lowercase().contains(name.driver.key()) {
+            return Err(GlError::WrongDriver { wanted: name.driver.key().into(), renderer });
+        }
+        let (gmaj, gmin) = parse_version(&glsl_string);
+        let info = GlInfo {
+            api: name.api,
+            es: name.api.is_es(),
+            compat: name.api == ContextApi::Compat,
+            version: parse_version(&version_string),
+            glsl: gmaj * 100 + gmin,
+            renderer,
+            version_string,
+            extensions: gl.supported_extensions().clone(),
+        };
+        let legacy = if info.compat { Some(Legacy::load(&loader, info.arbfp_shadow())?) } else { None };
+        // SAFETY: context current for the worker's life (it owns the context).
+        let renderer = unsafe { Renderer::new(gl, info, legacy)? };
+        Ok(Worker { name, renderer, _ctx: ctx })
+    }
+
+    pub fn info(&self) -> &GlInfo {
+        &self.renderer.info
+    }
+
+    /// The specs this context can check (only what the driver exposes).
+    pub fn specs(&self) -> Vec<Spec> {
+        let i = self.info();
+        match i.api {
+            ContextApi::Core => vec![Spec::Gl46],
+            ContextApi::Compat => {
+                let mut v = vec![Spec::Gl46];
+                if i.has_ext("GL_ARB_shadow") {
+                    v.push(Spec::Arb);
+                }
+                if i.has_ext("GL_ARB_shadow") && i.has_ext("GL_ARB_shadow_ambient") {
+                    v.push(Spec::ArbAmbient);
+                }
+                if i.has_ext("GL_ARB_shadow") && i.has_ext("GL_EXT_shadow_funcs") {
+                    v.push(Spec::ExtFuncs);
+                }
+                v
+            }
+            ContextApi::Es3 => vec![Spec::Gles32],
+            ContextApi::Es2 => {
+                if i.shadow_samplers_es2() {
+                    vec![Spec::Es2Ext]
+                } else {
+                    vec![]
+                }
+            }
+        }
+    }
+
+    pub fn formats(&self) -> Vec<Format> {
+        Format::ALL.iter().copied().filter(|f| !(self.info().es && *f == Format::D32)).collect()
+    }
+
+    pub fn capabilities(&self) -> Capabilities {
+        let i = self.info();
+        Capabilities {
+            specs: self.specs().iter().map(|s| s.key().to_string()).collect(),
+            api: i.paths().iter().map(|p| p.key().to_string()).collect(),
+            targets: i.targets().iter().map(|t| t.key().to_string()).collect(),
+            formats: self.formats().iter().map(|f| f.key().to_string()).collect(),
+            extensions: RELEVANT_EXTENSIONS.iter().filter(|e| i.has_ext(e)).map(|e| e.to_string()).collect(),
+        }
+    }
+
+    /// The implementation's name for the handshake, e.g. `egl:llvmpipe:core (4.5 (Core Profile) Mesa 22.3.6; llvmpipe ...)`.
+    pub fn display_name(&self) -> String {
+        format!("{} ({}; {})", self.name, self.info().version_string, self.info().renderer)
+    }
+
+    /// Why a case is not for this worker (spec, format, API paths), or None.
+    fn precheck(&self, case: &Case) -> Option<String> {
+        if !self.specs().contains(&case.spec) {
+            return Some(format!("spec {} not checkable on {} (needed extensions not exposed)", case.spec, self.name));
+        }
+        if !self.formats().contains(&case.texture.format) {
+            return Some(format!("format {} not available on {}", case.texture.format, self.name));
+        }
+        if let Err(e) = shadowcheck_model::validate::validate(case) {
+            return Some(format!("invalid case: {e}"));
+        }
+        None
+    }
+
+    /// Answers a batch in order.
+    pub fn run_batch(&mut self, cases: &[Case]) -> Vec<Answer> {
+        let mut answers: Vec<Option<Answer>> = cases.iter().map(|c| self.precheck(c).map(Answer::Skip)).collect();
+        let runnable: Vec<Case> = cases.iter().zip(&answers).filter(|(_, a)| a.is_none()).map(|(c, _)| c.clone()).collect();
+        // SAFETY: the worker's context is current on this thread.
+        let mut drawn = unsafe { self.renderer.run_batch(&runnable) }.into_iter();
+        for a in answers.iter_mut() {
+            if a.is_none() {
+                *a = drawn.next();
+            }
+        }
+        answers.into_iter().map(|a| a.unwrap_or_else(|| Answer::Error("internal: missing answer".into()))).collect()
+    }
+}
+
+fn answer_message(case_id: String, a: Answer) -> Outgoing {
+    match a {
+        Answer::Observation(results) => Outgoing::Observation { case_id, results },
+        Answer::Skip(reason) => Outgoing::Skip { case_id, reason },
+        Answer::Error(message) => Outgoing::Error { case_id, message },
+    }
+}
+
+/// An entry of the batch: a parsed case, or a line that should have been one.
+enum Entry {
+    Case(Case),
+    Bad { id: String, message: String },
+}
+
+fn write_line(out: &mut impl Write, msg: &Outgoing) -> std::io::Result<()> {
+    let s = serde_json::to_string(msg).map_err(std::io::Error::other)?;
+    out.write_all(s.as_bytes())?;
+    out.write_all(b"\n")
+}
+
+fn flush_batch(worker: &mut Worker, batch: &mut Vec<Entry>, out: &mut impl Write) -> std::io::Result<()> {
+    let cases: Vec<Case> = batch.iter().filter_map(|e| if let Entry::Case(c) = e { Some(c.clone()) } else { None }).collect();
+    let mut answers = worker.run_batch(&cases).into_iter();
+    for e in batch.drain(..) {
+        let msg = match e {
+            Entry::Case(c) => answer_message(c.id, answers.next().unwrap_or(Answer::Error("internal: missing answer".into()))),
+            Entry::Bad { id, message } => Outgoing::Error { case_id: id, message },
+        };
+        write_line(out, &msg)?;
+    }
+    out.flush()
+}
+
+/// Speaks the protocol on `input`/`output` until `bye` or end of input.
+pub fn serve(worker: &mut Worker, input: impl BufRead, mut output: impl Write) -> std::io::Result<()> {
+    let mut batch: Vec<Entry> = Vec::new();
+    for line in input.lines() {
+        let line = line?;
+        if line.trim().is_empty() {
+            continue;
+        }
+        match serde_json::from_str::<Incoming>(&line) {
+            Ok(Incoming::Hello { protocol }) => {
+                if protocol != 0 && protocol != PROTOCOL_VERSION {
+                    eprintln!("gl-worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}");
+                }
+                let hello = Outgoing::Hello { protocol: PROTOCOL_VERSION, name: worker.display_name(), capabilities: worker.capabilities() };
+                write_line(&mut output, &hello)?;
+                output.flush()?;
+            }
+            Ok(Incoming::Case { case }) => batch.push(Entry::Case(*case)),
+            Ok(Incoming::Flush) => flush_batch(worker, &mut batch, &mut output)?,
+            Ok(Incoming::Bye) => break,
+            Err(e) => {
+                // A case line we cannot parse still gets its one answer, in order.
+                let v: Option<serde_json::Value> = serde_json::from_str(&line).ok();
+                let is_case = v.as_ref().and_then(|v| v.get("type")).and_then(|t| t.as_str()) == Some("case");
+                if is_case {
+                    let id = v.as_ref().and_then(|v| v.pointer("/case/id")).and_then(|i| i.as_str()).unwrap_or("").to_string();
+                    batch.push(Entry::Bad { id, message: format!("cannot parse case: {e}") });
+                } else {
+                    eprintln!("gl-worker: ignoring unknown message: {e}");
+                }
+            }
+        }
+    }
+    flush_batch(worker, &mut batch, &mut output)
+}
+
+/// `--probe`: create the context and print `ok ...` or `unavailable: reason` on stdout.
+pub fn probe_line(name: BackendName) -> (bool, String) {
+    match Worker::start(name) {
+        Ok(w) => (true, format!("ok {}", w.display_name())),
+        Err(e) => (false, format!("unavailable: {e}")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn versions_parse_from_desktop_and_es_strings() {
+        assert_eq!(parse_version("4.5 (Core Profile) Mesa 22.3.6"), (4, 5));
+        assert_eq!(parse_version("OpenGL ES 3.2 Mesa 22.3.6"), (3, 2));
+        assert_eq!(parse_version("OpenGL ES GLSL ES 3.20"), (3, 20));
+        assert_eq!(parse_version("4.50"), (4, 50));
+    }
+}
