@@ -5,8 +5,33 @@
 //!   footprint for failure dumps and the derivation steps with citations for `explain`).
 //! - [`OracleError`]: the case is not something the spec defines (e.g. LESS under ARB_shadow,
 //!   which is an INVALID_ENUM), or is malformed.
+//!
+//! Layout: one module per specification (`sgix`, `arb`, `ext_funcs`, `es2_ext`, `gl46`, `gles32`), each
+//! filling a [`rules::Rules`] beside the sentences it encodes; shared machinery (`unorm`, `wrap`, `cube`,
+//! `lod`, `sample`, `accept`, `engine`); precision profiles as data (`profile`); TexParameter state
+//! (`state`); the documents' disagreements (`contradictions`).
 
 use shadowcheck_model::{Case, Expectation, Footprint};
+
+pub mod accept;
+pub mod check;
+pub mod contradictions;
+pub mod cube;
+mod engine;
+pub mod es2_ext;
+pub mod ext_funcs;
+pub mod arb;
+pub mod gl46;
+pub mod gles32;
+pub mod layout;
+pub mod lod;
+pub mod profile;
+pub mod rules;
+pub mod sample;
+pub mod sgix;
+pub mod state;
+pub mod unorm;
+pub mod wrap;
 
 /// One derivation step, for `shadowcheck explain`.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -30,6 +55,9 @@ pub enum OracleError {
     /// The state is illegal under the spec: setting it raises a GL error, so no lookup happens.
     #[error("case `{case}`: {spec} rejects this state with {error}: {why}")]
     GlError { case: String, spec: String, error: &'static str, why: String },
+    /// The spec defines no such lookup (an API path, target or format it does not have).
+    #[error("case `{case}`: not defined by {spec}: {why}")]
+    NotApplicable { case: String, spec: String, why: String },
     /// The case is malformed (see shadowcheck_model::validate).
     #[error(transparent)]
     Model(#[from] shadowcheck_model::ModelError),
@@ -38,5 +66,15 @@ pub enum OracleError {
 /// Evaluates a case under its own spec variant.
 pub fn evaluate(case: &Case) -> Result<Evaluation, OracleError> {
     shadowcheck_model::validate::validate(case)?;
-    todo!("oracle evaluate")
+    engine::run(case, rules::rules_for(case.spec))
+}
+
+/// Evaluates a case under the other reading of a contradiction (see [`contradictions`]), for `explain`.
+/// `None` when the contradiction has no alternative rule for this case's spec.
+pub fn evaluate_reading(case: &Case, contradiction: &str) -> Option<Result<Evaluation, OracleError>> {
+    if let Err(e) = shadowcheck_model::validate::validate(case) {
+        return Some(Err(e.into()));
+    }
+    let r = contradictions::alternative_rules(case, contradiction)?;
+    Some(engine::run(case, r))
 }

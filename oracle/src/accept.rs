@@ -1,0 +1,210 @@
+//! From per-texel possibilities to acceptance intervals: the idea of VK-GL-CTS tcuTexCompareVerifier
+//! (enumerate the pass/fail assignments of ambiguous texels, interpolate over weight bounds), written
+//! for this oracle's data.
+
+use crate::profile::ProfileSpec;
+use crate::sample::TexelEval;
+use shadowcheck_model::Interval;
+
+/// The texels one level contributes and their bilinear / linear weights' parameters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Taps {
+    /// NEAREST: one texel, weight 1.
+    One(usize),
+    /// 1D LINEAR: τ = (1 − α)τ_i0 + ατ_i1.
+    Lin1([usize; 2], f64),
+    /// 2D LINEAR (§8.14.2): τ = (1−α)(1−β)τ_i0j0 + α(1−β)τ_i1j0 + (1−α)βτ_i0j1 + αβτ_i1j1.
+    Lin2([usize; 4], f64, f64),
+}
+
+impl Taps {
+    /// (texel, weight) pairs for the given α, β.
+    pub fn weighted(&self, a: f64, b: f64) -> ([usize; 4], [f64; 4], usize) {
+        match *self {
+            Taps::One(i) => ([i, 0, 0, 0], [1.0, 0.0, 0.0, 0.0], 1),
+            Taps::Lin1([i0, i1], _) => ([i0, i1, 0, 0], [1.0 - a, a, 0.0, 0.0], 2),
+            Taps::Lin2(t, _, _) => (t, [(1.0 - a) * (1.0 - b), a * (1.0 - b), (1.0 - a) * b, a * b], 4),
+        }
+    }
+    fn ab(&self) -> (f64, f64) {
+        match *self {
+            Taps::One(_) => (0.0, 0.0),
+            Taps::Lin1(_, a) => (a, 0.0),
+            Taps::Lin2(_, a, b) => (a, b),
+        }
+    }
+    pub fn texels(&self) -> &[usize] {
+        match self {
+            Taps::One(i) => std::slice::from_ref(i),
+            Taps::Lin1(t, _) => t,
+            Taps::Lin2(t, _, _) => t,
+        }
+    }
+}
+
+/// One way the lookup may be carried out: one level, or two levels blended by f ∈ [f_lo, f_hi].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scen {
+    pub a: (u32, Taps),
+    pub b: Option<(u32, Taps)>,
+    pub f: f64,
+    pub f_lo: f64,
+    pub f_hi: f64,
+}
+
+impl Scen {
+    /// More than one texel takes part (a filtered result).
+    pub fn filtered(&self) -> bool {
+        self.b.is_some() || !matches!(self.a.1, Taps::One(_))
+    }
+}
+
+fn bounds(x: f64, tol: f64) -> [f64; 2] {
+    [(x - tol).max(0.0), (x + tol).min(1.0)]
+}
+
+/// min and max of one level's filtered value over the weight box, texel values from `val`.
+fn level_range(t: &Taps, tol: f64, val: &dyn Fn(usize) -> (f64, f64)) -> (f64, f64) {
+    let (a, b) = t.ab();
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    // The value is multilinear in (α, β): its extremes over the box are at the corners.
+    for a in bounds(a, tol) {
+        for b in bounds(b, tol) {
+            let (ix, w, n) = t.weighted(a, b);
+            let (mut l, mut h) = (0.0, 0.0);
+            for k in 0..n {
+                let (vl, vh) = val(ix[k]);
+                l += w[k] * vl;
+                h += w[k] * vh;
+            }
+            lo = lo.min(l);
+            hi = hi.max(h);
+        }
+    }
+    (lo, hi)
+}
+
+/// "proportional to the number of comparison passes": the unweighted mean k/n of one level.
+fn level_fraction(t: &Taps, val: &dyn Fn(usize) -> (f64, f64)) -> (f64, f64) {
+    let ix = t.texels();
+    let n = ix.len() as f64;
+    let (l, h) = ix.iter().fold((0.0, 0.0), |(l, h), &i| {
+        let (a, b) = val(i);
+        (l + a, h + b)
+    });
+    (l / n, h / n)
+}
+
+fn blend(s: &Scen, tol: f64, r1: (f64, f64), r2: Option<(f64, f64)>) -> Interval {
+    match r2 {
+        None => Interval::new(r1.0, r1.1),
+        Some(r2) => {
+            // "τ = [1 − frac(λ)]τ1 + frac(λ)τ2": linear in f, extremes at the ends of its range.
+            let fs = [(s.f_lo - tol).max(0.0), (s.f_hi + tol).min(1.0)];
+            let lo = fs.iter().map(|f| (1.0 - f) * r1.0 + f * r2.0).fold(f64::INFINITY, f64::min);
+            let hi = fs.iter().map(|f| (1.0 - f) * r1.1 + f * r2.1).fold(f64::NEG_INFINITY, f64::max);
+            Interval::new(lo, hi)
+        }
+    }
+}
+
+/// Largest number of ambiguous texels enumerated one assignment at a time (2^8 for trilinear).
+const MAX_ENUMERATED: usize = 10;
+
+/// Appends the intervals `prof` accepts for one scenario. `fraction`: the spec leaves filtered r
+/// "implementation-dependent ... proportional to the number of passes", so the lenient hull also takes
+/// in the unweighted pass fraction.
+pub fn scen_intervals(s: &Scen, texels: &[TexelEval], pi: usize, prof: &ProfileSpec, fraction: bool, out: &mut Vec<Interval>) {
+    let poss = |i: usize| texels[i].poss[pi];
+    let hull = |i: usize| (poss(i).lo, poss(i).hi);
+    let mut amb: Vec<usize> = Vec::new();
+    for t in s.a.1.texels().iter().chain(s.b.iter().flat_map(|b| b.1.texels())) {
+        if poss(*t).two && !amb.contains(t) {
+            amb.push(*t);
+        }
+    }
+    let tol = prof.weight_tol;
+    if (prof.hull_filtered && s.filtered()) || amb.len() > MAX_ENUMERATED {
+        let r1 = level_range(&s.a.1, tol, &hull);
+        let r2 = s.b.as_ref().map(|b| level_range(&b.1, tol, &hull));
+        let mut iv = blend(s, tol, r1, r2);
+        if fraction && prof.hull_filtered {
+            let f1 = level_fraction(&s.a.1, &hull);
+            let f2 = s.b.as_ref().map(|b| level_fraction(&b.1, &hull));
+            let fi = blend(s, tol, f1, f2);
+            iv = Interval::new(iv.lo.min(fi.lo), iv.hi.max(fi.hi));
+        }
+        out.push(iv);
+        return;
+    }
+    for mask in 0u32..(1u32 << amb.len()) {
+        let val = |i: usize| match amb.iter().position(|a| *a == i) {
+            Some(k) => {
+                let v = if mask >> k & 1 == 1 { poss(i).hi } else { poss(i).lo };
+                (v, v)
+            }
+            None => hull(i),
+        };
+        let r1 = level_range(&s.a.1, tol, &val);
+        let r2 = s.b.as_ref().map(|b| level_range(&b.1, tol, &val));
+        out.push(blend(s, tol, r1, r2));
+    }
+}
+
+/// The spec value of a scenario: exact weights and each texel's exact r. `None` if any texel with a
+/// non-zero weight has none.
+pub fn spec_value(s: &Scen, texels: &[TexelEval]) -> Option<f64> {
+    let level = |t: &Taps| -> Option<f64> {
+        let (a, b) = t.ab();
+        let (ix, w, n) = t.weighted(a, b);
+        let mut sum = 0.0;
+        for k in 0..n {
+            if w[k] != 0.0 {
+                sum += w[k] * texels[ix[k]].exact?;
+            }
+        }
+        Some(sum)
+    };
+    let v1 = level(&s.a.1)?;
+    match &s.b {
+        None => Some(v1),
+        Some(_) if s.f == 0.0 => Some(v1),
+        Some(b) => Some((1.0 - s.f) * v1 + s.f * level(&b.1)?),
+    }
+}
+
+/// (texel, exact weight) of a scenario, for the footprint.
+pub fn weights(s: &Scen) -> Vec<(usize, f64)> {
+    let mut out: Vec<(usize, f64)> = Vec::new();
+    let mut add = |t: &Taps, scale: f64| {
+        let (a, b) = t.ab();
+        let (ix, w, n) = t.weighted(a, b);
+        for k in 0..n {
+            match out.iter_mut().find(|(i, _)| *i == ix[k]) {
+                Some(e) => e.1 += w[k] * scale,
+                None => out.push((ix[k], w[k] * scale)),
+            }
+        }
+    };
+    match &s.b {
+        None => add(&s.a.1, 1.0),
+        Some(b) => {
+            add(&s.a.1, 1.0 - s.f);
+            add(&b.1, s.f);
+        }
+    }
+    out
+}
+
+/// Sorts and merges overlapping intervals.
+pub fn merge(mut v: Vec<Interval>) -> Vec<Interval> {
+    v.sort_by(|a, b| a.lo.total_cmp(&b.lo));
+    let mut out: Vec<Interval> = Vec::with_capacity(v.len());
+    for i in v {
+        match out.last_mut() {
+            Some(l) if i.lo <= l.hi => l.hi = l.hi.max(i.hi),
+            _ => out.push(i),
+        }
+    }
+    out
+}

@@ -1,0 +1,141 @@
+//! Where the documents disagree (specs/README.md "Where the documents disagree"; DESIGN.md). Each entry
+//! names the reading the oracle encodes and the other one; `touching` says which entries a case meets,
+//! and `alternative_rules` gives the other reading as rules, so `explain` can show both values.
+
+use crate::rules::{RefClamp, Rules};
+use shadowcheck_model::{Case, CompareFunc, CompareMode, Filter, Spec, Wrap};
+
+/// One disagreement between the documents.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Contradiction {
+    pub id: &'static str,
+    pub title: &'static str,
+    /// The reading the oracle encodes, and why.
+    pub defended: &'static str,
+    /// The other reading.
+    pub other: &'static str,
+    pub sources: &'static str,
+}
+
+pub const ALL: &[Contradiction] = &[
+    Contradiction {
+        id: "sgix-lequal-direction",
+        title: "Direction of TEXTURE_LEQUAL_R_SGIX",
+        defended: "SGIX_shadow's own text: TEXTURE_LEQUAL_R_SGIX passes if texel <= R (GEQUAL_R: texel >= R). The normative extension body is the only definition of its tokens.",
+        other: "ARB_shadow issue 2: the token \"should really have been named GL_R_LEQUAL_TEXTURE_SGIX since we're comparing R <= TEXTURE\" (and the original spec \"seems to be inconsistant with what was really implemented in hardware\").",
+        sources: "SGIX_shadow Additions to Chapter 3 (Notes); ARB_shadow issue 2",
+    },
+    Contradiction {
+        id: "sgix-ambient",
+        title: "When SHADOW_AMBIENT_SGIX applies",
+        defended: "The body (and seed 002): the value is returned \"when ... a pixel is determined to be in shadow\", \"instead of 0.0\": it replaces the failing result. ARB_shadow_ambient (\"functionally identical\") agrees.",
+        other: "The overview: \"a value other than 0.0 to be returned ... in the case when the shadow test passes\": the ambient value replaces the passing result.",
+        sources: "SGIX_shadow_ambient Overview vs Notes; ARB_shadow_ambient issue 1",
+    },
+    Contradiction {
+        id: "ref-clamp",
+        title: "Clamping of Dt and R / Dref",
+        defended: "Per document: SGIX unstated (both accepted, literal = unclamped); ARB_shadow / GL ≤ 2.1: R clamped, Dt in [0,1]; GL 3.0+ / ES 3.x / ARB_depth_buffer_float rev 7: clamped only for fixed-point depth; EXT_shadow_samplers: always clamped.",
+        other: "The reading of the neighbouring documents (e.g. GL 4.6 D32F under ARB_shadow's always-clamp, or SGIX with NVIDIA's clamp).",
+        sources: "SGIX_shadow NVIDIA Implementation Details; ARB_shadow §3.8.13.1; ARB_depth_buffer_float; GL 4.6 §8.23.1; EXT_shadow_samplers §3.7.14.1",
+    },
+    Contradiction {
+        id: "filtering",
+        title: "Filtering of comparison results",
+        defended: "SGIX: compare before filtering, r is exactly the weighted average of 0/1. Later specs: implementation-dependent, \"proportional to the number of comparison passes\" — accepted as the PCF range (strict) or the pass-fraction hull (lenient), labelled implementation_defined.",
+        other: "Any other filtering of a later spec (e.g. an unweighted pass fraction) — accepted by lenient only.",
+        sources: "SGIX_shadow Overview; ARB_shadow §3.8.13.1 and issue 7; GL 4.6 §8.23.1",
+    },
+    Contradiction {
+        id: "result-layout",
+        title: "Where r goes",
+        defended: "Per document and API path: SGIX LUMINANCE; ARB_shadow/GL ≤ 2.1 Lt/It/At by DEPTH_TEXTURE_MODE; GL compatibility adds RED; GL 3.x+ core / ES 3.x: (Rt,0,0,1), float result.",
+        other: "OES_depth_texture (no compare): (d,d,d,1) always.",
+        sources: "SGIX_shadow Notes; ARB_shadow §3.8.13.1; GL 4.6 §11.1.3.5; compatibility Table 16.1; OES_depth_texture issue 2",
+    },
+    Contradiction {
+        id: "incomplete",
+        title: "Result of an incomplete texture",
+        defended: "GL 4.6 / ES 3.2: 0 for a shadow sampler; GL 2.1 / ARB_fragment_program_shadow / ES 2.0: (0,0,0,1).",
+        other: "The other era's value.",
+        sources: "GL 2.1 §3.11.2; ARB_fragment_program_shadow; GL 4.6 §11.1.3.5",
+    },
+    Contradiction {
+        id: "bad-operator-error",
+        title: "Error for a bad compare operator",
+        defended: "SGIX_shadow: INVALID_OPERATION; ARB_shadow (changed 21 Jan 2002), EXT_shadow_funcs, core: INVALID_ENUM.",
+        other: "ARB_shadow before 21 January 2002: INVALID_OPERATION.",
+        sources: "SGIX_shadow Errors; ARB_shadow Errors and revision history",
+    },
+    Contradiction {
+        id: "es2-greater-row",
+        title: "EXT_shadow_samplers GREATER at D_ref == Dt",
+        defended: "r = 0.0: equality does not satisfy the 1.0 row \"D_ref > Dt\"; EXT_shadow_funcs, which the extension is based on, has \"0.0, if R <= Dt\".",
+        other: "The printed 0.0 row, \"0.0 if D_ref < Dt\", assigns nothing at equality: either value.",
+        sources: "EXT_shadow_samplers Table 3.X; EXT_shadow_funcs",
+    },
+    Contradiction {
+        id: "mirror-parens",
+        title: "GL 4.6 Table 8.20 MIRRORED_REPEAT",
+        defended: "ES 3.2 Table 8.21's well-formed (size − 1) − mirror((coord mod (2 × size)) − size).",
+        other: "GL 4.6 prints unbalanced parentheses; no other well-formed reading yields a different texel.",
+        sources: "GL 4.6 Table 8.20; ES 3.2 Table 8.21",
+    },
+];
+
+/// The contradiction with this id.
+pub fn get(id: &str) -> Option<&'static Contradiction> {
+    ALL.iter().find(|c| c.id == id)
+}
+
+fn is_sgix(s: Spec) -> bool {
+    matches!(s, Spec::Sgix | Spec::SgixAmbient)
+}
+
+/// The contradictions a case touches.
+pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
+    let s = &case.sampler;
+    let compare = s.compare_mode == CompareMode::Compare && case.texture.format.is_depth();
+    let filtered = s.mag_filter != Filter::Nearest || !matches!(s.min_filter, Filter::Nearest | Filter::NearestMipmapNearest);
+    let d = case.lookup.dref;
+    let mut out = Vec::new();
+    for c in ALL {
+        let hit = match c.id {
+            "sgix-lequal-direction" => is_sgix(case.spec) && compare,
+            "sgix-ambient" => case.spec == Spec::SgixAmbient && compare,
+            "ref-clamp" => compare && !(0.0..=1.0).contains(&d),
+            "filtering" => compare && filtered,
+            "result-layout" => true,
+            "incomplete" => s.min_filter.is_mipmap(),
+            "bad-operator-error" => false,
+            "es2-greater-row" => case.spec == Spec::Es2Ext && compare && s.compare_func == CompareFunc::Greater,
+            "mirror-parens" => case.spec == Spec::Gl46 && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::MirroredRepeat),
+            _ => false,
+        };
+        if hit {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// The rules under the other reading of `id` for this case, where the other reading changes a rule.
+pub fn alternative_rules(case: &Case, id: &str) -> Option<Rules> {
+    let mut r = crate::rules::rules_for(case.spec);
+    match id {
+        "sgix-lequal-direction" if is_sgix(case.spec) => r.table = crate::sgix::table_arb_issue2,
+        "sgix-ambient" if case.spec == Spec::SgixAmbient => r.ambient_on_pass = true,
+        "ref-clamp" => {
+            r.ref_clamp = match r.ref_clamp {
+                RefClamp::Always | RefClamp::Unstated => RefClamp::FixedPointOnly,
+                RefClamp::FixedPointOnly => RefClamp::Always,
+            };
+            if case.spec == Spec::Sgix || case.spec == Spec::SgixAmbient {
+                r.ref_clamp = RefClamp::Always;
+            }
+        }
+        "es2-greater-row" if case.spec == Spec::Es2Ext => r.table = crate::es2_ext::table_greater_row_literal,
+        _ => return None,
+    }
+    Some(r)
+}

@@ -1,0 +1,42 @@
+//! EXT_shadow_funcs (2002/03/22): the eight comparison functions on top of ARB_shadow.
+//! Source: specs/registry/EXT_shadow_funcs.txt.
+
+use crate::rules::{passes_if, CompareTable, Rules};
+use shadowcheck_model::{CompareFunc, Spec};
+use std::cmp::Ordering::{self, *};
+
+/// The updated pseudo-code of ARB_shadow §3.8.13.1:
+pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, ()> {
+    Ok(match func {
+        // "LEQUAL  { 1.0, if R <= Dt  { 0.0, if R > Dt"
+        CompareFunc::Lequal => passes_if(ord, &[Less, Equal]),
+        // "GEQUAL  { 1.0, if R >= Dt  { 0.0, if R < Dt"
+        CompareFunc::Gequal => passes_if(ord, &[Greater, Equal]),
+        // "LESS    { 1.0, if R < Dt   { 0.0, if R >= Dt"
+        CompareFunc::Less => passes_if(ord, &[Less]),
+        // "GREATER { 1.0, if R > Dt   { 0.0, if R <= Dt"
+        CompareFunc::Greater => passes_if(ord, &[Greater]),
+        // "EQUAL   { 1.0, if R == Dt  { 0.0, if R != Dt"
+        CompareFunc::Equal => passes_if(ord, &[Equal]),
+        // "NOTEQUAL { 1.0, if R != Dt { 0.0, if R == Dt"
+        CompareFunc::Notequal => passes_if(ord, &[Less, Greater]),
+        // "ALWAYS r = 1.0"
+        CompareFunc::Always => Some(true),
+        // "NEVER r = 0.0"
+        CompareFunc::Never => Some(false),
+        // Errors: "INVALID_ENUM is generated if ... <param> is not one of LEQUAL, GEQUAL, LESS,
+        // GREATER, EQUAL, NOTEQUAL, ALWAYS, or NEVER."
+        _ => return Err(()),
+    })
+}
+
+/// ARB_shadow's rules with the eight-function table.
+pub fn rules() -> Rules {
+    Rules {
+        spec: Spec::ExtFuncs,
+        doc: "ARB_shadow + EXT_shadow_funcs",
+        table: table as CompareTable,
+        table_cite: "EXT_shadow_funcs (ARB_shadow §3.8.13.1 pseudo-code, updated)",
+        ..crate::arb::rules(Spec::Arb)
+    }
+}

@@ -1,0 +1,70 @@
+//! OpenGL 3.0 - 4.6 (core profile text, with the compatibility-profile DEPTH_TEXTURE_MODE layouts for
+//! the legacy API paths). Source: specs/gl46-core-excerpts.txt, glsl-excerpts.txt part F.
+
+use crate::rules::{passes_if, BorderRule, CompareTable, Filtering, Incomplete, RefClamp, Rules};
+use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Spec, Target, Wrap};
+use std::cmp::Ordering::{self, *};
+
+/// §8.23.1, Table 8.23 "Depth texture comparison functions":
+pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, ()> {
+    Ok(match func {
+        // "LEQUAL r = 1.0, Dref ≤ Dt; 0.0, Dref > Dt"
+        CompareFunc::Lequal => passes_if(ord, &[Less, Equal]),
+        // "GEQUAL r = 1.0, Dref ≥ Dt; 0.0, Dref < Dt"
+        CompareFunc::Gequal => passes_if(ord, &[Greater, Equal]),
+        // "LESS r = 1.0, Dref < Dt; 0.0, Dref ≥ Dt"
+        CompareFunc::Less => passes_if(ord, &[Less]),
+        // "GREATER r = 1.0, Dref > Dt; 0.0, Dref ≤ Dt"
+        CompareFunc::Greater => passes_if(ord, &[Greater]),
+        // "EQUAL r = 1.0, Dref = Dt; 0.0, Dref ≠ Dt"
+        CompareFunc::Equal => passes_if(ord, &[Equal]),
+        // "NOTEQUAL r = 1.0, Dref ≠ Dt; 0.0, Dref = Dt"
+        CompareFunc::Notequal => passes_if(ord, &[Less, Greater]),
+        // "ALWAYS r = 1.0"
+        CompareFunc::Always => Some(true),
+        // "NEVER r = 0.0"
+        CompareFunc::Never => Some(false),
+        // §8.10 Errors: "An INVALID_ENUM error is generated if the type of the parameter specified by
+        // pname is enum, and any value specified by param or params is not among the legal values".
+        _ => return Err(()),
+    })
+}
+
+pub fn rules() -> Rules {
+    Rules {
+        spec: Spec::Gl46,
+        doc: "GL 4.6",
+        table: table as CompareTable,
+        table_cite: "GL 4.6 §8.23.1 Table 8.23",
+        // "If the texture's internal format indicates a fixed-point depth texture, then Dt and Dref
+        //  are clamped to the range [0, 1]; otherwise no clamping is performed."
+        ref_clamp: RefClamp::FixedPointOnly,
+        clamp_cite: "GL 4.6 §8.23.1 (Dt, Dref clamped only for fixed-point depth)",
+        // §8.14.2: "If border values are out-of-range with respect to the texture's internal format,
+        // the result is undefined."
+        border: BorderRule::UndefinedOutOfRange,
+        // "r may be computed by comparing more than one depth texture value to the texture reference
+        //  value. The details of this are implementation-dependent, but r should be a value in the
+        //  range [0, 1] which is proportional to the number of comparison passes or failures."
+        filtering: Filtering::ImplementationDependent,
+        filter_cite: "GL 4.6 §8.23.1 (filtered r implementation-dependent)",
+        // §11.1.3.5: "(0.0, 0.0, 0.0, 1.0), in floating-point, will be returned for a non-shadow
+        // sampler and 0 for a shadow sampler".
+        incomplete: Incomplete::ShadowZero,
+        es_depth_completeness: false,
+        // §8.13.1: "Initially, it is disabled."
+        seamless_cube: false,
+        lod_bias: true,
+        ambient_on_pass: false,
+        has_fail_value: false,
+        targets: &[Target::T1d, Target::T2d, Target::Rect, Target::Cube, Target::T1dArray, Target::T2dArray, Target::CubeArray],
+        // Table 8.17 (CLAMP: compatibility profile only).
+        wraps: &[Wrap::ClampToEdge, Wrap::Repeat, Wrap::ClampToBorder, Wrap::MirroredRepeat, Wrap::MirrorClampToEdge, Wrap::Clamp],
+        apis: &[ApiPath::FixedFunction, ApiPath::ArbFp, ApiPath::Glsl120, ApiPath::Glsl130, ApiPath::GlslCore],
+        // Compatibility Table 8.25: "DEPTH_TEXTURE_MODE enum RED, LUMINANCE, INTENSITY, ALPHA".
+        depth_modes: &[DepthTextureMode::Red, DepthTextureMode::Luminance, DepthTextureMode::Intensity, DepthTextureMode::Alpha],
+        // Table 8.17: "DEPTH_STENCIL_TEXTURE_MODE enum DEPTH_COMPONENT, STENCIL_INDEX".
+        depth_stencil_mode: true,
+        bad_func_error: "INVALID_ENUM",
+    }
+}

@@ -1,0 +1,113 @@
+//! What distinguishes one specification from another, as data. Each spec module (`sgix`, `arb`,
+//! `ext_funcs`, `es2_ext`, `gl46`, `gles32`) fills a [`Rules`] beside the sentences it encodes; the
+//! shared machinery (`engine`, `texel`, `lod`, `cube`) reads only this struct.
+
+use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Spec, Target, Wrap};
+use std::cmp::Ordering;
+
+/// How the reference value Dref / R is clamped before the comparison.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RefClamp {
+    /// Always clamped to [0,1] (ARB_shadow, GL ≤ 2.1, EXT_shadow_samplers).
+    Always,
+    /// Clamped only for fixed-point depth formats (ARB_depth_buffer_float rev 7, GL 3.0+, ES 3.x).
+    FixedPointOnly,
+    /// The spec does not say (SGIX_shadow): both readings are accepted, the literal (no clamp) is the
+    /// spec value.
+    Unstated,
+}
+
+/// How a border depth (TEXTURE_BORDER_COLOR[0]) becomes Dt.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BorderRule {
+    /// Border colour values lie in [0,1] (GL ≤ 2.1 clamps TEXTURE_BORDER_COLOR when it is set).
+    ClampUnit,
+    /// GL 4.6 §8.14.2: "If border values are out-of-range with respect to the texture's internal
+    /// format, the result is undefined."
+    UndefinedOutOfRange,
+    /// ES 3.2 §8.14.2: "Border values are clamped before they are used, according to the format".
+    ClampToFormat,
+    /// ES 2.0 has no CLAMP_TO_BORDER; never reached.
+    None,
+}
+
+/// How a filtered (multi-texel) comparison result is defined.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Filtering {
+    /// SGIX_shadow: compare, then filter the 0/1 values: r is exactly the weighted average.
+    BeforeFilter,
+    /// ARB_shadow and later: "implementation-dependent ... proportional to the number of passes".
+    ImplementationDependent,
+}
+
+/// The result of a lookup on an incomplete texture.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Incomplete {
+    /// GL 2.1 §3.11.2 / ARB_fragment_program_shadow / ES 2.0: (R,G,B,A) = (0,0,0,1).
+    Legacy0001,
+    /// GL 4.6 / ES 3.2 §11.1.3.5: "0 for a shadow sampler" ((0,0,0,1) for the legacy vec4 paths).
+    ShadowZero,
+}
+
+/// The comparison table of one spec: `ord` is Dref compared with Dt (`Dref.partial_cmp(Dt)`), already
+/// clamped per the spec. Returns pass (1.0) / fail (0.0 or the fail value); `None` when the result
+/// depends on an unordered (NaN) operand. `Err` when the function is not in this spec's table.
+pub type CompareTable = fn(CompareFunc, Option<Ordering>) -> Result<Option<bool>, ()>;
+
+/// Everything the shared machinery needs to know about one specification.
+#[derive(Debug, Clone, Copy)]
+pub struct Rules {
+    pub spec: Spec,
+    /// Short document name used in citations, e.g. "GL 4.6".
+    pub doc: &'static str,
+    pub table: CompareTable,
+    /// Citation of the comparison table.
+    pub table_cite: &'static str,
+    pub ref_clamp: RefClamp,
+    /// Citation of the clamping sentence.
+    pub clamp_cite: &'static str,
+    pub border: BorderRule,
+    pub filtering: Filtering,
+    pub filter_cite: &'static str,
+    pub incomplete: Incomplete,
+    /// ES 3.2 §8.17: a sized depth texture with compare mode NONE and non-NEAREST filtering is incomplete.
+    pub es_depth_completeness: bool,
+    /// Cube maps are always seamless (ES 3.x); GL 4.6's TEXTURE_CUBE_MAP_SEAMLESS starts disabled.
+    pub seamless_cube: bool,
+    /// TEXTURE_LOD_BIAS exists (not in ES).
+    pub lod_bias: bool,
+    /// The fail/ambient value replaces 0.0 (ARB_shadow_ambient, SGIX_shadow_ambient).
+    pub has_fail_value: bool,
+    /// The fail value replaces the *passing* 1.0 instead (the overview reading of SGIX_shadow_ambient,
+    /// contradiction `sgix-ambient`; never the defended reading).
+    pub ambient_on_pass: bool,
+    /// Targets this spec defines depth textures (and shadow lookups) for.
+    pub targets: &'static [Target],
+    /// Wrap modes accepted by TexParameter in this spec (CLAMP additionally needs a compatibility context).
+    pub wraps: &'static [Wrap],
+    /// API paths through which this spec's lookups can be made.
+    pub apis: &'static [ApiPath],
+    /// DEPTH_TEXTURE_MODE values accepted (empty: the pname does not exist).
+    pub depth_modes: &'static [DepthTextureMode],
+    /// DEPTH_STENCIL_TEXTURE_MODE exists (GL 4.3+, ES 3.1+).
+    pub depth_stencil_mode: bool,
+    /// The error a compare function outside the table raises (SGIX: INVALID_OPERATION).
+    pub bad_func_error: &'static str,
+}
+
+/// The rules of a spec variant.
+pub fn rules_for(spec: Spec) -> Rules {
+    match spec {
+        Spec::Sgix | Spec::SgixAmbient => crate::sgix::rules(spec),
+        Spec::Arb | Spec::ArbAmbient => crate::arb::rules(spec),
+        Spec::ExtFuncs => crate::ext_funcs::rules(),
+        Spec::Es2Ext => crate::es2_ext::rules(),
+        Spec::Gl46 => crate::gl46::rules(),
+        Spec::Gles32 => crate::gles32::rules(),
+    }
+}
+
+/// Helpers shared by the tables: pass when `ord` is one of `pass`.
+pub(crate) fn passes_if(ord: Option<Ordering>, pass: &[Ordering]) -> Option<bool> {
+    ord.map(|o| pass.contains(&o))
+}
