@@ -44,13 +44,19 @@ impl Baseline {
             // The status is the last field; test names may not contain commas (ids never do).
             let (test, status) = line.rsplit_once(',').ok_or_else(|| bad("expected `test,Status`".into()))?;
             let status: Status = status.trim().parse().map_err(bad)?;
+            let test = test.trim();
+            // A quoted name (RFC 4180, as failures.csv writes names with commas).
+            let test = match test.strip_prefix('"').and_then(|t| t.strip_suffix('"')) {
+                Some(inner) => inner.replace("\"\"", "\""),
+                None => test.to_string(),
+            };
             let status = match status {
                 Status::Plain(o) => Status::Plain(o),
                 // deqp-runner writes the raw status; accept a final status only where it is one.
                 s => return Err(bad(format!("`{s}` is not a status a baseline can expect (use Fail, Crash, Timeout, ...)"))),
             };
-            if entries.insert(test.trim().to_string(), status).is_some() {
-                return Err(bad(format!("`{}` is listed twice", test.trim())));
+            if entries.insert(test.clone(), status).is_some() {
+                return Err(bad(format!("`{test}` is listed twice")));
             }
         }
         Ok(Baseline { entries })
@@ -153,6 +159,10 @@ mod tests {
         assert!(e.contains("b.csv:2") && e.contains("twice"), "{e}");
         assert!(Baseline::parse("a@core,Broken\n", "b.csv").is_err());
         assert!(Baseline::parse("just-a-name\n", "b.csv").is_err());
+        // Names with commas, quoted or not.
+        let b = Baseline::parse("\"x/dt=0.25,0.75@core\",Fail\ny/dt=1,0@ff,Timeout\n", "b.csv").unwrap();
+        assert_eq!(b.get("x/dt=0.25,0.75@core"), Some(Status::Plain(Outcome::Fail)));
+        assert_eq!(b.get("y/dt=1,0@ff"), Some(Status::Plain(Outcome::Timeout)));
     }
 
     #[test]

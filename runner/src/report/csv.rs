@@ -1,5 +1,9 @@
 //! results.csv (`test,status,duration,backend`, deqp-runner's columns plus the backend) and
 //! failures.csv (`test,Status`, a valid `--baseline`).
+//!
+//! Case ids may contain commas (`dt=0.25,0.75,0.75,1`): such fields are quoted as RFC 4180 says
+//! (`"..."`, inner quotes doubled). The baseline reader takes the status after the last comma, so
+//! it reads both quoted and unquoted names.
 
 use crate::events::{Event, Reporter, TestResult};
 use crate::verdict::Status;
@@ -29,13 +33,22 @@ pub fn failing_status(r: &TestResult) -> Option<Status> {
 
 /// failures.csv content. A test failing on several backends is listed once (first backend in
 /// report order), since a baseline lists each test once.
+/// A CSV field, quoted when it holds a comma, a quote or a line break.
+pub fn field(s: &str) -> std::borrow::Cow<'_, str> {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\"")).into()
+    } else {
+        s.into()
+    }
+}
+
 pub fn failures_csv(results: &[TestResult]) -> String {
     let mut seen = BTreeSet::new();
     let mut s = String::new();
     for r in results {
         if let Some(st) = failing_status(r) {
             if seen.insert(r.test.as_str()) {
-                s.push_str(&format!("{},{}\n", r.test, st));
+                s.push_str(&format!("{},{}\n", field(&r.test), st));
             }
         }
     }
@@ -45,7 +58,7 @@ pub fn failures_csv(results: &[TestResult]) -> String {
 pub fn results_csv(results: &[TestResult]) -> String {
     let mut s = String::with_capacity(results.len() * 80);
     for r in results {
-        s.push_str(&format!("{},{},{:.6},{}\n", r.test, r.status, r.duration, r.backend));
+        s.push_str(&format!("{},{},{:.6},{}\n", field(&r.test), r.status, r.duration, field(&r.backend)));
     }
     s
 }

@@ -1,0 +1,165 @@
+//! Shared helpers for the runner's integration tests: hand-built fixture files (expectations from
+//! the GL 4.6 compare table, written here from the spec text, not from any implementation) and a
+//! way to run the `shadowcheck` binary.
+#![allow(dead_code)]
+
+use shadowcheck_cases::fixtures::{to_string, FixtureFile};
+use shadowcheck_model::*;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+pub fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_shadowcheck"))
+}
+
+/// A fresh, empty directory for one test.
+pub fn tmpdir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("shadowcheck-runner-test-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// The 2x2 D16 texture used by the hand-built cases: stored integers 0, 21845, 43690, 65535, i.e.
+/// Dt = 0, 1/3, 2/3, 1 (GL 4.6 §2.3.5.1: unorm c / (2^16 - 1)), x fastest then y.
+pub const TEXELS: [u32; 4] = [0, 21845, 43690, 65535];
+
+/// GL 4.6 Table 8.23 with exact arithmetic.
+pub fn compare(func: CompareFunc, dref: f64, dt: f64) -> f64 {
+    let pass = match func {
+        CompareFunc::Lequal => dref <= dt,
+        CompareFunc::Gequal => dref >= dt,
+        CompareFunc::Less => dref < dt,
+        CompareFunc::Greater => dref > dt,
+        CompareFunc::Equal => dref == dt,
+        CompareFunc::Notequal => dref != dt,
+        CompareFunc::Always => true,
+        _ => false,
+    };
+    if pass { 1.0 } else { 0.0 }
+}
+
+/// A GL 4.6 core NEAREST lookup at the centre of texel `(x, y)` of the 2x2 texture with reference
+/// `dref`. Its expectation: r = compare(func, dref, Dt(x,y)) exactly, in channel 0 of the float
+/// GLSL result (the other channels unused), under both profiles (no texel is near a tie).
+pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
+    let dt = TEXELS[(y * 2 + x) as usize] as f64 / 65535.0;
+    let r = compare(func, dref, dt);
+    let mut accept = BTreeMap::new();
+    accept.insert(Profile::Strict, Acceptance(vec![Interval::point(r)]));
+    accept.insert(Profile::Lenient, Acceptance(vec![Interval::point(r)]));
+    let mut layout = BTreeMap::new();
+    layout.insert(ApiPath::GlslCore, [Channel::R, Channel::Unused, Channel::Unused, Channel::Unused]);
+    Case {
+        id: format!("gl46/2d/d16/nearest/{}/ref={dref}/texel={x},{y}", func.key()),
+        spec: Spec::Gl46,
+        api: vec![ApiPath::GlslCore],
+        texture: Texture {
+            target: Target::T2d,
+            format: Format::D16,
+            base_level: 0,
+            levels: vec![Level { width: 2, height: 2, layers: 1, depth: Texels::Unorm(TEXELS.to_vec()), stencil: None }],
+        },
+        sampler: Sampler::new(CompareMode::Compare, func, Filter::Nearest),
+        lookup: Lookup {
+            coord: [(x as f64 + 0.5) / 2.0, (y as f64 + 0.5) / 2.0, 0.0, 1.0],
+            layer: 0.0,
+            dref,
+            projective: false,
+            lod: 0.0,
+            bias: 0.0,
+        },
+        expect: Some(Expectation {
+            spec_value: Some(r),
+            accept,
+            layout,
+            implementation_defined: None,
+            citations: vec!["GL 4.6 §8.23.1 Table 8.23".into()],
+        }),
+    }
+}
+
+/// `n` distinct cases cycling through funcs, texels and references.
+pub fn many_cases(n: usize) -> Vec<Case> {
+    let funcs = [CompareFunc::Lequal, CompareFunc::Gequal, CompareFunc::Less, CompareFunc::Greater];
+    (0..n)
+        .map(|i| {
+            let mut c = nearest_case(funcs[i % 4], (i / 4 % 2) as u32, (i / 8 % 2) as u32, 0.5);
+            c.id = format!("{}/n={i:04}", c.id);
+            c
+        })
+        .collect()
+}
+
+pub fn write_fixture(path: &Path, cases: Vec<Case>) {
+    let f = FixtureFile { schema_version: SCHEMA_VERSION, generator: "runner tests".into(), grid: "test".into(), seed: 0, cases };
+    std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+    std::fs::write(path, to_string(&f).unwrap()).unwrap();
+}
+
+pub struct Run {
+    pub code: i32,
+    pub stdout: String,
+    pub stderr: String,
+}
+
+impl Run {
+    pub fn of(o: Output) -> Run {
+        Run {
+            code: o.status.code().unwrap_or(-1),
+            stdout: String::from_utf8_lossy(&o.stdout).into_owned(),
+            stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
+        }
+    }
+}
+
+/// `shadowcheck run ARGS` and its outcome.
+pub fn run(args: &[&str]) -> Run {
+    Run::of(bin().arg("run").args(args).output().unwrap())
+}
+
+/// Splits one CSV line (RFC 4180 quoting).
+pub fn csv_fields(line: &str) -> Vec<String> {
+    let mut out = vec![String::new()];
+    let mut quoted = false;
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' if quoted && chars.peek() == Some(&'"') => {
+                chars.next();
+                out.last_mut().unwrap().push('"');
+            }
+            '"' => quoted = !quoted,
+            ',' if !quoted => out.push(String::new()),
+            c => out.last_mut().unwrap().push(c),
+        }
+    }
+    out
+}
+
+/// results.csv as (test, status, backend), durations dropped.
+pub fn results(dir: &Path) -> Vec<(String, String, String)> {
+    std::fs::read_to_string(dir.join("results.csv"))
+        .unwrap()
+        .lines()
+        .map(|l| {
+            let f = csv_fields(l);
+            assert_eq!(f.len(), 4, "{l}");
+            (f[0].clone(), f[1].clone(), f[3].clone())
+        })
+        .collect()
+}
+
+/// report.json without the durations (which differ from run to run).
+pub fn report_without_durations(dir: &Path) -> serde_json::Value {
+    let mut v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
+    for r in v["results"].as_array_mut().unwrap() {
+        r.as_object_mut().unwrap().remove("duration");
+    }
+    v
+}
+
+pub fn status_of<'a>(rows: &'a [(String, String, String)], test_contains: &str) -> Vec<&'a str> {
+    rows.iter().filter(|r| r.0.contains(test_contains)).map(|r| r.1.as_str()).collect()
+}

@@ -1,0 +1,48 @@
+//! A run killed with SIGKILL midway keeps what it finished in results.jsonl, and `--resume`
+//! completes it with the same final report as an uninterrupted run.
+//!
+//! The kill is deterministic: the mock worker reads SHADOWCHECK_MOCK_KILL_RUNNER (a regex on case
+//! ids) and sends SIGKILL to its parent, the runner, when the first matching case arrives.
+
+mod common;
+use common::*;
+
+#[test]
+fn sigkill_then_resume_gives_the_uninterrupted_report() {
+    let dir = tmpdir("resume");
+    let fx = dir.join("fixtures/cases.json");
+    write_fixture(&fx, many_cases(300));
+    let fx = fx.to_str().unwrap();
+    let script = "mock:fail=n=00[0-4]7,crash=n=0123";
+
+    let whole = dir.join("whole");
+    let r = run(&["-b", script, "--fixtures", fx, "--out", whole.to_str().unwrap()]);
+    assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
+
+    let killed = dir.join("killed");
+    let o = bin()
+        .args(["run", "-b", script, "--fixtures", fx, "--out", killed.to_str().unwrap()])
+        .env("SHADOWCHECK_MOCK_KILL_RUNNER", "n=0250")
+        .output()
+        .unwrap();
+    {
+        use std::os::unix::process::ExitStatusExt;
+        assert_eq!(o.status.signal(), Some(9), "the runner should have been killed: {o:?}");
+    }
+    let partial = std::fs::read_to_string(killed.join("results.jsonl")).unwrap();
+    let done = partial.lines().filter(|l| l.contains(r#""kind":"result""#)).count();
+    assert!(done >= 100 && done < 300, "{done} results on disk after the kill");
+    assert!(!killed.join("report.json").exists(), "no final report from a killed run");
+
+    let r = run(&["-b", script, "--fixtures", fx, "--out", killed.to_str().unwrap(), "--resume"]);
+    assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
+    assert_eq!(results(&killed), results(&whole));
+    assert_eq!(report_without_durations(&killed), report_without_durations(&whole));
+    for f in ["failures.csv"] {
+        assert_eq!(std::fs::read_to_string(killed.join(f)).unwrap(), std::fs::read_to_string(whole.join(f)).unwrap());
+    }
+
+    // Resuming with another selection is refused (bad input).
+    let r = run(&["-b", "mock:", "--fixtures", fx, "--out", killed.to_str().unwrap(), "--resume"]);
+    assert_eq!(r.code, 96, "{}", r.stderr);
+}
