@@ -127,22 +127,7 @@ impl Default for Options {
 
 /// The GL backends this machine offers (`egl:...`, `osmesa:...`), from the GL helper's probe.
 pub fn gl_backends() -> Vec<String> {
-    glshim::probe()
-}
-
-/// Local adapter until runner/src/gl/mod.rs provides `probe()` and `worker_command()`.
-mod glshim {
-    pub struct WorkerCommand {
-        pub program: std::path::PathBuf,
-        pub args: Vec<String>,
-        pub env: Vec<(String, String)>,
-    }
-    pub fn probe() -> Vec<String> {
-        vec![]
-    }
-    pub fn worker_command(backend: &str) -> Result<WorkerCommand, String> {
-        Err(format!("GL backend `{backend}` is not available in this build"))
-    }
+    crate::gl::probe()
 }
 
 /// Backends run when none is named: `soft` plus every GL driver found.
@@ -166,7 +151,7 @@ pub fn open(name: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError
             Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
         }
         "egl" | "osmesa" => {
-            let wc = glshim::worker_command(name).map_err(|msg| BackendError::Setup { backend: name.into(), msg })?;
+            let wc = crate::gl::worker_command(name).map_err(|e| BackendError::Setup { backend: name.into(), msg: e.to_string() })?;
             let cmd = exec::ProcessCommand { program: wc.program, args: wc.args, env: wc.env };
             Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
         }

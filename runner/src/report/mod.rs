@@ -66,7 +66,7 @@ pub fn dump(r: &TestResult, indent: &str) -> String {
     }
     if let Some(f) = &r.footprint {
         let _ = writeln!(s, "{indent}  footprint: Dref {} ({} texels)", num(f.dref), f.texels.len());
-        let _ = writeln!(s, "{indent}    {:<5} {:<16} {:<14} {:<12} {:<8} {}", "level", "texel x,y,layer", "stored", "Dt", "compare", "weight");
+        let _ = writeln!(s, "{indent}    {:<5} {:<16} {:<14} {:<20} {:<8} {}", "level", "texel x,y,layer", "stored", "Dt", "compare", "weight");
         for t in &f.texels {
             let xyz = t.xyz.map(|[x, y, z]| format!("{x},{y},{z}")).unwrap_or_else(|| "border".into());
             let pass = match t.pass {
@@ -76,7 +76,7 @@ pub fn dump(r: &TestResult, indent: &str) -> String {
             };
             let _ = writeln!(
                 s,
-                "{indent}    {:<5} {:<16} {:<14} {:<12} {:<8} {}",
+                "{indent}    {:<5} {:<16} {:<14} {:<20} {:<8} {}",
                 t.level,
                 xyz,
                 num(t.stored),

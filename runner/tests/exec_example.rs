@@ -1,0 +1,87 @@
+//! The example external implementation (runner/examples/nearest_2d.py) through `exec:`:
+//! with LEQUAL and GEQUAL swapped it fails exactly the LEQUAL/GEQUAL cases, with a footprint dump
+//! and exit code 100; a baseline of those failures gives 0; the fixed script then reports
+//! UnexpectedImprovement (101). Needs `python3` (installed by .ci/run).
+
+mod common;
+use common::*;
+use shadowcheck_model::CompareFunc;
+
+fn example() -> String {
+    format!("{}/examples/nearest_2d.py", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// 4 funcs x 4 texels, reference 0.5, plus a case outside the example's capabilities (a cube map).
+fn fixture(dir: &std::path::Path) -> String {
+    let mut cases = vec![];
+    for f in [CompareFunc::Lequal, CompareFunc::Gequal, CompareFunc::Less, CompareFunc::Greater] {
+        for (x, y) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+            cases.push(nearest_case(f, x, y, 0.5));
+        }
+    }
+    let mut other = nearest_case(CompareFunc::Lequal, 0, 0, 0.5);
+    other.id = "gl46/2d/d16/nearest/lequal/ref=0.5/as-es300".into();
+    other.api = vec![shadowcheck_model::ApiPath::Es300];
+    other.spec = shadowcheck_model::Spec::Gles32;
+    cases.push(other);
+    let p = dir.join("fixtures/example.json");
+    write_fixture(&p, cases);
+    p.display().to_string()
+}
+
+#[test]
+fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement() {
+    let dir = tmpdir("exec-example");
+    let fx = fixture(&dir);
+    let swapped = format!("exec:python3 {} --swap-lequal-gequal", example());
+    let fixed = format!("exec:python3 {}", example());
+
+    let out1 = dir.join("swapped");
+    let r = run(&["-b", &swapped, "--fixtures", &fx, "--out", out1.to_str().unwrap()]);
+    assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
+    let rows = results(&out1);
+    assert_eq!(rows.len(), 17);
+    // LEQUAL with Dref 0.5 passes where Dt >= 0.5 (texels 2/3 and 1), GEQUAL where Dt <= 0.5; the
+    // swapped script answers the other way round on every one of those 8 cases.
+    for (t, st, _) in &rows {
+        let want = if t.contains("/lequal/") && t.contains("as-es300") {
+            "Skip"
+        } else if t.contains("/lequal/") || t.contains("/gequal/") {
+            "Fail"
+        } else {
+            "Pass"
+        };
+        assert_eq!(st, want, "{t}");
+    }
+    // The dump of texel (1,1): stored 65535, Dt 1, Dref 0.5, expected 1, observed 0.
+    let md = std::fs::read_to_string(out1.join("report.md")).unwrap();
+    let dump = md.split("```text").find(|d| d.contains("/lequal/ref=0.5/texel=1,1@core")).expect("dump of texel 1,1");
+    assert!(dump.contains("expected:  spec value 1; strict {1}; lenient {1}"), "{dump}");
+    assert!(dump.contains("observed:  rgba (0, 0, 0, 1)"), "{dump}");
+    assert!(dump.contains("footprint: Dref 0.5 (1 texels)"), "{dump}");
+    let texel_line = dump.lines().find(|l| l.trim_start().starts_with("0     1,1,0")).expect("footprint texel line");
+    let cols: Vec<&str> = texel_line.split_whitespace().collect();
+    assert_eq!(cols, ["0", "1,1,0", "65535", "1", "pass", "1"], "{texel_line}");
+    assert!(dump.contains("re-run:    shadowcheck run --backend 'exec:python3 "), "{dump}");
+    assert!(dump.contains("--cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/texel=1,1$'"), "{dump}");
+    let skip = std::fs::read_to_string(out1.join("report.json")).unwrap();
+    assert!(skip.contains("spec `gles32` not supported by this backend"), "capability skip reason missing");
+
+    // Those failures as the baseline: exit 0.
+    let base = out1.join("failures.csv");
+    assert_eq!(std::fs::read_to_string(&base).unwrap().lines().count(), 8);
+    let out2 = dir.join("baselined");
+    let r = run(&["-b", &swapped, "--fixtures", &fx, "--baseline", base.to_str().unwrap(), "--out", out2.to_str().unwrap()]);
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    assert_eq!(results(&out2).iter().filter(|r| r.1 == "ExpectedFail").count(), 8);
+
+    // The fixed script: the 8 listed tests are unexpected improvements.
+    let out3 = dir.join("fixed");
+    let r = run(&["-b", &fixed, "--fixtures", &fx, "--baseline", base.to_str().unwrap(), "--out", out3.to_str().unwrap()]);
+    assert_eq!(r.code, 101, "{}{}", r.stdout, r.stderr);
+    assert_eq!(results(&out3).iter().filter(|r| r.1 == "UnexpectedImprovement(Pass)").count(), 8);
+    // And without the baseline everything it supports passes.
+    let out4 = dir.join("fixed-plain");
+    let r = run(&["-b", &fixed, "--fixtures", &fx, "--out", out4.to_str().unwrap()]);
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+}
