@@ -74,7 +74,18 @@ pub fn choose(p: &LodParams, lambda: f32, faults: Faults) -> LevelChoice {
         Filter::NearestMipmapNearest | Filter::LinearMipmapNearest => {
             // (8.14): d = nearest(λ) if level_base + λ ≤ q + ½, else q;
             // nearest(λ) = ⌈level_base + λ + ½⌉ − 1 (the preferred form).
-            let mut d = if x <= q as f32 + 0.5 { ((x + 0.5).ceil() - 1.0) as u32 } else { q };
+            let mut d = if x <= q as f32 + 0.5 {
+                // ⌈y⌉ − 1 for y = x + ½ > 0, without a libm call: truncate, round up non-integers.
+                let y = x + 0.5;
+                let t = y as u32;
+                if (t as f32) < y {
+                    t
+                } else {
+                    t - 1
+                }
+            } else {
+                q
+            };
             if faults.has(Fault::MipLevelOffByOne) {
                 d = (d + 1).min(q);
             }
@@ -89,11 +100,11 @@ pub fn choose(p: &LodParams, lambda: f32, faults: Faults) -> LevelChoice {
             if x >= q as f32 {
                 LevelChoice::Single { level: q, linear }
             } else {
-                let d1 = x.floor() as u32;
+                let d1 = x as u32; // x > 0: truncation is ⌊x⌋
                 if faults.has(Fault::TrilinearNoBlend) {
                     return LevelChoice::Single { level: d1, linear };
                 }
-                let frac = lambda - lambda.floor();
+                let frac = crate::wrap::floor_frac(lambda).1;
                 LevelChoice::Blend {
                     d1,
                     d2: d1 + 1,

@@ -9,9 +9,27 @@ use shadowcheck_model::Wrap;
 
 /// Float → integer texel location: ⌊x⌋ saturated into i64 (NaN → 0, ±inf → the i64 limits), so
 /// that absurd coordinates stay deterministic.
+///
+/// Computed from the truncating conversion rather than `f32::floor`, which is a libm call on
+/// the baseline x86-64 target (no SSE4.1 `roundss`) and dominated the lookup profile.
 #[inline(always)]
 pub fn floor_i64(x: f32) -> i64 {
-    x.floor() as i64
+    let i = x as i64; // truncates toward zero; saturates; NaN -> 0
+                      // A negative non-integer truncated upward. (|x| >= 2^23 is already an integer, so the
+                      // conversion back is exact whenever this comparison matters.)
+    if (i as f32) > x {
+        i.saturating_sub(1)
+    } else {
+        i
+    }
+}
+
+/// (⌊x⌋, frac(x)) with frac in [0, 1); frac is 0 for non-finite or out-of-i64-range x.
+#[inline(always)]
+pub fn floor_frac(x: f32) -> (i64, f32) {
+    let i = floor_i64(x);
+    let f = x - i as f32;
+    (i, if (0.0..1.0).contains(&f) { f } else { 0.0 })
 }
 
 /// mirror(a) of Table 8.20: a if a ≥ 0, −(1 + a) otherwise.
@@ -90,9 +108,7 @@ pub fn nearest(mode: Wrap, u: f32, size: u32, faults: Faults) -> i64 {
 pub fn linear(mode: Wrap, u: f32, size: u32, faults: Faults) -> (i64, i64, f32) {
     let u = pre_clamp(mode, u, size as f32);
     let a = if faults.has(Fault::PcfHalfTexelOff) { u } else { u - 0.5 };
-    let fl = a.floor();
-    let alpha = if fl.is_finite() { a - fl } else { 0.0 };
-    let i = floor_i64(a);
+    let (i, alpha) = floor_frac(a);
     let s = size as i64;
     (
         wrap(mode, i, s, true, faults),
@@ -170,6 +186,18 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn fast_floor_matches_floor() {
+        for x in [
+            0.0f32, -0.0, 0.5, -0.5, 1.0, -1.0, 2.75, -2.75, 8388607.5, -8388607.5, 16777216.0, -1e20, 1e20, 3.4e38, -3.4e38,
+        ] {
+            assert_eq!(floor_i64(x), x.floor() as i64, "{x}");
+        }
+        assert_eq!(floor_i64(f32::NAN), 0);
+        assert_eq!(floor_frac(-2.75), (-3, 0.25));
+        assert_eq!(floor_frac(1e30).1, 0.0);
     }
 
     #[test]
