@@ -209,7 +209,7 @@ impl TexelCtx<'_> {
     pub fn eval(&self, key: Key) -> TexelEval {
         let src = self.source(key);
         let clamp = |e: Exact| match e {
-            Exact::F(v) if self.clamps_dt() => Exact::F(v.clamp(0.0, 1.0)),
+            Exact::F(v) if self.clamps_dt() && self.kind != Kind::Stencil => Exact::F(v.clamp(0.0, 1.0)),
             other => other,
         };
         let value = clamp(src.value);

@@ -1,0 +1,115 @@
+//! Properties that hold for every case the oracle answers.
+
+mod common;
+use common::*;
+use proptest::prelude::*;
+use shadowcheck_model::*;
+use shadowcheck_oracle::evaluate;
+
+fn spec_with_eight() -> impl Strategy<Value = Spec> {
+    prop_oneof![Just(Spec::Gl46), Just(Spec::Gles32), Just(Spec::ExtFuncs), Just(Spec::Es2Ext)]
+}
+
+fn format_for(spec: Spec) -> Vec<Format> {
+    match spec {
+        Spec::Gl46 => vec![Format::D16, Format::D24, Format::D32, Format::D32f, Format::D24S8, Format::D32fS8, Format::DepthUnsized],
+        Spec::Gles32 => vec![Format::D16, Format::D24, Format::D32f, Format::D24S8],
+        Spec::Es2Ext => vec![Format::D16, Format::D24, Format::D24S8],
+        _ => vec![Format::D16, Format::D24, Format::D32],
+    }
+}
+
+fn any_case() -> impl Strategy<Value = Case> {
+    let spec = prop_oneof![
+        Just(Spec::Gl46),
+        Just(Spec::Gles32),
+        Just(Spec::ExtFuncs),
+        Just(Spec::Es2Ext),
+        Just(Spec::Arb),
+        Just(Spec::ArbAmbient),
+        Just(Spec::Sgix),
+        Just(Spec::SgixAmbient)
+    ];
+    (
+        spec,
+        0usize..8,
+        0usize..8,
+        0usize..6,
+        prop::collection::vec(0.0f64..=1.0, 16),
+        (-0.25f64..1.25, -0.25f64..1.25),
+        -0.5f64..1.5,
+        0.0f64..1.0,
+        -1.0f64..3.0,
+        any::<bool>(),
+    )
+        .prop_map(|(spec, fi, fu, fl, vals, st, dref, fail, lod, border)| {
+            let formats = match spec {
+                Spec::Sgix | Spec::SgixAmbient => vec![Format::D16, Format::D24, Format::D32],
+                Spec::Arb | Spec::ArbAmbient => vec![Format::D16, Format::D24],
+                s => format_for(s),
+            };
+            let format = formats[fi % formats.len()];
+            let funcs: Vec<CompareFunc> = match spec {
+                Spec::Sgix | Spec::SgixAmbient => vec![CompareFunc::LequalRSgix, CompareFunc::GequalRSgix],
+                Spec::Arb | Spec::ArbAmbient => vec![CompareFunc::Lequal, CompareFunc::Gequal],
+                _ => CompareFunc::CORE.to_vec(),
+            };
+            let filters = [Filter::Nearest, Filter::Linear, Filter::NearestMipmapNearest, Filter::LinearMipmapNearest, Filter::NearestMipmapLinear, Filter::LinearMipmapLinear];
+            let filter = filters[fl];
+            // A complete 4x4 mipmap: levels 4x4, 2x2, 1x1.
+            let mut c = case2d(spec, format, funcs[fu % funcs.len()], filter, 4, 4, &vals, st, dref);
+            for (n, off) in [(2u32, 0usize), (1, 4)] {
+                let v = &vals[off..off + (n * n) as usize];
+                c.texture.levels.push(Level { width: n, height: n, layers: 1, depth: texels(format, v), stencil: format.has_stencil().then(|| vec![0; (n * n) as usize]) });
+            }
+            c.lookup.lod = lod;
+            if matches!(spec, Spec::ArbAmbient | Spec::SgixAmbient) {
+                c.sampler.fail_value = Some(fail as f32);
+            }
+            if border && spec != Spec::Es2Ext {
+                c.sampler.wrap_s = Wrap::ClampToBorder;
+                c.sampler.border = [vals[3] as f32, 0.0, 0.0, 0.0];
+            }
+            c
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+
+    /// Away from NaN, LESS = not GEQUAL and GREATER = not LEQUAL (for the spec value and for every texel).
+    #[test]
+    fn less_is_not_gequal_and_greater_is_not_lequal(spec in spec_with_eight(), fi in 0usize..8, dref in -2.0f64..2.0, dt in 0.0f64..=1.0) {
+        let formats = format_for(spec);
+        let f = formats[fi % formats.len()];
+        let v = |func| value(&one(spec, f, func, dref, dt));
+        prop_assert_eq!(v(CompareFunc::Less), 1.0 - v(CompareFunc::Gequal));
+        prop_assert_eq!(v(CompareFunc::Greater), 1.0 - v(CompareFunc::Lequal));
+        prop_assert_eq!(v(CompareFunc::Notequal), 1.0 - v(CompareFunc::Equal));
+    }
+
+    /// Every acceptance interval lies in [fail value, 1] and the strict set contains the spec value;
+    /// the lenient set contains the strict set.
+    #[test]
+    fn acceptance_is_in_range_contains_the_spec_value_and_lenient_is_looser(c in any_case()) {
+        let e = evaluate(&c).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let fail = c.sampler.fail_value.map(|f| (f as f64).clamp(0.0, 1.0)).unwrap_or(0.0);
+        let lo = fail.min(0.0);
+        for (p, acc) in &e.expect.accept {
+            prop_assert!(!acc.0.is_empty(), "{p:?} empty");
+            for i in &acc.0 {
+                prop_assert!(i.lo >= lo.min(fail) - 1e-12 && i.hi <= 1.0 + 1e-12 && i.lo <= i.hi, "{p:?} {i:?} fail {fail}");
+                if c.sampler.compare_mode == CompareMode::Compare {
+                    prop_assert!(i.lo >= fail - 1e-12, "{p:?} {i:?} below fail {fail}");
+                }
+            }
+            if let Some(v) = e.expect.spec_value {
+                prop_assert!(acc.contains(v), "{p:?} {acc} lacks spec value {v}");
+            }
+        }
+        let strict = &e.expect.accept[&Profile::Strict];
+        let lenient = &e.expect.accept[&Profile::Lenient];
+        prop_assert!(strict.is_subset_of(lenient), "strict {strict} ⊄ lenient {lenient}");
+        prop_assert_eq!(e.expect.layout.len(), c.api.len());
+    }
+}
