@@ -22,6 +22,12 @@ enum Command {
     Run(cmd::run::Args),
     /// Merge result files of shards into one.
     Merge(cmd::merge::Args),
+    /// Measure throughput: oracle, soft implementation, GL backends end to end against the bare-draw floor.
+    Bench(cmd::bench::Args),
+    /// Measure the suite's power: run the fixtures against seeded faults of the soft implementation.
+    Mutants(cmd::mutants::Args),
+    /// Write a self-contained HTML report (matrix, heatmaps, plots) from result files.
+    Report(cmd::report::Args),
     /// (internal) A GL worker process speaking runner/PROTOCOL.md on stdin/stdout.
     #[command(hide = true)]
     GlWorker(cmd::gl_worker::Args),
@@ -37,6 +43,9 @@ fn main() -> std::process::ExitCode {
         Command::Gen(a) => cmd::gen::main(a),
         Command::Run(a) => cmd::run::main(a),
         Command::Merge(a) => cmd::merge::main(a),
+        Command::Bench(a) => cmd::bench::main(a),
+        Command::Mutants(a) => cmd::mutants::main(a),
+        Command::Report(a) => cmd::report::main(a),
         Command::GlWorker(a) => cmd::gl_worker::main(a),
         Command::MockWorker(a) => cmd::mock_worker::main(a),
     };

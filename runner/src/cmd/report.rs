@@ -1,0 +1,9 @@
+//! `shadowcheck report` (being built).
+use std::process::ExitCode;
+
+#[derive(clap::Args)]
+pub struct Args {}
+
+pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
+    anyhow::bail!("`report` is not built yet")
+}
