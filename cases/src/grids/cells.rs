@@ -35,8 +35,16 @@ pub const PATTERN: [f64; 4] = [0.2, 0.4, 0.6, 0.8];
 /// Nominal value of each mip level.
 pub const LEVELS: [f64; 3] = [0.2, 0.8, 0.4];
 
-fn light(format: Format) -> bool {
-    matches!(format, Format::R8 | Format::D24S8 | Format::D32fS8)
+/// Formats that get one lookup per cell. R8 (bypass) and the DEPTH_STENCIL formats (which compare
+/// like D24 / D32F) add no comparison rule; D32 and unsized DEPTH_COMPONENT differ from D16/D24 only
+/// in stored precision, which the `exact` and `clamp` families test value by value. A spec whose
+/// only depth format is one of these keeps the full set.
+fn light(spec: Spec, format: Format) -> bool {
+    match format {
+        Format::R8 | Format::D24S8 | Format::D32fS8 => true,
+        Format::D32 | Format::DepthUnsized => spec != Spec::Es2Ext,
+        _ => false,
+    }
 }
 
 /// Layer count (array layers, or cubes) and the sampled layer / face.
@@ -108,7 +116,7 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
             let at_ref = build::f32r(build::stored_real(f, PATTERN[1]));
             let refs: Vec<(String, f64)> = if cell.mode == CompareMode::None {
                 vec![("read".into(), 0.5)]
-            } else if light(f) {
+            } else if light(cell.spec, f) {
                 vec![("ref=0.3".into(), 0.3)]
             } else {
                 vec![("ref=0.3".into(), 0.3), ("ref=at".into(), at_ref), ("ref=0.5".into(), 0.5)]
@@ -120,7 +128,7 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
         } else {
             // alpha = 0.25, beta = 0.5 from texel (0,0) (2D) or from texel 1 (1D).
             let at = if one_d { At { s: 1.75 / 4.0, t: 0.0, ..base } } else { At { s: 0.375, t: 0.5, ..base } };
-            let refs: &[f64] = if cell.mode == CompareMode::None || light(f) { &[0.5] } else { &[0.3, 0.5, 0.7] };
+            let refs: &[f64] = if cell.mode == CompareMode::None || light(cell.spec, f) { &[0.5] } else { &[0.3, 0.7] };
             for r in refs {
                 let lk = lookup(cell.target, at, w, h, *r);
                 let tag = if cell.mode == CompareMode::None { "read".to_string() } else { format!("ref={r}") };
@@ -130,10 +138,10 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
     } else {
         let (tex, base) = mip_texture(cell);
         let (w, h) = (tex.levels[0].width, tex.levels[0].height);
-        let lods: &[(f64, f64)] = if cell.mode == CompareMode::None || light(f) {
+        let lods: &[(f64, f64)] = if cell.mode == CompareMode::None || light(cell.spec, f) {
             &[(1.0, 0.5)]
         } else {
-            &[(0.0, 0.5), (1.0, 0.5), (1.75, 0.6)]
+            &[(1.0, 0.5), (1.75, 0.6)]
         };
         for (lod, r) in lods {
             let mut lk = lookup(cell.target, base, w, h, *r);

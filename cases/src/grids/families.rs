@@ -35,10 +35,10 @@ fn one_texel(c: &Cell, v: Stored) -> Texture {
     texture(c, vec![build::level_exact(c.format, 1, 1, 1, &[v])])
 }
 
-/// R and Dt at and beyond the clamping edges: R in {-inf, -1e30, -0.1, 0, 0.5, 1, 1.1, 1e30, inf,
+/// R and Dt at and beyond the clamping edges: R in {-inf, -0.1, 0, 0.5, 1, 1.1, 1e30, inf,
 /// NaN} against Dt in {0, 0.5, 1}; for D32F also stored values outside [0,1] (the upload clamp).
 pub fn clamp(d: &SpecDims) -> Vec<Draft> {
-    const REFS: [f64; 10] = [f64::NEG_INFINITY, -1e30, -0.1, 0.0, 0.5, 1.0, 1.1, 1e30, f64::INFINITY, f64::NAN];
+    const REFS: [f64; 9] = [f64::NEG_INFINITY, -0.1, 0.0, 0.5, 1.0, 1.1, 1e30, f64::INFINITY, f64::NAN];
     let mut out = Vec::new();
     for fmt in clamp_formats(d) {
         let mut dts = vec![0.0, 0.5, 1.0];
@@ -271,7 +271,8 @@ pub fn layer(d: &SpecDims) -> Vec<Draft> {
     out
 }
 
-/// DEPTH_TEXTURE_MODE (default and each value) x format x func (and compare NONE), NEAREST 2D.
+/// DEPTH_TEXTURE_MODE (each value) x format x compare mode, NEAREST 2D, with the spec's first and
+/// last compare function (the mode only decides where r goes, not r itself).
 pub fn dtm(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     if d.dtms.is_empty() {
@@ -280,7 +281,7 @@ pub fn dtm(d: &SpecDims) -> Vec<Draft> {
     for &m in d.dtms {
         for &fmt in d.formats {
             for mode in [CompareMode::Compare, CompareMode::None] {
-                let funcs: Vec<CompareFunc> = if mode == CompareMode::None { vec![d.funcs[0]] } else { d.funcs.to_vec() };
+                let funcs: Vec<CompareFunc> = if mode == CompareMode::None { vec![d.funcs[0]] } else { vec![d.funcs[0], d.funcs[d.funcs.len() - 1]] };
                 for func in funcs {
                     let c = Cell { dtm: Some(m), mode, ..cell(d, Target::T2d, fmt, Filter::Nearest, func) };
                     let (tex, w, h, _) = pattern_texture(&c);

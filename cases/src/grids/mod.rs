@@ -61,14 +61,18 @@ fn default_drafts(seed: u64) -> Vec<Draft> {
         out.extend(families::clamp(&d));
         out.extend(families::exact(&d));
         out.extend(families::pcf(&d));
-        out.extend(families::mip(&d));
+        // The *_ambient variants differ from their base spec only in the fail value: they get the
+        // main product, the value families and `ambient`, not the sampling-geometry families again.
+        if !d.fail_value {
+            out.extend(families::mip(&d));
+            out.extend(families::cube(&d));
+            out.extend(families::layer(&d));
+            out.extend(families::incomplete(&d));
+            out.extend(families::proj(&d));
+        }
         out.extend(families::wrap(&d));
-        out.extend(families::cube(&d));
-        out.extend(families::layer(&d));
         out.extend(families::dtm(&d));
         out.extend(families::stencil(&d));
-        out.extend(families::incomplete(&d));
-        out.extend(families::proj(&d));
         out.extend(families::ambient(&d));
         out.extend(families::random(&d, seed, RANDOM_PER_SPEC));
     }

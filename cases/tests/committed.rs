@@ -1,0 +1,207 @@
+//! The committed fixtures (cases/fixtures), the JSON Schema and the README's coverage table agree
+//! with the generator.
+
+use shadowcheck_cases::coverage::{self, Coverage};
+use shadowcheck_cases::fixtures;
+use shadowcheck_cases::grids::{self, specs};
+use shadowcheck_model::*;
+use std::path::{Path, PathBuf};
+
+const FIX: &str = "cargo run --release -- gen --grid default -o cases/fixtures";
+
+fn crate_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+fn fixtures_dir() -> PathBuf {
+    crate_dir().join("fixtures")
+}
+
+fn schema() -> serde_json::Value {
+    let text = std::fs::read_to_string(crate_dir().join("schema/fixture.schema.json")).unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+#[test]
+fn default_grid_regenerates_byte_for_byte() {
+    let files = grids::generate("default", grids::DEFAULT_SEED).unwrap();
+    let dir = fixtures_dir();
+    let mut problems = Vec::new();
+    for (rel, f) in &files {
+        let want = fixtures::to_string(f).unwrap();
+        match std::fs::read_to_string(dir.join(rel)) {
+            Ok(have) if have == want => {}
+            Ok(_) => problems.push(format!("{rel}: differs")),
+            Err(e) => problems.push(format!("{rel}: {e}")),
+        }
+    }
+    let wanted = grids::paths(&files);
+    for p in fixtures::fixture_paths(&dir).unwrap_or_default() {
+        let rel = p.strip_prefix(&dir).unwrap().to_string_lossy().replace('\\', "/");
+        if !wanted.contains(rel.as_str()) {
+            problems.push(format!("{rel}: not produced by the generator (stale)"));
+        }
+    }
+    assert!(problems.is_empty(), "cases/fixtures is out of date; run `{FIX}`:\n{}", problems.join("\n"));
+}
+
+#[test]
+fn every_committed_fixture_matches_the_schema_and_loads() {
+    let validator = jsonschema::validator_for(&schema()).unwrap();
+    let paths = fixtures::fixture_paths(&fixtures_dir()).unwrap();
+    assert!(paths.len() > 50, "{} files", paths.len());
+    let mut cases = 0;
+    for p in &paths {
+        let text = std::fs::read_to_string(p).unwrap();
+        let value: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let errors: Vec<String> = validator.iter_errors(&value).take(5).map(|e| format!("{} at {}", e, e.instance_path())).collect();
+        assert!(errors.is_empty(), "{}: {}", p.display(), errors.join("\n"));
+        let f = fixtures::load_file(p).unwrap();
+        assert!(f.cases.iter().all(|c| c.expect.is_some()), "{}: a case without expectation", p.display());
+        cases += f.cases.len();
+    }
+    assert!((10_000..=40_000).contains(&cases), "{cases} cases");
+}
+
+#[test]
+fn committed_size_is_within_budget() {
+    let total: u64 = fixtures::fixture_paths(&fixtures_dir()).unwrap().iter().map(|p| std::fs::metadata(p).unwrap().len()).sum();
+    assert!(total <= 20 * 1024 * 1024, "{total} bytes committed (budget 20 MiB)");
+}
+
+#[test]
+fn schema_rejects_what_the_loader_rejects() {
+    let validator = jsonschema::validator_for(&schema()).unwrap();
+    let p = fixtures::fixture_paths(&fixtures_dir()).unwrap().remove(0);
+    let good: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap();
+    assert!(validator.is_valid(&good));
+    let edits: [(&str, fn(&mut serde_json::Value)); 6] = [
+        ("unknown enum", |v| v["cases"][0]["sampler"]["compare_func"] = "lequalish".into()),
+        ("wrong type", |v| v["cases"][0]["texture"]["levels"][0]["width"] = "4".into()),
+        ("absurd size", |v| v["cases"][0]["texture"]["levels"][0]["width"] = 100000.into()),
+        ("nan where a number is required", |v| v["cases"][0]["sampler"]["min_lod"] = "nan".into()),
+        ("unknown field", |v| v["cases"][0]["lookup"]["extra"] = 1.into()),
+        ("wrong version", |v| v["schema_version"] = 2.into()),
+    ];
+    for (what, edit) in edits {
+        let mut bad = good.clone();
+        edit(&mut bad);
+        assert!(!validator.is_valid(&bad), "schema accepts: {what}");
+    }
+    // Non-finite reals are written as strings where the model allows them.
+    let mut ok = good.clone();
+    ok["cases"][0]["lookup"]["dref"] = "-inf".into();
+    assert!(validator.is_valid(&ok));
+}
+
+/// The schema's enum lists are the model's keys (the schema is hand-written; this keeps it honest).
+#[test]
+fn schema_enums_match_the_model() {
+    let s = schema();
+    let keys = |name: &str| -> Vec<String> {
+        s["$defs"][name]["enum"].as_array().unwrap_or_else(|| panic!("no enum {name}")).iter().map(|v| v.as_str().unwrap().to_string()).collect()
+    };
+    fn all<T: Copy>(v: &[T], key: fn(T) -> &'static str) -> Vec<String> {
+        v.iter().map(|x| key(*x).to_string()).collect()
+    }
+    assert_eq!(keys("spec"), all(Spec::ALL, Spec::key));
+    assert_eq!(keys("api"), all(ApiPath::ALL, ApiPath::key));
+    assert_eq!(keys("compare_func"), all(CompareFunc::ALL, CompareFunc::key));
+    assert_eq!(keys("compare_mode"), all(CompareMode::ALL, CompareMode::key));
+    assert_eq!(keys("depth_texture_mode"), all(DepthTextureMode::ALL, DepthTextureMode::key));
+    assert_eq!(keys("depth_stencil_mode"), all(DepthStencilMode::ALL, DepthStencilMode::key));
+    assert_eq!(keys("filter"), all(Filter::ALL, Filter::key));
+    assert_eq!(keys("format"), all(Format::ALL, Format::key));
+    assert_eq!(keys("target"), all(Target::ALL, Target::key));
+    assert_eq!(keys("wrap"), all(Wrap::ALL, Wrap::key));
+    assert_eq!(keys("profile"), all(Profile::ALL, Profile::key));
+    assert_eq!(keys("channel"), all(Channel::ALL, Channel::key));
+}
+
+fn default_unfilled() -> Vec<Case> {
+    grids::unfilled("default", grids::DEFAULT_SEED).unwrap().into_iter().flat_map(|(_, f)| f.cases).collect()
+}
+
+/// For every spec, every target x format x filter x func (and compare NONE) the spec allows has
+/// cases in `default`.
+#[test]
+fn default_covers_every_allowed_combination() {
+    let cases = default_unfilled();
+    let cov = Coverage::of(&cases);
+    let missing = cov.missing();
+    assert!(missing.is_empty(), "{} empty cells, e.g. {:?}", missing.len(), &missing[..missing.len().min(10)]);
+    // And nothing outside what the spec allows.
+    for c in &cases {
+        let d = specs::dims(c.spec);
+        assert!(d.targets.contains(&c.texture.target), "{}", c.id);
+        assert!(d.formats.contains(&c.texture.format), "{}", c.id);
+        assert!(c.sampler.compare_mode == CompareMode::None || d.funcs.contains(&c.sampler.compare_func), "{}", c.id);
+        assert!(d.wraps.contains(&c.sampler.wrap_s) || c.sampler.wrap_s == Wrap::ClampToEdge, "{}", c.id);
+        assert!(specs::filter_allowed(c.texture.target, c.sampler.min_filter), "{}", c.id);
+    }
+}
+
+#[test]
+fn readme_coverage_table_is_current() {
+    let readme = std::fs::read_to_string(crate_dir().join("README.md")).unwrap();
+    let have = coverage::section(&readme).expect("coverage markers in cases/README.md");
+    let want = Coverage::of(&default_unfilled()).markdown();
+    assert!(
+        have.trim() == want.trim(),
+        "the coverage table in cases/README.md is out of date; run `cargo run --release -- gen --grid default -o cases/fixtures --update-readme cases/README.md`"
+    );
+}
+
+#[test]
+fn smoke_has_one_of_everything_in_under_1000_cases() {
+    let smoke: Vec<Case> = grids::unfilled("smoke", 0).unwrap().into_iter().flat_map(|(_, f)| f.cases).collect();
+    assert!(smoke.len() < 1000, "{}", smoke.len());
+    for d in specs::all() {
+        let of = |f: &dyn Fn(&Case) -> bool| smoke.iter().any(|c| c.spec == d.spec && f(c));
+        for t in d.targets {
+            assert!(of(&|c| c.texture.target == *t), "{} {t}", d.spec);
+        }
+        for fo in d.formats {
+            assert!(of(&|c| c.texture.format == *fo), "{} {fo}", d.spec);
+        }
+        for fi in d.filters {
+            assert!(of(&|c| c.sampler.min_filter == *fi), "{} {fi}", d.spec);
+        }
+        for fu in d.funcs {
+            assert!(of(&|c| c.sampler.compare_mode == CompareMode::Compare && c.sampler.compare_func == *fu), "{} {fu}", d.spec);
+        }
+        for w in d.wraps {
+            assert!(of(&|c| c.sampler.wrap_s == *w), "{} {w}", d.spec);
+        }
+    }
+}
+
+#[test]
+fn ids_are_readable_and_start_with_their_coordinates() {
+    for c in default_unfilled() {
+        let prefix = format!("{}/{}/{}/{}/", c.spec, c.texture.target, c.texture.format, c.sampler.min_filter);
+        assert!(c.id.starts_with(&prefix), "{}", c.id);
+        assert!(c.id.is_ascii() && !c.id.contains(' '), "{}", c.id);
+    }
+}
+
+#[test]
+fn seed_changes_only_the_random_family() {
+    let a = grids::unfilled("default", 0).unwrap();
+    let b = grids::unfilled("default", 7).unwrap();
+    let ids = |f: &[(String, fixtures::FixtureFile)]| -> Vec<String> { f.iter().flat_map(|(_, f)| f.cases.iter().map(|c| c.id.clone())).filter(|id| !id.contains("/rand/")).collect() };
+    assert!(ids(&a) == ids(&b), "seed changed ids outside the random family");
+    // Compare as text: NaN references make `==` on cases false.
+    let text = |f: &[(String, fixtures::FixtureFile)]| -> Vec<String> { f.iter().map(|(_, f)| fixtures::to_string(f).unwrap()).collect() };
+    assert!(text(&a) != text(&b), "the seed changed nothing");
+    assert!(text(&grids::unfilled("default", 7).unwrap()) == text(&b), "same seed, different output");
+}
+
+#[test]
+fn exhaustive_is_streamed_in_files_of_bounded_size() {
+    let mut chunks = grids::exhaustive::chunks();
+    let (rel, first) = chunks.next().unwrap();
+    assert_eq!(rel, "gl46/d16/always/00000.json");
+    assert_eq!(first.len(), grids::exhaustive::CHUNK as usize * 3);
+    assert_eq!(1 + chunks.count(), grids::exhaustive::len() / first.len());
+    let _ = Path::new(&rel);
+}
