@@ -192,6 +192,29 @@ fn layout_text(layout: &[Channel; 4]) -> String {
     layout.iter().map(|c| c.key()).collect::<Vec<_>>().join(",")
 }
 
+/// Which channels of `rgba` break the acceptance of `profile`, e.g. `g = 0 (expected r in {0.4})`.
+fn channel_misses(e: &Expectation, layout: &[Channel; 4], profile: Profile, rgba: [f64; 4]) -> String {
+    let acc = e.accept.get(&profile);
+    let mut out = vec![];
+    for ((name, ch), v) in ['r', 'g', 'b', 'a'].iter().zip(layout).zip(rgba) {
+        let ok = match ch {
+            Channel::R => acc.is_some_and(|a| a.contains(v)),
+            Channel::Zero => v == 0.0,
+            Channel::One => v == 1.0,
+            Channel::Unused => true,
+        };
+        if !ok {
+            let want = match ch {
+                Channel::R => format!("r in {}", acc.map(|a| a.to_string()).unwrap_or_default()),
+                Channel::Zero => "0".to_string(),
+                _ => "1".to_string(),
+            };
+            out.push(format!("{name} = {v} (expected {want})"));
+        }
+    }
+    out.join(", ")
+}
+
 fn summary(e: &Expectation, layout: &[Channel; 4], profile: Profile) -> ExpectedSummary {
     let get = |p| e.accept.get(&p).map(|a| a.to_string()).unwrap_or_else(|| "(none)".into());
     ExpectedSummary {
@@ -257,8 +280,10 @@ pub fn judge(case: &Case, api: shadowcheck_model::ApiPath, rgba: [f64; 4], store
     let mut reason = None;
     if outcome != Outcome::Pass {
         reason = Some(match judgement {
-            Judgement::LenientOnly => "inside the lenient acceptance set, outside strict".to_string(),
-            _ => "outside the lenient acceptance set".to_string(),
+            Judgement::LenientOnly => {
+                format!("inside the lenient acceptance set, outside strict: {}", channel_misses(&expect, &layout, Profile::Strict, rgba))
+            }
+            _ => format!("outside the lenient acceptance set: {}", channel_misses(&expect, &layout, Profile::Lenient, rgba)),
         });
         let ev = match evaluation {
             Some(ev) => Ok(ev),
@@ -275,6 +300,63 @@ pub fn judge(case: &Case, api: shadowcheck_model::ApiPath, rgba: [f64; 4], store
 #[cfg(test)]
 mod tests {
     use super::*;
+    use shadowcheck_model::*;
+    use std::collections::BTreeMap;
+
+    /// GL 4.6 core, 2x1 D16 texture (Dt = 0 and 1), NEAREST at the centre of texel 0, LEQUAL, Dref 0.5:
+    /// Table 8.23 gives r = 0 (0.5 <= 0 is false).
+    fn case(with_expect: bool) -> Case {
+        let expect = with_expect.then(|| {
+            let mut accept = BTreeMap::new();
+            accept.insert(Profile::Strict, Acceptance(vec![Interval::point(0.0)]));
+            accept.insert(Profile::Lenient, Acceptance(vec![Interval::new(0.0, 0.1)]));
+            let mut layout = BTreeMap::new();
+            layout.insert(ApiPath::GlslCore, [Channel::R, Channel::Unused, Channel::Unused, Channel::Unused]);
+            Expectation { spec_value: Some(0.0), accept, layout, implementation_defined: None, citations: vec![] }
+        });
+        Case {
+            id: "t".into(),
+            spec: Spec::Gl46,
+            api: vec![ApiPath::GlslCore],
+            texture: Texture {
+                target: Target::T2d,
+                format: Format::D16,
+                base_level: 0,
+                levels: vec![Level { width: 2, height: 1, layers: 1, depth: Texels::Unorm(vec![0, 65535]), stencil: None }],
+            },
+            sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
+            lookup: Lookup { coord: [0.25, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0 },
+            expect,
+        }
+    }
+
+    #[test]
+    fn judge_by_profile_and_layout() {
+        let c = case(true);
+        assert_eq!(judge(&c, ApiPath::GlslCore, [0.0, 7.0, 7.0, 7.0], None).outcome, Outcome::Pass);
+        let w = judge(&c, ApiPath::GlslCore, [0.05, 0.0, 0.0, 1.0], None);
+        assert_eq!(w.outcome, Outcome::Warn);
+        assert!(w.reason.unwrap().contains("r = 0.05 (expected r in {0})"));
+        let f = judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], None);
+        assert_eq!(f.outcome, Outcome::Fail);
+        assert_eq!(f.expected.unwrap().strict, "{0}");
+        // The oracle's footprint: texel (0,0,0), stored 0, failing the compare, weight 1.
+        let fp = f.footprint.expect("footprint from the oracle");
+        assert_eq!(fp.texels.len(), 1);
+        assert_eq!((fp.texels[0].xyz, fp.texels[0].pass, fp.texels[0].weight), (Some([0, 0, 0]), Some(false), 1.0));
+        assert_eq!(judge(&c, ApiPath::FixedFunction, [0.0; 4], None).outcome, Outcome::Skip);
+    }
+
+    #[test]
+    fn stored_texels_read_back_are_re_evaluated_by_the_oracle() {
+        // The implementation says it stored 65535 in texel 0: then LEQUAL 0.5 <= 1 passes, r = 1.
+        let c = case(true);
+        let stored = Texels::Unorm(vec![65535, 65535]);
+        assert_eq!(judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], Some(&stored)).outcome, Outcome::Pass);
+        assert_eq!(judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], None).outcome, Outcome::Fail);
+        // Without a stored expectation the oracle supplies one.
+        assert_eq!(judge(&case(false), ApiPath::GlslCore, [0.0, 0.0, 0.0, 1.0], None).outcome, Outcome::Pass);
+    }
 
     #[test]
     fn status_text_round_trips_like_deqp_runner() {
