@@ -28,10 +28,15 @@ pub fn transfer(format: Format) -> (i32, u32, u32, usize) {
     }
 }
 
-/// A 24-bit unorm integer as the 32-bit unorm integer that converts back to it exactly
-/// (bit replication: c * (2^32-1)/(2^24-1) rounded, the top byte repeated into the low byte).
+/// A 24-bit unorm integer as a 32-bit unorm integer that converts to it under every conversion a
+/// driver may use (GL 4.6 §2.3.5 allows either neighbour): the 32-bit value is c + 1/4 steps of
+/// 2^24-1 (c * (2^32-1)/(2^24-1) + (2^32-1)/(2^24-1)/4, rounded), so rounding and truncation both give c
+/// (Mesa truncates: plain bit replication stored 1..65535 as one less), and the low byte is
+/// clamped so that dropping it also gives c.
 fn widen24(c: u32) -> u32 {
-    (c << 8) | (c >> 16)
+    const R: f64 = 4294967295.0 / 16777215.0;
+    let low = ((c as f64 + 0.25) * R - 256.0 * c as f64).round().clamp(0.0, 255.0) as u32;
+    (c << 8) | low
 }
 
 /// The bytes to upload for one level.
@@ -227,14 +232,15 @@ mod tests {
     use super::*;
 
     #[test]
-    fn d24_widening_is_exact_under_round_to_nearest_and_shift() {
-        // GL 4.6 §2.3.5: f = c / (2^b - 1). The widened 32-bit integer must convert back to c both
-        // by rounding (exact conversion) and by dropping the low byte (what drivers do).
-        for c in [0u32, 1, 2, 0x7FFFFF, 0x800000, 0xFFFFFE, 0xFFFFFF, 12345678 & 0xFFFFFF] {
-            let u = widen24(c) as f64;
-            let back = (u / 4294967295.0 * 16777215.0).round() as u32;
-            assert_eq!(back, c, "round trip of {c}");
-            assert_eq!(widen24(c) >> 8, c);
+    fn d24_widening_is_exact_under_rounding_truncation_and_shift() {
+        // GL 4.6 §2.3.5: f = c / (2^b - 1); a driver may round or truncate c32 * (2^24-1)/(2^32-1),
+        // or drop the low byte. Every 24-bit value must survive all three (exact integer arithmetic).
+        let (m24, m32) = ((1u64 << 24) - 1, (1u64 << 32) - 1);
+        for c in (0..=m24 as u32).step_by(97).chain([1, 2, 65535, 0xFFFFFE, 0xFFFFFF]) {
+            let u = widen24(c) as u64;
+            assert_eq!(u * m24 / m32, c as u64, "truncating {c}");
+            assert!(2 * u * m24 < (2 * c as u64 + 1) * m32, "rounding {c}");
+            assert_eq!(u >> 8, c as u64, "dropping the low byte {c}");
         }
     }
 
