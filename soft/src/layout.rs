@@ -2,7 +2,10 @@
 //!
 //! - Float-returning shadow lookups (GLSL 1.30 `texture()`, GLSL ≥ 3.30 core, ES 1.00
 //!   `shadow2DEXT`, ES 3.00): Cb = (Rt, 0, 0, 1) and only Cs[0] is returned (GL 4.6 §11.1.3.5);
-//!   the harness writes the float to channel 0 and fills the rest with (0, 0, 1).
+//!   the harness writes the float to channel 0 and fills the rest with (0, 0, 1). Core and ES 3
+//!   non-shadow reads (compare NONE, colour, stencil) give the same (r, 0, 0, 1).
+//! - Non-shadow reads on the compatibility GLSL 1.30 path follow DEPTH_TEXTURE_MODE (below); on
+//!   ES 2.0 a depth texture reads as LUMINANCE (d, d, d, 1) (OES_depth_texture issue 2).
 //! - Vec4 paths (fixed function, ARB_fragment_program, GLSL 1.10/1.20 `shadow*()`): r goes to Lt,
 //!   It, At or Rt by DEPTH_TEXTURE_MODE (ARB_shadow 3.8.13.1; GL 4.6 compatibility §8.23.1) and
 //!   Table 16.1 (GL 2.1 Table 3.20) expands it: LUMINANCE (r,r,r,1), INTENSITY (r,r,r,r),
@@ -61,8 +64,21 @@ fn is_legacy(spec: Spec) -> bool {
 
 /// The layout of r on `api` for a texture of `kind` under `spec` with DEPTH_TEXTURE_MODE `mode`.
 pub fn resolve(spec: Spec, api: ApiPath, kind: Kind, mode: Option<DepthTextureMode>, faults: Faults) -> Result<Layout, SoftError> {
-    if is_float_path(api) {
+    // Shadow lookups on the float paths return a float. Compare mode NONE (and colour textures) are
+    // read through a matching non-shadow sampler, which returns a vec4: in a compatibility context
+    // (GLSL 1.30) laid out by DEPTH_TEXTURE_MODE like the legacy paths, and in ES 2.0 as
+    // LUMINANCE (d, d, d, 1) (OES_depth_texture issue 2).
+    let vec4 = match api {
+        ApiPath::FixedFunction | ApiPath::ArbFp | ApiPath::Glsl120 => true,
+        ApiPath::Glsl130 => kind != Kind::Compare,
+        ApiPath::Es100Ext => kind == Kind::Depth,
+        ApiPath::GlslCore | ApiPath::Es300 => false,
+    };
+    if !vec4 {
         return Ok(Layout::Float);
+    }
+    if spec == Spec::Es2Ext {
+        return Ok(Layout::Luminance);
     }
     match kind {
         Kind::Stencil => return Ok(Layout::Red),
@@ -129,6 +145,29 @@ mod tests {
             let l = resolve(Spec::Gl46, api, Kind::Compare, Some(DepthTextureMode::Alpha), F).unwrap();
             assert_eq!(l.apply(0.5), [0.5, 0.0, 0.0, 1.0]);
         }
+    }
+
+    #[test]
+    fn non_shadow_reads_on_compat_and_es2() {
+        // Compare NONE through GLSL 1.30 in a compatibility context: DEPTH_TEXTURE_MODE applies.
+        assert_eq!(
+            resolve(Spec::Gl46, ApiPath::Glsl130, Kind::Depth, None, F).unwrap(),
+            Layout::Luminance
+        );
+        assert_eq!(
+            resolve(Spec::Gl46, ApiPath::Glsl130, Kind::Compare, None, F).unwrap(),
+            Layout::Float
+        );
+        assert_eq!(resolve(Spec::Gl46, ApiPath::GlslCore, Kind::Depth, None, F).unwrap(), Layout::Float);
+        // ES 2.0: OES_depth_texture reads depth as (d, d, d, 1).
+        assert_eq!(
+            resolve(Spec::Es2Ext, ApiPath::Es100Ext, Kind::Depth, None, F).unwrap(),
+            Layout::Luminance
+        );
+        assert_eq!(
+            resolve(Spec::Es2Ext, ApiPath::Es100Ext, Kind::Compare, None, F).unwrap(),
+            Layout::Float
+        );
     }
 
     #[test]
