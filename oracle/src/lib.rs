@@ -18,6 +18,7 @@ pub mod check;
 pub mod contradictions;
 pub mod cube;
 mod engine;
+pub mod explain;
 pub mod es2_ext;
 pub mod ext_funcs;
 pub mod arb;

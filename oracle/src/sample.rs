@@ -39,6 +39,16 @@ pub struct Poss {
     pub two: bool,
 }
 
+impl std::fmt::Display for Key {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Key::Texel { level, x, y, layer } => write!(f, "texel ({x},{y}) layer {layer} level {level}"),
+            Key::Border { level } => write!(f, "border texel, level {level}"),
+            Key::Corner { level, .. } => write!(f, "cube corner texel (built from three), level {level}"),
+        }
+    }
+}
+
 impl Poss {
     fn point(v: f64) -> Poss {
         Poss { lo: v, hi: v, two: false }
@@ -248,7 +258,10 @@ impl TexelCtx<'_> {
                 for (i, p) in PROFILES.iter().enumerate() {
                     if let Some(bits) = p.ref_bits {
                         let mut o = strict;
-                        if (self.dref - dt).abs() <= (bits as f64).exp2().recip() || self.dref.is_nan() {
+                        // 0 and 1 survive every fixed-point quantization exactly: an exact tie there
+                        // is not within reference precision.
+                        let exact_end = exact_ord == Some(Ordering::Equal) && (dt == 0.0 || dt == 1.0);
+                        if ((self.dref - dt).abs() <= (bits as f64).exp2().recip() && !exact_end) || self.dref.is_nan() {
                             o = self.table(None);
                             o = (o.0 || strict.0, o.1 || strict.1);
                         }

@@ -1,9 +1,216 @@
-//! `shadowcheck explain` (being built).
+//! `shadowcheck explain`: what the specifications say about one case — spec value, acceptance per
+//! profile, layout per API path, derivation with section citations, footprint and the contradictions
+//! the case touches (with the value under the other reading).
+//!
+//! The case comes from flags (`--spec gl46 --format d24 --func lequal --filter nearest --ref 1.5 --dt 1.0`)
+//! or from a JSON file (`--case FILE`, a single case or a fixture file with `--id ID`).
+use anyhow::{bail, Context};
+use shadowcheck_model::*;
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// A JSON case file: one case, or a fixture file (`{"schema_version":1, ..., "cases":[...]}`) with --id.
+    #[arg(long, value_name = "FILE")]
+    case: Option<PathBuf>,
+    /// The case id inside a fixture file.
+    #[arg(long)]
+    id: Option<String>,
+    /// Print the oracle's Evaluation as JSON instead of text.
+    #[arg(long)]
+    json: bool,
+    /// Spec variant: sgix, sgix_ambient, arb, arb_ambient, ext_funcs, es2_ext, gl46, gles32.
+    #[arg(long, default_value = "gl46")]
+    spec: String,
+    /// Texture format: d16, d24, d32, d32f, d24s8, d32fs8, depth, r8.
+    #[arg(long, default_value = "d24")]
+    format: String,
+    /// Target: 1d, 2d, rect, cube, 1darray, 2darray, cubearray.
+    #[arg(long, default_value = "2d")]
+    target: String,
+    /// Compare function (lequal ... always; lequal_r_sgix / gequal_r_sgix). Default: the spec's LEQUAL.
+    #[arg(long)]
+    func: Option<String>,
+    /// Compare mode: compare or none.
+    #[arg(long, default_value = "compare")]
+    mode: String,
+    /// Minification filter (nearest, linear, nmn, lmn, nml, lml); the magnification filter follows it
+    /// unless --mag is given.
+    #[arg(long, default_value = "nearest")]
+    filter: String,
+    #[arg(long)]
+    mag: Option<String>,
+    /// Wrap mode for s, t and r: edge, repeat, mirror, border, mirror_edge, clamp.
+    #[arg(long, default_value = "edge")]
+    wrap: String,
+    /// Border depth (TEXTURE_BORDER_COLOR[0]).
+    #[arg(long, default_value_t = 0.0)]
+    border: f32,
+    /// The reference value Dref / R.
+    #[arg(long = "ref", default_value_t = 0.5, allow_negative_numbers = true)]
+    dref: f64,
+    /// Depth texel values (floats; unorm formats store the nearest integer). 1 → 1x1, 2 → 2x1, 4 → 2x2,
+    /// n → n x 1 (1D/2D/rect); one value per layer for arrays, per face for cube maps (6 per cube).
+    #[arg(long, value_delimiter = ',', num_args = 1.., default_values_t = vec![0.5], allow_negative_numbers = true)]
+    dt: Vec<f64>,
+    /// Stencil values (DEPTH_STENCIL formats), same layout as --dt.
+    #[arg(long, value_delimiter = ',', num_args = 1..)]
+    st: Vec<u8>,
+    /// Texture coordinates s,t,r,q. Default: the centre of the image (cube: +X direction).
+    #[arg(long, value_delimiter = ',', num_args = 1..=4, allow_negative_numbers = true)]
+    coord: Vec<f64>,
+    /// Array layer (cube arrays: the cube index).
+    #[arg(long, default_value_t = 0.0)]
+    layer: f64,
+    /// Projective lookup (coordinates and Dref divided by q).
+    #[arg(long)]
+    projective: bool,
+    /// λ_base (explicit level of detail).
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    lod: f64,
+    /// Shader bias.
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    bias: f64,
+    /// TEXTURE_COMPARE_FAIL_VALUE_ARB / SHADOW_AMBIENT_SGIX.
+    #[arg(long)]
+    fail: Option<f32>,
+    /// DEPTH_TEXTURE_MODE: luminance, intensity, alpha, red.
+    #[arg(long)]
+    depth_mode: Option<String>,
+    /// DEPTH_STENCIL_TEXTURE_MODE: depth or stencil.
+    #[arg(long)]
+    stencil_mode: Option<String>,
+    /// API paths (ff, arbfp, glsl120, glsl130, core, es100, es300). Default: one natural path of the spec.
+    #[arg(long, value_delimiter = ',', num_args = 1..)]
+    api: Vec<String>,
+}
 
-pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("`explain` is not built yet")
+fn key<T: std::str::FromStr>(s: &str) -> anyhow::Result<T>
+where
+    T::Err: std::fmt::Display,
+{
+    s.parse::<T>().map_err(|e| anyhow::anyhow!("{e}"))
+}
+
+fn default_api(spec: Spec, target: Target) -> ApiPath {
+    match spec {
+        Spec::Sgix | Spec::SgixAmbient | Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => ApiPath::FixedFunction,
+        Spec::Es2Ext => ApiPath::Es100Ext,
+        Spec::Gles32 => ApiPath::Es300,
+        Spec::Gl46 if target == Target::CubeArray => ApiPath::GlslCore,
+        Spec::Gl46 => ApiPath::GlslCore,
+    }
+}
+
+/// Builds a case from the flags.
+fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
+    let spec: Spec = key(&a.spec)?;
+    let format: Format = key(&a.format)?;
+    let target: Target = key(&a.target)?;
+    let func: CompareFunc = match &a.func {
+        Some(f) => key(f)?,
+        None if matches!(spec, Spec::Sgix | Spec::SgixAmbient) => CompareFunc::LequalRSgix,
+        None => CompareFunc::Lequal,
+    };
+    let filter: Filter = key(&a.filter)?;
+    let mut sampler = Sampler::new(key(&a.mode)?, func, filter);
+    if let Some(m) = &a.mag {
+        sampler.mag_filter = key(m)?;
+    }
+    let wrap: Wrap = key(&a.wrap)?;
+    (sampler.wrap_s, sampler.wrap_t, sampler.wrap_r) = (wrap, wrap, wrap);
+    sampler.border = [a.border, 0.0, 0.0, 0.0];
+    sampler.fail_value = a.fail;
+    sampler.depth_texture_mode = a.depth_mode.as_deref().map(key).transpose()?;
+    sampler.depth_stencil_mode = a.stencil_mode.as_deref().map(key).transpose()?;
+    let n = a.dt.len() as u32;
+    let (width, height, layers) = match target {
+        Target::T1d => (n, 1, 1),
+        Target::T2d | Target::Rect => match n {
+            4 => (2, 2, 1),
+            _ => (n, 1, 1),
+        },
+        Target::T1dArray | Target::T2dArray => (1, 1, n),
+        Target::Cube | Target::CubeArray => (1, 1, n.div_ceil(6).max(1) * 6),
+    };
+    let mut vals = a.dt.clone();
+    while (vals.len() as u32) < width * height * layers {
+        vals.push(*a.dt.last().unwrap_or(&0.5));
+    }
+    let depth = match format.unorm_bits() {
+        Some(b) => {
+            let m = ((1u64 << b) - 1) as f64;
+            Texels::Unorm(vals.iter().map(|v| (v.clamp(0.0, 1.0) * m).round() as u32).collect())
+        }
+        None => Texels::Float(vals.iter().map(|v| *v as f32).collect()),
+    };
+    let stencil = format.has_stencil().then(|| {
+        let mut s = a.st.clone();
+        s.resize(vals.len(), *a.st.last().unwrap_or(&0));
+        s
+    });
+    let mut coord = match target {
+        Target::Cube | Target::CubeArray => [1.0, 0.0, 0.0, 1.0],
+        Target::Rect => [width as f64 / 2.0, height as f64 / 2.0, 0.0, 1.0],
+        _ => [0.5, 0.5, 0.0, 1.0],
+    };
+    for (i, c) in a.coord.iter().enumerate() {
+        coord[i] = *c;
+    }
+    let api: Vec<ApiPath> = if a.api.is_empty() { vec![default_api(spec, target)] } else { a.api.iter().map(|s| key(s)).collect::<anyhow::Result<_>>()? };
+    let id = format!("explain/{}/{}/{}/{}/{}/ref={}/dt={}", spec, target, format, filter, func, a.dref, a.dt.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(","));
+    Ok(Case {
+        id,
+        spec,
+        api,
+        texture: Texture { target, format, base_level: 0, levels: vec![Level { width, height, layers, depth, stencil }] },
+        sampler,
+        lookup: Lookup { coord, layer: a.layer, dref: a.dref, projective: a.projective, lod: a.lod, bias: a.bias },
+        expect: None,
+    })
+}
+
+/// Reads a case from a JSON file: a single case, or a fixture file's case with the given id.
+fn case_from_file(path: &PathBuf, id: Option<&str>) -> anyhow::Result<Case> {
+    let text = std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let v: serde_json::Value = serde_json::from_str(&text).with_context(|| format!("parsing {}", path.display()))?;
+    if let Some(cases) = v.get("cases").and_then(|c| c.as_array()) {
+        let pick = match id {
+            Some(id) => cases.iter().find(|c| c.get("id").and_then(|i| i.as_str()) == Some(id)).with_context(|| format!("no case `{id}` in {}", path.display()))?,
+            None if cases.len() == 1 => &cases[0],
+            None => bail!("{} holds {} cases: choose one with --id", path.display(), cases.len()),
+        };
+        return serde_json::from_value(pick.clone()).with_context(|| format!("case in {}", path.display()));
+    }
+    serde_json::from_value(v).with_context(|| format!("{} is neither a case nor a fixture file", path.display()))
+}
+
+pub fn main(args: Args) -> anyhow::Result<ExitCode> {
+    let case = match &args.case {
+        Some(p) => case_from_file(p, args.id.as_deref())?,
+        None => case_from_flags(&args)?,
+    };
+    let result = shadowcheck_oracle::evaluate(&case);
+    if args.json {
+        let out = match &result {
+            Ok(ev) => serde_json::to_string_pretty(ev)?,
+            Err(e) => serde_json::to_string_pretty(&serde_json::json!({ "case": case.id, "error": e.to_string() }))?,
+        };
+        println!("{out}");
+    } else {
+        print!("{}", shadowcheck_oracle::explain::render(&case, &result));
+        if let Some(expect) = &case.expect {
+            if let Ok(ev) = &result {
+                if expect != &ev.expect {
+                    println!("note: the expectation stored in the file differs from the oracle's (regenerate the fixtures)");
+                }
+            }
+        }
+    }
+    Ok(match result {
+        Ok(_) => ExitCode::SUCCESS,
+        // A GL error or an undefined lookup is a valid answer, but not a lookup: exit 1.
+        Err(_) => ExitCode::from(1),
+    })
 }
