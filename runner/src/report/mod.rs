@@ -12,6 +12,7 @@
 //! The terminal reporter shows progress on stderr and the summary on stdout.
 
 pub mod csv;
+pub mod html;
 pub mod json;
 pub mod jsonl;
 pub mod junit;
