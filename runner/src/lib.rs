@@ -8,6 +8,7 @@ pub mod backend;
 pub mod baseline;
 pub mod events;
 pub mod gl;
+pub mod mutants;
 pub mod report;
 pub mod resume;
 pub mod run;

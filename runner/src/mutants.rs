@@ -1,0 +1,2 @@
+//! Mutation testing of the harness: the default fixtures against seeded faults of the soft unit
+//! (`shadowcheck mutants`). Being built.
