@@ -225,7 +225,7 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     let (mut passes, mut fails) = (0, 0);
     for &(i, weight) in &w {
         let t = &texels[i];
-        if let Some(u) = t.undefined {
+        if let (Some(u), true) = (t.undefined, weight > 0.0) {
             e.note(u);
         }
         if weight > 0.0 {

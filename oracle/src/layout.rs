@@ -44,7 +44,10 @@ pub fn layout(rules: &Rules, api: ApiPath, kind: Kind, mode: Option<DepthTexture
             (base, "GL 2.1 Table 3.20 / GL 4.6 Table 15.1 (colour texture, comparison bypassed)")
         }
         Kind::Compare | Kind::Depth => {
-            if legacy {
+            // GLSL 1.30 in a compatibility context reading a depth texture through a non-shadow sampler:
+            // compatibility §8.23.1 still routes r by DEPTH_TEXTURE_MODE (Table 16.1).
+            let compat_depth_read = api == ApiPath::Glsl130 && kind == Kind::Depth;
+            if legacy || compat_depth_read {
                 // GL 2.1 §3.8.14 / compatibility §8.23.1: "The resulting r is assigned to Rt, Lt, It, or At
                 // if the value of DEPTH_TEXTURE_MODE is respectively RED, LUMINANCE, INTENSITY, or ALPHA";
                 // Table 3.20 / 16.1 then give the source colour.
