@@ -159,7 +159,8 @@ pub struct ExpectedSummary {
     pub lenient: String,
     /// Channel layout of the API path (`r`, `0`, `1`, `-`).
     pub layout: String,
-    /// The profile that decided the verdict (`strict` for Pass, `lenient` for Warn and Fail).
+    /// The profile that decided the verdict (`lenient` for Warn and Fail: Warn is inside it, Fail
+    /// outside; only non-passing tests carry an expected summary).
     pub profile: Profile,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub citations: Vec<String>,
@@ -244,13 +245,13 @@ pub fn judge(case: &Case, api: shadowcheck_model::ApiPath, rgba: [f64; 4], store
         }
         _ => (case, None),
     };
-    let expect = match &subject.expect {
-        Some(e) => e.clone(),
+    let expect: std::borrow::Cow<'_, Expectation> = match &subject.expect {
+        Some(e) => std::borrow::Cow::Borrowed(e),
         None => match oracle_evaluate(subject) {
             Ok(ev) => {
                 let e = ev.expect.clone();
                 evaluation = Some(ev);
-                e
+                std::borrow::Cow::Owned(e)
             }
             Err(msg) => {
                 return Judged {
@@ -294,7 +295,10 @@ pub fn judge(case: &Case, api: shadowcheck_model::ApiPath, rgba: [f64; 4], store
             Err(msg) => reason = reason.map(|r| format!("{r} (no footprint: {msg})")),
         }
     }
-    Judged { outcome, reason, expected: Some(summary(&expect, &layout, profile)), footprint }
+    // What was expected is kept for the reports only where something is to be explained (the
+    // fixture has it for the rest), which keeps results.jsonl small and the pass path cheap.
+    let expected = (outcome != Outcome::Pass).then(|| summary(&expect, &layout, profile));
+    Judged { outcome, reason, expected, footprint }
 }
 
 #[cfg(test)]

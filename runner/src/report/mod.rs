@@ -67,7 +67,7 @@ pub fn dump(r: &TestResult, indent: &str) -> String {
     }
     if let Some(f) = &r.footprint {
         let _ = writeln!(s, "{indent}  footprint: Dref {} ({} texels)", num(f.dref), f.texels.len());
-        let _ = writeln!(s, "{indent}    {:<5} {:<16} {:<14} {:<20} {:<8} {}", "level", "texel x,y,layer", "stored", "Dt", "compare", "weight");
+        let _ = writeln!(s, "{indent}    level texel x,y,layer  stored         Dt                   compare  weight");
         for t in &f.texels {
             let xyz = t.xyz.map(|[x, y, z]| format!("{x},{y},{z}")).unwrap_or_else(|| "border".into());
             let pass = match t.pass {
@@ -104,7 +104,8 @@ pub struct Row {
 
 /// Counts by spec, compare func, filter and format (the dimensions of the summary tables).
 pub fn breakdown(results: &[TestResult]) -> Vec<(&'static str, BTreeMap<String, Row>)> {
-    let dims: [(&'static str, fn(&TestResult) -> &str); 4] = [
+    type Key = fn(&TestResult) -> &str;
+    let dims: [(&'static str, Key); 4] = [
         ("spec", |r| &r.tags.spec),
         ("func", |r| &r.tags.func),
         ("filter", |r| &r.tags.filter),
