@@ -207,10 +207,18 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
         if pi == 0 && picks.len() > 1 {
             many_picks = true;
         }
+        // Coordinates off by up to coord_tol texels of the base level (a NEAREST boundary may go either way).
+        let (w0, h0) = if tex.target == Target::Rect { (1.0, 1.0) } else { (l0.width as f64, l0.height as f64) };
+        let shifts: &[f64] = if prof.coord_tol > 0.0 { &[-1.0, 0.0, 1.0] } else { &[0.0] };
         for g in &geos {
-            for p in &picks {
-                let sc = build(&rules, case, &tcx, &mut texels, *g, *p);
-                accept::scen_intervals(&sc, &texels, pi, prof, fraction, &mut accept[pi]);
+            for ds in shifts {
+                for dt in shifts {
+                    let g = Geo { s: g.s + ds * prof.coord_tol / w0, t: g.t + dt * prof.coord_tol / h0, ..*g };
+                    for p in &picks {
+                        let sc = build(&rules, case, &tcx, &mut texels, g, *p);
+                        accept::scen_intervals(&sc, &texels, pi, prof, fraction, &mut accept[pi]);
+                    }
+                }
             }
         }
     }

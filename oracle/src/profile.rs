@@ -17,6 +17,8 @@ pub struct ProfileSpec {
     pub weight_tol: f64,
     /// λ may be off by this much (level selection and the mag/min switch).
     pub lod_tol: f64,
+    /// Texture coordinates may be off by this many texels (texel selection at a NEAREST boundary).
+    pub coord_tol: f64,
     /// Filtered results (more than one texel) are accepted anywhere between the smallest and largest
     /// possible value (the hull), including the unweighted pass fraction k/n.
     pub hull_filtered: bool,
@@ -29,16 +31,18 @@ pub const STRICT: ProfileSpec = ProfileSpec {
     ref_bits: None,
     weight_tol: 1.0 / 256.0,
     lod_tol: 0.0,
+    coord_tol: 0.0,
     hull_filtered: false,
 };
 
 /// `lenient`: dEQP-like. Reference precision 16 bits; a filtered result anywhere between the minimum
-/// and maximum pass fraction; weights within 2^-6; λ within 2^-6.
+/// and maximum pass fraction; weights within 2^-6; λ within 2^-6; coordinates within 2^-8 texel.
 pub const LENIENT: ProfileSpec = ProfileSpec {
     profile: Profile::Lenient,
     ref_bits: Some(16),
     weight_tol: 1.0 / 64.0,
     lod_tol: 1.0 / 64.0,
+    coord_tol: 1.0 / 256.0,
     hull_filtered: true,
 };
 
@@ -57,7 +61,7 @@ impl ProfileSpec {
     /// One line describing the profile, for `explain`.
     pub fn describe(&self) -> String {
         format!(
-            "{}: reference precision {}, weights ±{}, λ ±{}{}",
+            "{}: reference precision {}, weights ±{}, λ ±{}, coordinates ±{} texel{}",
             self.profile.key(),
             match self.ref_bits {
                 None => "f32 rounding only".to_string(),
@@ -65,6 +69,7 @@ impl ProfileSpec {
             },
             self.weight_tol,
             self.lod_tol,
+            self.coord_tol,
             if self.hull_filtered { ", filtered results: hull incl. pass fraction" } else { "" }
         )
     }
@@ -78,6 +83,7 @@ mod tests {
     fn lenient_is_looser_in_every_tolerance() {
         assert!(LENIENT.weight_tol >= STRICT.weight_tol);
         assert!(LENIENT.lod_tol >= STRICT.lod_tol);
+        assert!(LENIENT.coord_tol >= STRICT.coord_tol);
         assert!(STRICT.ref_bits.is_none() && LENIENT.ref_bits.is_some());
         assert!(LENIENT.hull_filtered && !STRICT.hull_filtered);
         assert_eq!(spec_of(Profile::Lenient), LENIENT);
