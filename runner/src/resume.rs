@@ -99,3 +99,28 @@ pub fn truncate_partial_line(path: &Path) -> Result<(), ResumeError> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_truncated_last_line_is_dropped_and_cut_before_appending() {
+        let dir = std::env::temp_dir().join(format!("shadowcheck-resume-unit-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let p = dir.join(RESULTS_FILE);
+        let meta = serde_json::to_string(&Line::Meta(RunMeta::new())).unwrap();
+        let err = serde_json::to_string(&Line::LoadError(LoadError { file: "f".into(), case: None, message: "m".into() })).unwrap();
+        std::fs::write(&p, format!("{meta}\n{err}\n{err}\n{{\"kind\":\"result\",\"back")).unwrap();
+        let prior = Prior::read(&p).unwrap();
+        assert_eq!(prior.meta, Some(RunMeta::new()));
+        assert_eq!(prior.load_errors.len(), 1, "duplicates collapse");
+        truncate_partial_line(&p).unwrap();
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), format!("{meta}\n{err}\n{err}\n"));
+        // A bad line in the middle is an error naming the line.
+        std::fs::write(&p, format!("{meta}\nnot json\n{err}\n")).unwrap();
+        let e = Prior::read(&p).unwrap_err().to_string();
+        assert!(e.starts_with(&format!("{}:2: ", p.display())), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

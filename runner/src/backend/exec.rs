@@ -78,6 +78,10 @@ pub fn split_command(s: &str) -> Result<Vec<String>, String> {
     Ok(out)
 }
 
+/// Time allowed for the hello, at least (a GL worker creates its context first; zink starts a
+/// Vulkan device).
+const HANDSHAKE_MIN: Duration = Duration::from_secs(30);
+
 /// Keeps the last lines a process wrote to stderr.
 type Tail = Arc<Mutex<VecDeque<String>>>;
 const TAIL_LINES: usize = 8;
@@ -235,8 +239,16 @@ impl ExecBackend {
 
     /// Makes sure a greeted process is running; returns its hello when it had to start one.
     fn ensure(&mut self) -> Result<Option<protocol::Hello>, String> {
-        if self.proc.is_some() {
-            return Ok(None);
+        if let Some(p) = self.proc.as_mut() {
+            // A process that exited between groups (after answering everything) is replaced before
+            // any case is sent, so its exit is not blamed on the next group.
+            match p.child.try_wait() {
+                Ok(None) => return Ok(None),
+                _ => {
+                    let how = self.kill_proc();
+                    self.push_diag(format!("{}: the implementation exited between groups ({how}); restarting", self.name));
+                }
+            }
         }
         let mut p = Proc::spawn(&self.cmd, &self.diags)?;
         self.spawns += 1;
@@ -245,11 +257,11 @@ impl ExecBackend {
             let how = p.kill();
             return Err(format!("handshake failed: {e} ({how})"));
         }
-        let line = match p.lines.recv_timeout(self.timeout) {
+        let line = match p.lines.recv_timeout(self.timeout.max(HANDSHAKE_MIN)) {
             Ok(l) => l,
             Err(RecvTimeoutError::Timeout) => {
                 let how = p.kill();
-                return Err(format!("no hello within {:?} ({how})", self.timeout));
+                return Err(format!("no hello within {:?} ({how})", self.timeout.max(HANDSHAKE_MIN)));
             }
             Err(RecvTimeoutError::Disconnected) => {
                 let how = p.kill();
