@@ -62,15 +62,35 @@ impl PreparedTexture {
     /// `st.complete` first (an incomplete texture returns 0 / (0,0,0,1), §11.1.3.5).
     #[inline]
     pub fn lookup(&self, st: &SamplerState, c: &Coords) -> f32 {
+        self.lookup_observed(st, c, &mut ())
+    }
+
+    /// [`PreparedTexture::lookup`] for many coordinates: `out[i]` = lookup of `coords[i]`
+    /// (`out` is truncated to the shorter of the two).
+    pub fn lookup_many(&self, st: &SamplerState, coords: &[Coords], out: &mut [f32]) {
+        for (o, c) in out.iter_mut().zip(coords) {
+            *o = self.lookup(st, c);
+        }
+    }
+
+    /// The lookup, reporting every texel it reads to `obs` (see [`Observer`]). With `()` as the
+    /// observer this is exactly [`PreparedTexture::lookup`] (the reporting compiles away).
+    pub fn lookup_observed<O: Observer>(&self, st: &SamplerState, c: &Coords, obs: &mut O) -> f32 {
+        if self.levels.is_empty() {
+            return 0.0;
+        }
         let lambda = lod::lambda(&st.lod, c.lambda_base, c.bias, st.faults);
         let choice = lod::choose(&st.lod, lambda, st.faults);
         let addr = self.address(st, c);
         let dref = if st.clamp.dref { clamp01(c.dref) } else { c.dref };
+        if O::ACTIVE {
+            obs.reference(dref);
+        }
         match choice {
-            LevelChoice::Single { level, linear } => self.sample_level(st, level, linear, &addr, dref),
+            LevelChoice::Single { level, linear } => self.sample_level(st, level, linear, &addr, dref, 1.0, obs),
             LevelChoice::Blend { d1, d2, frac, linear } => {
-                let t1 = self.sample_level(st, d1, linear, &addr, dref);
-                let t2 = self.sample_level(st, d2, linear, &addr, dref);
+                let t1 = self.sample_level(st, d1, linear, &addr, dref, 1.0 - frac, obs);
+                let t2 = self.sample_level(st, d2, linear, &addr, dref, frac, obs);
                 (1.0 - frac) * t1 + frac * t2
             }
         }
@@ -177,24 +197,53 @@ impl PreparedTexture {
         }
     }
 
-    /// Per-texel value at (i, j) of a cube face with seamless filtering: locations one texel past
-    /// an edge read the neighbouring face (§8.13.1); corners are handled by the caller.
-    #[inline]
-    fn fetch_seamless(&self, st: &SamplerState, l: &LevelDesc, face: u8, i: i64, j: i64, cube_base: u32) -> Option<f32> {
-        let (f, i, j) = cube::neighbour(face, i, j, l.width as i64)?;
-        Some(self.fetch(st, l, i, j, cube_base + f as u32))
+    /// Texel location (x, y, storage layer) of (i, j), or `None` for a border texel.
+    #[inline(always)]
+    fn loc(l: &LevelDesc, i: i64, j: i64, layer: u32) -> Option<[u32; 3]> {
+        (i >= 0 && j >= 0 && i < l.width as i64 && j < l.height as i64).then_some([i as u32, j as u32, layer])
+    }
+
+    /// Reports one texel to the observer.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn report<O: Observer>(&self, st: &SamplerState, obs: &mut O, level: u32, xyz: Option<[u32; 3]>, raw: f32, dref: f32, weight: f32) {
+        let dt = match st.kind {
+            Kind::Compare | Kind::Depth if st.clamp.dt => clamp01(raw),
+            _ => raw,
+        };
+        let pass = (st.kind == Kind::Compare && !st.faults.has(Fault::FilterThenCompare)).then(|| passes(st.op, dref, dt, st.faults));
+        obs.texel(TexelVisit {
+            level,
+            xyz,
+            raw,
+            dt,
+            pass,
+            weight,
+        });
     }
 
     /// NEAREST or LINEAR filtering within one level (§8.14.2), with PCF for comparisons.
-    fn sample_level(&self, st: &SamplerState, level: u32, linear: bool, a: &Address, dref: f32) -> f32 {
+    /// `scale` is the level's weight in the final value (for the observer only).
+    #[allow(clippy::too_many_arguments)]
+    fn sample_level<O: Observer>(
+        &self,
+        st: &SamplerState,
+        level: u32,
+        linear: bool,
+        a: &Address,
+        dref: f32,
+        scale: f32,
+        obs: &mut O,
+    ) -> f32 {
         let l = self.level_desc(st, level);
         let layer = self.storage_layer(l, a);
-        let rect = self.target() == Target::Rect;
+        let target = self.target();
+        let rect = target == Target::Rect;
         let (w, h) = (l.width, l.height);
         // Equation 8.10: u = w_s · s (rectangles: u = s).
         let u = if rect { a.s } else { a.s * w as f32 };
         let v = if rect { a.t } else { a.t * h as f32 };
-        let one_d = matches!(self.target(), Target::T1d | Target::T1dArray);
+        let one_d = matches!(target, Target::T1d | Target::T1dArray);
         let (ws, wt) = if st.seamless {
             (Wrap::ClampToEdge, Wrap::ClampToEdge)
         } else {
@@ -205,7 +254,11 @@ impl PreparedTexture {
         if !linear || f.has(Fault::LinearAsNearest) {
             let i = wrap::nearest(ws, u, w, f);
             let j = if one_d { 0 } else { wrap::nearest(wt, v, h, f) };
-            return self.resolve(st, self.fetch(st, l, i, j, layer), dref);
+            let raw = self.fetch(st, l, i, j, layer);
+            if O::ACTIVE {
+                self.report(st, obs, level, Self::loc(l, i, j, layer), raw, dref, scale);
+            }
+            return self.resolve(st, raw, dref);
         }
 
         // LINEAR: i0, i1, α and j0, j1, β (§8.14.2); seamless cubes use CLAMP_TO_BORDER and then
@@ -217,26 +270,22 @@ impl PreparedTexture {
         };
         let (i0, i1, alpha) = wrap::linear(ls, u, w, f);
         let (j0, j1, beta) = if one_d { (0, 0, 0.0) } else { wrap::linear(lt, v, h, f) };
-        let raw: [f32; 4];
+        let mut pos = [(i0, j0, layer), (i1, j0, layer), (i0, j1, layer), (i1, j1, layer)];
         let mut missing = None;
         if let (true, Some(face)) = (st.seamless, a.face) {
             let base = layer - face as u32;
-            let pos = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
-            let mut r = [0.0f32; 4];
-            for (k, &(i, j)) in pos.iter().enumerate() {
-                match self.fetch_seamless(st, l, face, i, j, base) {
-                    Some(x) => r[k] = x,
+            for (k, p) in pos.iter_mut().enumerate() {
+                match cube::neighbour(face, p.0, p.1, l.width as i64) {
+                    Some((nf, ni, nj)) => *p = (ni, nj, base + nf as u32),
                     None => missing = Some(k),
                 }
             }
-            raw = r;
-        } else {
-            raw = [
-                self.fetch(st, l, i0, j0, layer),
-                self.fetch(st, l, i1, j0, layer),
-                self.fetch(st, l, i0, j1, layer),
-                self.fetch(st, l, i1, j1, layer),
-            ];
+        }
+        let mut raw = [0.0f32; 4];
+        for k in 0..4 {
+            if missing != Some(k) {
+                raw[k] = self.fetch(st, l, pos[k].0, pos[k].1, pos[k].2);
+            }
         }
         let weights = [
             (1.0 - alpha) * (1.0 - beta),
@@ -244,6 +293,17 @@ impl PreparedTexture {
             (1.0 - alpha) * beta,
             alpha * beta,
         ];
+        if O::ACTIVE {
+            for k in 0..4 {
+                if missing == Some(k) {
+                    continue;
+                }
+                // A missing corner's weight is shared equally by the other three texels.
+                let wk = weights[k] + missing.map_or(0.0, |m| weights[m] / 3.0);
+                let (i, j, ly) = pos[k];
+                self.report(st, obs, level, Self::loc(l, i, j, ly), raw[k], dref, wk * scale);
+            }
+        }
 
         if st.kind == Kind::Compare && f.has(Fault::FilterThenCompare) {
             let mut d = [0.0f32; 4];
@@ -267,5 +327,56 @@ impl PreparedTexture {
             vals[m] = (vals.iter().sum::<f32>() - vals[m]) / 3.0;
         }
         weights[0] * vals[0] + weights[1] * vals[1] + weights[2] * vals[2] + weights[3] * vals[3]
+    }
+}
+
+/// One texel a lookup read (see [`Observer`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TexelVisit {
+    /// Absolute mip level.
+    pub level: u32,
+    /// (x, y, storage layer); `None` for a border texel.
+    pub xyz: Option<[u32; 3]>,
+    /// The stored value as prepared (f32 after conversion), or the border value.
+    pub raw: f32,
+    /// Dt after the spec's clamping (depth kinds), else `raw`.
+    pub dt: f32,
+    /// The texel's comparison outcome (`None` when no per-texel comparison is made).
+    pub pass: Option<bool>,
+    /// Its weight in r (bilinear weight × level blend weight; corner shares folded in).
+    pub weight: f32,
+}
+
+/// Receives what one lookup does, for footprints and failure dumps. `()` observes nothing and
+/// costs nothing (`ACTIVE = false` removes the reporting code).
+pub trait Observer {
+    const ACTIVE: bool;
+    /// The reference value after the projective divide and clamping.
+    fn reference(&mut self, dref: f32);
+    fn texel(&mut self, t: TexelVisit);
+}
+
+impl Observer for () {
+    const ACTIVE: bool = false;
+    #[inline(always)]
+    fn reference(&mut self, _: f32) {}
+    #[inline(always)]
+    fn texel(&mut self, _: TexelVisit) {}
+}
+
+/// Collects the visits of one lookup.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Trace {
+    pub dref: f32,
+    pub texels: Vec<TexelVisit>,
+}
+
+impl Observer for Trace {
+    const ACTIVE: bool = true;
+    fn reference(&mut self, dref: f32) {
+        self.dref = dref;
+    }
+    fn texel(&mut self, t: TexelVisit) {
+        self.texels.push(t);
     }
 }

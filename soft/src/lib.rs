@@ -33,12 +33,12 @@ pub mod wrap;
 mod tests;
 
 pub use faults::{Fault, Faults};
-pub use filter::Coords;
+pub use filter::{Coords, Observer, TexelVisit, Trace};
 pub use layout::Layout;
 pub use sampler::{Kind, SamplerState};
 pub use storage::PreparedTexture;
 
-use shadowcheck_model::{ApiPath, Case, CompareFunc, Format, Lookup, Spec, Target, Wrap};
+use shadowcheck_model::{ApiPath, Case, CompareFunc, Footprint, FootprintTexel, Format, Lookup, Spec, Target, Texels, Wrap};
 
 /// Why the unit gives no result for a case. Every variant is a reason suitable for a Skip.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -277,6 +277,61 @@ impl SoftUnit {
             return Ok(layout::INCOMPLETE);
         }
         Ok(lay.apply(tex.lookup(st, c)))
+    }
+}
+
+impl SoftUnit {
+    /// The texels this unit reads for `case` (path-independent), as a model [`Footprint`] for
+    /// failure dumps: level relative to the base, (x, y, layer) or `None` for the border, the
+    /// stored value as written in the case (the unorm integer, or the float), Dt after clamping,
+    /// the per-texel outcome and the weight. An incomplete texture reads nothing (empty list).
+    pub fn footprint(&self, case: &Case) -> Result<Footprint, SoftError> {
+        let mut tex = PreparedTexture::default();
+        let (st, coords) = self.prepare_case(case, &mut tex)?;
+        let mut trace = Trace::default();
+        if st.complete {
+            tex.lookup_observed(&st, &coords, &mut trace);
+        } else {
+            trace.dref = if st.clamp.dref {
+                storage::clamp01(coords.dref)
+            } else {
+                coords.dref
+            };
+        }
+        let base = case.texture.base_level;
+        let texels = trace
+            .texels
+            .iter()
+            .map(|t| {
+                let rel = t.level.saturating_sub(base);
+                let stored = match t.xyz {
+                    None => t.raw as f64,
+                    Some([x, y, layer]) => {
+                        let lvl = case.texture.levels.get(rel as usize);
+                        lvl.map_or(t.raw as f64, |l| {
+                            let i = ((layer * l.height + y) * l.width + x) as usize;
+                            match (&l.depth, st.kind) {
+                                (_, Kind::Stencil) => l.stencil.as_ref().and_then(|s| s.get(i)).map_or(0.0, |&v| v as f64),
+                                (Texels::Unorm(v), _) => v.get(i).map_or(0.0, |&c| c as f64),
+                                (Texels::Float(v), _) => v.get(i).map_or(0.0, |&d| d as f64),
+                            }
+                        })
+                    }
+                };
+                FootprintTexel {
+                    level: rel,
+                    xyz: t.xyz,
+                    stored,
+                    dt: t.dt as f64,
+                    pass: t.pass,
+                    weight: t.weight as f64,
+                }
+            })
+            .collect();
+        Ok(Footprint {
+            dref: trace.dref as f64,
+            texels,
+        })
     }
 }
 

@@ -59,7 +59,18 @@ impl PreparedTexture {
         self.data.reserve(total);
         let has_stencil = tex.format.has_stencil() && tex.levels.iter().all(|l| l.stencil.is_some());
         let bits = tex.format.unorm_bits();
+        if tex.levels.is_empty() {
+            return Err(SoftError::Invalid("texture has no levels".into()));
+        }
         for lvl in &tex.levels {
+            // The lookup indexes without further checks, so the structure is checked here even for
+            // textures that did not go through `validate`.
+            if lvl.width == 0 || lvl.height == 0 || lvl.layers == 0 {
+                return Err(SoftError::Invalid("level with a zero dimension".into()));
+            }
+            if tex.target.is_cube() && (lvl.width != lvl.height || lvl.layers % 6 != 0) {
+                return Err(SoftError::Invalid("cube levels must be square with 6 faces per cube".into()));
+            }
             let n = lvl.texel_count();
             if lvl.depth.len() != n {
                 return Err(SoftError::Invalid(format!("level has {} values for {} texels", lvl.depth.len(), n)));
@@ -233,6 +244,14 @@ mod tests {
     #[test]
     fn mismatched_texel_kind_is_an_error() {
         let t = tex(Format::D32f, vec![lvl(1, 1, Texels::Unorm(vec![0]))]);
+        assert!(PreparedTexture::new(&t, Faults::NONE).is_err());
+    }
+
+    #[test]
+    fn malformed_structure_is_an_error() {
+        assert!(PreparedTexture::new(&tex(Format::D16, vec![]), Faults::NONE).is_err());
+        let mut t = tex(Format::D16, vec![lvl(2, 2, Texels::Unorm(vec![0; 4]))]);
+        t.target = Target::Cube;
         assert!(PreparedTexture::new(&t, Faults::NONE).is_err());
     }
 

@@ -220,3 +220,24 @@ fn wrap_modes_end_to_end() {
     ));
     assert_eq!(SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::FixedFunction).unwrap(), [1.0; 4]);
 }
+
+#[test]
+fn footprint_weights_sum_to_one() {
+    // Trilinear between two levels, and a seamless cube corner (three texels share the fourth's weight).
+    let mut c = mip_case(Filter::LinearMipmapLinear, [0, 65535, 0]);
+    c.lookup.lod = 0.25;
+    c.lookup.coord = [0.3, 0.6, 0.0, 1.0];
+    let fp = SoftUnit::new(Spec::Gl46).footprint(&c).unwrap();
+    assert_eq!(fp.texels.len(), 8);
+    let sum: f64 = fp.texels.iter().map(|t| t.weight).sum();
+    assert!((sum - 1.0).abs() < 1e-6, "{sum}");
+    assert!(fp.texels[..4].iter().all(|t| t.level == 0) && fp.texels[4..].iter().all(|t| t.level == 1));
+    let mut c = cube_case(Spec::Gles32, 2, [0, 0, 0, 0, 65535, 0]);
+    c.sampler.min_filter = Filter::Linear;
+    c.sampler.mag_filter = Filter::Linear;
+    c.lookup.coord = [1.0, 0.9, 0.9, 1.0]; // near the +X/+Y/+Z corner
+    let fp = SoftUnit::new(Spec::Gles32).footprint(&c).unwrap();
+    assert_eq!(fp.texels.len(), 3);
+    let sum: f64 = fp.texels.iter().map(|t| t.weight).sum();
+    assert!((sum - 1.0).abs() < 1e-6, "{sum}");
+}

@@ -378,3 +378,39 @@ fn compare_none_returns_filtered_depth() {
     let got = SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::FixedFunction).unwrap();
     assert!(got.iter().all(|v| (v - 0.4).abs() < 1e-6), "{got:?}");
 }
+
+#[test]
+fn footprint_reports_texels_weights_and_outcomes() {
+    // The PCF case of `linear_pcf_weights`: α = 0.75, β = 0.25 over [1, 0; 0, 1] with LEQUAL 0.5.
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        2,
+        2,
+        vec![65535, 0, 0, 65535],
+        CompareFunc::Lequal,
+        Filter::Linear,
+    );
+    c.lookup.coord = [0.625, 0.375, 0.0, 1.0];
+    let fp = SoftUnit::new(Spec::Gl46).footprint(&c).unwrap();
+    assert_eq!(fp.dref, 0.5f32 as f64);
+    type Row = (Option<[u32; 3]>, f64, Option<bool>, f64);
+    let got: Vec<Row> = fp.texels.iter().map(|t| (t.xyz, t.stored, t.pass, t.weight)).collect();
+    assert_eq!(
+        got,
+        vec![
+            (Some([0, 0, 0]), 65535.0, Some(true), 0.1875),
+            (Some([1, 0, 0]), 0.0, Some(false), 0.5625),
+            (Some([0, 1, 0]), 0.0, Some(false), 0.0625),
+            (Some([1, 1, 0]), 65535.0, Some(true), 0.1875),
+        ]
+    );
+    // Border texels have no location; trilinear weights include the level blend.
+    let mut c = case2d(Spec::Gl46, Format::D16, 2, 1, vec![0, 0], CompareFunc::Lequal, Filter::Nearest);
+    c.sampler.wrap_s = Wrap::ClampToBorder;
+    c.sampler.border = [1.0, 0.0, 0.0, 0.0];
+    c.lookup.coord[0] = 1.5;
+    let fp = SoftUnit::new(Spec::Gl46).footprint(&c).unwrap();
+    assert_eq!(fp.texels.len(), 1);
+    assert_eq!((fp.texels[0].xyz, fp.texels[0].dt, fp.texels[0].pass), (None, 1.0, Some(true)));
+}
