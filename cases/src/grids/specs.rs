@@ -127,9 +127,10 @@ pub fn filter_allowed(target: Target, filter: Filter) -> bool {
 ///   (SHADOW1D/2D/RECT) and GLSL 1.10/1.20 `shadow1D/2D/2DRect` (vec4 by DEPTH_TEXTURE_MODE). GLSL 1.30
 ///   is GL 3.0, whose rules (no clamp for float depth, RED mode) are the `gl46` variant's.
 /// - ES 2.0 + EXT_shadow_samplers: GLSL ES 1.00 `shadow2DEXT`.
-/// - GL 3.0-4.6: core GLSL for every target; in a compatibility context GLSL 1.30 (no rectangle or
-///   cube-array shadow samplers), GLSL 1.20 and fixed function (1D, 2D, rectangle only: cube maps
-///   use s,t,r for the direction, leaving no R). DEPTH_TEXTURE_MODE and CLAMP exist only in the
+/// - GL 3.0-4.6: core GLSL for every target; in a compatibility context GLSL 1.30 (every target but
+///   cube arrays, which need GLSL 4.00), GLSL 1.20 (1D, 2D, rectangle) and fixed function (1D, 2D,
+///   rectangle, and cube maps, whose Dref is the q coordinate: GL 4.6 compatibility §8.23.1). ARB
+///   fragment programs are left to the legacy variants. DEPTH_TEXTURE_MODE and CLAMP exist only in the
 ///   compatibility profile, so cases setting them leave out `core`; stencil texturing needs an
 ///   integer sampler (GLSL 4.30+), so it is `core` only.
 /// - ES 3.x: GLSL ES 3.00.
@@ -149,11 +150,13 @@ pub fn apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
                 return vec![A::GlslCore];
             }
             let mut v = Vec::new();
-            if legacy_target {
+            if legacy_target || target == T::Cube {
                 v.push(A::FixedFunction);
+            }
+            if legacy_target {
                 v.push(A::Glsl120);
             }
-            if !matches!(target, T::Rect | T::CubeArray) {
+            if !matches!(target, T::CubeArray) {
                 v.push(A::Glsl130);
             }
             if !compat_only {

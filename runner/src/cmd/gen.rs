@@ -1,9 +1,126 @@
-//! `shadowcheck gen` (being built).
+//! `shadowcheck gen`: generates the fixtures of a named grid with the oracle's expectations, prints
+//! the coverage table and the total size.
+//!
+//! `shadowcheck gen --grid default -o cases/fixtures` regenerates the committed fixtures;
+//! `--check` compares with the files in the output folder instead of writing (exit 1 on a difference).
+use anyhow::Context;
+use shadowcheck_cases::{coverage::Coverage, fixtures, grids};
+use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::Instant;
 
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// The grid: smoke (one of everything, < 1000 cases), default (committed under cases/fixtures),
+    /// exhaustive (every D16 value x 3 refs x 8 funcs, 1.5 M cases, written file by file).
+    #[arg(long, default_value = "default")]
+    grid: String,
+    /// Seed of the seeded random family (the committed fixtures use 0).
+    #[arg(long, default_value_t = grids::DEFAULT_SEED)]
+    seed: u64,
+    /// Output folder. Default: cases/fixtures for `default`, target/fixtures/<grid> otherwise.
+    #[arg(short = 'o', long)]
+    out: Option<PathBuf>,
+    /// Compare the generated files with those in the output folder instead of writing them.
+    #[arg(long)]
+    check: bool,
+    /// Also rewrite the coverage section of this README (between the coverage markers).
+    #[arg(long, value_name = "README")]
+    update_readme: Option<PathBuf>,
+    /// Do not print the per-spec coverage tables (only the summary).
+    #[arg(long)]
+    summary_only: bool,
+}
 
-pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("`gen` is not built yet")
+pub fn main(args: Args) -> anyhow::Result<ExitCode> {
+    if !grids::names().contains(&args.grid.as_str()) {
+        anyhow::bail!("unknown grid `{}` (known: {})", args.grid, grids::names().join(", "));
+    }
+    let out = args.out.clone().unwrap_or_else(|| match args.grid.as_str() {
+        "default" => PathBuf::from("cases/fixtures"),
+        g => PathBuf::from("target/fixtures").join(g),
+    });
+    let start = Instant::now();
+    let mut bytes = 0usize;
+    let mut nfiles = 0usize;
+    let mut differ: Vec<String> = Vec::new();
+    let mut all_cases = Vec::new();
+    let mut written: Vec<(String, fixtures::FixtureFile)> = Vec::new();
+    let streaming = args.grid == "exhaustive";
+    let mut coverage = Coverage::default();
+    grids::for_each_file(&args.grid, args.seed, |rel, file| {
+        let text = fixtures::to_string(&file).map_err(|e| fixtures::FixtureError::Write { file: out.join(&rel), source: std::io::Error::other(e) })?;
+        bytes += text.len();
+        nfiles += 1;
+        if args.check {
+            let path = out.join(&rel);
+            if std::fs::read_to_string(&path).ok().as_deref() != Some(text.as_str()) {
+                differ.push(rel.clone());
+            }
+        }
+        if streaming {
+            let cov = Coverage::of(&file.cases);
+            for (k, n) in cov.counts {
+                *coverage.counts.entry(k).or_default() += n;
+            }
+            coverage.total += cov.total;
+            if !args.check {
+                fixtures::write_dir(&out, &[(rel, file)])?;
+            }
+        } else {
+            all_cases.extend(file.cases.iter().cloned());
+            written.push((rel, file));
+        }
+        Ok(())
+    })
+    .with_context(|| format!("generating grid `{}`", args.grid))?;
+    let gen_time = start.elapsed();
+    if !streaming {
+        coverage = Coverage::of(&all_cases);
+        if args.check {
+            if let Ok(existing) = fixtures::fixture_paths(&out) {
+                let wanted = grids::paths(&written);
+                for p in existing {
+                    let rel = p.strip_prefix(&out).unwrap_or(&p).to_string_lossy().replace('\\', "/");
+                    if !wanted.contains(rel.as_str()) {
+                        differ.push(format!("{rel} (stale)"));
+                    }
+                }
+            }
+        } else {
+            fixtures::write_dir(&out, &written).with_context(|| format!("writing {}", out.display()))?;
+        }
+    }
+    if !args.summary_only && !streaming {
+        println!("{}", coverage.markdown());
+    }
+    print!("{}", coverage.summary());
+    let missing = coverage.missing();
+    if args.grid == "default" && !missing.is_empty() {
+        println!("{} allowed spec x target x format x filter x func combinations have no case", missing.len());
+    }
+    if let Some(readme) = &args.update_readme {
+        let text = std::fs::read_to_string(readme).with_context(|| format!("reading {}", readme.display()))?;
+        let new = shadowcheck_cases::coverage::replace_section(&text, &coverage.markdown()).with_context(|| format!("{}: no coverage markers", readme.display()))?;
+        std::fs::write(readme, new).with_context(|| format!("writing {}", readme.display()))?;
+    }
+    println!(
+        "grid `{}` seed {}: {} cases in {} files, {} bytes ({:.1} MiB), generated in {:.2} s -> {}",
+        args.grid,
+        args.seed,
+        coverage.total,
+        nfiles,
+        bytes,
+        bytes as f64 / (1024.0 * 1024.0),
+        gen_time.as_secs_f64(),
+        out.display()
+    );
+    if args.check && !differ.is_empty() {
+        for d in &differ {
+            eprintln!("differs: {}", out.join(d).display());
+        }
+        eprintln!("{} file(s) differ; regenerate with `cargo run --release -- gen --grid {} -o {}`", differ.len(), args.grid, out.display());
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
 }
