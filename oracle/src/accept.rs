@@ -23,7 +23,11 @@ impl Taps {
         match *self {
             Taps::One(i) => ([i, 0, 0, 0], [1.0, 0.0, 0.0, 0.0], 1),
             Taps::Lin1([i0, i1], _) => ([i0, i1, 0, 0], [1.0 - a, a, 0.0, 0.0], 2),
-            Taps::Lin2(t, _, _) => (t, [(1.0 - a) * (1.0 - b), a * (1.0 - b), (1.0 - a) * b, a * b], 4),
+            Taps::Lin2(t, _, _) => (
+                t,
+                [(1.0 - a) * (1.0 - b), a * (1.0 - b), (1.0 - a) * b, a * b],
+                4,
+            ),
         }
     }
     fn ab(&self) -> (f64, f64) {
@@ -101,8 +105,14 @@ fn blend(s: &Scen, tol: f64, r1: (f64, f64), r2: Option<(f64, f64)>) -> Interval
         Some(r2) => {
             // "τ = [1 − frac(λ)]τ1 + frac(λ)τ2": linear in f, extremes at the ends of its range.
             let fs = [(s.f_lo - tol).max(0.0), (s.f_hi + tol).min(1.0)];
-            let lo = fs.iter().map(|f| (1.0 - f) * r1.0 + f * r2.0).fold(f64::INFINITY, f64::min);
-            let hi = fs.iter().map(|f| (1.0 - f) * r1.1 + f * r2.1).fold(f64::NEG_INFINITY, f64::max);
+            let lo = fs
+                .iter()
+                .map(|f| (1.0 - f) * r1.0 + f * r2.0)
+                .fold(f64::INFINITY, f64::min);
+            let hi = fs
+                .iter()
+                .map(|f| (1.0 - f) * r1.1 + f * r2.1)
+                .fold(f64::NEG_INFINITY, f64::max);
             Interval::new(lo, hi)
         }
     }
@@ -114,11 +124,23 @@ const MAX_ENUMERATED: usize = 10;
 /// Appends the intervals `prof` accepts for one scenario. `fraction`: the spec leaves filtered r
 /// "implementation-dependent ... proportional to the number of passes", so the lenient hull also takes
 /// in the unweighted pass fraction.
-pub fn scen_intervals(s: &Scen, texels: &[TexelEval], pi: usize, prof: &ProfileSpec, fraction: bool, out: &mut Vec<Interval>) {
+pub fn scen_intervals(
+    s: &Scen,
+    texels: &[TexelEval],
+    pi: usize,
+    prof: &ProfileSpec,
+    fraction: bool,
+    out: &mut Vec<Interval>,
+) {
     let poss = |i: usize| texels[i].poss[pi];
     let hull = |i: usize| (poss(i).lo, poss(i).hi);
     let mut amb: Vec<usize> = Vec::new();
-    for t in s.a.1.texels().iter().chain(s.b.iter().flat_map(|b| b.1.texels())) {
+    for t in
+        s.a.1
+            .texels()
+            .iter()
+            .chain(s.b.iter().flat_map(|b| b.1.texels()))
+    {
         if poss(*t).two && !amb.contains(t) {
             amb.push(*t);
         }
@@ -140,7 +162,11 @@ pub fn scen_intervals(s: &Scen, texels: &[TexelEval], pi: usize, prof: &ProfileS
     for mask in 0u32..(1u32 << amb.len()) {
         let val = |i: usize| match amb.iter().position(|a| *a == i) {
             Some(k) => {
-                let v = if mask >> k & 1 == 1 { poss(i).hi } else { poss(i).lo };
+                let v = if mask >> k & 1 == 1 {
+                    poss(i).hi
+                } else {
+                    poss(i).lo
+                };
                 (v, v)
             }
             None => hull(i),

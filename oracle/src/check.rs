@@ -10,7 +10,9 @@ use shadowcheck_model::{ApiPath, Case, Filter, Format, Spec, Target, Wrap};
 /// The context an API path runs in.
 pub fn ctx_of(api: ApiPath) -> Ctx {
     match api {
-        ApiPath::FixedFunction | ApiPath::ArbFp | ApiPath::Glsl120 | ApiPath::Glsl130 => Ctx::Compat,
+        ApiPath::FixedFunction | ApiPath::ArbFp | ApiPath::Glsl120 | ApiPath::Glsl130 => {
+            Ctx::Compat
+        }
         ApiPath::GlslCore => Ctx::Core,
         ApiPath::Es100Ext | ApiPath::Es300 => Ctx::Es,
     }
@@ -36,11 +38,20 @@ pub fn api_targets(api: ApiPath) -> &'static [Target] {
 }
 
 fn gl_error(case: &Case, rules: &Rules, e: GlErrorKind, why: String) -> OracleError {
-    OracleError::GlError { case: case.id.clone(), spec: rules.doc.to_string(), error: e.name(), why }
+    OracleError::GlError {
+        case: case.id.clone(),
+        spec: rules.doc.to_string(),
+        error: e.name(),
+        why,
+    }
 }
 
 fn not_applicable(case: &Case, rules: &Rules, why: String) -> OracleError {
-    OracleError::NotApplicable { case: case.id.clone(), spec: rules.doc.to_string(), why }
+    OracleError::NotApplicable {
+        case: case.id.clone(),
+        spec: rules.doc.to_string(),
+        why,
+    }
 }
 
 /// Formats each spec defines depth textures for.
@@ -48,10 +59,18 @@ fn format_defined(spec: Spec, f: Format) -> bool {
     match spec {
         // Floating-point depth arrives with ARB_depth_buffer_float (GL 3.0); before it every depth
         // texture is fixed-point. DEPTH_STENCIL comes from EXT_packed_depth_stencil / OES_packed_depth_stencil.
-        Spec::Sgix | Spec::SgixAmbient => matches!(f, Format::D16 | Format::D24 | Format::D32 | Format::DepthUnsized | Format::R8),
-        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => !matches!(f, Format::D32f | Format::D32fS8),
+        Spec::Sgix | Spec::SgixAmbient => matches!(
+            f,
+            Format::D16 | Format::D24 | Format::D32 | Format::DepthUnsized | Format::R8
+        ),
+        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => {
+            !matches!(f, Format::D32f | Format::D32fS8)
+        }
         // OES_depth_texture: UNSIGNED_SHORT / UNSIGNED_INT data into DEPTH_COMPONENT; DEPTH_STENCIL_OES.
-        Spec::Es2Ext => matches!(f, Format::D16 | Format::D24 | Format::D24S8 | Format::DepthUnsized | Format::R8),
+        Spec::Es2Ext => matches!(
+            f,
+            Format::D16 | Format::D24 | Format::D24S8 | Format::DepthUnsized | Format::R8
+        ),
         // ES 3.2 Table 8.11 has no DEPTH_COMPONENT32 (unorm).
         Spec::Gles32 => f != Format::D32,
         Spec::Gl46 => true,
@@ -65,49 +84,131 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     let ctxs: Vec<Ctx> = case.api.iter().map(|a| ctx_of(*a)).collect();
     for api in &case.api {
         if !rules.apis.contains(api) {
-            return Err(not_applicable(case, rules, format!("API path `{api}` does not exist under {}", rules.doc)));
+            return Err(not_applicable(
+                case,
+                rules,
+                format!("API path `{api}` does not exist under {}", rules.doc),
+            ));
         }
         if !api_targets(*api).contains(&t.target) {
-            return Err(not_applicable(case, rules, format!("API path `{api}` has no shadow lookup for target `{}`", t.target)));
+            return Err(not_applicable(
+                case,
+                rules,
+                format!(
+                    "API path `{api}` has no shadow lookup for target `{}`",
+                    t.target
+                ),
+            ));
         }
     }
     if !rules.targets.contains(&t.target) {
-        return Err(not_applicable(case, rules, format!("{} defines no depth texture for target `{}`", rules.doc, t.target)));
+        return Err(not_applicable(
+            case,
+            rules,
+            format!(
+                "{} defines no depth texture for target `{}`",
+                rules.doc, t.target
+            ),
+        ));
     }
     if !format_defined(rules.spec, t.format) {
-        return Err(not_applicable(case, rules, format!("{} defines no texture format `{}`", rules.doc, t.format)));
+        return Err(not_applicable(
+            case,
+            rules,
+            format!("{} defines no texture format `{}`", rules.doc, t.format),
+        ));
     }
     if case.lookup.projective && !matches!(t.target, Target::T1d | Target::T2d | Target::Rect) {
-        return Err(not_applicable(case, rules, format!("no projective shadow lookup exists for target `{}`", t.target)));
+        return Err(not_applicable(
+            case,
+            rules,
+            format!(
+                "no projective shadow lookup exists for target `{}`",
+                t.target
+            ),
+        ));
     }
     // Every piece of sampler state is set through TexParameter in every context the case runs in.
     for &ctx in &ctxs {
         let set = |pname: u32, v: Value| state::set_param(rules.spec, ctx, pname, v);
-        let mode_pname = if matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) { state::TEXTURE_COMPARE_SGIX } else { state::TEXTURE_COMPARE_MODE };
-        set(mode_pname, Value::Int(s.compare_mode.gl() as i64)).map_err(|e| gl_error(case, rules, e, format!("compare mode `{}`", s.compare_mode)))?;
-        let func_pname = if matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) { state::TEXTURE_COMPARE_OPERATOR_SGIX } else { state::TEXTURE_COMPARE_FUNC };
-        set(func_pname, Value::Int(s.compare_func.gl() as i64)).map_err(|e| gl_error(case, rules, e, format!("compare function `{}` is not in {}'s table", s.compare_func, rules.doc)))?;
+        let mode_pname = if matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) {
+            state::TEXTURE_COMPARE_SGIX
+        } else {
+            state::TEXTURE_COMPARE_MODE
+        };
+        set(mode_pname, Value::Int(s.compare_mode.gl() as i64))
+            .map_err(|e| gl_error(case, rules, e, format!("compare mode `{}`", s.compare_mode)))?;
+        let func_pname = if matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) {
+            state::TEXTURE_COMPARE_OPERATOR_SGIX
+        } else {
+            state::TEXTURE_COMPARE_FUNC
+        };
+        set(func_pname, Value::Int(s.compare_func.gl() as i64)).map_err(|e| {
+            gl_error(
+                case,
+                rules,
+                e,
+                format!(
+                    "compare function `{}` is not in {}'s table",
+                    s.compare_func, rules.doc
+                ),
+            )
+        })?;
         if let Some(m) = s.depth_texture_mode {
-            set(state::DEPTH_TEXTURE_MODE, Value::Int(m.gl() as i64)).map_err(|e| gl_error(case, rules, e, format!("DEPTH_TEXTURE_MODE `{m}` in a {ctx:?} context")))?;
+            set(state::DEPTH_TEXTURE_MODE, Value::Int(m.gl() as i64)).map_err(|e| {
+                gl_error(
+                    case,
+                    rules,
+                    e,
+                    format!("DEPTH_TEXTURE_MODE `{m}` in a {ctx:?} context"),
+                )
+            })?;
         }
         if let Some(m) = s.depth_stencil_mode {
-            set(state::DEPTH_STENCIL_TEXTURE_MODE, Value::Int(m.gl() as i64)).map_err(|e| gl_error(case, rules, e, format!("DEPTH_STENCIL_TEXTURE_MODE `{m}`")))?;
+            set(state::DEPTH_STENCIL_TEXTURE_MODE, Value::Int(m.gl() as i64)).map_err(|e| {
+                gl_error(case, rules, e, format!("DEPTH_STENCIL_TEXTURE_MODE `{m}`"))
+            })?;
         }
         if let Some(v) = s.fail_value {
-            set(state::TEXTURE_COMPARE_FAIL_VALUE_ARB, Value::Float(v as f64)).map_err(|e| gl_error(case, rules, e, "fail / ambient value".into()))?;
+            set(
+                state::TEXTURE_COMPARE_FAIL_VALUE_ARB,
+                Value::Float(v as f64),
+            )
+            .map_err(|e| gl_error(case, rules, e, "fail / ambient value".into()))?;
         }
         for (name, w) in [("S", s.wrap_s), ("T", s.wrap_t), ("R", s.wrap_r)] {
             let legal = rules.wraps.contains(&w) && !(w == Wrap::Clamp && ctx != Ctx::Compat);
             if !legal {
-                return Err(gl_error(case, rules, GlErrorKind::InvalidEnum, format!("TEXTURE_WRAP_{name} `{w}` is not a legal value in a {ctx:?} context of {}", rules.doc)));
+                return Err(gl_error(
+                    case,
+                    rules,
+                    GlErrorKind::InvalidEnum,
+                    format!(
+                        "TEXTURE_WRAP_{name} `{w}` is not a legal value in a {ctx:?} context of {}",
+                        rules.doc
+                    ),
+                ));
             }
         }
     }
     if !matches!(s.mag_filter, Filter::Nearest | Filter::Linear) {
-        return Err(gl_error(case, rules, GlErrorKind::InvalidEnum, format!("TEXTURE_MAG_FILTER `{}`: only NEAREST, LINEAR", s.mag_filter)));
+        return Err(gl_error(
+            case,
+            rules,
+            GlErrorKind::InvalidEnum,
+            format!(
+                "TEXTURE_MAG_FILTER `{}`: only NEAREST, LINEAR",
+                s.mag_filter
+            ),
+        ));
     }
     if s.lod_bias != 0.0 && !rules.lod_bias {
-        return Err(gl_error(case, rules, GlErrorKind::InvalidEnum, "TEXTURE_LOD_BIAS does not exist in ES (ES 3.2 §8.14.1)".into()));
+        return Err(gl_error(
+            case,
+            rules,
+            GlErrorKind::InvalidEnum,
+            "TEXTURE_LOD_BIAS does not exist in ES (ES 3.2 §8.14.1)".into(),
+        ));
     }
     if t.target == Target::Rect {
         // GL 4.6 §8.10: "An INVALID_ENUM error is generated if the effective target is
@@ -115,15 +216,33 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
         // MIRROR_CLAMP_TO_EDGE, MIRRORED_REPEAT or REPEAT." ... "TEXTURE_MIN_FILTER is set to a value
         // other than NEAREST or LINEAR".
         for w in [s.wrap_s, s.wrap_t] {
-            if matches!(w, Wrap::MirrorClampToEdge | Wrap::MirroredRepeat | Wrap::Repeat) {
-                return Err(gl_error(case, rules, GlErrorKind::InvalidEnum, format!("wrap `{w}` on a rectangle texture (GL 4.6 §8.10)")));
+            if matches!(
+                w,
+                Wrap::MirrorClampToEdge | Wrap::MirroredRepeat | Wrap::Repeat
+            ) {
+                return Err(gl_error(
+                    case,
+                    rules,
+                    GlErrorKind::InvalidEnum,
+                    format!("wrap `{w}` on a rectangle texture (GL 4.6 §8.10)"),
+                ));
             }
         }
         if s.min_filter.is_mipmap() {
-            return Err(gl_error(case, rules, GlErrorKind::InvalidEnum, "mipmap filter on a rectangle texture (GL 4.6 §8.10)".into()));
+            return Err(gl_error(
+                case,
+                rules,
+                GlErrorKind::InvalidEnum,
+                "mipmap filter on a rectangle texture (GL 4.6 §8.10)".into(),
+            ));
         }
         if t.base_level != 0 {
-            return Err(gl_error(case, rules, GlErrorKind::InvalidOperation, "TEXTURE_BASE_LEVEL ≠ 0 on a rectangle texture (GL 4.6 §8.10)".into()));
+            return Err(gl_error(
+                case,
+                rules,
+                GlErrorKind::InvalidOperation,
+                "TEXTURE_BASE_LEVEL ≠ 0 on a rectangle texture (GL 4.6 §8.10)".into(),
+            ));
         }
     }
     Ok(())

@@ -96,7 +96,8 @@ fn is_sgix(s: Spec) -> bool {
 pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
     let s = &case.sampler;
     let compare = s.compare_mode == CompareMode::Compare && case.texture.format.is_depth();
-    let filtered = s.mag_filter != Filter::Nearest || !matches!(s.min_filter, Filter::Nearest | Filter::NearestMipmapNearest);
+    let filtered = s.mag_filter != Filter::Nearest
+        || !matches!(s.min_filter, Filter::Nearest | Filter::NearestMipmapNearest);
     let d = case.lookup.dref;
     let mut out = Vec::new();
     for c in ALL {
@@ -108,8 +109,13 @@ pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
             "result-layout" => true,
             "incomplete" => s.min_filter.is_mipmap(),
             "bad-operator-error" => false,
-            "es2-greater-row" => case.spec == Spec::Es2Ext && compare && s.compare_func == CompareFunc::Greater,
-            "mirror-parens" => case.spec == Spec::Gl46 && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::MirroredRepeat),
+            "es2-greater-row" => {
+                case.spec == Spec::Es2Ext && compare && s.compare_func == CompareFunc::Greater
+            }
+            "mirror-parens" => {
+                case.spec == Spec::Gl46
+                    && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::MirroredRepeat)
+            }
             _ => false,
         };
         if hit {
@@ -134,7 +140,9 @@ pub fn alternative_rules(case: &Case, id: &str) -> Option<Rules> {
                 r.ref_clamp = RefClamp::Always;
             }
         }
-        "es2-greater-row" if case.spec == Spec::Es2Ext => r.table = crate::es2_ext::table_greater_row_literal,
+        "es2-greater-row" if case.spec == Spec::Es2Ext => {
+            r.table = crate::es2_ext::table_greater_row_literal
+        }
         _ => return None,
     }
     Some(r)

@@ -30,7 +30,7 @@ pub fn face_st(face: usize, r: [f64; 3]) -> (f64, f64) {
 /// first is the one the oracle's spec value uses. Empty for the zero vector (or NaN).
 pub fn faces(r: [f64; 3]) -> Vec<usize> {
     let m = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-    if !(m > 0.0) || r.iter().any(|v| v.is_nan()) {
+    if m.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) || r.iter().any(|v| v.is_nan()) {
         return Vec::new();
     }
     (0..3)

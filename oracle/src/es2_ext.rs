@@ -1,12 +1,14 @@
 //! OpenGL ES 2.0 with EXT_shadow_samplers (rev 4, 2012) and OES_depth_texture.
 //! Source: specs/registry/EXT_shadow_samplers.txt, OES_depth_texture.txt.
 
-use crate::rules::{passes_if, BorderRule, CompareTable, Filtering, Incomplete, RefClamp, Rules};
+use crate::rules::{
+    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
+};
 use shadowcheck_model::{ApiPath, CompareFunc, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
 /// §3.7.14.1, Table 3.X "Depth texture comparison functions":
-pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, ()> {
+pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, NotInTable> {
     Ok(match func {
         // "LEQUAL r = { 1.0, if D_ref <= Dt  { 0.0, if D_ref > Dt"
         CompareFunc::Lequal => passes_if(ord, &[Less, Equal]),
@@ -28,12 +30,15 @@ pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, (
         // "NEVER r = 0.0"
         CompareFunc::Never => Some(false),
         // Table 3.10 as appended lists only these eight; ES reports other values with INVALID_ENUM.
-        _ => return Err(()),
+        _ => return Err(NotInTable),
     })
 }
 
 /// The other reading of the GREATER row: at D_ref == Dt the table assigns nothing, so either value.
-pub fn table_greater_row_literal(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, ()> {
+pub fn table_greater_row_literal(
+    func: CompareFunc,
+    ord: Option<Ordering>,
+) -> Result<Option<bool>, NotInTable> {
     match (func, ord) {
         (CompareFunc::Greater, Some(Equal)) => Ok(None),
         _ => table(func, ord),

@@ -18,8 +18,17 @@ fn fmt_value(v: Option<f64>) -> String {
 pub fn summary(r: &Result<Evaluation, OracleError>) -> String {
     match r {
         Ok(e) => {
-            let strict = e.expect.accept.get(&shadowcheck_model::Profile::Strict).map(|a| a.to_string()).unwrap_or_default();
-            format!("r = {}, strict accepts {}", fmt_value(e.expect.spec_value), strict)
+            let strict = e
+                .expect
+                .accept
+                .get(&shadowcheck_model::Profile::Strict)
+                .map(|a| a.to_string())
+                .unwrap_or_default();
+            format!(
+                "r = {}, strict accepts {}",
+                fmt_value(e.expect.spec_value),
+                strict
+            )
         }
         Err(e) => format!("{e}"),
     }
@@ -33,7 +42,17 @@ pub fn render(case: &Case, result: &Result<Evaluation, OracleError>) -> String {
     let _ = writeln!(
         o,
         "  spec {} | target {} | format {} | compare {} {} | filter min {} mag {} | wrap {},{},{} | Dref {}{}",
-        case.spec, case.texture.target, case.texture.format, s.compare_mode, s.compare_func, s.min_filter, s.mag_filter, s.wrap_s, s.wrap_t, s.wrap_r, case.lookup.dref,
+        case.spec,
+        case.texture.target,
+        case.texture.format,
+        s.compare_mode,
+        s.compare_func,
+        s.min_filter,
+        s.mag_filter,
+        s.wrap_s,
+        s.wrap_t,
+        s.wrap_r,
+        case.lookup.dref,
         if case.lookup.projective { " (projective)" } else { "" }
     );
     match result {
@@ -45,7 +64,13 @@ pub fn render(case: &Case, result: &Result<Evaluation, OracleError>) -> String {
             let _ = writeln!(o, "\nspec value: r = {}", fmt_value(x.spec_value));
             let _ = writeln!(o, "acceptance:");
             for (p, acc) in &x.accept {
-                let _ = writeln!(o, "  {:<8} {}    [{}]", p.key(), acc, spec_of(*p).describe());
+                let _ = writeln!(
+                    o,
+                    "  {:<8} {}    [{}]",
+                    p.key(),
+                    acc,
+                    spec_of(*p).describe()
+                );
             }
             if let Some(why) = &x.implementation_defined {
                 let _ = writeln!(o, "implementation-defined: {why}");
@@ -61,15 +86,26 @@ pub fn render(case: &Case, result: &Result<Evaluation, OracleError>) -> String {
             }
             if !ev.footprint.texels.is_empty() {
                 let _ = writeln!(o, "footprint (Dref = {}):", ev.footprint.dref);
-                let _ = writeln!(o, "  {:<6} {:<16} {:>14} {:>22} {:>7} {:>10}", "level", "x,y,layer", "stored", "Dt", "pass", "weight");
+                let _ = writeln!(
+                    o,
+                    "  {:<6} {:<16} {:>14} {:>22} {:>7} {:>10}",
+                    "level", "x,y,layer", "stored", "Dt", "pass", "weight"
+                );
                 for t in &ev.footprint.texels {
-                    let xyz = t.xyz.map(|v| format!("{},{},{}", v[0], v[1], v[2])).unwrap_or_else(|| "border".into());
+                    let xyz = t
+                        .xyz
+                        .map(|v| format!("{},{},{}", v[0], v[1], v[2]))
+                        .unwrap_or_else(|| "border".into());
                     let pass = match t.pass {
                         Some(true) => "1",
                         Some(false) => "0",
                         None => "either",
                     };
-                    let _ = writeln!(o, "  {:<6} {:<16} {:>14} {:>22} {:>7} {:>10}", t.level, xyz, t.stored, t.dt, pass, t.weight);
+                    let _ = writeln!(
+                        o,
+                        "  {:<6} {:<16} {:>14} {:>22} {:>7} {:>10}",
+                        t.level, xyz, t.stored, t.dt, pass, t.weight
+                    );
                 }
             }
             let _ = writeln!(o, "citations: {}", x.citations.join("; "));

@@ -1,12 +1,12 @@
 //! EXT_shadow_funcs (2002/03/22): the eight comparison functions on top of ARB_shadow.
 //! Source: specs/registry/EXT_shadow_funcs.txt.
 
-use crate::rules::{passes_if, CompareTable, Rules};
+use crate::rules::{passes_if, CompareTable, NotInTable, Rules};
 use shadowcheck_model::{CompareFunc, Spec};
 use std::cmp::Ordering::{self, *};
 
 /// The updated pseudo-code of ARB_shadow §3.8.13.1:
-pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, ()> {
+pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, NotInTable> {
     Ok(match func {
         // "LEQUAL  { 1.0, if R <= Dt  { 0.0, if R > Dt"
         CompareFunc::Lequal => passes_if(ord, &[Less, Equal]),
@@ -26,7 +26,7 @@ pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, (
         CompareFunc::Never => Some(false),
         // Errors: "INVALID_ENUM is generated if ... <param> is not one of LEQUAL, GEQUAL, LESS,
         // GREATER, EQUAL, NOTEQUAL, ALWAYS, or NEVER."
-        _ => return Err(()),
+        _ => return Err(NotInTable),
     })
 }
 

@@ -1,12 +1,14 @@
 //! OpenGL 3.0 - 4.6 (core profile text, with the compatibility-profile DEPTH_TEXTURE_MODE layouts for
 //! the legacy API paths). Source: specs/gl46-core-excerpts.txt, glsl-excerpts.txt part F.
 
-use crate::rules::{passes_if, BorderRule, CompareTable, Filtering, Incomplete, RefClamp, Rules};
+use crate::rules::{
+    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
+};
 use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
 /// §8.23.1, Table 8.23 "Depth texture comparison functions":
-pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, ()> {
+pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, NotInTable> {
     Ok(match func {
         // "LEQUAL r = 1.0, Dref ≤ Dt; 0.0, Dref > Dt"
         CompareFunc::Lequal => passes_if(ord, &[Less, Equal]),
@@ -26,7 +28,7 @@ pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, (
         CompareFunc::Never => Some(false),
         // §8.10 Errors: "An INVALID_ENUM error is generated if the type of the parameter specified by
         // pname is enum, and any value specified by param or params is not among the legal values".
-        _ => return Err(()),
+        _ => return Err(NotInTable),
     })
 }
 
@@ -57,12 +59,38 @@ pub fn rules() -> Rules {
         lod_bias: true,
         ambient_on_pass: false,
         has_fail_value: false,
-        targets: &[Target::T1d, Target::T2d, Target::Rect, Target::Cube, Target::T1dArray, Target::T2dArray, Target::CubeArray],
+        targets: &[
+            Target::T1d,
+            Target::T2d,
+            Target::Rect,
+            Target::Cube,
+            Target::T1dArray,
+            Target::T2dArray,
+            Target::CubeArray,
+        ],
         // Table 8.17 (CLAMP: compatibility profile only).
-        wraps: &[Wrap::ClampToEdge, Wrap::Repeat, Wrap::ClampToBorder, Wrap::MirroredRepeat, Wrap::MirrorClampToEdge, Wrap::Clamp],
-        apis: &[ApiPath::FixedFunction, ApiPath::ArbFp, ApiPath::Glsl120, ApiPath::Glsl130, ApiPath::GlslCore],
+        wraps: &[
+            Wrap::ClampToEdge,
+            Wrap::Repeat,
+            Wrap::ClampToBorder,
+            Wrap::MirroredRepeat,
+            Wrap::MirrorClampToEdge,
+            Wrap::Clamp,
+        ],
+        apis: &[
+            ApiPath::FixedFunction,
+            ApiPath::ArbFp,
+            ApiPath::Glsl120,
+            ApiPath::Glsl130,
+            ApiPath::GlslCore,
+        ],
         // Compatibility Table 8.25: "DEPTH_TEXTURE_MODE enum RED, LUMINANCE, INTENSITY, ALPHA".
-        depth_modes: &[DepthTextureMode::Red, DepthTextureMode::Luminance, DepthTextureMode::Intensity, DepthTextureMode::Alpha],
+        depth_modes: &[
+            DepthTextureMode::Red,
+            DepthTextureMode::Luminance,
+            DepthTextureMode::Intensity,
+            DepthTextureMode::Alpha,
+        ],
         // Table 8.17: "DEPTH_STENCIL_TEXTURE_MODE enum DEPTH_COMPONENT, STENCIL_INDEX".
         depth_stencil_mode: true,
         bad_func_error: "INVALID_ENUM",

@@ -3,12 +3,14 @@
 //! border values clamped to the format (§8.14.2), cube maps always seamless (§8.13.1), no
 //! TEXTURE_LOD_BIAS (§8.14.1), no DEPTH_TEXTURE_MODE, no 1D or rectangle textures.
 
-use crate::rules::{passes_if, BorderRule, CompareTable, Filtering, Incomplete, RefClamp, Rules};
+use crate::rules::{
+    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
+};
 use shadowcheck_model::{ApiPath, CompareFunc, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
 /// §8.20.1, Table 8.22 "Depth texture comparison functions":
-pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, ()> {
+pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, NotInTable> {
     Ok(match func {
         // "LEQUAL r = 1.0, Dref ≤ Dt; 0.0, Dref > Dt"
         CompareFunc::Lequal => passes_if(ord, &[Less, Equal]),
@@ -27,7 +29,7 @@ pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, (
         // "NEVER r = 0.0"
         CompareFunc::Never => Some(false),
         // §8.10 Errors: INVALID_ENUM for a value not among the legal values of Table 8.19.
-        _ => return Err(()),
+        _ => return Err(NotInTable),
     })
 }
 
@@ -59,9 +61,19 @@ pub fn rules() -> Rules {
         has_fail_value: false,
         // §8.10: "target ... must be one of TEXTURE_2D, TEXTURE_3D, TEXTURE_2D_ARRAY,
         // TEXTURE_CUBE_MAP, TEXTURE_CUBE_MAP_ARRAY, ..."
-        targets: &[Target::T2d, Target::Cube, Target::T2dArray, Target::CubeArray],
+        targets: &[
+            Target::T2d,
+            Target::Cube,
+            Target::T2dArray,
+            Target::CubeArray,
+        ],
         // Table 8.19: "CLAMP_TO_EDGE, REPEAT, MIRRORED_REPEAT, CLAMP_TO_BORDER".
-        wraps: &[Wrap::ClampToEdge, Wrap::Repeat, Wrap::MirroredRepeat, Wrap::ClampToBorder],
+        wraps: &[
+            Wrap::ClampToEdge,
+            Wrap::Repeat,
+            Wrap::MirroredRepeat,
+            Wrap::ClampToBorder,
+        ],
         apis: &[ApiPath::Es300],
         depth_modes: &[],
         depth_stencil_mode: true,

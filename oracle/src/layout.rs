@@ -16,32 +16,63 @@ pub fn depth_mode(rules: &Rules, m: Option<DepthTextureMode>) -> DepthTextureMod
 }
 
 /// The layout of r for `api`, with a citation. `incomplete`: the texture is incomplete (r = 0).
-pub fn layout(rules: &Rules, api: ApiPath, kind: Kind, mode: Option<DepthTextureMode>, incomplete: bool) -> ([Channel; 4], &'static str) {
-    let legacy = matches!(api, ApiPath::FixedFunction | ApiPath::ArbFp | ApiPath::Glsl120);
+pub fn layout(
+    rules: &Rules,
+    api: ApiPath,
+    kind: Kind,
+    mode: Option<DepthTextureMode>,
+    incomplete: bool,
+) -> ([Channel; 4], &'static str) {
+    let legacy = matches!(
+        api,
+        ApiPath::FixedFunction | ApiPath::ArbFp | ApiPath::Glsl120
+    );
     let ff = api == ApiPath::FixedFunction;
     let legacy_spec = !matches!(rules.spec, Spec::Gl46 | Spec::Gles32);
     if incomplete {
         if ff {
             // GL 2.1 §3.8.10 / compatibility §8.17: texturing with an incomplete texture is "as if texture
             // mapping were disabled": the fragment colour passes through, r is not visible.
-            return ([Unused; 4], "GL 2.1 §3.8.10 (incomplete: texturing disabled)");
+            return (
+                [Unused; 4],
+                "GL 2.1 §3.8.10 (incomplete: texturing disabled)",
+            );
         }
         if legacy || rules.spec == Spec::Es2Ext && kind != Kind::Compare {
-            return ([R, Zero, Zero, One], "GL 2.1 §3.11.2 / ARB_fragment_program_shadow: incomplete → (0,0,0,1)");
+            return (
+                [R, Zero, Zero, One],
+                "GL 2.1 §3.11.2 / ARB_fragment_program_shadow: incomplete → (0,0,0,1)",
+            );
         }
-        return ([R, Unused, Unused, Unused], "GL 4.6 / ES 3.2 §11.1.3.5: incomplete → 0 for a shadow sampler");
+        return (
+            [R, Unused, Unused, Unused],
+            "GL 4.6 / ES 3.2 §11.1.3.5: incomplete → 0 for a shadow sampler",
+        );
     }
     match kind {
-        Kind::Stencil => ([R, Zero, Zero, One], "GL 4.6 §11.1.3.5 (stencil read as an unsigned integer into Rt, Cb = (Rt,0,0,1))"),
+        Kind::Stencil => (
+            [R, Zero, Zero, One],
+            "GL 4.6 §11.1.3.5 (stencil read as an unsigned integer into Rt, Cb = (Rt,0,0,1))",
+        ),
         Kind::Colour => {
             // A colour texture "operates in the normal manner": legacy specs know it as LUMINANCE8 (Table
             // 3.20: (Lt,Lt,Lt),1), GL 3.0+ / ES as R8 (Table 15.1: (Rt,0,0),1).
-            let base = if legacy_spec && rules.spec != Spec::Es2Ext { [R, R, R, One] } else { [R, Zero, Zero, One] };
+            let base = if legacy_spec && rules.spec != Spec::Es2Ext {
+                [R, R, R, One]
+            } else {
+                [R, Zero, Zero, One]
+            };
             if ff {
                 // TexEnv REPLACE with an RGB-type base format keeps the fragment alpha: Av = Af.
-                return ([base[0], base[1], base[2], Unused], "GL 2.1 Table 3.22 (REPLACE: Cv = Cs, Av = Af)");
+                return (
+                    [base[0], base[1], base[2], Unused],
+                    "GL 2.1 Table 3.22 (REPLACE: Cv = Cs, Av = Af)",
+                );
             }
-            (base, "GL 2.1 Table 3.20 / GL 4.6 Table 15.1 (colour texture, comparison bypassed)")
+            (
+                base,
+                "GL 2.1 Table 3.20 / GL 4.6 Table 15.1 (colour texture, comparison bypassed)",
+            )
         }
         Kind::Compare | Kind::Depth => {
             // GLSL 1.30 in a compatibility context reading a depth texture through a non-shadow sampler:
@@ -68,18 +99,33 @@ pub fn layout(rules: &Rules, api: ApiPath, kind: Kind, mode: Option<DepthTexture
                     };
                     return (v, "GL 2.1 §3.8.14, Table 3.20, Table 3.22 (REPLACE); compatibility Table 16.1");
                 }
-                return (cs, "GL 2.1 §3.8.14, Table 3.20; GL 4.6 compatibility §8.23.1, Table 16.1");
+                return (
+                    cs,
+                    "GL 2.1 §3.8.14, Table 3.20; GL 4.6 compatibility §8.23.1, Table 16.1",
+                );
             }
             match (api, kind) {
                 // OES_depth_texture issue 2: a depth texture reads as LUMINANCE, (d,d,d,1).
-                (ApiPath::Es100Ext, Kind::Depth) => ([R, R, R, One], "OES_depth_texture issue 2 (depth reads as LUMINANCE)"),
+                (ApiPath::Es100Ext, Kind::Depth) => (
+                    [R, R, R, One],
+                    "OES_depth_texture issue 2 (depth reads as LUMINANCE)",
+                ),
                 // EXT_shadow_samplers: "The resulting r is assigned to R_t"; shadow2DEXT returns a float.
-                (ApiPath::Es100Ext, _) => ([R, Unused, Unused, Unused], "EXT_shadow_samplers §3.7.14.1 (r → R_t), shadow2DEXT returns float"),
+                (ApiPath::Es100Ext, _) => (
+                    [R, Unused, Unused, Unused],
+                    "EXT_shadow_samplers §3.7.14.1 (r → R_t), shadow2DEXT returns float",
+                ),
                 // A non-shadow sampler on a depth texture: Cb = (Dt,0,0,1) (§11.1.3.5, Table 15.1).
-                (_, Kind::Depth) => ([R, Zero, Zero, One], "GL 4.6 / ES 3.2 §11.1.3.5 (Cb = (Rt,0,0,1), non-shadow sampler)"),
+                (_, Kind::Depth) => (
+                    [R, Zero, Zero, One],
+                    "GL 4.6 / ES 3.2 §11.1.3.5 (Cb = (Rt,0,0,1), non-shadow sampler)",
+                ),
                 // "expanding the resulting value Rt to a color Cb = (Rt, 0, 0, 1) ... only the first
                 // component Cs[0] is returned to the shader".
-                _ => ([R, Unused, Unused, Unused], "GL 4.6 / ES 3.2 §11.1.3.5 (shadow lookup returns Cs[0] = Rt as a float)"),
+                _ => (
+                    [R, Unused, Unused, Unused],
+                    "GL 4.6 / ES 3.2 §11.1.3.5 (shadow lookup returns Cs[0] = Rt as a float)",
+                ),
             }
         }
     }

@@ -14,14 +14,14 @@
 use shadowcheck_model::{Case, Expectation, Footprint};
 
 pub mod accept;
+pub mod arb;
 pub mod check;
 pub mod contradictions;
 pub mod cube;
 mod engine;
-pub mod explain;
 pub mod es2_ext;
+pub mod explain;
 pub mod ext_funcs;
-pub mod arb;
 pub mod gl46;
 pub mod gles32;
 pub mod layout;
@@ -29,6 +29,7 @@ pub mod lod;
 pub mod profile;
 pub mod rules;
 pub mod sample;
+mod select;
 pub mod sgix;
 pub mod state;
 pub mod unorm;
@@ -55,10 +56,19 @@ pub struct Evaluation {
 pub enum OracleError {
     /// The state is illegal under the spec: setting it raises a GL error, so no lookup happens.
     #[error("case `{case}`: {spec} rejects this state with {error}: {why}")]
-    GlError { case: String, spec: String, error: &'static str, why: String },
+    GlError {
+        case: String,
+        spec: String,
+        error: &'static str,
+        why: String,
+    },
     /// The spec defines no such lookup (an API path, target or format it does not have).
     #[error("case `{case}`: not defined by {spec}: {why}")]
-    NotApplicable { case: String, spec: String, why: String },
+    NotApplicable {
+        case: String,
+        spec: String,
+        why: String,
+    },
     /// The case is malformed (see shadowcheck_model::validate).
     #[error(transparent)]
     Model(#[from] shadowcheck_model::ModelError),
@@ -72,7 +82,10 @@ pub fn evaluate(case: &Case) -> Result<Evaluation, OracleError> {
 
 /// Evaluates a case under the other reading of a contradiction (see [`contradictions`]), for `explain`.
 /// `None` when the contradiction has no alternative rule for this case's spec.
-pub fn evaluate_reading(case: &Case, contradiction: &str) -> Option<Result<Evaluation, OracleError>> {
+pub fn evaluate_reading(
+    case: &Case,
+    contradiction: &str,
+) -> Option<Result<Evaluation, OracleError>> {
     if let Err(e) = shadowcheck_model::validate::validate(case) {
         return Some(Err(e.into()));
     }

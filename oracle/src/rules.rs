@@ -49,10 +49,14 @@ pub enum Incomplete {
     ShadowZero,
 }
 
+/// The function is not in the spec's table (setting it is a GL error).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct NotInTable;
+
 /// The comparison table of one spec: `ord` is Dref compared with Dt (`Dref.partial_cmp(Dt)`), already
 /// clamped per the spec. Returns pass (1.0) / fail (0.0 or the fail value); `None` when the result
 /// depends on an unordered (NaN) operand. `Err` when the function is not in this spec's table.
-pub type CompareTable = fn(CompareFunc, Option<Ordering>) -> Result<Option<bool>, ()>;
+pub type CompareTable = fn(CompareFunc, Option<Ordering>) -> Result<Option<bool>, NotInTable>;
 
 /// Everything the shared machinery needs to know about one specification.
 #[derive(Debug, Clone, Copy)]

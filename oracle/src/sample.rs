@@ -10,11 +10,21 @@ use std::cmp::Ordering;
 /// Which texel: a stored texel, the border of a level, or a cube corner built from three texels.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Key {
-    Texel { level: u32, x: i64, y: i64, layer: i64 },
-    Border { level: u32 },
+    Texel {
+        level: u32,
+        x: i64,
+        y: i64,
+        layer: i64,
+    },
+    Border {
+        level: u32,
+    },
     /// §8.13.1: "there is no unique neighboring face from which to extract one texel"; the three
     /// available samples (x, y, layer).
-    Corner { level: u32, from: [(i64, i64, i64); 3] },
+    Corner {
+        level: u32,
+        from: [(i64, i64, i64); 3],
+    },
 }
 
 /// What the lookup computes per texel.
@@ -42,16 +52,24 @@ pub struct Poss {
 impl std::fmt::Display for Key {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Key::Texel { level, x, y, layer } => write!(f, "texel ({x},{y}) layer {layer} level {level}"),
+            Key::Texel { level, x, y, layer } => {
+                write!(f, "texel ({x},{y}) layer {layer} level {level}")
+            }
             Key::Border { level } => write!(f, "border texel, level {level}"),
-            Key::Corner { level, .. } => write!(f, "cube corner texel (built from three), level {level}"),
+            Key::Corner { level, .. } => {
+                write!(f, "cube corner texel (built from three), level {level}")
+            }
         }
     }
 }
 
 impl Poss {
     fn point(v: f64) -> Poss {
-        Poss { lo: v, hi: v, two: false }
+        Poss {
+            lo: v,
+            hi: v,
+            two: false,
+        }
     }
 }
 
@@ -102,28 +120,46 @@ impl TexelCtx<'_> {
 
     /// Dt is clamped unless the spec clamps only fixed-point formats and this one is floating-point.
     fn clamps_dt(&self) -> bool {
-        !(self.rules.ref_clamp == RefClamp::FixedPointOnly && !self.fixed())
+        self.rules.ref_clamp != RefClamp::FixedPointOnly || self.fixed()
     }
 
     fn stored_texel(&self, level: u32, x: i64, y: i64, layer: i64) -> Source {
         let tex = &self.case.texture;
         let Some(l) = tex.levels.get(level as usize) else {
-            return Source { value: Exact::F(0.0), cands: vec![], stored: f64::NAN, undefined: Some("texel outside the defined levels") };
+            return Source {
+                value: Exact::F(0.0),
+                cands: vec![],
+                stored: f64::NAN,
+                undefined: Some("texel outside the defined levels"),
+            };
         };
         let idx = (x + y * l.width as i64 + layer * (l.width as i64 * l.height as i64)) as usize;
         if self.kind == Kind::Stencil {
             return match l.stencil.as_ref().and_then(|s| s.get(idx)) {
-                Some(&st) => Source { value: Exact::F(st as f64), cands: vec![], stored: st as f64, undefined: None },
+                Some(&st) => Source {
+                    value: Exact::F(st as f64),
+                    cands: vec![],
+                    stored: st as f64,
+                    undefined: None,
+                },
                 // GL 4.6 §8.5: "If the base internal format is DEPTH_STENCIL and format is not
                 // DEPTH_STENCIL, then the values of the stencil index texture components are undefined."
-                None => Source { value: Exact::F(0.0), cands: vec![], stored: f64::NAN, undefined: Some("stencil values were not uploaded: undefined (GL 4.6 §8.5)") },
+                None => Source {
+                    value: Exact::F(0.0),
+                    cands: vec![],
+                    stored: f64::NAN,
+                    undefined: Some("stencil values were not uploaded: undefined (GL 4.6 §8.5)"),
+                },
             };
         }
         match &l.depth {
             Texels::Unorm(v) => {
                 let c = v.get(idx).copied().unwrap_or(0) as u64;
                 let bits = tex.format.unorm_bits().unwrap_or(16);
-                let value = Exact::Q { c, m: unorm_max(bits) };
+                let value = Exact::Q {
+                    c,
+                    m: unorm_max(bits),
+                };
                 let mut cands = vec![value];
                 if tex.format == Format::DepthUnsized {
                     // The unsized format's precision is the implementation's (at least 16 bits): a
@@ -134,13 +170,23 @@ impl TexelCtx<'_> {
                     cands.push(Exact::Q { c: lo, m: m24 });
                     cands.push(Exact::Q { c: hi, m: m24 });
                 }
-                Source { value, cands, stored: c as f64, undefined: None }
+                Source {
+                    value,
+                    cands,
+                    stored: c as f64,
+                    undefined: None,
+                }
             }
             // §8.5: "For depth component groups, the depth value is clamped to [0, 1]."
             Texels::Float(v) => {
                 let f = v.get(idx).copied().unwrap_or(0.0) as f64;
                 let value = Exact::F(f.clamp(0.0, 1.0));
-                Source { value, cands: vec![value], stored: f, undefined: None }
+                Source {
+                    value,
+                    cands: vec![value],
+                    stored: f,
+                    undefined: None,
+                }
             }
         }
     }
@@ -149,14 +195,20 @@ impl TexelCtx<'_> {
         let b = self.case.sampler.border[0] as f64;
         let fixed = self.fixed();
         if self.kind == Kind::Stencil {
-            return Source { value: Exact::F(0.0), cands: vec![], stored: b, undefined: Some("stencil border value is not defined for a depth border") };
+            return Source {
+                value: Exact::F(0.0),
+                cands: vec![],
+                stored: b,
+                undefined: Some("stencil border value is not defined for a depth border"),
+            };
         }
         let (v, undefined) = match self.rules.border {
             BorderRule::ClampUnit | BorderRule::None => (b.clamp(0.0, 1.0), None),
             BorderRule::ClampToFormat => (if fixed { b.clamp(0.0, 1.0) } else { b }, None),
-            BorderRule::UndefinedOutOfRange if fixed && !(0.0..=1.0).contains(&b) => {
-                (b.clamp(0.0, 1.0), Some("border depth out of range for a fixed-point format: \"the result is undefined\" (GL 4.6 §8.14.2)"))
-            }
+            BorderRule::UndefinedOutOfRange if fixed && !(0.0..=1.0).contains(&b) => (
+                b.clamp(0.0, 1.0),
+                Some("border depth out of range for a fixed-point format: \"the result is undefined\" (GL 4.6 §8.14.2)"),
+            ),
             BorderRule::UndefinedOutOfRange => (b, None),
         };
         let value = Exact::F(v);
@@ -164,10 +216,21 @@ impl TexelCtx<'_> {
         if let Some(bits) = self.case.texture.format.unorm_bits() {
             // The border may be held at the format's precision: either neighbour (§2.3.5.2).
             let (p, o) = float_to_unorm(v, bits);
-            cands.push(Exact::Q { c: p, m: unorm_max(bits) });
-            cands.push(Exact::Q { c: o, m: unorm_max(bits) });
+            cands.push(Exact::Q {
+                c: p,
+                m: unorm_max(bits),
+            });
+            cands.push(Exact::Q {
+                c: o,
+                m: unorm_max(bits),
+            });
         }
-        Source { value, cands, stored: b, undefined }
+        Source {
+            value,
+            cands,
+            stored: b,
+            undefined,
+        }
     }
 
     fn source(&self, key: Key) -> Source {
@@ -175,7 +238,10 @@ impl TexelCtx<'_> {
             Key::Texel { level, x, y, layer } => self.stored_texel(level, x, y, layer),
             Key::Border { .. } => self.border(),
             Key::Corner { level, from } => {
-                let s: Vec<Source> = from.iter().map(|&(x, y, l)| self.stored_texel(level, x, y, l)).collect();
+                let s: Vec<Source> = from
+                    .iter()
+                    .map(|&(x, y, l)| self.stored_texel(level, x, y, l))
+                    .collect();
                 let vals: Vec<f64> = s.iter().map(|s| s.value.approx()).collect();
                 let avg = vals.iter().sum::<f64>() / 3.0;
                 let same = s.iter().all(|x| x.value == s[0].value);
@@ -184,9 +250,19 @@ impl TexelCtx<'_> {
                 // another way, so long as, when the three available samples have the same value, this
                 // texel also has that value."
                 if same {
-                    Source { value: s[0].value, cands: s[0].cands.clone(), stored: s[0].stored, undefined: None }
+                    Source {
+                        value: s[0].value,
+                        cands: s[0].cands.clone(),
+                        stored: s[0].stored,
+                        undefined: None,
+                    }
                 } else {
-                    Source { value: Exact::F(avg), cands: vec![Exact::F(avg)], stored: avg, undefined: Some("seamless cube corner texel built by the implementation (GL 4.6 §8.13.1)") }
+                    Source {
+                        value: Exact::F(avg),
+                        cands: vec![Exact::F(avg)],
+                        stored: avg,
+                        undefined: Some("seamless cube corner texel built by the implementation (GL 4.6 §8.13.1)"),
+                    }
                 }
             }
         }
@@ -200,16 +276,22 @@ impl TexelCtx<'_> {
         match ord {
             Some(_) => one(ord),
             // An unordered operand (NaN): whatever ordering the implementation's compare yields.
-            None => [Ordering::Less, Ordering::Equal, Ordering::Greater].iter().fold((false, false), |acc, o| {
-                let (p, f) = one(Some(*o));
-                (acc.0 || p, acc.1 || f)
-            }),
+            None => [Ordering::Less, Ordering::Equal, Ordering::Greater]
+                .iter()
+                .fold((false, false), |acc, o| {
+                    let (p, f) = one(Some(*o));
+                    (acc.0 || p, acc.1 || f)
+                }),
         }
     }
 
     fn two(&self, (p, f): (bool, bool)) -> Poss {
         match (p, f) {
-            (true, true) => Poss { lo: self.pass_v.min(self.fail_v), hi: self.pass_v.max(self.fail_v), two: true },
+            (true, true) => Poss {
+                lo: self.pass_v.min(self.fail_v),
+                hi: self.pass_v.max(self.fail_v),
+                two: true,
+            },
             (true, false) => Poss::point(self.pass_v),
             _ => Poss::point(self.fail_v),
         }
@@ -219,7 +301,9 @@ impl TexelCtx<'_> {
     pub fn eval(&self, key: Key) -> TexelEval {
         let src = self.source(key);
         let clamp = |e: Exact| match e {
-            Exact::F(v) if self.clamps_dt() && self.kind != Kind::Stencil => Exact::F(v.clamp(0.0, 1.0)),
+            Exact::F(v) if self.clamps_dt() && self.kind != Kind::Stencil => {
+                Exact::F(v.clamp(0.0, 1.0))
+            }
             other => other,
         };
         let value = clamp(src.value);
@@ -260,8 +344,11 @@ impl TexelCtx<'_> {
                         let mut o = strict;
                         // 0 and 1 survive every fixed-point quantization exactly: an exact tie there
                         // is not within reference precision.
-                        let exact_end = exact_ord == Some(Ordering::Equal) && (dt == 0.0 || dt == 1.0);
-                        if ((self.dref - dt).abs() <= (bits as f64).exp2().recip() && !exact_end) || self.dref.is_nan() {
+                        let exact_end =
+                            exact_ord == Some(Ordering::Equal) && (dt == 0.0 || dt == 1.0);
+                        if ((self.dref - dt).abs() <= (bits as f64).exp2().recip() && !exact_end)
+                            || self.dref.is_nan()
+                        {
                             o = self.table(None);
                             o = (o.0 || strict.0, o.1 || strict.1);
                         }
@@ -286,18 +373,38 @@ impl TexelCtx<'_> {
                 }
                 let mut poss = [Poss { lo, hi, two: false }; 2];
                 if src.undefined.is_some() {
-                    let top = if self.kind == Kind::Stencil { 255.0 } else { 1.0f64.max(hi) };
-                    poss = [Poss { lo: lo.min(0.0), hi: top, two: false }; 2];
+                    let top = if self.kind == Kind::Stencil {
+                        255.0
+                    } else {
+                        1.0f64.max(hi)
+                    };
+                    poss = [Poss {
+                        lo: lo.min(0.0),
+                        hi: top,
+                        two: false,
+                    }; 2];
                 }
                 for (i, p) in PROFILES.iter().enumerate() {
                     if let (Some(bits), false) = (p.ref_bits, self.kind == Kind::Stencil) {
                         let t = (bits as f64).exp2().recip();
                         let (lo, hi) = (poss[i].lo, poss[i].hi);
                         // Widened, but not past the range the values can take.
-                        poss[i] = Poss { lo: (lo - t).max(lo.min(0.0)), hi: (hi + t).min(hi.max(1.0)), two: false };
+                        poss[i] = Poss {
+                            lo: (lo - t).max(lo.min(0.0)),
+                            hi: (hi + t).min(hi.max(1.0)),
+                            two: false,
+                        };
                     }
                 }
-                TexelEval { key, stored: src.stored, dt, exact: src.undefined.is_none().then_some(dt), pass: None, poss, undefined: src.undefined }
+                TexelEval {
+                    key,
+                    stored: src.stored,
+                    dt,
+                    exact: src.undefined.is_none().then_some(dt),
+                    pass: None,
+                    poss,
+                    undefined: src.undefined,
+                }
             }
         }
     }

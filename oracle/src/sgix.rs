@@ -1,7 +1,9 @@
 //! SGIX_shadow (rev 1.15, 1997) and SGIX_shadow_ambient (rev 1.3).
 //! Source: specs/registry/SGIX_shadow.txt, specs/registry/SGIX_shadow_ambient.txt (and seeds/SGIX_shadow.txt).
 
-use crate::rules::{passes_if, BorderRule, CompareTable, Filtering, Incomplete, RefClamp, Rules};
+use crate::rules::{
+    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
+};
 use shadowcheck_model::{ApiPath, CompareFunc, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
@@ -10,7 +12,7 @@ use std::cmp::Ordering::{self, *};
 ///  The test for operator TEXTURE_GEQUAL_R_SGIX passes if the texel value is greater than or equal to R."
 /// `ord` is R compared with the texel, so "texel <= R" is "R >= texel".
 /// "The value of the test is zero if the test fails, and one if it passes."
-pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, ()> {
+pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, NotInTable> {
     Ok(match func {
         // texel <= R
         CompareFunc::LequalRSgix => passes_if(ord, &[Greater, Equal]),
@@ -19,17 +21,20 @@ pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, (
         // Errors: "INVALID_OPERATION is generated if TexParameter[if] parameter <pname> is
         // TEXTURE_COMPARE_OPERATOR_SGIX and parameter <param> is not TEXTURE_LEQUAL_R_SGIX,or
         // TEXTURE_GEQUAL_R_SGIX."
-        _ => return Err(()),
+        _ => return Err(NotInTable),
     })
 }
 
 /// The reading of ARB_shadow issue 2 (named, not defended): "the GL_TEXTURE_LEQUAL_R_SGIX token should
 /// really have been named GL_R_LEQUAL_TEXTURE_SGIX since we're comparing R <= TEXTURE".
-pub fn table_arb_issue2(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, ()> {
+pub fn table_arb_issue2(
+    func: CompareFunc,
+    ord: Option<Ordering>,
+) -> Result<Option<bool>, NotInTable> {
     Ok(match func {
         CompareFunc::LequalRSgix => passes_if(ord, &[Less, Equal]),
         CompareFunc::GequalRSgix => passes_if(ord, &[Greater, Equal]),
-        _ => return Err(()),
+        _ => return Err(NotInTable),
     })
 }
 

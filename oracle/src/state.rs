@@ -20,7 +20,9 @@ pub const DEPTH_STENCIL_TEXTURE_MODE: u32 = 0x90EA;
 pub const NONE: u32 = 0;
 const LEQUAL: u32 = 0x0203;
 const GEQUAL: u32 = 0x0206;
-const FUNCS8: &[u32] = &[0x0200, 0x0201, 0x0202, 0x0203, 0x0204, 0x0205, 0x0206, 0x0207];
+const FUNCS8: &[u32] = &[
+    0x0200, 0x0201, 0x0202, 0x0203, 0x0204, 0x0205, 0x0206, 0x0207,
+];
 const LUMINANCE: u32 = 0x1909;
 const INTENSITY: u32 = 0x8049;
 const ALPHA: u32 = 0x1906;
@@ -99,8 +101,20 @@ pub struct Param {
     pub cite: &'static str,
 }
 
-const fn p(pname: u32, name: &'static str, kind: ParamKind, default: Stored, cite: &'static str) -> Param {
-    Param { pname, name, kind, default, cite }
+const fn p(
+    pname: u32,
+    name: &'static str,
+    kind: ParamKind,
+    default: Stored,
+    cite: &'static str,
+) -> Param {
+    Param {
+        pname,
+        name,
+        kind,
+        default,
+        cite,
+    }
 }
 
 /// The depth-comparison pnames that exist under `spec` in a context of kind `ctx`.
@@ -110,38 +124,89 @@ pub fn params(spec: Spec, ctx: Ctx) -> Vec<Param> {
     match spec {
         Spec::Sgix | Spec::SgixAmbient if ctx == Ctx::Compat => {
             // Table 3.8: "TEXTURE_COMPARE_SGIX boolean TRUE or FALSE"; New State: initial "False".
-            v.push(p(TEXTURE_COMPARE_SGIX, "TEXTURE_COMPARE_SGIX", ParamKind::Bool, Stored::Bool(false), "SGIX_shadow Table 3.8, New State"));
+            v.push(p(
+                TEXTURE_COMPARE_SGIX,
+                "TEXTURE_COMPARE_SGIX",
+                ParamKind::Bool,
+                Stored::Bool(false),
+                "SGIX_shadow Table 3.8, New State",
+            ));
             // "TEXTURE_COMPARE_OPERATOR_SGIX integer TEXTURE_LEQUAL_R_SGIX, TEXTURE_GEQUAL_R_SGIX";
             // Errors: "INVALID_OPERATION is generated if ... <param> is not TEXTURE_LEQUAL_R_SGIX, or
             // TEXTURE_GEQUAL_R_SGIX"; initial "TEXTURE_LEQUAL_R_SGIX".
-            v.push(p(TEXTURE_COMPARE_OPERATOR_SGIX, "TEXTURE_COMPARE_OPERATOR_SGIX", ParamKind::Enum(&[TEXTURE_LEQUAL_R_SGIX, TEXTURE_GEQUAL_R_SGIX], InvalidOperation), Stored::Enum(TEXTURE_LEQUAL_R_SGIX), "SGIX_shadow Table 3.8, Errors, New State"));
+            v.push(p(
+                TEXTURE_COMPARE_OPERATOR_SGIX,
+                "TEXTURE_COMPARE_OPERATOR_SGIX",
+                ParamKind::Enum(
+                    &[TEXTURE_LEQUAL_R_SGIX, TEXTURE_GEQUAL_R_SGIX],
+                    InvalidOperation,
+                ),
+                Stored::Enum(TEXTURE_LEQUAL_R_SGIX),
+                "SGIX_shadow Table 3.8, Errors, New State",
+            ));
             if spec == Spec::SgixAmbient {
                 // "When SHADOW_AMBIENT_SGIX is set, the <param> value is clamped to the range [0.0, 1.0]";
                 // Errors: "None"; initial 0.0.
-                v.push(p(SHADOW_AMBIENT_SGIX, "SHADOW_AMBIENT_SGIX", ParamKind::Unit, Stored::Float(0.0), "SGIX_shadow_ambient Notes, New State"));
+                v.push(p(
+                    SHADOW_AMBIENT_SGIX,
+                    "SHADOW_AMBIENT_SGIX",
+                    ParamKind::Unit,
+                    Stored::Float(0.0),
+                    "SGIX_shadow_ambient Notes, New State",
+                ));
             }
         }
         Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs if ctx == Ctx::Compat => {
             // ARB_shadow Errors: "INVALID_ENUM is generated if ... TEXTURE_COMPARE_MODE_ARB and
             // parameter <param> is not NONE or COMPARE_R_TO_TEXTURE"; New State: initial NONE.
-            v.push(p(TEXTURE_COMPARE_MODE, "TEXTURE_COMPARE_MODE", ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum), Stored::Enum(NONE), "ARB_shadow Errors, New State"));
+            v.push(p(
+                TEXTURE_COMPARE_MODE,
+                "TEXTURE_COMPARE_MODE",
+                ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum),
+                Stored::Enum(NONE),
+                "ARB_shadow Errors, New State",
+            ));
             if spec == Spec::ExtFuncs {
                 // EXT_shadow_funcs Errors: "... is not one of LEQUAL, GEQUAL, LESS, GREATER, EQUAL,
                 // NOTEQUAL, ALWAYS, or NEVER"; initial LEQUAL.
-                v.push(p(TEXTURE_COMPARE_FUNC, "TEXTURE_COMPARE_FUNC", ParamKind::Enum(FUNCS8, InvalidEnum), Stored::Enum(LEQUAL), "EXT_shadow_funcs Errors, New State"));
+                v.push(p(
+                    TEXTURE_COMPARE_FUNC,
+                    "TEXTURE_COMPARE_FUNC",
+                    ParamKind::Enum(FUNCS8, InvalidEnum),
+                    Stored::Enum(LEQUAL),
+                    "EXT_shadow_funcs Errors, New State",
+                ));
             } else {
                 // ARB_shadow Errors: "... TEXTURE_COMPARE_FUNC_ARB and parameter <param> is not LEQUAL
                 // or GEQUAL"; initial LEQUAL.
-                v.push(p(TEXTURE_COMPARE_FUNC, "TEXTURE_COMPARE_FUNC", ParamKind::Enum(&[LEQUAL, GEQUAL], InvalidEnum), Stored::Enum(LEQUAL), "ARB_shadow Errors, New State"));
+                v.push(p(
+                    TEXTURE_COMPARE_FUNC,
+                    "TEXTURE_COMPARE_FUNC",
+                    ParamKind::Enum(&[LEQUAL, GEQUAL], InvalidEnum),
+                    Stored::Enum(LEQUAL),
+                    "ARB_shadow Errors, New State",
+                ));
             }
             // ARB_depth_texture: "INVALID_ENUM is generated if TexParameter[if] parameter <pname> is
             // DEPTH_TEXTURE_MODE_ARB and parameter <param> is not ALPHA, LUMINANCE, or INTENSITY";
             // "Initially, depth textures are interpreted as LUMINANCE."
-            v.push(p(DEPTH_TEXTURE_MODE, "DEPTH_TEXTURE_MODE", ParamKind::Enum(&[LUMINANCE, INTENSITY, ALPHA], InvalidEnum), Stored::Enum(LUMINANCE), "ARB_depth_texture Errors, §3.8.4"));
+            v.push(p(
+                DEPTH_TEXTURE_MODE,
+                "DEPTH_TEXTURE_MODE",
+                ParamKind::Enum(&[LUMINANCE, INTENSITY, ALPHA], InvalidEnum),
+                Stored::Enum(LUMINANCE),
+                "ARB_depth_texture Errors, §3.8.4",
+            ));
             if spec == Spec::ArbAmbient {
                 // "The value set by TEXTURE_COMPARE_FAIL_VALUE_ARB is clamped to lie in [0, 1]";
                 // Errors: "None."; initial 0.0.
-                v.push(p(TEXTURE_COMPARE_FAIL_VALUE_ARB, "TEXTURE_COMPARE_FAIL_VALUE_ARB", ParamKind::Unit, Stored::Float(0.0), "ARB_shadow_ambient §3.8.4, New State"));
+                v.push(p(
+                    TEXTURE_COMPARE_FAIL_VALUE_ARB,
+                    "TEXTURE_COMPARE_FAIL_VALUE_ARB",
+                    ParamKind::Unit,
+                    Stored::Float(0.0),
+                    "ARB_shadow_ambient §3.8.4, New State",
+                ));
             }
         }
         Spec::Es2Ext if ctx == Ctx::Es => {
@@ -149,27 +214,81 @@ pub fn params(spec: Spec, ctx: Ctx) -> Vec<Param> {
             // "TEXTURE_COMPARE_FUNC_EXT enum LEQUAL, GEQUAL, LESS, GREATER, EQUAL, NOTEQUAL, ALWAYS,
             // NEVER". The extension has no Errors or New State section: ES 2.0 §2.5 reports an
             // unaccepted enum value with INVALID_ENUM, and the initial values are those of ARB_shadow.
-            v.push(p(TEXTURE_COMPARE_MODE, "TEXTURE_COMPARE_MODE_EXT", ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum), Stored::Enum(NONE), "EXT_shadow_samplers §3.7.4 (table 3.10)"));
-            v.push(p(TEXTURE_COMPARE_FUNC, "TEXTURE_COMPARE_FUNC_EXT", ParamKind::Enum(FUNCS8, InvalidEnum), Stored::Enum(LEQUAL), "EXT_shadow_samplers §3.7.4 (table 3.10)"));
+            v.push(p(
+                TEXTURE_COMPARE_MODE,
+                "TEXTURE_COMPARE_MODE_EXT",
+                ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum),
+                Stored::Enum(NONE),
+                "EXT_shadow_samplers §3.7.4 (table 3.10)",
+            ));
+            v.push(p(
+                TEXTURE_COMPARE_FUNC,
+                "TEXTURE_COMPARE_FUNC_EXT",
+                ParamKind::Enum(FUNCS8, InvalidEnum),
+                Stored::Enum(LEQUAL),
+                "EXT_shadow_samplers §3.7.4 (table 3.10)",
+            ));
         }
         Spec::Gl46 if ctx != Ctx::Es => {
             // Table 8.17, §8.10 Errors ("INVALID_ENUM ... not among the legal values"), §8.22 / Table
             // 23.15 initial values NONE, LEQUAL, DEPTH_COMPONENT.
-            v.push(p(TEXTURE_COMPARE_MODE, "TEXTURE_COMPARE_MODE", ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum), Stored::Enum(NONE), "GL 4.6 Table 8.17, §8.10, Table 23.15"));
-            v.push(p(TEXTURE_COMPARE_FUNC, "TEXTURE_COMPARE_FUNC", ParamKind::Enum(FUNCS8, InvalidEnum), Stored::Enum(LEQUAL), "GL 4.6 Table 8.17, §8.10, Table 23.15"));
-            v.push(p(DEPTH_STENCIL_TEXTURE_MODE, "DEPTH_STENCIL_TEXTURE_MODE", ParamKind::Enum(&[DEPTH_COMPONENT, STENCIL_INDEX], InvalidEnum), Stored::Enum(DEPTH_COMPONENT), "GL 4.6 Table 8.17, §8.10, Table 23.15"));
+            v.push(p(
+                TEXTURE_COMPARE_MODE,
+                "TEXTURE_COMPARE_MODE",
+                ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum),
+                Stored::Enum(NONE),
+                "GL 4.6 Table 8.17, §8.10, Table 23.15",
+            ));
+            v.push(p(
+                TEXTURE_COMPARE_FUNC,
+                "TEXTURE_COMPARE_FUNC",
+                ParamKind::Enum(FUNCS8, InvalidEnum),
+                Stored::Enum(LEQUAL),
+                "GL 4.6 Table 8.17, §8.10, Table 23.15",
+            ));
+            v.push(p(
+                DEPTH_STENCIL_TEXTURE_MODE,
+                "DEPTH_STENCIL_TEXTURE_MODE",
+                ParamKind::Enum(&[DEPTH_COMPONENT, STENCIL_INDEX], InvalidEnum),
+                Stored::Enum(DEPTH_COMPONENT),
+                "GL 4.6 Table 8.17, §8.10, Table 23.15",
+            ));
             if ctx == Ctx::Compat {
                 // Compatibility Table 8.25: "DEPTH_TEXTURE_MODE enum RED, LUMINANCE, INTENSITY, ALPHA";
                 // §8.22: initial LUMINANCE (§8.12: RED in a forward-compatible context). Removed from
                 // the core profile (E.2.2), where the pname is an INVALID_ENUM.
-                v.push(p(DEPTH_TEXTURE_MODE, "DEPTH_TEXTURE_MODE", ParamKind::Enum(&[RED, LUMINANCE, INTENSITY, ALPHA], InvalidEnum), Stored::Enum(LUMINANCE), "GL 4.6 compatibility Table 8.25, §8.12, §8.22"));
+                v.push(p(
+                    DEPTH_TEXTURE_MODE,
+                    "DEPTH_TEXTURE_MODE",
+                    ParamKind::Enum(&[RED, LUMINANCE, INTENSITY, ALPHA], InvalidEnum),
+                    Stored::Enum(LUMINANCE),
+                    "GL 4.6 compatibility Table 8.25, §8.12, §8.22",
+                ));
             }
         }
         Spec::Gles32 if ctx == Ctx::Es => {
             // ES 3.2 Table 8.19, §8.10 Errors, §8.19 initial values.
-            v.push(p(TEXTURE_COMPARE_MODE, "TEXTURE_COMPARE_MODE", ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum), Stored::Enum(NONE), "ES 3.2 Table 8.19, §8.10, §8.19"));
-            v.push(p(TEXTURE_COMPARE_FUNC, "TEXTURE_COMPARE_FUNC", ParamKind::Enum(FUNCS8, InvalidEnum), Stored::Enum(LEQUAL), "ES 3.2 Table 8.19, §8.10, §8.19"));
-            v.push(p(DEPTH_STENCIL_TEXTURE_MODE, "DEPTH_STENCIL_TEXTURE_MODE", ParamKind::Enum(&[DEPTH_COMPONENT, STENCIL_INDEX], InvalidEnum), Stored::Enum(DEPTH_COMPONENT), "ES 3.2 Table 8.19, §8.10, §8.19"));
+            v.push(p(
+                TEXTURE_COMPARE_MODE,
+                "TEXTURE_COMPARE_MODE",
+                ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum),
+                Stored::Enum(NONE),
+                "ES 3.2 Table 8.19, §8.10, §8.19",
+            ));
+            v.push(p(
+                TEXTURE_COMPARE_FUNC,
+                "TEXTURE_COMPARE_FUNC",
+                ParamKind::Enum(FUNCS8, InvalidEnum),
+                Stored::Enum(LEQUAL),
+                "ES 3.2 Table 8.19, §8.10, §8.19",
+            ));
+            v.push(p(
+                DEPTH_STENCIL_TEXTURE_MODE,
+                "DEPTH_STENCIL_TEXTURE_MODE",
+                ParamKind::Enum(&[DEPTH_COMPONENT, STENCIL_INDEX], InvalidEnum),
+                Stored::Enum(DEPTH_COMPONENT),
+                "ES 3.2 Table 8.19, §8.10, §8.19",
+            ));
         }
         _ => {}
     }
@@ -179,7 +298,10 @@ pub fn params(spec: Spec, ctx: Ctx) -> Vec<Param> {
 /// The pname as defined under `spec` in `ctx`; INVALID_ENUM when it does not exist there (GL 4.6 §8.10:
 /// "An INVALID_ENUM error is generated if pname is not one of the parameter names in table 8.17").
 pub fn param(spec: Spec, ctx: Ctx, pname: u32) -> Result<Param, GlErrorKind> {
-    params(spec, ctx).into_iter().find(|p| p.pname == pname).ok_or(GlErrorKind::InvalidEnum)
+    params(spec, ctx)
+        .into_iter()
+        .find(|p| p.pname == pname)
+        .ok_or(GlErrorKind::InvalidEnum)
 }
 
 /// TexParameter{if}(target, pname, value): the stored value, or the error (state unchanged).
@@ -224,41 +346,180 @@ mod tests {
 
     #[test]
     fn sgix_operator_error_is_invalid_operation_and_arb_is_invalid_enum() {
-        assert_eq!(set_param(Spec::Sgix, Ctx::Compat, TEXTURE_COMPARE_OPERATOR_SGIX, Value::Int(LEQUAL as i64)), Err(InvalidOperation));
-        assert_eq!(set_param(Spec::Sgix, Ctx::Compat, TEXTURE_COMPARE_OPERATOR_SGIX, Value::Int(TEXTURE_GEQUAL_R_SGIX as i64)), Ok(Stored::Enum(TEXTURE_GEQUAL_R_SGIX)));
-        assert_eq!(set_param(Spec::Arb, Ctx::Compat, TEXTURE_COMPARE_FUNC, Value::Int(0x0201)), Err(InvalidEnum));
-        assert_eq!(set_param(Spec::ExtFuncs, Ctx::Compat, TEXTURE_COMPARE_FUNC, Value::Int(0x0201)), Ok(Stored::Enum(0x0201)));
-        assert_eq!(set_param(Spec::Gl46, Ctx::Core, TEXTURE_COMPARE_FUNC, Value::Int(TEXTURE_LEQUAL_R_SGIX as i64)), Err(InvalidEnum));
+        assert_eq!(
+            set_param(
+                Spec::Sgix,
+                Ctx::Compat,
+                TEXTURE_COMPARE_OPERATOR_SGIX,
+                Value::Int(LEQUAL as i64)
+            ),
+            Err(InvalidOperation)
+        );
+        assert_eq!(
+            set_param(
+                Spec::Sgix,
+                Ctx::Compat,
+                TEXTURE_COMPARE_OPERATOR_SGIX,
+                Value::Int(TEXTURE_GEQUAL_R_SGIX as i64)
+            ),
+            Ok(Stored::Enum(TEXTURE_GEQUAL_R_SGIX))
+        );
+        assert_eq!(
+            set_param(
+                Spec::Arb,
+                Ctx::Compat,
+                TEXTURE_COMPARE_FUNC,
+                Value::Int(0x0201)
+            ),
+            Err(InvalidEnum)
+        );
+        assert_eq!(
+            set_param(
+                Spec::ExtFuncs,
+                Ctx::Compat,
+                TEXTURE_COMPARE_FUNC,
+                Value::Int(0x0201)
+            ),
+            Ok(Stored::Enum(0x0201))
+        );
+        assert_eq!(
+            set_param(
+                Spec::Gl46,
+                Ctx::Core,
+                TEXTURE_COMPARE_FUNC,
+                Value::Int(TEXTURE_LEQUAL_R_SGIX as i64)
+            ),
+            Err(InvalidEnum)
+        );
     }
 
     #[test]
     fn defaults_per_spec_and_context() {
-        assert_eq!(default_value(Spec::Sgix, Ctx::Compat, TEXTURE_COMPARE_SGIX), Ok(Stored::Bool(false)));
-        assert_eq!(default_value(Spec::Sgix, Ctx::Compat, TEXTURE_COMPARE_OPERATOR_SGIX), Ok(Stored::Enum(TEXTURE_LEQUAL_R_SGIX)));
-        assert_eq!(default_value(Spec::SgixAmbient, Ctx::Compat, SHADOW_AMBIENT_SGIX), Ok(Stored::Float(0.0)));
-        assert_eq!(default_value(Spec::Arb, Ctx::Compat, TEXTURE_COMPARE_MODE), Ok(Stored::Enum(NONE)));
-        assert_eq!(default_value(Spec::Arb, Ctx::Compat, TEXTURE_COMPARE_FUNC), Ok(Stored::Enum(LEQUAL)));
-        assert_eq!(default_value(Spec::Arb, Ctx::Compat, DEPTH_TEXTURE_MODE), Ok(Stored::Enum(LUMINANCE)));
-        assert_eq!(default_value(Spec::Arb, Ctx::Compat, TEXTURE_COMPARE_FAIL_VALUE_ARB), Err(InvalidEnum));
-        assert_eq!(default_value(Spec::ArbAmbient, Ctx::Compat, TEXTURE_COMPARE_FAIL_VALUE_ARB), Ok(Stored::Float(0.0)));
-        assert_eq!(default_value(Spec::Gl46, Ctx::Compat, DEPTH_TEXTURE_MODE), Ok(Stored::Enum(LUMINANCE)));
-        assert_eq!(default_value(Spec::Gl46, Ctx::Core, DEPTH_TEXTURE_MODE), Err(InvalidEnum));
-        assert_eq!(default_value(Spec::Gles32, Ctx::Es, DEPTH_TEXTURE_MODE), Err(InvalidEnum));
-        assert_eq!(default_value(Spec::Gles32, Ctx::Es, DEPTH_STENCIL_TEXTURE_MODE), Ok(Stored::Enum(DEPTH_COMPONENT)));
-        assert_eq!(default_value(Spec::Es2Ext, Ctx::Es, DEPTH_STENCIL_TEXTURE_MODE), Err(InvalidEnum));
+        assert_eq!(
+            default_value(Spec::Sgix, Ctx::Compat, TEXTURE_COMPARE_SGIX),
+            Ok(Stored::Bool(false))
+        );
+        assert_eq!(
+            default_value(Spec::Sgix, Ctx::Compat, TEXTURE_COMPARE_OPERATOR_SGIX),
+            Ok(Stored::Enum(TEXTURE_LEQUAL_R_SGIX))
+        );
+        assert_eq!(
+            default_value(Spec::SgixAmbient, Ctx::Compat, SHADOW_AMBIENT_SGIX),
+            Ok(Stored::Float(0.0))
+        );
+        assert_eq!(
+            default_value(Spec::Arb, Ctx::Compat, TEXTURE_COMPARE_MODE),
+            Ok(Stored::Enum(NONE))
+        );
+        assert_eq!(
+            default_value(Spec::Arb, Ctx::Compat, TEXTURE_COMPARE_FUNC),
+            Ok(Stored::Enum(LEQUAL))
+        );
+        assert_eq!(
+            default_value(Spec::Arb, Ctx::Compat, DEPTH_TEXTURE_MODE),
+            Ok(Stored::Enum(LUMINANCE))
+        );
+        assert_eq!(
+            default_value(Spec::Arb, Ctx::Compat, TEXTURE_COMPARE_FAIL_VALUE_ARB),
+            Err(InvalidEnum)
+        );
+        assert_eq!(
+            default_value(
+                Spec::ArbAmbient,
+                Ctx::Compat,
+                TEXTURE_COMPARE_FAIL_VALUE_ARB
+            ),
+            Ok(Stored::Float(0.0))
+        );
+        assert_eq!(
+            default_value(Spec::Gl46, Ctx::Compat, DEPTH_TEXTURE_MODE),
+            Ok(Stored::Enum(LUMINANCE))
+        );
+        assert_eq!(
+            default_value(Spec::Gl46, Ctx::Core, DEPTH_TEXTURE_MODE),
+            Err(InvalidEnum)
+        );
+        assert_eq!(
+            default_value(Spec::Gles32, Ctx::Es, DEPTH_TEXTURE_MODE),
+            Err(InvalidEnum)
+        );
+        assert_eq!(
+            default_value(Spec::Gles32, Ctx::Es, DEPTH_STENCIL_TEXTURE_MODE),
+            Ok(Stored::Enum(DEPTH_COMPONENT))
+        );
+        assert_eq!(
+            default_value(Spec::Es2Ext, Ctx::Es, DEPTH_STENCIL_TEXTURE_MODE),
+            Err(InvalidEnum)
+        );
     }
 
     #[test]
     fn conversions_and_clamps() {
         // Fail value / ambient clamped to [0,1], never an error.
-        assert_eq!(set_param(Spec::ArbAmbient, Ctx::Compat, TEXTURE_COMPARE_FAIL_VALUE_ARB, Value::Float(1.5)), Ok(Stored::Float(1.0)));
-        assert_eq!(set_param(Spec::SgixAmbient, Ctx::Compat, SHADOW_AMBIENT_SGIX, Value::Float(-0.5)), Ok(Stored::Float(0.0)));
+        assert_eq!(
+            set_param(
+                Spec::ArbAmbient,
+                Ctx::Compat,
+                TEXTURE_COMPARE_FAIL_VALUE_ARB,
+                Value::Float(1.5)
+            ),
+            Ok(Stored::Float(1.0))
+        );
+        assert_eq!(
+            set_param(
+                Spec::SgixAmbient,
+                Ctx::Compat,
+                SHADOW_AMBIENT_SGIX,
+                Value::Float(-0.5)
+            ),
+            Ok(Stored::Float(0.0))
+        );
         // Booleans: non-zero is TRUE.
-        assert_eq!(set_param(Spec::Sgix, Ctx::Compat, TEXTURE_COMPARE_SGIX, Value::Float(0.25)), Ok(Stored::Bool(true)));
+        assert_eq!(
+            set_param(
+                Spec::Sgix,
+                Ctx::Compat,
+                TEXTURE_COMPARE_SGIX,
+                Value::Float(0.25)
+            ),
+            Ok(Stored::Bool(true))
+        );
         // Enums given as floats are rounded.
-        assert_eq!(set_param(Spec::Gl46, Ctx::Core, TEXTURE_COMPARE_MODE, Value::Float(COMPARE_REF_TO_TEXTURE as f64 + 0.4)), Ok(Stored::Enum(COMPARE_REF_TO_TEXTURE)));
-        assert_eq!(set_param(Spec::Gl46, Ctx::Compat, DEPTH_TEXTURE_MODE, Value::Int(RED as i64)), Ok(Stored::Enum(RED)));
-        assert_eq!(set_param(Spec::Arb, Ctx::Compat, DEPTH_TEXTURE_MODE, Value::Int(RED as i64)), Err(InvalidEnum));
-        assert_eq!(set_param(Spec::Gles32, Ctx::Es, DEPTH_STENCIL_TEXTURE_MODE, Value::Int(0x1234)), Err(InvalidEnum));
+        assert_eq!(
+            set_param(
+                Spec::Gl46,
+                Ctx::Core,
+                TEXTURE_COMPARE_MODE,
+                Value::Float(COMPARE_REF_TO_TEXTURE as f64 + 0.4)
+            ),
+            Ok(Stored::Enum(COMPARE_REF_TO_TEXTURE))
+        );
+        assert_eq!(
+            set_param(
+                Spec::Gl46,
+                Ctx::Compat,
+                DEPTH_TEXTURE_MODE,
+                Value::Int(RED as i64)
+            ),
+            Ok(Stored::Enum(RED))
+        );
+        assert_eq!(
+            set_param(
+                Spec::Arb,
+                Ctx::Compat,
+                DEPTH_TEXTURE_MODE,
+                Value::Int(RED as i64)
+            ),
+            Err(InvalidEnum)
+        );
+        assert_eq!(
+            set_param(
+                Spec::Gles32,
+                Ctx::Es,
+                DEPTH_STENCIL_TEXTURE_MODE,
+                Value::Int(0x1234)
+            ),
+            Err(InvalidEnum)
+        );
     }
 }

@@ -37,7 +37,11 @@ fn cmp_with_ratio(x: f64, c: u64, m: u64) -> Option<Ordering> {
         return None;
     }
     if x.is_infinite() {
-        return Some(if x > 0.0 { Ordering::Greater } else { Ordering::Less });
+        return Some(if x > 0.0 {
+            Ordering::Greater
+        } else {
+            Ordering::Less
+        });
     }
     let mf = m as f64; // m < 2^53: exact
     let hi = x * mf;
@@ -54,7 +58,10 @@ pub fn unorm_max(bits: u32) -> u64 {
 
 /// §2.3.5.1 equation (2.1): "f = c / (2^b − 1)". Returned exactly.
 pub fn unorm_to_float(c: u64, bits: u32) -> Exact {
-    Exact::Q { c, m: unorm_max(bits) }
+    Exact::Q {
+        c,
+        m: unorm_max(bits),
+    }
 }
 
 /// §2.3.5.2 equation (2.3): the float is first clamped to [0,1], then
@@ -104,18 +111,33 @@ mod tests {
     fn exact_ratio_comparison() {
         let half16 = unorm_to_float(32768, 16);
         assert_eq!(half16.cmp_from(0.5), Some(Ordering::Less)); // 32768/65535 > 0.5
-        assert_eq!(unorm_to_float(65535, 16).cmp_from(1.0), Some(Ordering::Equal));
+        assert_eq!(
+            unorm_to_float(65535, 16).cmp_from(1.0),
+            Some(Ordering::Equal)
+        );
         assert_eq!(unorm_to_float(0, 24).cmp_from(0.0), Some(Ordering::Equal));
         // 32-bit: 2^31 / (2^32-1) is a hair above 0.5.
-        assert_eq!(unorm_to_float(1 << 31, 32).cmp_from(0.5), Some(Ordering::Less));
-        assert_eq!(unorm_to_float(u32::MAX as u64, 32).cmp_from(1.0), Some(Ordering::Equal));
+        assert_eq!(
+            unorm_to_float(1 << 31, 32).cmp_from(0.5),
+            Some(Ordering::Less)
+        );
+        assert_eq!(
+            unorm_to_float(u32::MAX as u64, 32).cmp_from(1.0),
+            Some(Ordering::Equal)
+        );
         assert_eq!(half16.cmp_from(f64::NAN), None);
         assert_eq!(half16.cmp_from(f64::INFINITY), Some(Ordering::Greater));
     }
 
     #[test]
     fn f32_neighbours_bracket_the_ratio() {
-        for (c, b) in [(1u64, 16u32), (32768, 16), (12345, 24), (7, 32), (65535, 16)] {
+        for (c, b) in [
+            (1u64, 16u32),
+            (32768, 16),
+            (12345, 24),
+            (7, 32),
+            (65535, 16),
+        ] {
             let v = unorm_to_float(c, b);
             let [lo, hi] = f32_candidates(v);
             assert!(v.cmp_from(lo) != Some(Ordering::Greater), "{c}/{b}");

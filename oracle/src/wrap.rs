@@ -66,7 +66,11 @@ pub fn linear(mode: Wrap, u: f64, size: i64) -> (i64, i64, f64) {
     let u = prewrap(mode, u, size) - 0.5;
     let f = u.floor();
     let i = to_i(f);
-    (wrap(mode, i, size, false), wrap(mode, i.saturating_add(1), size, false), u - f)
+    (
+        wrap(mode, i, size, false),
+        wrap(mode, i.saturating_add(1), size, false),
+        u - f,
+    )
 }
 
 /// Array layer, §8.14.2: "l = clamp(RNE(r), 0, d_s − 1)" with footnote 4: "Implementations may
@@ -87,7 +91,9 @@ mod tests {
         assert_eq!(wrap(Wrap::Repeat, -1, 4, true), 3);
         assert_eq!(wrap(Wrap::Repeat, 5, 4, true), 1);
         // mirrored repeat over 2×size: 0 1 2 3 | 3 2 1 0 | 0 1 ...
-        let m: Vec<i64> = (-4..12).map(|c| wrap(Wrap::MirroredRepeat, c, 4, true)).collect();
+        let m: Vec<i64> = (-4..12)
+            .map(|c| wrap(Wrap::MirroredRepeat, c, 4, true))
+            .collect();
         assert_eq!(m, vec![3, 2, 1, 0, 0, 1, 2, 3, 3, 2, 1, 0, 0, 1, 2, 3]);
         assert_eq!(wrap(Wrap::MirrorClampToEdge, -3, 4, true), 2);
         assert_eq!(wrap(Wrap::MirrorClampToEdge, 9, 4, true), 3);

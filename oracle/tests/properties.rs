@@ -7,12 +7,25 @@ use shadowcheck_model::*;
 use shadowcheck_oracle::evaluate;
 
 fn spec_with_eight() -> impl Strategy<Value = Spec> {
-    prop_oneof![Just(Spec::Gl46), Just(Spec::Gles32), Just(Spec::ExtFuncs), Just(Spec::Es2Ext)]
+    prop_oneof![
+        Just(Spec::Gl46),
+        Just(Spec::Gles32),
+        Just(Spec::ExtFuncs),
+        Just(Spec::Es2Ext)
+    ]
 }
 
 fn format_for(spec: Spec) -> Vec<Format> {
     match spec {
-        Spec::Gl46 => vec![Format::D16, Format::D24, Format::D32, Format::D32f, Format::D24S8, Format::D32fS8, Format::DepthUnsized],
+        Spec::Gl46 => vec![
+            Format::D16,
+            Format::D24,
+            Format::D32,
+            Format::D32f,
+            Format::D24S8,
+            Format::D32fS8,
+            Format::DepthUnsized,
+        ],
         Spec::Gles32 => vec![Format::D16, Format::D24, Format::D32f, Format::D24S8],
         Spec::Es2Ext => vec![Format::D16, Format::D24, Format::D24S8],
         _ => vec![Format::D16, Format::D24, Format::D32],
@@ -50,17 +63,42 @@ fn any_case() -> impl Strategy<Value = Case> {
             };
             let format = formats[fi % formats.len()];
             let funcs: Vec<CompareFunc> = match spec {
-                Spec::Sgix | Spec::SgixAmbient => vec![CompareFunc::LequalRSgix, CompareFunc::GequalRSgix],
+                Spec::Sgix | Spec::SgixAmbient => {
+                    vec![CompareFunc::LequalRSgix, CompareFunc::GequalRSgix]
+                }
                 Spec::Arb | Spec::ArbAmbient => vec![CompareFunc::Lequal, CompareFunc::Gequal],
                 _ => CompareFunc::CORE.to_vec(),
             };
-            let filters = [Filter::Nearest, Filter::Linear, Filter::NearestMipmapNearest, Filter::LinearMipmapNearest, Filter::NearestMipmapLinear, Filter::LinearMipmapLinear];
+            let filters = [
+                Filter::Nearest,
+                Filter::Linear,
+                Filter::NearestMipmapNearest,
+                Filter::LinearMipmapNearest,
+                Filter::NearestMipmapLinear,
+                Filter::LinearMipmapLinear,
+            ];
             let filter = filters[fl];
             // A complete 4x4 mipmap: levels 4x4, 2x2, 1x1.
-            let mut c = case2d(spec, format, funcs[fu % funcs.len()], filter, 4, 4, &vals, st, dref);
+            let mut c = case2d(
+                spec,
+                format,
+                funcs[fu % funcs.len()],
+                filter,
+                4,
+                4,
+                &vals,
+                st,
+                dref,
+            );
             for (n, off) in [(2u32, 0usize), (1, 4)] {
                 let v = &vals[off..off + (n * n) as usize];
-                c.texture.levels.push(Level { width: n, height: n, layers: 1, depth: texels(format, v), stencil: format.has_stencil().then(|| vec![0; (n * n) as usize]) });
+                c.texture.levels.push(Level {
+                    width: n,
+                    height: n,
+                    layers: 1,
+                    depth: texels(format, v),
+                    stencil: format.has_stencil().then(|| vec![0; (n * n) as usize]),
+                });
             }
             c.lookup.lod = lod;
             if matches!(spec, Spec::ArbAmbient | Spec::SgixAmbient) {

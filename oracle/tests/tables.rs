@@ -18,19 +18,27 @@ fn row(spec: Spec, format: Format, func: CompareFunc) -> [f64; 3] {
 /// The eight-row table shared (row for row) by GL 4.6 Table 8.23, ES 3.2 Table 8.22, EXT_shadow_funcs and
 /// EXT_shadow_samplers Table 3.X: [r if Dref < Dt, r if Dref = Dt, r if Dref > Dt].
 const EIGHT: [(CompareFunc, [f64; 3]); 8] = [
-    (CompareFunc::Lequal, [1.0, 1.0, 0.0]),   // 1.0 if Dref ≤ Dt; 0.0 if Dref > Dt
-    (CompareFunc::Gequal, [0.0, 1.0, 1.0]),   // 1.0 if Dref ≥ Dt; 0.0 if Dref < Dt
-    (CompareFunc::Less, [1.0, 0.0, 0.0]),     // 1.0 if Dref < Dt; 0.0 if Dref ≥ Dt
-    (CompareFunc::Greater, [0.0, 0.0, 1.0]),  // 1.0 if Dref > Dt; 0.0 if Dref ≤ Dt
-    (CompareFunc::Equal, [0.0, 1.0, 0.0]),    // 1.0 if Dref = Dt; 0.0 if Dref ≠ Dt
+    (CompareFunc::Lequal, [1.0, 1.0, 0.0]), // 1.0 if Dref ≤ Dt; 0.0 if Dref > Dt
+    (CompareFunc::Gequal, [0.0, 1.0, 1.0]), // 1.0 if Dref ≥ Dt; 0.0 if Dref < Dt
+    (CompareFunc::Less, [1.0, 0.0, 0.0]),   // 1.0 if Dref < Dt; 0.0 if Dref ≥ Dt
+    (CompareFunc::Greater, [0.0, 0.0, 1.0]), // 1.0 if Dref > Dt; 0.0 if Dref ≤ Dt
+    (CompareFunc::Equal, [0.0, 1.0, 0.0]),  // 1.0 if Dref = Dt; 0.0 if Dref ≠ Dt
     (CompareFunc::Notequal, [1.0, 0.0, 1.0]), // 1.0 if Dref ≠ Dt; 0.0 if Dref = Dt
-    (CompareFunc::Always, [1.0, 1.0, 1.0]),   // r = 1.0
-    (CompareFunc::Never, [0.0, 0.0, 0.0]),    // r = 0.0
+    (CompareFunc::Always, [1.0, 1.0, 1.0]), // r = 1.0
+    (CompareFunc::Never, [0.0, 0.0, 0.0]),  // r = 0.0
 ];
 
 #[test]
 fn gl46_table_8_23() {
-    for f in [Format::D16, Format::D24, Format::D32, Format::D32f, Format::D24S8, Format::D32fS8, Format::DepthUnsized] {
+    for f in [
+        Format::D16,
+        Format::D24,
+        Format::D32,
+        Format::D32f,
+        Format::D24S8,
+        Format::D32fS8,
+        Format::DepthUnsized,
+    ] {
         for (func, want) in EIGHT {
             assert_eq!(row(Spec::Gl46, f, func), want, "GL 4.6 {func} {f}");
         }
@@ -39,7 +47,13 @@ fn gl46_table_8_23() {
 
 #[test]
 fn gles32_table_8_22() {
-    for f in [Format::D16, Format::D24, Format::D32f, Format::D24S8, Format::D32fS8] {
+    for f in [
+        Format::D16,
+        Format::D24,
+        Format::D32f,
+        Format::D24S8,
+        Format::D32fS8,
+    ] {
         for (func, want) in EIGHT {
             assert_eq!(row(Spec::Gles32, f, func), want, "ES 3.2 {func} {f}");
         }
@@ -50,7 +64,11 @@ fn gles32_table_8_22() {
 fn ext_shadow_funcs_table() {
     for f in [Format::D16, Format::D24, Format::D32] {
         for (func, want) in EIGHT {
-            assert_eq!(row(Spec::ExtFuncs, f, func), want, "EXT_shadow_funcs {func} {f}");
+            assert_eq!(
+                row(Spec::ExtFuncs, f, func),
+                want,
+                "EXT_shadow_funcs {func} {f}"
+            );
         }
     }
 }
@@ -59,7 +77,11 @@ fn ext_shadow_funcs_table() {
 fn ext_shadow_samplers_table_3_x() {
     for f in [Format::D16, Format::D24, Format::D24S8] {
         for (func, want) in EIGHT {
-            assert_eq!(row(Spec::Es2Ext, f, func), want, "EXT_shadow_samplers {func} {f}");
+            assert_eq!(
+                row(Spec::Es2Ext, f, func),
+                want,
+                "EXT_shadow_samplers {func} {f}"
+            );
         }
     }
 }
@@ -70,9 +92,19 @@ fn arb_shadow_has_two_rows_and_rejects_the_rest_with_invalid_enum() {
     for spec in [Spec::Arb, Spec::ArbAmbient] {
         assert_eq!(row(spec, Format::D24, CompareFunc::Lequal), [1.0, 1.0, 0.0]);
         assert_eq!(row(spec, Format::D24, CompareFunc::Gequal), [0.0, 1.0, 1.0]);
-        for func in [CompareFunc::Less, CompareFunc::Greater, CompareFunc::Equal, CompareFunc::Notequal, CompareFunc::Always, CompareFunc::Never, CompareFunc::LequalRSgix] {
+        for func in [
+            CompareFunc::Less,
+            CompareFunc::Greater,
+            CompareFunc::Equal,
+            CompareFunc::Notequal,
+            CompareFunc::Always,
+            CompareFunc::Never,
+            CompareFunc::LequalRSgix,
+        ] {
             match evaluate(&one(spec, Format::D24, func, 0.5, 0.5)) {
-                Err(OracleError::GlError { error, .. }) => assert_eq!(error, "INVALID_ENUM", "{func}"),
+                Err(OracleError::GlError { error, .. }) => {
+                    assert_eq!(error, "INVALID_ENUM", "{func}")
+                }
                 other => panic!("{func}: {other:?}"),
             }
         }
@@ -84,14 +116,25 @@ fn sgix_operators_compare_texel_to_r() {
     // "TEXTURE_LEQUAL_R_SGIX passes if the texel value is less than or equal to R"; GEQUAL_R: ">=".
     for spec in [Spec::Sgix, Spec::SgixAmbient] {
         // [texel > R, texel = R, texel < R] in the order LT, EQ, GT of (R, texel).
-        assert_eq!(row(spec, Format::D16, CompareFunc::LequalRSgix), [0.0, 1.0, 1.0]);
-        assert_eq!(row(spec, Format::D16, CompareFunc::GequalRSgix), [1.0, 1.0, 0.0]);
+        assert_eq!(
+            row(spec, Format::D16, CompareFunc::LequalRSgix),
+            [0.0, 1.0, 1.0]
+        );
+        assert_eq!(
+            row(spec, Format::D16, CompareFunc::GequalRSgix),
+            [1.0, 1.0, 0.0]
+        );
         // Brief example: texel 0.3, R 0.5, TEXTURE_LEQUAL_R_SGIX → 1.
-        assert_eq!(value(&one(spec, Format::D24, CompareFunc::LequalRSgix, 0.5, 0.3)), 1.0);
+        assert_eq!(
+            value(&one(spec, Format::D24, CompareFunc::LequalRSgix, 0.5, 0.3)),
+            1.0
+        );
         // Errors: "INVALID_OPERATION is generated if ... <param> is not TEXTURE_LEQUAL_R_SGIX, or TEXTURE_GEQUAL_R_SGIX".
         for func in CompareFunc::CORE {
             match evaluate(&one(spec, Format::D16, func, 0.5, 0.5)) {
-                Err(OracleError::GlError { error, .. }) => assert_eq!(error, "INVALID_OPERATION", "{func}"),
+                Err(OracleError::GlError { error, .. }) => {
+                    assert_eq!(error, "INVALID_OPERATION", "{func}")
+                }
                 other => panic!("{func}: {other:?}"),
             }
         }
@@ -121,11 +164,23 @@ fn fail_value_replaces_zero() {
     c.sampler.fail_value = Some(1.5);
     assert_eq!(value(&c), 1.0);
     // SGIX_shadow_ambient: "the value of the SHADOW_AMBIENT_SGIX parameter is returned, instead of 0.0".
-    let mut s = one(Spec::SgixAmbient, Format::D16, CompareFunc::LequalRSgix, 0.2, 0.6);
+    let mut s = one(
+        Spec::SgixAmbient,
+        Format::D16,
+        CompareFunc::LequalRSgix,
+        0.2,
+        0.6,
+    );
     s.sampler.fail_value = Some(0.4);
     assert_eq!(value(&s), 0.4f32 as f64); // sampler floats are f32 state
-    // A fail value under a spec without the pname: INVALID_ENUM.
+                                          // A fail value under a spec without the pname: INVALID_ENUM.
     let mut g = one(Spec::Gl46, Format::D16, CompareFunc::Lequal, 0.2, 0.6);
     g.sampler.fail_value = Some(0.4);
-    assert!(matches!(evaluate(&g), Err(OracleError::GlError { error: "INVALID_ENUM", .. })));
+    assert!(matches!(
+        evaluate(&g),
+        Err(OracleError::GlError {
+            error: "INVALID_ENUM",
+            ..
+        })
+    ));
 }

@@ -17,13 +17,28 @@ fn cube_case(spec: Spec, faces: [f64; 6], dir: [f64; 3], dref: f64) -> Case {
 #[test]
 fn cube_face_selection_table_8_19() {
     // One value per face; Dref 0.5 passes LEQUAL only on faces holding 1.
-    for (i, dir) in [[1.0, 0.2, 0.1], [-1.0, 0.2, 0.1], [0.1, 1.0, 0.2], [0.1, -1.0, 0.2], [0.1, 0.2, 1.0], [0.1, 0.2, -1.0]].iter().enumerate() {
+    for (i, dir) in [
+        [1.0, 0.2, 0.1],
+        [-1.0, 0.2, 0.1],
+        [0.1, 1.0, 0.2],
+        [0.1, -1.0, 0.2],
+        [0.1, 0.2, 1.0],
+        [0.1, 0.2, -1.0],
+    ]
+    .iter()
+    .enumerate()
+    {
         let mut f = [0.0; 6];
         f[i] = 1.0;
         assert_eq!(value(&cube_case(Spec::Gl46, f, *dir, 0.5)), 1.0, "face {i}");
     }
     // A tie between +X and +Y: the implementation's rule decides, both faces accepted.
-    let e = eval(&cube_case(Spec::Gl46, [1.0, 0.0, 0.0, 0.0, 0.0, 0.0], [1.0, 1.0, 0.0], 0.5));
+    let e = eval(&cube_case(
+        Spec::Gl46,
+        [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        0.5,
+    ));
     let acc = &e.expect.accept[&Profile::Strict];
     assert!(acc.contains(0.0) && acc.contains(1.0));
 }
@@ -48,7 +63,17 @@ fn array_layer_rounding() {
 fn wrap_modes_pick_the_texel_of_table_8_20() {
     // 4x1 texture, only texel 3 passes (holds 1.0); s = −0.125 → u = −0.5, ⌊u⌋ = −1.
     let mk = |w: Wrap| {
-        let mut c = case2d(Spec::Gl46, Format::D16, CompareFunc::Lequal, Filter::Nearest, 4, 1, &[0.0, 0.0, 0.0, 1.0], (-0.125, 0.5), 0.5);
+        let mut c = case2d(
+            Spec::Gl46,
+            Format::D16,
+            CompareFunc::Lequal,
+            Filter::Nearest,
+            4,
+            1,
+            &[0.0, 0.0, 0.0, 1.0],
+            (-0.125, 0.5),
+            0.5,
+        );
         c.sampler.wrap_s = w;
         c
     };
@@ -63,9 +88,31 @@ fn wrap_modes_pick_the_texel_of_table_8_20() {
 #[test]
 fn mipmap_level_selection_and_blend() {
     // 4x4 base (all 0), 2x2 level 1 (all 1), 1x1 level 2 (0). Dref 0.5, LEQUAL passes on level 1 only.
-    let mut c = case2d(Spec::Gl46, Format::D16, CompareFunc::Lequal, Filter::NearestMipmapNearest, 4, 4, &[0.0; 16], (0.5, 0.5), 0.5);
-    c.texture.levels.push(Level { width: 2, height: 2, layers: 1, depth: texels(Format::D16, &[1.0; 4]), stencil: None });
-    c.texture.levels.push(Level { width: 1, height: 1, layers: 1, depth: texels(Format::D16, &[0.0]), stencil: None });
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        CompareFunc::Lequal,
+        Filter::NearestMipmapNearest,
+        4,
+        4,
+        &[0.0; 16],
+        (0.5, 0.5),
+        0.5,
+    );
+    c.texture.levels.push(Level {
+        width: 2,
+        height: 2,
+        layers: 1,
+        depth: texels(Format::D16, &[1.0; 4]),
+        stencil: None,
+    });
+    c.texture.levels.push(Level {
+        width: 1,
+        height: 1,
+        layers: 1,
+        depth: texels(Format::D16, &[0.0]),
+        stencil: None,
+    });
     c.lookup.lod = 1.0;
     assert_eq!(value(&c), 1.0);
     c.lookup.lod = 0.25; // nearest(0.25) = level 0
@@ -93,7 +140,13 @@ fn seamless_cube_in_es_and_per_face_wrap_in_gl() {
     let mut c = one(Spec::Gles32, Format::D16, CompareFunc::Lequal, 0.5, 0.0);
     c.api = vec![ApiPath::Es300];
     c.texture.target = Target::Cube;
-    c.texture.levels[0] = Level { width: 2, height: 2, layers: 6, depth: texels(Format::D16, &vals), stencil: None };
+    c.texture.levels[0] = Level {
+        width: 2,
+        height: 2,
+        layers: 6,
+        depth: texels(Format::D16, &vals),
+        stencil: None,
+    };
     c.sampler = Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Linear);
     // +Z, sc = rx = −0.75 → s = 0.125, u = 0.25: α = 0.75 between the −X neighbour and texel 0.
     c.lookup.coord = [-0.75, 0.0, 1.0, 1.0];
@@ -110,13 +163,28 @@ fn contradictions_show_the_other_reading() {
     let c = one(Spec::Sgix, Format::D24, CompareFunc::LequalRSgix, 0.5, 0.3);
     let ids: Vec<&str> = contradictions::touching(&c).iter().map(|x| x.id).collect();
     assert!(ids.contains(&"sgix-lequal-direction"));
-    let alt = evaluate_reading(&c, "sgix-lequal-direction").unwrap().unwrap();
+    let alt = evaluate_reading(&c, "sgix-lequal-direction")
+        .unwrap()
+        .unwrap();
     assert_eq!(alt.expect.spec_value, Some(0.0));
     // SGIX_shadow_ambient's overview reading puts the ambient value on a pass.
-    let mut a = one(Spec::SgixAmbient, Format::D16, CompareFunc::LequalRSgix, 0.5, 0.3);
+    let mut a = one(
+        Spec::SgixAmbient,
+        Format::D16,
+        CompareFunc::LequalRSgix,
+        0.5,
+        0.3,
+    );
     a.sampler.fail_value = Some(0.25);
     assert_eq!(value(&a), 1.0);
-    assert_eq!(evaluate_reading(&a, "sgix-ambient").unwrap().unwrap().expect.spec_value, Some(0.25));
+    assert_eq!(
+        evaluate_reading(&a, "sgix-ambient")
+            .unwrap()
+            .unwrap()
+            .expect
+            .spec_value,
+        Some(0.25)
+    );
     // EXT_shadow_samplers GREATER at equality: 0 as encoded, either under the printed row.
     let g = one(Spec::Es2Ext, Format::D16, CompareFunc::Greater, 1.0, 1.0);
     assert_eq!(value(&g), 0.0);
@@ -124,20 +192,43 @@ fn contradictions_show_the_other_reading() {
     assert!(alt.expect.accept[&Profile::Strict].contains(1.0));
     // GL 4.6 D32F under an always-clamp reading: ref 1.5 vs 1.0 passes.
     let d = one(Spec::Gl46, Format::D32f, CompareFunc::Lequal, 1.5, 1.0);
-    assert_eq!(evaluate_reading(&d, "ref-clamp").unwrap().unwrap().expect.spec_value, Some(1.0));
+    assert_eq!(
+        evaluate_reading(&d, "ref-clamp")
+            .unwrap()
+            .unwrap()
+            .expect
+            .spec_value,
+        Some(1.0)
+    );
     // Explain text names both.
     let text = shadowcheck_oracle::explain::render(&c, &shadowcheck_oracle::evaluate(&c));
-    assert!(text.contains("R_LEQUAL_TEXTURE") && text.contains("under the other reading: r = 0"), "{text}");
+    assert!(
+        text.contains("R_LEQUAL_TEXTURE") && text.contains("under the other reading: r = 0"),
+        "{text}"
+    );
 }
 
 #[test]
 fn footprint_reports_texels_weights_and_passes() {
-    let c = case2d(Spec::Gl46, Format::D16, CompareFunc::Lequal, Filter::Linear, 2, 2, &[0.25, 0.75, 0.75, 1.0], (0.5, 0.5), 0.5);
+    let c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        CompareFunc::Lequal,
+        Filter::Linear,
+        2,
+        2,
+        &[0.25, 0.75, 0.75, 1.0],
+        (0.5, 0.5),
+        0.5,
+    );
     let e = eval(&c);
     assert_eq!(e.footprint.texels.len(), 4);
     let w: f64 = e.footprint.texels.iter().map(|t| t.weight).sum();
     assert_eq!(w, 1.0);
     let passes: Vec<Option<bool>> = e.footprint.texels.iter().map(|t| t.pass).collect();
-    assert_eq!(passes, vec![Some(false), Some(true), Some(true), Some(true)]);
+    assert_eq!(
+        passes,
+        vec![Some(false), Some(true), Some(true), Some(true)]
+    );
     assert_eq!(e.footprint.texels[0].stored, 16384.0);
 }

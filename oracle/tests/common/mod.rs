@@ -7,7 +7,9 @@ use shadowcheck_oracle::{evaluate, Evaluation};
 /// The API paths a spec's lookups go through (the first one each spec defines).
 pub fn api_for(spec: Spec) -> ApiPath {
     match spec {
-        Spec::Sgix | Spec::SgixAmbient | Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => ApiPath::FixedFunction,
+        Spec::Sgix | Spec::SgixAmbient | Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => {
+            ApiPath::FixedFunction
+        }
         Spec::Es2Ext => ApiPath::Es100Ext,
         Spec::Gl46 => ApiPath::GlslCore,
         Spec::Gles32 => ApiPath::Es300,
@@ -27,23 +29,72 @@ pub fn texels(format: Format, vals: &[f64]) -> Texels {
     }
 }
 
+#[allow(clippy::too_many_arguments)]
 /// A 2D case: `w`x`h` texture of `vals`, lookup at (s, t) with `dref`.
-pub fn case2d(spec: Spec, format: Format, func: CompareFunc, filter: Filter, w: u32, h: u32, vals: &[f64], st: (f64, f64), dref: f64) -> Case {
-    let stencil = if format.has_stencil() { Some(vec![0u8; (w * h) as usize]) } else { None };
+pub fn case2d(
+    spec: Spec,
+    format: Format,
+    func: CompareFunc,
+    filter: Filter,
+    w: u32,
+    h: u32,
+    vals: &[f64],
+    st: (f64, f64),
+    dref: f64,
+) -> Case {
+    let stencil = if format.has_stencil() {
+        Some(vec![0u8; (w * h) as usize])
+    } else {
+        None
+    };
     Case {
-        id: format!("test/{}/{}/{}/{}", spec.key(), format.key(), func.key(), dref),
+        id: format!(
+            "test/{}/{}/{}/{}",
+            spec.key(),
+            format.key(),
+            func.key(),
+            dref
+        ),
         spec,
         api: vec![api_for(spec)],
-        texture: Texture { target: Target::T2d, format, base_level: 0, levels: vec![Level { width: w, height: h, layers: 1, depth: texels(format, vals), stencil }] },
+        texture: Texture {
+            target: Target::T2d,
+            format,
+            base_level: 0,
+            levels: vec![Level {
+                width: w,
+                height: h,
+                layers: 1,
+                depth: texels(format, vals),
+                stencil,
+            }],
+        },
         sampler: Sampler::new(CompareMode::Compare, func, filter),
-        lookup: Lookup { coord: [st.0, st.1, 0.0, 1.0], layer: 0.0, dref, projective: false, lod: 0.0, bias: 0.0 },
+        lookup: Lookup {
+            coord: [st.0, st.1, 0.0, 1.0],
+            layer: 0.0,
+            dref,
+            projective: false,
+            lod: 0.0,
+            bias: 0.0,
+        },
         expect: None,
     }
 }
 
 /// A 1x1 NEAREST case: one texel `dt`, reference `dref`.
 pub fn one(spec: Spec, format: Format, func: CompareFunc, dref: f64, dt: f64) -> Case {
-    case2d(spec, format, func, Filter::Nearest, 1, 1, &[dt], (0.5, 0.5), dref)
+    case2d(
+        spec,
+        format,
+        func,
+        Filter::Nearest,
+        1,
+        1,
+        &[dt],
+        (0.5, 0.5),
+        dref,
+    )
 }
 
 pub fn eval(c: &Case) -> Evaluation {
@@ -52,10 +103,17 @@ pub fn eval(c: &Case) -> Evaluation {
 
 /// The spec value of a case.
 pub fn value(c: &Case) -> f64 {
-    eval(c).expect.spec_value.unwrap_or_else(|| panic!("{}: no spec value", c.id))
+    eval(c)
+        .expect
+        .spec_value
+        .unwrap_or_else(|| panic!("{}: no spec value", c.id))
 }
 
 /// The default 'compare' function of a spec: LEQUAL, or SGIX's LEQUAL_R.
 pub fn lequal(spec: Spec) -> CompareFunc {
-    if matches!(spec, Spec::Sgix | Spec::SgixAmbient) { CompareFunc::LequalRSgix } else { CompareFunc::Lequal }
+    if matches!(spec, Spec::Sgix | Spec::SgixAmbient) {
+        CompareFunc::LequalRSgix
+    } else {
+        CompareFunc::Lequal
+    }
 }

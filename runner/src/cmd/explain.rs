@@ -95,7 +95,9 @@ where
 
 fn default_api(spec: Spec, target: Target) -> ApiPath {
     match spec {
-        Spec::Sgix | Spec::SgixAmbient | Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => ApiPath::FixedFunction,
+        Spec::Sgix | Spec::SgixAmbient | Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => {
+            ApiPath::FixedFunction
+        }
         Spec::Es2Ext => ApiPath::Es100Ext,
         Spec::Gles32 => ApiPath::Es300,
         Spec::Gl46 if target == Target::CubeArray => ApiPath::GlslCore,
@@ -141,7 +143,11 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
     let depth = match format.unorm_bits() {
         Some(b) => {
             let m = ((1u64 << b) - 1) as f64;
-            Texels::Unorm(vals.iter().map(|v| (v.clamp(0.0, 1.0) * m).round() as u32).collect())
+            Texels::Unorm(
+                vals.iter()
+                    .map(|v| (v.clamp(0.0, 1.0) * m).round() as u32)
+                    .collect(),
+            )
         }
         None => Texels::Float(vals.iter().map(|v| *v as f32).collect()),
     };
@@ -158,32 +164,80 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
     for (i, c) in a.coord.iter().enumerate() {
         coord[i] = *c;
     }
-    let api: Vec<ApiPath> = if a.api.is_empty() { vec![default_api(spec, target)] } else { a.api.iter().map(|s| key(s)).collect::<anyhow::Result<_>>()? };
-    let id = format!("explain/{}/{}/{}/{}/{}/ref={}/dt={}", spec, target, format, filter, func, a.dref, a.dt.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(","));
+    let api: Vec<ApiPath> = if a.api.is_empty() {
+        vec![default_api(spec, target)]
+    } else {
+        a.api
+            .iter()
+            .map(|s| key(s))
+            .collect::<anyhow::Result<_>>()?
+    };
+    let id = format!(
+        "explain/{}/{}/{}/{}/{}/ref={}/dt={}",
+        spec,
+        target,
+        format,
+        filter,
+        func,
+        a.dref,
+        a.dt.iter()
+            .map(|v| v.to_string())
+            .collect::<Vec<_>>()
+            .join(",")
+    );
     Ok(Case {
         id,
         spec,
         api,
-        texture: Texture { target, format, base_level: 0, levels: vec![Level { width, height, layers, depth, stencil }] },
+        texture: Texture {
+            target,
+            format,
+            base_level: 0,
+            levels: vec![Level {
+                width,
+                height,
+                layers,
+                depth,
+                stencil,
+            }],
+        },
         sampler,
-        lookup: Lookup { coord, layer: a.layer, dref: a.dref, projective: a.projective, lod: a.lod, bias: a.bias },
+        lookup: Lookup {
+            coord,
+            layer: a.layer,
+            dref: a.dref,
+            projective: a.projective,
+            lod: a.lod,
+            bias: a.bias,
+        },
         expect: None,
     })
 }
 
 /// Reads a case from a JSON file: a single case, or a fixture file's case with the given id.
 fn case_from_file(path: &PathBuf, id: Option<&str>) -> anyhow::Result<Case> {
-    let text = std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-    let v: serde_json::Value = serde_json::from_str(&text).with_context(|| format!("parsing {}", path.display()))?;
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let v: serde_json::Value =
+        serde_json::from_str(&text).with_context(|| format!("parsing {}", path.display()))?;
     if let Some(cases) = v.get("cases").and_then(|c| c.as_array()) {
         let pick = match id {
-            Some(id) => cases.iter().find(|c| c.get("id").and_then(|i| i.as_str()) == Some(id)).with_context(|| format!("no case `{id}` in {}", path.display()))?,
+            Some(id) => cases
+                .iter()
+                .find(|c| c.get("id").and_then(|i| i.as_str()) == Some(id))
+                .with_context(|| format!("no case `{id}` in {}", path.display()))?,
             None if cases.len() == 1 => &cases[0],
-            None => bail!("{} holds {} cases: choose one with --id", path.display(), cases.len()),
+            None => bail!(
+                "{} holds {} cases: choose one with --id",
+                path.display(),
+                cases.len()
+            ),
         };
-        return serde_json::from_value(pick.clone()).with_context(|| format!("case in {}", path.display()));
+        return serde_json::from_value(pick.clone())
+            .with_context(|| format!("case in {}", path.display()));
     }
-    serde_json::from_value(v).with_context(|| format!("{} is neither a case nor a fixture file", path.display()))
+    serde_json::from_value(v)
+        .with_context(|| format!("{} is neither a case nor a fixture file", path.display()))
 }
 
 pub fn main(args: Args) -> anyhow::Result<ExitCode> {
@@ -195,7 +249,9 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     if args.json {
         let out = match &result {
             Ok(ev) => serde_json::to_string_pretty(ev)?,
-            Err(e) => serde_json::to_string_pretty(&serde_json::json!({ "case": case.id, "error": e.to_string() }))?,
+            Err(e) => serde_json::to_string_pretty(
+                &serde_json::json!({ "case": case.id, "error": e.to_string() }),
+            )?,
         };
         println!("{out}");
     } else {
