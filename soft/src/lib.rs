@@ -210,9 +210,17 @@ impl SoftUnit {
     }
 
     /// RGBA for one case on one API path. The case must be for this unit's spec.
+    ///
+    /// Allocation-free after warm-up: the texture is converted into a per-thread scratch buffer.
     pub fn sample(&self, case: &Case, api: ApiPath) -> Result<[f32; 4], SoftError> {
-        let mut tex = PreparedTexture::default();
-        self.sample_with(case, api, &mut tex)
+        thread_local! {
+            static SCRATCH: std::cell::RefCell<PreparedTexture> = std::cell::RefCell::new(PreparedTexture::default());
+        }
+        SCRATCH.with(|t| match t.try_borrow_mut() {
+            Ok(mut tex) => self.sample_with(case, api, &mut tex),
+            // Re-entered (cannot happen today): fall back to a fresh buffer.
+            Err(_) => self.sample_with(case, api, &mut PreparedTexture::default()),
+        })
     }
 
     /// RGBA for every API path of the case, in `case.api` order.
