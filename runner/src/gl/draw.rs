@@ -260,27 +260,34 @@ impl Renderer {
                 answers[ci] = Some(Answer::Skip(skipped.join("; ")));
                 continue;
             }
-            // The case's texture: reuse while texture and sampler are unchanged.
+            // The case's texture: reused while texture and sampler are unchanged. Compatibility
+            // contexts get a fresh texture per path instead: Mesa keeps per-texture sampler views
+            // whose DEPTH_TEXTURE_MODE swizzle depends on which path drew before (llvmpipe: an ARB
+            // fp SHADOW2D lookup after any other path on the same texture ignores ALPHA), and one
+            // path's answer must not depend on another path or on the case's neighbours.
             let key = (case.texture.clone(), case.sampler.clone());
-            if current.as_ref().is_none_or(|c| c.key != key) {
-                if let Some(c) = current.take() {
-                    self.gl.delete_texture(c.texture);
-                }
-                while self.gl.get_error() != glow::NO_ERROR {}
-                match texture::create(&self.gl, &self.info, case) {
-                    Ok(t) => {
-                        let stored = if self.info.es { None } else { texture::read_back(&self.gl, case).ok() };
-                        current = Some(Current { texture: t, key, stored });
-                    }
-                    Err(e) => {
-                        answers[ci] = Some(Answer::Error(e.to_string()));
-                        continue;
-                    }
-                }
-            }
-            let stored = current.as_ref().and_then(|c| c.stored.clone());
             let mut failed = None;
-            for plan in &plans {
+            let mut stored = None;
+            for (pi, plan) in plans.iter().enumerate() {
+                if self.info.compat || current.as_ref().is_none_or(|c| c.key != key) {
+                    if let Some(c) = current.take() {
+                        self.gl.delete_texture(c.texture);
+                    }
+                    while self.gl.get_error() != glow::NO_ERROR {}
+                    match texture::create(&self.gl, &self.info, case) {
+                        Ok(t) => {
+                            let st = if self.info.es || pi > 0 { None } else { texture::read_back(&self.gl, case).ok() };
+                            current = Some(Current { texture: t, key: key.clone(), stored: st });
+                        }
+                        Err(e) => {
+                            failed = Some(e.to_string());
+                            break;
+                        }
+                    }
+                }
+                if pi == 0 {
+                    stored = current.as_ref().and_then(|c| c.stored.clone());
+                }
                 if pending.len() == capacity {
                     self.collect(&mut pending, &mut results);
                     self.clear();

@@ -13,7 +13,7 @@
 //! LOD (same lambda' by §8.14.1, noted in the result). Anything else is skipped with the reason.
 
 use super::names::ContextApi;
-use shadowcheck_model::{ApiPath, Case, CompareMode, DepthStencilMode, Filter, Target};
+use shadowcheck_model::{ApiPath, Case, CompareMode, DepthStencilMode, DepthTextureMode, Filter, Target};
 use std::collections::HashSet;
 
 /// What the current context is and exposes.
@@ -111,6 +111,9 @@ pub struct ShaderKey {
     pub kind: SamplerKind,
     pub form: LodForm,
     pub proj: bool,
+    /// DEPTH_TEXTURE_MODE: one program per mode, so that a driver's per-program variant caching
+    /// cannot carry one mode's layout into another mode's draws.
+    pub mode: Option<DepthTextureMode>,
 }
 
 /// One API path's plan for one case.
@@ -271,7 +274,7 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
             l.lod, l.bias
         ));
     }
-    let key = ShaderKey { path, target: t, kind, form, proj };
+    let key = ShaderKey { path, target: t, kind, form, proj, mode: case.sampler.depth_texture_mode };
     let folded = matches!(form, LodForm::Lod | LodForm::Grad) && bias != 0.0;
     let lod_eff = if folded { lod + bias } else { lod };
     let c = [l.coord[0] as f32, l.coord[1] as f32, l.coord[2] as f32, l.coord[3] as f32];

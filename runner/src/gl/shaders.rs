@@ -180,7 +180,7 @@ mod tests {
 
     #[test]
     fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
-        let k = ShaderKey { path: ApiPath::GlslCore, target: Target::T2d, kind: SamplerKind::Shadow, form: LodForm::Lod, proj: false };
+        let k = ShaderKey { path: ApiPath::GlslCore, target: Target::T2d, kind: SamplerKind::Shadow, form: LodForm::Lod, proj: false, mode: None };
         assert_eq!(modern_call(&k), "textureLod(u_tex, p.xyz, u_x)");
         let k = ShaderKey { target: Target::CubeArray, form: LodForm::Implicit(false), ..k };
         assert_eq!(modern_call(&k), "texture(u_tex, p, u_x)");
@@ -190,7 +190,7 @@ mod tests {
 
     #[test]
     fn legacy_calls_use_the_glsl_120_names() {
-        let k = ShaderKey { path: ApiPath::Glsl120, target: Target::Rect, kind: SamplerKind::Shadow, form: LodForm::Implicit(false), proj: true };
+        let k = ShaderKey { path: ApiPath::Glsl120, target: Target::Rect, kind: SamplerKind::Shadow, form: LodForm::Implicit(false), proj: true, mode: None };
         assert_eq!(legacy_call(&k), "shadow2DRectProj(u_tex, p)");
         let k = ShaderKey { path: ApiPath::Es100Ext, target: Target::T2d, ..k };
         assert_eq!(legacy_call(&k), "shadow2DProjEXT(u_tex, p)");
@@ -198,7 +198,7 @@ mod tests {
 
     #[test]
     fn arb_program_uses_the_shadow_target_and_txb_for_bias() {
-        let k = ShaderKey { path: ApiPath::ArbFp, target: Target::T2d, kind: SamplerKind::Shadow, form: LodForm::Implicit(true), proj: false };
+        let k = ShaderKey { path: ApiPath::ArbFp, target: Target::T2d, kind: SamplerKind::Shadow, form: LodForm::Implicit(true), proj: false, mode: None };
         let s = arbfp(&k);
         assert!(s.contains("OPTION ARB_fragment_program_shadow;") && s.contains("TXB result.color, q, texture[0], SHADOW2D;"), "{s}");
     }
