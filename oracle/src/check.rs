@@ -210,6 +210,31 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
             "TEXTURE_LOD_BIAS does not exist in ES (ES 3.2 §8.14.1)".into(),
         ));
     }
+    if rules.spec == Spec::Es2Ext {
+        // ES 2.0 Table 3.10 has no TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD or
+        // TEXTURE_MAX_LOD: setting them is an INVALID_ENUM.
+        let lod_state = t.base_level != 0
+            || s.max_level.is_some()
+            || s.min_lod != -1000.0
+            || s.max_lod != 1000.0;
+        if lod_state {
+            return Err(gl_error(
+                case,
+                rules,
+                GlErrorKind::InvalidEnum,
+                "TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL / TEXTURE_MIN_LOD / TEXTURE_MAX_LOD are not ES 2.0 state".into(),
+            ));
+        }
+        // EXT_shadow_samplers: "float shadow2DEXT(sampler2DShadow sampler, vec3 coord); float
+        // shadow2DProjEXT(sampler2DShadow sampler, vec4 coord);" — no bias argument.
+        if case.lookup.bias != 0.0 {
+            return Err(not_applicable(
+                case,
+                rules,
+                "shadow2DEXT / shadow2DProjEXT take no bias argument".into(),
+            ));
+        }
+    }
     if t.target == Target::Rect {
         // GL 4.6 §8.10: "An INVALID_ENUM error is generated if the effective target is
         // TEXTURE_RECTANGLE and either of pnames TEXTURE_WRAP_S or TEXTURE_WRAP_T is set to either

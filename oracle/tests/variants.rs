@@ -397,3 +397,31 @@ fn nan_reference_is_implementation_defined() {
         1.0
     );
 }
+
+#[test]
+fn es2_has_no_lod_state_and_no_bias_argument() {
+    let mut c = one(Spec::Es2Ext, Format::D16, CompareFunc::Lequal, 0.5, 1.0);
+    c.sampler.max_level = Some(0);
+    assert!(matches!(
+        evaluate(&c),
+        Err(OracleError::GlError {
+            error: "INVALID_ENUM",
+            ..
+        })
+    ));
+    let mut c = one(Spec::Es2Ext, Format::D16, CompareFunc::Lequal, 0.5, 1.0);
+    c.sampler.min_lod = 0.0;
+    assert!(matches!(
+        evaluate(&c),
+        Err(OracleError::GlError {
+            error: "INVALID_ENUM",
+            ..
+        })
+    ));
+    let mut c = one(Spec::Es2Ext, Format::D16, CompareFunc::Lequal, 0.5, 1.0);
+    c.lookup.bias = 1.0;
+    assert!(matches!(
+        evaluate(&c),
+        Err(OracleError::NotApplicable { .. })
+    ));
+}
