@@ -151,3 +151,118 @@ proptest! {
         prop_assert_eq!(e.expect.layout.len(), c.api.len());
     }
 }
+
+fn wide_case() -> impl Strategy<Value = Case> {
+    (
+        (
+            0usize..8,
+            0usize..7,
+            0usize..8,
+            0usize..10,
+            0usize..6,
+            0usize..2,
+        ),
+        (0usize..6, 0usize..6, 1u32..5, 1u32..4, 0u32..3),
+        prop::collection::vec(-0.5f64..1.5, 4),
+        prop_oneof![Just(f64::NAN), Just(f64::INFINITY), -3.0f64..3.0],
+        (-4.0f64..6.0, -3.0f64..3.0, any::<bool>(), -2.0f64..8.0),
+        (0usize..7, 0u32..3),
+    )
+        .prop_map(
+            |(
+                (si, ti, fi, fu, fl, mode),
+                (ws, wt, w, layers, nlev),
+                coord,
+                dref,
+                (lod, bias, proj, layer),
+                (api, base),
+            )| {
+                let spec = Spec::ALL[si];
+                let rules = shadowcheck_oracle::rules::rules_for(spec);
+                let target = rules.targets[ti % rules.targets.len()];
+                let format = Format::ALL[fi];
+                let func = CompareFunc::ALL[fu];
+                let filter = Filter::ALL[fl];
+                let (w, h, l) = match target {
+                    Target::T1d => (w, 1, 1),
+                    Target::T1dArray => (w, 1, layers),
+                    Target::T2dArray => (w, w, layers),
+                    Target::Cube => (w, w, 6),
+                    Target::CubeArray => (w, w, 6 * layers),
+                    _ => (w, w, 1),
+                };
+                let mut levels = Vec::new();
+                for i in 0..=nlev {
+                    let (lw, lh) = ((w >> i).max(1), if h == 1 { 1 } else { (h >> i).max(1) });
+                    let n = (lw * lh * l) as usize;
+                    let vals: Vec<f64> = (0..n).map(|k| (k as f64 * 0.37).fract()).collect();
+                    levels.push(Level {
+                        width: lw,
+                        height: lh,
+                        layers: l,
+                        depth: texels(format, &vals),
+                        stencil: format.has_stencil().then(|| vec![3; n]),
+                    });
+                }
+                let mut s = Sampler::new(
+                    if mode == 0 {
+                        CompareMode::Compare
+                    } else {
+                        CompareMode::None
+                    },
+                    func,
+                    filter,
+                );
+                s.wrap_s = rules.wraps[ws % rules.wraps.len()];
+                s.wrap_t = rules.wraps[wt % rules.wraps.len()];
+                s.border = [coord[3] as f32, 0.0, 0.0, 0.0];
+                Case {
+                    id: "wide".into(),
+                    spec,
+                    api: vec![rules.apis[api % rules.apis.len()]],
+                    texture: Texture {
+                        target,
+                        format,
+                        base_level: base,
+                        levels,
+                    },
+                    sampler: s,
+                    lookup: Lookup {
+                        coord: [
+                            coord[0],
+                            coord[1],
+                            coord[2],
+                            if proj { coord[3] + 2.0 } else { 1.0 },
+                        ],
+                        layer,
+                        dref,
+                        projective: proj,
+                        lod,
+                        bias,
+                    },
+                    expect: None,
+                }
+            },
+        )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 3000, ..ProptestConfig::default() })]
+
+    /// Any structurally valid case gets an answer or an error, never a panic; answers keep their invariants.
+    #[test]
+    fn any_valid_case_is_answered(c in wide_case()) {
+        if shadowcheck_model::validate::validate(&c).is_ok() {
+            if let Ok(e) = evaluate(&c) {
+                let strict = &e.expect.accept[&Profile::Strict];
+                let lenient = &e.expect.accept[&Profile::Lenient];
+                prop_assert!(!strict.0.is_empty());
+                prop_assert!(strict.is_subset_of(lenient), "strict {strict} ⊄ lenient {lenient}");
+                if let Some(v) = e.expect.spec_value {
+                    prop_assert!(strict.contains(v), "{strict} lacks {v}");
+                }
+                prop_assert_eq!(e.expect.layout.len(), c.api.len());
+            }
+        }
+    }
+}
