@@ -74,7 +74,8 @@ fn schema_rejects_what_the_loader_rejects() {
     let p = fixtures::fixture_paths(&fixtures_dir()).unwrap().remove(0);
     let good: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap();
     assert!(validator.is_valid(&good));
-    let edits: [(&str, fn(&mut serde_json::Value)); 6] = [
+    type Edit = (&'static str, fn(&mut serde_json::Value));
+    let edits: [Edit; 6] = [
         ("unknown enum", |v| v["cases"][0]["sampler"]["compare_func"] = "lequalish".into()),
         ("wrong type", |v| v["cases"][0]["texture"]["levels"][0]["width"] = "4".into()),
         ("absurd size", |v| v["cases"][0]["texture"]["levels"][0]["width"] = 100000.into()),
@@ -204,4 +205,23 @@ fn exhaustive_is_streamed_in_files_of_bounded_size() {
     assert_eq!(first.len(), grids::exhaustive::CHUNK as usize * 3);
     assert_eq!(1 + chunks.count(), grids::exhaustive::len() / first.len());
     let _ = Path::new(&rel);
+}
+
+#[test]
+fn smoke_generates_with_expectations_that_match_the_schema() {
+    let validator = jsonschema::validator_for(&schema()).unwrap();
+    let files = grids::generate("smoke", 0).unwrap();
+    assert!(!files.is_empty());
+    for (rel, f) in &files {
+        let value: serde_json::Value = serde_json::from_str(&fixtures::to_string(f).unwrap()).unwrap();
+        let errors: Vec<String> = validator.iter_errors(&value).take(5).map(|e| format!("{} at {}", e, e.instance_path())).collect();
+        assert!(errors.is_empty(), "{rel}: {}", errors.join("\n"));
+        assert!(f.cases.iter().all(|c| c.expect.is_some()));
+    }
+}
+
+#[test]
+fn unknown_grid_is_an_error() {
+    let e = grids::generate("nope", 0).unwrap_err().to_string();
+    assert!(e.contains("nope") && e.contains("default"), "{e}");
 }

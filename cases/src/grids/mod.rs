@@ -110,6 +110,21 @@ fn smoke_drafts(seed: u64) -> Vec<Draft> {
     out
 }
 
+/// The combinations the main product's filters removed, per reason, summed over the specs (what
+/// `shadowcheck gen` reports as pruned).
+pub fn pruned() -> Vec<(String, usize)> {
+    let mut out: Vec<(String, usize)> = Vec::new();
+    for d in specs::all() {
+        for (why, n) in cells::cells(&d).pruned() {
+            match out.iter_mut().find(|(w, _)| w == why) {
+                Some(slot) => slot.1 += n,
+                None => out.push((why.clone(), *n)),
+            }
+        }
+    }
+    out
+}
+
 /// Turns drafts into cases and checks what the oracle cannot: unique ids, a non-empty API list.
 fn to_cases(grid: &str, drafts: Vec<Draft>) -> Result<Vec<(String, Case)>, GridError> {
     let mut ids = HashSet::new();

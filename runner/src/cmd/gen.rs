@@ -95,6 +95,11 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
         println!("{}", coverage.markdown());
     }
     print!("{}", coverage.summary());
+    if args.grid != "exhaustive" {
+        for (why, n) in grids::pruned() {
+            println!("pruned {n} combinations: {why}");
+        }
+    }
     let missing = coverage.missing();
     if args.grid == "default" && !missing.is_empty() {
         println!("{} allowed spec x target x format x filter x func combinations have no case", missing.len());
