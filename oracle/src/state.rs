@@ -30,6 +30,18 @@ const RED: u32 = 0x1903;
 const DEPTH_COMPONENT: u32 = 0x1902;
 const STENCIL_INDEX: u32 = 0x1901;
 
+/// Every depth-comparison pname any spec here defines (SHADOW_AMBIENT_SGIX is
+/// TEXTURE_COMPARE_FAIL_VALUE_ARB's token).
+pub const PNAMES: &[u32] = &[
+    TEXTURE_COMPARE_SGIX,
+    TEXTURE_COMPARE_OPERATOR_SGIX,
+    SHADOW_AMBIENT_SGIX,
+    TEXTURE_COMPARE_MODE,
+    TEXTURE_COMPARE_FUNC,
+    DEPTH_TEXTURE_MODE,
+    DEPTH_STENCIL_TEXTURE_MODE,
+];
+
 /// The kind of context the call is made in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Ctx {
@@ -449,6 +461,47 @@ mod tests {
         );
         assert_eq!(
             default_value(Spec::Es2Ext, Ctx::Es, DEPTH_STENCIL_TEXTURE_MODE),
+            Err(InvalidEnum)
+        );
+    }
+
+    #[test]
+    fn every_default_is_a_legal_value_and_every_pname_exists_somewhere() {
+        for &pname in PNAMES {
+            let mut seen = false;
+            for spec in Spec::ALL {
+                for ctx in [Ctx::Core, Ctx::Compat, Ctx::Es] {
+                    if let Ok(p) = param(*spec, ctx, pname) {
+                        seen = true;
+                        let v = match p.default {
+                            Stored::Bool(b) => Value::Int(b as i64),
+                            Stored::Enum(e) => Value::Int(e as i64),
+                            Stored::Float(f) => Value::Float(f),
+                        };
+                        assert_eq!(
+                            set_param(*spec, ctx, pname, v),
+                            Ok(p.default),
+                            "{spec} {ctx:?} {}",
+                            p.name
+                        );
+                        assert!(!p.cite.is_empty());
+                    }
+                }
+            }
+            assert!(seen, "{pname:#x}");
+        }
+        // Outside their spec / context the pnames are INVALID_ENUM.
+        assert_eq!(
+            set_param(Spec::Gl46, Ctx::Core, TEXTURE_COMPARE_SGIX, Value::Int(1)),
+            Err(InvalidEnum)
+        );
+        assert_eq!(
+            set_param(
+                Spec::Gles32,
+                Ctx::Es,
+                TEXTURE_COMPARE_FAIL_VALUE_ARB,
+                Value::Float(0.5)
+            ),
             Err(InvalidEnum)
         );
     }
