@@ -257,6 +257,9 @@ pub enum Event<'a> {
     /// One test finished. `replayed`: read back from results.jsonl by `--resume` / `merge`
     /// (already on disk). A flake re-run sends the same test again with its final status.
     CaseFinished { result: &'a TestResult, replayed: bool },
+    /// A batch of cases has been judged: a good moment to flush files (results.jsonl is flushed
+    /// per batch, so a killed run loses at most the batch in flight, which `--resume` re-runs).
+    BatchFinished { backend: &'a str },
     BackendFinished { backend: &'a str, counts: &'a Counts, timing: &'a Timing },
     /// The run is over: all results in report order (backend, then test name) and the totals.
     RunFinished { results: &'a [TestResult], load_errors: &'a [LoadError], summary: &'a Summary },

@@ -249,10 +249,11 @@ pub fn run_backend(
                 ctx.finish(r, false);
             }
         }
-        timing.verdict_s += t1.elapsed().as_secs_f64();
         for d in backend.take_diagnostics() {
             ctx.fanout.emit(&Event::Diagnostic { backend: &name, message: &d });
         }
+        ctx.fanout.emit(&Event::BatchFinished { backend: &name });
+        timing.verdict_s += t1.elapsed().as_secs_f64();
     }
     if settings.rerun_regressions {
         rerun_regressions(backend, set, &mut ctx);
@@ -309,6 +310,7 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
             ctx.fanout.emit(&Event::CaseFinished { result: &r, replayed: false });
         }
     }
+    ctx.fanout.emit(&Event::BatchFinished { backend: &name });
 }
 
 /// Results in report order: by backend, then by test name.

@@ -302,11 +302,14 @@ impl ExecBackend {
         let deadline = Instant::now() + self.timeout;
         let mut out = Vec::with_capacity(group.len());
         for c in group {
-            let wait = deadline.saturating_duration_since(Instant::now());
-            let line = match p.lines.recv_timeout(wait) {
-                Ok(l) => l,
-                Err(RecvTimeoutError::Timeout) => return (out, Some(Failure::Stalled)),
-                Err(RecvTimeoutError::Disconnected) => return (out, Some(Failure::Died)),
+            let line = loop {
+                let wait = deadline.saturating_duration_since(Instant::now());
+                match p.lines.recv_timeout(wait) {
+                    Ok(l) if l.trim().is_empty() => continue,
+                    Ok(l) => break l,
+                    Err(RecvTimeoutError::Timeout) => return (out, Some(Failure::Stalled)),
+                    Err(RecvTimeoutError::Disconnected) => return (out, Some(Failure::Died)),
+                }
             };
             match protocol::parse_answer(&line) {
                 Ok(a) if a.case_id() == c.id => out.push(to_outcome(c, a)),

@@ -60,6 +60,7 @@ impl Reporter for TerminalReporter {
                     self.err_line(&format!("[{backend}] {message}"));
                 }
             }
+            Event::BatchFinished { .. } => {}
             Event::CaseFinished { result, .. } => {
                 if let Some(b) = &self.bar {
                     if result.rerun.is_none() {
