@@ -172,6 +172,13 @@ fn nothing_selected_exits_4_and_bad_input_96() {
     assert!(r.stderr.contains("unknown backend"), "{}", r.stderr);
     let r = run(&["-b", "soft:gl99", "--fixtures", &fx, "--out", out.to_str().unwrap()]);
     assert_eq!(r.code, 96);
+    // An implementation that cannot start, or does not greet properly, is a setup error.
+    let r = run(&["-b", "exec:/nonexistent/implementation", "--fixtures", &fx, "--out", out.to_str().unwrap()]);
+    assert_eq!(r.code, 96);
+    assert!(r.stderr.contains("cannot start"), "{}", r.stderr);
+    let r = run(&["-b", "exec:echo not-a-hello", "--fixtures", &fx, "--out", out.to_str().unwrap()]);
+    assert_eq!(r.code, 96);
+    assert!(r.stderr.contains("bad hello"), "{}", r.stderr);
     let r = run(&["-b", "mock:", "--fixtures", dir.join("missing").to_str().unwrap(), "--out", out.to_str().unwrap()]);
     assert_eq!(r.code, 96, "{}", r.stderr);
 }

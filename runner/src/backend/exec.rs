@@ -4,7 +4,8 @@
 //! thread drains stdout, so a process that answers while reading never blocks on a full pipe).
 //! A process that dies, stalls or answers garbage is killed; the unanswered part of the group is
 //! bisected in fresh processes until the case that does it is alone (Crash or Timeout), and the
-//! run goes on. The GL backends and the mock use the same machinery.
+//! run goes on. When the process was answering case by case, the first unanswered case is tried
+//! alone first (one restart instead of log2(group) when it is the culprit). The GL backends and the mock use the same machinery.
 
 use super::protocol::{self, Answer, ApiResultMsg};
 use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome, Options};
@@ -340,6 +341,7 @@ impl ExecBackend {
                 break;
             }
             let (answers, failure) = self.attempt(rest);
+            let streamed = !answers.is_empty();
             results.extend(answers);
             let Some(failure) = failure else { break };
             let rest = &cases[results.len()..];
@@ -360,6 +362,11 @@ impl ExecBackend {
                         };
                         self.push_diag(format!("{}: `{}`: {}", self.name, rest[0].id, if stalled { "timeout" } else { "crash" }));
                         results.push(what);
+                    } else if streamed {
+                        // It answered case by case up to here: the first unanswered case is the
+                        // likely culprit. Try it alone, then go on with the rest.
+                        let first = [rest[0]];
+                        results.extend(self.run_group(&first));
                     } else {
                         let mid = rest.len() / 2;
                         let (a, b) = rest.split_at(mid);
