@@ -88,6 +88,12 @@ impl<P: Clone> Grid<P> {
         }
     }
 
+    /// Appends items built elsewhere (e.g. a focused family) so later filters see them too.
+    pub fn extend(mut self, items: impl IntoIterator<Item = P>) -> Grid<P> {
+        self.items.extend(items);
+        self
+    }
+
     pub fn name(&self) -> &str {
         &self.name
     }

@@ -7,6 +7,7 @@ pub mod exhaustive;
 pub mod families;
 pub mod specs;
 
+use crate::dsl;
 use crate::fixtures::{self, FixtureFile};
 use draft::Draft;
 use shadowcheck_model::{Case, SCHEMA_VERSION};
@@ -53,30 +54,36 @@ pub fn drafts(name: &str, seed: u64) -> Result<Vec<Draft>, GridError> {
 }
 
 fn default_drafts(seed: u64) -> Vec<Draft> {
-    let mut out = Vec::new();
-    for d in specs::all() {
-        for cell in cells::cells(&d).into_items() {
-            out.extend(cells::drafts(&cell));
-        }
-        out.extend(families::clamp(&d));
-        out.extend(families::exact(&d));
-        out.extend(families::pcf(&d));
-        // The *_ambient variants differ from their base spec only in the fail value: they get the
-        // main product, the value families and `ambient`, not the sampling-geometry families again.
-        if !d.fail_value {
-            out.extend(families::mip(&d));
-            out.extend(families::cube(&d));
-            out.extend(families::layer(&d));
-            out.extend(families::incomplete(&d));
-            out.extend(families::proj(&d));
-        }
-        out.extend(families::wrap(&d));
-        out.extend(families::dtm(&d));
-        out.extend(families::stencil(&d));
-        out.extend(families::ambient(&d));
-        out.extend(families::random(&d, seed, RANDOM_PER_SPEC));
+    specs::all().iter().flat_map(|d| spec_grid(d, seed).into_items()).collect()
+}
+
+/// TEXTURE_MIN_LOD, TEXTURE_MAX_LOD, TEXTURE_BASE_LEVEL or TEXTURE_MAX_LEVEL differ from the default.
+fn uses_lod_state(x: &Draft) -> bool {
+    x.sampler.min_lod != -1000.0 || x.sampler.max_lod != 1000.0 || x.sampler.max_level.is_some() || x.texture.base_level != 0
+}
+
+/// All `default` cases of one spec: the main product expanded into its lookups, the focused
+/// families, then the filters that drop state the spec does not have.
+pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
+    let mut g = cells::cells(d).flat_map(cells::drafts).extend(families::clamp(d)).extend(families::exact(d)).extend(families::pcf(d));
+    // The *_ambient variants differ from their base spec only in the fail value: they get the
+    // main product, the value families, wrap and `ambient`, not the sampling-geometry families again.
+    if !d.fail_value {
+        g = g
+            .extend(families::mip(d))
+            .extend(families::cube(d))
+            .extend(families::layer(d))
+            .extend(families::incomplete(d))
+            .extend(families::proj(d));
     }
-    out
+    g.extend(families::wrap(d))
+        .extend(families::dtm(d))
+        .extend(families::stencil(d))
+        .extend(families::ambient(d))
+        .extend(families::random(d, seed, RANDOM_PER_SPEC))
+        .filter("ES 2.0 has no TEXTURE_MIN_LOD / MAX_LOD / BASE_LEVEL / MAX_LEVEL (added by GL 1.2 and ES 3.0; INVALID_ENUM)", |x| d.lod_state || !uses_lod_state(x))
+        .filter("TEXTURE_LOD_BIAS does not exist in ES or SGIX-era GL (ES 3.2 §8.14.1; INVALID_ENUM)", |x| d.lod_bias || x.sampler.lod_bias == 0.0)
+        .filter("no shader bias argument on this spec's shadow lookups (shadow2DEXT, fixed function)", |x| d.shader_bias || x.lookup.bias == 0.0)
 }
 
 /// One of everything: the first `default` case for each new (spec, value) of every dimension and
@@ -110,12 +117,12 @@ fn smoke_drafts(seed: u64) -> Vec<Draft> {
     out
 }
 
-/// The combinations the main product's filters removed, per reason, summed over the specs (what
+/// The combinations the `default` grid's filters removed, per reason, summed over the specs (what
 /// `shadowcheck gen` reports as pruned).
 pub fn pruned() -> Vec<(String, usize)> {
     let mut out: Vec<(String, usize)> = Vec::new();
     for d in specs::all() {
-        for (why, n) in cells::cells(&d).pruned() {
+        for (why, n) in spec_grid(&d, DEFAULT_SEED).pruned() {
             match out.iter_mut().find(|(w, _)| w == why) {
                 Some(slot) => slot.1 += n,
                 None => out.push((why.clone(), *n)),

@@ -18,6 +18,11 @@ pub struct SpecDims {
     pub wraps: &'static [Wrap],
     /// TEXTURE_LOD_BIAS exists (not in ES).
     pub lod_bias: bool,
+    /// TEXTURE_MIN_LOD / MAX_LOD / BASE_LEVEL / MAX_LEVEL exist (GL 1.2+, ES 3.0+; not ES 2.0).
+    pub lod_state: bool,
+    /// The shading language has a bias argument for shadow lookups (not `shadow2DEXT`, and not
+    /// reachable from fixed function in the legacy variants).
+    pub shader_bias: bool,
     /// DEPTH_STENCIL_TEXTURE_MODE exists (GL 4.3, ES 3.1).
     pub stencil_mode: bool,
     /// The fail / ambient value exists (sgix_ambient, arb_ambient).
@@ -56,6 +61,8 @@ pub fn dims(spec: Spec) -> SpecDims {
             dtms: &[],
             wraps: &[W::Clamp, W::Repeat],
             lod_bias: false,
+            lod_state: true,
+            shader_bias: false,
             stencil_mode: false,
             fail_value: spec == Spec::SgixAmbient,
         },
@@ -70,6 +77,8 @@ pub fn dims(spec: Spec) -> SpecDims {
             dtms: LEGACY_DTMS,
             wraps: &[W::Repeat, W::Clamp, W::ClampToEdge, W::ClampToBorder, W::MirroredRepeat],
             lod_bias: true,
+            lod_state: true,
+            shader_bias: false,
             stencil_mode: false,
             fail_value: spec == Spec::ArbAmbient,
         },
@@ -83,6 +92,8 @@ pub fn dims(spec: Spec) -> SpecDims {
             dtms: &[],
             wraps: &[W::Repeat, W::ClampToEdge, W::MirroredRepeat],
             lod_bias: false,
+            lod_state: false,
+            shader_bias: false,
             stencil_mode: false,
             fail_value: false,
         },
@@ -95,6 +106,8 @@ pub fn dims(spec: Spec) -> SpecDims {
             dtms: &[M::Luminance, M::Intensity, M::Alpha, M::Red],
             wraps: &[W::Repeat, W::ClampToEdge, W::ClampToBorder, W::MirroredRepeat, W::MirrorClampToEdge, W::Clamp],
             lod_bias: true,
+            lod_state: true,
+            shader_bias: true,
             stencil_mode: true,
             fail_value: false,
         },
@@ -108,6 +121,8 @@ pub fn dims(spec: Spec) -> SpecDims {
             dtms: &[],
             wraps: &[W::Repeat, W::ClampToEdge, W::MirroredRepeat, W::ClampToBorder],
             lod_bias: false,
+            lod_state: true,
+            shader_bias: true,
             stencil_mode: true,
             fail_value: false,
         },
