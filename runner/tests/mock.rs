@@ -210,3 +210,29 @@ fn a_bad_case_is_reported_by_file_and_id_and_the_rest_runs() {
     let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
     assert_eq!(report["summary"]["load_errors"], 2);
 }
+
+#[test]
+fn an_implementation_that_stops_reading_cannot_block_the_runner() {
+    // 30 cases with 128x128 textures (~100 KB of JSON each): a group is far larger than a pipe
+    // buffer, and the worker hangs on the second case without reading further. The runner's
+    // writer thread blocks, the answer deadline still fires, and bisection finds the case.
+    let dir = tmpdir("bigpipe");
+    let fx = dir.join("fixtures/big.json");
+    let cases: Vec<_> = many_cases(30)
+        .into_iter()
+        .map(|mut c| {
+            let l = &mut c.texture.levels[0];
+            l.width = 128;
+            l.height = 128;
+            l.depth = shadowcheck_model::Texels::Unorm((0..128 * 128).map(|i| (i * 4) as u32 % 65536).collect());
+            c
+        })
+        .collect();
+    write_fixture(&fx, cases);
+    let out = dir.join("out");
+    let r = run(&["-b", "mock:hang=n=0001", "--fixtures", fx.to_str().unwrap(), "--timeout", "1", "--no-rerun", "--out", out.to_str().unwrap()]);
+    assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
+    let rows = results(&out);
+    assert_eq!(status_of(&rows, "n=0001"), ["Timeout"]);
+    assert_eq!(rows.iter().filter(|r| r.1 == "Pass").count(), 29);
+}

@@ -14,7 +14,7 @@ use std::collections::VecDeque;
 use std::io::{BufRead, BufReader, BufWriter, Write};
 use std::path::PathBuf;
 use std::process::{Child, ChildStdin, Command, Stdio};
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
@@ -79,6 +79,26 @@ pub fn split_command(s: &str) -> Result<Vec<String>, String> {
     Ok(out)
 }
 
+/// The writer thread: writes queued messages to the child's stdin, flushing whenever the queue is
+/// empty; ends when the queue is closed (stdin is then closed) or the child stops reading.
+fn write_loop(stdin: ChildStdin, queue: Receiver<Vec<u8>>) {
+    let mut w = BufWriter::with_capacity(1 << 16, stdin);
+    while let Ok(msg) = queue.recv() {
+        if w.write_all(&msg).is_err() {
+            return;
+        }
+        while let Ok(more) = queue.try_recv() {
+            if w.write_all(&more).is_err() {
+                return;
+            }
+        }
+        if w.flush().is_err() {
+            return;
+        }
+    }
+    let _ = w.flush();
+}
+
 /// Time allowed for the hello, at least (a GL worker creates its context first; zink starts a
 /// Vulkan device).
 const HANDSHAKE_MIN: Duration = Duration::from_secs(30);
@@ -90,7 +110,9 @@ const TAIL_LINES: usize = 8;
 /// One running implementation process.
 struct Proc {
     child: Child,
-    stdin: Option<BufWriter<ChildStdin>>,
+    /// Messages for the writer thread, which owns the child's stdin (so a child that stops
+    /// reading can never block the runner: the answer deadline still fires).
+    input: Option<Sender<Vec<u8>>>,
     lines: Receiver<String>,
     tail: Tail,
     stderr_thread: Option<JoinHandle<()>>,
@@ -138,17 +160,16 @@ impl Proc {
                 }
             }
         });
-        Ok(Proc { child, stdin: Some(BufWriter::with_capacity(1 << 16, stdin)), lines, tail, stderr_thread: Some(stderr_thread) })
+        let (input, queue) = mpsc::channel::<Vec<u8>>();
+        std::thread::spawn(move || write_loop(stdin, queue));
+        Ok(Proc { child, input: Some(input), lines, tail, stderr_thread: Some(stderr_thread) })
     }
 
-    fn send(&mut self, line: &[u8]) -> std::io::Result<()> {
-        let w = self.stdin.as_mut().ok_or(std::io::ErrorKind::BrokenPipe)?;
-        w.write_all(line)?;
-        w.write_all(b"\n")
-    }
-
-    fn flush(&mut self) -> std::io::Result<()> {
-        self.stdin.as_mut().ok_or(std::io::ErrorKind::BrokenPipe)?.flush()
+    /// Queues bytes (whole lines) for the child's stdin. Fails once the writer has stopped (the
+    /// child closed its stdin or died).
+    fn send(&mut self, bytes: Vec<u8>) -> std::io::Result<()> {
+        let tx = self.input.as_ref().ok_or(std::io::ErrorKind::BrokenPipe)?;
+        tx.send(bytes).map_err(|_| std::io::Error::from(std::io::ErrorKind::BrokenPipe))
     }
 
     /// Kills the process and says how it ended, with its last stderr lines.
@@ -172,9 +193,8 @@ impl Proc {
 
     /// Ends the process politely (`bye`, stdin closed), killing it if it lingers.
     fn finish(mut self) {
-        let _ = self.send(br#"{"type":"bye"}"#);
-        let _ = self.flush();
-        drop(self.stdin.take());
+        let _ = self.send(b"{\"type\":\"bye\"}\n".to_vec());
+        drop(self.input.take());
         let t0 = Instant::now();
         while t0.elapsed() < Duration::from_secs(1) {
             if let Ok(Some(_)) = self.child.try_wait() {
@@ -254,7 +274,7 @@ impl ExecBackend {
         let mut p = Proc::spawn(&self.cmd, &self.diags)?;
         self.spawns += 1;
         let hello = protocol::hello_line();
-        if let Err(e) = p.send(hello.as_bytes()).and_then(|_| p.flush()) {
+        if let Err(e) = p.send(format!("{hello}\n").into_bytes()) {
             let how = p.kill();
             return Err(format!("handshake failed: {e} ({how})"));
         }
@@ -285,21 +305,15 @@ impl ExecBackend {
     /// early if it did.
     fn attempt(&mut self, group: &[&Case]) -> (Vec<CaseOutcome>, Option<Failure>) {
         let Some(p) = self.proc.as_mut() else { return (vec![], Some(Failure::Died)) };
-        let mut buf = Vec::with_capacity(4096);
-        let mut write_err = None;
+        // The whole group in one buffer, then `flush`: one hand-over to the writer thread.
+        let mut buf = Vec::with_capacity(group.len() * 1024);
         for c in group {
-            buf.clear();
             protocol::write_case(&mut buf, c, self.wants_expect);
-            if let Err(e) = p.send(&buf) {
-                write_err = Some(e);
-                break;
-            }
+            buf.push(b'\n');
         }
-        if write_err.is_none() {
-            if let Err(e) = p.send(br#"{"type":"flush"}"#).and_then(|_| p.flush()) {
-                write_err = Some(e);
-            }
-        }
+        buf.extend_from_slice(b"{\"type\":\"flush\"}\n");
+        // A failed hand-over means the process is gone: reading says so (Died).
+        let _ = p.send(buf);
         let deadline = Instant::now() + self.timeout;
         let mut out = Vec::with_capacity(group.len());
         for c in group {
@@ -321,7 +335,6 @@ impl ExecBackend {
                 Err(e) => return (out, Some(Failure::Protocol(format!("bad answer line: {e}: {}", clip(&line))))),
             }
         }
-        let _ = write_err; // every case was answered: a late write error does not matter
         (out, None)
     }
 
