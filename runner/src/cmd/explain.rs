@@ -270,3 +270,65 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
         Err(_) => ExitCode::from(1),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Cli {
+        #[command(flatten)]
+        args: Args,
+    }
+
+    fn eval(flags: &str) -> Option<f64> {
+        let cli = Cli::try_parse_from(std::iter::once("explain").chain(flags.split_whitespace()))
+            .unwrap();
+        let case = case_from_flags(&cli.args).unwrap();
+        shadowcheck_oracle::evaluate(&case)
+            .unwrap()
+            .expect
+            .spec_value
+    }
+
+    #[test]
+    fn flags_build_the_brief_examples() {
+        assert_eq!(eval("--spec gl46 --format d24 --target 2d --func lequal --filter nearest --ref 1.5 --dt 1.0"), Some(1.0));
+        assert_eq!(
+            eval("--spec gl46 --format d32f --ref 1.5 --dt 1.0"),
+            Some(0.0)
+        );
+        assert_eq!(
+            eval("--spec sgix --format d16 --ref 0.5 --dt 0.3"),
+            Some(1.0)
+        );
+        assert_eq!(
+            eval("--spec arb_ambient --fail 0.25 --ref 0.8 --dt 0.3"),
+            Some(0.25)
+        );
+        // A 2x2 footprint sampled at its centre: two of four texels pass.
+        assert_eq!(eval("--spec gl46 --format d16 --filter linear --ref 0.5 --dt 0.2,0.4,0.6,0.8 --func gequal"), Some(0.5));
+        assert_eq!(
+            eval("--spec gl46 --target cube --dt 1,0,0,0,0,0 --ref 0.5"),
+            Some(1.0)
+        );
+    }
+
+    #[test]
+    fn fixture_files_are_read_by_id() {
+        let dir = std::env::temp_dir().join(format!("shadowcheck-explain-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let cli = Cli::try_parse_from(["explain", "--ref", "0.25", "--dt", "0.5"]).unwrap();
+        let case = case_from_flags(&cli.args).unwrap();
+        let file = dir.join("f.json");
+        let fixture = serde_json::json!({ "schema_version": 1, "cases": [case.clone()] });
+        std::fs::write(&file, fixture.to_string()).unwrap();
+        assert_eq!(case_from_file(&file, Some(&case.id)).unwrap(), case);
+        assert!(case_from_file(&file, Some("nope")).is_err());
+        let single = dir.join("c.json");
+        std::fs::write(&single, serde_json::to_string(&case).unwrap()).unwrap();
+        assert_eq!(case_from_file(&single, None).unwrap(), case);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
