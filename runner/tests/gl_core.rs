@@ -113,3 +113,32 @@ fn core_reads_back_exact_24_bit_and_float_texels() {
         assert_eq!(Session::rgba(&a[1], ApiPath::GlslCore)[0], 0.0, "{b}: 0.8 <= 0.75 fails: {}", a[1]);
     }
 }
+
+#[test]
+fn batched_draws_keep_every_case_in_its_own_pixel() {
+    // 700 cases on one 4x4 texture (distinct texels): more than two framebuffer rows, one draw.
+    // Each looks up one texel centre with Dref just below or above it: LEQUAL gives 1 / 0.
+    for b in ["egl:llvmpipe:core", "egl:softpipe:es3"] {
+        let Some(mut s) = Session::start(b) else { continue };
+        let es = b.ends_with("es3");
+        let (spec, api) = if es { (Spec::Gles32, ApiPath::Es300) } else { (Spec::Gl46, ApiPath::GlslCore) };
+        let texels: Vec<u32> = (0..16).map(|i| 1000 + i * 4000).collect();
+        let mut cs = Vec::new();
+        let mut want = Vec::new();
+        for i in 0..700usize {
+            let (x, y) = (i % 4, (i / 4) % 4);
+            let dt = texels[y * 4 + x] as f64 / 65535.0;
+            let above = i % 7 < 3;
+            let mut c = d16_case(&format!("b/{i}"), spec, &[api], Target::T2d, 0, if above { dt + 1e-4 } else { dt - 1e-4 });
+            c.texture.levels[0] = Level { width: 4, height: 4, layers: 1, depth: Texels::Unorm(texels.clone()), stencil: None };
+            c.lookup.coord = [(x as f64 + 0.5) / 4.0, (y as f64 + 0.5) / 4.0, 0.0, 1.0];
+            cs.push(c);
+            want.push(if above { 0.0 } else { 1.0 });
+        }
+        let answers = s.run(&cs);
+        for ((c, w), a) in cs.iter().zip(want).zip(&answers) {
+            assert_eq!(Session::rgba(a, api)[0], w, "{b} {}: {a}", c.id);
+            assert!(a["results"][0]["note"].as_str().unwrap().contains("batched"), "{b}: {a}");
+        }
+    }
+}

@@ -2,11 +2,14 @@
 //! results are not quantized and all four channels are observed; the batch is read back at once.
 //!
 //! Consecutive cases with the same texture and sampler state share one texture object (the grid
-//! emits them together: only the reference or the coordinate changes), which keeps uploads and
-//! read-backs off the hot path.
+//! emits them together: only the reference or the coordinate changes), and where a path needs no
+//! implicit derivatives all of them are drawn with one full-screen draw reading their values from a
+//! parameter texture (see `batch.rs`). Compatibility contexts draw every path of every case on its
+//! own texture (see `run_compat_case`).
 
 use super::legacy::{self, Legacy};
 use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
+use super::shaders;
 use super::protocol::PathResult;
 use super::texture;
 use super::GlError;
@@ -15,7 +18,9 @@ use shadowcheck_model::{ApiPath, Case, Target, Texels};
 use std::collections::HashMap;
 
 /// Width and height of the result framebuffer: one pixel per (case, path).
-const FB_SIZE: i32 = 256;
+pub(super) const FB_SIZE: i32 = 256;
+/// Pixels of the result framebuffer.
+pub(super) const CAPACITY: usize = (FB_SIZE * FB_SIZE) as usize;
 
 /// The answer for one case.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,6 +37,8 @@ struct Program {
     u_dx: Option<glow::UniformLocation>,
     u_dy: Option<glow::UniformLocation>,
     u_c: Option<glow::UniformLocation>,
+    u_base: Option<glow::UniformLocation>,
+    u_count: Option<glow::UniformLocation>,
 }
 
 enum Compiled {
@@ -47,22 +54,35 @@ pub struct Renderer {
     legacy: Option<Legacy>,
     fbo: glow::Framebuffer,
     vao: glow::VertexArray,
-    programs: HashMap<ShaderKey, Result<Compiled, String>>,
+    /// RGBA32F case values for batched draws (unit 1).
+    pub(super) params: glow::Texture,
+    /// Programs by (key, batched).
+    programs: HashMap<(ShaderKey, bool), Result<Compiled, String>>,
 }
 
 /// A drawn path waiting for read-back.
-struct Pending {
-    case: usize,
-    path: ApiPath,
-    slot: usize,
-    note: String,
+pub(super) struct Pending {
+    pub(super) case: usize,
+    pub(super) path: ApiPath,
+    pub(super) slot: usize,
+    pub(super) note: String,
 }
 
-/// The texture of the previous case, reused while texture and sampler state are unchanged.
-struct Current {
-    texture: glow::Texture,
-    key: (shadowcheck_model::Texture, shadowcheck_model::Sampler),
-    stored: Option<Texels>,
+/// Answers and pixels of a batch in progress.
+pub(super) struct BatchState {
+    pub(super) answers: Vec<Option<Answer>>,
+    pub(super) results: Vec<Vec<PathResult>>,
+    pub(super) stored: Vec<Option<Texels>>,
+    pub(super) pending: Vec<Pending>,
+}
+
+impl BatchState {
+    /// Case `ci` fails: its drawn pixels are dropped and it answers `error`.
+    pub(super) fn fail(&mut self, ci: usize, msg: String) {
+        self.pending.retain(|p| p.case != ci);
+        self.results[ci].clear();
+        self.answers[ci] = Some(Answer::Error(msg));
+    }
 }
 
 impl Renderer {
@@ -96,20 +116,28 @@ impl Renderer {
         gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
         gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
         gl.disable(glow::DITHER);
+        let params = gl.create_texture().map_err(GlError::Gl)?;
+        gl.active_texture(glow::TEXTURE1);
+        gl.bind_texture(glow::TEXTURE_2D, Some(params));
+        let rows = CAPACITY as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
+        gl.tex_image_2d(glow::TEXTURE_2D, 0, glow::RGBA32F as i32, shaders::PARAM_WIDTH, rows, 0, glow::RGBA, glow::FLOAT, glow::PixelUnpackData::Slice(None));
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
+        gl.active_texture(glow::TEXTURE0);
         texture::check(&gl, "framebuffer setup")?;
-        Ok(Renderer { gl, info, legacy, fbo, vao, programs: HashMap::new() })
+        Ok(Renderer { gl, info, legacy, fbo, vao, params, programs: HashMap::new() })
     }
 
-    unsafe fn compile(&mut self, key: &ShaderKey) -> Result<Compiled, String> {
+    unsafe fn compile(&mut self, key: &ShaderKey, batched: bool) -> Result<Compiled, String> {
         let gl = &self.gl;
         match key.path {
             ApiPath::FixedFunction => Ok(Compiled::Fixed),
             ApiPath::ArbFp => {
                 let l = self.legacy.as_ref().ok_or("legacy entry points not loaded")?;
-                l.arbfp_program(gl, &super::shaders::arbfp(key)).map(Compiled::Arb).map_err(|e| e.to_string())
+                l.arbfp_program(gl, &shaders::arbfp(key)).map(Compiled::Arb).map_err(|e| e.to_string())
             }
             _ => {
-                let (vs, fs) = super::shaders::glsl(&self.info, key);
+                let (vs, fs) = shaders::glsl(&self.info, key, batched.then_some(FB_SIZE));
                 let program = gl.create_program()?;
                 for (ty, src) in [(glow::VERTEX_SHADER, &vs), (glow::FRAGMENT_SHADER, &fs)] {
                     let sh = gl.create_shader(ty)?;
@@ -131,21 +159,60 @@ impl Renderer {
                 if let Some(t) = u("u_tex") {
                     gl.uniform_1_i32(Some(&t), 0);
                 }
-                Ok(Compiled::Glsl(Program { program, u_p: u("u_p"), u_x: u("u_x"), u_dx: u("u_dx"), u_dy: u("u_dy"), u_c: u("u_c") }))
+                if let Some(t) = u("u_params") {
+                    gl.uniform_1_i32(Some(&t), 1);
+                }
+                Ok(Compiled::Glsl(Program {
+                    program,
+                    u_p: u("u_p"),
+                    u_x: u("u_x"),
+                    u_dx: u("u_dx"),
+                    u_dy: u("u_dy"),
+                    u_c: u("u_c"),
+                    u_base: u("u_base"),
+                    u_count: u("u_count"),
+                }))
             }
         }
     }
 
-    unsafe fn draw(&mut self, plan: &Plan, target: Target, slot: usize) -> Result<(), String> {
-        if !self.programs.contains_key(&plan.key) {
-            let c = self.compile(&plan.key);
-            self.programs.insert(plan.key, c);
+    /// Compiles on first use; the program for (key, batched).
+    pub(super) unsafe fn program(&mut self, key: &ShaderKey, batched: bool) -> Result<(), String> {
+        if !self.programs.contains_key(&(*key, batched)) {
+            let c = self.compile(key, batched);
+            self.programs.insert((*key, batched), c);
         }
+        match self.programs.get(&(*key, batched)) {
+            Some(Err(e)) => Err(e.clone()),
+            _ => Ok(()),
+        }
+    }
+
+    /// One batched draw: cases' values are in the parameter texture, written at `slot0..slot0+n`.
+    pub(super) unsafe fn draw_batched(&mut self, key: &ShaderKey, slot0: usize, n: usize) -> Result<(), String> {
+        self.program(key, true)?;
+        let Some(Ok(Compiled::Glsl(p))) = self.programs.get(&(*key, true)) else {
+            return Err("batched program is not GLSL".into());
+        };
+        let gl = &self.gl;
+        let row0 = (slot0 as i32) / FB_SIZE;
+        let row1 = ((slot0 + n - 1) as i32) / FB_SIZE;
+        gl.viewport(0, row0, FB_SIZE, row1 - row0 + 1);
+        gl.use_program(Some(p.program));
+        gl.uniform_1_i32(p.u_base.as_ref(), slot0 as i32);
+        gl.uniform_1_i32(p.u_count.as_ref(), n as i32);
+        gl.bind_vertex_array(Some(self.vao));
+        gl.draw_arrays(glow::TRIANGLES, 0, 3);
+        Ok(())
+    }
+
+    pub(super) unsafe fn draw(&mut self, plan: &Plan, target: Target, slot: usize) -> Result<(), String> {
+        self.program(&plan.key, false)?;
         let (x, y) = ((slot as i32) % FB_SIZE, (slot as i32) / FB_SIZE);
         let gl = &self.gl;
         gl.viewport(x, y, 1, 1);
         let centre = [x as f32 + 0.5, y as f32 + 0.5];
-        match self.programs.get(&plan.key) {
+        match self.programs.get(&(plan.key, false)) {
             Some(Ok(Compiled::Glsl(p))) => {
                 gl.use_program(Some(p.program));
                 gl.uniform_4_f32_slice(p.u_p.as_ref(), &plan.p);
@@ -191,7 +258,7 @@ impl Renderer {
         Ok(())
     }
 
-    unsafe fn read(&self, used: usize) -> Vec<[f32; 4]> {
+    pub(super) unsafe fn read(&self, used: usize) -> Vec<[f32; 4]> {
         let rows = used.div_ceil(FB_SIZE as usize).max(1) as i32;
         let mut buf = vec![0u8; (FB_SIZE * rows) as usize * 16];
         self.gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
@@ -204,7 +271,7 @@ impl Renderer {
             .collect()
     }
 
-    unsafe fn clear(&self) {
+    pub(super) unsafe fn clear(&self) {
         self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(self.fbo));
         self.gl.viewport(0, 0, FB_SIZE, FB_SIZE);
         // A pixel no draw wrote reads back as -1, which no path can return.
@@ -231,17 +298,18 @@ impl Renderer {
     /// # Safety
     /// The renderer's context must be current.
     pub unsafe fn run_batch(&mut self, cases: &[Case]) -> Vec<Answer> {
-        let mut answers: Vec<Option<Answer>> = vec![None; cases.len()];
-        let mut results: Vec<Vec<PathResult>> = vec![Vec::new(); cases.len()];
-        let mut pending: Vec<Pending> = Vec::new();
-        let mut current: Option<Current> = None;
-        let mut stored_of: Vec<Option<Texels>> = vec![None; cases.len()];
-        let capacity = (FB_SIZE * FB_SIZE) as usize;
+        let mut st = BatchState {
+            answers: vec![None; cases.len()],
+            results: vec![Vec::new(); cases.len()],
+            stored: vec![None; cases.len()],
+            pending: Vec::new(),
+        };
         let paths = self.info.paths();
         self.clear();
+        let mut planned: Vec<(usize, Vec<Plan>)> = Vec::new();
         for (ci, case) in cases.iter().enumerate() {
             if let Some(why) = self.case_skip(case) {
-                answers[ci] = Some(Answer::Skip(why));
+                st.answers[ci] = Some(Answer::Skip(why));
                 continue;
             }
             let mut plans = Vec::new();
@@ -257,69 +325,41 @@ impl Renderer {
                 }
             }
             if plans.is_empty() {
-                answers[ci] = Some(Answer::Skip(skipped.join("; ")));
-                continue;
+                st.answers[ci] = Some(Answer::Skip(skipped.join("; ")));
+            } else {
+                planned.push((ci, plans));
             }
-            // The case's texture: reused while texture and sampler are unchanged. Compatibility
-            // contexts get a fresh texture per path instead: Mesa keeps per-texture sampler views
-            // whose DEPTH_TEXTURE_MODE swizzle depends on which path drew before (llvmpipe: an ARB
-            // fp SHADOW2D lookup after any other path on the same texture ignores ALPHA), and one
-            // path's answer must not depend on another path or on the case's neighbours.
-            let key = (case.texture.clone(), case.sampler.clone());
-            let mut failed = None;
-            let mut stored = None;
-            for (pi, plan) in plans.iter().enumerate() {
-                if self.info.compat || current.as_ref().is_none_or(|c| c.key != key) {
-                    if let Some(c) = current.take() {
-                        self.gl.delete_texture(c.texture);
-                    }
-                    while self.gl.get_error() != glow::NO_ERROR {}
-                    match texture::create(&self.gl, &self.info, case) {
-                        Ok(t) => {
-                            let st = if self.info.es || pi > 0 { None } else { texture::read_back(&self.gl, case).ok() };
-                            current = Some(Current { texture: t, key: key.clone(), stored: st });
-                        }
-                        Err(e) => {
-                            failed = Some(e.to_string());
-                            break;
-                        }
-                    }
-                }
-                if pi == 0 {
-                    stored = current.as_ref().and_then(|c| c.stored.clone());
-                }
-                if pending.len() == capacity {
-                    self.collect(&mut pending, &mut results);
-                    self.clear();
-                }
-                let slot = pending.len();
-                if let Err(e) = self.draw(plan, case.texture.target, slot) {
-                    failed = Some(format!("{}: {e}", plan.key.path));
-                    break;
-                }
-                let how = if plan.key.form == LodForm::Constant { "fixed-function".to_string() } else { plan.note.clone() };
-                pending.push(Pending { case: ci, path: plan.key.path, slot, note: how });
-            }
-            if let Err(e) = texture::check(&self.gl, "drawing") {
-                failed = failed.or(Some(e.to_string()));
-            }
-            if let Some(msg) = failed {
-                pending.retain(|p| p.case != ci);
-                answers[ci] = Some(Answer::Error(msg));
-                continue;
-            }
-            stored_of[ci] = stored;
         }
-        if let Some(c) = current.take() {
-            self.gl.delete_texture(c.texture);
+        if self.info.compat {
+            for (ci, plans) in planned {
+                self.run_compat_case(&cases[ci], ci, &plans, &mut st);
+            }
+        } else {
+            // Consecutive cases with equal texture and sampler form one group (one texture).
+            let mut group: Vec<(usize, Vec<Plan>)> = Vec::new();
+            for item in planned {
+                let same = group.first().is_some_and(|(g, _)| {
+                    cases[*g].texture == cases[item.0].texture && cases[*g].sampler == cases[item.0].sampler
+                });
+                if !same && !group.is_empty() {
+                    self.run_group(cases, std::mem::take(&mut group), &mut st);
+                }
+                group.push(item);
+            }
+            if !group.is_empty() {
+                self.run_group(cases, group, &mut st);
+            }
         }
-        self.collect(&mut pending, &mut results);
-        answers
+        let mut pending = std::mem::take(&mut st.pending);
+        self.collect(&mut pending, &mut st.results);
+        st.answers
             .into_iter()
-            .zip(results)
-            .zip(stored_of)
-            .map(|((a, mut r), stored)| {
+            .zip(st.results)
+            .zip(st.stored)
+            .zip(cases)
+            .map(|(((a, mut r), stored), case)| {
                 a.unwrap_or_else(|| {
+                    r.sort_by_key(|e| case.api.iter().position(|p| *p == e.api));
                     for e in &mut r {
                         e.stored = stored.clone();
                     }
@@ -329,8 +369,53 @@ impl Renderer {
             .collect()
     }
 
+    /// Makes room for `n` more pixels, reading back and clearing when the framebuffer is full.
+    pub(super) unsafe fn reserve(&mut self, st: &mut BatchState, n: usize) {
+        if st.pending.len() + n > CAPACITY {
+            let mut pending = std::mem::take(&mut st.pending);
+            self.collect(&mut pending, &mut st.results);
+            self.clear();
+        }
+    }
+
+    /// A compatibility-context case: every path on a fresh texture. Mesa keeps per-texture sampler
+    /// views whose DEPTH_TEXTURE_MODE swizzle depends on which path drew before, and one path's
+    /// answer must not depend on another path or on the case's neighbours.
+    unsafe fn run_compat_case(&mut self, case: &Case, ci: usize, plans: &[Plan], st: &mut BatchState) {
+        let mut failed = None;
+        for (pi, plan) in plans.iter().enumerate() {
+            while self.gl.get_error() != glow::NO_ERROR {}
+            let tex = match texture::create(&self.gl, &self.info, case) {
+                Ok(t) => t,
+                Err(e) => {
+                    failed = Some(e.to_string());
+                    break;
+                }
+            };
+            if pi == 0 && !self.info.es {
+                st.stored[ci] = texture::read_back(&self.gl, case).ok();
+            }
+            self.reserve(st, 1);
+            let slot = st.pending.len();
+            let r = self.draw(plan, case.texture.target, slot);
+            self.gl.delete_texture(tex);
+            if let Err(e) = r {
+                failed = Some(format!("{}: {e}", plan.key.path));
+                break;
+            }
+            let how = if plan.key.form == LodForm::Constant { "fixed-function".to_string() } else { plan.note.clone() };
+            st.pending.push(Pending { case: ci, path: plan.key.path, slot, note: how });
+        }
+        if let Err(e) = texture::check(&self.gl, "drawing") {
+            failed = failed.or(Some(e.to_string()));
+        }
+        if let Some(msg) = failed {
+            st.fail(ci, msg);
+        }
+    }
+
     /// Reads back the pending pixels into `results`.
-    unsafe fn collect(&self, pending: &mut Vec<Pending>, results: &mut [Vec<PathResult>]) {
+    pub(super) unsafe fn collect(&self, pending: &mut Vec<Pending>, results: &mut [Vec<PathResult>]) {
         if pending.is_empty() {
             return;
         }

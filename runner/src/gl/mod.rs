@@ -8,6 +8,7 @@
 //! Every library (libEGL, libOSMesa, the GL entry points) is loaded at run time, so a machine without
 //! Mesa builds fine and reports the backend unavailable with the apt-get command that fixes it.
 
+mod batch;
 pub mod context;
 pub mod draw;
 pub mod legacy;

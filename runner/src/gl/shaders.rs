@@ -84,8 +84,21 @@ fn legacy_call(key: &ShaderKey) -> String {
     format!("{f}(u_tex, {p}{bias})")
 }
 
-/// (vertex source, fragment source) for a GLSL path.
-pub fn glsl(info: &GlInfo, key: &ShaderKey) -> (String, String) {
+/// Texels of the parameter texture per case in batched draws (P, dx, dy, (x,0,0,0)).
+pub const PARAM_TEXELS: i32 = 4;
+/// Width of the parameter texture.
+pub const PARAM_WIDTH: i32 = 1024;
+
+/// Can this key draw many cases at once (no implicit derivatives: neighbours in a pixel quad are
+/// other cases), reading each case's values from the parameter texture with texelFetch?
+pub fn batchable(key: &ShaderKey) -> bool {
+    matches!(key.path, ApiPath::GlslCore | ApiPath::Glsl130 | ApiPath::Es300) && matches!(key.form, LodForm::Lod | LodForm::Grad)
+}
+
+/// (vertex source, fragment source) for a GLSL path. `batched`: the case values come from the
+/// parameter texture (unit 1) at index `slot - u_base`, where slot is the pixel's index in the
+/// framebuffer (`fb_width` wide); pixels outside [0, u_count) are discarded.
+pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, String) {
     let cube_array = key.target == Target::CubeArray;
     let rect = key.target == Target::Rect;
     let (header, vin, fout, out_decl) = match key.path {
@@ -135,9 +148,17 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey) -> (String, String) {
     };
     let vs = format!("{header}{vin} vec2 a_pos;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); }}\n");
     let prec = if matches!(key.path, ApiPath::Es300 | ApiPath::Es100Ext) { "highp " } else { "" };
-    let p_line = match key.form {
-        LodForm::Implicit(_) => "vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;",
-        _ => "vec4 p = u_p;",
+    let p_line = match (batched, key.form) {
+        (Some(fb_width), _) => format!(
+            "int k = int(gl_FragCoord.y) * {fb_width} + int(gl_FragCoord.x) - u_base;\n  if (k < 0 || k >= u_count) discard;\n  int t = k * {PARAM_TEXELS};\n  vec4 p = texelFetch(u_params, ivec2(t % {PARAM_WIDTH}, t / {PARAM_WIDTH}), 0);\n  vec4 u_dx = texelFetch(u_params, ivec2((t + 1) % {PARAM_WIDTH}, (t + 1) / {PARAM_WIDTH}), 0);\n  vec4 u_dy = texelFetch(u_params, ivec2((t + 2) % {PARAM_WIDTH}, (t + 2) / {PARAM_WIDTH}), 0);\n  float u_x = texelFetch(u_params, ivec2((t + 3) % {PARAM_WIDTH}, (t + 3) / {PARAM_WIDTH}), 0).x;"
+        ),
+        (None, LodForm::Implicit(_)) => "vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;".to_string(),
+        (None, _) => "vec4 p = u_p;".to_string(),
+    };
+    let uniforms = if batched.is_some() {
+        format!("uniform {prec}sampler2D u_params;\nuniform int u_base;\nuniform int u_count;\n")
+    } else {
+        "uniform vec4 u_p;\nuniform float u_x;\nuniform vec4 u_dx;\nuniform vec4 u_dy;\nuniform vec2 u_c;\n".to_string()
     };
     let vec4_result = matches!(key.path, ApiPath::Glsl120) || key.kind != SamplerKind::Shadow;
     let call = match key.path {
@@ -146,7 +167,7 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey) -> (String, String) {
     };
     let store = if vec4_result { format!("{fout} = vec4({call});") } else { format!("{fout} = vec4({call}, 0.0, 0.0, 1.0);") };
     let fs = format!(
-        "{header}uniform {prec}{} u_tex;\nuniform vec4 u_p;\nuniform float u_x;\nuniform vec4 u_dx;\nuniform vec4 u_dy;\nuniform vec2 u_c;\n{out_decl}void main() {{\n  {p_line}\n  {store}\n}}\n",
+        "{header}uniform {prec}{} u_tex;\n{uniforms}{out_decl}void main() {{\n  {p_line}\n  {store}\n}}\n",
         sampler_type(key.kind, key.target)
     );
     (vs, fs)

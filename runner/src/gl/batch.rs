@@ -1,0 +1,107 @@
+//! Drawing a group of cases that share one texture and sampler state (core and ES contexts).
+//!
+//! Paths whose lookup takes an explicit LOD or gradients need no neighbouring pixels, so every case
+//! of the group that uses the same program is drawn by one full-screen draw: each case's values (P,
+//! gradients, LOD) go into an RGBA32F parameter texture, each fragment finds its case from its pixel
+//! index and reads them with texelFetch (exact). Implicit-derivative paths draw one pixel per case
+//! (the 2x2 quad around it must belong to the same case).
+
+use super::draw::{BatchState, Pending, Renderer, CAPACITY};
+use super::paths::{Plan, ShaderKey};
+use super::shaders::{self, PARAM_TEXELS, PARAM_WIDTH};
+use super::texture;
+use glow::HasContext;
+use shadowcheck_model::Case;
+
+impl Renderer {
+    /// Uploads the values of `plans` to the parameter texture (case k at texels 4k..4k+3).
+    unsafe fn upload_params(&self, plans: &[&Plan]) {
+        let texels = plans.len() as i32 * PARAM_TEXELS;
+        let rows = (texels + PARAM_WIDTH - 1) / PARAM_WIDTH;
+        let mut data: Vec<f32> = Vec::with_capacity((rows * PARAM_WIDTH * 4) as usize);
+        for p in plans {
+            data.extend_from_slice(&p.p);
+            data.extend_from_slice(&p.dx);
+            data.extend_from_slice(&p.dy);
+            data.extend_from_slice(&[p.x, 0.0, 0.0, 0.0]);
+        }
+        data.resize((rows * PARAM_WIDTH * 4) as usize, 0.0);
+        let bytes: Vec<u8> = data.iter().flat_map(|f| f.to_ne_bytes()).collect();
+        self.gl.active_texture(glow::TEXTURE1);
+        self.gl.bind_texture(glow::TEXTURE_2D, Some(self.params));
+        self.gl.tex_sub_image_2d(glow::TEXTURE_2D, 0, 0, 0, PARAM_WIDTH, rows, glow::RGBA, glow::FLOAT, glow::PixelUnpackData::Slice(Some(&bytes)));
+        self.gl.active_texture(glow::TEXTURE0);
+    }
+
+    /// Runs a group of cases sharing texture and sampler state.
+    pub(super) unsafe fn run_group(&mut self, cases: &[Case], group: Vec<(usize, Vec<Plan>)>, st: &mut BatchState) {
+        let first = &cases[group[0].0];
+        while self.gl.get_error() != glow::NO_ERROR {}
+        let tex = match texture::create(&self.gl, &self.info, first) {
+            Ok(t) => t,
+            Err(e) => {
+                for (ci, _) in &group {
+                    st.fail(*ci, e.to_string());
+                }
+                return;
+            }
+        };
+        if !self.info.es {
+            let stored = texture::read_back(&self.gl, first).ok();
+            for (ci, _) in &group {
+                st.stored[*ci] = stored.clone();
+            }
+        }
+        // Batchable (case, plan) pairs by program, in first-appearance order.
+        let mut batches: Vec<(ShaderKey, Vec<(usize, &Plan)>)> = Vec::new();
+        for (ci, plans) in &group {
+            for plan in plans {
+                if shaders::batchable(&plan.key) {
+                    match batches.iter_mut().find(|(k, _)| *k == plan.key) {
+                        Some((_, v)) => v.push((*ci, plan)),
+                        None => batches.push((plan.key, vec![(*ci, plan)])),
+                    }
+                } else {
+                    self.reserve(st, 1);
+                    let slot = st.pending.len();
+                    match self.draw(plan, first.texture.target, slot) {
+                        Ok(()) => st.pending.push(Pending { case: *ci, path: plan.key.path, slot, note: plan.note.clone() }),
+                        Err(e) => st.fail(*ci, format!("{}: {e}", plan.key.path)),
+                    }
+                }
+            }
+        }
+        for (key, items) in batches {
+            for chunk in items.chunks(CAPACITY) {
+                let live: Vec<(usize, &Plan)> = chunk.iter().filter(|(ci, _)| st.answers[*ci].is_none()).copied().collect();
+                if live.is_empty() {
+                    continue;
+                }
+                self.reserve(st, live.len());
+                let slot0 = st.pending.len();
+                let plans: Vec<&Plan> = live.iter().map(|(_, p)| *p).collect();
+                self.upload_params(&plans);
+                match self.draw_batched(&key, slot0, live.len()) {
+                    Ok(()) => {
+                        for (k, (ci, p)) in live.iter().enumerate() {
+                            st.pending.push(Pending { case: *ci, path: p.key.path, slot: slot0 + k, note: format!("{}, batched", p.note) });
+                        }
+                    }
+                    Err(e) => {
+                        for (ci, _) in &live {
+                            st.fail(*ci, format!("{}: {e}", key.path));
+                        }
+                    }
+                }
+            }
+        }
+        self.gl.delete_texture(tex);
+        if let Err(e) = texture::check(&self.gl, "drawing") {
+            for (ci, _) in &group {
+                if st.answers[*ci].is_none() {
+                    st.fail(*ci, e.to_string());
+                }
+            }
+        }
+    }
+}
