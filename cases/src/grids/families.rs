@@ -26,6 +26,18 @@ fn plain_depth_formats(d: &SpecDims) -> Vec<Format> {
     d.formats.iter().copied().filter(|f| f.is_depth() && !f.has_stencil()).collect()
 }
 
+/// The function the single-function families use: LEQUAL (R <= Dt) where the spec has it, else
+/// its first operator (SGIX: TEXTURE_LEQUAL_R_SGIX). Never NEVER/ALWAYS, whose constant result
+/// would hide a wrong texel, level, layer or face.
+pub fn main_func(d: &SpecDims) -> CompareFunc {
+    if d.funcs.contains(&CompareFunc::Lequal) { CompareFunc::Lequal } else { d.funcs[0] }
+}
+
+/// Two functions with opposite results away from ties: LEQUAL and GEQUAL (SGIX: its two operators).
+pub fn func_pair(d: &SpecDims) -> [CompareFunc; 2] {
+    if d.funcs.contains(&CompareFunc::Gequal) { [CompareFunc::Lequal, CompareFunc::Gequal] } else { [d.funcs[0], d.funcs[d.funcs.len() - 1]] }
+}
+
 fn cell(d: &SpecDims, target: Target, format: Format, filter: Filter, func: CompareFunc) -> Cell {
     Cell { spec: d.spec, target, format, filter, mode: CompareMode::Compare, func, dtm: None }
 }
@@ -128,7 +140,7 @@ fn mip_chain(c: &Cell, base_level: u32) -> Texture {
 pub fn mip(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
-    let func = d.funcs[0];
+    let func = main_func(d);
     let tags = format!("levels={}", nums(&MIP));
     for &filter in d.filters.iter().filter(|f| f.is_mipmap()) {
         let c = cell(d, Target::T2d, fmt, filter, func);
@@ -169,7 +181,7 @@ pub fn mip(d: &SpecDims) -> Vec<Draft> {
 pub fn wrap(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
-    let func = d.funcs[0];
+    let func = main_func(d);
     const COORDS: [(f64, f64); 7] = [(-0.25, 0.25), (-0.75, 0.25), (1.25, 0.25), (1.6, 0.75), (2.3, 0.25), (-1.3, 0.75), (0.25, 1.25)];
     for &wrap in d.wraps {
         for filter in [Filter::Nearest, Filter::Linear] {
@@ -205,7 +217,7 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
 /// matters).
 pub fn cube(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
-    let func = d.funcs[0];
+    let func = main_func(d);
     for &target in d.targets.iter().filter(|t| t.is_cube()) {
         for fmt in clamp_formats(d) {
             let n = if target == Target::CubeArray { 2 } else { 1 };
@@ -251,7 +263,7 @@ pub fn cube(d: &SpecDims) -> Vec<Draft> {
 pub fn layer(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
-    let func = d.funcs[0];
+    let func = main_func(d);
     const VALS: [f64; 3] = [0.2, 0.8, 0.4];
     for &target in d.targets.iter().filter(|t| t.is_array()) {
         let c = cell(d, target, fmt, Filter::Nearest, func);
@@ -269,8 +281,8 @@ pub fn layer(d: &SpecDims) -> Vec<Draft> {
     out
 }
 
-/// DEPTH_TEXTURE_MODE (each value) x format x compare mode, NEAREST 2D, with the spec's first and
-/// last compare function (the mode only decides where r goes, not r itself).
+/// DEPTH_TEXTURE_MODE (each value) x format x compare mode, NEAREST 2D, with LEQUAL and GEQUAL
+/// (one passes, one fails; the mode only decides where r goes, not r itself).
 pub fn dtm(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     if d.dtms.is_empty() {
@@ -279,7 +291,7 @@ pub fn dtm(d: &SpecDims) -> Vec<Draft> {
     for &m in d.dtms {
         for &fmt in d.formats {
             for mode in [CompareMode::Compare, CompareMode::None] {
-                let funcs: Vec<CompareFunc> = if mode == CompareMode::None { vec![d.funcs[0]] } else { vec![d.funcs[0], d.funcs[d.funcs.len() - 1]] };
+                let funcs: Vec<CompareFunc> = if mode == CompareMode::None { vec![d.funcs[0]] } else { func_pair(d).to_vec() };
                 for func in funcs {
                     let c = Cell { dtm: Some(m), mode, ..cell(d, Target::T2d, fmt, Filter::Nearest, func) };
                     let (tex, w, h, _) = pattern_texture(&c);
@@ -303,7 +315,7 @@ pub fn stencil(d: &SpecDims) -> Vec<Draft> {
         for dsm in [DepthStencilMode::StencilIndex, DepthStencilMode::DepthComponent] {
             for filter in [Filter::Nearest, Filter::Linear] {
                 for mode in [CompareMode::Compare, CompareMode::None] {
-                    let c = Cell { mode, ..cell(d, Target::T2d, fmt, filter, d.funcs[3.min(d.funcs.len() - 1)]) };
+                    let c = Cell { mode, ..cell(d, Target::T2d, fmt, filter, main_func(d)) };
                     let (tex, w, h, _) = pattern_texture(&c);
                     for (i, s, t) in [(1, 0.75, 0.25), (2, 0.25, 0.75)] {
                         let mut x = Draft::new("stencil", c, tex.clone(), lookup(Target::T2d, At::st(s, t), w, h, 0.5), format!("dsm={dsm}/texel{i}/ref=0.5/stencil={}", build::stencil_value(i)));
@@ -323,7 +335,7 @@ pub fn incomplete(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
     for mode in [CompareMode::Compare, CompareMode::None] {
-        let c = Cell { mode, ..cell(d, Target::T2d, fmt, Filter::NearestMipmapNearest, d.funcs[0]) };
+        let c = Cell { mode, ..cell(d, Target::T2d, fmt, Filter::NearestMipmapNearest, main_func(d)) };
         let (tex, w, h, _) = pattern_texture(&c);
         let lk = lookup(Target::T2d, At::st(0.75, 0.25), w, h, 0.3);
         out.push(Draft::new("incomplete", c, tex.clone(), lk.clone(), "level0-only/texel1/ref=0.3".into()));
@@ -342,7 +354,7 @@ pub fn incomplete(d: &SpecDims) -> Vec<Draft> {
 pub fn proj(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
-    let funcs = [d.funcs[0], d.funcs[d.funcs.len() - 1]];
+    let funcs = func_pair(d);
     for &target in d.targets.iter().filter(|t| matches!(t, Target::T1d | Target::T2d | Target::Rect)) {
         for func in funcs {
             let c = cell(d, target, fmt, Filter::Nearest, func);
