@@ -54,6 +54,13 @@ pub const ALL: &[Contradiction] = &[
         sources: "SGIX_shadow Notes; ARB_shadow §3.8.13.1; GL 4.6 §11.1.3.5; compatibility Table 16.1; OES_depth_texture issue 2",
     },
     Contradiction {
+        id: "compat-float-alpha",
+        title: "Float shadow lookup (GLSL 1.30, compatibility) with DEPTH_TEXTURE_MODE = ALPHA",
+        defended: "Compatibility §8.23.1 assigns r to At for ALPHA; Table 16.1 then gives Cb = (0,0,0), Ab = At, so the float result Cs[0] is 0.",
+        other: "Compatibility §11.1.3.5 read alone: \"expanding the resulting value Rt to a color Cb = (Rt, 0, 0, 1)\" with Rt = r, so the float result is r.",
+        sources: "GL 4.6 compatibility §8.23.1, §11.1.3.5, Table 16.1",
+    },
+    Contradiction {
         id: "incomplete",
         title: "Result of an incomplete texture",
         defended: "GL 4.6 / ES 3.2: 0 for a shadow sampler; GL 2.1 / ARB_fragment_program_shadow / ES 2.0: (0,0,0,1).",
@@ -108,6 +115,11 @@ pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
             "filtering" => compare && filtered,
             "result-layout" => true,
             "incomplete" => s.min_filter.is_mipmap(),
+            "compat-float-alpha" => {
+                compare
+                    && case.api.contains(&shadowcheck_model::ApiPath::Glsl130)
+                    && s.depth_texture_mode == Some(shadowcheck_model::DepthTextureMode::Alpha)
+            }
             "bad-operator-error" => false,
             "es2-greater-row" => {
                 case.spec == Spec::Es2Ext && compare && s.compare_func == CompareFunc::Greater

@@ -425,3 +425,34 @@ fn es2_has_no_lod_state_and_no_bias_argument() {
         Err(OracleError::NotApplicable { .. })
     ));
 }
+
+#[test]
+fn compat_float_shadow_lookup_with_alpha_mode_returns_zero() {
+    let mut c = one(Spec::Gl46, Format::D16, CompareFunc::Lequal, 0.5, 1.0);
+    c.api = vec![ApiPath::Glsl130, ApiPath::Glsl120];
+    c.sampler.depth_texture_mode = Some(DepthTextureMode::Alpha);
+    let e = eval(&c);
+    assert_eq!(
+        e.expect.layout[&ApiPath::Glsl130],
+        [
+            Channel::Zero,
+            Channel::Unused,
+            Channel::Unused,
+            Channel::Unused
+        ]
+    );
+    assert_eq!(
+        e.expect.layout[&ApiPath::Glsl120],
+        [Channel::Zero, Channel::Zero, Channel::Zero, Channel::R]
+    );
+    c.sampler.depth_texture_mode = Some(DepthTextureMode::Luminance);
+    assert_eq!(
+        eval(&c).expect.layout[&ApiPath::Glsl130],
+        [
+            Channel::R,
+            Channel::Unused,
+            Channel::Unused,
+            Channel::Unused
+        ]
+    );
+}
