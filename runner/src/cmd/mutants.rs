@@ -1,9 +1,141 @@
-//! `shadowcheck mutants` (being built).
+//! `shadowcheck mutants`: the fixtures against every seeded fault of the soft unit; prints the kill
+//! matrix and the mutation score (runner/src/mutants/mod.rs has the definitions).
+//!
+//! Exit codes: 0 every selected mutant killed; 1 some mutant not killed (warn-only or survived);
+//! 2 the correct unit fails a case (the score is meaningless); 96 setup error (runner/README.md).
+
+use anyhow::Context;
+use shadowcheck_runner::mutants::{self, render, KillStatus, Suite};
+use std::io::Write as _;
+use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::Instant;
 
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// Fixture file or directory. Default: cases/fixtures.
+    #[arg(long, value_name = "PATH")]
+    fixtures: Option<PathBuf>,
+    /// Use a named grid generated in memory (smoke, default, exhaustive) instead of fixture files.
+    #[arg(long, value_name = "NAME", conflicts_with = "fixtures")]
+    grid: Option<String>,
+    /// Run only this mutant (repeatable; keys as listed by --list).
+    #[arg(long, value_name = "KEY")]
+    mutant: Vec<String>,
+    /// List the mutants (key and the defect each is modelled on) and exit.
+    #[arg(long)]
+    list: bool,
+    /// Print the report as JSON on stdout instead of the table.
+    #[arg(long)]
+    json: bool,
+    /// Also write the Markdown report (kill matrix, score, survivors) to FILE.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    output: Option<PathBuf>,
+    /// Worker threads (default: the available parallelism).
+    #[arg(long, short = 'j', value_name = "N")]
+    jobs: Option<usize>,
+    /// No progress lines on stderr.
+    #[arg(long, short = 'q')]
+    quiet: bool,
+}
 
-pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("`mutants` is not built yet")
+/// The command line as it would be typed to reproduce the run (for the report header).
+fn command_line(a: &Args) -> String {
+    let mut s = String::from("shadowcheck mutants");
+    if let Some(f) = &a.fixtures {
+        s += &format!(" --fixtures {}", f.display());
+    }
+    if let Some(g) = &a.grid {
+        s += &format!(" --grid {g}");
+    }
+    for m in &a.mutant {
+        s += &format!(" --mutant {m}");
+    }
+    if let Some(o) = &a.output {
+        s += &format!(" -o {}", o.display());
+    }
+    s
+}
+
+pub fn main(a: Args) -> anyhow::Result<ExitCode> {
+    let t0 = Instant::now();
+    if a.list {
+        for f in shadowcheck_soft::Fault::ALL {
+            println!("{:<40} {}", f.key(), mutants::about(*f));
+        }
+        return Ok(ExitCode::SUCCESS);
+    }
+    let faults = mutants::select(&a.mutant)?;
+    let (source, cases) = match &a.grid {
+        Some(g) => {
+            let files = shadowcheck_cases::grids::generate(g, 0).with_context(|| format!("generating grid `{g}`"))?;
+            (
+                format!("grid {g}"),
+                files.into_iter().flat_map(|(_, f)| f.cases).collect::<Vec<_>>(),
+            )
+        }
+        None => {
+            let path = a.fixtures.clone().unwrap_or_else(|| PathBuf::from(super::run::DEFAULT_FIXTURES));
+            let files = shadowcheck_cases::fixtures::load_path(&path).with_context(|| {
+                format!(
+                    "loading fixtures (generate them with `shadowcheck gen --grid default -o {}`)",
+                    path.display()
+                )
+            })?;
+            (path.display().to_string(), files.into_iter().flat_map(|(_, f)| f.cases).collect())
+        }
+    };
+    if !a.quiet {
+        eprintln!(
+            "mutants: {} cases from {source} loaded in {:.2} s; sampling the correct unit",
+            cases.len(),
+            t0.elapsed().as_secs_f64()
+        );
+    }
+    let suite = Suite::new(cases)?;
+    let threads = a
+        .jobs
+        .unwrap_or_else(|| std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1));
+    let total = faults.len();
+    let quiet = a.quiet;
+    let mut report = mutants::run(&suite, &source, &faults, threads, |done, m| {
+        if !quiet {
+            let n = if m.status == KillStatus::Killed {
+                m.killing_cases
+            } else {
+                m.warn_cases
+            };
+            eprintln!(
+                "[{done:>2}/{total}] {:<40} {:<9} {n:>6} cases  {:.2} s",
+                m.key,
+                m.status.as_str(),
+                m.seconds
+            );
+        }
+    });
+    report.wall_seconds = t0.elapsed().as_secs_f64();
+    if a.json {
+        let mut out = std::io::stdout().lock();
+        serde_json::to_writer_pretty(&mut out, &report)?;
+        writeln!(out)?;
+    } else {
+        print!("{}", render::table(&report));
+    }
+    if let Some(path) = &a.output {
+        std::fs::write(path, render::markdown(&report, &command_line(&a))).with_context(|| format!("writing {}", path.display()))?;
+        if !a.quiet {
+            eprintln!("mutants: wrote {}", path.display());
+        }
+    }
+    Ok(if !report.baseline.ok() {
+        eprintln!(
+            "mutants: the correct unit fails {} test(s); fix the unit or the fixtures first",
+            report.baseline.fail
+        );
+        ExitCode::from(2)
+    } else if report.killed < report.mutants.len() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
 }

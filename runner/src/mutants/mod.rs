@@ -1,0 +1,557 @@
+//! Mutation testing of the suite (`shadowcheck mutants`): how many seeded faults of the project's
+//! own texture unit (`shadowcheck-soft`, [`Fault`]) the fixtures catch.
+//!
+//! Each mutant is the soft unit with exactly one fault switched on (a switchable variant, not an
+//! edit of the source). Every case of the fixtures is sampled in process on every API path of the
+//! case and judged against the case's stored expectation, exactly as `shadowcheck run --backend
+//! soft` judges it ([`crate::verdict`]):
+//!
+//! - a test is **Fail** when the observation is outside the `lenient` acceptance set, or when the
+//!   mutant refuses (errors on) a lookup the correct unit answers (the soft backend claims every
+//!   capability, and an error on a supported lookup is a Fail, see [`crate::verdict::Outcome`]);
+//! - **Warn** when it is inside `lenient` but outside `strict`.
+//!
+//! A mutant is **killed** when at least one test is Fail; **warn-only** when none fails but at least
+//! one is Warn (a weaker kill: a CI gating on Fail would not notice); otherwise it **survived**.
+//! The mutation score is killed / mutants. Before the mutants, the correct unit (the *baseline*)
+//! must have no Fail at all: otherwise the suite or the unit is wrong and the score means nothing.
+//!
+//! The **minimal killing case** of a mutant is, among its killing cases, the one with the smallest
+//! [`Complexity`]: fewest texels over all levels and layers, then fewest mip levels, then fewest API
+//! paths, then the shortest id, then the id in byte order (total, so the choice is deterministic).
+//! The **first killing case** is the first in fixture order (files in path order, cases in file
+//! order).
+//!
+//! For every mutant that is not killed, the soft crate's witness for the fault
+//! ([`shadowcheck_soft::witness::witness`], a small case on which the fault changes the result) is
+//! judged by the oracle: a witness that Fails is an observable fault and a grid change to make
+//! (the witness case, or its family, belongs in the grid); a witness inside the acceptance set means
+//! the fault is not observable through the API on that case either.
+//!
+//! Speed: each mutant samples every test once; observations bit-identical to the baseline's are not
+//! judged again (they have the baseline's verdict, Pass or Skip). Mutants run in parallel.
+
+pub mod render;
+
+use crate::verdict::{self, Outcome};
+use serde::Serialize;
+use shadowcheck_model::{ApiPath, Case, Judgement, Spec};
+use shadowcheck_soft::{BatchResult, Fault, SoftError, SoftUnit};
+use std::ops::Range;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+use std::time::Instant;
+
+/// Version of the JSON written by `shadowcheck mutants --json`.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// Errors of a mutation run.
+#[derive(Debug, thiserror::Error)]
+pub enum MutantsError {
+    #[error("no cases to run")]
+    NoCases,
+    #[error("unknown mutant `{0}` (known: {known})", known = Fault::ALL.iter().map(|f| f.key()).collect::<Vec<_>>().join(", "))]
+    UnknownMutant(String),
+    #[error("case `{id}` has no expectation and the oracle gives none: {msg}")]
+    NoExpectation { id: String, msg: String },
+}
+
+/// Parses mutant keys (`Fault::key`); an empty list means every fault.
+pub fn select(keys: &[String]) -> Result<Vec<Fault>, MutantsError> {
+    if keys.is_empty() {
+        return Ok(Fault::ALL.to_vec());
+    }
+    keys.iter()
+        .map(|k| Fault::from_key(k).ok_or_else(|| MutantsError::UnknownMutant(k.clone())))
+        .collect()
+}
+
+/// How simple a case is, for choosing the minimal killing case (see the module docs). Ordered
+/// field by field.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+pub struct Complexity {
+    /// Texels over all levels and layers.
+    pub texels: usize,
+    /// Mip levels given.
+    pub levels: usize,
+    /// API paths of the case.
+    pub paths: usize,
+    /// Length of the id.
+    pub id_len: usize,
+}
+
+impl Complexity {
+    pub fn of(case: &Case) -> Complexity {
+        Complexity {
+            texels: case.texture.levels.iter().map(|l| l.texel_count()).sum(),
+            levels: case.texture.levels.len(),
+            paths: case.api.len(),
+            id_len: case.id.len(),
+        }
+    }
+}
+
+/// One test (case on one API path) that a mutant fails or warns on.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Kill {
+    /// Case id.
+    pub case: String,
+    pub api: ApiPath,
+    /// Fail or Warn.
+    pub outcome: Outcome,
+    /// What the mutant returned (`None` when it refused the lookup).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rgba: Option<[f32; 4]>,
+    /// What the correct unit returned.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub correct: Option<[f32; 4]>,
+    /// The verdict's reason (which channel misses which acceptance set) or the mutant's error.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+    pub complexity: Complexity,
+}
+
+/// The result class of a mutant.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum KillStatus {
+    /// At least one test Fails.
+    Killed,
+    /// No test Fails, at least one Warns.
+    WarnOnly,
+    /// Every test Passes (or is skipped as for the correct unit).
+    Survived,
+}
+
+impl KillStatus {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            KillStatus::Killed => "killed",
+            KillStatus::WarnOnly => "warn-only",
+            KillStatus::Survived => "SURVIVED",
+        }
+    }
+}
+
+/// The fault's witness (a small case on which it changes the result) judged by the oracle; filled
+/// for mutants that are not killed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WitnessCheck {
+    /// The witness case as JSON (its id is `witness`), ready to add to a grid.
+    pub case: Case,
+    pub api: ApiPath,
+    /// Verdict on the correct unit's result (expected Pass).
+    pub correct: Outcome,
+    /// Verdict on the mutant's result: Fail means the fault is observable and this case kills it.
+    pub mutant: Outcome,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+}
+
+/// What one mutant did over the suite.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MutantResult {
+    /// `Fault::key`.
+    pub key: String,
+    /// The real-world defect the fault is modelled on.
+    pub about: String,
+    pub status: KillStatus,
+    /// Cases with at least one Fail test.
+    pub killing_cases: usize,
+    /// Tests (case × API path) that Fail.
+    pub failing_tests: usize,
+    /// Cases with a Warn test and no Fail test.
+    pub warn_cases: usize,
+    /// Tests whose observation differs from the correct unit's (bitwise), judged or not.
+    pub changed_tests: usize,
+    /// First killing case in fixture order (a Warn case for warn-only mutants).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub first: Option<Kill>,
+    /// Minimal killing case (a Warn case for warn-only mutants).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub minimal: Option<Kill>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub witness: Option<WitnessCheck>,
+    pub seconds: f64,
+}
+
+/// What the correct unit did over the suite.
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct BaselineResult {
+    pub pass: usize,
+    pub warn: usize,
+    pub fail: usize,
+    /// Tests the unit does not answer (an API path or state the spec lacks): skipped for every
+    /// mutant too, unless the mutant answers them (not judged).
+    pub skip: usize,
+    /// The first failing tests (at most 20), with reasons.
+    pub failures: Vec<Kill>,
+    pub seconds: f64,
+}
+
+impl BaselineResult {
+    pub fn ok(&self) -> bool {
+        self.fail == 0
+    }
+}
+
+/// The whole run: `shadowcheck mutants --json` writes this.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MutantsReport {
+    pub schema_version: u32,
+    /// Where the cases came from (fixture path or grid name).
+    pub fixtures: String,
+    pub cases: usize,
+    pub tests: usize,
+    pub threads: usize,
+    pub baseline: BaselineResult,
+    pub mutants: Vec<MutantResult>,
+    pub killed: usize,
+    pub warn_only: usize,
+    pub survived: usize,
+    /// killed / mutants, in percent.
+    pub score: f64,
+    /// (killed + warn-only) / mutants, in percent.
+    pub score_with_warn: f64,
+    /// Seconds for sampling and judging (baseline + mutants).
+    pub run_seconds: f64,
+    /// Seconds for the whole command, loading included (set by the command).
+    pub wall_seconds: f64,
+}
+
+/// The cases, grouped by spec (one soft unit per spec samples a contiguous run of cases), and the
+/// correct unit's observations.
+pub struct Suite {
+    /// Cases sorted by spec (stable).
+    cases: Vec<Case>,
+    /// Position of each case in fixture order.
+    order: Vec<usize>,
+    /// Contiguous runs of one spec.
+    spans: Vec<(Spec, Range<usize>)>,
+    /// Case index of each test, in sampling order.
+    test_case: Vec<usize>,
+    /// Correct observations, in sampling order.
+    baseline: Vec<BatchResult>,
+    complexity: Vec<Complexity>,
+}
+
+impl Suite {
+    /// Groups `cases` (in fixture order) by spec, fills missing expectations from the oracle and
+    /// samples them with the correct unit.
+    pub fn new(cases: Vec<Case>) -> Result<Suite, MutantsError> {
+        if cases.is_empty() {
+            return Err(MutantsError::NoCases);
+        }
+        let mut indexed: Vec<(usize, Case)> = cases.into_iter().enumerate().collect();
+        indexed.sort_by_key(|(i, c)| (Spec::ALL.iter().position(|s| *s == c.spec), *i));
+        let mut order = Vec::with_capacity(indexed.len());
+        let mut cases = Vec::with_capacity(indexed.len());
+        for (i, mut c) in indexed {
+            if c.expect.is_none() {
+                let ev = verdict::oracle_evaluate(&c).map_err(|msg| MutantsError::NoExpectation { id: c.id.clone(), msg })?;
+                c.expect = Some(ev.expect);
+            }
+            order.push(i);
+            cases.push(c);
+        }
+        let mut spans: Vec<(Spec, Range<usize>)> = vec![];
+        for (i, c) in cases.iter().enumerate() {
+            match spans.last_mut() {
+                Some((s, r)) if *s == c.spec => r.end = i + 1,
+                _ => spans.push((c.spec, i..i + 1)),
+            }
+        }
+        let complexity = cases.iter().map(Complexity::of).collect();
+        let mut suite = Suite {
+            cases,
+            order,
+            spans,
+            test_case: vec![],
+            baseline: vec![],
+            complexity,
+        };
+        let baseline = suite.sample(None);
+        suite.test_case = baseline.iter().map(|b| b.case).collect();
+        suite.baseline = baseline;
+        Ok(suite)
+    }
+
+    pub fn cases(&self) -> usize {
+        self.cases.len()
+    }
+    pub fn tests(&self) -> usize {
+        self.baseline.len()
+    }
+
+    /// Every test sampled by the unit with `fault` (or the correct unit), in sampling order, with
+    /// `case` indices into `self.cases`.
+    fn sample(&self, fault: Option<Fault>) -> Vec<BatchResult> {
+        let mut out = Vec::with_capacity(self.baseline.len().max(self.cases.len()));
+        for (spec, range) in &self.spans {
+            let mut unit = SoftUnit::new(*spec);
+            if let Some(f) = fault {
+                unit = unit.with_fault(f);
+            }
+            let start = out.len();
+            unit.sample_batch(&self.cases[range.clone()], &mut out);
+            for b in &mut out[start..] {
+                b.case += range.start;
+            }
+        }
+        out
+    }
+
+    /// Judges one observation (see the module docs for errors).
+    fn judge(&self, case: &Case, api: ApiPath, rgba: &Result<[f32; 4], SoftError>, correct: &Result<[f32; 4], SoftError>) -> Outcome {
+        match rgba {
+            Ok(v) => match case.expect.as_ref().and_then(|e| e.judge(api, v.map(f64::from))) {
+                Some(Judgement::Strict) => Outcome::Pass,
+                Some(Judgement::LenientOnly) => Outcome::Warn,
+                Some(Judgement::Outside) => Outcome::Fail,
+                None => Outcome::Skip,
+            },
+            Err(_) if correct.is_ok() => Outcome::Fail,
+            Err(_) => Outcome::Skip,
+        }
+    }
+
+    /// A [`Kill`] record for test `t` of `results`, with the verdict's reason.
+    fn kill(&self, results: &[BatchResult], t: usize, outcome: Outcome) -> Kill {
+        let b = &results[t];
+        let case = &self.cases[b.case];
+        let correct = self.baseline.get(t).and_then(|c| c.rgba.as_ref().ok().copied());
+        let reason = match &b.rgba {
+            Ok(v) => verdict::judge(case, b.api, v.map(f64::from), None).reason,
+            Err(e) => Some(format!("refused a lookup the correct unit answers: {e}")),
+        };
+        Kill {
+            case: case.id.clone(),
+            api: b.api,
+            outcome,
+            rgba: b.rgba.as_ref().ok().copied(),
+            correct,
+            reason,
+            complexity: self.complexity[b.case].clone(),
+        }
+    }
+
+    /// Judges the correct unit over every test.
+    pub fn baseline(&self) -> BaselineResult {
+        let t0 = Instant::now();
+        let mut r = BaselineResult::default();
+        for (t, b) in self.baseline.iter().enumerate() {
+            let o = self.judge(&self.cases[b.case], b.api, &b.rgba, &Err(SoftError::UndefinedResult("baseline")));
+            match o {
+                Outcome::Pass => r.pass += 1,
+                Outcome::Warn => r.warn += 1,
+                Outcome::Fail => {
+                    r.fail += 1;
+                    if r.failures.len() < 20 {
+                        r.failures.push(self.kill(&self.baseline, t, o));
+                    }
+                }
+                _ => r.skip += 1,
+            }
+        }
+        r.seconds = t0.elapsed().as_secs_f64();
+        r
+    }
+
+    /// Runs one mutant over every test.
+    pub fn mutant(&self, fault: Fault) -> MutantResult {
+        let t0 = Instant::now();
+        let results = self.sample(Some(fault));
+        // Per case: worst outcome; per status: first (fixture order) and minimal test.
+        let mut worst: Vec<Outcome> = vec![Outcome::Pass; self.cases.len()];
+        let (mut failing_tests, mut changed_tests) = (0, 0);
+        let mut first: [Option<(usize, usize)>; 2] = [None, None]; // (fixture position, test) for Fail, Warn
+        let mut minimal: [Option<usize>; 2] = [None, None];
+        for (t, (b, c)) in results.iter().zip(&self.baseline).enumerate() {
+            let same = match (&b.rgba, &c.rgba) {
+                (Ok(x), Ok(y)) => x.map(f32::to_bits) == y.map(f32::to_bits),
+                (Err(_), Err(_)) => true,
+                _ => false,
+            };
+            if same || b.case != c.case || b.api != c.api {
+                continue;
+            }
+            changed_tests += 1;
+            let case = &self.cases[b.case];
+            let o = self.judge(case, b.api, &b.rgba, &c.rgba);
+            // A test the correct unit also misses is not evidence against the mutant.
+            let base = self.judge(case, c.api, &c.rgba, &Err(SoftError::UndefinedResult("baseline")));
+            let slot = match o {
+                Outcome::Fail if base != Outcome::Fail => 0,
+                Outcome::Warn if base == Outcome::Pass => 1,
+                _ => continue,
+            };
+            if slot == 0 {
+                failing_tests += 1;
+            }
+            if worst[b.case] != Outcome::Fail {
+                worst[b.case] = o;
+            }
+            let pos = self.order[b.case];
+            if first[slot].is_none_or(|(p, _)| pos < p) {
+                first[slot] = Some((pos, t));
+            }
+            let better = |m: usize| {
+                let (a, z) = (&self.complexity[b.case], &self.complexity[results[m].case]);
+                (a, &case.id) < (z, &self.cases[results[m].case].id)
+            };
+            if minimal[slot].is_none_or(better) {
+                minimal[slot] = Some(t);
+            }
+        }
+        let killing_cases = worst.iter().filter(|o| **o == Outcome::Fail).count();
+        let warn_cases = worst.iter().filter(|o| **o == Outcome::Warn).count();
+        let (status, slot) = if killing_cases > 0 {
+            (KillStatus::Killed, 0)
+        } else if warn_cases > 0 {
+            (KillStatus::WarnOnly, 1)
+        } else {
+            (KillStatus::Survived, 1)
+        };
+        let outcome = if slot == 0 { Outcome::Fail } else { Outcome::Warn };
+        MutantResult {
+            key: fault.key().to_string(),
+            about: about(fault).to_string(),
+            status,
+            killing_cases,
+            failing_tests,
+            warn_cases,
+            changed_tests,
+            first: first[slot].map(|(_, t)| self.kill(&results, t, outcome)),
+            minimal: minimal[slot].map(|t| self.kill(&results, t, outcome)),
+            witness: (status != KillStatus::Killed).then(|| check_witness(fault)),
+            seconds: t0.elapsed().as_secs_f64(),
+        }
+    }
+}
+
+/// Judges the soft crate's witness of `fault` with the oracle (see the module docs).
+pub fn check_witness(fault: Fault) -> WitnessCheck {
+    let (mut case, api) = shadowcheck_soft::witness::witness(fault);
+    let unit = SoftUnit::new(case.spec);
+    let judge = |r: Result<[f32; 4], SoftError>, case: &Case| match r {
+        Ok(v) => {
+            let j = verdict::judge(case, api, v.map(f64::from), None);
+            (j.outcome, j.reason)
+        }
+        Err(e) => (Outcome::Skip, Some(e.to_string())),
+    };
+    if let Ok(ev) = verdict::oracle_evaluate(&case) {
+        case.expect = Some(ev.expect);
+    }
+    let (correct, _) = judge(unit.sample(&case, api), &case);
+    let (mutant, reason) = judge(unit.with_fault(fault).sample(&case, api), &case);
+    WitnessCheck {
+        case,
+        api,
+        correct,
+        mutant,
+        reason,
+    }
+}
+
+/// Runs the baseline and then `faults` over `suite` on `threads` threads, calling `progress` after
+/// each mutant (from the worker threads, with the count done so far).
+pub fn run(
+    suite: &Suite,
+    fixtures: &str,
+    faults: &[Fault],
+    threads: usize,
+    progress: impl Fn(usize, &MutantResult) + Sync,
+) -> MutantsReport {
+    let t0 = Instant::now();
+    let baseline = suite.baseline();
+    let threads = threads.clamp(1, faults.len().max(1));
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let slots: Mutex<Vec<Option<MutantResult>>> = Mutex::new(vec![None; faults.len()]);
+    std::thread::scope(|s| {
+        for _ in 0..threads {
+            s.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(&f) = faults.get(i) else { break };
+                let r = suite.mutant(f);
+                progress(done.fetch_add(1, Ordering::Relaxed) + 1, &r);
+                if let Ok(mut v) = slots.lock() {
+                    v[i] = Some(r);
+                }
+            });
+        }
+    });
+    let mutants: Vec<MutantResult> = slots.into_inner().unwrap_or_default().into_iter().flatten().collect();
+    let count = |s: KillStatus| mutants.iter().filter(|m| m.status == s).count();
+    let (killed, warn_only, survived) = (count(KillStatus::Killed), count(KillStatus::WarnOnly), count(KillStatus::Survived));
+    let pct = |n: usize| {
+        if mutants.is_empty() {
+            0.0
+        } else {
+            100.0 * n as f64 / mutants.len() as f64
+        }
+    };
+    MutantsReport {
+        schema_version: SCHEMA_VERSION,
+        fixtures: fixtures.to_string(),
+        cases: suite.cases(),
+        tests: suite.tests(),
+        threads,
+        baseline,
+        killed,
+        warn_only,
+        survived,
+        score: pct(killed),
+        score_with_warn: pct(killed + warn_only),
+        mutants,
+        run_seconds: t0.elapsed().as_secs_f64(),
+        wall_seconds: 0.0,
+    }
+}
+
+/// The real-world defect each fault is modelled on (for the report).
+pub fn about(f: Fault) -> &'static str {
+    use Fault as F;
+    match f {
+        F::RefClampedForFloat => "Dref clamped to [0,1] for a D32F texture (pre-GL 3.0 rule kept for float depth)",
+        F::RefNotClamped => "Dref not clamped for fixed-point formats",
+        F::DtClampedForFloat => "Dt clamped to [0,1] at sample time for float depth (border > 1 visible)",
+        F::DtNotClamped => "Dt (border) not clamped for fixed-point formats",
+        F::FilterThenCompare => "filter the depths, then compare once (no PCF)",
+        F::PcfHalfTexelOff => "PCF footprint and weights off by half a texel",
+        F::LinearAsNearest => "LINEAR comparison sampled as NEAREST",
+        F::LequalGequalSwapped => "LEQUAL and GEQUAL swapped (SGIX/ARB operator confusion)",
+        F::LessAsLequal => "LESS treated as LEQUAL",
+        F::GreaterAsGequal => "GREATER treated as GEQUAL",
+        F::EqualWithTolerance => "EQUAL / NOTEQUAL with a tolerance",
+        F::NanOrderedNotequal => "NOTEQUAL as an ordered compare (NaN Dref fails)",
+        F::AlwaysNeverSwapped => "ALWAYS and NEVER swapped",
+        F::SgixOperatorsReversed => "SGIX operators read as ARB issue 2 describes them",
+        F::AmbientAppliedToPass => "ambient / fail value applied to passing texels",
+        F::AmbientIgnored => "ambient / fail value ignored",
+        F::RedModeAsLuminance => "DEPTH_TEXTURE_MODE RED returned as LUMINANCE",
+        F::IntensityAsLuminance => "DEPTH_TEXTURE_MODE INTENSITY returned as LUMINANCE",
+        F::WrongDefaultDepthMode => "wrong default DEPTH_TEXTURE_MODE in the compatibility profile",
+        F::CompareAppliedToColour => "comparison applied to a colour (R8) texture",
+        F::StencilModeIgnored => "DEPTH_STENCIL_TEXTURE_MODE STENCIL_INDEX ignored (depth sampled)",
+        F::IncompleteNotZero => "incomplete texture sampled instead of returning 0",
+        F::MipmapCompletenessIgnored => "missing mip levels not detected",
+        F::EsDepthFilterCompletenessIgnored => "ES rule: sized depth + compare NONE + LINEAR not incomplete",
+        F::ProjectiveDivideMissing => "projective divide missing",
+        F::RefNotDividedByQ => "projective divide of the coordinates but not of Dref",
+        F::LayerTruncated => "array layer truncated instead of rounded",
+        F::CubeNegYFlipped => "cube -Y face t coordinate flipped",
+        F::MipLevelOffByOne => "NEAREST-mipmap level off by one",
+        F::TrilinearNoBlend => "trilinear filtering without the level blend",
+        F::LodBiasIgnored => "TEXTURE_LOD_BIAS ignored",
+        F::LodClampIgnored => "TEXTURE_MIN_LOD / MAX_LOD ignored",
+        F::MaxLevelIgnored => "TEXTURE_MAX_LEVEL ignored",
+        F::BorderIgnored => "border depth ignored (CLAMP_TO_BORDER as CLAMP_TO_EDGE)",
+        F::BorderDepthFromAlpha => "border depth read from the alpha component",
+        F::MirroredRepeatOffByOne => "MIRRORED_REPEAT off by one texel",
+        F::UnormDividedByPowerOfTwo => "unorm conversion c/2^b instead of c/(2^b-1)",
+        #[allow(unreachable_patterns)]
+        _ => "",
+    }
+}

@@ -1,0 +1,171 @@
+//! `shadowcheck mutants` on the smoke grid: the correct soft unit has no kill (every test Pass or
+//! Skip), a seeded LEQUAL/GEQUAL swap is killed, the minimal killing case really kills it (checked
+//! again here through the verdict module), a fault the cases cannot see survives and its witness
+//! shows it is observable, and the command prints and writes the matrix.
+
+mod common;
+use common::*;
+use shadowcheck_model::{Case, CompareFunc, Wrap};
+use shadowcheck_runner::mutants::{self, render, Complexity, KillStatus, Suite};
+use shadowcheck_runner::verdict::{self, Outcome};
+use shadowcheck_soft::{Fault, SoftUnit};
+
+fn smoke() -> Vec<Case> {
+    shadowcheck_cases::grids::generate("smoke", 0)
+        .unwrap()
+        .into_iter()
+        .flat_map(|(_, f)| f.cases)
+        .collect()
+}
+
+#[test]
+fn correct_unit_has_no_kill_and_the_lequal_gequal_swap_is_killed() {
+    let cases = smoke();
+    let suite = Suite::new(cases.clone()).unwrap();
+    let base = suite.baseline();
+    assert_eq!(base.fail, 0, "the correct unit fails: {:?}", base.failures);
+    assert_eq!(base.warn, 0);
+    assert!(base.pass > 0);
+    assert_eq!(base.pass + base.skip, suite.tests());
+
+    let m = suite.mutant(Fault::LequalGequalSwapped);
+    assert_eq!(m.status, KillStatus::Killed);
+    assert!(m.killing_cases > 0 && m.failing_tests >= m.killing_cases);
+    assert!(m.witness.is_none());
+
+    // The minimal killing case: a LEQUAL or GEQUAL case on which the swapped unit gives a value
+    // the case's expectation rejects (judged again here, independently of the mutants module).
+    let min = m.minimal.clone().unwrap();
+    assert_eq!(min.outcome, Outcome::Fail);
+    let case = cases.iter().find(|c| c.id == min.case).unwrap();
+    assert!(
+        matches!(case.sampler.compare_func, CompareFunc::Lequal | CompareFunc::Gequal),
+        "{}",
+        case.id
+    );
+    let bad = SoftUnit::new(case.spec)
+        .with_fault(Fault::LequalGequalSwapped)
+        .sample(case, min.api)
+        .unwrap();
+    let good = SoftUnit::new(case.spec).sample(case, min.api).unwrap();
+    assert_eq!(verdict::judge(case, min.api, bad.map(f64::from), None).outcome, Outcome::Fail);
+    assert_eq!(verdict::judge(case, min.api, good.map(f64::from), None).outcome, Outcome::Pass);
+    assert_eq!(min.rgba, Some(bad));
+    assert_eq!(min.correct, Some(good));
+
+    // Minimal means no killing case is smaller; check against the first killing case and every
+    // case of the same compare function that the mutant fails.
+    let first = m.first.clone().unwrap();
+    assert!((&min.complexity, &min.case) <= (&first.complexity, &first.case));
+    for c in &cases {
+        let unit = SoftUnit::new(c.spec).with_fault(Fault::LequalGequalSwapped);
+        let fails = c.api.iter().any(|&api| match unit.sample(c, api) {
+            Ok(v) => verdict::judge(c, api, v.map(f64::from), None).outcome == Outcome::Fail,
+            Err(_) => false,
+        });
+        if fails {
+            assert!(
+                (&min.complexity, &min.case) <= (&Complexity::of(c), &c.id),
+                "{} is smaller than {}",
+                c.id,
+                min.case
+            );
+        }
+    }
+}
+
+#[test]
+fn a_fault_the_cases_cannot_see_survives_and_its_witness_kills_it() {
+    // The smoke cases without CLAMP_TO_BORDER: ignoring the border cannot change any of them.
+    let cases: Vec<Case> = smoke()
+        .into_iter()
+        .filter(|c| ![c.sampler.wrap_s, c.sampler.wrap_t, c.sampler.wrap_r].contains(&Wrap::ClampToBorder))
+        .collect();
+    assert!(!cases.is_empty());
+    let suite = Suite::new(cases).unwrap();
+    let m = suite.mutant(Fault::BorderIgnored);
+    assert_eq!(m.status, KillStatus::Survived);
+    assert_eq!((m.killing_cases, m.warn_cases, m.changed_tests), (0, 0, 0));
+    assert!(m.minimal.is_none() && m.first.is_none());
+    // The witness (border depth 1 next to Dt 0, LEQUAL with Dref 0.5 just past the edge) is judged
+    // by the oracle: r = 1 from the border (§8.14.2), so the correct unit passes and the mutant
+    // (edge texel, r = 0) fails: the fault is observable and the witness is a grid change that
+    // kills it.
+    let w = m.witness.unwrap();
+    assert_eq!((w.correct, w.mutant), (Outcome::Pass, Outcome::Fail));
+    assert_eq!(w.case.sampler.wrap_s, Wrap::ClampToBorder);
+    assert!(w.reason.unwrap().contains("r = 0"));
+}
+
+#[test]
+fn run_reports_score_matrix_and_markdown() {
+    let suite = Suite::new(smoke()).unwrap();
+    let faults = [Fault::LequalGequalSwapped, Fault::LessAsLequal, Fault::AlwaysNeverSwapped];
+    let calls = std::sync::atomic::AtomicUsize::new(0);
+    let r = mutants::run(&suite, "grid smoke", &faults, 2, |_, _| {
+        calls.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    });
+    assert_eq!(calls.into_inner(), 3);
+    assert_eq!(
+        r.mutants.iter().map(|m| m.key.as_str()).collect::<Vec<_>>(),
+        ["lequal-gequal-swapped", "less-as-lequal", "always-never-swapped"]
+    );
+    assert_eq!(r.killed + r.warn_only + r.survived, 3);
+    assert_eq!(r.score, 100.0 * r.killed as f64 / 3.0);
+    assert!(r.baseline.ok());
+    let md = render::markdown(&r, "shadowcheck mutants --grid smoke");
+    assert!(md.contains("| 1 | `lequal-gequal-swapped` |"), "{md}");
+    let min = r.mutants[0].minimal.as_ref().unwrap();
+    assert!(md.contains(&format!("`{}`", min.case)));
+    assert!(render::table(&r).contains("lequal-gequal-swapped"));
+}
+
+#[test]
+fn mutant_keys_are_checked() {
+    assert_eq!(mutants::select(&[]).unwrap().len(), Fault::ALL.len());
+    assert_eq!(mutants::select(&["less-as-lequal".into()]).unwrap(), vec![Fault::LessAsLequal]);
+    assert!(mutants::select(&["no-such-fault".into()])
+        .unwrap_err()
+        .to_string()
+        .contains("less-as-lequal"));
+    assert!(Fault::ALL.len() >= 30);
+    for f in Fault::ALL {
+        assert!(!mutants::about(*f).is_empty(), "{f} has no description");
+    }
+}
+
+#[test]
+fn cli_runs_one_mutant_on_the_smoke_grid_and_writes_markdown() {
+    let tmp = tmpdir("mutants-cli");
+    let md = tmp.join("MUTANTS.md");
+    let o = bin()
+        .args([
+            "mutants",
+            "--grid",
+            "smoke",
+            "--mutant",
+            "lequal-gequal-swapped",
+            "--json",
+            "-q",
+            "-o",
+        ])
+        .arg(&md)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["killed"], 1);
+    assert_eq!(v["score"], 100.0);
+    assert_eq!(v["baseline"]["fail"], 0);
+    assert_eq!(v["mutants"][0]["status"], "killed");
+    assert!(v["mutants"][0]["minimal"]["case"].as_str().is_some());
+    let text = std::fs::read_to_string(&md).unwrap();
+    assert!(text.contains("**Mutation score: 100.0 % (1 of 1 mutants killed)**"), "{text}");
+
+    let o = bin()
+        .args(["mutants", "--grid", "smoke", "--mutant", "no-such-fault"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(96));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("unknown mutant"));
+}
