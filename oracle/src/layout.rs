@@ -115,26 +115,15 @@ pub fn layout(
                     [R, Unused, Unused, Unused],
                     "EXT_shadow_samplers §3.7.14.1 (r → R_t), shadow2DEXT returns float",
                 ),
-                // GLSL 1.30 in a compatibility context with DEPTH_TEXTURE_MODE = ALPHA: compatibility
-                // §8.23.1 "The resulting r is assigned to Rt, Lt, It, or At if the value of
-                // DEPTH_TEXTURE_MODE is respectively RED, LUMINANCE, INTENSITY, or ALPHA": r is At, and
-                // Table 16.1 ALPHA gives Cb = (0,0,0), so the float Cs[0] is 0 (contradiction
-                // `compat-float-alpha`; LUMINANCE, INTENSITY and RED all put r in Cs[0]).
-                (ApiPath::Glsl130, Kind::Compare)
-                    if depth_mode(rules, mode) == DepthTextureMode::Alpha =>
-                {
-                    (
-                        [Zero, Unused, Unused, Unused],
-                        "GL 4.6 compatibility §8.23.1, Table 16.1 (ALPHA: r is At, Cs[0] = 0)",
-                    )
-                }
                 // A non-shadow sampler on a depth texture: Cb = (Dt,0,0,1) (§11.1.3.5, Table 15.1).
                 (_, Kind::Depth) => (
                     [R, Zero, Zero, One],
                     "GL 4.6 / ES 3.2 §11.1.3.5 (Cb = (Rt,0,0,1), non-shadow sampler)",
                 ),
                 // "expanding the resulting value Rt to a color Cb = (Rt, 0, 0, 1) ... only the first
-                // component Cs[0] is returned to the shader".
+                // component Cs[0] is returned to the shader" — for GLSL 1.30 in a compatibility context
+                // too, whatever DEPTH_TEXTURE_MODE says (contradiction `compat-float-alpha`; E.2.2:
+                // "(r, 0, 0, 1) is always returned from depth texture samplers").
                 _ => (
                     [R, Unused, Unused, Unused],
                     "GL 4.6 / ES 3.2 §11.1.3.5 (shadow lookup returns Cs[0] = Rt as a float)",

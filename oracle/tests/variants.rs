@@ -427,7 +427,7 @@ fn es2_has_no_lod_state_and_no_bias_argument() {
 }
 
 #[test]
-fn compat_float_shadow_lookup_with_alpha_mode_returns_zero() {
+fn compat_float_shadow_lookup_returns_r_whatever_the_depth_texture_mode() {
     let mut c = one(Spec::Gl46, Format::D16, CompareFunc::Lequal, 0.5, 1.0);
     c.api = vec![ApiPath::Glsl130, ApiPath::Glsl120];
     c.sampler.depth_texture_mode = Some(DepthTextureMode::Alpha);
@@ -435,7 +435,7 @@ fn compat_float_shadow_lookup_with_alpha_mode_returns_zero() {
     assert_eq!(
         e.expect.layout[&ApiPath::Glsl130],
         [
-            Channel::Zero,
+            Channel::R,
             Channel::Unused,
             Channel::Unused,
             Channel::Unused
@@ -445,6 +445,9 @@ fn compat_float_shadow_lookup_with_alpha_mode_returns_zero() {
         e.expect.layout[&ApiPath::Glsl120],
         [Channel::Zero, Channel::Zero, Channel::Zero, Channel::R]
     );
+    assert!(shadowcheck_oracle::contradictions::touching(&c)
+        .iter()
+        .any(|x| x.id == "compat-float-alpha"));
     c.sampler.depth_texture_mode = Some(DepthTextureMode::Luminance);
     assert_eq!(
         eval(&c).expect.layout[&ApiPath::Glsl130],
