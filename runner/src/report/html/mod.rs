@@ -1,2 +1,407 @@
-//! The self-contained HTML report (`shadowcheck report`): summary per backend, cross-driver
-//! matrix, per-cell details, and SVG pictures (heatmaps, acceptance plots). Being built.
+//! The self-contained HTML report written by `shadowcheck report RESULTS... -o DIR`.
+//!
+//! One file, `DIR/index.html`, with everything inline (style, a few lines of script, SVG
+//! pictures): it loads nothing, so it can be attached to a bug or committed. It shows:
+//! - a summary per backend (final statuses, as the runner counts them);
+//! - the cross-driver [`matrix`]: rows spec × compare func × filter × format, one column per
+//!   backend, cells pass / warn / fail linking to the dumps of their cases (capped per cell);
+//! - [`pictures`]: per compare func and backend, a Dt × Dref heatmap of single-texel lookups
+//!   (observed against expected, mismatches outlined) and, for filtered / mipmapped lookups, a
+//!   plot of each observed r against its acceptance intervals.
+//!
+//! Inputs are read by [`load`]; the heatmaps place every test with the oracle's footprint of its
+//! fixture case ([`geometry`]).
+
+pub mod geometry;
+pub mod load;
+pub mod matrix;
+pub mod page;
+pub mod pictures;
+
+use crate::events::TestResult;
+use geometry::Geometry;
+use load::ReportInput;
+use matrix::{DetailCaps, Kind, Matrix};
+use page::esc;
+use pictures::{HeatPoint, PlotItem};
+use shadowcheck_model::{Channel, Profile};
+use std::collections::BTreeSet;
+use std::fmt::Write as _;
+
+/// The name of the page written into the output directory.
+pub const INDEX: &str = "index.html";
+
+/// What to show and how much.
+#[derive(Debug, Clone)]
+pub struct Options {
+    pub title: String,
+    pub details: DetailCaps,
+    /// Tests drawn per acceptance plot (every warning / failure first, then an even sample).
+    pub plot_points: usize,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            title: "shadowcheck report".into(),
+            details: DetailCaps {
+                per_cell: 50,
+                total: 4000,
+            },
+            plot_points: 80,
+        }
+    }
+}
+
+/// The observed r: the first channel the API path's layout (`r,-,-,-`, `0,0,0,r`, ...) calls r.
+/// The layout comes from the record's expected summary (Warn / Fail) or the fixture's expectation.
+pub fn observed_r(r: &TestResult, geo: &Geometry) -> Option<f64> {
+    let obs = r.observed.as_ref()?;
+    let idx = match (
+        &r.expected,
+        geo.expectation(r).and_then(|e| e.layout.get(&r.api)),
+    ) {
+        (Some(e), _) => e.layout.split(',').position(|c| c.trim() == "r")?,
+        (None, Some(layout)) => layout.iter().position(|c| *c == Channel::R)?,
+        (None, None) => 0,
+    };
+    obs.0.get(idx).copied()
+}
+
+/// `s` cut to `n` characters (with an ellipsis) for picture titles.
+fn short(s: &str, n: usize) -> String {
+    if s.chars().count() <= n {
+        s.to_string()
+    } else {
+        s.chars()
+            .take(n.saturating_sub(1))
+            .chain(std::iter::once('…'))
+            .collect()
+    }
+}
+
+/// Lookups whose result is a filtered or mipmapped value (anything but NEAREST / NEAREST).
+pub fn is_filtered(r: &TestResult) -> bool {
+    r.tags.filter != "nearest/nearest"
+}
+
+/// Picks at most `cap` items: every warning / failure first (up to the cap), then passes evenly
+/// spaced; the result is ordered by expected value, then name, so the plot reads as a staircase.
+fn select_plot(mut items: Vec<PlotItem>, cap: usize) -> (Vec<PlotItem>, usize) {
+    let total = items.len();
+    if total > cap {
+        let (mut bad, good): (Vec<PlotItem>, Vec<PlotItem>) =
+            items.into_iter().partition(|i| i.kind >= Kind::Warn);
+        bad.truncate(cap);
+        let room = cap - bad.len();
+        if room > 0 && !good.is_empty() {
+            let stride = good.len() as f64 / room as f64;
+            let mut k = 0.0f64;
+            let mut picked = Vec::with_capacity(room);
+            while picked.len() < room && (k as usize) < good.len() {
+                picked.push(good[k as usize].clone());
+                k += stride.max(1.0);
+            }
+            bad.extend(picked);
+        }
+        items = bad;
+    }
+    let key = |i: &PlotItem| {
+        i.spec_value
+            .or_else(|| i.lenient.first().map(|&(a, b)| (a + b) / 2.0))
+            .unwrap_or(f64::NAN)
+    };
+    items.sort_by(|a, b| key(a).total_cmp(&key(b)).then_with(|| a.test.cmp(&b.test)));
+    (items, total)
+}
+
+fn plot_item(r: &TestResult, geo: &Geometry) -> Option<PlotItem> {
+    let (strict, lenient, spec_value) = match (&r.expected, geo.expectation(r)) {
+        (Some(e), _) => (
+            pictures::parse_acceptance(&e.strict)?,
+            pictures::parse_acceptance(&e.lenient)?,
+            e.spec_value,
+        ),
+        (None, Some(e)) => {
+            let get = |p| {
+                e.accept
+                    .get(&p)
+                    .map(|a| a.0.iter().map(|i| (i.lo, i.hi)).collect::<Vec<_>>())
+            };
+            (get(Profile::Strict)?, get(Profile::Lenient)?, e.spec_value)
+        }
+        (None, None) => return None,
+    };
+    Some(PlotItem {
+        test: r.test.clone(),
+        kind: Kind::of(r.outcome),
+        observed: observed_r(r, geo),
+        strict,
+        lenient,
+        spec_value,
+    })
+}
+
+/// The pictures section: per compare func, the heatmaps of every backend, then their plots.
+fn render_pictures(input: &ReportInput, geo: &Geometry, opts: &Options, out: &mut String) {
+    let funcs: BTreeSet<&str> = input.results.iter().map(|r| r.tags.func.as_str()).collect();
+    let mut drew = 0;
+    for func in funcs {
+        let mut maps = String::new();
+        let mut plots = String::new();
+        for b in &input.backends {
+            let mine: Vec<&TestResult> = input
+                .results
+                .iter()
+                .filter(|r| {
+                    r.backend == *b
+                        && r.tags.func == func
+                        && r.outcome != crate::verdict::Outcome::Skip
+                })
+                .collect();
+            let points: Vec<HeatPoint> = mine
+                .iter()
+                .filter_map(|r| {
+                    let (dt, dref) = geo.point(r)?;
+                    Some(HeatPoint {
+                        dt,
+                        dref,
+                        kind: Kind::of(r.outcome),
+                        observed: observed_r(r, geo),
+                        test: r.test.clone(),
+                    })
+                })
+                .collect();
+            if !points.is_empty() {
+                let bad = points.iter().filter(|p| p.kind >= Kind::Warn).count();
+                maps.push_str(&pictures::heatmap(
+                    &format!("{} — {} tests, {bad} off", short(b, 24), points.len()),
+                    &points,
+                ));
+            }
+            let items: Vec<PlotItem> = mine
+                .iter()
+                .filter(|r| is_filtered(r))
+                .filter_map(|r| plot_item(r, geo))
+                .collect();
+            if !items.is_empty() {
+                let (sel, total) = select_plot(items, opts.plot_points);
+                let bad = sel.iter().filter(|i| i.kind >= Kind::Warn).count();
+                let caption = if sel.len() < total {
+                    format!("{} of {total} filtered/mipmap tests: every warn/fail first ({bad}), then an even sample; by expected value", sel.len())
+                } else {
+                    format!(
+                        "all {total} filtered/mipmap tests ({bad} warn/fail), by expected value"
+                    )
+                };
+                plots.push_str(&pictures::plot(
+                    &format!("{} — filtered / mipmap", short(b, 60)),
+                    &sel,
+                    &caption,
+                ));
+            }
+        }
+        if maps.is_empty() && plots.is_empty() {
+            continue;
+        }
+        drew += 1;
+        let _ = writeln!(out, "<h3 id=\"func-{0}\">func {0}</h3>", esc(func));
+        if !maps.is_empty() {
+            let _ = writeln!(out, "<div class=\"pics\">{maps}</div>");
+        }
+        if !plots.is_empty() {
+            let _ = writeln!(out, "<div class=\"pics\">{plots}</div>");
+        }
+    }
+    if drew == 0 {
+        out.push_str("<p>No test with an observation to draw.</p>\n");
+    }
+}
+
+/// The whole page.
+pub fn render(input: &ReportInput, geo: &Geometry, opts: &Options) -> String {
+    let mut o = String::with_capacity(1 << 20);
+    let _ = write!(
+        o,
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{}</title>\
+         <meta name=\"viewport\" content=\"width=device-width\"><style>{}</style></head><body>\n",
+        esc(&opts.title),
+        page::STYLE
+    );
+    let _ = writeln!(o, "<h1>{}</h1>", esc(&opts.title));
+    let _ = writeln!(
+        o,
+        "<p class=\"note\">shadowcheck {} · {} tests on {} backends · from {}</p>",
+        env!("CARGO_PKG_VERSION"),
+        input.results.len(),
+        input.backends.len(),
+        esc(&input.sources.join(", "))
+    );
+    o.push_str("<nav><a href=\"#s-summary\">Summary</a><a href=\"#s-matrix\">Matrix</a><a href=\"#s-pictures\">Pictures</a><a href=\"#s-details\">Details</a></nav>\n");
+
+    o.push_str("<h2 id=\"s-summary\">Summary per backend</h2>\n");
+    page::summary(&input.backends, &input.results, &mut o);
+    if input.replaced > 0 {
+        let _ = writeln!(o, "<p class=\"note\">{} results appeared in several inputs with different records; the last input's record is shown.</p>", input.replaced);
+    }
+    if !input.load_errors.is_empty() {
+        let _ = writeln!(o, "<h3>Load errors ({})</h3><ul>", input.load_errors.len());
+        for e in input.load_errors.iter().take(50) {
+            let _ = writeln!(
+                o,
+                "<li>{}{}: {}</li>",
+                esc(&e.file),
+                e.case
+                    .as_deref()
+                    .map(|c| format!(" [{}]", esc(c)))
+                    .unwrap_or_default(),
+                esc(&e.message)
+            );
+        }
+        o.push_str("</ul>\n");
+    }
+
+    let m = Matrix::build(&input.backends, &input.results);
+    o.push_str("<h2 id=\"s-matrix\">Cross-driver matrix</h2>\n");
+    matrix::render(&m, &mut o);
+
+    o.push_str("<h2 id=\"s-pictures\">Pictures</h2>\n");
+    o.push_str(
+        "<p class=\"note legend\">Heatmaps: single-texel lookups by stored texel Dt (x) and reference Dref (y), 0.05 bins; \
+         matching bins shaded by observed r<span style=\"background:#e8f0fe\"></span>0<span style=\"background:#183c8c\"></span>1 \
+         <span style=\"background:#f0a020\"></span>warn (lenient only)<span style=\"background:#d62728\"></span>mismatch (outlined); \
+         dashed line: Dref = Dt. Plots: filtered / mipmapped lookups, lenient interval<span style=\"background:#c9d3e3\"></span>\
+         strict interval<span style=\"background:#6b7fa8\"></span>observed r as a dot (▲▼ off the axis). Hover for values.</p>\n",
+    );
+    if geo.fixtures.is_empty() {
+        o.push_str("<p class=\"note\">No fixture files were found (give --fixtures): the heatmaps place only the tests whose records carry a footprint (warnings and failures).</p>\n");
+    } else if geo.missing > 0 {
+        let _ = writeln!(o, "<p class=\"note\">{} cases of the results are not in the fixtures {}; they are placed only when their record carries a footprint.</p>", geo.missing, esc(&geo.fixtures.join(", ")));
+    }
+    render_pictures(input, geo, opts, &mut o);
+
+    o.push_str("<h2 id=\"s-details\">Details</h2>\n");
+    let _ = writeln!(
+        o,
+        "<p class=\"note\">Every warning and failure of a cell, at most {} per cell and {} in all: expected value and acceptance per profile, observed RGBA, footprint, and the command that re-runs the case.</p>",
+        opts.details.per_cell, opts.details.total
+    );
+    matrix::render_details(&m, &input.results, opts.details, &mut o);
+    let _ = write!(o, "<script>{}</script>\n</body></html>\n", page::SCRIPT);
+    o
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::events::{Rgba, Tags};
+    use crate::verdict::{ExpectedSummary, Outcome, Status};
+    use shadowcheck_model::ApiPath;
+
+    fn result(backend: &str, id: &str, outcome: Outcome, r: f64) -> TestResult {
+        TestResult {
+            backend: backend.into(),
+            test: format!("{id}@core"),
+            case_id: id.into(),
+            api: ApiPath::GlslCore,
+            status: Status::Plain(outcome),
+            outcome,
+            reason: None,
+            duration: 0.0,
+            tags: Tags {
+                spec: "gl46".into(),
+                target: "2d".into(),
+                format: "d16".into(),
+                func: "lequal".into(),
+                filter: "linear/linear".into(),
+            },
+            observed: Some(Rgba([r, 0.0, 0.0, 1.0])),
+            expected: Some(ExpectedSummary {
+                spec_value: Some(0.5),
+                strict: "{0.5}".into(),
+                lenient: "[0.25, 0.75]".into(),
+                layout: "r,-,-,-".into(),
+                profile: Profile::Strict,
+                citations: vec![],
+            }),
+            footprint: None,
+            rerun: None,
+            fixtures: None,
+        }
+    }
+
+    #[test]
+    fn page_has_matrix_cells_linking_to_capped_details() {
+        let mut results: Vec<TestResult> = (0..5)
+            .map(|i| result("mock:a", &format!("c{i}"), Outcome::Fail, -1.0))
+            .collect();
+        results.push(result("soft", "c0", Outcome::Pass, 0.5));
+        let input = ReportInput {
+            backends: vec!["soft".into(), "mock:a".into()],
+            results,
+            ..ReportInput::default()
+        };
+        let opts = Options {
+            details: DetailCaps {
+                per_cell: 2,
+                total: 100,
+            },
+            ..Options::default()
+        };
+        let html = render(&input, &Geometry::default(), &opts);
+        assert!(html.contains("<table id=\"matrix\""));
+        assert!(
+            html.contains("<a href=\"#d0-1\">5 fail</a>"),
+            "the failing cell links to its details"
+        );
+        assert!(html.contains("id=\"d0-1\""));
+        assert_eq!(
+            html.matches("<pre class=\"dump").count(),
+            2,
+            "capped at 2 per cell"
+        );
+        assert!(html.contains("showing 2 of 5 tests"));
+        assert!(
+            html.contains("shadowcheck run --backend mock:a"),
+            "re-run command in the dump"
+        );
+        assert!(html.contains("<svg"), "the acceptance plots are drawn");
+        assert!(
+            !html.contains("http://")
+                || html.matches("http://").count()
+                    == html.matches("xmlns=\"http://www.w3.org/2000/svg\"").count(),
+            "no external reference except the SVG namespace"
+        );
+    }
+
+    #[test]
+    fn plot_selection_keeps_every_failure_and_samples_passes() {
+        let mut items: Vec<PlotItem> = (0..100)
+            .map(|i| {
+                plot_item(
+                    &result("b", &format!("p{i:03}"), Outcome::Pass, 0.5),
+                    &Geometry::default(),
+                )
+                .unwrap()
+            })
+            .collect();
+        items.extend((0..3).map(|i| {
+            plot_item(
+                &result("b", &format!("f{i}"), Outcome::Fail, 0.0),
+                &Geometry::default(),
+            )
+            .unwrap()
+        }));
+        let (sel, total) = select_plot(items, 10);
+        assert_eq!((sel.len(), total), (10, 103));
+        assert_eq!(sel.iter().filter(|i| i.kind == Kind::Fail).count(), 3);
+    }
+
+    #[test]
+    fn observed_r_follows_the_layout() {
+        let mut r = result("b", "c", Outcome::Pass, 0.5);
+        r.observed = Some(Rgba([0.0, 0.0, 0.0, 0.75]));
+        r.expected.as_mut().unwrap().layout = "0,0,0,r".into();
+        assert_eq!(observed_r(&r, &Geometry::default()), Some(0.75));
+    }
+}
