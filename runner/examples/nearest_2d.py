@@ -38,16 +38,16 @@ def sample(case):
     tex, smp, lk = case["texture"], case["sampler"], case["lookup"]
     if smp["compare_mode"] != "compare" or smp.get("depth_stencil_mode", "depth") != "depth":
         return None, "only depth comparison is implemented"
+    if smp["min_filter"] not in ("nearest", "linear"):  # mipmaps bring completeness rules (§8.17)
+        return None, "mipmap filters are not implemented"
     lam = f32(lk.get("lod", 0)) + f32(smp.get("lod_bias", 0)) + f32(lk.get("bias", 0))
     lam = min(max(lam, smp.get("min_lod", -1000.0)), smp.get("max_lod", 1000.0))
-    flt = smp["min_filter"] if lam > 0 else smp["mag_filter"]
-    if flt not in ("nearest", "linear"):
-        return None, "mipmapped minification is not implemented"
+    flt = smp["min_filter"] if lam > 0 else smp["mag_filter"]  # §8.14: c = 0 without mipmaps
     lvl = tex["levels"][0]
     w, h = lvl["width"], lvl["height"]
     fmt = tex["format"]
     raw = lvl["depth"].get("unorm") or lvl["depth"].get("float")
-    depth = [c / (2 ** BITS[fmt] - 1) for c in raw] if fmt in BITS else [min(max(v, 0.0), 1.0) for v in raw]
+    depth = [c / (2 ** BITS[fmt] - 1) for c in raw] if fmt in BITS else [min(max(f32(v), 0.0), 1.0) for v in raw]
     s, t, q = (f32(float(x)) for x in (lk["coord"][0], lk["coord"][1], lk["coord"][3]))
     dref = f32(float(lk["dref"]))
     if lk.get("projective"):
