@@ -5,6 +5,7 @@
 //! The library never prints; reporters own every byte of output.
 
 pub mod backend;
+pub mod bench;
 pub mod baseline;
 pub mod events;
 pub mod gl;
