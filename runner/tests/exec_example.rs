@@ -85,3 +85,40 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
     let r = run(&["-b", &fixed, "--fixtures", &fx, "--out", out4.to_str().unwrap()]);
     assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
 }
+
+#[test]
+fn the_example_passes_every_default_fixture_it_claims() {
+    // Over the committed fixtures (cases/fixtures), the correct script passes every gl46 2D case
+    // it runs and skips the rest with a reason; swapped, it fails LEQUAL/GEQUAL cases only.
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+    assert!(root.join("cases/fixtures").is_dir(), "cases/fixtures is missing");
+    let dir = tmpdir("exec-example-default");
+    let out = dir.join("fixed");
+    let r = Run::of(
+        bin()
+            .current_dir(root)
+            .args(["run", "-b", &format!("exec:python3 {}", example()), "--cases", "^gl46/2d/", "--out", out.to_str().unwrap()])
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    let rows = results(&out);
+    let passed = rows.iter().filter(|r| r.1 == "Pass").count();
+    assert!(passed > 100, "only {passed} passes");
+    assert!(rows.iter().all(|r| r.1 == "Pass" || r.1 == "Skip"));
+
+    let out = dir.join("swapped");
+    let r = Run::of(
+        bin()
+            .current_dir(root)
+            .args(["run", "-b", &format!("exec:python3 {} --swap-lequal-gequal", example()), "--cases", "^gl46/2d/"])
+            .args(["--no-rerun", "--out", out.to_str().unwrap()])
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(r.code, 100);
+    let rows = results(&out);
+    let failed: Vec<_> = rows.iter().filter(|r| r.1 == "Fail" || r.1 == "Warn").collect();
+    assert!(!failed.is_empty());
+    assert!(failed.iter().all(|r| r.0.contains("/lequal/") || r.0.contains("/gequal/")), "{failed:?}");
+}
