@@ -51,7 +51,13 @@ pub fn f32r(v: f64) -> f64 {
 pub fn f32_next_up(v: f64) -> f64 {
     let f = v as f32;
     let bits = f.to_bits();
-    let next = if f == 0.0 { f32::from_bits(1) } else if f > 0.0 { f32::from_bits(bits + 1) } else { f32::from_bits(bits - 1) };
+    let next = if f == 0.0 {
+        f32::from_bits(1)
+    } else if f > 0.0 {
+        f32::from_bits(bits + 1)
+    } else {
+        f32::from_bits(bits - 1)
+    };
     next as f64
 }
 pub fn f32_next_down(v: f64) -> f64 {
@@ -99,11 +105,23 @@ pub fn dims(target: Target, size: u32, n: u32) -> (u32, u32, u32) {
 /// A level of `format` from nominal values (stencil filled with a fixed pattern for
 /// DEPTH_STENCIL formats, so that stencil lookups have known values).
 pub fn level(format: Format, w: u32, h: u32, layers: u32, vals: &[f64]) -> Level {
-    Level { width: w, height: h, layers, depth: texels(format, vals), stencil: stencil_for(format, vals.len()) }
+    Level {
+        width: w,
+        height: h,
+        layers,
+        depth: texels(format, vals),
+        stencil: stencil_for(format, vals.len()),
+    }
 }
 
 pub fn level_exact(format: Format, w: u32, h: u32, layers: u32, vals: &[Stored]) -> Level {
-    Level { width: w, height: h, layers, depth: texels_exact(format, vals), stencil: stencil_for(format, vals.len()) }
+    Level {
+        width: w,
+        height: h,
+        layers,
+        depth: texels_exact(format, vals),
+        stencil: stencil_for(format, vals.len()),
+    }
 }
 
 /// Stencil pattern: texel i holds (37 i + 5) mod 256.
@@ -181,7 +199,11 @@ pub fn num(v: f64) -> String {
     if v.is_nan() {
         "nan".into()
     } else if v.is_infinite() {
-        if v > 0.0 { "inf".into() } else { "-inf".into() }
+        if v > 0.0 {
+            "inf".into()
+        } else {
+            "-inf".into()
+        }
     } else if v != 0.0 && (v.abs() >= 1e6 || v.abs() < 1e-4) {
         format!("{v:e}")
     } else {
@@ -220,7 +242,10 @@ mod tests {
         // GL 4.6 Table 8.19: the major axis is the largest magnitude component.
         for face in 0..6 {
             let d = cube_dir(face, 0.25, 0.75);
-            let (axis, _) = d.iter().enumerate().fold((0, 0.0f64), |acc, (i, v)| if v.abs() > acc.1 { (i, v.abs()) } else { acc });
+            let (axis, _) = d
+                .iter()
+                .enumerate()
+                .fold((0, 0.0f64), |acc, (i, v)| if v.abs() > acc.1 { (i, v.abs()) } else { acc });
             let neg = d[axis] < 0.0;
             assert_eq!(axis as u32 * 2 + neg as u32, face, "{d:?}");
         }

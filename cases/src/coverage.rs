@@ -27,7 +27,13 @@ impl Coverage {
     pub fn of<'a>(cases: impl IntoIterator<Item = &'a Case>) -> Coverage {
         let mut cov = Coverage::default();
         for c in cases {
-            let key = (c.spec, c.texture.target, c.texture.format, c.sampler.min_filter, func_key(&c.sampler));
+            let key = (
+                c.spec,
+                c.texture.target,
+                c.texture.format,
+                c.sampler.min_filter,
+                func_key(&c.sampler),
+            );
             *cov.counts.entry(key).or_default() += 1;
             cov.total += 1;
         }
@@ -81,7 +87,13 @@ impl Coverage {
                         let allowed = specs::filter_allowed(t, fi);
                         let cells: Vec<String> = funcs
                             .iter()
-                            .map(|f| if allowed { self.count(&(d.spec, t, fo, fi, f.clone())).to_string() } else { "-".into() })
+                            .map(|f| {
+                                if allowed {
+                                    self.count(&(d.spec, t, fo, fi, f.clone())).to_string()
+                                } else {
+                                    "-".into()
+                                }
+                            })
                             .collect();
                         if !allowed {
                             continue;

@@ -31,7 +31,12 @@ pub struct Grid<P> {
 impl<P: Clone> Grid<P> {
     /// Starts a grid from seed items (usually one struct holding default values).
     pub fn new(name: impl Into<String>, seed: impl IntoIterator<Item = P>) -> Grid<P> {
-        Grid { name: name.into(), items: seed.into_iter().collect(), dims: Vec::new(), pruned: Vec::new() }
+        Grid {
+            name: name.into(),
+            items: seed.into_iter().collect(),
+            dims: Vec::new(),
+            pruned: Vec::new(),
+        }
     }
 
     /// Crosses every item with every value of a dimension; `set` writes the value into the item.

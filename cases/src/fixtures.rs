@@ -58,7 +58,13 @@ pub enum FixtureError {
     Write { file: PathBuf, source: std::io::Error },
     /// The text is not JSON (truncated file, `NaN` literal, stray comma...).
     #[error("{}: {at}: invalid JSON at line {line} column {column}: {msg}", file.display())]
-    Syntax { file: PathBuf, at: CaseRef, line: usize, column: usize, msg: String },
+    Syntax {
+        file: PathBuf,
+        at: CaseRef,
+        line: usize,
+        column: usize,
+        msg: String,
+    },
     /// The top-level object is not a fixture file (missing or mistyped header field).
     #[error("{}: not a shadowcheck fixture file: field `{field}`: {msg}", file.display())]
     NotFixture { file: PathBuf, field: String, msg: String },
@@ -66,7 +72,12 @@ pub enum FixtureError {
     Version { file: PathBuf, found: u32, supported: u32 },
     /// One case does not deserialize or fails structural validation.
     #[error("{}: {at}: field `{field}`: {msg}", file.display())]
-    Case { file: PathBuf, at: CaseRef, field: String, msg: String },
+    Case {
+        file: PathBuf,
+        at: CaseRef,
+        field: String,
+        msg: String,
+    },
     #[error("{}: {at}: duplicate case id (first at case #{first})", file.display())]
     DuplicateId { file: PathBuf, at: CaseRef, first: usize },
     #[error("{}: no fixture files (*.json) found", path.display())]
@@ -142,7 +153,11 @@ pub fn parse_str_lenient(file: &Path, text: &str) -> Result<(FixtureFile, Vec<Fi
 fn parse_inner(file: &Path, text: &str, stop_at_first: bool) -> Result<(FixtureFile, Vec<FixtureError>), FixtureError> {
     let raw: RawFile = header_or_error(file, text)?;
     if raw.schema_version != SCHEMA_VERSION {
-        return Err(FixtureError::Version { file: file.to_path_buf(), found: raw.schema_version, supported: SCHEMA_VERSION });
+        return Err(FixtureError::Version {
+            file: file.to_path_buf(),
+            found: raw.schema_version,
+            supported: SCHEMA_VERSION,
+        });
     }
     let mut errors = Vec::new();
     let mut cases = Vec::with_capacity(raw.cases.len());
@@ -152,7 +167,11 @@ fn parse_inner(file: &Path, text: &str, stop_at_first: bool) -> Result<(FixtureF
         let at = CaseRef { index: Some(index), id };
         let result = case_from_value(file, &at, value).and_then(|case| {
             if let Some(&first) = seen.get(&case.id) {
-                return Err(FixtureError::DuplicateId { file: file.to_path_buf(), at: at.clone(), first });
+                return Err(FixtureError::DuplicateId {
+                    file: file.to_path_buf(),
+                    at: at.clone(),
+                    first,
+                });
             }
             seen.insert(case.id.clone(), index);
             Ok(case)
@@ -167,7 +186,13 @@ fn parse_inner(file: &Path, text: &str, stop_at_first: bool) -> Result<(FixtureF
             }
         }
     }
-    let f = FixtureFile { schema_version: raw.schema_version, generator: raw.generator, grid: raw.grid, seed: raw.seed, cases };
+    let f = FixtureFile {
+        schema_version: raw.schema_version,
+        generator: raw.generator,
+        grid: raw.grid,
+        seed: raw.seed,
+        cases,
+    };
     Ok((f, errors))
 }
 
@@ -175,9 +200,15 @@ fn header_or_error(file: &Path, text: &str) -> Result<RawFile, FixtureError> {
     let mut de = serde_json::Deserializer::from_str(text);
     let raw: RawFile = serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
-        json_error(file, text, if path == "." { "(top level)".to_string() } else { path }, e.into_inner())
+        json_error(
+            file,
+            text,
+            if path == "." { "(top level)".to_string() } else { path },
+            e.into_inner(),
+        )
     })?;
-    de.end().map_err(|e| json_error(file, text, "(after the top-level object)".into(), e))?;
+    de.end()
+        .map_err(|e| json_error(file, text, "(after the top-level object)".into(), e))?;
     Ok(raw)
 }
 
@@ -192,7 +223,11 @@ fn json_error(file: &Path, text: &str, field: String, inner: serde_json::Error) 
             column: inner.column(),
             msg: strip_position(&inner.to_string()),
         },
-        serde_json::error::Category::Data => FixtureError::NotFixture { file: file.to_path_buf(), field, msg: strip_position(&inner.to_string()) },
+        serde_json::error::Category::Data => FixtureError::NotFixture {
+            file: file.to_path_buf(),
+            field,
+            msg: strip_position(&inner.to_string()),
+        },
     }
 }
 
@@ -201,12 +236,26 @@ fn case_from_value(file: &Path, at: &CaseRef, value: serde_json::Value) -> Resul
     let case: Case = serde_path_to_error::deserialize(value).map_err(|e| FixtureError::Case {
         file: file.to_path_buf(),
         at: at.clone(),
-        field: if e.path().to_string() == "." { "(case)".to_string() } else { e.path().to_string() },
+        field: if e.path().to_string() == "." {
+            "(case)".to_string()
+        } else {
+            e.path().to_string()
+        },
         msg: strip_position(&e.inner().to_string()),
     })?;
     validate(&case).map_err(|e| match e {
-        ModelError::Invalid { field, msg, .. } => FixtureError::Case { file: file.to_path_buf(), at: at.clone(), field, msg },
-        other => FixtureError::Case { file: file.to_path_buf(), at: at.clone(), field: "(case)".into(), msg: other.to_string() },
+        ModelError::Invalid { field, msg, .. } => FixtureError::Case {
+            file: file.to_path_buf(),
+            at: at.clone(),
+            field,
+            msg,
+        },
+        other => FixtureError::Case {
+            file: file.to_path_buf(),
+            at: at.clone(),
+            field: "(case)".into(),
+            msg: other.to_string(),
+        },
     })?;
     Ok(case)
 }
@@ -224,14 +273,11 @@ fn strip_position(msg: &str) -> String {
 /// Best effort on broken text: a string containing braces is skipped correctly, anything else may
 /// leave the id unknown.
 fn locate_case(text: &str, line: usize, column: usize) -> CaseRef {
-    let offset = text
-        .split_inclusive('\n')
-        .take(line.saturating_sub(1))
-        .map(str::len)
-        .sum::<usize>()
-        + column.saturating_sub(1);
+    let offset = text.split_inclusive('\n').take(line.saturating_sub(1)).map(str::len).sum::<usize>() + column.saturating_sub(1);
     let upto = &text[..floor_char_boundary(text, offset.min(text.len()))];
-    let Some(start) = upto.find("\"cases\"") else { return CaseRef::default() };
+    let Some(start) = upto.find("\"cases\"") else {
+        return CaseRef::default();
+    };
     let mut depth = 0usize;
     let mut in_str = false;
     let mut escaped = false;
@@ -277,20 +323,29 @@ fn floor_char_boundary(s: &str, mut i: usize) -> usize {
 
 /// Loads one fixture file. Strict: the first error aborts.
 pub fn load_file(path: &Path) -> Result<FixtureFile, FixtureError> {
-    let text = std::fs::read_to_string(path).map_err(|source| FixtureError::Read { file: path.to_path_buf(), source })?;
+    let text = std::fs::read_to_string(path).map_err(|source| FixtureError::Read {
+        file: path.to_path_buf(),
+        source,
+    })?;
     parse_str(path, &text)
 }
 
 /// Loads one fixture file, dropping the cases that fail and reporting them. `Err` only when the
 /// file itself cannot be read or is not a fixture file.
 pub fn load_file_lenient(path: &Path) -> Result<(FixtureFile, Vec<FixtureError>), FixtureError> {
-    let text = std::fs::read_to_string(path).map_err(|source| FixtureError::Read { file: path.to_path_buf(), source })?;
+    let text = std::fs::read_to_string(path).map_err(|source| FixtureError::Read {
+        file: path.to_path_buf(),
+        source,
+    })?;
     parse_str_lenient(path, &text)
 }
 
 /// The `*.json` files at `path`: the file itself, or a directory searched recursively, sorted.
 pub fn fixture_paths(path: &Path) -> Result<Vec<PathBuf>, FixtureError> {
-    let meta = std::fs::metadata(path).map_err(|source| FixtureError::Read { file: path.to_path_buf(), source })?;
+    let meta = std::fs::metadata(path).map_err(|source| FixtureError::Read {
+        file: path.to_path_buf(),
+        source,
+    })?;
     if !meta.is_dir() {
         return Ok(vec![path.to_path_buf()]);
     }
@@ -328,14 +383,26 @@ pub fn write_dir(dir: &Path, files: &[(String, FixtureFile)]) -> Result<(), Fixt
     let mut wanted = BTreeSet::new();
     for (rel, file) in files {
         if rel.is_empty() || rel.starts_with('/') || rel.split('/').any(|c| c == ".." || c.is_empty()) {
-            return Err(FixtureError::BadRelativePath { dir: dir.to_path_buf(), rel: rel.clone() });
+            return Err(FixtureError::BadRelativePath {
+                dir: dir.to_path_buf(),
+                rel: rel.clone(),
+            });
         }
         let path = dir.join(rel);
         if let Some(parent) = path.parent() {
-            std::fs::create_dir_all(parent).map_err(|source| FixtureError::Write { file: parent.to_path_buf(), source })?;
+            std::fs::create_dir_all(parent).map_err(|source| FixtureError::Write {
+                file: parent.to_path_buf(),
+                source,
+            })?;
         }
-        let text = to_string(file).map_err(|e| FixtureError::Write { file: path.clone(), source: std::io::Error::other(e) })?;
-        std::fs::write(&path, text).map_err(|source| FixtureError::Write { file: path.clone(), source })?;
+        let text = to_string(file).map_err(|e| FixtureError::Write {
+            file: path.clone(),
+            source: std::io::Error::other(e),
+        })?;
+        std::fs::write(&path, text).map_err(|source| FixtureError::Write {
+            file: path.clone(),
+            source,
+        })?;
         wanted.insert(path);
     }
     if let Ok(existing) = fixture_paths(dir) {

@@ -41,7 +41,11 @@ fn default_grid_regenerates_byte_for_byte() {
             problems.push(format!("{rel}: not produced by the generator (stale)"));
         }
     }
-    assert!(problems.is_empty(), "cases/fixtures is out of date; run `{FIX}`:\n{}", problems.join("\n"));
+    assert!(
+        problems.is_empty(),
+        "cases/fixtures is out of date; run `{FIX}`:\n{}",
+        problems.join("\n")
+    );
 }
 
 #[test]
@@ -53,10 +57,18 @@ fn every_committed_fixture_matches_the_schema_and_loads() {
     for p in &paths {
         let text = std::fs::read_to_string(p).unwrap();
         let value: serde_json::Value = serde_json::from_str(&text).unwrap();
-        let errors: Vec<String> = validator.iter_errors(&value).take(5).map(|e| format!("{} at {}", e, e.instance_path())).collect();
+        let errors: Vec<String> = validator
+            .iter_errors(&value)
+            .take(5)
+            .map(|e| format!("{} at {}", e, e.instance_path()))
+            .collect();
         assert!(errors.is_empty(), "{}: {}", p.display(), errors.join("\n"));
         let f = fixtures::load_file(p).unwrap();
-        assert!(f.cases.iter().all(|c| c.expect.is_some()), "{}: a case without expectation", p.display());
+        assert!(
+            f.cases.iter().all(|c| c.expect.is_some()),
+            "{}: a case without expectation",
+            p.display()
+        );
         cases += f.cases.len();
     }
     assert!((10_000..=40_000).contains(&cases), "{cases} cases");
@@ -64,7 +76,11 @@ fn every_committed_fixture_matches_the_schema_and_loads() {
 
 #[test]
 fn committed_size_is_within_budget() {
-    let total: u64 = fixtures::fixture_paths(&fixtures_dir()).unwrap().iter().map(|p| std::fs::metadata(p).unwrap().len()).sum();
+    let total: u64 = fixtures::fixture_paths(&fixtures_dir())
+        .unwrap()
+        .iter()
+        .map(|p| std::fs::metadata(p).unwrap().len())
+        .sum();
     assert!(total <= 20 * 1024 * 1024, "{total} bytes committed (budget 20 MiB)");
 }
 
@@ -79,7 +95,9 @@ fn schema_rejects_what_the_loader_rejects() {
         ("unknown enum", |v| v["cases"][0]["sampler"]["compare_func"] = "lequalish".into()),
         ("wrong type", |v| v["cases"][0]["texture"]["levels"][0]["width"] = "4".into()),
         ("absurd size", |v| v["cases"][0]["texture"]["levels"][0]["width"] = 100000.into()),
-        ("nan where a number is required", |v| v["cases"][0]["sampler"]["min_lod"] = "nan".into()),
+        ("nan where a number is required", |v| {
+            v["cases"][0]["sampler"]["min_lod"] = "nan".into()
+        }),
         ("unknown field", |v| v["cases"][0]["lookup"]["extra"] = 1.into()),
         ("wrong version", |v| v["schema_version"] = 2.into()),
     ];
@@ -99,7 +117,12 @@ fn schema_rejects_what_the_loader_rejects() {
 fn schema_enums_match_the_model() {
     let s = schema();
     let keys = |name: &str| -> Vec<String> {
-        s["$defs"][name]["enum"].as_array().unwrap_or_else(|| panic!("no enum {name}")).iter().map(|v| v.as_str().unwrap().to_string()).collect()
+        s["$defs"][name]["enum"]
+            .as_array()
+            .unwrap_or_else(|| panic!("no enum {name}"))
+            .iter()
+            .map(|v| v.as_str().unwrap().to_string())
+            .collect()
     };
     fn all<T: Copy>(v: &[T], key: fn(T) -> &'static str) -> Vec<String> {
         v.iter().map(|x| key(*x).to_string()).collect()
@@ -119,7 +142,11 @@ fn schema_enums_match_the_model() {
 }
 
 fn default_unfilled() -> Vec<Case> {
-    grids::unfilled("default", grids::DEFAULT_SEED).unwrap().into_iter().flat_map(|(_, f)| f.cases).collect()
+    grids::unfilled("default", grids::DEFAULT_SEED)
+        .unwrap()
+        .into_iter()
+        .flat_map(|(_, f)| f.cases)
+        .collect()
 }
 
 /// For every spec, every target x format x filter x func (and compare NONE) the spec allows has
@@ -129,14 +156,27 @@ fn default_covers_every_allowed_combination() {
     let cases = default_unfilled();
     let cov = Coverage::of(&cases);
     let missing = cov.missing();
-    assert!(missing.is_empty(), "{} empty cells, e.g. {:?}", missing.len(), &missing[..missing.len().min(10)]);
+    assert!(
+        missing.is_empty(),
+        "{} empty cells, e.g. {:?}",
+        missing.len(),
+        &missing[..missing.len().min(10)]
+    );
     // And nothing outside what the spec allows.
     for c in &cases {
         let d = specs::dims(c.spec);
         assert!(d.targets.contains(&c.texture.target), "{}", c.id);
         assert!(d.formats.contains(&c.texture.format), "{}", c.id);
-        assert!(c.sampler.compare_mode == CompareMode::None || d.funcs.contains(&c.sampler.compare_func), "{}", c.id);
-        assert!(d.wraps.contains(&c.sampler.wrap_s) || c.sampler.wrap_s == Wrap::ClampToEdge, "{}", c.id);
+        assert!(
+            c.sampler.compare_mode == CompareMode::None || d.funcs.contains(&c.sampler.compare_func),
+            "{}",
+            c.id
+        );
+        assert!(
+            d.wraps.contains(&c.sampler.wrap_s) || c.sampler.wrap_s == Wrap::ClampToEdge,
+            "{}",
+            c.id
+        );
         assert!(specs::filter_allowed(c.texture.target, c.sampler.min_filter), "{}", c.id);
     }
 }
@@ -154,7 +194,11 @@ fn readme_coverage_table_is_current() {
 
 #[test]
 fn smoke_has_one_of_everything_in_under_1000_cases() {
-    let smoke: Vec<Case> = grids::unfilled("smoke", 0).unwrap().into_iter().flat_map(|(_, f)| f.cases).collect();
+    let smoke: Vec<Case> = grids::unfilled("smoke", 0)
+        .unwrap()
+        .into_iter()
+        .flat_map(|(_, f)| f.cases)
+        .collect();
     assert!(smoke.len() < 1000, "{}", smoke.len());
     for d in specs::all() {
         let of = |f: &dyn Fn(&Case) -> bool| smoke.iter().any(|c| c.spec == d.spec && f(c));
@@ -168,7 +212,11 @@ fn smoke_has_one_of_everything_in_under_1000_cases() {
             assert!(of(&|c| c.sampler.min_filter == *fi), "{} {fi}", d.spec);
         }
         for fu in d.funcs {
-            assert!(of(&|c| c.sampler.compare_mode == CompareMode::Compare && c.sampler.compare_func == *fu), "{} {fu}", d.spec);
+            assert!(
+                of(&|c| c.sampler.compare_mode == CompareMode::Compare && c.sampler.compare_func == *fu),
+                "{} {fu}",
+                d.spec
+            );
         }
         for w in d.wraps {
             assert!(of(&|c| c.sampler.wrap_s == *w), "{} {w}", d.spec);
@@ -189,12 +237,20 @@ fn ids_are_readable_and_start_with_their_coordinates() {
 fn seed_changes_only_the_random_family() {
     let a = grids::unfilled("default", 0).unwrap();
     let b = grids::unfilled("default", 7).unwrap();
-    let ids = |f: &[(String, fixtures::FixtureFile)]| -> Vec<String> { f.iter().flat_map(|(_, f)| f.cases.iter().map(|c| c.id.clone())).filter(|id| !id.contains("/rand/")).collect() };
+    let ids = |f: &[(String, fixtures::FixtureFile)]| -> Vec<String> {
+        f.iter()
+            .flat_map(|(_, f)| f.cases.iter().map(|c| c.id.clone()))
+            .filter(|id| !id.contains("/rand/"))
+            .collect()
+    };
     assert!(ids(&a) == ids(&b), "seed changed ids outside the random family");
     // Compare as text: NaN references make `==` on cases false.
     let text = |f: &[(String, fixtures::FixtureFile)]| -> Vec<String> { f.iter().map(|(_, f)| fixtures::to_string(f).unwrap()).collect() };
     assert!(text(&a) != text(&b), "the seed changed nothing");
-    assert!(text(&grids::unfilled("default", 7).unwrap()) == text(&b), "same seed, different output");
+    assert!(
+        text(&grids::unfilled("default", 7).unwrap()) == text(&b),
+        "same seed, different output"
+    );
 }
 
 #[test]
@@ -214,7 +270,11 @@ fn smoke_generates_with_expectations_that_match_the_schema() {
     assert!(!files.is_empty());
     for (rel, f) in &files {
         let value: serde_json::Value = serde_json::from_str(&fixtures::to_string(f).unwrap()).unwrap();
-        let errors: Vec<String> = validator.iter_errors(&value).take(5).map(|e| format!("{} at {}", e, e.instance_path())).collect();
+        let errors: Vec<String> = validator
+            .iter_errors(&value)
+            .take(5)
+            .map(|e| format!("{} at {}", e, e.instance_path()))
+            .collect();
         assert!(errors.is_empty(), "{rel}: {}", errors.join("\n"));
         assert!(f.cases.iter().all(|c| c.expect.is_some()));
     }

@@ -59,7 +59,11 @@ fn layout_is_one_case_per_line_and_deterministic() {
     let f = sample();
     let a = fixtures::to_string(&f).unwrap();
     assert_eq!(a, fixtures::to_string(&f.clone()).unwrap());
-    assert!(a.starts_with("{\"schema_version\":1,\"generator\":\"shadowcheck-cases "), "{}", &a[..80]);
+    assert!(
+        a.starts_with("{\"schema_version\":1,\"generator\":\"shadowcheck-cases "),
+        "{}",
+        &a[..80]
+    );
     assert_eq!(a.lines().count(), f.cases.len() + 2);
     assert!(a.ends_with("\n]}\n"));
 }

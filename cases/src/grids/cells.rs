@@ -25,9 +25,22 @@ pub fn cells(d: &SpecDims) -> Grid<Cell> {
         .combine("target", d.targets.iter().copied(), |c, v| c.target = v)
         .combine("format", d.formats.iter().copied(), |c, v| c.format = v)
         .combine("filter", d.filters.iter().copied(), |c, v| c.filter = v)
-        .filter("rectangle textures take only NEAREST/LINEAR min filters (GL 4.6 §8.10, INVALID_ENUM)", |c| specs::filter_allowed(c.target, c.filter))
+        .filter(
+            "rectangle textures take only NEAREST/LINEAR min filters (GL 4.6 §8.10, INVALID_ENUM)",
+            |c| specs::filter_allowed(c.target, c.filter),
+        )
         .combine("mode", CompareMode::ALL.iter().copied(), |c, v| c.mode = v)
-        .combine_with("func", |c| if c.mode == CompareMode::None { vec![d.funcs[0]] } else { d.funcs.to_vec() }, |c, v| c.func = v)
+        .combine_with(
+            "func",
+            |c| {
+                if c.mode == CompareMode::None {
+                    vec![d.funcs[0]]
+                } else {
+                    d.funcs.to_vec()
+                }
+            },
+            |c, v| c.func = v,
+        )
 }
 
 /// The nominal pattern of the sampled image (4 texels: 2x2, or 4x1 for 1D targets).
@@ -77,7 +90,17 @@ pub fn pattern_texture(cell: &Cell) -> (Texture, u32, u32, At) {
     let sampled = build::image_offset(cell.target, w, h, layer as u32, face) / (w * h) as usize;
     let vals = fill(cell.target, w, h, layers, sampled, &PATTERN);
     let tex = texture(cell, vec![build::level(cell.format, w, h, layers, &vals)]);
-    (tex, w, h, At { s: 0.0, t: 0.0, layer, face })
+    (
+        tex,
+        w,
+        h,
+        At {
+            s: 0.0,
+            t: 0.0,
+            layer,
+            face,
+        },
+    )
 }
 
 /// A mip chain (1D and 2D 4 wide, array and cube targets 2 wide to keep fixtures small, down to 1) whose level i holds [`LEVELS`]\[i\] on the sampled
@@ -99,7 +122,15 @@ pub fn mip_texture(cell: &Cell) -> (Texture, At) {
         s /= 2;
         i += 1;
     }
-    (texture(cell, levels), At { s: 0.5, t: 0.5, layer, face })
+    (
+        texture(cell, levels),
+        At {
+            s: 0.5,
+            t: 0.5,
+            layer,
+            face,
+        },
+    )
 }
 
 /// The lookups of one cell.
@@ -112,7 +143,15 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
         let nominal = crate::build::nums(&PATTERN);
         if cell.filter == Filter::Nearest {
             // Texel 1 (value 0.4): 2D (x=1, y=0); 1D x=1.
-            let at = if one_d { At { s: 1.5 / 4.0, t: 0.0, ..base } } else { At { s: 0.75, t: 0.25, ..base } };
+            let at = if one_d {
+                At {
+                    s: 1.5 / 4.0,
+                    t: 0.0,
+                    ..base
+                }
+            } else {
+                At { s: 0.75, t: 0.25, ..base }
+            };
             let at_ref = build::f32r(build::stored_real(f, PATTERN[1]));
             let refs: Vec<(String, f64)> = if cell.mode == CompareMode::None {
                 vec![("read".into(), 0.5)]
@@ -127,11 +166,27 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
             }
         } else {
             // alpha = 0.25, beta = 0.5 from texel (0,0) (2D) or from texel 1 (1D).
-            let at = if one_d { At { s: 1.75 / 4.0, t: 0.0, ..base } } else { At { s: 0.375, t: 0.5, ..base } };
-            let refs: &[f64] = if cell.mode == CompareMode::None || light(cell.spec, f) { &[0.5] } else { &[0.3, 0.7] };
+            let at = if one_d {
+                At {
+                    s: 1.75 / 4.0,
+                    t: 0.0,
+                    ..base
+                }
+            } else {
+                At { s: 0.375, t: 0.5, ..base }
+            };
+            let refs: &[f64] = if cell.mode == CompareMode::None || light(cell.spec, f) {
+                &[0.5]
+            } else {
+                &[0.3, 0.7]
+            };
             for r in refs {
                 let lk = lookup(cell.target, at, w, h, *r);
-                let tag = if cell.mode == CompareMode::None { "read".to_string() } else { format!("ref={r}") };
+                let tag = if cell.mode == CompareMode::None {
+                    "read".to_string()
+                } else {
+                    format!("ref={r}")
+                };
                 out.push(Draft::new("cell", *cell, tex.clone(), lk, format!("a=0.25,0.5/{tag}/dt={nominal}")));
             }
         }
@@ -146,8 +201,18 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
         for (lod, r) in lods {
             let mut lk = lookup(cell.target, base, w, h, *r);
             lk.lod = *lod;
-            let tag = if cell.mode == CompareMode::None { "read".to_string() } else { format!("ref={r}") };
-            out.push(Draft::new("cell", *cell, tex.clone(), lk, format!("lod={lod}/{tag}/levels={}", crate::build::nums(&LEVELS))));
+            let tag = if cell.mode == CompareMode::None {
+                "read".to_string()
+            } else {
+                format!("ref={r}")
+            };
+            out.push(Draft::new(
+                "cell",
+                *cell,
+                tex.clone(),
+                lk,
+                format!("lod={lod}/{tag}/levels={}", crate::build::nums(&LEVELS)),
+            ));
         }
     }
     out

@@ -61,7 +61,14 @@ pub struct Draft {
 
 impl Draft {
     pub fn new(family: &'static str, cell: Cell, texture: Texture, lookup: Lookup, tags: String) -> Draft {
-        Draft { family, cell, sampler: cell.sampler(), texture, lookup, tags }
+        Draft {
+            family,
+            cell,
+            sampler: cell.sampler(),
+            texture,
+            lookup,
+            tags,
+        }
     }
 
     /// `spec/target/format/filter/func/family/tags`.
@@ -91,17 +98,37 @@ impl Draft {
     pub fn into_case(self) -> Case {
         let id = self.id();
         let api = specs::apis(self.cell.spec, self.texture.target, &self.sampler);
-        Case { id, spec: self.cell.spec, api, texture: self.texture, sampler: self.sampler, lookup: self.lookup, expect: None }
+        Case {
+            id,
+            spec: self.cell.spec,
+            api,
+            texture: self.texture,
+            sampler: self.sampler,
+            lookup: self.lookup,
+            expect: None,
+        }
     }
 }
 
 /// A lookup at `at` with reference `dref` (level of detail 0).
 pub fn lookup(target: Target, at: At, w: u32, h: u32, dref: f64) -> Lookup {
     let (coord, layer) = build::coord(target, at, w, h);
-    Lookup { coord, layer, dref, projective: false, lod: 0.0, bias: 0.0 }
+    Lookup {
+        coord,
+        layer,
+        dref,
+        projective: false,
+        lod: 0.0,
+        bias: 0.0,
+    }
 }
 
 /// A single-level texture of `cell`'s target and format.
 pub fn texture(cell: &Cell, levels: Vec<Level>) -> Texture {
-    Texture { target: cell.target, format: cell.format, base_level: 0, levels }
+    Texture {
+        target: cell.target,
+        format: cell.format,
+        base_level: 0,
+        levels,
+    }
 }

@@ -19,18 +19,34 @@ pub fn len() -> usize {
 pub fn chunks() -> impl Iterator<Item = (String, Vec<Draft>)> {
     let mut funcs: Vec<CompareFunc> = CompareFunc::CORE.to_vec();
     funcs.sort_by_key(|f| f.key());
-    funcs.into_iter().flat_map(|func| (0..65536u32 / CHUNK).map(move |k| chunk(func, k * CHUNK)))
+    funcs
+        .into_iter()
+        .flat_map(|func| (0..65536u32 / CHUNK).map(move |k| chunk(func, k * CHUNK)))
 }
 
 fn chunk(func: CompareFunc, first: u32) -> (String, Vec<Draft>) {
-    let cell = Cell { spec: Spec::Gl46, target: Target::T2d, format: Format::D16, filter: Filter::Nearest, mode: CompareMode::Compare, func, dtm: None };
+    let cell = Cell {
+        spec: Spec::Gl46,
+        target: Target::T2d,
+        format: Format::D16,
+        filter: Filter::Nearest,
+        mode: CompareMode::Compare,
+        func,
+        dtm: None,
+    };
     let mut out = Vec::with_capacity(CHUNK as usize * 3);
     for c in first..first + CHUNK {
         let s = Stored::Unorm(c);
         let tex = texture(&cell, vec![build::level_exact(Format::D16, 1, 1, 1, &[s])]);
         let at = build::f32r(build::real(Format::D16, s));
         for (tag, r) in [("at-", build::f32_next_down(at)), ("at", at), ("at+", build::f32_next_up(at))] {
-            out.push(Draft::new("all", cell, tex.clone(), lookup(Target::T2d, At::st(0.5, 0.5), 1, 1, r), format!("c={c}/ref={tag}")));
+            out.push(Draft::new(
+                "all",
+                cell,
+                tex.clone(),
+                lookup(Target::T2d, At::st(0.5, 0.5), 1, 1, r),
+                format!("c={c}/ref={tag}"),
+            ));
         }
     }
     (format!("gl46/d16/{}/{first:05}.json", func.key()), out)

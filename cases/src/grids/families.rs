@@ -9,7 +9,10 @@ use shadowcheck_model::*;
 
 /// A fixed-point depth format of the spec (D24, else D16, else unsized).
 pub fn fixed_fmt(d: &SpecDims) -> Format {
-    [Format::D24, Format::D16, Format::DepthUnsized].into_iter().find(|f| d.formats.contains(f)).unwrap_or(d.formats[0])
+    [Format::D24, Format::D16, Format::DepthUnsized]
+        .into_iter()
+        .find(|f| d.formats.contains(f))
+        .unwrap_or(d.formats[0])
 }
 
 /// The formats whose clamping rules differ: one fixed-point, and D32F where the spec has it.
@@ -30,16 +33,32 @@ fn plain_depth_formats(d: &SpecDims) -> Vec<Format> {
 /// its first operator (SGIX: TEXTURE_LEQUAL_R_SGIX). Never NEVER/ALWAYS, whose constant result
 /// would hide a wrong texel, level, layer or face.
 pub fn main_func(d: &SpecDims) -> CompareFunc {
-    if d.funcs.contains(&CompareFunc::Lequal) { CompareFunc::Lequal } else { d.funcs[0] }
+    if d.funcs.contains(&CompareFunc::Lequal) {
+        CompareFunc::Lequal
+    } else {
+        d.funcs[0]
+    }
 }
 
 /// Two functions with opposite results away from ties: LEQUAL and GEQUAL (SGIX: its two operators).
 pub fn func_pair(d: &SpecDims) -> [CompareFunc; 2] {
-    if d.funcs.contains(&CompareFunc::Gequal) { [CompareFunc::Lequal, CompareFunc::Gequal] } else { [d.funcs[0], d.funcs[d.funcs.len() - 1]] }
+    if d.funcs.contains(&CompareFunc::Gequal) {
+        [CompareFunc::Lequal, CompareFunc::Gequal]
+    } else {
+        [d.funcs[0], d.funcs[d.funcs.len() - 1]]
+    }
 }
 
 fn cell(d: &SpecDims, target: Target, format: Format, filter: Filter, func: CompareFunc) -> Cell {
-    Cell { spec: d.spec, target, format, filter, mode: CompareMode::Compare, func, dtm: None }
+    Cell {
+        spec: d.spec,
+        target,
+        format,
+        filter,
+        mode: CompareMode::Compare,
+        func,
+        dtm: None,
+    }
 }
 
 /// A 1x1 2D texture holding `v` (exact stored value).
@@ -82,7 +101,12 @@ pub fn exact(d: &SpecDims) -> Vec<Draft> {
                 let max = build::unorm_max(b) as u32;
                 vec![Stored::Unorm(0), Stored::Unorm(1), Stored::Unorm(1 << (b - 1)), Stored::Unorm(max)]
             }
-            None => vec![Stored::Float(0.0), Stored::Float(2f32.powi(-24)), Stored::Float(0.5), Stored::Float(1.0)],
+            None => vec![
+                Stored::Float(0.0),
+                Stored::Float(2f32.powi(-24)),
+                Stored::Float(0.5),
+                Stored::Float(1.0),
+            ],
         };
         for &func in d.funcs {
             let c = cell(d, Target::T2d, fmt, Filter::Nearest, func);
@@ -115,7 +139,13 @@ pub fn pcf(d: &SpecDims) -> Vec<Draft> {
             for (a, b) in [(0.25, 0.5), (0.5, 0.5), (0.25, 0.75)] {
                 for r in [0.1, 0.3, 0.5, 0.7, 0.9] {
                     let lk = lookup(Target::T2d, At::st((0.5 + a) / 2.0, (0.5 + b) / 2.0), w, h, r);
-                    out.push(Draft::new("pcf", c, tex.clone(), lk, format!("a={a},{b}/ref={r}/dt={}", nums(&PATTERN))));
+                    out.push(Draft::new(
+                        "pcf",
+                        c,
+                        tex.clone(),
+                        lk,
+                        format!("a={a},{b}/ref={r}/dt={}", nums(&PATTERN)),
+                    ));
                 }
             }
         }
@@ -131,7 +161,12 @@ fn mip_chain(c: &Cell, base_level: u32) -> Texture {
     for (i, size) in [4u32, 2, 1].into_iter().enumerate().skip(base_level as usize) {
         levels.push(build::level(c.format, size, size, 1, &vec![MIP[i]; (size * size) as usize]));
     }
-    Texture { target: c.target, format: c.format, base_level, levels }
+    Texture {
+        target: c.target,
+        format: c.format,
+        base_level,
+        levels,
+    }
 }
 
 /// Level selection: a 4x4 -> 1x1 chain with levels 0.2, 0.8, 0.4 at lambda from -1 (magnification)
@@ -182,13 +217,27 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
     let func = main_func(d);
-    const COORDS: [(f64, f64); 7] = [(-0.25, 0.25), (-0.75, 0.25), (1.25, 0.25), (1.6, 0.75), (2.3, 0.25), (-1.3, 0.75), (0.25, 1.25)];
+    const COORDS: [(f64, f64); 7] = [
+        (-0.25, 0.25),
+        (-0.75, 0.25),
+        (1.25, 0.25),
+        (1.6, 0.75),
+        (2.3, 0.25),
+        (-1.3, 0.75),
+        (0.25, 1.25),
+    ];
     for &wrap in d.wraps {
         for filter in [Filter::Nearest, Filter::Linear] {
             let c = cell(d, Target::T2d, fmt, filter, func);
             let (tex, w, h, _) = pattern_texture(&c);
             for (s, t) in COORDS {
-                let mut x = Draft::new("wrap", c, tex.clone(), lookup(Target::T2d, At::st(s, t), w, h, 0.5), format!("wrap={wrap}/st={s},{t}/border=1/ref=0.5"));
+                let mut x = Draft::new(
+                    "wrap",
+                    c,
+                    tex.clone(),
+                    lookup(Target::T2d, At::st(s, t), w, h, 0.5),
+                    format!("wrap={wrap}/st={s},{t}/border=1/ref=0.5"),
+                );
                 x.sampler.wrap_s = wrap;
                 x.sampler.wrap_t = wrap;
                 x.sampler.wrap_r = wrap;
@@ -201,7 +250,13 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
         let c = cell(d, Target::T2d, Format::D32f, Filter::Nearest, func);
         let (tex, w, h, _) = pattern_texture(&c);
         for (border, r) in [(1.5, 1.25), (-0.5, -0.25), (-0.5, 0.0)] {
-            let mut x = Draft::new("wrap", c, tex.clone(), lookup(Target::T2d, At::st(-0.25, 0.25), w, h, r), format!("wrap=border/st=-0.25,0.25/border={}/ref={}", num(border), num(r)));
+            let mut x = Draft::new(
+                "wrap",
+                c,
+                tex.clone(),
+                lookup(Target::T2d, At::st(-0.25, 0.25), w, h, r),
+                format!("wrap=border/st=-0.25,0.25/border={}/ref={}", num(border), num(r)),
+            );
             x.sampler.wrap_s = Wrap::ClampToBorder;
             x.sampler.wrap_t = Wrap::ClampToBorder;
             x.sampler.border = [border as f32, 0.0, 0.0, 0.0];
@@ -240,14 +295,36 @@ pub fn cube(d: &SpecDims) -> Vec<Draft> {
                         for (i, s, t) in [(0usize, 0.25, 0.25), (3, 0.75, 0.75)] {
                             for (tag, dr) in [("below", -0.01), ("above", 0.01)] {
                                 let r = fv[i] + dr;
-                                let lk = lookup(target, At { s, t, layer: cube_index, face }, w, h, r);
+                                let lk = lookup(
+                                    target,
+                                    At {
+                                        s,
+                                        t,
+                                        layer: cube_index,
+                                        face,
+                                    },
+                                    w,
+                                    h,
+                                    r,
+                                );
                                 out.push(Draft::new("cube", c, tex.clone(), lk, format!("face={face}/texel={i}/ref={tag}")));
                             }
                         }
                     } else {
                         let r = fv[1] + 0.01;
                         for (tag, s) in [("centre", 0.5), ("edge", 0.9)] {
-                            let lk = lookup(target, At { s, t: 0.5, layer: cube_index, face }, w, h, r);
+                            let lk = lookup(
+                                target,
+                                At {
+                                    s,
+                                    t: 0.5,
+                                    layer: cube_index,
+                                    face,
+                                },
+                                w,
+                                h,
+                                r,
+                            );
                             out.push(Draft::new("cube", c, tex.clone(), lk, format!("face={face}/{tag}/ref={}", num(r))));
                         }
                     }
@@ -273,8 +350,25 @@ pub fn layer(d: &SpecDims) -> Vec<Draft> {
         let tex = texture(&c, vec![build::level(fmt, w, h, layers, &vals)]);
         for l in [-1.0, -0.5, -0.49, 0.49, 0.5, 1.4999, 1.5, 2.5, 3.7] {
             for r in [0.3, 0.6] {
-                let lk = lookup(target, At { s: 0.25, t: 0.25, layer: l, face: 0 }, w, h, r);
-                out.push(Draft::new("layer", c, tex.clone(), lk, format!("layer={l}/ref={r}/layers={}", nums(&VALS))));
+                let lk = lookup(
+                    target,
+                    At {
+                        s: 0.25,
+                        t: 0.25,
+                        layer: l,
+                        face: 0,
+                    },
+                    w,
+                    h,
+                    r,
+                );
+                out.push(Draft::new(
+                    "layer",
+                    c,
+                    tex.clone(),
+                    lk,
+                    format!("layer={l}/ref={r}/layers={}", nums(&VALS)),
+                ));
             }
         }
     }
@@ -291,9 +385,17 @@ pub fn dtm(d: &SpecDims) -> Vec<Draft> {
     for &m in d.dtms {
         for &fmt in d.formats {
             for mode in [CompareMode::Compare, CompareMode::None] {
-                let funcs: Vec<CompareFunc> = if mode == CompareMode::None { vec![d.funcs[0]] } else { func_pair(d).to_vec() };
+                let funcs: Vec<CompareFunc> = if mode == CompareMode::None {
+                    vec![d.funcs[0]]
+                } else {
+                    func_pair(d).to_vec()
+                };
                 for func in funcs {
-                    let c = Cell { dtm: Some(m), mode, ..cell(d, Target::T2d, fmt, Filter::Nearest, func) };
+                    let c = Cell {
+                        dtm: Some(m),
+                        mode,
+                        ..cell(d, Target::T2d, fmt, Filter::Nearest, func)
+                    };
                     let (tex, w, h, _) = pattern_texture(&c);
                     let lk = lookup(Target::T2d, At::st(0.75, 0.25), w, h, 0.3);
                     out.push(Draft::new("dtm", c, tex, lk, format!("dtm={m}/texel1/ref=0.3")));
@@ -315,10 +417,19 @@ pub fn stencil(d: &SpecDims) -> Vec<Draft> {
         for dsm in [DepthStencilMode::StencilIndex, DepthStencilMode::DepthComponent] {
             for filter in [Filter::Nearest, Filter::Linear] {
                 for mode in [CompareMode::Compare, CompareMode::None] {
-                    let c = Cell { mode, ..cell(d, Target::T2d, fmt, filter, main_func(d)) };
+                    let c = Cell {
+                        mode,
+                        ..cell(d, Target::T2d, fmt, filter, main_func(d))
+                    };
                     let (tex, w, h, _) = pattern_texture(&c);
                     for (i, s, t) in [(1, 0.75, 0.25), (2, 0.25, 0.75)] {
-                        let mut x = Draft::new("stencil", c, tex.clone(), lookup(Target::T2d, At::st(s, t), w, h, 0.5), format!("dsm={dsm}/texel{i}/ref=0.5/stencil={}", build::stencil_value(i)));
+                        let mut x = Draft::new(
+                            "stencil",
+                            c,
+                            tex.clone(),
+                            lookup(Target::T2d, At::st(s, t), w, h, 0.5),
+                            format!("dsm={dsm}/texel{i}/ref=0.5/stencil={}", build::stencil_value(i)),
+                        );
                         x.sampler.depth_stencil_mode = Some(dsm);
                         out.push(x);
                     }
@@ -335,11 +446,26 @@ pub fn incomplete(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
     for mode in [CompareMode::Compare, CompareMode::None] {
-        let c = Cell { mode, ..cell(d, Target::T2d, fmt, Filter::NearestMipmapNearest, main_func(d)) };
+        let c = Cell {
+            mode,
+            ..cell(d, Target::T2d, fmt, Filter::NearestMipmapNearest, main_func(d))
+        };
         let (tex, w, h, _) = pattern_texture(&c);
         let lk = lookup(Target::T2d, At::st(0.75, 0.25), w, h, 0.3);
-        out.push(Draft::new("incomplete", c, tex.clone(), lk.clone(), "level0-only/texel1/ref=0.3".into()));
-        let mut x = Draft::new("incomplete", c, tex.clone(), lk.clone(), "level0-only/max_level=0/texel1/ref=0.3".into());
+        out.push(Draft::new(
+            "incomplete",
+            c,
+            tex.clone(),
+            lk.clone(),
+            "level0-only/texel1/ref=0.3".into(),
+        ));
+        let mut x = Draft::new(
+            "incomplete",
+            c,
+            tex.clone(),
+            lk.clone(),
+            "level0-only/max_level=0/texel1/ref=0.3".into(),
+        );
         x.sampler.max_level = Some(0);
         out.push(x);
         let mut bad = tex.clone();
@@ -359,7 +485,11 @@ pub fn proj(d: &SpecDims) -> Vec<Draft> {
         for func in funcs {
             let c = cell(d, target, fmt, Filter::Nearest, func);
             let (tex, w, h, _) = pattern_texture(&c);
-            let at = if target.dims() == 1 { At::st(2.5 / 4.0, 0.0) } else { At::st(0.25, 0.75) };
+            let at = if target.dims() == 1 {
+                At::st(2.5 / 4.0, 0.0)
+            } else {
+                At::st(0.25, 0.75)
+            };
             for (q, r) in [(2.0, 0.5), (2.0, 0.7), (2.0, 0.8), (0.5, 0.5), (0.5, 0.7), (-1.0, 0.5)] {
                 let mut lk = lookup(target, at, w, h, r * q);
                 for i in 0..3 {
@@ -392,7 +522,13 @@ pub fn ambient(d: &SpecDims) -> Vec<Draft> {
                         vec![(At::st(0.375, 0.5), 0.5, "a=0.25,0.5")]
                     };
                     for (at, r, tag) in lks {
-                        let mut x = Draft::new("ambient", c, tex.clone(), lookup(Target::T2d, at, w, h, r), format!("fail={fail}/{tag}/ref={r}"));
+                        let mut x = Draft::new(
+                            "ambient",
+                            c,
+                            tex.clone(),
+                            lookup(Target::T2d, at, w, h, r),
+                            format!("fail={fail}/{tag}/ref={r}"),
+                        );
                         x.sampler.fail_value = Some(fail);
                         out.push(x);
                     }
@@ -440,7 +576,12 @@ pub fn random(d: &SpecDims, seed: u64, n: usize) -> Vec<Draft> {
         let img: Vec<f64> = (0..4).map(|_| rng.grid(0.0, 1.0)).collect();
         let vals: Vec<f64> = (0..(w * h * layers) as usize).map(|i| img[i % img.len()]).collect();
         let tex = texture(&c, vec![build::level(format, w, h, layers, &vals)]);
-        let at = At { s: rng.grid(0.0, 1.0), t: rng.grid(0.0, 1.0), layer, face: (rng.next() % 6) as u32 };
+        let at = At {
+            s: rng.grid(0.0, 1.0),
+            t: rng.grid(0.0, 1.0),
+            layer,
+            face: (rng.next() % 6) as u32,
+        };
         let r = rng.grid(-0.25, 1.25);
         out.push(Draft::new("rand", c, tex, lookup(target, at, w, h, r), format!("seed={seed}/{i}")));
     }

@@ -65,7 +65,11 @@ fn uses_lod_state(x: &Draft) -> bool {
 /// All `default` cases of one spec: the main product expanded into its lookups, the focused
 /// families, then the filters that drop state the spec does not have.
 pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
-    let mut g = cells::cells(d).flat_map(cells::drafts).extend(families::clamp(d)).extend(families::exact(d)).extend(families::pcf(d));
+    let mut g = cells::cells(d)
+        .flat_map(cells::drafts)
+        .extend(families::clamp(d))
+        .extend(families::exact(d))
+        .extend(families::pcf(d));
     // The *_ambient variants differ from their base spec only in the fail value: they get the
     // main product, the value families, wrap and `ambient`, not the sampling-geometry families again.
     if !d.fail_value {
@@ -81,9 +85,18 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
         .extend(families::stencil(d))
         .extend(families::ambient(d))
         .extend(families::random(d, seed, RANDOM_PER_SPEC))
-        .filter("ES 2.0 has no TEXTURE_MIN_LOD / MAX_LOD / BASE_LEVEL / MAX_LEVEL (added by GL 1.2 and ES 3.0; INVALID_ENUM)", |x| d.lod_state || !uses_lod_state(x))
-        .filter("TEXTURE_LOD_BIAS does not exist in ES or SGIX-era GL (ES 3.2 §8.14.1; INVALID_ENUM)", |x| d.lod_bias || x.sampler.lod_bias == 0.0)
-        .filter("no shader bias argument on this spec's shadow lookups (shadow2DEXT, fixed function)", |x| d.shader_bias || x.lookup.bias == 0.0)
+        .filter(
+            "ES 2.0 has no TEXTURE_MIN_LOD / MAX_LOD / BASE_LEVEL / MAX_LEVEL (added by GL 1.2 and ES 3.0; INVALID_ENUM)",
+            |x| d.lod_state || !uses_lod_state(x),
+        )
+        .filter(
+            "TEXTURE_LOD_BIAS does not exist in ES or SGIX-era GL (ES 3.2 §8.14.1; INVALID_ENUM)",
+            |x| d.lod_bias || x.sampler.lod_bias == 0.0,
+        )
+        .filter(
+            "no shader bias argument on this spec's shadow lookups (shadow2DEXT, fixed function)",
+            |x| d.shader_bias || x.lookup.bias == 0.0,
+        )
 }
 
 /// One of everything: the first `default` case for each new (spec, value) of every dimension and
@@ -140,10 +153,16 @@ fn to_cases(grid: &str, drafts: Vec<Draft>) -> Result<Vec<(String, Case)>, GridE
         let file = x.file(grid);
         let case = x.into_case();
         if !ids.insert(case.id.clone()) {
-            return Err(GridError::DuplicateId { grid: grid.into(), id: case.id });
+            return Err(GridError::DuplicateId {
+                grid: grid.into(),
+                id: case.id,
+            });
         }
         if case.api.is_empty() {
-            return Err(GridError::NoApi { grid: grid.into(), id: case.id });
+            return Err(GridError::NoApi {
+                grid: grid.into(),
+                id: case.id,
+            });
         }
         out.push((file, case));
     }
@@ -167,7 +186,10 @@ pub fn fill_expectations(grid: &str, cases: &mut [Case]) -> Result<(), GridError
             })
             .collect();
         // A panicking oracle is a bug to report, not something to recover from: re-raise it.
-        handles.into_iter().map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))).collect()
+        handles
+            .into_iter()
+            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+            .collect()
     });
     for r in results {
         r.map_err(|source| GridError::Oracle { grid: grid.into(), source })?;
@@ -183,7 +205,18 @@ fn into_files(grid: &str, seed: u64, cases: Vec<(String, Case)>) -> Vec<(String,
     }
     files
         .into_iter()
-        .map(|(rel, cases)| (rel, FixtureFile { schema_version: SCHEMA_VERSION, generator: GENERATOR.to_string(), grid: grid.to_string(), seed, cases }))
+        .map(|(rel, cases)| {
+            (
+                rel,
+                FixtureFile {
+                    schema_version: SCHEMA_VERSION,
+                    generator: GENERATOR.to_string(),
+                    grid: grid.to_string(),
+                    seed,
+                    cases,
+                },
+            )
+        })
         .collect()
 }
 
@@ -207,7 +240,16 @@ pub fn for_each_file(name: &str, seed: u64, mut sink: impl FnMut(String, Fixture
             let (files, mut cases): (Vec<String>, Vec<Case>) = cases.into_iter().unzip();
             fill_expectations(name, &mut cases)?;
             let _ = files;
-            sink(rel, FixtureFile { schema_version: SCHEMA_VERSION, generator: GENERATOR.to_string(), grid: name.to_string(), seed, cases })?;
+            sink(
+                rel,
+                FixtureFile {
+                    schema_version: SCHEMA_VERSION,
+                    generator: GENERATOR.to_string(),
+                    grid: name.to_string(),
+                    seed,
+                    cases,
+                },
+            )?;
         }
         return Ok(());
     }

@@ -104,7 +104,14 @@ pub fn dims(spec: Spec) -> SpecDims {
             formats: Format::ALL,
             filters: ALL_FILTERS,
             dtms: &[M::Luminance, M::Intensity, M::Alpha, M::Red],
-            wraps: &[W::Repeat, W::ClampToEdge, W::ClampToBorder, W::MirroredRepeat, W::MirrorClampToEdge, W::Clamp],
+            wraps: &[
+                W::Repeat,
+                W::ClampToEdge,
+                W::ClampToBorder,
+                W::MirroredRepeat,
+                W::MirrorClampToEdge,
+                W::Clamp,
+            ],
             lod_bias: true,
             lod_state: true,
             shader_bias: true,
@@ -153,8 +160,7 @@ pub fn apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
     use ApiPath as A;
     let legacy_target = matches!(target, T::T1d | T::T2d | T::Rect);
     let stencil = sampler.depth_stencil_mode == Some(DepthStencilMode::StencilIndex);
-    let compat_only = sampler.depth_texture_mode.is_some()
-        || [sampler.wrap_s, sampler.wrap_t, sampler.wrap_r].contains(&W::Clamp);
+    let compat_only = sampler.depth_texture_mode.is_some() || [sampler.wrap_s, sampler.wrap_t, sampler.wrap_r].contains(&W::Clamp);
     match spec {
         Spec::Sgix | Spec::SgixAmbient => vec![A::FixedFunction],
         Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => vec![A::FixedFunction, A::ArbFp, A::Glsl120],

@@ -49,7 +49,10 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     let streaming = args.grid == "exhaustive";
     let mut coverage = Coverage::default();
     grids::for_each_file(&args.grid, args.seed, |rel, file| {
-        let text = fixtures::to_string(&file).map_err(|e| fixtures::FixtureError::Write { file: out.join(&rel), source: std::io::Error::other(e) })?;
+        let text = fixtures::to_string(&file).map_err(|e| fixtures::FixtureError::Write {
+            file: out.join(&rel),
+            source: std::io::Error::other(e),
+        })?;
         bytes += text.len();
         nfiles += 1;
         if args.check {
@@ -102,11 +105,15 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     }
     let missing = coverage.missing();
     if args.grid == "default" && !missing.is_empty() {
-        println!("{} allowed spec x target x format x filter x func combinations have no case", missing.len());
+        println!(
+            "{} allowed spec x target x format x filter x func combinations have no case",
+            missing.len()
+        );
     }
     if let Some(readme) = &args.update_readme {
         let text = std::fs::read_to_string(readme).with_context(|| format!("reading {}", readme.display()))?;
-        let new = shadowcheck_cases::coverage::replace_section(&text, &coverage.markdown()).with_context(|| format!("{}: no coverage markers", readme.display()))?;
+        let new = shadowcheck_cases::coverage::replace_section(&text, &coverage.markdown())
+            .with_context(|| format!("{}: no coverage markers", readme.display()))?;
         std::fs::write(readme, new).with_context(|| format!("writing {}", readme.display()))?;
     }
     println!(
@@ -124,7 +131,12 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
         for d in &differ {
             eprintln!("differs: {}", out.join(d).display());
         }
-        eprintln!("{} file(s) differ; regenerate with `cargo run --release -- gen --grid {} -o {}`", differ.len(), args.grid, out.display());
+        eprintln!(
+            "{} file(s) differ; regenerate with `cargo run --release -- gen --grid {} -o {}`",
+            differ.len(),
+            args.grid,
+            out.display()
+        );
         return Ok(ExitCode::from(1));
     }
     Ok(ExitCode::SUCCESS)
