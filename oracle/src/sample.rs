@@ -161,12 +161,14 @@ impl TexelCtx<'_> {
                     m: unorm_max(bits),
                 };
                 let mut cands = vec![value];
-                if tex.format == Format::DepthUnsized {
-                    // The unsized format's precision is the implementation's (at least 16 bits): a
-                    // 24-bit store holds either neighbour of c·(2^24−1)/(2^16−1) (§2.3.5.2).
+                if matches!(tex.format, Format::DepthUnsized | Format::D32) {
+                    // The unsized format's precision is the implementation's, and DEPTH_COMPONENT32 is not
+                    // a required format (Table 8.13: "desired component resolutions", no "Req. format"
+                    // mark): a 24-bit store holds either neighbour of c·(2^24−1)/(2^b−1) (§2.3.5.2).
                     let m24 = unorm_max(24);
+                    let mb = unorm_max(bits);
                     let num = c * m24;
-                    let (lo, hi) = (num / 65535, num.div_ceil(65535));
+                    let (lo, hi) = (num / mb, num.div_ceil(mb));
                     cands.push(Exact::Q { c: lo, m: m24 });
                     cands.push(Exact::Q { c: hi, m: m24 });
                 }
@@ -181,9 +183,14 @@ impl TexelCtx<'_> {
             Texels::Float(v) => {
                 let f = v.get(idx).copied().unwrap_or(0.0) as f64;
                 let value = Exact::F(f.clamp(0.0, 1.0));
+                let mut cands = vec![value];
+                if value.approx() != 0.0 && value.approx().abs() < f32::MIN_POSITIVE as f64 {
+                    // GLSL 4.60 §4.7.1: "Any denormalized value ... can be flushed to 0."
+                    cands.push(Exact::F(0.0));
+                }
                 Source {
                     value,
-                    cands: vec![value],
+                    cands,
                     stored: f,
                     undefined: None,
                 }

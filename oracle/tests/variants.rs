@@ -459,3 +459,27 @@ fn compat_float_shadow_lookup_returns_r_whatever_the_depth_texture_mode() {
         ]
     );
 }
+
+#[test]
+fn non_required_d32_may_be_stored_at_24_bits_and_denormals_may_flush() {
+    // DEPTH_COMPONENT32 has only "desired" resolution (Table 8.13): c = 1 may read back as 0.
+    let mut c = one(Spec::Gl46, Format::D32, CompareFunc::Lequal, 1e-12, 0.0);
+    c.texture.levels[0].depth = Texels::Unorm(vec![1]);
+    let e = eval(&c);
+    assert_eq!(e.expect.spec_value, Some(1.0)); // 1e-12 ≤ 1/(2^32−1) ≈ 2.3e-10
+    assert!(
+        e.expect.accept[&Profile::Strict].contains(0.0)
+            && e.expect.accept[&Profile::Strict].contains(1.0)
+    );
+    // A subnormal Dref may be flushed to 0: EQUAL against a D32F zero may pass.
+    let tiny = f32::from_bits(1) as f64;
+    let e = eval(&one(
+        Spec::Gl46,
+        Format::D32f,
+        CompareFunc::Equal,
+        -tiny,
+        0.0,
+    ));
+    assert_eq!(e.expect.spec_value, Some(0.0));
+    assert!(e.expect.accept[&Profile::Strict].contains(1.0));
+}
