@@ -178,6 +178,13 @@ fn default_covers_every_allowed_combination() {
             c.id
         );
         assert!(specs::filter_allowed(c.texture.target, c.sampler.min_filter), "{}", c.id);
+        assert!(d.lod_bias || c.sampler.lod_bias == 0.0, "{}", c.id);
+        assert!(d.shader_bias || c.lookup.bias == 0.0, "{}", c.id);
+        let lod_state = c.sampler.min_lod != -1000.0 || c.sampler.max_lod != 1000.0 || c.sampler.max_level.is_some() || c.texture.base_level != 0;
+        assert!(d.lod_state || !lod_state, "{}", c.id);
+        assert!(d.fail_value || c.sampler.fail_value.is_none(), "{}", c.id);
+        assert!(c.sampler.depth_texture_mode.is_none_or(|m| d.dtms.contains(&m)), "{}", c.id);
+        assert!(d.stencil_mode || c.sampler.depth_stencil_mode.is_none(), "{}", c.id);
     }
 }
 
