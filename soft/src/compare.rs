@@ -173,6 +173,7 @@ pub fn passes(op: CompareOp, dref: f32, dt: f32, faults: Faults) -> bool {
 /// pass 1.0, fail 0.0; a `fail_value` set on them is ignored (the state does not exist there).
 pub fn pass_fail_values(spec: Spec, fail_value: Option<f32>, faults: Faults) -> (f32, f32) {
     let ambient = match spec {
+        Spec::SgixAmbient | Spec::ArbAmbient if faults.has(Fault::FailValueNotClamped) => fail_value.unwrap_or(0.0),
         Spec::SgixAmbient | Spec::ArbAmbient => crate::storage::clamp01(fail_value.unwrap_or(0.0)),
         _ => 0.0,
     };

@@ -62,6 +62,8 @@ faults! {
     AmbientAppliedToPass = "ambient-applied-to-pass",
     /// The ambient / fail value is ignored (0.0 used).
     AmbientIgnored = "ambient-ignored",
+    /// TEXTURE_COMPARE_FAIL_VALUE_ARB / SHADOW_AMBIENT_SGIX used as set, not clamped to [0, 1].
+    FailValueNotClamped = "fail-value-not-clamped",
     // --- result layout (DEPTH_TEXTURE_MODE, Table 16.1) ---
     /// DEPTH_TEXTURE_MODE RED returned as LUMINANCE (r,r,r,1).
     RedModeAsLuminance = "red-mode-as-luminance",
@@ -69,11 +71,18 @@ faults! {
     IntensityAsLuminance = "intensity-as-luminance",
     /// Wrong default DEPTH_TEXTURE_MODE in compatibility paths (RED instead of LUMINANCE).
     WrongDefaultDepthMode = "wrong-default-depth-mode",
+    /// GLSL 1.30 shadow lookup with DEPTH_TEXTURE_MODE ALPHA returns Cs[0] of (0, 0, 0, r), i.e. 0.
+    AlphaModeZeroOnGlsl130 = "alpha-mode-zero-on-glsl130",
+    /// GLSL 1.20 vec4 `shadow*()` ignores DEPTH_TEXTURE_MODE (always LUMINANCE).
+    Glsl120IgnoresDepthMode = "glsl120-ignores-depth-mode",
     // --- which textures take part ---
     /// Comparison applied to a colour (R8) texture instead of being bypassed.
     CompareAppliedToColour = "compare-applied-to-colour",
     /// DEPTH_STENCIL_TEXTURE_MODE = STENCIL_INDEX ignored (depth returned).
     StencilModeIgnored = "stencil-mode-ignored",
+    /// STENCIL_INDEX mode honoured, but with TEXTURE_COMPARE_MODE on the stencil index is compared
+    /// with Dref (the sampler's compare state not turned off for stencil sampling).
+    StencilCompared = "stencil-compared",
     // --- completeness (§8.17, §11.1.3.5) ---
     /// An incomplete texture is sampled as if complete instead of returning 0 / (0,0,0,1).
     IncompleteNotZero = "incomplete-not-zero",
@@ -111,6 +120,8 @@ faults! {
     // --- storage ---
     /// Unorm conversion c / 2^b instead of c / (2^b - 1).
     UnormDividedByPowerOfTwo = "unorm-divided-by-power-of-two",
+    /// Floating-point depth not clamped to [0, 1] at upload (§8.5).
+    UploadNotClamped = "upload-not-clamped",
 }
 
 impl fmt::Display for Fault {

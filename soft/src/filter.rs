@@ -193,6 +193,13 @@ impl PreparedTexture {
                     v
                 }
             }
+            Kind::Stencil if st.stencil_compare => {
+                if passes(st.op, dref, v, st.faults) {
+                    st.pass
+                } else {
+                    st.fail
+                }
+            }
             Kind::Colour | Kind::Stencil => v,
         }
     }

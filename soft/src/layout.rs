@@ -75,6 +75,14 @@ pub fn resolve(spec: Spec, api: ApiPath, kind: Kind, mode: Option<DepthTextureMo
         ApiPath::GlslCore | ApiPath::Es300 => false,
     };
     if !vec4 {
+        if api == ApiPath::Glsl130
+            && kind == Kind::Compare
+            && mode == Some(DepthTextureMode::Alpha)
+            && faults.has(Fault::AlphaModeZeroOnGlsl130)
+        {
+            // Cs[0] of the ALPHA expansion (0, 0, 0, r): channel 0 reads 0.
+            return Ok(Layout::Alpha);
+        }
         return Ok(Layout::Float);
     }
     if spec == Spec::Es2Ext {
@@ -94,7 +102,11 @@ pub fn resolve(spec: Spec, api: ApiPath, kind: Kind, mode: Option<DepthTextureMo
     } else {
         DepthTextureMode::Luminance
     };
-    let mode = mode.unwrap_or(default);
+    let mode = if api == ApiPath::Glsl120 && faults.has(Fault::Glsl120IgnoresDepthMode) {
+        DepthTextureMode::Luminance
+    } else {
+        mode.unwrap_or(default)
+    };
     if mode == DepthTextureMode::Red && is_legacy(spec) && mode != default {
         // RED became a legal DEPTH_TEXTURE_MODE with GL 3.0 (ARB_depth_texture: LUMINANCE,
         // INTENSITY, ALPHA).

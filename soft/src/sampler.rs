@@ -43,6 +43,8 @@ pub struct SamplerState {
     /// Texture completeness (§8.17) for this sampler.
     pub complete: bool,
     pub faults: Faults,
+    /// Set only by [`Fault::StencilCompared`]: stencil indices go through the comparison.
+    pub stencil_compare: bool,
 }
 
 fn undefined(spec: Spec, what: &'static str) -> SoftError {
@@ -148,7 +150,9 @@ impl SamplerState {
         } else {
             Kind::Depth
         };
-        let op = if kind == Kind::Compare {
+        // Faulty only: the stencil index compared with Dref ([`Fault::StencilCompared`]).
+        let stencil_compare = kind == Kind::Stencil && compare_on && faults.has(Fault::StencilCompared);
+        let op = if kind == Kind::Compare || stencil_compare {
             compare::resolve_op(spec, s.compare_func, faults)?
         } else {
             CompareOp::Always
@@ -219,6 +223,7 @@ impl SamplerState {
             seamless: spec == Spec::Gles32 && target.is_cube(),
             complete,
             faults,
+            stencil_compare,
         })
     }
 }

@@ -93,7 +93,11 @@ impl PreparedTexture {
                 }
                 (Texels::Float(v), None) => {
                     // §8.5: depth is clamped to [0, 1] at upload, for every depth format.
-                    self.data.extend(v.iter().map(|&d| clamp01(d)));
+                    if faults.has(Fault::UploadNotClamped) {
+                        self.data.extend_from_slice(v);
+                    } else {
+                        self.data.extend(v.iter().map(|&d| clamp01(d)));
+                    }
                 }
                 _ => {
                     return Err(SoftError::Invalid(format!(

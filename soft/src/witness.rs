@@ -150,6 +150,30 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
             c.sampler.depth_texture_mode = mode;
             c
         }
+        Fault::FailValueNotClamped => {
+            // ARB_shadow_ambient: the fail value is clamped to [0, 1] when set: 1.5 reads as 1.
+            let mut c = case(Spec::ArbAmbient, 1, 1, vec![0], C::Lequal);
+            c.sampler.fail_value = Some(1.5);
+            c
+        }
+        Fault::AlphaModeZeroOnGlsl130 | Fault::Glsl120IgnoresDepthMode => {
+            let api = if fault == Fault::AlphaModeZeroOnGlsl130 {
+                ApiPath::Glsl130
+            } else {
+                ApiPath::Glsl120
+            };
+            let mut c = with_api(gl(vec![65535], 1, C::Lequal), api);
+            c.sampler.depth_texture_mode = Some(DepthTextureMode::Alpha);
+            c
+        }
+        Fault::StencilCompared => {
+            let mut c = gl(vec![0], 1, C::Lequal);
+            c.texture.format = Format::D24S8;
+            c.texture.levels[0].stencil = Some(vec![7]);
+            c.sampler.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
+            c
+        }
+        Fault::UploadNotClamped => float1(1.5, 1.2, C::Lequal),
         Fault::CompareAppliedToColour => {
             let mut c = gl(vec![51], 1, C::Lequal);
             c.texture.format = Format::R8;
