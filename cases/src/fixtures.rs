@@ -382,41 +382,56 @@ pub fn load_path(path: &Path) -> Result<Vec<(PathBuf, FixtureFile)>, FixtureErro
 pub fn write_dir(dir: &Path, files: &[(String, FixtureFile)]) -> Result<(), FixtureError> {
     let mut wanted = BTreeSet::new();
     for (rel, file) in files {
-        if rel.is_empty() || rel.starts_with('/') || rel.split('/').any(|c| c == ".." || c.is_empty()) {
-            return Err(FixtureError::BadRelativePath {
-                dir: dir.to_path_buf(),
-                rel: rel.clone(),
-            });
-        }
-        let path = dir.join(rel);
-        if let Some(parent) = path.parent() {
-            std::fs::create_dir_all(parent).map_err(|source| FixtureError::Write {
-                file: parent.to_path_buf(),
-                source,
-            })?;
-        }
-        let text = to_string(file).map_err(|e| FixtureError::Write {
-            file: path.clone(),
-            source: std::io::Error::other(e),
-        })?;
-        std::fs::write(&path, text).map_err(|source| FixtureError::Write {
-            file: path.clone(),
+        wanted.insert(write_file(dir, rel, file)?);
+    }
+    remove_stale(dir, &wanted)
+}
+
+/// Writes one fixture file at `dir/rel` (creating folders) and returns its path. Nothing else in
+/// `dir` is touched: for grids written file by file, call [`remove_stale`] at the end.
+pub fn write_file(dir: &Path, rel: &str, file: &FixtureFile) -> Result<PathBuf, FixtureError> {
+    if rel.is_empty() || rel.starts_with('/') || rel.split('/').any(|c| c == ".." || c.is_empty()) {
+        return Err(FixtureError::BadRelativePath {
+            dir: dir.to_path_buf(),
+            rel: rel.to_string(),
+        });
+    }
+    let path = dir.join(rel);
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).map_err(|source| FixtureError::Write {
+            file: parent.to_path_buf(),
             source,
         })?;
-        wanted.insert(path);
     }
-    if let Ok(existing) = fixture_paths(dir) {
-        for p in existing {
-            if wanted.contains(&p) {
-                continue;
-            }
-            let is_fixture = std::fs::read(&p).is_ok_and(|b| b.starts_with(b"{\"schema_version\":"));
-            if is_fixture {
-                std::fs::remove_file(&p).map_err(|source| FixtureError::Write { file: p.clone(), source })?;
-            }
+    let text = to_string(file).map_err(|e| FixtureError::Write {
+        file: path.clone(),
+        source: std::io::Error::other(e),
+    })?;
+    std::fs::write(&path, text).map_err(|source| FixtureError::Write {
+        file: path.clone(),
+        source,
+    })?;
+    Ok(path)
+}
+
+/// Removes the fixture files under `dir` (recognised by their first bytes) whose paths are not in
+/// `keep`; any other file is left alone.
+pub fn remove_stale(dir: &Path, keep: &BTreeSet<PathBuf>) -> Result<(), FixtureError> {
+    let Ok(existing) = fixture_paths(dir) else { return Ok(()) };
+    for p in existing {
+        if keep.contains(&p) || !is_fixture_file(&p) {
+            continue;
         }
+        std::fs::remove_file(&p).map_err(|source| FixtureError::Write { file: p.clone(), source })?;
     }
     Ok(())
+}
+
+fn is_fixture_file(p: &Path) -> bool {
+    use std::io::Read;
+    let prefix = b"{\"schema_version\":";
+    let mut buf = [0u8; 18];
+    std::fs::File::open(p).and_then(|mut f| f.read_exact(&mut buf)).is_ok() && &buf[..] == &prefix[..]
 }
 
 /// A one-line summary of a set of errors (for lenient loading reports).

@@ -190,3 +190,16 @@ fn write_dir_refuses_paths_outside_the_folder() {
     assert!(matches!(e, FixtureError::BadRelativePath { .. }), "{e}");
     let _ = std::fs::remove_dir_all(&d);
 }
+
+#[test]
+fn files_written_one_by_one_survive_until_remove_stale() {
+    let d = tmpdir("stream");
+    let f = sample();
+    let a = fixtures::write_file(&d, "x/a.json", &f).unwrap();
+    let b = fixtures::write_file(&d, "x/b.json", &f).unwrap();
+    fixtures::write_file(&d, "old.json", &f).unwrap();
+    assert!(a.exists() && b.exists());
+    fixtures::remove_stale(&d, &[a.clone(), b.clone()].into_iter().collect()).unwrap();
+    assert!(a.exists() && b.exists() && !d.join("old.json").exists());
+    let _ = std::fs::remove_dir_all(&d);
+}

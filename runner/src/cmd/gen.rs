@@ -48,6 +48,7 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     let mut written: Vec<(String, fixtures::FixtureFile)> = Vec::new();
     let streaming = args.grid == "exhaustive";
     let mut coverage = Coverage::default();
+    let mut streamed = std::collections::BTreeSet::new();
     grids::for_each_file(&args.grid, args.seed, |rel, file| {
         let text = fixtures::to_string(&file).map_err(|e| fixtures::FixtureError::Write {
             file: out.join(&rel),
@@ -68,7 +69,7 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
             }
             coverage.total += cov.total;
             if !args.check {
-                fixtures::write_dir(&out, &[(rel, file)])?;
+                streamed.insert(fixtures::write_file(&out, &rel, &file)?);
             }
         } else {
             all_cases.extend(file.cases.iter().cloned());
@@ -78,6 +79,9 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     })
     .with_context(|| format!("generating grid `{}`", args.grid))?;
     let gen_time = start.elapsed();
+    if streaming && !args.check {
+        fixtures::remove_stale(&out, &streamed).with_context(|| format!("cleaning {}", out.display()))?;
+    }
     if !streaming {
         coverage = Coverage::of(&all_cases);
         if args.check {
