@@ -492,6 +492,27 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
             e.note(format!("filtered r is implementation-dependent, \"proportional to the number of comparison passes or failures\" ({}); the spec value is the bilinear-weighted fraction", rules.filter_cite));
         }
     }
+    if kind == Kind::Colour {
+        // A filtered colour value may be returned at the format's precision (either neighbour,
+        // §2.3.5.2): widen to the neighbouring multiples of 1/(2^b − 1).
+        if let Some(bits) = fmt.unorm_bits() {
+            let m = crate::unorm::unorm_max(bits) as f64;
+            for set in accept.iter_mut() {
+                for iv in set.iter_mut() {
+                    (iv.lo, iv.hi) = ((iv.lo * m).floor() / m, (iv.hi * m).ceil() / m);
+                }
+            }
+        }
+    }
+    // The result reaches the observer as an f32: each end widens to its f32 neighbour outward.
+    for set in accept.iter_mut() {
+        for iv in set.iter_mut() {
+            (iv.lo, iv.hi) = (
+                f32_candidates(Exact::F(iv.lo))[0],
+                f32_candidates(Exact::F(iv.hi))[1],
+            );
+        }
+    }
     // Weighted sums of equal values may differ from the value by an ulp: the sets are widened by such
     // rounding noise to hold the spec value, and kept inside the range r can take.
     let (rlo, rhi) = match kind {
@@ -509,18 +530,6 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
                     .find(|i| (i.lo - v).abs() <= 1e-12 || (i.hi - v).abs() <= 1e-12)
                 {
                     (iv.lo, iv.hi) = (iv.lo.min(v), iv.hi.max(v));
-                }
-            }
-        }
-    }
-    if kind == Kind::Colour {
-        // A filtered colour value may be returned at the format's precision (either neighbour,
-        // §2.3.5.2): widen to the neighbouring multiples of 1/(2^b − 1).
-        if let Some(bits) = fmt.unorm_bits() {
-            let m = crate::unorm::unorm_max(bits) as f64;
-            for set in accept.iter_mut() {
-                for iv in set.iter_mut() {
-                    (iv.lo, iv.hi) = ((iv.lo * m).floor() / m, (iv.hi * m).ceil() / m);
                 }
             }
         }
