@@ -13,6 +13,9 @@ use super::texture;
 use glow::HasContext;
 use shadowcheck_model::Case;
 
+/// Fewest cases sharing a texture for a batched draw.
+const MIN_BATCH: usize = 32;
+
 impl Renderer {
     /// Uploads the values of `plans` to the parameter texture (case k at texels 4k..4k+3).
     unsafe fn upload_params(&self, plans: &[&Plan]) {
@@ -52,11 +55,14 @@ impl Renderer {
                 st.stored[*ci] = stored.clone();
             }
         }
-        // Batchable (case, plan) pairs by program, in first-appearance order.
+        // Batchable (case, plan) pairs by program, in first-appearance order. Small groups draw a
+        // pixel per case instead: updating the parameter texture makes the driver wait for the
+        // draws still reading it, which costs more than a few single-pixel draws.
+        let batch = group.len() >= MIN_BATCH;
         let mut batches: Vec<(ShaderKey, Vec<(usize, &Plan)>)> = Vec::new();
         for (ci, plans) in &group {
             for plan in plans {
-                if shaders::batchable(&plan.key) {
+                if batch && shaders::batchable(&plan.key) {
                     match batches.iter_mut().find(|(k, _)| *k == plan.key) {
                         Some((_, v)) => v.push((*ci, plan)),
                         None => batches.push((plan.key, vec![(*ci, plan)])),

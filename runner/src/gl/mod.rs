@@ -16,6 +16,7 @@ pub mod names;
 pub mod paths;
 pub mod protocol;
 pub mod shaders;
+pub mod state;
 pub mod texture;
 pub mod worker;
 

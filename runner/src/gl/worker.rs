@@ -99,6 +99,12 @@ impl Worker {
         Ok(Worker { name, renderer, _ctx: ctx })
     }
 
+    /// TexParameter state self-check against the oracle's tables (see `state.rs`).
+    pub fn state_check(&self) -> Vec<super::state::StateCheck> {
+        // SAFETY: the worker's context is current on this thread.
+        unsafe { super::state::check(&self.renderer.gl, &self.renderer.info) }
+    }
+
     pub fn info(&self) -> &GlInfo {
         &self.renderer.info
     }
