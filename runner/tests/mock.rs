@@ -80,10 +80,10 @@ fn failures_baseline_and_improvement_give_the_documented_exit_codes() {
 #[test]
 fn crash_hang_and_garbage_are_found_by_bisection_and_the_run_goes_on() {
     let (dir, fx) = setup("bisect", 100);
-    for (mode, label) in [("", "streaming"), (",buffer", "buffered")] {
+    for (mode, label, group) in [("", "streaming", "64"), (",buffer", "buffered", "16")] {
         let out = dir.join(format!("out-{label}"));
         let script = format!("mock:crash=n=0013,hang=n=0042,garbage=n=0077{mode}");
-        let r = run(&["-b", &script, "--fixtures", &fx, "--timeout", "1", "--no-rerun", "--out", out.to_str().unwrap()]);
+        let r = run(&["-b", &script, "--fixtures", &fx, "--timeout", "1", "--group", group, "--no-rerun", "--out", out.to_str().unwrap()]);
         assert_eq!(r.code, 100, "{label}: {}{}", r.stdout, r.stderr);
         let rows = results(&out);
         assert_eq!(rows.len(), 100);

@@ -220,6 +220,7 @@ pub struct ExecBackend {
     name: String,
     cmd: ProcessCommand,
     timeout: Duration,
+    group: usize,
     caps: Capabilities,
     wants_expect: bool,
     proc: Option<Proc>,
@@ -235,6 +236,7 @@ impl ExecBackend {
             name: name.to_string(),
             cmd,
             timeout: opts.timeout,
+            group: opts.group.max(1),
             caps: Capabilities::default(),
             wants_expect: false,
             proc: None,
@@ -431,7 +433,7 @@ impl Backend for ExecBackend {
         &self.caps
     }
     fn batch_size(&self) -> usize {
-        64
+        self.group
     }
     fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
         self.run_group(cases)

@@ -117,11 +117,13 @@ pub trait Backend {
 pub struct Options {
     /// Time allowed for one group of cases before the process is killed.
     pub timeout: Duration,
+    /// Cases written to a process before each `flush` (PROTOCOL.md §2).
+    pub group: usize,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { timeout: Duration::from_secs(10) }
+        Options { timeout: Duration::from_secs(10), group: 64 }
     }
 }
 

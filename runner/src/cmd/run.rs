@@ -51,6 +51,10 @@ pub struct Args {
     /// Seconds an external implementation may take for one group of cases.
     #[arg(long, value_name = "SECS", default_value_t = 10.0)]
     timeout: f64,
+    /// Cases written to an implementation process before each flush (a GPU implementation draws
+    /// one batch per group; the timeout applies per group).
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    group: usize,
     /// Print the time spent per backend (lookups vs. verdicts and reporting).
     #[arg(long)]
     profile: bool,
@@ -127,7 +131,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         (Prior::default(), JsonlReporter::create(&results_path, &meta)?)
     };
 
-    let opts = Options { timeout: Duration::from_secs_f64(a.timeout) };
+    if a.group == 0 {
+        bail!("--group must be at least 1");
+    }
+    let opts = Options { timeout: Duration::from_secs_f64(a.timeout), group: a.group };
     let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(names.len());
     for n in &names {
         backends.push(backend::open(n, &opts)?);
