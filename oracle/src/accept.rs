@@ -4,7 +4,8 @@
 
 use crate::profile::ProfileSpec;
 use crate::sample::TexelEval;
-use shadowcheck_model::Interval;
+use crate::unorm::{f32_candidates, unorm_max, Exact};
+use shadowcheck_model::{Acceptance, Interval};
 
 /// The texels one level contributes and their bilinear / linear weights' parameters.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -233,4 +234,47 @@ pub fn merge(mut v: Vec<Interval>) -> Vec<Interval> {
         }
     }
     out
+}
+
+/// The last steps from per-scenario intervals to the acceptance sets [strict, lenient]:
+/// - `colour_bits`: a filtered colour value may be returned at the format's precision (either
+///   neighbour, §2.3.5.2): ends widen to the neighbouring multiples of 1/(2^b − 1);
+/// - the result reaches the observer as an f32: ends widen outward to the nearest f32;
+/// - sets stay inside `range` (r ∈ [fail, 1] for a comparison), and rounding noise of weighted sums
+///   (an ulp) is absorbed so that the sets hold the spec value;
+/// - a looser profile never accepts less: lenient is united with strict.
+pub fn finalize(
+    mut sets: [Vec<Interval>; 2],
+    colour_bits: Option<u32>,
+    range: (f64, f64),
+    spec_value: Option<f64>,
+) -> [Acceptance; 2] {
+    for set in sets.iter_mut() {
+        for iv in set.iter_mut() {
+            if let Some(bits) = colour_bits {
+                let m = unorm_max(bits) as f64;
+                (iv.lo, iv.hi) = ((iv.lo * m).floor() / m, (iv.hi * m).ceil() / m);
+            }
+            (iv.lo, iv.hi) = (
+                f32_candidates(Exact::F(iv.lo))[0],
+                f32_candidates(Exact::F(iv.hi))[1],
+            );
+            (iv.lo, iv.hi) = (iv.lo.max(range.0), iv.hi.min(range.1));
+        }
+        if let Some(v) = spec_value {
+            if !set.iter().any(|i| i.contains(v)) {
+                if let Some(iv) = set
+                    .iter_mut()
+                    .find(|i| (i.lo - v).abs() <= 1e-12 || (i.hi - v).abs() <= 1e-12)
+                {
+                    (iv.lo, iv.hi) = (iv.lo.min(v), iv.hi.max(v));
+                }
+            }
+        }
+    }
+    let [s, l] = sets;
+    let strict = Acceptance(merge(s));
+    let mut len = l;
+    len.extend(strict.0.iter().copied());
+    [strict, Acceptance(merge(len))]
 }

@@ -492,58 +492,20 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
             e.note(format!("filtered r is implementation-dependent, \"proportional to the number of comparison passes or failures\" ({}); the spec value is the bilinear-weighted fraction", rules.filter_cite));
         }
     }
-    if kind == Kind::Colour {
-        // A filtered colour value may be returned at the format's precision (either neighbour,
-        // §2.3.5.2): widen to the neighbouring multiples of 1/(2^b − 1).
-        if let Some(bits) = fmt.unorm_bits() {
-            let m = crate::unorm::unorm_max(bits) as f64;
-            for set in accept.iter_mut() {
-                for iv in set.iter_mut() {
-                    (iv.lo, iv.hi) = ((iv.lo * m).floor() / m, (iv.hi * m).ceil() / m);
-                }
-            }
-        }
-    }
-    // The result reaches the observer as an f32: each end widens to its f32 neighbour outward.
-    for set in accept.iter_mut() {
-        for iv in set.iter_mut() {
-            (iv.lo, iv.hi) = (
-                f32_candidates(Exact::F(iv.lo))[0],
-                f32_candidates(Exact::F(iv.hi))[1],
-            );
-        }
-    }
-    // Weighted sums of equal values may differ from the value by an ulp: the sets are widened by such
-    // rounding noise to hold the spec value, and kept inside the range r can take.
-    let (rlo, rhi) = match kind {
+    let colour_bits = if kind == Kind::Colour {
+        fmt.unorm_bits()
+    } else {
+        None
+    };
+    let range = match kind {
         Kind::Compare => (pass_v.min(fail_v), pass_v.max(fail_v)),
         _ => (f64::NEG_INFINITY, f64::INFINITY),
     };
-    for set in accept.iter_mut() {
-        for iv in set.iter_mut() {
-            (iv.lo, iv.hi) = (iv.lo.max(rlo), iv.hi.min(rhi));
-        }
-        if let Some(v) = spec_value {
-            if !set.iter().any(|i| i.contains(v)) {
-                if let Some(iv) = set
-                    .iter_mut()
-                    .find(|i| (i.lo - v).abs() <= 1e-12 || (i.hi - v).abs() <= 1e-12)
-                {
-                    (iv.lo, iv.hi) = (iv.lo.min(v), iv.hi.max(v));
-                }
-            }
-        }
-    }
-    let to_acc = |v: &Vec<Interval>| Acceptance(accept::merge(v.clone()));
-    let strict = to_acc(&accept[0]);
+    let [strict, lenient] = accept::finalize(accept, colour_bits, range, spec_value);
     // A choice the spec leaves to the implementation is worth a label only where it changes the result.
     if !matches!(spec_value, Some(v) if strict.0 == [Interval::point(v)]) {
         choice_notes.into_iter().for_each(|n| e.note(n));
     }
-    // A looser profile never accepts less: lenient is the union with strict.
-    let mut len = accept[1].clone();
-    len.extend(strict.0.iter().copied());
-    let lenient = Acceptance(accept::merge(len));
     Ok(finish(e, spec_value, [strict, lenient], layouts, fp))
 }
 
