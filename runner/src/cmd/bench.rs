@@ -1,9 +1,61 @@
-//! `shadowcheck bench` (being built).
+//! `shadowcheck bench`: throughput of the oracle, the soft implementation and each GL backend (end
+//! to end against the bare-draw floor), and wall time / peak memory of the default suite per driver.
+//! Targets are goals reported against, never assertions. See reports/BENCH.md.
+use anyhow::Context;
+use shadowcheck_runner::bench::{self, markdown, run::Options};
+use shadowcheck_runner::gl::BackendName;
+use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::Duration;
 
 #[derive(clap::Args)]
-pub struct Args {}
+pub struct Args {
+    /// A few seconds instead of minutes (CI smoke): fewer cases, only egl:llvmpipe:core unless
+    /// --backend is given, suite rows over the 2D NEAREST fixtures.
+    #[arg(long)]
+    quick: bool,
+    /// Print the report as JSON on stdout instead of the table.
+    #[arg(long)]
+    json: bool,
+    /// Only GL backends whose name contains this (repeatable): `llvmpipe`, `egl:zink:core`.
+    #[arg(long = "backend", short = 'b', value_name = "B")]
+    backends: Vec<String>,
+    /// The default fixtures. Default: cases/fixtures.
+    #[arg(long, value_name = "PATH", default_value = super::run::DEFAULT_FIXTURES)]
+    fixtures: PathBuf,
+    /// Also write the Markdown report (table + machine) to FILE, e.g. reports/BENCH.md; only the
+    /// generated block of an existing file is replaced.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    output: Option<PathBuf>,
+    /// (internal) Measure the bare-draw floor of this GL backend in this process and print JSON.
+    #[arg(long, hide = true, value_name = "NAME")]
+    floor_child: Option<String>,
+    #[arg(long, hide = true, default_value_t = 1024)]
+    floor_size: i32,
+    #[arg(long, hide = true, default_value_t = 1.0)]
+    floor_seconds: f64,
+}
 
-pub fn main(_args: Args) -> anyhow::Result<ExitCode> {
-    anyhow::bail!("`bench` is not built yet")
+pub fn main(a: Args) -> anyhow::Result<ExitCode> {
+    if let Some(name) = &a.floor_child {
+        let name: BackendName = name.parse()?;
+        let r = bench::floor::measure(name, a.floor_size.clamp(1, 4096), Duration::from_secs_f64(a.floor_seconds.clamp(0.0, 600.0)));
+        println!("{}", serde_json::to_string(&r)?);
+        return Ok(ExitCode::SUCCESS);
+    }
+    let exe = std::env::current_exe().context("locating the shadowcheck executable")?;
+    let opts = Options { quick: a.quick, backends: a.backends.clone(), fixtures: a.fixtures.clone(), exe };
+    let mut progress = |m: &str| eprintln!("bench: {m}");
+    let report = bench::run::run(&opts, &mut progress);
+    if let Some(path) = &a.output {
+        let old = std::fs::read_to_string(path).ok();
+        std::fs::write(path, markdown::document(&report, old.as_deref())).with_context(|| format!("writing {}", path.display()))?;
+        eprintln!("bench: wrote {}", path.display());
+    }
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&report)?);
+    } else {
+        print!("{}", markdown::text(&report));
+    }
+    Ok(ExitCode::SUCCESS)
 }

@@ -1,1 +1,0 @@
-//! Throughput measurement behind `shadowcheck bench` (being built).

@@ -1,0 +1,134 @@
+//! Single-thread CPU measurements: the oracle's verdicts and the `soft` unit's raw lookups.
+
+use super::{ids, targets, Goal, Row, Target};
+use shadowcheck_model::{ApiPath, Case, Channel, Expectation, Filter, Spec};
+use shadowcheck_soft::bench::Workload;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+/// Repeats `f` (one pass over a workload) until at least `min` has elapsed (and at least once);
+/// returns (passes, seconds).
+pub fn repeat_for(min: Duration, mut f: impl FnMut()) -> (u64, f64) {
+    let t0 = Instant::now();
+    let mut n = 0u64;
+    loop {
+        f();
+        n += 1;
+        let e = t0.elapsed();
+        if e >= min {
+            return (n, e.as_secs_f64());
+        }
+    }
+}
+
+/// What an exact implementation returns through `api`: the spec value (or the middle of the first
+/// strict interval) placed per the expectation's layout; `None` without a layout.
+pub fn exact_rgba(e: &Expectation, api: ApiPath) -> Option<[f64; 4]> {
+    let layout = e.layout.get(&api)?;
+    let r = e.spec_value.or_else(|| e.accept.values().next().and_then(|a| a.0.first()).map(|i| (i.lo + i.hi) / 2.0)).unwrap_or(0.0);
+    Some(layout.map(|c| match c {
+        Channel::R => r,
+        Channel::Zero | Channel::Unused => 0.0,
+        Channel::One => 1.0,
+    }))
+}
+
+/// The oracle over `cases`, one thread: `evaluate` once per case and `Expectation::judge` of the
+/// exact answer once per API path (a verdict = one judged (case, path)); then `judge` alone
+/// against the stored expectations, which is what a run does per observation. Cases the oracle
+/// rejects (GL errors, not applicable) count as evaluated, with no verdict.
+pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Row> {
+    let mut verdicts_per_pass = 0u64;
+    let (passes, secs) = repeat_for(min, || {
+        let mut v = 0u64;
+        for c in cases {
+            if let Ok(ev) = shadowcheck_oracle::evaluate(black_box(c)) {
+                for &api in &c.api {
+                    if let Some(rgba) = exact_rgba(&ev.expect, api) {
+                        black_box(ev.expect.judge(api, rgba));
+                        v += 1;
+                    }
+                }
+            }
+        }
+        verdicts_per_pass = v;
+    });
+    let verdicts = verdicts_per_pass * passes;
+    let mut rows = vec![Row::new(
+        ids::ORACLE_VERDICTS,
+        None,
+        verdicts as f64 / secs,
+        "verdicts/s/core",
+        format!("evaluate + judge, {} cases ({verdicts_per_pass} case x path verdicts) x {passes} passes in {secs:.2} s, 1 thread", cases.len()),
+    )
+    .with_target(Target::new(Goal::AtLeast, targets::ORACLE_VERDICTS_PER_S, "issue 6"))];
+
+    // judge only: the stored expectation against the exact answer.
+    let judged: Vec<(&Expectation, ApiPath, [f64; 4])> = cases
+        .iter()
+        .filter_map(|c| c.expect.as_ref().map(|e| (c, e)))
+        .flat_map(|(c, e)| c.api.iter().filter_map(move |&api| exact_rgba(e, api).map(|rgba| (e, api, rgba))))
+        .collect();
+    if !judged.is_empty() {
+        let (passes, secs) = repeat_for(min, || {
+            for (e, api, rgba) in &judged {
+                black_box(e.judge(*api, *rgba));
+            }
+        });
+        rows.push(Row::new(
+            ids::ORACLE_JUDGE,
+            None,
+            (judged.len() as u64 * passes) as f64 / secs,
+            "verdicts/s/core",
+            format!("Expectation::judge against the fixtures' stored expectations, {} verdicts x {passes} passes in {secs:.2} s, 1 thread", judged.len()),
+        ));
+    }
+    rows
+}
+
+/// Size of the bench texture (texels per side) shared by the soft workload and the GL floor.
+pub const BENCH_TEXTURE: u32 = 64;
+
+/// The `soft` unit's raw lookups per second, one thread, on `soft::bench::Workload` (D24 2D,
+/// LEQUAL, REPEAT) with NEAREST (the figure compared with llvmpipe) and LINEAR (PCF, 4 texels).
+pub fn soft_rows(lookups: usize, min: Duration) -> Result<Vec<Row>, String> {
+    let mut rows = Vec::new();
+    for (id, filter) in [(ids::SOFT_LOOKUPS, Filter::Nearest), (ids::SOFT_LOOKUPS_LINEAR, Filter::Linear)] {
+        let w = Workload::new(Spec::Gl46, BENCH_TEXTURE, filter, lookups).map_err(|e| e.to_string())?;
+        let mut sum = 0.0;
+        let (passes, secs) = repeat_for(min, || sum += black_box(&w).run());
+        black_box(sum);
+        rows.push(Row::new(
+            id,
+            None,
+            (lookups as u64 * passes) as f64 / secs,
+            "lookups/s/core",
+            format!(
+                "PreparedTexture::lookup, {BENCH_TEXTURE}x{BENCH_TEXTURE} d24 2d {} lequal, {lookups} lookups x {passes} passes in {secs:.2} s, 1 thread",
+                filter.key()
+            ),
+        ));
+    }
+    Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use shadowcheck_model::{Acceptance, Interval, Profile};
+    use std::collections::BTreeMap;
+
+    #[test]
+    fn exact_rgba_follows_the_layout_and_is_judged_strict() {
+        let mut accept = BTreeMap::new();
+        accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
+        accept.insert(Profile::Lenient, Acceptance(vec![Interval::point(1.0)]));
+        let mut layout = BTreeMap::new();
+        layout.insert(ApiPath::GlslCore, [Channel::R, Channel::Zero, Channel::Zero, Channel::One]);
+        let e = Expectation { spec_value: Some(1.0), accept, layout, implementation_defined: None, citations: vec![] };
+        let rgba = exact_rgba(&e, ApiPath::GlslCore).unwrap();
+        assert_eq!(rgba, [1.0, 0.0, 0.0, 1.0]);
+        assert_eq!(e.judge(ApiPath::GlslCore, rgba), Some(shadowcheck_model::Judgement::Strict));
+        assert!(exact_rgba(&e, ApiPath::Es300).is_none());
+    }
+}

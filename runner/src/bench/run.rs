@@ -1,0 +1,192 @@
+//! The bench as a whole: which measurements run, in which order, with which targets.
+
+use super::floor::{self, FloorResult};
+use super::suite::{self, nearest_2d_fixtures};
+use super::{cpu, ids, machine::Machine, targets, Goal, Report, Row, Target, Unavailable, SCHEMA_VERSION};
+use crate::gl::names::{BackendName, Driver};
+use std::path::PathBuf;
+use std::time::Duration;
+
+/// What to measure.
+#[derive(Debug, Clone)]
+pub struct Options {
+    /// Seconds instead of minutes: fewer cases, shorter timings, only `egl:llvmpipe:core` unless
+    /// backends are named, the suite rows over the 2D NEAREST fixtures only.
+    pub quick: bool,
+    /// Keep GL backends whose name contains one of these (`llvmpipe`, `egl:zink:core`); empty = all.
+    pub backends: Vec<String>,
+    /// The default fixtures (a directory, or one file).
+    pub fixtures: PathBuf,
+    /// The `shadowcheck` executable (suite children).
+    pub exe: PathBuf,
+}
+
+/// GL backends to measure, before asking the drivers (names that can never work are left out).
+pub fn candidates(o: &Options) -> Vec<String> {
+    BackendName::all()
+        .into_iter()
+        .filter(|b| b.static_unavailability().is_none())
+        .map(|b| b.to_string())
+        .filter(|n| if o.backends.is_empty() { !o.quick || n == "egl:llvmpipe:core" } else { o.backends.iter().any(|f| n.contains(f.as_str())) })
+        .collect()
+}
+
+fn floor_size(quick: bool) -> i32 {
+    if quick {
+        256
+    } else {
+        1024
+    }
+}
+
+fn floor_row(id: &str, backend: &str, f: &FloorResult, extra: &str) -> Row {
+    Row::new(
+        id,
+        Some(backend),
+        f.per_s(),
+        "lookups/s",
+        format!("{} draws of {} fragments in {:.2} s{extra}; {}", f.draws, f.lookups / f.draws.max(1) as u64, f.seconds, f.renderer),
+    )
+}
+
+/// Runs every measurement. `progress` gets a line before each step (the library never prints).
+pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
+    let min = if o.quick { Duration::from_millis(150) } else { Duration::from_secs(2) };
+    let mut rows = Vec::new();
+    let mut unavailable = Vec::new();
+    let mut gl_version = None;
+    let load_avg = Machine::describe(None).load_average;
+
+    progress("oracle: loading the default fixtures");
+    let set = crate::run::load_cases(std::slice::from_ref(&o.fixtures));
+    let mut cases: Vec<_> = set.cases.into_iter().map(|l| l.case).collect();
+    if o.quick {
+        cases = cases.into_iter().step_by(10).collect();
+    }
+    if cases.is_empty() {
+        unavailable.push(Unavailable { what: "oracle".into(), backend: None, reason: format!("no case loaded from {}", o.fixtures.display()) });
+    } else {
+        progress(&format!("oracle: {} cases, one thread", cases.len()));
+        rows.extend(cpu::oracle_rows(&cases, min));
+    }
+    drop(cases);
+
+    progress("soft: raw lookups, one thread");
+    match cpu::soft_rows(if o.quick { 1 << 16 } else { 1 << 20 }, min) {
+        Ok(r) => rows.extend(r),
+        Err(e) => unavailable.push(Unavailable { what: "soft".into(), backend: None, reason: e }),
+    }
+
+    let floor_min = if o.quick { Duration::from_millis(100) } else { Duration::from_secs(1) };
+    let e2e_fixtures = if o.quick {
+        let one = o.fixtures.join("gl46/2d/nearest.json");
+        if one.is_file() { vec![one] } else { nearest_2d_fixtures(&o.fixtures) }
+    } else {
+        nearest_2d_fixtures(&o.fixtures)
+    };
+    let mut available: Vec<String> = Vec::new();
+    for name in candidates(o) {
+        progress(&format!("{name}: bare-draw floor"));
+        let f = floor::run_child(&name, floor_size(o.quick), floor_min, &[]);
+        if !f.ok {
+            unavailable.push(Unavailable { what: "gl".into(), backend: Some(name.clone()), reason: f.error.unwrap_or_default() });
+            continue;
+        }
+        gl_version.get_or_insert_with(|| f.version.clone());
+        available.push(name.clone());
+        let floor_per_s = f.per_s();
+        rows.push(floor_row(ids::GL_FLOOR, &name, &f, ""));
+        progress(&format!("{name}: end to end over the 2D NEAREST fixtures"));
+        match suite::e2e(&name, &e2e_fixtures) {
+            Ok(e) => {
+                let detail = format!(
+                    "{} verified tests ({} skipped) of {} cases in {:.2} s: load {:.2} s, worker start {:.2} s, run {:.2} s (backend {:.2} s, verdicts {:.2} s)",
+                    e.verified, e.skipped, e.cases_loaded, e.total_s(), e.load_s, e.open_s, e.run_s, e.backend_s, e.verdict_s
+                );
+                let mut r = Row::new(ids::GL_E2E, Some(&name), e.per_s(), "cases/s", detail);
+                if name.contains(":llvmpipe:") {
+                    r = r.with_target(Target::new(Goal::AtLeast, targets::LLVMPIPE_E2E_PER_S, "issue 6 (llvmpipe, 2D NEAREST)"));
+                }
+                rows.push(r);
+                rows.push(Row::new(ids::GL_E2E_STEADY, Some(&name), e.steady_per_s(), "cases/s", "verified tests / run time (no fixture load, no worker start)".into()));
+                rows.push(
+                    Row::new(ids::GL_RATIO, Some(&name), e.per_s() / floor_per_s, "x", format!("end to end {:.3e} cases/s over floor {:.3e} lookups/s", e.per_s(), floor_per_s))
+                        .with_target(Target::new(Goal::AtLeast, targets::E2E_OVER_FLOOR, "issue 6")),
+                );
+            }
+            Err(e) => unavailable.push(Unavailable { what: "gl end to end".into(), backend: Some(name.clone()), reason: e }),
+        }
+    }
+
+    // llvmpipe's single-thread lookup rate: the bar for `soft`.
+    if available.iter().any(|n| n == "egl:llvmpipe:core") {
+        progress("egl:llvmpipe:core: bare-draw floor with LP_NUM_THREADS=1");
+        let f = floor::run_child("egl:llvmpipe:core", floor_size(o.quick), floor_min, &[("LP_NUM_THREADS", "1")]);
+        if f.ok {
+            let one = f.per_s();
+            rows.push(floor_row(ids::GL_FLOOR_1T, "egl:llvmpipe:core", &f, ", LP_NUM_THREADS=1"));
+            if let Some(s) = rows.iter_mut().find(|r| r.id == ids::SOFT_LOOKUPS) {
+                *s = s.clone().with_target(Target::new(Goal::AtLeast, one, "llvmpipe floor, LP_NUM_THREADS=1"));
+            }
+        } else {
+            unavailable.push(Unavailable { what: "gl floor, 1 thread".into(), backend: Some("egl:llvmpipe:core".into()), reason: f.error.unwrap_or_default() });
+        }
+    } else {
+        unavailable.push(Unavailable {
+            what: "soft target".into(),
+            backend: None,
+            reason: "egl:llvmpipe:core is not available (or filtered out): no single-thread llvmpipe rate to compare with".into(),
+        });
+    }
+
+    // The default suite per driver (quick: the 2D NEAREST fixtures).
+    let suite_fixtures = if o.quick { e2e_fixtures.clone() } else { vec![o.fixtures.clone()] };
+    let what = if o.quick { "2D NEAREST fixtures (quick)" } else { "default fixtures" };
+    let out_root = std::env::temp_dir().join(format!("shadowcheck-bench-{}", std::process::id()));
+    let mut groups: Vec<(String, Vec<String>)> = vec![("soft".into(), vec!["soft".into()])];
+    for d in Driver::ALL {
+        let bs: Vec<String> = available.iter().filter(|n| n.split(':').nth(1) == Some(d.key())).cloned().collect();
+        if !bs.is_empty() {
+            groups.push((d.key().to_string(), bs));
+        }
+    }
+    let mut total = 0.0;
+    let mut total_drivers = Vec::new();
+    for (label, bs) in groups {
+        progress(&format!("suite: {label} ({})", bs.join(", ")));
+        match suite::suite(&o.exe, &bs, &suite_fixtures, &out_root.join(&label)) {
+            Ok(s) => {
+                let detail = format!("`shadowcheck run` over the {what}, backends {}, exit {}", bs.join(" "), s.exit_code);
+                rows.push(Row::new(ids::SUITE_WALL, Some(&label), s.wall_s, "s", detail.clone()));
+                rows.push(
+                    Row::new(ids::SUITE_RSS, Some(&label), s.peak_rss_mib, "MiB", format!("largest process (runner or worker), wait4 ru_maxrss; {detail}"))
+                        .with_target(Target::new(Goal::AtMost, targets::PEAK_RSS_MIB, "issue 6")),
+                );
+                if label != "soft" {
+                    total += s.wall_s;
+                    total_drivers.push(label);
+                }
+            }
+            Err(e) => unavailable.push(Unavailable { what: "suite".into(), backend: Some(label), reason: e }),
+        }
+    }
+    let _ = std::fs::remove_dir_all(&out_root);
+    if !total_drivers.is_empty() {
+        let all3 = total_drivers.len() == Driver::ALL.len();
+        let mut r = Row::new(
+            ids::SUITE_TOTAL,
+            None,
+            total,
+            "s",
+            format!("sum over {} ({what}){}", total_drivers.join(", "), if all3 { "" } else { "; not every driver was measured" }),
+        );
+        if !o.quick && all3 {
+            r = r.with_target(Target::new(Goal::Below, targets::SUITE_TOTAL_S, "issue 6 (2-core machine)"));
+        }
+        rows.push(r);
+    }
+
+    let mut machine = Machine::describe(gl_version.as_deref());
+    machine.load_average = load_avg;
+    Report { schema: SCHEMA_VERSION, quick: o.quick, machine, rows, unavailable }
+}

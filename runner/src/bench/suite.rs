@@ -1,0 +1,150 @@
+//! End-to-end measurements: verified cases per second through a GL backend (in process: fixture
+//! load, worker start, upload, draw, read-back, verdict), and the wall time and peak RSS of the
+//! default suite per driver (a `shadowcheck run` child, reaped with `wait4` for its rusage).
+
+use crate::backend::{self, Options};
+use crate::events::Fanout;
+use crate::resume::Prior;
+use crate::run::{self, Settings};
+use crate::verdict::Outcome;
+use std::path::{Path, PathBuf};
+use std::process::Stdio;
+use std::time::Instant;
+
+/// One end-to-end run of a backend over a set of fixtures.
+#[derive(Debug, Clone, PartialEq)]
+pub struct E2e {
+    pub cases_loaded: usize,
+    /// Tests (case x path) with a verdict: Pass, Warn or Fail.
+    pub verified: usize,
+    pub skipped: usize,
+    pub load_s: f64,
+    /// Starting the worker process and its handshake.
+    pub open_s: f64,
+    /// Sending, drawing, reading back and judging every case.
+    pub run_s: f64,
+    /// Of run_s: inside the backend (worker I/O, upload, draw, read-back).
+    pub backend_s: f64,
+    /// Of run_s: judging answers.
+    pub verdict_s: f64,
+}
+
+impl E2e {
+    pub fn total_s(&self) -> f64 {
+        self.load_s + self.open_s + self.run_s
+    }
+    pub fn per_s(&self) -> f64 {
+        self.verified as f64 / self.total_s()
+    }
+    pub fn steady_per_s(&self) -> f64 {
+        self.verified as f64 / self.run_s
+    }
+}
+
+/// The 2D NEAREST fixture files under `root` (`<spec>/2d/nearest.json`), or `root` itself when it
+/// is a file.
+pub fn nearest_2d_fixtures(root: &Path) -> Vec<PathBuf> {
+    if root.is_file() {
+        return vec![root.to_path_buf()];
+    }
+    let mut v: Vec<PathBuf> = std::fs::read_dir(root)
+        .map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path().join("2d").join("nearest.json")).filter(|p| p.is_file()).collect())
+        .unwrap_or_default();
+    v.sort();
+    v
+}
+
+/// Runs `backend` over `fixtures` in this process with no reporters and no flake re-runs.
+pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
+    let t0 = Instant::now();
+    let set = run::load_cases(fixtures);
+    let load_s = t0.elapsed().as_secs_f64();
+    if set.cases.is_empty() {
+        return Err(format!("no case loaded from {fixtures:?}"));
+    }
+    let t1 = Instant::now();
+    let mut b = backend::open(backend_name, &Options::default()).map_err(|e| e.to_string())?;
+    let open_s = t1.elapsed().as_secs_f64();
+    let t2 = Instant::now();
+    let (results, timing) = run::run_backend(b.as_mut(), &set, &Prior::default(), &Settings::default(), &mut Fanout::default());
+    let run_s = t2.elapsed().as_secs_f64();
+    drop(b);
+    let verified = results.iter().filter(|r| matches!(r.outcome, Outcome::Pass | Outcome::Warn | Outcome::Fail)).count();
+    let skipped = results.iter().filter(|r| r.outcome == Outcome::Skip).count();
+    if verified == 0 {
+        return Err(format!("{backend_name} verified no case of {} ({} skipped)", set.cases.len(), skipped));
+    }
+    Ok(E2e {
+        cases_loaded: set.cases.len(),
+        verified,
+        skipped,
+        load_s,
+        open_s,
+        run_s,
+        backend_s: timing.backend_s,
+        verdict_s: timing.verdict_s,
+    })
+}
+
+/// Wall time and peak memory of one `shadowcheck run` child.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SuiteRun {
+    pub wall_s: f64,
+    /// Largest resident set of the run process or its workers (wait4's ru_maxrss), MiB.
+    pub peak_rss_mib: f64,
+    pub exit_code: i32,
+}
+
+/// Runs `shadowcheck run --backend B... --fixtures F... --out OUT --no-rerun` and reaps it with
+/// wait4. Exit codes 0 (all passed) and 100 (failures) are both a finished suite.
+pub fn suite(exe: &Path, backends: &[String], fixtures: &[PathBuf], out: &Path) -> Result<SuiteRun, String> {
+    let mut c = std::process::Command::new(exe);
+    c.arg("run");
+    for b in backends {
+        c.args(["--backend", b]);
+    }
+    for f in fixtures {
+        c.arg("--fixtures").arg(f);
+    }
+    c.arg("--out").arg(out).arg("--no-rerun");
+    c.stdin(Stdio::null()).stdout(Stdio::null()).stderr(Stdio::null());
+    let t0 = Instant::now();
+    let child = c.spawn().map_err(|e| format!("cannot start {}: {e}", exe.display()))?;
+    let pid = child.id() as libc::pid_t;
+    let mut status: libc::c_int = 0;
+    // SAFETY: rusage is plain old data, zero is a valid value.
+    let mut ru: libc::rusage = unsafe { std::mem::zeroed() };
+    let r = loop {
+        // SAFETY: pid is our child, not yet reaped (std's Child is not waited on); pointers are valid.
+        let r = unsafe { libc::wait4(pid, &mut status, 0, &mut ru) };
+        if r == -1 && std::io::Error::last_os_error().kind() == std::io::ErrorKind::Interrupted {
+            continue;
+        }
+        break r;
+    };
+    let wall_s = t0.elapsed().as_secs_f64();
+    if r != pid {
+        return Err(format!("wait4: {}", std::io::Error::last_os_error()));
+    }
+    let exit_code = if libc::WIFEXITED(status) { libc::WEXITSTATUS(status) } else { -libc::WTERMSIG(status) };
+    if exit_code != 0 && exit_code != 100 {
+        return Err(format!("`shadowcheck run` ended with {exit_code} (see {})", out.display()));
+    }
+    // ru_maxrss is in KiB on Linux.
+    Ok(SuiteRun { wall_s, peak_rss_mib: ru.ru_maxrss as f64 / 1024.0, exit_code })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nearest_2d_fixtures_are_found_per_spec() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures");
+        let v = nearest_2d_fixtures(&root);
+        assert!(v.iter().any(|p| p.ends_with("gl46/2d/nearest.json")), "{v:?}");
+        assert!(v.iter().all(|p| p.ends_with("2d/nearest.json")));
+        let one = root.join("gl46/2d/nearest.json");
+        assert_eq!(nearest_2d_fixtures(&one), vec![one]);
+    }
+}
