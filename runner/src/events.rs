@@ -270,6 +270,18 @@ pub trait Reporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()>;
 }
 
+/// Where events go: the reporters directly ([`Fanout`]) or, from a backend's thread, a channel to
+/// the thread that owns the reporters ([`crate::parallel`]).
+pub trait Sink {
+    fn emit(&mut self, ev: &Event<'_>);
+}
+
+impl Sink for Fanout {
+    fn emit(&mut self, ev: &Event<'_>) {
+        Fanout::emit(self, ev)
+    }
+}
+
 /// Sends every event to each reporter; the first I/O error is kept and returned at the end (a full
 /// disk must not hide the rest of the run).
 #[derive(Default)]

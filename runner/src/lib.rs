@@ -10,6 +10,7 @@ pub mod baseline;
 pub mod events;
 pub mod gl;
 pub mod mutants;
+pub mod parallel;
 pub mod report;
 pub mod resume;
 pub mod run;

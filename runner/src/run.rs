@@ -8,7 +8,7 @@
 
 use crate::backend::{ApiOutcome, Backend, CaseOutcome, Support};
 use crate::baseline::Lists;
-use crate::events::{Counts, Event, Fanout, LoadError, Rgba, Summary, Tags, TestResult, Timing};
+use crate::events::{Counts, Event, Fanout, LoadError, Rgba, Sink, Summary, Tags, TestResult, Timing};
 use crate::resume::Prior;
 use crate::shard::Shard;
 use crate::verdict::{self, Outcome, Status};
@@ -98,7 +98,7 @@ pub struct Settings {
 
 struct Ctx<'a> {
     settings: &'a Settings,
-    fanout: &'a mut Fanout,
+    fanout: &'a mut dyn Sink,
     results: Vec<TestResult>,
 }
 
@@ -165,7 +165,7 @@ pub fn run_backend(
     set: &CaseSet,
     prior: &Prior,
     settings: &Settings,
-    fanout: &mut Fanout,
+    fanout: &mut dyn Sink,
 ) -> (Vec<TestResult>, Timing) {
     let name = backend.name().to_string();
     let mut ctx = Ctx { settings, fanout, results: Vec::with_capacity(set.tests()) };
@@ -318,7 +318,8 @@ pub fn sort_results(results: &mut [TestResult]) {
     results.sort_by(|a, b| (a.backend.as_str(), a.test.as_str()).cmp(&(b.backend.as_str(), b.test.as_str())));
 }
 
-/// Runs every backend over `set` and finishes the run (sorted results, summary, `RunFinished`).
+/// Runs every backend over `set` (up to `jobs` backends at once, each in its own thread; the
+/// reporters stay on this thread) and finishes the run (sorted results, summary, `RunFinished`).
 pub fn run_all(
     backends: &mut [Box<dyn Backend>],
     set: &CaseSet,
@@ -326,16 +327,21 @@ pub fn run_all(
     settings: &Settings,
     fanout: &mut Fanout,
     out_dir: &Path,
+    jobs: usize,
 ) -> (Vec<TestResult>, Summary, Vec<Timing>) {
     let names: Vec<String> = backends.iter().map(|b| b.name().to_string()).collect();
     fanout.emit(&Event::RunStarted { backends: &names, tests: set.tests() * names.len(), out_dir });
     for e in &set.errors {
         fanout.emit(&Event::LoadError(e));
     }
+    let per_backend = if jobs <= 1 || backends.len() <= 1 {
+        backends.iter_mut().map(|b| run_backend(b.as_mut(), set, prior, settings, fanout)).collect()
+    } else {
+        crate::parallel::run_backends(backends, set, prior, settings, fanout, jobs)
+    };
     let mut all = Vec::new();
     let mut timings = Vec::new();
-    for b in backends.iter_mut() {
-        let (r, t) = run_backend(b.as_mut(), set, prior, settings, fanout);
+    for (r, t) in per_backend {
         all.extend(r);
         timings.push(t);
     }

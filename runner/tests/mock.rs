@@ -236,3 +236,22 @@ fn an_implementation_that_stops_reading_cannot_block_the_runner() {
     assert_eq!(status_of(&rows, "n=0001"), ["Timeout"]);
     assert_eq!(rows.iter().filter(|r| r.1 == "Pass").count(), 29);
 }
+
+#[test]
+fn parallel_backends_give_the_sequential_report() {
+    let (dir, fx) = setup("jobs", 40);
+    let args = |out: &std::path::Path, jobs: &str| {
+        run(&["-b", "mock:", "-b", "mock:fail=/less/", "-b", "mock:crash=n=0005,buffer", "--fixtures", &fx, "--jobs", jobs, "--out", out.to_str().unwrap()])
+    };
+    let (seq, par) = (dir.join("seq"), dir.join("par"));
+    let r1 = args(&seq, "1");
+    let r2 = args(&par, "3");
+    assert_eq!(r1.code, 100, "{}", r1.stderr);
+    assert_eq!(r2.code, 100, "{}", r2.stderr);
+    assert_eq!(results(&seq).len(), 120);
+    assert_eq!(results(&par), results(&seq));
+    assert_eq!(report_without_durations(&par), report_without_durations(&seq));
+    // One JUnit suite per backend.
+    let xml = std::fs::read_to_string(par.join("junit.xml")).unwrap();
+    assert_eq!(xml.matches("<testsuite ").count(), 3);
+}

@@ -98,7 +98,8 @@ pub enum BackendError {
 
 /// A backend. `run_batch` answers `cases.len()` outcomes in order; the cases it receives are
 /// already inside its capabilities (the runner filtered them) and carry only supported API paths.
-pub trait Backend {
+/// `Send`: backends may run in parallel threads (`--jobs`).
+pub trait Backend: Send {
     fn name(&self) -> &str;
     fn capabilities(&self) -> &Capabilities;
     fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome>;

@@ -55,6 +55,9 @@ pub struct Args {
     /// one batch per group; the timeout applies per group).
     #[arg(long, value_name = "N", default_value_t = 64)]
     group: usize,
+    /// Backends run at once, each on its own thread (default: the number of CPUs).
+    #[arg(long, short = 'j', value_name = "N")]
+    jobs: Option<usize>,
     /// Print the time spent per backend (lookups vs. verdicts and reporting).
     #[arg(long)]
     profile: bool,
@@ -155,7 +158,8 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     fanout.reporters.push(Box::new(jsonl));
     fanout.reporters.extend(report::file_reporters(&out_dir, &FileReports::default()));
     let settings = Settings { lists, rerun_regressions: !a.no_rerun, explicit_fixtures: !a.fixtures.is_empty() };
-    let (_, summary, _) = run::run_all(&mut backends, &set, &prior, &settings, &mut fanout, &out_dir);
+    let jobs = a.jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())).max(1);
+    let (_, summary, _) = run::run_all(&mut backends, &set, &prior, &settings, &mut fanout, &out_dir, jobs);
     drop(backends);
     if let Some((_, e)) = fanout.error {
         eprintln!("shadowcheck: error: writing reports in {}: {e}", out_dir.display());

@@ -1,0 +1,85 @@
+//! Several backends at once (`shadowcheck run --jobs N`): each runs on its own thread, its events
+//! travel over a channel to the calling thread, which alone owns the reporters. Results are the
+//! same as a sequential run (the final report is sorted; results.jsonl is keyed by backend and
+//! test, so the interleaving of its lines does not matter).
+
+use crate::backend::Backend;
+use crate::events::{Counts, Event, Fanout, Sink, TestResult, Timing};
+use crate::resume::Prior;
+use crate::run::{run_backend, CaseSet, Settings};
+use std::collections::VecDeque;
+use std::sync::mpsc::{self, Sender};
+use std::sync::Mutex;
+
+/// An event with owned data, as sent between threads (the events a backend run emits).
+enum Owned {
+    BackendStarted { backend: String, tests: usize },
+    Diagnostic { backend: String, message: String },
+    CaseFinished { result: Box<TestResult>, replayed: bool },
+    BatchFinished { backend: String },
+    BackendFinished { backend: String, counts: Counts, timing: Timing },
+}
+
+struct ChannelSink(Sender<Owned>);
+
+impl Sink for ChannelSink {
+    fn emit(&mut self, ev: &Event<'_>) {
+        let owned = match ev {
+            Event::BackendStarted { backend, tests } => Owned::BackendStarted { backend: backend.to_string(), tests: *tests },
+            Event::Diagnostic { backend, message } => Owned::Diagnostic { backend: backend.to_string(), message: message.to_string() },
+            Event::CaseFinished { result, replayed } => Owned::CaseFinished { result: Box::new((*result).clone()), replayed: *replayed },
+            Event::BatchFinished { backend } => Owned::BatchFinished { backend: backend.to_string() },
+            Event::BackendFinished { backend, counts, timing } => {
+                Owned::BackendFinished { backend: backend.to_string(), counts: (*counts).clone(), timing: (*timing).clone() }
+            }
+            // Run-level events are emitted by the calling thread only.
+            Event::RunStarted { .. } | Event::LoadError(_) | Event::RunFinished { .. } => return,
+        };
+        // The receiver lives until every backend thread has ended.
+        let _ = self.0.send(owned);
+    }
+}
+
+fn forward(fanout: &mut Fanout, m: &Owned) {
+    match m {
+        Owned::BackendStarted { backend, tests } => fanout.emit(&Event::BackendStarted { backend, tests: *tests }),
+        Owned::Diagnostic { backend, message } => fanout.emit(&Event::Diagnostic { backend, message }),
+        Owned::CaseFinished { result, replayed } => fanout.emit(&Event::CaseFinished { result, replayed: *replayed }),
+        Owned::BatchFinished { backend } => fanout.emit(&Event::BatchFinished { backend }),
+        Owned::BackendFinished { backend, counts, timing } => fanout.emit(&Event::BackendFinished { backend, counts, timing }),
+    }
+}
+
+/// Runs `backends` on up to `jobs` threads; returns each backend's results, in `backends` order.
+pub fn run_backends(
+    backends: &mut [Box<dyn Backend>],
+    set: &CaseSet,
+    prior: &Prior,
+    settings: &Settings,
+    fanout: &mut Fanout,
+    jobs: usize,
+) -> Vec<(Vec<TestResult>, Timing)> {
+    let n = backends.len();
+    let queue: Mutex<VecDeque<(usize, &mut Box<dyn Backend>)>> = Mutex::new(backends.iter_mut().enumerate().collect());
+    let done: Mutex<Vec<Option<(Vec<TestResult>, Timing)>>> = Mutex::new((0..n).map(|_| None).collect());
+    let (tx, rx) = mpsc::channel();
+    std::thread::scope(|s| {
+        for _ in 0..jobs.min(n) {
+            let mut sink = ChannelSink(tx.clone());
+            let (queue, done) = (&queue, &done);
+            s.spawn(move || loop {
+                let next = queue.lock().ok().and_then(|mut q| q.pop_front());
+                let Some((i, b)) = next else { break };
+                let r = run_backend(b.as_mut(), set, prior, settings, &mut sink);
+                if let Ok(mut d) = done.lock() {
+                    d[i] = Some(r);
+                }
+            });
+        }
+        drop(tx);
+        for m in rx {
+            forward(fanout, &m);
+        }
+    });
+    done.into_inner().unwrap_or_default().into_iter().map(|r| r.unwrap_or_default()).collect()
+}
