@@ -453,6 +453,8 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
                 t.dt,
                 dref,
                 match (t.pass, t.poss[0].two) {
+                    (_, true) if t.undefined.is_some() =>
+                        "either (the texel's value is left to the implementation)".to_string(),
                     (_, true) => "either (within reference precision)".to_string(),
                     (Some(p), _) =>
                         if p {

@@ -50,15 +50,15 @@ pub struct Args {
     /// The reference value Dref / R.
     #[arg(long = "ref", default_value_t = 0.5, allow_negative_numbers = true)]
     dref: f64,
-    /// Depth texel values (floats; unorm formats store the nearest integer). 1 → 1x1, 2 → 2x1, 4 → 2x2,
+    /// Depth texel values, comma-separated (floats; unorm formats store the nearest integer). 1 → 1x1, 2 → 2x1, 4 → 2x2,
     /// n → n x 1 (1D/2D/rect); one value per layer for arrays, per face for cube maps (6 per cube).
-    #[arg(long, value_delimiter = ',', num_args = 1.., default_values_t = vec![0.5], allow_negative_numbers = true)]
+    #[arg(long, value_delimiter = ',', num_args = 1, default_values_t = vec![0.5], allow_hyphen_values = true)]
     dt: Vec<f64>,
     /// Stencil values (DEPTH_STENCIL formats), same layout as --dt.
     #[arg(long, value_delimiter = ',', num_args = 1..)]
     st: Vec<u8>,
-    /// Texture coordinates s,t,r,q. Default: the centre of the image (cube: +X direction).
-    #[arg(long, value_delimiter = ',', num_args = 1..=4, allow_negative_numbers = true)]
+    /// Texture coordinates s,t,r,q (comma-separated). Default: the centre of the image (cube: +X direction).
+    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
     coord: Vec<f64>,
     /// Array layer (cube arrays: the cube index).
     #[arg(long, default_value_t = 0.0)]
