@@ -127,14 +127,7 @@ pub struct RunMeta {
 
 impl RunMeta {
     pub fn new() -> RunMeta {
-        RunMeta {
-            schema_version: SCHEMA_VERSION,
-            backends: vec![],
-            fixtures: vec![],
-            cases: None,
-            shard: None,
-            baseline: None,
-        }
+        RunMeta { schema_version: SCHEMA_VERSION, backends: vec![], fixtures: vec![], cases: None, shard: None, baseline: None }
     }
 }
 
@@ -249,20 +242,43 @@ impl Summary {
 /// What the runner tells its reporters.
 #[derive(Debug)]
 pub enum Event<'a> {
-    RunStarted { backends: &'a [String], tests: usize, out_dir: &'a std::path::Path },
+    RunStarted {
+        backends: &'a [String],
+        tests: usize,
+        out_dir: &'a std::path::Path,
+    },
     LoadError(&'a LoadError),
-    BackendStarted { backend: &'a str, tests: usize },
+    BackendStarted {
+        backend: &'a str,
+        tests: usize,
+    },
     /// Something an implementation or the runner wants a human to see (stderr lines, restarts).
-    Diagnostic { backend: &'a str, message: &'a str },
+    Diagnostic {
+        backend: &'a str,
+        message: &'a str,
+    },
     /// One test finished. `replayed`: read back from results.jsonl by `--resume` / `merge`
     /// (already on disk). A flake re-run sends the same test again with its final status.
-    CaseFinished { result: &'a TestResult, replayed: bool },
+    CaseFinished {
+        result: &'a TestResult,
+        replayed: bool,
+    },
     /// A batch of cases has been judged: a good moment to flush files (results.jsonl is flushed
     /// per batch, so a killed run loses at most the batch in flight, which `--resume` re-runs).
-    BatchFinished { backend: &'a str },
-    BackendFinished { backend: &'a str, counts: &'a Counts, timing: &'a Timing },
+    BatchFinished {
+        backend: &'a str,
+    },
+    BackendFinished {
+        backend: &'a str,
+        counts: &'a Counts,
+        timing: &'a Timing,
+    },
     /// The run is over: all results in report order (backend, then test name) and the totals.
-    RunFinished { results: &'a [TestResult], load_errors: &'a [LoadError], summary: &'a Summary },
+    RunFinished {
+        results: &'a [TestResult],
+        load_errors: &'a [LoadError],
+        summary: &'a Summary,
+    },
 }
 
 /// A subscriber to the event stream.

@@ -61,7 +61,8 @@ pub fn run_backends(
 ) -> Vec<(Vec<TestResult>, Timing)> {
     let n = backends.len();
     let queue: Mutex<VecDeque<(usize, &mut Box<dyn Backend>)>> = Mutex::new(backends.iter_mut().enumerate().collect());
-    let done: Mutex<Vec<Option<(Vec<TestResult>, Timing)>>> = Mutex::new((0..n).map(|_| None).collect());
+    type Finished = Option<(Vec<TestResult>, Timing)>;
+    let done: Mutex<Vec<Finished>> = Mutex::new((0..n).map(|_| None).collect());
     let (tx, rx) = mpsc::channel();
     std::thread::scope(|s| {
         for _ in 0..jobs.min(n) {

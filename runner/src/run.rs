@@ -383,7 +383,9 @@ mod tests {
                 .iter()
                 .map(|c| {
                     self.sent.push((c.id.clone(), c.api.clone()));
-                    CaseOutcome::Observed(c.api.iter().map(|&a| (a, ApiOutcome::Rgba { rgba: [1.0, 1.0, 1.0, 1.0], stored: None })).collect())
+                    CaseOutcome::Observed(
+                        c.api.iter().map(|&a| (a, ApiOutcome::Rgba { rgba: [1.0, 1.0, 1.0, 1.0], stored: None })).collect(),
+                    )
                 })
                 .collect()
         }
@@ -432,7 +434,11 @@ mod tests {
             errors: vec![],
         };
         let mut fake = Fake {
-            caps: Capabilities { specs: Some(vec!["gl46".into()]), api: Some(vec!["core".into(), "glsl130".into()]), ..Capabilities::default() },
+            caps: Capabilities {
+                specs: Some(vec!["gl46".into()]),
+                api: Some(vec!["core".into(), "glsl130".into()]),
+                ..Capabilities::default()
+            },
             sent: vec![],
         };
         let settings = Settings {
@@ -446,7 +452,8 @@ mod tests {
         assert_eq!(fake.sent, [("gl46/a".to_string(), vec![ApiPath::GlslCore])]);
         assert_eq!(timing.cases_sent, 1);
         assert_eq!(n.get(), 4);
-        let by: HashMap<&str, (&Status, Option<&str>)> = results.iter().map(|r| (r.test.as_str(), (&r.status, r.reason.as_deref()))).collect();
+        let by: HashMap<&str, (&Status, Option<&str>)> =
+            results.iter().map(|r| (r.test.as_str(), (&r.status, r.reason.as_deref()))).collect();
         assert_eq!(by["gl46/a@core"].0, &Status::Plain(Outcome::Pass));
         assert_eq!(by["gl46/a@glsl130"], (&Status::Plain(Outcome::Skip), Some("skips list: `@glsl130$`")));
         assert_eq!(by["gl46/a@ff"], (&Status::Plain(Outcome::Skip), Some("API path not supported by this backend")));
@@ -455,7 +462,11 @@ mod tests {
 
     #[test]
     fn resumed_tests_are_replayed_not_rerun() {
-        let set = CaseSet { files: vec!["f.json".into()], cases: vec![Loaded { case: case("gl46/a", Spec::Gl46, vec![ApiPath::GlslCore]), file: 0 }], errors: vec![] };
+        let set = CaseSet {
+            files: vec!["f.json".into()],
+            cases: vec![Loaded { case: case("gl46/a", Spec::Gl46, vec![ApiPath::GlslCore]), file: 0 }],
+            errors: vec![],
+        };
         let mut fake = Fake { caps: Capabilities::all(), sent: vec![] };
         let mut fanout = Fanout::default();
         let (first, _) = run_backend(&mut fake, &set, &Prior::default(), &Settings::default(), &mut fanout);

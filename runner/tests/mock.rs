@@ -22,7 +22,9 @@ fn all_pass_writes_every_report_and_exits_0() {
     assert_eq!(rows.len(), 40);
     assert!(rows.iter().all(|r| r.1 == "Pass" && r.2 == "mock:" && r.0.ends_with("@core")), "{rows:?}");
     // Ids with commas are quoted in the CSV.
-    assert!(std::fs::read_to_string(out.join("results.csv")).unwrap().starts_with("\"gl46/2d/d16/nearest/gequal/ref=0.5/texel=0,0/n=0001@core\",Pass,"));
+    assert!(std::fs::read_to_string(out.join("results.csv"))
+        .unwrap()
+        .starts_with("\"gl46/2d/d16/nearest/gequal/ref=0.5/texel=0,0/n=0001@core\",Pass,"));
     for f in ["results.jsonl", "results.csv", "failures.csv", "junit.xml", "report.json", "report.md"] {
         assert!(out.join(f).exists(), "{f} missing");
     }
@@ -191,13 +193,7 @@ fn a_bad_case_is_reported_by_file_and_id_and_the_rest_runs() {
     cases[2].texture.levels[0].width = 3; // 4 texels for a 3x2 level: invalid
     let bad_id = cases[2].id.clone();
     // Write by hand (the writer would not check), then break a second file completely.
-    let f = shadowcheck_cases::fixtures::FixtureFile {
-        schema_version: 1,
-        generator: "t".into(),
-        grid: "t".into(),
-        seed: 0,
-        cases,
-    };
+    let f = shadowcheck_cases::fixtures::FixtureFile { schema_version: 1, generator: "t".into(), grid: "t".into(), seed: 0, cases };
     std::fs::create_dir_all(fx.parent().unwrap()).unwrap();
     std::fs::write(&fx, shadowcheck_cases::fixtures::to_string(&f).unwrap()).unwrap();
     std::fs::write(dir.join("fixtures/broken.json"), "{ not json").unwrap();
@@ -230,7 +226,17 @@ fn an_implementation_that_stops_reading_cannot_block_the_runner() {
         .collect();
     write_fixture(&fx, cases);
     let out = dir.join("out");
-    let r = run(&["-b", "mock:hang=n=0001", "--fixtures", fx.to_str().unwrap(), "--timeout", "1", "--no-rerun", "--out", out.to_str().unwrap()]);
+    let r = run(&[
+        "-b",
+        "mock:hang=n=0001",
+        "--fixtures",
+        fx.to_str().unwrap(),
+        "--timeout",
+        "1",
+        "--no-rerun",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
     let rows = results(&out);
     assert_eq!(status_of(&rows, "n=0001"), ["Timeout"]);
@@ -241,7 +247,20 @@ fn an_implementation_that_stops_reading_cannot_block_the_runner() {
 fn parallel_backends_give_the_sequential_report() {
     let (dir, fx) = setup("jobs", 40);
     let args = |out: &std::path::Path, jobs: &str| {
-        run(&["-b", "mock:", "-b", "mock:fail=/less/", "-b", "mock:crash=n=0005,buffer", "--fixtures", &fx, "--jobs", jobs, "--out", out.to_str().unwrap()])
+        run(&[
+            "-b",
+            "mock:",
+            "-b",
+            "mock:fail=/less/",
+            "-b",
+            "mock:crash=n=0005,buffer",
+            "--fixtures",
+            &fx,
+            "--jobs",
+            jobs,
+            "--out",
+            out.to_str().unwrap(),
+        ])
     };
     let (seq, par) = (dir.join("seq"), dir.join("par"));
     let r1 = args(&seq, "1");

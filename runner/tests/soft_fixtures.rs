@@ -15,11 +15,7 @@ fn workspace() -> PathBuf {
 fn every_soft_variant_passes_its_own_specs_fixtures_under_strict() {
     let root = workspace();
     let fixtures = root.join("cases/fixtures");
-    assert!(
-        fixtures.is_dir(),
-        "{} is missing: generate it with `shadowcheck gen` (the cases crate commits it)",
-        fixtures.display()
-    );
+    assert!(fixtures.is_dir(), "{} is missing: generate it with `shadowcheck gen` (the cases crate commits it)", fixtures.display());
     let tmp = tmpdir("soft-fixtures");
     let mut covered = 0;
     for spec in Spec::ALL {

@@ -81,11 +81,7 @@ impl Script {
     }
 
     pub fn action(&self, id: &str) -> Action {
-        self.rules
-            .iter()
-            .find(|(_, re)| re.as_ref().is_none_or(|r| r.is_match(id)))
-            .map(|(a, _)| *a)
-            .unwrap_or(Action::Pass)
+        self.rules.iter().find(|(_, re)| re.as_ref().is_none_or(|r| r.is_match(id))).map(|(a, _)| *a).unwrap_or(Action::Pass)
     }
 }
 
@@ -127,11 +123,8 @@ fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Answer {
     let Some(r) = value else {
         return Answer::Skip { case_id: id, reason: "mock: the case carries no expectation to answer from".into() };
     };
-    let results = case
-        .api
-        .iter()
-        .map(|&a| ApiResultMsg { api: a.key().to_string(), rgba: Rgba(laid_out(case, a, r)), stored: None })
-        .collect();
+    let results =
+        case.api.iter().map(|&a| ApiResultMsg { api: a.key().to_string(), rgba: Rgba(laid_out(case, a, r)), stored: None }).collect();
     Answer::Observation { case_id: id, results }
 }
 

@@ -9,8 +9,8 @@
 //! - `mock:<script>`: a scripted implementation for testing the runner itself.
 
 pub mod exec;
-pub mod protocol;
 pub mod mock;
+pub mod protocol;
 pub mod soft;
 
 use serde::{Deserialize, Serialize};
@@ -40,7 +40,10 @@ fn listed(list: &Option<Vec<String>>, key: &str) -> bool {
 /// Which API paths of a case a backend will run, or why it runs none.
 pub enum Support {
     /// Run these paths (a subset of the case's); the others are Skip with the reason.
-    Run { apis: Vec<ApiPath>, others: Option<String> },
+    Run {
+        apis: Vec<ApiPath>,
+        others: Option<String>,
+    },
     Skip(String),
 }
 
@@ -161,11 +164,7 @@ pub fn open(name: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError
         "mock" => {
             let exe = std::env::current_exe().map_err(|e| BackendError::Setup { backend: name.into(), msg: e.to_string() })?;
             mock::Script::parse(rest).map_err(|msg| BackendError::Setup { backend: name.into(), msg })?;
-            let cmd = exec::ProcessCommand {
-                program: exe,
-                args: vec!["mock-worker".into(), rest.to_string()],
-                env: vec![],
-            };
+            let cmd = exec::ProcessCommand { program: exe, args: vec!["mock-worker".into(), rest.to_string()], env: vec![] };
             Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
         }
         _ => Err(BackendError::Unknown(name.to_string())),

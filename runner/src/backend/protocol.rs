@@ -128,7 +128,8 @@ mod tests {
 
     #[test]
     fn answers_parse_with_non_finite_channels_and_unknown_fields() {
-        let a = parse_answer(r#"{"type":"observation","case_id":"x","extra":1,"results":[{"api":"core","rgba":["nan",0,"inf",1]}]}"#).unwrap();
+        let a =
+            parse_answer(r#"{"type":"observation","case_id":"x","extra":1,"results":[{"api":"core","rgba":["nan",0,"inf",1]}]}"#).unwrap();
         match a {
             Answer::Observation { case_id, results } => {
                 assert_eq!(case_id, "x");

@@ -72,11 +72,7 @@ pub struct Args {
 /// `out/<backends>` with characters unfit for a file name replaced.
 fn default_out(backends: &[String]) -> PathBuf {
     let name = if backends.is_empty() { "all".to_string() } else { backends.join("+") };
-    let slug: String = name
-        .chars()
-        .map(|c| if c.is_ascii_alphanumeric() || "-_+.=".contains(c) { c } else { '_' })
-        .take(80)
-        .collect();
+    let slug: String = name.chars().map(|c| if c.is_ascii_alphanumeric() || "-_+.=".contains(c) { c } else { '_' }).take(80).collect();
     Path::new("out").join(slug)
 }
 

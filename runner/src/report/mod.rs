@@ -30,7 +30,11 @@ pub fn num(v: f64) -> String {
     if v.is_nan() {
         "nan".into()
     } else if v.is_infinite() {
-        if v > 0.0 { "inf".into() } else { "-inf".into() }
+        if v > 0.0 {
+            "inf".into()
+        } else {
+            "-inf".into()
+        }
     } else {
         format!("{v}")
     }
@@ -75,16 +79,8 @@ pub fn dump(r: &TestResult, indent: &str) -> String {
                 Some(false) => "fail",
                 None => "either",
             };
-            let _ = writeln!(
-                s,
-                "{indent}    {:<5} {:<16} {:<14} {:<20} {:<8} {}",
-                t.level,
-                xyz,
-                num(t.stored),
-                num(t.dt),
-                pass,
-                num(t.weight)
-            );
+            let _ =
+                writeln!(s, "{indent}    {:<5} {:<16} {:<14} {:<20} {:<8} {}", t.level, xyz, num(t.stored), num(t.dt), pass, num(t.weight));
         }
     }
     let _ = writeln!(s, "{indent}  re-run:    {}", r.rerun_command());
@@ -105,12 +101,8 @@ pub struct Row {
 /// Counts by spec, compare func, filter and format (the dimensions of the summary tables).
 pub fn breakdown(results: &[TestResult]) -> Vec<(&'static str, BTreeMap<String, Row>)> {
     type Key = fn(&TestResult) -> &str;
-    let dims: [(&'static str, Key); 4] = [
-        ("spec", |r| &r.tags.spec),
-        ("func", |r| &r.tags.func),
-        ("filter", |r| &r.tags.filter),
-        ("format", |r| &r.tags.format),
-    ];
+    let dims: [(&'static str, Key); 4] =
+        [("spec", |r| &r.tags.spec), ("func", |r| &r.tags.func), ("filter", |r| &r.tags.filter), ("format", |r| &r.tags.format)];
     dims.iter()
         .map(|(name, key)| {
             let mut m: BTreeMap<String, Row> = BTreeMap::new();

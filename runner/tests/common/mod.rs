@@ -37,7 +37,11 @@ pub fn compare(func: CompareFunc, dref: f64, dt: f64) -> f64 {
         CompareFunc::Always => true,
         _ => false,
     };
-    if pass { 1.0 } else { 0.0 }
+    if pass {
+        1.0
+    } else {
+        0.0
+    }
 }
 
 /// A GL 4.6 core NEAREST lookup at the centre of texel `(x, y)` of the 2x2 texture with reference
