@@ -101,6 +101,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     } else {
         a.backends.clone()
     };
+    for (i, n) in names.iter().enumerate() {
+        if names[..i].contains(n) {
+            bail!("backend `{n}` is named twice");
+        }
+    }
     let out_dir = a.out.clone().unwrap_or_else(|| default_out(&a.backends));
     std::fs::create_dir_all(&out_dir).with_context(|| format!("creating {}", out_dir.display()))?;
 
