@@ -49,12 +49,6 @@ impl Renderer {
                 return;
             }
         };
-        if !self.info.es {
-            let stored = texture::read_back(&self.gl, first).ok();
-            for (ci, _) in &group {
-                st.stored[*ci] = stored.clone();
-            }
-        }
         // Batchable (case, plan) pairs by program, in first-appearance order. Small groups draw a
         // pixel per case instead: updating the parameter texture makes the driver wait for the
         // draws still reading it, which costs more than a few single-pixel draws.
@@ -101,7 +95,8 @@ impl Renderer {
                 }
             }
         }
-        self.gl.delete_texture(tex);
+        let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
+        self.retire(cases, st, tex, group[0].0, sharing);
         if let Err(e) = texture::check(&self.gl, "drawing") {
             for (ci, _) in &group {
                 if st.answers[*ci].is_none() {

@@ -21,6 +21,8 @@ use std::collections::HashMap;
 pub(super) const FB_SIZE: i32 = 256;
 /// Pixels of the result framebuffer.
 pub(super) const CAPACITY: usize = (FB_SIZE * FB_SIZE) as usize;
+/// Most textures kept alive for a deferred read-back.
+const MAX_DEFERRED: usize = 4096;
 
 /// The answer for one case.
 #[derive(Debug, Clone, PartialEq)]
@@ -74,6 +76,9 @@ pub(super) struct BatchState {
     pub(super) results: Vec<Vec<PathResult>>,
     pub(super) stored: Vec<Option<Texels>>,
     pub(super) pending: Vec<Pending>,
+    /// Textures whose level 0 is read back after the batch is drawn (reading back between draws
+    /// makes the driver finish the queued draws first): texture, its case, the cases sharing it.
+    pub(super) readbacks: Vec<(glow::Texture, usize, Vec<usize>)>,
 }
 
 impl BatchState {
@@ -303,6 +308,7 @@ impl Renderer {
             results: vec![Vec::new(); cases.len()],
             stored: vec![None; cases.len()],
             pending: Vec::new(),
+            readbacks: Vec::new(),
         };
         let paths = self.info.paths();
         self.clear();
@@ -332,7 +338,7 @@ impl Renderer {
         }
         if self.info.compat {
             for (ci, plans) in planned {
-                self.run_compat_case(&cases[ci], ci, &plans, &mut st);
+                self.run_compat_case(cases, ci, &plans, &mut st);
             }
         } else {
             // Consecutive cases with equal texture and sampler form one group (one texture).
@@ -352,6 +358,7 @@ impl Renderer {
         }
         let mut pending = std::mem::take(&mut st.pending);
         self.collect(&mut pending, &mut st.results);
+        self.finish_readbacks(cases, &mut st);
         st.answers
             .into_iter()
             .zip(st.results)
@@ -369,6 +376,29 @@ impl Renderer {
             .collect()
     }
 
+    /// Reads back the deferred textures and deletes them.
+    pub(super) unsafe fn finish_readbacks(&mut self, cases: &[Case], st: &mut BatchState) {
+        for (tex, ci, sharing) in std::mem::take(&mut st.readbacks) {
+            let stored = texture::read_back(&self.gl, tex, &cases[ci]).ok();
+            for c in sharing {
+                st.stored[c] = stored.clone();
+            }
+            self.gl.delete_texture(tex);
+        }
+    }
+
+    /// Queues `tex` for read-back (desktop GL) or deletes it (ES has no glGetTexImage).
+    pub(super) unsafe fn retire(&mut self, cases: &[Case], st: &mut BatchState, tex: glow::Texture, ci: usize, sharing: Vec<usize>) {
+        if self.info.es {
+            self.gl.delete_texture(tex);
+            return;
+        }
+        st.readbacks.push((tex, ci, sharing));
+        if st.readbacks.len() >= MAX_DEFERRED {
+            self.finish_readbacks(cases, st);
+        }
+    }
+
     /// Makes room for `n` more pixels, reading back and clearing when the framebuffer is full.
     pub(super) unsafe fn reserve(&mut self, st: &mut BatchState, n: usize) {
         if st.pending.len() + n > CAPACITY {
@@ -381,7 +411,8 @@ impl Renderer {
     /// A compatibility-context case: every path on a fresh texture. Mesa keeps per-texture sampler
     /// views whose DEPTH_TEXTURE_MODE swizzle depends on which path drew before, and one path's
     /// answer must not depend on another path or on the case's neighbours.
-    unsafe fn run_compat_case(&mut self, case: &Case, ci: usize, plans: &[Plan], st: &mut BatchState) {
+    unsafe fn run_compat_case(&mut self, cases: &[Case], ci: usize, plans: &[Plan], st: &mut BatchState) {
+        let case = &cases[ci];
         let mut failed = None;
         for (pi, plan) in plans.iter().enumerate() {
             while self.gl.get_error() != glow::NO_ERROR {}
@@ -392,13 +423,14 @@ impl Renderer {
                     break;
                 }
             };
-            if pi == 0 && !self.info.es {
-                st.stored[ci] = texture::read_back(&self.gl, case).ok();
-            }
             self.reserve(st, 1);
             let slot = st.pending.len();
             let r = self.draw(plan, case.texture.target, slot);
-            self.gl.delete_texture(tex);
+            if pi == 0 {
+                self.retire(cases, st, tex, ci, vec![ci]);
+            } else {
+                self.gl.delete_texture(tex);
+            }
             if let Err(e) = r {
                 failed = Some(format!("{}: {e}", plan.key.path));
                 break;

@@ -207,12 +207,15 @@ unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<()
     Ok(())
 }
 
-/// Reads level `base_level` back (desktop GL only), in the fixture's encoding.
+/// Reads level `base_level` of `tex` (the texture of `case`) back (desktop GL only), in the
+/// fixture's encoding.
 ///
 /// # Safety
-/// `gl` must be current and `tex` bound to unit 0 on its target.
-pub unsafe fn read_back(gl: &glow::Context, case: &Case) -> Result<Texels, GlError> {
+/// `gl` must be current.
+pub unsafe fn read_back(gl: &glow::Context, tex: glow::Texture, case: &Case) -> Result<Texels, GlError> {
     let t = &case.texture;
+    gl.active_texture(glow::TEXTURE0);
+    gl.bind_texture(t.target.gl(), Some(tex));
     let lvl = t.levels.first().ok_or_else(|| GlError::Gl("no levels".into()))?;
     let (_, fmt, ty, bpt) = transfer(t.format);
     let mut all = Vec::with_capacity(lvl.texel_count() * bpt);
