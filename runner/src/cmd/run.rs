@@ -117,6 +117,25 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         baseline: a.baseline.as_ref().map(|p| p.display().to_string()),
         ..RunMeta::new()
     };
+    if a.group == 0 {
+        bail!("--group must be at least 1");
+    }
+    let opts = Options { timeout: Duration::from_secs_f64(a.timeout), group: a.group };
+    let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(names.len());
+    for n in &names {
+        backends.push(backend::open(n, &opts)?);
+    }
+
+    let mut set = run::load_cases(&fixtures);
+    let loaded_any = !set.files.is_empty();
+    set.select(pattern.as_ref(), a.shard);
+    if !loaded_any && set.cases.is_empty() {
+        for e in &set.errors {
+            eprintln!("shadowcheck: error: {}: {}", e.file, e.message);
+        }
+        bail!("no fixture could be loaded from {}", meta.fixtures.join(", "));
+    }
+
     let results_path = out_dir.join(RESULTS_FILE);
     let (prior, jsonl) = if a.resume && results_path.exists() {
         resume::truncate_partial_line(&results_path)?;
@@ -135,23 +154,9 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         (Prior::default(), JsonlReporter::create(&results_path, &meta)?)
     };
 
-    if a.group == 0 {
-        bail!("--group must be at least 1");
-    }
-    let opts = Options { timeout: Duration::from_secs_f64(a.timeout), group: a.group };
-    let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(names.len());
-    for n in &names {
-        backends.push(backend::open(n, &opts)?);
-    }
-
-    let mut set = run::load_cases(&fixtures);
-    let loaded_any = !set.files.is_empty();
-    set.select(pattern.as_ref(), a.shard);
-    if !loaded_any && set.cases.is_empty() {
-        for e in &set.errors {
-            eprintln!("shadowcheck: error: {}: {}", e.file, e.message);
-        }
-        bail!("no fixture could be loaded from {}", meta.fixtures.join(", "));
+    // Final reports of an earlier run in this folder would be stale until this run ends.
+    for f in report::FINAL_FILES {
+        let _ = std::fs::remove_file(out_dir.join(f));
     }
 
     let mut fanout = Fanout::default();

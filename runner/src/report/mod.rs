@@ -122,6 +122,9 @@ pub fn breakdown(results: &[TestResult]) -> Vec<(&'static str, BTreeMap<String, 
         .collect()
 }
 
+/// The files written when a run ends (removed when a run starts, so a killed run leaves none stale).
+pub const FINAL_FILES: [&str; 5] = ["results.csv", "failures.csv", "junit.xml", "report.json", "report.md"];
+
 /// Which file reporters to attach.
 #[derive(Debug, Clone)]
 pub struct FileReports {
