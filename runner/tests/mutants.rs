@@ -98,6 +98,35 @@ fn a_fault_the_cases_cannot_see_survives_and_its_witness_kills_it() {
 }
 
 #[test]
+fn unobservable_faults_are_told_apart_from_grid_gaps() {
+    // Only the smoke cases of GL 4.6 with LEQUAL: neither fault below changes any of them.
+    let cases: Vec<Case> = smoke()
+        .into_iter()
+        .filter(|c| c.sampler.compare_func == CompareFunc::Lequal)
+        .collect();
+    let suite = Suite::new(cases).unwrap();
+    // NaN references: every comparison table orders Dref and Dt, so the oracle accepts 0 and 1;
+    // an ordered NOTEQUAL cannot be told from IEEE != through the API.
+    let nan = suite.mutant(Fault::NanOrderedNotequal);
+    assert_eq!(nan.status, KillStatus::Survived);
+    assert!(nan.unobservable.as_deref().unwrap().contains("NaN"));
+    assert!(nan.grid_change.is_none());
+    assert_ne!(nan.witness.unwrap().mutant, Outcome::Fail);
+    // Dt not clamped for fixed-point formats: undefined in GL 4.6 (out-of-range border), but
+    // ARB_shadow puts Dt in [0,1]: border 1.5 reads as 1, so GEQUAL with R = 1 gives 1, the
+    // mutant 0. Observable: a grid change, with a witness that the oracle rejects.
+    let dt = suite.mutant(Fault::DtNotClamped);
+    assert!(dt.unobservable.is_none());
+    assert!(dt.grid_change.as_deref().unwrap().contains("border 1.5"));
+    let w = dt.witness.unwrap();
+    assert_eq!(
+        (w.case.spec, w.correct, w.mutant),
+        (shadowcheck_model::Spec::Arb, Outcome::Pass, Outcome::Fail)
+    );
+    assert!(w.reason.unwrap().contains("r = 0 (expected r in {1})"));
+}
+
+#[test]
 fn run_reports_score_matrix_and_markdown() {
     let suite = Suite::new(smoke()).unwrap();
     let faults = [Fault::LequalGequalSwapped, Fault::LessAsLequal, Fault::AlwaysNeverSwapped];

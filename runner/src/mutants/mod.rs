@@ -172,6 +172,13 @@ pub struct MutantResult {
     pub minimal: Option<Kill>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub witness: Option<WitnessCheck>,
+    /// For a mutant not killed: why the fault cannot be observed through the API ([`unobservable`]),
+    /// when that is documented and the witness agrees (the oracle accepts the faulty result).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub unobservable: Option<String>,
+    /// For a mutant not killed and observable: the grid change that kills it ([`grid_change`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub grid_change: Option<String>,
     pub seconds: f64,
 }
 
@@ -209,10 +216,14 @@ pub struct MutantsReport {
     pub killed: usize,
     pub warn_only: usize,
     pub survived: usize,
+    /// Mutants not killed whose fault cannot be observed through the API (documented reason).
+    pub unobservable: usize,
     /// killed / mutants, in percent.
     pub score: f64,
     /// (killed + warn-only) / mutants, in percent.
     pub score_with_warn: f64,
+    /// killed / (mutants - unobservable), in percent: the score over the faults an application can see.
+    pub score_observable: f64,
     /// Seconds for sampling and judging (baseline + mutants).
     pub run_seconds: f64,
     /// Seconds for the whole command, loading included (set by the command).
@@ -423,15 +434,57 @@ impl Suite {
             changed_tests,
             first: first[slot].map(|(_, t)| self.kill(&results, t, outcome)),
             minimal: minimal[slot].map(|t| self.kill(&results, t, outcome)),
-            witness: (status != KillStatus::Killed).then(|| check_witness(fault)),
-            seconds: t0.elapsed().as_secs_f64(),
+            witness: None,
+            unobservable: None,
+            grid_change: None,
+            seconds: 0.0,
         }
+        .explained(fault, t0)
     }
+}
+
+impl MutantResult {
+    /// Adds, for a mutant not killed, the witness check and the documented reason or grid change.
+    fn explained(mut self, fault: Fault, t0: Instant) -> MutantResult {
+        if self.status != KillStatus::Killed {
+            let w = check_witness(fault);
+            // A documented "unobservable" only stands while the oracle accepts the witness's faulty result.
+            if w.mutant != Outcome::Fail {
+                self.unobservable = unobservable(fault).map(str::to_string);
+            }
+            if self.unobservable.is_none() {
+                self.grid_change = Some(
+                    grid_change(fault)
+                        .map(str::to_string)
+                        .unwrap_or_else(|| "add the witness case below (or its family) to the grid".to_string()),
+                );
+            }
+            self.witness = Some(w);
+        }
+        self.seconds = t0.elapsed().as_secs_f64();
+        self
+    }
+}
+
+/// The case that shows `fault`: the soft crate's witness, except where that witness sits on state
+/// the specifications leave undefined, where a case from the grid change ([`grid_change`]) replaces it.
+pub fn witness(fault: Fault) -> (Case, ApiPath) {
+    let (mut case, api) = shadowcheck_soft::witness::witness(fault);
+    if fault == Fault::DtNotClamped {
+        // GL 4.6 leaves a fixed-point border outside [0,1] undefined; ARB_shadow has Dt in [0,1]:
+        // border 1.5 reads as Dt = 1, and GEQUAL with R = 1 passes (r = 1; unclamped, 1 >= 1.5 fails).
+        case.spec = Spec::Arb;
+        case.api = vec![ApiPath::FixedFunction];
+        case.sampler.compare_func = shadowcheck_model::CompareFunc::Gequal;
+        case.lookup.dref = 1.0;
+        return (case, ApiPath::FixedFunction);
+    }
+    (case, api)
 }
 
 /// Judges the soft crate's witness of `fault` with the oracle (see the module docs).
 pub fn check_witness(fault: Fault) -> WitnessCheck {
-    let (mut case, api) = shadowcheck_soft::witness::witness(fault);
+    let (mut case, api) = witness(fault);
     let unit = SoftUnit::new(case.spec);
     let judge = |r: Result<[f32; 4], SoftError>, case: &Case| match r {
         Ok(v) => {
@@ -485,6 +538,7 @@ pub fn run(
     let mutants: Vec<MutantResult> = slots.into_inner().unwrap_or_default().into_iter().flatten().collect();
     let count = |s: KillStatus| mutants.iter().filter(|m| m.status == s).count();
     let (killed, warn_only, survived) = (count(KillStatus::Killed), count(KillStatus::WarnOnly), count(KillStatus::Survived));
+    let unobservable = mutants.iter().filter(|m| m.unobservable.is_some()).count();
     let pct = |n: usize| {
         if mutants.is_empty() {
             0.0
@@ -502,6 +556,12 @@ pub fn run(
         killed,
         warn_only,
         survived,
+        unobservable,
+        score_observable: if mutants.len() > unobservable {
+            100.0 * killed as f64 / (mutants.len() - unobservable) as f64
+        } else {
+            100.0
+        },
         score: pct(killed),
         score_with_warn: pct(killed + warn_only),
         mutants,
@@ -530,11 +590,15 @@ pub fn about(f: Fault) -> &'static str {
         F::SgixOperatorsReversed => "SGIX operators read as ARB issue 2 describes them",
         F::AmbientAppliedToPass => "ambient / fail value applied to passing texels",
         F::AmbientIgnored => "ambient / fail value ignored",
+        F::FailValueNotClamped => "TEXTURE_COMPARE_FAIL_VALUE_ARB / SHADOW_AMBIENT_SGIX not clamped to [0,1]",
         F::RedModeAsLuminance => "DEPTH_TEXTURE_MODE RED returned as LUMINANCE",
         F::IntensityAsLuminance => "DEPTH_TEXTURE_MODE INTENSITY returned as LUMINANCE",
         F::WrongDefaultDepthMode => "wrong default DEPTH_TEXTURE_MODE in the compatibility profile",
+        F::AlphaModeZeroOnGlsl130 => "GLSL 1.30 shadow lookup with DEPTH_TEXTURE_MODE ALPHA returns 0 (Cs[0] of (0,0,0,r))",
+        F::Glsl120IgnoresDepthMode => "vec4 shadow2D (GLSL 1.20) ignoring DEPTH_TEXTURE_MODE",
         F::CompareAppliedToColour => "comparison applied to a colour (R8) texture",
         F::StencilModeIgnored => "DEPTH_STENCIL_TEXTURE_MODE STENCIL_INDEX ignored (depth sampled)",
+        F::StencilCompared => "stencil index sampled with the comparison on under STENCIL_INDEX",
         F::IncompleteNotZero => "incomplete texture sampled instead of returning 0",
         F::MipmapCompletenessIgnored => "missing mip levels not detected",
         F::EsDepthFilterCompletenessIgnored => "ES rule: sized depth + compare NONE + LINEAR not incomplete",
@@ -551,7 +615,50 @@ pub fn about(f: Fault) -> &'static str {
         F::BorderDepthFromAlpha => "border depth read from the alpha component",
         F::MirroredRepeatOffByOne => "MIRRORED_REPEAT off by one texel",
         F::UnormDividedByPowerOfTwo => "unorm conversion c/2^b instead of c/(2^b-1)",
+        F::UploadNotClamped => "floating-point depth upload not clamped to [0,1]",
         #[allow(unreachable_patterns)]
         _ => "",
     }
+}
+
+/// Why a fault cannot be observed through the API, for the faults where no conforming application
+/// can tell the faulty unit from the correct one. Only reported for mutants the suite does not kill
+/// and whose witness the oracle accepts.
+pub fn unobservable(f: Fault) -> Option<&'static str> {
+    Some(match f {
+        Fault::NanOrderedNotequal => {
+            "a NaN reference has no defined comparison result: Table 8.23 (and every extension's table) orders Dref and Dt, \
+             GL 4.6 / ES 3.2 §2.3.4.1 leave the result of a NaN input unspecified, and clamping a NaN (fixed-point formats, \
+             EXT_shadow_samplers) is not defined either; the oracle accepts 0 and 1 for every NaN-reference case, so treating \
+             NOTEQUAL as ordered (NaN fails) is as conforming as IEEE != (NaN passes)"
+        }
+        _ => return None,
+    })
+}
+
+/// The grid change (cases/src/grids) that kills a fault the default grid misses, where known; the
+/// witness case is the generic answer.
+pub fn grid_change(f: Fault) -> Option<&'static str> {
+    Some(match f {
+        Fault::EqualWithTolerance => {
+            "cases/src/grids/families.rs `exact`: for EQUAL and NOTEQUAL also R = at ± 2^-14 (outside the lenient \
+             16-bit reference precision, inside the 2^-12 tolerance); the present at± (adjacent f32) cases only Warn"
+        }
+        Fault::DtNotClamped => {
+            "cases/src/grids/families.rs `wrap`: for the pre-3.0 specs (sgix, arb, arb_ambient, ext_funcs), whose Dt is \
+             in [0,1] (ARB_shadow 3.8.13.1), also the fixed-point format with CLAMP_TO_BORDER, border 1.5, R = 1, GEQUAL \
+             (r = 1; unclamped Dt 1.5 gives 0) and border -0.5, R = 0, LEQUAL; GL 4.6 leaves a fixed-point border outside \
+             [0,1] undefined and ES 3.2 clamps it, so gl46/gles32 cannot show this fault"
+        }
+        Fault::FailValueNotClamped => {
+            "cases/src/grids/families.rs `ambient`: fail values 1.5 and -0.5 besides 0, 0.25, 0.5, 1 \
+             (ARB_shadow_ambient: the value is clamped to [0,1] when specified)"
+        }
+        Fault::LayerTruncated => "cases/src/grids/families.rs `layer`: layer coordinates with a fraction of at least 0.5 (e.g. 1.5)",
+        Fault::CubeNegYFlipped => "cases/src/grids/families.rs `cube`: -Y face lookups whose rows differ",
+        Fault::DtClampedForFloat => {
+            "cases/src/grids/families.rs `wrap`: D32F with a border outside [0,1] and a function that tells 1 from 1.5"
+        }
+        _ => return None,
+    })
 }
