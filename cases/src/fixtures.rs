@@ -431,7 +431,7 @@ fn is_fixture_file(p: &Path) -> bool {
     use std::io::Read;
     let prefix = b"{\"schema_version\":";
     let mut buf = [0u8; 18];
-    std::fs::File::open(p).and_then(|mut f| f.read_exact(&mut buf)).is_ok() && &buf[..] == &prefix[..]
+    std::fs::File::open(p).and_then(|mut f| f.read_exact(&mut buf)).is_ok() && buf[..] == prefix[..]
 }
 
 /// A one-line summary of a set of errors (for lenient loading reports).
