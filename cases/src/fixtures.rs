@@ -146,8 +146,67 @@ pub fn parse_str(file: &Path, text: &str) -> Result<FixtureFile, FixtureError> {
 }
 
 /// Parses fixture text, dropping bad cases and returning their errors.
+///
+/// A file that is not valid JSON as a whole (truncated, one corrupted line) is still read when it
+/// has the writer's layout (header line, one case per line): each line that parses is kept, the
+/// others are reported with their case index and, where readable, id.
 pub fn parse_str_lenient(file: &Path, text: &str) -> Result<(FixtureFile, Vec<FixtureError>), FixtureError> {
-    parse_inner(file, text, false)
+    match parse_inner(file, text, false) {
+        Err(e @ FixtureError::Syntax { .. }) => parse_by_line(file, text).ok_or(e),
+        other => other,
+    }
+}
+
+/// Line-by-line recovery for [`parse_str_lenient`]; `None` if the text does not have the writer's
+/// layout.
+fn parse_by_line(file: &Path, text: &str) -> Option<(FixtureFile, Vec<FixtureError>)> {
+    let mut lines = text.lines();
+    let header = lines.next()?.strip_suffix("\"cases\":[")?;
+    let (mut f, _) = parse_inner(file, &format!("{header}\"cases\":[]}}"), false).ok()?;
+    let mut errors = Vec::new();
+    let mut seen = std::collections::HashMap::new();
+    for (index, line) in lines.enumerate() {
+        let body = line.strip_suffix(',').unwrap_or(line);
+        if body.starts_with(']') {
+            break;
+        }
+        let value: Result<serde_json::Value, _> = serde_json::from_str(body);
+        let at = CaseRef {
+            index: Some(index),
+            id: None,
+        };
+        let result = match value {
+            Ok(v) => {
+                let at = CaseRef {
+                    id: v.get("id").and_then(|x| x.as_str()).map(str::to_string),
+                    ..at
+                };
+                case_from_value(file, &at, v).and_then(|c| match seen.insert(c.id.clone(), index) {
+                    Some(first) => Err(FixtureError::DuplicateId {
+                        file: file.to_path_buf(),
+                        at,
+                        first,
+                    }),
+                    None => Ok(c),
+                })
+            }
+            Err(e) => Err(FixtureError::Syntax {
+                file: file.to_path_buf(),
+                at: CaseRef {
+                    id: locate_case(&format!("{{\"cases\":[{body}"), 1, e.column() + 11).id,
+                    ..at
+                },
+                line: index + 2,
+                column: e.column(),
+                msg: strip_position(&e.to_string()),
+            }),
+        };
+        match result {
+            Ok(c) => f.cases.push(c),
+            Err(e) => errors.push(e),
+        }
+    }
+    Some((f, errors))
 }
 
 fn parse_inner(file: &Path, text: &str, stop_at_first: bool) -> Result<(FixtureFile, Vec<FixtureError>), FixtureError> {

@@ -203,3 +203,19 @@ fn files_written_one_by_one_survive_until_remove_stale() {
     assert!(a.exists() && b.exists() && !d.join("old.json").exists());
     let _ = std::fs::remove_dir_all(&d);
 }
+
+#[test]
+fn lenient_loading_recovers_the_intact_cases_of_a_truncated_file() {
+    let f = sample();
+    let text = fixtures::to_string(&f).unwrap();
+    let cut = text.find(&f.cases[3].id).unwrap() + f.cases[3].id.len() + 40;
+    assert!(fixtures::parse_str(Path::new("t.json"), &text[..cut]).is_err());
+    let (got, errors) = fixtures::parse_str_lenient(Path::new("t.json"), &text[..cut]).unwrap();
+    assert_eq!(got.cases.len(), 3);
+    assert_eq!(got.cases[..], f.cases[..3]);
+    assert_eq!(errors.len(), 1);
+    assert_eq!(errors[0].case_id(), Some(f.cases[3].id.as_str()), "{}", errors[0]);
+    assert!(errors[0].to_string().contains("case #3"), "{}", errors[0]);
+    // Text without the writer's layout still fails as a whole.
+    assert!(fixtures::parse_str_lenient(Path::new("t.json"), "{\"schema_version\":1,").is_err());
+}
