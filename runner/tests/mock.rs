@@ -274,3 +274,16 @@ fn parallel_backends_give_the_sequential_report() {
     let xml = std::fs::read_to_string(par.join("junit.xml")).unwrap();
     assert_eq!(xml.matches("<testsuite ").count(), 3);
 }
+
+#[test]
+fn without_gl_drivers_the_default_run_says_how_to_install_them_and_runs_soft() {
+    // SHADOWCHECK_EXE pointing nowhere makes every GL probe fail, as on a machine without Mesa.
+    let (dir, fx) = setup("nogl", 16);
+    let out = dir.join("out");
+    let r = Run::of(bin().args(["run", "--fixtures", &fx, "--out", out.to_str().unwrap()]).env("SHADOWCHECK_EXE", "/nonexistent/shadowcheck").output().unwrap());
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    assert!(r.stderr.contains("apt-get install -y libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers"), "{}", r.stderr);
+    let rows = results(&out);
+    assert_eq!(rows.len(), 16);
+    assert!(rows.iter().all(|r| r.1 == "Pass" && r.2 == "soft"), "{rows:?}");
+}
