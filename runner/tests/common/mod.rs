@@ -63,7 +63,13 @@ pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
             target: Target::T2d,
             format: Format::D16,
             base_level: 0,
-            levels: vec![Level { width: 2, height: 2, layers: 1, depth: Texels::Unorm(TEXELS.to_vec()), stencil: None }],
+            levels: vec![Level {
+                width: 2,
+                height: 2,
+                layers: 1,
+                depth: Texels::Unorm(TEXELS.to_vec()),
+                stencil: None,
+            }],
         },
         sampler: Sampler::new(CompareMode::Compare, func, Filter::Nearest),
         lookup: Lookup {
@@ -97,7 +103,13 @@ pub fn many_cases(n: usize) -> Vec<Case> {
 }
 
 pub fn write_fixture(path: &Path, cases: Vec<Case>) {
-    let f = FixtureFile { schema_version: SCHEMA_VERSION, generator: "runner tests".into(), grid: "test".into(), seed: 0, cases };
+    let f = FixtureFile {
+        schema_version: SCHEMA_VERSION,
+        generator: "runner tests".into(),
+        grid: "test".into(),
+        seed: 0,
+        cases,
+    };
     std::fs::create_dir_all(path.parent().unwrap()).unwrap();
     std::fs::write(path, to_string(&f).unwrap()).unwrap();
 }
