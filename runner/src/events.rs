@@ -327,3 +327,62 @@ pub struct Timing {
     /// Seconds judging answers and sending events (verdicts, reporters).
     pub verdict_s: f64,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn result(test: &str, status: Status) -> TestResult {
+        TestResult {
+            backend: "b".into(),
+            test: test.into(),
+            case_id: test.into(),
+            api: ApiPath::GlslCore,
+            status,
+            outcome: Outcome::Pass,
+            reason: None,
+            duration: 0.0,
+            tags: Tags {
+                spec: "gl46".into(),
+                target: "2d".into(),
+                format: "d16".into(),
+                func: "lequal".into(),
+                filter: "nearest/nearest".into(),
+            },
+            observed: None,
+            expected: None,
+            footprint: None,
+            rerun: None,
+            fixtures: None,
+        }
+    }
+
+    #[test]
+    fn exit_code_precedence_is_regression_setup_improvement_empty_ok() {
+        let pass = result("p", Status::Plain(Outcome::Pass));
+        let fail = result("f", Status::Plain(Outcome::Crash));
+        let better = result("i", Status::UnexpectedImprovement(Outcome::Pass));
+        let flake = result("k", Status::Flake);
+        let code = |rs: &[TestResult], errors| Summary::new(vec![], rs, errors).exit_code;
+        assert_eq!(code(&[pass.clone(), fail.clone(), better.clone()], 1), exit::REGRESSION);
+        assert_eq!(code(&[pass.clone(), better.clone()], 1), exit::SETUP);
+        assert_eq!(code(&[pass.clone(), better.clone()], 0), exit::IMPROVEMENT);
+        assert_eq!(code(&[], 0), exit::NO_TESTS);
+        assert_eq!(code(&[pass, flake, result("e", Status::ExpectedFail), result("w", Status::Plain(Outcome::Warn))], 0), exit::OK);
+    }
+
+    #[test]
+    fn records_round_trip_and_rerun_commands_quote() {
+        let mut r = result("gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25,1@core", Status::Plain(Outcome::Fail));
+        r.case_id = "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25,1".into();
+        r.observed = Some(Rgba([f64::NAN, 0.0, f64::INFINITY, 1.0]));
+        let line = serde_json::to_string(&Line::Result(Box::new(r.clone()))).unwrap();
+        let back: Line = serde_json::from_str(&line).unwrap();
+        let Line::Result(back) = back else { panic!("{line}") };
+        assert!(back.observed.unwrap().0[0].is_nan());
+        assert_eq!(back.status, r.status);
+        assert_eq!(r.rerun_command(), "shadowcheck run --backend b --cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/dt=0\\.25,1$'");
+        r.backend = "exec:python3 it's.py".into();
+        assert!(r.rerun_command().starts_with("shadowcheck run --backend 'exec:python3 it'\\''s.py' "));
+    }
+}
