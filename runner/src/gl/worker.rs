@@ -228,7 +228,7 @@ pub fn serve(worker: &mut Worker, input: impl BufRead, mut output: impl Write) -
         if line.trim().is_empty() {
             continue;
         }
-        match serde_json::from_str::<Incoming>(&line) {
+        match Incoming::parse(&line) {
             Ok(Incoming::Hello { protocol }) => {
                 if protocol != 0 && protocol != PROTOCOL_VERSION {
                     eprintln!("gl-worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}");
