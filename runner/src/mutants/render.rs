@@ -199,7 +199,11 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
             m.key,
             cell(&m.about),
             result,
-            m.killing_cases,
+            if m.status == KillStatus::WarnOnly {
+                format!("0 ({} Warn)", m.warn_cases)
+            } else {
+                m.killing_cases.to_string()
+            },
             m.failing_tests,
             min,
             api,
@@ -212,7 +216,7 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
         if let Some(k) = &m.minimal {
             let _ = writeln!(
                 out,
-                "- `{}`: `{}` on `{}` ({} texels, {} level(s)): mutant {}, correct unit {}; {}",
+                "- `{}`: `{}` on `{}` ({} texel(s), {} level(s)): mutant {}, correct unit {}; {}",
                 m.key,
                 k.case,
                 k.api,
