@@ -8,7 +8,12 @@ mod gl_support;
 use gl_support::*;
 use shadowcheck_model::*;
 
-const PATHS: [ApiPath; 4] = [ApiPath::FixedFunction, ApiPath::Glsl120, ApiPath::Glsl130, ApiPath::ArbFp];
+const PATHS: [ApiPath; 4] = [
+    ApiPath::FixedFunction,
+    ApiPath::Glsl120,
+    ApiPath::Glsl130,
+    ApiPath::ArbFp,
+];
 
 /// The legacy vec4 layout of r by DEPTH_TEXTURE_MODE (LUMINANCE is the compatibility default).
 fn layout(mode: Option<DepthTextureMode>, r: f64) -> [f64; 4] {
@@ -48,29 +53,58 @@ const FLAKY: &[(&str, ApiPath, &str, [f64; 4])] = &[
 
 fn flaky(backend: &str, path: ApiPath, id: &str) -> Option<[f64; 4]> {
     let driver = backend.split(':').nth(1).unwrap_or("");
-    FLAKY.iter().find(|(d, p, pre, _)| *d == driver && *p == path && id.starts_with(pre)).map(|k| k.3)
+    FLAKY
+        .iter()
+        .find(|(d, p, pre, _)| *d == driver && *p == path && id.starts_with(pre))
+        .map(|k| k.3)
 }
 
 fn known(backend: &str, path: ApiPath, id: &str) -> Option<[f64; 4]> {
     let driver = backend.split(':').nth(1).unwrap_or("");
-    KNOWN.iter().find(|(d, p, pre, _)| *d == driver && *p == path && id.starts_with(pre)).map(|k| k.3)
+    KNOWN
+        .iter()
+        .find(|(d, p, pre, _)| *d == driver && *p == path && id.starts_with(pre))
+        .map(|k| k.3)
 }
 
 #[test]
 fn depth_texture_mode_layouts_on_every_legacy_path() {
     let mut failures = Vec::new();
     for b in backends("compat", true) {
-        let Some(mut s) = Session::start(&b) else { continue };
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
         for spec in ["gl46", "arb", "ext_funcs"] {
-            assert!(s.caps("specs").contains(&spec.to_string()), "{b}: {:?}", s.caps("specs"));
+            assert!(
+                s.caps("specs").contains(&spec.to_string()),
+                "{b}: {:?}",
+                s.caps("specs")
+            );
         }
-        assert_eq!(s.caps("api"), vec!["ff", "glsl120", "glsl130", "arbfp"], "{b}");
+        assert_eq!(
+            s.caps("api"),
+            vec!["ff", "glsl120", "glsl130", "arbfp"],
+            "{b}"
+        );
         let mut cases = Vec::new();
-        for mode in [None, Some(DepthTextureMode::Luminance), Some(DepthTextureMode::Intensity), Some(DepthTextureMode::Alpha), Some(DepthTextureMode::Red)] {
+        for mode in [
+            None,
+            Some(DepthTextureMode::Luminance),
+            Some(DepthTextureMode::Intensity),
+            Some(DepthTextureMode::Alpha),
+            Some(DepthTextureMode::Red),
+        ] {
             // Dt = 32768/65535; LEQUAL passes for 0.1 (r = 1) and fails for 0.9 (r = 0).
             for (dref, r) in [(0.1, 1.0), (0.9, 0.0)] {
                 let name = mode.map_or("none".to_string(), |m| m.key().to_string());
-                let mut c = d16_case(&format!("{name}/r={r}"), Spec::Arb, &PATHS, Target::T2d, 32768, dref);
+                let mut c = d16_case(
+                    &format!("{name}/r={r}"),
+                    Spec::Arb,
+                    &PATHS,
+                    Target::T2d,
+                    32768,
+                    dref,
+                );
                 c.sampler.depth_texture_mode = mode;
                 cases.push((c, r));
             }
@@ -100,11 +134,20 @@ fn depth_texture_mode_layouts_on_every_legacy_path() {
 fn ext_shadow_funcs_compare_table_on_ff_and_glsl130() {
     let dt = 32768.0 / 65535.0;
     for b in backends("compat", true) {
-        let Some(mut s) = Session::start(&b) else { continue };
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
         let mut cs = Vec::new();
         for f in CompareFunc::CORE {
             for d in [0.25, 0.75] {
-                let mut c = d16_case(&format!("{f}/{d}"), Spec::ExtFuncs, &[ApiPath::FixedFunction, ApiPath::Glsl130], Target::T2d, 32768, d);
+                let mut c = d16_case(
+                    &format!("{f}/{d}"),
+                    Spec::ExtFuncs,
+                    &[ApiPath::FixedFunction, ApiPath::Glsl130],
+                    Target::T2d,
+                    32768,
+                    d,
+                );
                 c.sampler.compare_func = f;
                 cs.push(c);
             }
@@ -124,7 +167,12 @@ fn ext_shadow_funcs_compare_table_on_ff_and_glsl130() {
                 _ => d != dt,
             };
             let r = if pass { 1.0 } else { 0.0 };
-            assert_eq!(Session::rgba(a, ApiPath::FixedFunction), [r, r, r, 1.0], "{b} {}", c.id);
+            assert_eq!(
+                Session::rgba(a, ApiPath::FixedFunction),
+                [r, r, r, 1.0],
+                "{b} {}",
+                c.id
+            );
             assert_eq!(Session::rgba(a, ApiPath::Glsl130)[0], r, "{b} {}", c.id);
         }
     }
@@ -136,23 +184,55 @@ fn fixed_function_1d_uses_texture_coordinate_r_as_the_reference() {
     // driver: LEQUAL always passes, as if R were 0); GLSL 1.20 shadow1D takes R from coord.p and is
     // right, which shows the worker passes r.
     for b in backends("compat", true) {
-        let Some(mut s) = Session::start(&b) else { continue };
-        let c = d16_case("1d/r=0", Spec::Arb, &[ApiPath::FixedFunction, ApiPath::Glsl120], Target::T1d, 32768, 0.9);
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
+        let c = d16_case(
+            "1d/r=0",
+            Spec::Arb,
+            &[ApiPath::FixedFunction, ApiPath::Glsl120],
+            Target::T1d,
+            32768,
+            0.9,
+        );
         let a = s.run(&[c]);
         let want120 = known(&b, ApiPath::Glsl120, "none/r=0").unwrap_or([0.0, 0.0, 0.0, 1.0]);
-        assert_eq!(Session::rgba(&a[0], ApiPath::Glsl120), want120, "{b}: {}", a[0]);
+        assert_eq!(
+            Session::rgba(&a[0], ApiPath::Glsl120),
+            want120,
+            "{b}: {}",
+            a[0]
+        );
         let ff = Session::rgba(&a[0], ApiPath::FixedFunction);
-        assert_eq!(ff, [1.0, 1.0, 1.0, 1.0], "{b}: known Mesa deviation (spec: [0,0,0,1]) changed: {}", a[0]);
+        assert_eq!(
+            ff,
+            [1.0, 1.0, 1.0, 1.0],
+            "{b}: known Mesa deviation (spec: [0,0,0,1]) changed: {}",
+            a[0]
+        );
     }
 }
 
 #[test]
 fn fixed_function_skips_what_it_cannot_realize_and_says_why() {
     for b in backends("compat", false).into_iter().take(1) {
-        let Some(mut s) = Session::start(&b) else { continue };
-        let c = mip_case("mip/lod=1", Spec::Gl46, &[ApiPath::FixedFunction], Target::T2d, 1.0, 0.0);
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
+        let c = mip_case(
+            "mip/lod=1",
+            Spec::Gl46,
+            &[ApiPath::FixedFunction],
+            Target::T2d,
+            1.0,
+            0.0,
+        );
         let a = s.run(&[c]);
         assert_eq!(a[0]["type"], "skip", "{}", a[0]);
-        assert!(a[0]["reason"].as_str().unwrap().contains("lambda"), "{}", a[0]);
+        assert!(
+            a[0]["reason"].as_str().unwrap().contains("lambda"),
+            "{}",
+            a[0]
+        );
     }
 }

@@ -31,7 +31,10 @@ fn compare_cases(spec: Spec, api: ApiPath, targets: &[Target]) -> Vec<(Case, f64
     // A D16 texel c = 32768 with LEQUAL: refs just below / above c/65535 give 1.0 / 0.0.
     for &t in targets {
         for (d, want) in [(dt - 1e-4, 1.0), (dt + 1e-4, 0.0)] {
-            v.push((d16_case(&format!("{t}/lequal/{d}"), spec, &[api], t, c, d), want));
+            v.push((
+                d16_case(&format!("{t}/lequal/{d}"), spec, &[api], t, c, d),
+                want,
+            ));
         }
     }
     for f in CompareFunc::CORE {
@@ -44,12 +47,22 @@ fn compare_cases(spec: Spec, api: ApiPath, targets: &[Target]) -> Vec<(Case, f64
     v
 }
 
-const ALL_TARGETS: [Target; 7] = [Target::T1d, Target::T2d, Target::Rect, Target::Cube, Target::T1dArray, Target::T2dArray, Target::CubeArray];
+const ALL_TARGETS: [Target; 7] = [
+    Target::T1d,
+    Target::T2d,
+    Target::Rect,
+    Target::Cube,
+    Target::T1dArray,
+    Target::T2dArray,
+    Target::CubeArray,
+];
 
 #[test]
 fn core_compare_table_and_every_target() {
     for b in backends("core", true) {
-        let Some(mut s) = Session::start(&b) else { continue };
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
         assert_eq!(s.caps("specs"), vec!["gl46"], "{b}");
         assert_eq!(s.caps("api"), vec!["core"], "{b}");
         let cases = compare_cases(Spec::Gl46, ApiPath::GlslCore, &ALL_TARGETS);
@@ -69,13 +82,37 @@ fn core_compare_table_and_every_target() {
 #[test]
 fn core_level_selection_follows_lod_and_bias() {
     for b in backends("core", true) {
-        let Some(mut s) = Session::start(&b) else { continue };
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
         let mut cases = Vec::new();
-        for t in [Target::T2d, Target::Cube, Target::T2dArray, Target::CubeArray, Target::T1d] {
+        for t in [
+            Target::T2d,
+            Target::Cube,
+            Target::T2dArray,
+            Target::CubeArray,
+            Target::T1d,
+        ] {
             let t = if t == Target::T1d { continue } else { t };
-            for (lod, bias, want) in [(0.0, 0.0, 0.0), (1.0, 0.0, 1.0), (2.0, 0.0, 0.0), (0.0, 1.0, 1.0), (2.0, -1.0, 1.0)] {
+            for (lod, bias, want) in [
+                (0.0, 0.0, 0.0),
+                (1.0, 0.0, 1.0),
+                (2.0, 0.0, 0.0),
+                (0.0, 1.0, 1.0),
+                (2.0, -1.0, 1.0),
+            ] {
                 // NEAREST_MIPMAP_NEAREST picks level nearest(lambda) (§8.14.3): only level 1 holds 1.0.
-                cases.push((mip_case(&format!("{t}/lod={lod}/bias={bias}"), Spec::Gl46, &[ApiPath::GlslCore], t, lod, bias), want));
+                cases.push((
+                    mip_case(
+                        &format!("{t}/lod={lod}/bias={bias}"),
+                        Spec::Gl46,
+                        &[ApiPath::GlslCore],
+                        t,
+                        lod,
+                        bias,
+                    ),
+                    want,
+                ));
             }
         }
         let (cs, want): (Vec<Case>, Vec<f64>) = cases.into_iter().unzip();
@@ -83,10 +120,19 @@ fn core_level_selection_follows_lod_and_bias() {
         for ((c, w), a) in cs.iter().zip(want).zip(&answers) {
             if a["type"] == "skip" {
                 // Only a shader bias on a sampler type without a bias form, LOD or gradient form.
-                assert!(c.lookup.bias != 0.0 && c.texture.target == Target::CubeArray, "{b} {}: {a}", c.id);
+                assert!(
+                    c.lookup.bias != 0.0 && c.texture.target == Target::CubeArray,
+                    "{b} {}: {a}",
+                    c.id
+                );
                 continue;
             }
-            assert_eq!(Session::rgba(a, ApiPath::GlslCore)[0], w, "{b} {}: {a}", c.id);
+            assert_eq!(
+                Session::rgba(a, ApiPath::GlslCore)[0],
+                w,
+                "{b} {}: {a}",
+                c.id
+            );
         }
     }
 }
@@ -94,7 +140,9 @@ fn core_level_selection_follows_lod_and_bias() {
 #[test]
 fn core_reads_back_exact_24_bit_and_float_texels() {
     for b in backends("core", true) {
-        let Some(mut s) = Session::start(&b) else { continue };
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
         let mut d24 = d16_case("d24", Spec::Gl46, &[ApiPath::GlslCore], Target::T2d, 0, 0.5);
         d24.texture.format = Format::D24;
         let vals = vec![0u32, 1, 0x800000, 0xFFFFFF];
@@ -107,10 +155,30 @@ fn core_reads_back_exact_24_bit_and_float_texels() {
         f.texture.levels[0].depth = Texels::Float(vec![0.0, 0.25, 0.75, 1.0]);
         f.lookup.dref = 0.8;
         let a = s.run(&[d24, f]);
-        assert_eq!(a[0]["results"][0]["stored"]["unorm"], serde_json::json!(vals), "{b}: {}", a[0]);
-        assert_eq!(Session::rgba(&a[0], ApiPath::GlslCore)[0], 1.0, "{b}: {}", a[0]);
-        assert_eq!(a[1]["results"][0]["stored"]["float"], serde_json::json!([0.0, 0.25, 0.75, 1.0]), "{b}: {}", a[1]);
-        assert_eq!(Session::rgba(&a[1], ApiPath::GlslCore)[0], 0.0, "{b}: 0.8 <= 0.75 fails: {}", a[1]);
+        assert_eq!(
+            a[0]["results"][0]["stored"]["unorm"],
+            serde_json::json!(vals),
+            "{b}: {}",
+            a[0]
+        );
+        assert_eq!(
+            Session::rgba(&a[0], ApiPath::GlslCore)[0],
+            1.0,
+            "{b}: {}",
+            a[0]
+        );
+        assert_eq!(
+            a[1]["results"][0]["stored"]["float"],
+            serde_json::json!([0.0, 0.25, 0.75, 1.0]),
+            "{b}: {}",
+            a[1]
+        );
+        assert_eq!(
+            Session::rgba(&a[1], ApiPath::GlslCore)[0],
+            0.0,
+            "{b}: 0.8 <= 0.75 fails: {}",
+            a[1]
+        );
     }
 }
 
@@ -119,9 +187,15 @@ fn batched_draws_keep_every_case_in_its_own_pixel() {
     // 700 cases on one 4x4 texture (distinct texels): more than two framebuffer rows, one draw.
     // Each looks up one texel centre with Dref just below or above it: LEQUAL gives 1 / 0.
     for b in ["egl:llvmpipe:core", "egl:softpipe:es3"] {
-        let Some(mut s) = Session::start(b) else { continue };
+        let Some(mut s) = Session::start(b) else {
+            continue;
+        };
         let es = b.ends_with("es3");
-        let (spec, api) = if es { (Spec::Gles32, ApiPath::Es300) } else { (Spec::Gl46, ApiPath::GlslCore) };
+        let (spec, api) = if es {
+            (Spec::Gles32, ApiPath::Es300)
+        } else {
+            (Spec::Gl46, ApiPath::GlslCore)
+        };
         let texels: Vec<u32> = (0..16).map(|i| 1000 + i * 4000).collect();
         let mut cs = Vec::new();
         let mut want = Vec::new();
@@ -129,8 +203,21 @@ fn batched_draws_keep_every_case_in_its_own_pixel() {
             let (x, y) = (i % 4, (i / 4) % 4);
             let dt = texels[y * 4 + x] as f64 / 65535.0;
             let above = i % 7 < 3;
-            let mut c = d16_case(&format!("b/{i}"), spec, &[api], Target::T2d, 0, if above { dt + 1e-4 } else { dt - 1e-4 });
-            c.texture.levels[0] = Level { width: 4, height: 4, layers: 1, depth: Texels::Unorm(texels.clone()), stencil: None };
+            let mut c = d16_case(
+                &format!("b/{i}"),
+                spec,
+                &[api],
+                Target::T2d,
+                0,
+                if above { dt + 1e-4 } else { dt - 1e-4 },
+            );
+            c.texture.levels[0] = Level {
+                width: 4,
+                height: 4,
+                layers: 1,
+                depth: Texels::Unorm(texels.clone()),
+                stencil: None,
+            };
             c.lookup.coord = [(x as f64 + 0.5) / 4.0, (y as f64 + 0.5) / 4.0, 0.0, 1.0];
             cs.push(c);
             want.push(if above { 0.0 } else { 1.0 });
@@ -138,7 +225,13 @@ fn batched_draws_keep_every_case_in_its_own_pixel() {
         let answers = s.run(&cs);
         for ((c, w), a) in cs.iter().zip(want).zip(&answers) {
             assert_eq!(Session::rgba(a, api)[0], w, "{b} {}: {a}", c.id);
-            assert!(a["results"][0]["note"].as_str().unwrap().contains("batched"), "{b}: {a}");
+            assert!(
+                a["results"][0]["note"]
+                    .as_str()
+                    .unwrap()
+                    .contains("batched"),
+                "{b}: {a}"
+            );
         }
     }
 }

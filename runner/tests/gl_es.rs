@@ -9,18 +9,47 @@ use shadowcheck_model::*;
 fn es3_compare_and_targets() {
     let dt = 32768.0 / 65535.0;
     for b in backends("es3", false) {
-        let Some(mut s) = Session::start(&b) else { continue };
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
         assert_eq!(s.caps("specs"), vec!["gles32"], "{b}");
-        assert!(!s.caps("formats").contains(&"d32".to_string()), "ES has no DEPTH_COMPONENT32: {b}");
+        assert!(
+            !s.caps("formats").contains(&"d32".to_string()),
+            "ES has no DEPTH_COMPONENT32: {b}"
+        );
         let mut cs = Vec::new();
         let mut want = Vec::new();
-        for t in [Target::T2d, Target::Cube, Target::T2dArray, Target::CubeArray] {
+        for t in [
+            Target::T2d,
+            Target::Cube,
+            Target::T2dArray,
+            Target::CubeArray,
+        ] {
             for (d, r) in [(dt - 1e-4, 1.0), (dt + 1e-4, 0.0)] {
-                cs.push(d16_case(&format!("{t}/{d}"), Spec::Gles32, &[ApiPath::Es300], t, 32768, d));
+                cs.push(d16_case(
+                    &format!("{t}/{d}"),
+                    Spec::Gles32,
+                    &[ApiPath::Es300],
+                    t,
+                    32768,
+                    d,
+                ));
                 want.push(r);
             }
-            for (lod, bias, r) in [(0.0, 0.0, 0.0), (1.0, 0.0, 1.0), (2.0, 0.0, 0.0), (0.0, 1.0, 1.0)] {
-                cs.push(mip_case(&format!("{t}/lod={lod}/bias={bias}"), Spec::Gles32, &[ApiPath::Es300], t, lod, bias));
+            for (lod, bias, r) in [
+                (0.0, 0.0, 0.0),
+                (1.0, 0.0, 1.0),
+                (2.0, 0.0, 0.0),
+                (0.0, 1.0, 1.0),
+            ] {
+                cs.push(mip_case(
+                    &format!("{t}/lod={lod}/bias={bias}"),
+                    Spec::Gles32,
+                    &[ApiPath::Es300],
+                    t,
+                    lod,
+                    bias,
+                ));
                 want.push(r);
             }
         }
@@ -28,7 +57,11 @@ fn es3_compare_and_targets() {
         for ((c, r), a) in cs.iter().zip(want).zip(&answers) {
             if a["type"] == "skip" {
                 // GLSL ES has no bias form, explicit LOD or gradient form for cube-array shadow lookups.
-                assert!(c.texture.target == Target::CubeArray && c.lookup.bias != 0.0, "{b} {}: {a}", c.id);
+                assert!(
+                    c.texture.target == Target::CubeArray && c.lookup.bias != 0.0,
+                    "{b} {}: {a}",
+                    c.id
+                );
                 continue;
             }
             let rgba = Session::rgba(a, ApiPath::Es300);
@@ -42,16 +75,35 @@ fn es3_compare_and_targets() {
 #[test]
 fn es2_without_ext_shadow_samplers_lists_nothing_and_skips_with_the_reason() {
     for b in backends("es2", false) {
-        let Some(mut s) = Session::start(&b) else { continue };
-        if s.caps("extensions").contains(&"GL_EXT_shadow_samplers".to_string()) {
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
+        if s.caps("extensions")
+            .contains(&"GL_EXT_shadow_samplers".to_string())
+        {
             assert_eq!(s.caps("specs"), vec!["es2_ext"], "{b}");
             continue;
         }
-        assert!(s.caps("specs").is_empty() && s.caps("api").is_empty(), "{b}: {}", s.hello);
-        let c = d16_case("es2", Spec::Es2Ext, &[ApiPath::Es100Ext], Target::T2d, 32768, 0.5);
+        assert!(
+            s.caps("specs").is_empty() && s.caps("api").is_empty(),
+            "{b}: {}",
+            s.hello
+        );
+        let c = d16_case(
+            "es2",
+            Spec::Es2Ext,
+            &[ApiPath::Es100Ext],
+            Target::T2d,
+            32768,
+            0.5,
+        );
         let a = s.run(&[c]);
         assert_eq!(a[0]["type"], "skip", "{b}: {}", a[0]);
-        assert!(a[0]["reason"].as_str().unwrap().contains("es2_ext"), "{b}: {}", a[0]);
+        assert!(
+            a[0]["reason"].as_str().unwrap().contains("es2_ext"),
+            "{b}: {}",
+            a[0]
+        );
     }
 }
 
@@ -59,11 +111,27 @@ fn es2_without_ext_shadow_samplers_lists_nothing_and_skips_with_the_reason() {
 fn es3_lod_bias_state_is_a_skip_not_an_error() {
     // GLES 3.2 has no TEXTURE_LOD_BIAS (§8.10 lists no such parameter).
     for b in backends("es3", false).into_iter().take(1) {
-        let Some(mut s) = Session::start(&b) else { continue };
-        let mut c = d16_case("es/lodbias", Spec::Gles32, &[ApiPath::Es300], Target::T2d, 32768, 0.5);
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
+        let mut c = d16_case(
+            "es/lodbias",
+            Spec::Gles32,
+            &[ApiPath::Es300],
+            Target::T2d,
+            32768,
+            0.5,
+        );
         c.sampler.lod_bias = 1.0;
         let a = s.run(&[c]);
         assert_eq!(a[0]["type"], "skip", "{}", a[0]);
-        assert!(a[0]["reason"].as_str().unwrap().contains("TEXTURE_LOD_BIAS"), "{}", a[0]);
+        assert!(
+            a[0]["reason"]
+                .as_str()
+                .unwrap()
+                .contains("TEXTURE_LOD_BIAS"),
+            "{}",
+            a[0]
+        );
     }
 }

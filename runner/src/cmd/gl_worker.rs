@@ -22,7 +22,11 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     if args.probe {
         let (ok, line) = worker::probe_line(name);
         println!("{line}");
-        return Ok(if ok { ExitCode::SUCCESS } else { ExitCode::from(1) });
+        return Ok(if ok {
+            ExitCode::SUCCESS
+        } else {
+            ExitCode::from(1)
+        });
     }
     let mut w = worker::Worker::start(name)?;
     if args.state_check {
@@ -30,7 +34,11 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
         for c in &checks {
             println!("{}", serde_json::to_string(c)?);
         }
-        return Ok(if checks.iter().all(|c| c.ok) { ExitCode::SUCCESS } else { ExitCode::from(1) });
+        return Ok(if checks.iter().all(|c| c.ok) {
+            ExitCode::SUCCESS
+        } else {
+            ExitCode::from(1)
+        });
     }
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();

@@ -32,12 +32,27 @@ impl Renderer {
         let bytes: Vec<u8> = data.iter().flat_map(|f| f.to_ne_bytes()).collect();
         self.gl.active_texture(glow::TEXTURE1);
         self.gl.bind_texture(glow::TEXTURE_2D, Some(self.params));
-        self.gl.tex_sub_image_2d(glow::TEXTURE_2D, 0, 0, 0, PARAM_WIDTH, rows, glow::RGBA, glow::FLOAT, glow::PixelUnpackData::Slice(Some(&bytes)));
+        self.gl.tex_sub_image_2d(
+            glow::TEXTURE_2D,
+            0,
+            0,
+            0,
+            PARAM_WIDTH,
+            rows,
+            glow::RGBA,
+            glow::FLOAT,
+            glow::PixelUnpackData::Slice(Some(&bytes)),
+        );
         self.gl.active_texture(glow::TEXTURE0);
     }
 
     /// Runs a group of cases sharing texture and sampler state.
-    pub(super) unsafe fn run_group(&mut self, cases: &[Case], group: Vec<(usize, Vec<Plan>)>, st: &mut BatchState) {
+    pub(super) unsafe fn run_group(
+        &mut self,
+        cases: &[Case],
+        group: Vec<(usize, Vec<Plan>)>,
+        st: &mut BatchState,
+    ) {
         let first = &cases[group[0].0];
         while self.gl.get_error() != glow::NO_ERROR {}
         let tex = match texture::create(&self.gl, &self.info, first) {
@@ -65,7 +80,12 @@ impl Renderer {
                     self.reserve(st, 1);
                     let slot = st.pending.len();
                     match self.draw(plan, first.texture.target, slot) {
-                        Ok(()) => st.pending.push(Pending { case: *ci, path: plan.key.path, slot, note: plan.note.clone() }),
+                        Ok(()) => st.pending.push(Pending {
+                            case: *ci,
+                            path: plan.key.path,
+                            slot,
+                            note: plan.note.clone(),
+                        }),
                         Err(e) => st.fail(*ci, format!("{}: {e}", plan.key.path)),
                     }
                 }
@@ -73,7 +93,11 @@ impl Renderer {
         }
         for (key, items) in batches {
             for chunk in items.chunks(CAPACITY) {
-                let live: Vec<(usize, &Plan)> = chunk.iter().filter(|(ci, _)| st.answers[*ci].is_none()).copied().collect();
+                let live: Vec<(usize, &Plan)> = chunk
+                    .iter()
+                    .filter(|(ci, _)| st.answers[*ci].is_none())
+                    .copied()
+                    .collect();
                 if live.is_empty() {
                     continue;
                 }
@@ -84,7 +108,12 @@ impl Renderer {
                 match self.draw_batched(&key, slot0, live.len()) {
                     Ok(()) => {
                         for (k, (ci, p)) in live.iter().enumerate() {
-                            st.pending.push(Pending { case: *ci, path: p.key.path, slot: slot0 + k, note: format!("{}, batched", p.note) });
+                            st.pending.push(Pending {
+                                case: *ci,
+                                path: p.key.path,
+                                slot: slot0 + k,
+                                note: format!("{}, batched", p.note),
+                            });
                         }
                     }
                     Err(e) => {

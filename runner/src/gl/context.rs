@@ -18,6 +18,15 @@ pub fn install_hint(b: BackendName) -> String {
     format!("apt-get install -y {}", pkgs.join(" "))
 }
 
+/// Environment variables naming the libraries to load instead of the system's (a locally built
+/// Mesa, or a test of the missing-library path).
+pub const LIBEGL_ENV: &str = "SHADOWCHECK_LIBEGL";
+pub const LIBOSMESA_ENV: &str = "SHADOWCHECK_LIBOSMESA";
+
+fn lib_name(env: &str, default: &str) -> std::ffi::OsString {
+    std::env::var_os(env).unwrap_or_else(|| default.into())
+}
+
 const EGL_PLATFORM_SURFACELESS_MESA: khronos_egl::Enum = 0x31DD;
 const EGL_CONTEXT_MAJOR_VERSION: khronos_egl::Int = 0x3098;
 const EGL_CONTEXT_MINOR_VERSION: khronos_egl::Int = 0x30FB;
@@ -42,7 +51,7 @@ type OsMesaGetProc = unsafe extern "C" fn(*const c_char) -> *const c_void;
 
 enum Inner {
     Egl {
-        egl: khronos_egl::DynamicInstance<khronos_egl::EGL1_5>,
+        egl: Box<khronos_egl::DynamicInstance<khronos_egl::EGL1_5>>,
     },
     Osmesa {
         _lib: libloading::Library,
@@ -75,7 +84,9 @@ impl GlContext {
     /// Looks up a GL entry point (core, extension or legacy) for the current context.
     pub fn get_proc(&self, name: &str) -> *const c_void {
         match &self.inner {
-            Inner::Egl { egl } => egl.get_proc_address(name).map_or(std::ptr::null(), |f| f as *const c_void),
+            Inner::Egl { egl } => egl
+                .get_proc_address(name)
+                .map_or(std::ptr::null(), |f| f as *const c_void),
             Inner::Osmesa { get_proc, .. } => match CString::new(name) {
                 // SAFETY: OSMesaGetProcAddress takes a NUL-terminated name and returns a pointer or null.
                 Ok(c) => unsafe { get_proc(c.as_ptr()) },
@@ -88,7 +99,18 @@ impl GlContext {
 /// Versions to try, highest first: drivers refuse versions above what they support.
 fn versions(api: ContextApi) -> &'static [(i32, i32)] {
     match api {
-        ContextApi::Core | ContextApi::Compat => &[(4, 6), (4, 5), (4, 3), (4, 2), (4, 1), (4, 0), (3, 3), (3, 2), (3, 1), (3, 0)],
+        ContextApi::Core | ContextApi::Compat => &[
+            (4, 6),
+            (4, 5),
+            (4, 3),
+            (4, 2),
+            (4, 1),
+            (4, 0),
+            (3, 3),
+            (3, 2),
+            (3, 1),
+            (3, 0),
+        ],
         ContextApi::Es3 => &[(3, 2), (3, 1), (3, 0)],
         ContextApi::Es2 => &[(2, 0)],
     }
@@ -96,64 +118,129 @@ fn versions(api: ContextApi) -> &'static [(i32, i32)] {
 
 fn create_egl(b: BackendName) -> Result<GlContext, GlError> {
     // SAFETY: loading the system EGL library; khronos-egl checks every required symbol.
-    let egl = unsafe { khronos_egl::DynamicInstance::<khronos_egl::EGL1_5>::load_required_from_filename("libEGL.so.1") }
-        .map_err(|e| GlError::MissingLibrary {
-            lib: "libEGL.so.1 (EGL 1.5)".into(),
-            detail: e.to_string(),
-            install: install_hint(b),
-        })?;
+    let name = lib_name(LIBEGL_ENV, "libEGL.so.1");
+    let egl = unsafe {
+        khronos_egl::DynamicInstance::<khronos_egl::EGL1_5>::load_required_from_filename(&name)
+    }
+    .map_err(|e| GlError::MissingLibrary {
+        lib: format!("{} (EGL 1.5)", name.to_string_lossy()),
+        detail: e.to_string(),
+        install: install_hint(b),
+    })?;
     // SAFETY: the surfaceless platform takes no native display.
-    let display = unsafe { egl.get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, khronos_egl::DEFAULT_DISPLAY, &[khronos_egl::ATTRIB_NONE]) }
-        .map_err(|e| GlError::ContextFailed(format!("eglGetPlatformDisplay(SURFACELESS_MESA): {e} (install: {})", install_hint(b))))?;
-    egl.initialize(display)
-        .map_err(|e| GlError::ContextFailed(format!("eglInitialize: {e} (is libegl-mesa0 installed? {})", install_hint(b))))?;
-    let api = if b.api.is_es() { khronos_egl::OPENGL_ES_API } else { khronos_egl::OPENGL_API };
-    egl.bind_api(api).map_err(|e| GlError::ContextFailed(format!("eglBindAPI: {e}")))?;
+    let display = unsafe {
+        egl.get_platform_display(
+            EGL_PLATFORM_SURFACELESS_MESA,
+            khronos_egl::DEFAULT_DISPLAY,
+            &[khronos_egl::ATTRIB_NONE],
+        )
+    }
+    .map_err(|e| {
+        GlError::ContextFailed(format!(
+            "eglGetPlatformDisplay(SURFACELESS_MESA): {e} (install: {})",
+            install_hint(b)
+        ))
+    })?;
+    egl.initialize(display).map_err(|e| {
+        GlError::ContextFailed(format!(
+            "eglInitialize: {e} (is libegl-mesa0 installed? {})",
+            install_hint(b)
+        ))
+    })?;
+    let api = if b.api.is_es() {
+        khronos_egl::OPENGL_ES_API
+    } else {
+        khronos_egl::OPENGL_API
+    };
+    egl.bind_api(api)
+        .map_err(|e| GlError::ContextFailed(format!("eglBindAPI: {e}")))?;
     // SAFETY: EGL_NO_CONFIG_KHR is the null config (EGL_KHR_no_config_context, exposed by Mesa).
     let no_config = unsafe { khronos_egl::Config::from_ptr(std::ptr::null_mut()) };
     let mut last = String::new();
     for &(maj, min) in versions(b.api) {
-        let mut attrs = vec![EGL_CONTEXT_MAJOR_VERSION, maj, EGL_CONTEXT_MINOR_VERSION, min];
+        let mut attrs = vec![
+            EGL_CONTEXT_MAJOR_VERSION,
+            maj,
+            EGL_CONTEXT_MINOR_VERSION,
+            min,
+        ];
         match b.api {
-            ContextApi::Core => attrs.extend([EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT]),
-            ContextApi::Compat => attrs.extend([EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT]),
+            ContextApi::Core => attrs.extend([
+                EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+            ]),
+            ContextApi::Compat => attrs.extend([
+                EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+            ]),
             _ => {}
         }
         attrs.push(khronos_egl::NONE);
         match egl.create_context(display, no_config, None, &attrs) {
             Ok(ctx) => {
                 egl.make_current(display, None, None, Some(ctx))
-                    .map_err(|e| GlError::ContextFailed(format!("eglMakeCurrent(no surface): {e}")))?;
-                return Ok(GlContext { inner: Inner::Egl { egl }, requested: (maj, min) });
+                    .map_err(|e| {
+                        GlError::ContextFailed(format!("eglMakeCurrent(no surface): {e}"))
+                    })?;
+                return Ok(GlContext {
+                    inner: Inner::Egl { egl: Box::new(egl) },
+                    requested: (maj, min),
+                });
             }
             Err(e) => last = format!("eglCreateContext {}.{}: {e}", maj, min),
         }
     }
-    Err(GlError::ContextFailed(format!("{last} (no version of this context kind could be created)")))
+    Err(GlError::ContextFailed(format!(
+        "{last} (no version of this context kind could be created)"
+    )))
 }
 
 fn create_osmesa(b: BackendName) -> Result<GlContext, GlError> {
+    let name = lib_name(LIBOSMESA_ENV, "libOSMesa.so.8");
     let missing = |detail: String| GlError::MissingLibrary {
-        lib: "libOSMesa.so.8".into(),
+        lib: name.to_string_lossy().into_owned(),
         detail,
         install: install_hint(b),
     };
     // SAFETY: loading the system OSMesa library by name.
-    let lib = unsafe { libloading::Library::new("libOSMesa.so.8") }.map_err(|e| missing(e.to_string()))?;
+    let lib = unsafe { libloading::Library::new(&name) }.map_err(|e| missing(e.to_string()))?;
     // SAFETY: the symbol types match OSMesa's C declarations (osmesa.h).
     let (create, make_current, get_proc) = unsafe {
-        let c = *lib.get::<OsMesaCreate>(b"OSMesaCreateContextAttribs\0").map_err(|e| missing(e.to_string()))?;
-        let m = *lib.get::<OsMesaMakeCurrent>(b"OSMesaMakeCurrent\0").map_err(|e| missing(e.to_string()))?;
-        let g = *lib.get::<OsMesaGetProc>(b"OSMesaGetProcAddress\0").map_err(|e| missing(e.to_string()))?;
+        let c = *lib
+            .get::<OsMesaCreate>(b"OSMesaCreateContextAttribs\0")
+            .map_err(|e| missing(e.to_string()))?;
+        let m = *lib
+            .get::<OsMesaMakeCurrent>(b"OSMesaMakeCurrent\0")
+            .map_err(|e| missing(e.to_string()))?;
+        let g = *lib
+            .get::<OsMesaGetProc>(b"OSMesaGetProcAddress\0")
+            .map_err(|e| missing(e.to_string()))?;
         (c, m, g)
     };
-    let profile = if b.api == ContextApi::Core { OSMESA_CORE_PROFILE } else { OSMESA_COMPAT_PROFILE };
+    let profile = if b.api == ContextApi::Core {
+        OSMESA_CORE_PROFILE
+    } else {
+        OSMESA_COMPAT_PROFILE
+    };
     let (w, h) = (16, 16);
     let mut buffer = vec![0u8; (w * h * 4) as usize];
     for &(maj, min) in versions(b.api) {
         let attrs = [
-            OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0, OSMESA_ACCUM_BITS, 0,
-            OSMESA_PROFILE, profile, OSMESA_CONTEXT_MAJOR_VERSION, maj, OSMESA_CONTEXT_MINOR_VERSION, min, 0,
+            OSMESA_FORMAT,
+            OSMESA_RGBA,
+            OSMESA_DEPTH_BITS,
+            0,
+            OSMESA_STENCIL_BITS,
+            0,
+            OSMESA_ACCUM_BITS,
+            0,
+            OSMESA_PROFILE,
+            profile,
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            maj,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            min,
+            0,
         ];
         // SAFETY: zero-terminated attribute list, no share context.
         let ctx = unsafe { create(attrs.as_ptr(), std::ptr::null_mut()) };
@@ -165,7 +252,16 @@ fn create_osmesa(b: BackendName) -> Result<GlContext, GlError> {
         if ok == 0 {
             return Err(GlError::ContextFailed("OSMesaMakeCurrent failed".into()));
         }
-        return Ok(GlContext { inner: Inner::Osmesa { _lib: lib, get_proc, _buffer: buffer }, requested: (maj, min) });
+        return Ok(GlContext {
+            inner: Inner::Osmesa {
+                _lib: lib,
+                get_proc,
+                _buffer: buffer,
+            },
+            requested: (maj, min),
+        });
     }
-    Err(GlError::ContextFailed("OSMesaCreateContextAttribs returned NULL for every version".into()))
+    Err(GlError::ContextFailed(
+        "OSMesaCreateContextAttribs returned NULL for every version".into(),
+    ))
 }

@@ -9,8 +9,8 @@
 
 use super::legacy::{self, Legacy};
 use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
-use super::shaders;
 use super::protocol::PathResult;
+use super::shaders;
 use super::texture;
 use super::GlError;
 use glow::HasContext;
@@ -95,18 +95,48 @@ impl Renderer {
     ///
     /// # Safety
     /// `gl` must be current on this thread for the Renderer's whole life.
-    pub unsafe fn new(gl: glow::Context, info: GlInfo, legacy: Option<Legacy>) -> Result<Renderer, GlError> {
+    pub unsafe fn new(
+        gl: glow::Context,
+        info: GlInfo,
+        legacy: Option<Legacy>,
+    ) -> Result<Renderer, GlError> {
         let color = gl.create_texture().map_err(GlError::Gl)?;
         gl.bind_texture(glow::TEXTURE_2D, Some(color));
-        gl.tex_image_2d(glow::TEXTURE_2D, 0, glow::RGBA32F as i32, FB_SIZE, FB_SIZE, 0, glow::RGBA, glow::FLOAT, glow::PixelUnpackData::Slice(None));
-        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
-        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
+        gl.tex_image_2d(
+            glow::TEXTURE_2D,
+            0,
+            glow::RGBA32F as i32,
+            FB_SIZE,
+            FB_SIZE,
+            0,
+            glow::RGBA,
+            glow::FLOAT,
+            glow::PixelUnpackData::Slice(None),
+        );
+        gl.tex_parameter_i32(
+            glow::TEXTURE_2D,
+            glow::TEXTURE_MIN_FILTER,
+            glow::NEAREST as i32,
+        );
+        gl.tex_parameter_i32(
+            glow::TEXTURE_2D,
+            glow::TEXTURE_MAG_FILTER,
+            glow::NEAREST as i32,
+        );
         let fbo = gl.create_framebuffer().map_err(GlError::Gl)?;
         gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-        gl.framebuffer_texture_2d(glow::FRAMEBUFFER, glow::COLOR_ATTACHMENT0, glow::TEXTURE_2D, Some(color), 0);
+        gl.framebuffer_texture_2d(
+            glow::FRAMEBUFFER,
+            glow::COLOR_ATTACHMENT0,
+            glow::TEXTURE_2D,
+            Some(color),
+            0,
+        );
         let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
         if status != glow::FRAMEBUFFER_COMPLETE {
-            return Err(GlError::Gl(format!("RGBA32F framebuffer incomplete (status 0x{status:04X})")));
+            return Err(GlError::Gl(format!(
+                "RGBA32F framebuffer incomplete (status 0x{status:04X})"
+            )));
         }
         gl.bind_texture(glow::TEXTURE_2D, None);
         let vao = gl.create_vertex_array().map_err(GlError::Gl)?;
@@ -125,12 +155,38 @@ impl Renderer {
         gl.active_texture(glow::TEXTURE1);
         gl.bind_texture(glow::TEXTURE_2D, Some(params));
         let rows = CAPACITY as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
-        gl.tex_image_2d(glow::TEXTURE_2D, 0, glow::RGBA32F as i32, shaders::PARAM_WIDTH, rows, 0, glow::RGBA, glow::FLOAT, glow::PixelUnpackData::Slice(None));
-        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
-        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
+        gl.tex_image_2d(
+            glow::TEXTURE_2D,
+            0,
+            glow::RGBA32F as i32,
+            shaders::PARAM_WIDTH,
+            rows,
+            0,
+            glow::RGBA,
+            glow::FLOAT,
+            glow::PixelUnpackData::Slice(None),
+        );
+        gl.tex_parameter_i32(
+            glow::TEXTURE_2D,
+            glow::TEXTURE_MIN_FILTER,
+            glow::NEAREST as i32,
+        );
+        gl.tex_parameter_i32(
+            glow::TEXTURE_2D,
+            glow::TEXTURE_MAG_FILTER,
+            glow::NEAREST as i32,
+        );
         gl.active_texture(glow::TEXTURE0);
         texture::check(&gl, "framebuffer setup")?;
-        Ok(Renderer { gl, info, legacy, fbo, vao, params, programs: HashMap::new() })
+        Ok(Renderer {
+            gl,
+            info,
+            legacy,
+            fbo,
+            vao,
+            params,
+            programs: HashMap::new(),
+        })
     }
 
     unsafe fn compile(&mut self, key: &ShaderKey, batched: bool) -> Result<Compiled, String> {
@@ -138,8 +194,13 @@ impl Renderer {
         match key.path {
             ApiPath::FixedFunction => Ok(Compiled::Fixed),
             ApiPath::ArbFp => {
-                let l = self.legacy.as_ref().ok_or("legacy entry points not loaded")?;
-                l.arbfp_program(gl, &shaders::arbfp(key)).map(Compiled::Arb).map_err(|e| e.to_string())
+                let l = self
+                    .legacy
+                    .as_ref()
+                    .ok_or("legacy entry points not loaded")?;
+                l.arbfp_program(gl, &shaders::arbfp(key))
+                    .map(Compiled::Arb)
+                    .map_err(|e| e.to_string())
             }
             _ => {
                 let (vs, fs) = shaders::glsl(&self.info, key, batched.then_some(FB_SIZE));
@@ -149,7 +210,10 @@ impl Renderer {
                     gl.shader_source(sh, src);
                     gl.compile_shader(sh);
                     if !gl.get_shader_compile_status(sh) {
-                        return Err(format!("shader compile failed: {}\n{src}", gl.get_shader_info_log(sh).trim()));
+                        return Err(format!(
+                            "shader compile failed: {}\n{src}",
+                            gl.get_shader_info_log(sh).trim()
+                        ));
                     }
                     gl.attach_shader(program, sh);
                     gl.delete_shader(sh);
@@ -157,7 +221,10 @@ impl Renderer {
                 gl.bind_attrib_location(program, 0, "a_pos");
                 gl.link_program(program);
                 if !gl.get_program_link_status(program) {
-                    return Err(format!("program link failed: {}\n{fs}", gl.get_program_info_log(program).trim()));
+                    return Err(format!(
+                        "program link failed: {}\n{fs}",
+                        gl.get_program_info_log(program).trim()
+                    ));
                 }
                 gl.use_program(Some(program));
                 let u = |n: &str| gl.get_uniform_location(program, n);
@@ -194,7 +261,12 @@ impl Renderer {
     }
 
     /// One batched draw: cases' values are in the parameter texture, written at `slot0..slot0+n`.
-    pub(super) unsafe fn draw_batched(&mut self, key: &ShaderKey, slot0: usize, n: usize) -> Result<(), String> {
+    pub(super) unsafe fn draw_batched(
+        &mut self,
+        key: &ShaderKey,
+        slot0: usize,
+        n: usize,
+    ) -> Result<(), String> {
         self.program(key, true)?;
         let Some(Ok(Compiled::Glsl(p))) = self.programs.get(&(*key, true)) else {
             return Err("batched program is not GLSL".into());
@@ -211,7 +283,12 @@ impl Renderer {
         Ok(())
     }
 
-    pub(super) unsafe fn draw(&mut self, plan: &Plan, target: Target, slot: usize) -> Result<(), String> {
+    pub(super) unsafe fn draw(
+        &mut self,
+        plan: &Plan,
+        target: Target,
+        slot: usize,
+    ) -> Result<(), String> {
         self.program(&plan.key, false)?;
         let (x, y) = ((slot as i32) % FB_SIZE, (slot as i32) / FB_SIZE);
         let gl = &self.gl;
@@ -229,7 +306,10 @@ impl Renderer {
                 gl.draw_arrays(glow::TRIANGLES, 0, 3);
             }
             Some(Ok(Compiled::Arb(id))) => {
-                let l = self.legacy.as_ref().ok_or("legacy entry points not loaded")?;
+                let l = self
+                    .legacy
+                    .as_ref()
+                    .ok_or("legacy entry points not loaded")?;
                 gl.use_program(None);
                 gl.enable(legacy::GL_FRAGMENT_PROGRAM_ARB);
                 l.bind_arbfp(*id);
@@ -241,11 +321,18 @@ impl Renderer {
                 gl.disable(legacy::GL_FRAGMENT_PROGRAM_ARB);
             }
             Some(Ok(Compiled::Fixed)) => {
-                let l = self.legacy.as_ref().ok_or("legacy entry points not loaded")?;
+                let l = self
+                    .legacy
+                    .as_ref()
+                    .ok_or("legacy entry points not loaded")?;
                 gl.use_program(None);
                 let enable = target.gl();
                 gl.enable(enable);
-                l.tex_envi(legacy::GL_TEXTURE_ENV, legacy::GL_TEXTURE_ENV_MODE, legacy::GL_REPLACE as i32);
+                l.tex_envi(
+                    legacy::GL_TEXTURE_ENV,
+                    legacy::GL_TEXTURE_ENV_MODE,
+                    legacy::GL_REPLACE as i32,
+                );
                 // REPLACE takes the colour of ALPHA textures and the alpha of LUMINANCE ones from
                 // the fragment: (0,0,0,1) gives the layouts of GL 2.1 Table 3.20.
                 l.color4f([0.0, 0.0, 0.0, 1.0]);
@@ -266,8 +353,17 @@ impl Renderer {
     pub(super) unsafe fn read(&self, used: usize) -> Vec<[f32; 4]> {
         let rows = used.div_ceil(FB_SIZE as usize).max(1) as i32;
         let mut buf = vec![0u8; (FB_SIZE * rows) as usize * 16];
-        self.gl.bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
-        self.gl.read_pixels(0, 0, FB_SIZE, rows, glow::RGBA, glow::FLOAT, glow::PixelPackData::Slice(Some(&mut buf)));
+        self.gl
+            .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
+        self.gl.read_pixels(
+            0,
+            0,
+            FB_SIZE,
+            rows,
+            glow::RGBA,
+            glow::FLOAT,
+            glow::PixelPackData::Slice(Some(&mut buf)),
+        );
         buf.chunks_exact(16)
             .map(|c| {
                 let f = |i: usize| f32::from_ne_bytes([c[i], c[i + 1], c[i + 2], c[i + 3]]);
@@ -290,10 +386,15 @@ impl Renderer {
             return Some("OpenGL ES has no TEXTURE_LOD_BIAS".into());
         }
         if case.sampler.fail_value.is_some() && !self.info.has_ext("GL_ARB_shadow_ambient") {
-            return Some("GL_ARB_shadow_ambient not exposed (TEXTURE_COMPARE_FAIL_VALUE_ARB)".into());
+            return Some(
+                "GL_ARB_shadow_ambient not exposed (TEXTURE_COMPARE_FAIL_VALUE_ARB)".into(),
+            );
         }
         if !self.info.targets().contains(&case.texture.target) {
-            return Some(format!("target {} not supported by this context", case.texture.target));
+            return Some(format!(
+                "target {} not supported by this context",
+                case.texture.target
+            ));
         }
         None
     }
@@ -345,7 +446,8 @@ impl Renderer {
             let mut group: Vec<(usize, Vec<Plan>)> = Vec::new();
             for item in planned {
                 let same = group.first().is_some_and(|(g, _)| {
-                    cases[*g].texture == cases[item.0].texture && cases[*g].sampler == cases[item.0].sampler
+                    cases[*g].texture == cases[item.0].texture
+                        && cases[*g].sampler == cases[item.0].sampler
                 });
                 if !same && !group.is_empty() {
                     self.run_group(cases, std::mem::take(&mut group), &mut st);
@@ -388,7 +490,14 @@ impl Renderer {
     }
 
     /// Queues `tex` for read-back (desktop GL) or deletes it (ES has no glGetTexImage).
-    pub(super) unsafe fn retire(&mut self, cases: &[Case], st: &mut BatchState, tex: glow::Texture, ci: usize, sharing: Vec<usize>) {
+    pub(super) unsafe fn retire(
+        &mut self,
+        cases: &[Case],
+        st: &mut BatchState,
+        tex: glow::Texture,
+        ci: usize,
+        sharing: Vec<usize>,
+    ) {
         if self.info.es {
             self.gl.delete_texture(tex);
             return;
@@ -411,7 +520,13 @@ impl Renderer {
     /// A compatibility-context case: every path on a fresh texture. Mesa keeps per-texture sampler
     /// views whose DEPTH_TEXTURE_MODE swizzle depends on which path drew before, and one path's
     /// answer must not depend on another path or on the case's neighbours.
-    unsafe fn run_compat_case(&mut self, cases: &[Case], ci: usize, plans: &[Plan], st: &mut BatchState) {
+    unsafe fn run_compat_case(
+        &mut self,
+        cases: &[Case],
+        ci: usize,
+        plans: &[Plan],
+        st: &mut BatchState,
+    ) {
         let case = &cases[ci];
         let mut failed = None;
         for (pi, plan) in plans.iter().enumerate() {
@@ -435,8 +550,17 @@ impl Renderer {
                 failed = Some(format!("{}: {e}", plan.key.path));
                 break;
             }
-            let how = if plan.key.form == LodForm::Constant { "fixed-function".to_string() } else { plan.note.clone() };
-            st.pending.push(Pending { case: ci, path: plan.key.path, slot, note: how });
+            let how = if plan.key.form == LodForm::Constant {
+                "fixed-function".to_string()
+            } else {
+                plan.note.clone()
+            };
+            st.pending.push(Pending {
+                case: ci,
+                path: plan.key.path,
+                slot,
+                note: how,
+            });
         }
         if let Err(e) = texture::check(&self.gl, "drawing") {
             failed = failed.or(Some(e.to_string()));
@@ -447,7 +571,11 @@ impl Renderer {
     }
 
     /// Reads back the pending pixels into `results`.
-    pub(super) unsafe fn collect(&self, pending: &mut Vec<Pending>, results: &mut [Vec<PathResult>]) {
+    pub(super) unsafe fn collect(
+        &self,
+        pending: &mut Vec<Pending>,
+        results: &mut [Vec<PathResult>],
+    ) {
         if pending.is_empty() {
             return;
         }

@@ -52,14 +52,20 @@ fn load<T: Copy>(loader: &dyn Fn(&str) -> *const c_void, name: &str) -> Result<T
     if p.is_null() {
         return Err(GlError::MissingEntryPoint(name.to_string()));
     }
-    debug_assert_eq!(std::mem::size_of::<T>(), std::mem::size_of::<*const c_void>());
+    debug_assert_eq!(
+        std::mem::size_of::<T>(),
+        std::mem::size_of::<*const c_void>()
+    );
     // SAFETY: T is an `extern "system" fn` type matching the GL declaration of `name`.
     Ok(unsafe { std::mem::transmute_copy::<*const c_void, T>(&p) })
 }
 
 impl Legacy {
     /// Loads the entry points; `with_arbfp` also loads ARB_fragment_program's.
-    pub fn load(loader: &dyn Fn(&str) -> *const c_void, with_arbfp: bool) -> Result<Legacy, GlError> {
+    pub fn load(
+        loader: &dyn Fn(&str) -> *const c_void,
+        with_arbfp: bool,
+    ) -> Result<Legacy, GlError> {
         let arbfp = if with_arbfp {
             Some(ArbFp {
                 gen: load(loader, "glGenProgramsARB")?,
@@ -129,17 +135,27 @@ impl Legacy {
     /// A compatibility context must be current.
     pub unsafe fn arbfp_program(&self, gl: &glow::Context, src: &str) -> Result<u32, GlError> {
         use glow::HasContext;
-        let fp = self.arbfp.as_ref().ok_or_else(|| GlError::MissingEntryPoint("glProgramStringARB".into()))?;
+        let fp = self
+            .arbfp
+            .as_ref()
+            .ok_or_else(|| GlError::MissingEntryPoint("glProgramStringARB".into()))?;
         while gl.get_error() != glow::NO_ERROR {}
         let mut id = 0u32;
         (fp.gen)(1, &mut id);
         (fp.bind)(GL_FRAGMENT_PROGRAM_ARB, id);
-        (fp.string)(GL_FRAGMENT_PROGRAM_ARB, GL_PROGRAM_FORMAT_ASCII_ARB, src.len() as i32, src.as_ptr() as *const c_void);
+        (fp.string)(
+            GL_FRAGMENT_PROGRAM_ARB,
+            GL_PROGRAM_FORMAT_ASCII_ARB,
+            src.len() as i32,
+            src.as_ptr() as *const c_void,
+        );
         let pos = gl.get_parameter_i32(GL_PROGRAM_ERROR_POSITION_ARB);
         let err = gl.get_error();
         if pos != -1 || err != glow::NO_ERROR {
             let msg = gl.get_parameter_string(GL_PROGRAM_ERROR_STRING_ARB);
-            return Err(GlError::Gl(format!("ARB fragment program rejected at {pos}: {msg}\n{src}")));
+            return Err(GlError::Gl(format!(
+                "ARB fragment program rejected at {pos}: {msg}\n{src}"
+            )));
         }
         Ok(id)
     }

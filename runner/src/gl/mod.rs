@@ -54,7 +54,11 @@ pub enum GlError {
     #[error("backend unavailable: {0}")]
     Unavailable(String),
     #[error("{lib} could not be loaded ({detail}); install it with `{install}`")]
-    MissingLibrary { lib: String, detail: String, install: String },
+    MissingLibrary {
+        lib: String,
+        detail: String,
+        install: String,
+    },
     #[error("context creation failed: {0}")]
     ContextFailed(String),
     #[error("wrong driver: asked for {wanted}, GL_RENDERER is `{renderer}`")]
@@ -111,7 +115,11 @@ pub fn worker_command(backend: &str) -> Result<WorkerCommand, GlError> {
 
 /// Backend names that can run here (each probed in a child process).
 pub fn probe() -> Vec<String> {
-    probe_report().into_iter().filter(|(_, r)| r.is_ok()).map(|(n, _)| n).collect()
+    probe_report()
+        .into_iter()
+        .filter(|(_, r)| r.is_ok())
+        .map(|(n, _)| n)
+        .collect()
 }
 
 /// Longest a probe child may take (context creation on zink starts a Vulkan device).
@@ -133,10 +141,16 @@ pub fn probe_report() -> Vec<(String, Result<(), String>)> {
             Err(e) => out.push((key, Err(e.to_string()))),
             Ok(wc) => {
                 let mut c = wc.to_command();
-                c.arg("--probe").stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
+                c.arg("--probe")
+                    .stdin(Stdio::null())
+                    .stdout(Stdio::piped())
+                    .stderr(Stdio::piped());
                 match c.spawn() {
                     Ok(child) => running.push((key, child)),
-                    Err(e) => out.push((key, Err(format!("cannot start {}: {e}", wc.program.display())))),
+                    Err(e) => out.push((
+                        key,
+                        Err(format!("cannot start {}: {e}", wc.program.display())),
+                    )),
                 }
             }
         }
@@ -149,7 +163,10 @@ pub fn probe_report() -> Vec<(String, Result<(), String>)> {
                 Ok(None) if start.elapsed() > PROBE_TIMEOUT => {
                     let _ = child.kill();
                     let _ = child.wait();
-                    break Err(format!("probe timed out after {}s", PROBE_TIMEOUT.as_secs()));
+                    break Err(format!(
+                        "probe timed out after {}s",
+                        PROBE_TIMEOUT.as_secs()
+                    ));
                 }
                 Ok(None) => std::thread::sleep(Duration::from_millis(20)),
                 Err(e) => break Err(e.to_string()),
@@ -165,7 +182,12 @@ pub fn probe_report() -> Vec<(String, Result<(), String>)> {
 fn probe_result(child: std::process::Child) -> Result<(), String> {
     let o = child.wait_with_output().map_err(|e| e.to_string())?;
     let stdout = String::from_utf8_lossy(&o.stdout);
-    let line = stdout.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("").to_string();
+    let line = stdout
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .unwrap_or("")
+        .to_string();
     if o.status.success() && line.starts_with("ok") {
         return Ok(());
     }
@@ -179,5 +201,15 @@ fn probe_result(child: std::process::Child) -> Result<(), String> {
     };
     let stderr = String::from_utf8_lossy(&o.stderr);
     let tail: Vec<&str> = stderr.lines().rev().take(3).collect();
-    Err(format!("{how}{}", if tail.is_empty() { String::new() } else { format!(": {}", tail.into_iter().rev().collect::<Vec<_>>().join(" | ")) }))
+    Err(format!(
+        "{how}{}",
+        if tail.is_empty() {
+            String::new()
+        } else {
+            format!(
+                ": {}",
+                tail.into_iter().rev().collect::<Vec<_>>().join(" | ")
+            )
+        }
+    ))
 }

@@ -68,7 +68,12 @@ impl Driver {
 }
 
 impl ContextApi {
-    pub const ALL: [ContextApi; 4] = [ContextApi::Core, ContextApi::Compat, ContextApi::Es3, ContextApi::Es2];
+    pub const ALL: [ContextApi; 4] = [
+        ContextApi::Core,
+        ContextApi::Compat,
+        ContextApi::Es3,
+        ContextApi::Es2,
+    ];
     pub fn key(self) -> &'static str {
         match self {
             ContextApi::Core => "core",
@@ -85,7 +90,12 @@ impl ContextApi {
     pub fn paths(self) -> &'static [ApiPath] {
         match self {
             ContextApi::Core => &[ApiPath::GlslCore],
-            ContextApi::Compat => &[ApiPath::FixedFunction, ApiPath::Glsl120, ApiPath::Glsl130, ApiPath::ArbFp],
+            ContextApi::Compat => &[
+                ApiPath::FixedFunction,
+                ApiPath::Glsl120,
+                ApiPath::Glsl130,
+                ApiPath::ArbFp,
+            ],
             ContextApi::Es3 => &[ApiPath::Es300],
             ContextApi::Es2 => &[ApiPath::Es100Ext],
         }
@@ -99,7 +109,11 @@ impl BackendName {
         for platform in [Platform::Egl, Platform::Osmesa] {
             for driver in Driver::ALL {
                 for api in ContextApi::ALL {
-                    v.push(BackendName { platform, driver, api });
+                    v.push(BackendName {
+                        platform,
+                        driver,
+                        api,
+                    });
                 }
             }
         }
@@ -109,10 +123,12 @@ impl BackendName {
     /// Why this combination can never work, independent of what is installed.
     pub fn static_unavailability(self) -> Option<String> {
         if self.platform == Platform::Osmesa && self.api.is_es() {
-            return Some("OSMesa creates desktop GL contexts only (no OpenGL ES); use egl:".to_string()
-                + self.driver.key()
-                + ":"
-                + self.api.key());
+            return Some(
+                "OSMesa creates desktop GL contexts only (no OpenGL ES); use egl:".to_string()
+                    + self.driver.key()
+                    + ":"
+                    + self.api.key(),
+            );
         }
         if self.platform == Platform::Osmesa && self.driver == Driver::Zink {
             return Some(
@@ -142,17 +158,28 @@ impl BackendName {
 
 impl std::fmt::Display for BackendName {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}:{}:{}", self.platform.key(), self.driver.key(), self.api.key())
+        write!(
+            f,
+            "{}:{}:{}",
+            self.platform.key(),
+            self.driver.key(),
+            self.api.key()
+        )
     }
 }
 
 impl std::str::FromStr for BackendName {
     type Err = GlError;
     fn from_str(s: &str) -> Result<Self, GlError> {
-        let bad = |why: &str| GlError::BadName { name: s.to_string(), why: why.to_string() };
+        let bad = |why: &str| GlError::BadName {
+            name: s.to_string(),
+            why: why.to_string(),
+        };
         let parts: Vec<&str> = s.split(':').collect();
         if parts.len() != 3 {
-            return Err(bad("expected egl|osmesa:llvmpipe|softpipe|zink:core|compat|es3|es2"));
+            return Err(bad(
+                "expected egl|osmesa:llvmpipe|softpipe|zink:core|compat|es3|es2",
+            ));
         }
         let platform = match parts[0] {
             "egl" => Platform::Egl,
@@ -167,7 +194,11 @@ impl std::str::FromStr for BackendName {
             .into_iter()
             .find(|a| a.key() == parts[2])
             .ok_or_else(|| bad("api must be core, compat, es3 or es2"))?;
-        Ok(BackendName { platform, driver, api })
+        Ok(BackendName {
+            platform,
+            driver,
+            api,
+        })
     }
 }
 
@@ -186,7 +217,10 @@ mod tests {
 
     #[test]
     fn bad_names_say_why() {
-        let e = "egl:swrast:core".parse::<BackendName>().unwrap_err().to_string();
+        let e = "egl:swrast:core"
+            .parse::<BackendName>()
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("driver"), "{e}");
         assert!("egl:llvmpipe".parse::<BackendName>().is_err());
     }
@@ -199,6 +233,8 @@ mod tests {
         assert!(e.static_unavailability().unwrap().contains("OpenGL ES"));
         let ok: BackendName = "egl:zink:es2".parse().unwrap();
         assert!(ok.static_unavailability().is_none());
-        assert!(ok.env().contains(&("GALLIUM_DRIVER".to_string(), "zink".to_string())));
+        assert!(ok
+            .env()
+            .contains(&("GALLIUM_DRIVER".to_string(), "zink".to_string())));
     }
 }

@@ -9,11 +9,14 @@
 //!   coordinate that varies across the 2x2 pixel quad by exactly those gradients, while being exactly
 //!   the case's coordinate at the written pixel's centre (the offset is 0 there); the bias form
 //!   passes `lookup.bias`.
+//!
 //! Where a sampler type has no bias form but has `Lod`/`Grad`, the bias is folded into the explicit
 //! LOD (same lambda' by §8.14.1, noted in the result). Anything else is skipped with the reason.
 
 use super::names::ContextApi;
-use shadowcheck_model::{ApiPath, Case, CompareMode, DepthStencilMode, DepthTextureMode, Filter, Target};
+use shadowcheck_model::{
+    ApiPath, Case, CompareMode, DepthStencilMode, DepthTextureMode, Filter, Target,
+};
 use std::collections::HashSet;
 
 /// What the current context is and exposes.
@@ -40,13 +43,17 @@ impl GlInfo {
     }
     pub fn cube_array(&self) -> bool {
         if self.es {
-            self.at_least(3, 2) || self.has_ext("GL_OES_texture_cube_map_array") || self.has_ext("GL_EXT_texture_cube_map_array")
+            self.at_least(3, 2)
+                || self.has_ext("GL_OES_texture_cube_map_array")
+                || self.has_ext("GL_EXT_texture_cube_map_array")
         } else {
             self.at_least(4, 0) || self.has_ext("GL_ARB_texture_cube_map_array")
         }
     }
     pub fn arbfp_shadow(&self) -> bool {
-        self.compat && self.has_ext("GL_ARB_fragment_program") && self.has_ext("GL_ARB_fragment_program_shadow")
+        self.compat
+            && self.has_ext("GL_ARB_fragment_program")
+            && self.has_ext("GL_ARB_fragment_program_shadow")
     }
     pub fn shadow_samplers_es2(&self) -> bool {
         self.has_ext("GL_EXT_shadow_samplers")
@@ -70,7 +77,14 @@ impl GlInfo {
         let mut v = if self.es || self.api == ContextApi::Es2 {
             vec![Target::T2d, Target::Cube, Target::T2dArray]
         } else {
-            vec![Target::T1d, Target::T2d, Target::Rect, Target::Cube, Target::T1dArray, Target::T2dArray]
+            vec![
+                Target::T1d,
+                Target::T2d,
+                Target::Rect,
+                Target::Cube,
+                Target::T1dArray,
+                Target::T2dArray,
+            ]
         };
         if self.api == ContextApi::Es2 {
             v = vec![Target::T2d];
@@ -165,7 +179,13 @@ fn dialect(path: ApiPath) -> Dialect {
 
 /// Does the language have this lookup function? (GLSL 4.60 §8.9.2, GLSL ES 3.20 §8.9.2,
 /// GLSL 1.20 §8.7, EXT_shadow_samplers, ARB_fragment_program(_shadow).)
-pub fn available(path: ApiPath, kind: SamplerKind, target: Target, form: LodForm, proj: bool) -> bool {
+pub fn available(
+    path: ApiPath,
+    kind: SamplerKind,
+    target: Target,
+    form: LodForm,
+    proj: bool,
+) -> bool {
     use Target::*;
     let d = dialect(path);
     let es_target = matches!(target, T2d | Cube | T2dArray | CubeArray);
@@ -176,20 +196,28 @@ pub fn available(path: ApiPath, kind: SamplerKind, target: Target, form: LodForm
         return false;
     }
     match d {
-        Dialect::Ff => form == LodForm::Constant && (matches!(target, T1d | T2d | Rect) || (kind != SamplerKind::Shadow && target == Cube)),
+        Dialect::Ff => {
+            form == LodForm::Constant
+                && (matches!(target, T1d | T2d | Rect)
+                    || (kind != SamplerKind::Shadow && target == Cube))
+        }
         Dialect::ArbFp => match form {
             LodForm::Implicit(bias) => {
                 kind != SamplerKind::Uint
-                    && (matches!(target, T1d | T2d | Rect) || (kind == SamplerKind::Float && target == Cube))
+                    && (matches!(target, T1d | T2d | Rect)
+                        || (kind == SamplerKind::Float && target == Cube))
                     && !(bias && (proj || target == Rect))
             }
             _ => false,
         },
-        Dialect::Es100 => target == T2d && kind != SamplerKind::Uint && form == LodForm::Implicit(false),
+        Dialect::Es100 => {
+            target == T2d && kind != SamplerKind::Uint && form == LodForm::Implicit(false)
+        }
         Dialect::Glsl120 => match form {
             LodForm::Implicit(bias) => {
                 kind != SamplerKind::Uint
-                    && (matches!(target, T1d | T2d | Rect) || (kind == SamplerKind::Float && target == Cube))
+                    && (matches!(target, T1d | T2d | Rect)
+                        || (kind == SamplerKind::Float && target == Cube))
                     && !(bias && target == Rect)
             }
             _ => false,
@@ -200,7 +228,9 @@ pub fn available(path: ApiPath, kind: SamplerKind, target: Target, form: LodForm
                 match form {
                     LodForm::Lod => matches!(target, T1d | T2d) || (!proj && target == T1dArray),
                     LodForm::Grad => target != CubeArray,
-                    LodForm::Implicit(true) => matches!(target, T1d | T2d) || (!proj && matches!(target, Cube | T1dArray)),
+                    LodForm::Implicit(true) => {
+                        matches!(target, T1d | T2d) || (!proj && matches!(target, Cube | T1dArray))
+                    }
                     LodForm::Implicit(false) => true,
                     LodForm::Constant => false,
                 }
@@ -219,7 +249,12 @@ pub fn available(path: ApiPath, kind: SamplerKind, target: Target, form: LodForm
 /// The `c` of GL 4.6 §8.14 (mag/min switch-over point).
 fn switch_over(case: &Case) -> f64 {
     let s = &case.sampler;
-    if s.mag_filter == Filter::Linear && matches!(s.min_filter, Filter::NearestMipmapNearest | Filter::NearestMipmapLinear) {
+    if s.mag_filter == Filter::Linear
+        && matches!(
+            s.min_filter,
+            Filter::NearestMipmapNearest | Filter::NearestMipmapLinear
+        )
+    {
         0.5
     } else {
         0.0
@@ -231,7 +266,8 @@ fn switch_over(case: &Case) -> f64 {
 fn constant_coords_equivalent(case: &Case) -> bool {
     let s = &case.sampler;
     let f32r = |v: f64| v as f32 as f64;
-    let lam = (f32r(case.lookup.lod) + s.lod_bias as f64 + f32r(case.lookup.bias)).clamp(s.min_lod as f64, (s.max_lod as f64).max(s.min_lod as f64));
+    let lam = (f32r(case.lookup.lod) + s.lod_bias as f64 + f32r(case.lookup.bias))
+        .clamp(s.min_lod as f64, (s.max_lod as f64).max(s.min_lod as f64));
     let lam_ff = s.min_lod as f64;
     let c = switch_over(case);
     (lam <= c && lam_ff <= c) || (lam > c && lam_ff > c && !s.min_filter.is_mipmap())
@@ -247,7 +283,11 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
     let forms: Vec<(LodForm, &str)> = if path == ApiPath::FixedFunction {
         vec![(LodForm::Constant, "constant texture coordinates")]
     } else if bias == 0.0 {
-        vec![(LodForm::Lod, "explicit LOD"), (LodForm::Grad, "explicit gradients"), (LodForm::Implicit(false), "implicit derivatives")]
+        vec![
+            (LodForm::Lod, "explicit LOD"),
+            (LodForm::Grad, "explicit gradients"),
+            (LodForm::Implicit(false), "implicit derivatives"),
+        ]
     } else {
         vec![
             (LodForm::Implicit(true), "implicit derivatives with bias"),
@@ -265,7 +305,11 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
                 if proj { "projective " } else { "" },
                 kind,
                 t,
-                if bias != 0.0 { " with a shader bias" } else { "" }
+                if bias != 0.0 {
+                    " with a shader bias"
+                } else {
+                    ""
+                }
             )
         })?;
     if form == LodForm::Constant && !constant_coords_equivalent(case) {
@@ -274,16 +318,33 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
             l.lod, l.bias
         ));
     }
-    let key = ShaderKey { path, target: t, kind, form, proj, mode: case.sampler.depth_texture_mode };
+    let key = ShaderKey {
+        path,
+        target: t,
+        kind,
+        form,
+        proj,
+        mode: case.sampler.depth_texture_mode,
+    };
     let folded = matches!(form, LodForm::Lod | LodForm::Grad) && bias != 0.0;
     let lod_eff = if folded { lod + bias } else { lod };
-    let c = [l.coord[0] as f32, l.coord[1] as f32, l.coord[2] as f32, l.coord[3] as f32];
+    let c = [
+        l.coord[0] as f32,
+        l.coord[1] as f32,
+        l.coord[2] as f32,
+        l.coord[3] as f32,
+    ];
     let q = if proj { c[3] } else { 1.0 };
     let dref = l.dref as f32;
     let shadow = kind == SamplerKind::Shadow;
     // P by target (see shaders::p_expr).
     let p = match t {
-        Target::T1d | Target::T2d | Target::Rect => [c[0], if t == Target::T1d { 0.0 } else { c[1] }, if shadow { dref } else { 0.0 }, q],
+        Target::T1d | Target::T2d | Target::Rect => [
+            c[0],
+            if t == Target::T1d { 0.0 } else { c[1] },
+            if shadow { dref } else { 0.0 },
+            q,
+        ],
         Target::T1dArray => [c[0], c[1], dref, 1.0],
         Target::T2dArray => [c[0], c[1], c[2], dref],
         Target::Cube => [c[0], c[1], c[2], dref],
@@ -309,9 +370,23 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
         // TXB takes the bias in the fourth component.
         let mut p = p;
         p[3] = bias;
-        return Ok(Plan { key, p, x, dx, dy, note: format!("ARB fp TXB, {how}") });
+        return Ok(Plan {
+            key,
+            p,
+            x,
+            dx,
+            dy,
+            note: format!("ARB fp TXB, {how}"),
+        });
     }
-    Ok(Plan { key, p, x, dx, dy, note: how.to_string() })
+    Ok(Plan {
+        key,
+        p,
+        x,
+        dx,
+        dy,
+        note: how.to_string(),
+    })
 }
 
 /// Screen-space gradients of the lookup coordinate giving a scale factor rho = 2^lod
@@ -335,7 +410,9 @@ pub fn gradients(case: &Case, lod: f32) -> ([f32; 4], [f32; 4]) {
         }
         Target::Cube | Target::CubeArray => {
             let c = &case.lookup.coord;
-            let m = (0..3).max_by(|&a, &b| c[a].abs().total_cmp(&c[b].abs())).unwrap_or(2);
+            let m = (0..3)
+                .max_by(|&a, &b| c[a].abs().total_cmp(&c[b].abs()))
+                .unwrap_or(2);
             let ma = c[m].abs().max(f64::MIN_POSITIVE);
             let g = (scale * 2.0 * ma / w) as f32;
             let minor: Vec<usize> = (0..3).filter(|&i| i != m).collect();
@@ -360,10 +437,23 @@ mod tests {
                 target,
                 format: Format::D16,
                 base_level: 0,
-                levels: vec![Level { width: w, height: h, layers, depth: Texels::Unorm(vec![0; (w * h * layers) as usize]), stencil: None }],
+                levels: vec![Level {
+                    width: w,
+                    height: h,
+                    layers,
+                    depth: Texels::Unorm(vec![0; (w * h * layers) as usize]),
+                    stencil: None,
+                }],
             },
             sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
-            lookup: Lookup { coord: [0.5, 0.5, 0.5, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0 },
+            lookup: Lookup {
+                coord: [0.5, 0.5, 0.5, 1.0],
+                layer: 0.0,
+                dref: 0.5,
+                projective: false,
+                lod: 0.0,
+                bias: 0.0,
+            },
             expect: None,
         }
     }
@@ -372,18 +462,72 @@ mod tests {
     fn glsl_function_availability_follows_the_language_tables() {
         use LodForm::*;
         // GLSL 4.60 §8.9.2: textureLod exists for 1D/2D/1DArray shadow only; no textureGrad on cube array shadow.
-        assert!(available(ApiPath::GlslCore, SamplerKind::Shadow, Target::T2d, Lod, true));
-        assert!(!available(ApiPath::GlslCore, SamplerKind::Shadow, Target::Cube, Lod, false));
-        assert!(available(ApiPath::GlslCore, SamplerKind::Shadow, Target::Cube, Grad, false));
-        assert!(!available(ApiPath::GlslCore, SamplerKind::Shadow, Target::CubeArray, Grad, false));
-        assert!(!available(ApiPath::GlslCore, SamplerKind::Shadow, Target::T2dArray, Implicit(true), false));
+        assert!(available(
+            ApiPath::GlslCore,
+            SamplerKind::Shadow,
+            Target::T2d,
+            Lod,
+            true
+        ));
+        assert!(!available(
+            ApiPath::GlslCore,
+            SamplerKind::Shadow,
+            Target::Cube,
+            Lod,
+            false
+        ));
+        assert!(available(
+            ApiPath::GlslCore,
+            SamplerKind::Shadow,
+            Target::Cube,
+            Grad,
+            false
+        ));
+        assert!(!available(
+            ApiPath::GlslCore,
+            SamplerKind::Shadow,
+            Target::CubeArray,
+            Grad,
+            false
+        ));
+        assert!(!available(
+            ApiPath::GlslCore,
+            SamplerKind::Shadow,
+            Target::T2dArray,
+            Implicit(true),
+            false
+        ));
         // GLSL ES 3.00 has no 1D or rectangle samplers.
-        assert!(!available(ApiPath::Es300, SamplerKind::Shadow, Target::T1d, Implicit(false), false));
+        assert!(!available(
+            ApiPath::Es300,
+            SamplerKind::Shadow,
+            Target::T1d,
+            Implicit(false),
+            false
+        ));
         // Projective forms exist for 1D, 2D and rect only.
-        assert!(!available(ApiPath::GlslCore, SamplerKind::Shadow, Target::Cube, Grad, true));
+        assert!(!available(
+            ApiPath::GlslCore,
+            SamplerKind::Shadow,
+            Target::Cube,
+            Grad,
+            true
+        ));
         // Fixed-function shadow: 1D, 2D, rect.
-        assert!(available(ApiPath::FixedFunction, SamplerKind::Shadow, Target::Rect, Constant, false));
-        assert!(!available(ApiPath::FixedFunction, SamplerKind::Shadow, Target::Cube, Constant, false));
+        assert!(available(
+            ApiPath::FixedFunction,
+            SamplerKind::Shadow,
+            Target::Rect,
+            Constant,
+            false
+        ));
+        assert!(!available(
+            ApiPath::FixedFunction,
+            SamplerKind::Shadow,
+            Target::Cube,
+            Constant,
+            false
+        ));
     }
 
     #[test]
@@ -423,6 +567,8 @@ mod tests {
         assert!(plan(ApiPath::FixedFunction, &c).is_ok());
         c.sampler.min_filter = Filter::LinearMipmapLinear;
         c.lookup.lod = 1.0;
-        assert!(plan(ApiPath::FixedFunction, &c).unwrap_err().contains("lambda"));
+        assert!(plan(ApiPath::FixedFunction, &c)
+            .unwrap_err()
+            .contains("lambda"));
     }
 }

@@ -23,7 +23,9 @@ impl Incoming {
     pub fn parse(line: &str) -> Result<Incoming, String> {
         let w: Wire = serde_json::from_str(line).map_err(|e| e.to_string())?;
         match (w.ty.as_str(), w.case) {
-            ("hello", _) => Ok(Incoming::Hello { protocol: w.protocol }),
+            ("hello", _) => Ok(Incoming::Hello {
+                protocol: w.protocol,
+            }),
             ("case", Some(case)) => Ok(Incoming::Case { case }),
             ("case", None) => Err("case message without `case`".into()),
             ("flush", _) => Ok(Incoming::Flush),
@@ -36,12 +38,8 @@ impl Incoming {
 /// A message from the runner.
 #[derive(Debug)]
 pub enum Incoming {
-    Hello {
-        protocol: u32,
-    },
-    Case {
-        case: Box<Case>,
-    },
+    Hello { protocol: u32 },
+    Case { case: Box<Case> },
     Flush,
     Bye,
 }
@@ -98,15 +96,28 @@ mod tests {
 
     #[test]
     fn parses_every_runner_message_and_ignores_unknown_fields() {
-        assert!(matches!(Incoming::parse(r#"{"type":"hello","protocol":1,"extra":true}"#), Ok(Incoming::Hello { protocol: 1 })));
-        assert!(matches!(Incoming::parse(r#"{"type":"flush"}"#), Ok(Incoming::Flush)));
-        assert!(matches!(Incoming::parse(r#"{"type":"bye"}"#), Ok(Incoming::Bye)));
+        assert!(matches!(
+            Incoming::parse(r#"{"type":"hello","protocol":1,"extra":true}"#),
+            Ok(Incoming::Hello { protocol: 1 })
+        ));
+        assert!(matches!(
+            Incoming::parse(r#"{"type":"flush"}"#),
+            Ok(Incoming::Flush)
+        ));
+        assert!(matches!(
+            Incoming::parse(r#"{"type":"bye"}"#),
+            Ok(Incoming::Bye)
+        ));
         let case = r#"{"type":"case","case":{"id":"x","spec":"gl46","api":["core"],"texture":{"target":"2d","format":"d16","levels":[{"width":1,"height":1,"layers":1,"depth":{"unorm":[7]}}]},"sampler":{"compare_mode":"compare","compare_func":"lequal","min_filter":"nearest","mag_filter":"nearest","wrap_s":"edge","wrap_t":"edge","wrap_r":"edge","border":[0,0,0,0]},"lookup":{"coord":[0.5,0.5,0,1],"dref":"nan"}}}"#;
         match Incoming::parse(case) {
             Ok(Incoming::Case { case }) => assert!(case.lookup.dref.is_nan() && case.id == "x"),
             other => panic!("{other:?}"),
         }
-        assert!(Incoming::parse(r#"{"type":"case"}"#).unwrap_err().contains("without"));
-        assert!(Incoming::parse(r#"{"type":"frobnicate"}"#).unwrap_err().contains("frobnicate"));
+        assert!(Incoming::parse(r#"{"type":"case"}"#)
+            .unwrap_err()
+            .contains("without"));
+        assert!(Incoming::parse(r#"{"type":"frobnicate"}"#)
+            .unwrap_err()
+            .contains("frobnicate"));
     }
 }

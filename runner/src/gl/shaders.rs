@@ -80,7 +80,11 @@ fn legacy_call(key: &ShaderKey) -> String {
         (_, SamplerKind::Shadow) => format!("shadow{t}{s}"),
         _ => format!("texture{t}{s}"),
     };
-    let bias = if key.form == LodForm::Implicit(true) { ", u_x" } else { "" };
+    let bias = if key.form == LodForm::Implicit(true) {
+        ", u_x"
+    } else {
+        ""
+    };
     format!("{f}(u_tex, {p}{bias})")
 }
 
@@ -92,7 +96,10 @@ pub const PARAM_WIDTH: i32 = 1024;
 /// Can this key draw many cases at once (no implicit derivatives: neighbours in a pixel quad are
 /// other cases), reading each case's values from the parameter texture with texelFetch?
 pub fn batchable(key: &ShaderKey) -> bool {
-    matches!(key.path, ApiPath::GlslCore | ApiPath::Glsl130 | ApiPath::Es300) && matches!(key.form, LodForm::Lod | LodForm::Grad)
+    matches!(
+        key.path,
+        ApiPath::GlslCore | ApiPath::Glsl130 | ApiPath::Es300
+    ) && matches!(key.form, LodForm::Lod | LodForm::Grad)
 }
 
 /// (vertex source, fragment source) for a GLSL path. `batched`: the case values come from the
@@ -103,7 +110,11 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
     let rect = key.target == Target::Rect;
     let (header, vin, fout, out_decl) = match key.path {
         ApiPath::GlslCore => {
-            let v = if info.glsl >= 400 { "#version 400 core\n" } else { "#version 330 core\n" };
+            let v = if info.glsl >= 400 {
+                "#version 400 core\n"
+            } else {
+                "#version 330 core\n"
+            };
             let mut h = v.to_string();
             if cube_array && info.glsl < 400 {
                 h += "#extension GL_ARB_texture_cube_map_array : require\n";
@@ -139,15 +150,22 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
             (h, "attribute", "gl_FragColor", "")
         }
         ApiPath::Es100Ext => (
-            "#version 100\n#extension GL_EXT_shadow_samplers : require\nprecision highp float;\n".to_string(),
+            "#version 100\n#extension GL_EXT_shadow_samplers : require\nprecision highp float;\n"
+                .to_string(),
             "attribute",
             "gl_FragColor",
             "",
         ),
         ApiPath::FixedFunction | ApiPath::ArbFp => (String::new(), "in", "o", ""),
     };
-    let vs = format!("{header}{vin} vec2 a_pos;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); }}\n");
-    let prec = if matches!(key.path, ApiPath::Es300 | ApiPath::Es100Ext) { "highp " } else { "" };
+    let vs = format!(
+        "{header}{vin} vec2 a_pos;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); }}\n"
+    );
+    let prec = if matches!(key.path, ApiPath::Es300 | ApiPath::Es100Ext) {
+        "highp "
+    } else {
+        ""
+    };
     let p_line = match (batched, key.form) {
         (Some(fb_width), _) => format!(
             "int k = int(gl_FragCoord.y) * {fb_width} + int(gl_FragCoord.x) - u_base;\n  if (k < 0 || k >= u_count) discard;\n  int t = k * {PARAM_TEXELS};\n  vec4 p = texelFetch(u_params, ivec2(t % {PARAM_WIDTH}, t / {PARAM_WIDTH}), 0);\n  vec4 u_dx = texelFetch(u_params, ivec2((t + 1) % {PARAM_WIDTH}, (t + 1) / {PARAM_WIDTH}), 0);\n  vec4 u_dy = texelFetch(u_params, ivec2((t + 2) % {PARAM_WIDTH}, (t + 2) / {PARAM_WIDTH}), 0);\n  float u_x = texelFetch(u_params, ivec2((t + 3) % {PARAM_WIDTH}, (t + 3) / {PARAM_WIDTH}), 0).x;"
@@ -165,7 +183,11 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
         ApiPath::Glsl120 | ApiPath::Es100Ext => legacy_call(key),
         _ => modern_call(key),
     };
-    let store = if vec4_result { format!("{fout} = vec4({call});") } else { format!("{fout} = vec4({call}, 0.0, 0.0, 1.0);") };
+    let store = if vec4_result {
+        format!("{fout} = vec4({call});")
+    } else {
+        format!("{fout} = vec4({call}, 0.0, 0.0, 1.0);")
+    };
     let fs = format!(
         "{header}uniform {prec}{} u_tex;\n{uniforms}{out_decl}void main() {{\n  {p_line}\n  {store}\n}}\n",
         sampler_type(key.kind, key.target)
@@ -188,8 +210,16 @@ pub fn arbfp(key: &ShaderKey) -> String {
         (false, LodForm::Implicit(true)) => "TXB",
         _ => "TEX",
     };
-    let option = if shadow { "OPTION ARB_fragment_program_shadow;\n" } else { "" };
-    let t = if shadow { format!("SHADOW{target}") } else { target.to_string() };
+    let option = if shadow {
+        "OPTION ARB_fragment_program_shadow;\n"
+    } else {
+        ""
+    };
+    let t = if shadow {
+        format!("SHADOW{target}")
+    } else {
+        target.to_string()
+    };
     format!(
         "!!ARBfp1.0\n{option}PARAM p = program.local[0];\nPARAM dx = program.local[1];\nPARAM dy = program.local[2];\nPARAM c = program.local[3];\nTEMP d, q;\nSUB d, fragment.position, c;\nMAD q, d.x, dx, p;\nMAD q, d.y, dy, q;\n{op} result.color, q, texture[0], {t};\nEND\n"
     )
@@ -201,26 +231,67 @@ mod tests {
 
     #[test]
     fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
-        let k = ShaderKey { path: ApiPath::GlslCore, target: Target::T2d, kind: SamplerKind::Shadow, form: LodForm::Lod, proj: false, mode: None };
+        let k = ShaderKey {
+            path: ApiPath::GlslCore,
+            target: Target::T2d,
+            kind: SamplerKind::Shadow,
+            form: LodForm::Lod,
+            proj: false,
+            mode: None,
+        };
         assert_eq!(modern_call(&k), "textureLod(u_tex, p.xyz, u_x)");
-        let k = ShaderKey { target: Target::CubeArray, form: LodForm::Implicit(false), ..k };
+        let k = ShaderKey {
+            target: Target::CubeArray,
+            form: LodForm::Implicit(false),
+            ..k
+        };
         assert_eq!(modern_call(&k), "texture(u_tex, p, u_x)");
-        let k = ShaderKey { target: Target::Rect, form: LodForm::Grad, proj: true, ..k };
-        assert_eq!(modern_call(&k), "textureProjGrad(u_tex, p, u_dx.xy, u_dy.xy)");
+        let k = ShaderKey {
+            target: Target::Rect,
+            form: LodForm::Grad,
+            proj: true,
+            ..k
+        };
+        assert_eq!(
+            modern_call(&k),
+            "textureProjGrad(u_tex, p, u_dx.xy, u_dy.xy)"
+        );
     }
 
     #[test]
     fn legacy_calls_use_the_glsl_120_names() {
-        let k = ShaderKey { path: ApiPath::Glsl120, target: Target::Rect, kind: SamplerKind::Shadow, form: LodForm::Implicit(false), proj: true, mode: None };
+        let k = ShaderKey {
+            path: ApiPath::Glsl120,
+            target: Target::Rect,
+            kind: SamplerKind::Shadow,
+            form: LodForm::Implicit(false),
+            proj: true,
+            mode: None,
+        };
         assert_eq!(legacy_call(&k), "shadow2DRectProj(u_tex, p)");
-        let k = ShaderKey { path: ApiPath::Es100Ext, target: Target::T2d, ..k };
+        let k = ShaderKey {
+            path: ApiPath::Es100Ext,
+            target: Target::T2d,
+            ..k
+        };
         assert_eq!(legacy_call(&k), "shadow2DProjEXT(u_tex, p)");
     }
 
     #[test]
     fn arb_program_uses_the_shadow_target_and_txb_for_bias() {
-        let k = ShaderKey { path: ApiPath::ArbFp, target: Target::T2d, kind: SamplerKind::Shadow, form: LodForm::Implicit(true), proj: false, mode: None };
+        let k = ShaderKey {
+            path: ApiPath::ArbFp,
+            target: Target::T2d,
+            kind: SamplerKind::Shadow,
+            form: LodForm::Implicit(true),
+            proj: false,
+            mode: None,
+        };
         let s = arbfp(&k);
-        assert!(s.contains("OPTION ARB_fragment_program_shadow;") && s.contains("TXB result.color, q, texture[0], SHADOW2D;"), "{s}");
+        assert!(
+            s.contains("OPTION ARB_fragment_program_shadow;")
+                && s.contains("TXB result.color, q, texture[0], SHADOW2D;"),
+            "{s}"
+        );
     }
 }

@@ -37,8 +37,8 @@ pub fn spec_and_ctx(info: &GlInfo) -> (Spec, Ctx) {
 
 /// Enum values tried on every enum pname (legal for some pname of some spec, or junk).
 const CANDIDATES: &[u32] = &[
-    0x0000, 0x884E, 0x0200, 0x0201, 0x0202, 0x0203, 0x0204, 0x0205, 0x0206, 0x0207, 0x819C, 0x819D, 0x1909, 0x8049, 0x1906,
-    0x1903, 0x1902, 0x1901, 0x1234,
+    0x0000, 0x884E, 0x0200, 0x0201, 0x0202, 0x0203, 0x0204, 0x0205, 0x0206, 0x0207, 0x819C, 0x819D,
+    0x1909, 0x8049, 0x1906, 0x1903, 0x1902, 0x1901, 0x1234,
 ];
 
 fn show(s: &Stored) -> String {
@@ -94,7 +94,11 @@ pub unsafe fn check(gl: &glow::Context, info: &GlInfo) -> Vec<StateCheck> {
                 pname: format!("0x{pname:04X}"),
                 check: "get (pname not defined here)".into(),
                 expected: "GL_INVALID_ENUM".into(),
-                got: if e == glow::NO_ERROR { "no error".into() } else { error_name(e) },
+                got: if e == glow::NO_ERROR {
+                    "no error".into()
+                } else {
+                    error_name(e)
+                },
                 ok: e == glow::INVALID_ENUM,
                 cite: "GL 4.6 §8.10 / ES 3.2 §8.10: pname not in the table".into(),
             });
@@ -109,7 +113,11 @@ pub unsafe fn check(gl: &glow::Context, info: &GlInfo) -> Vec<StateCheck> {
             pname: prm.name.into(),
             check: "default".into(),
             expected: show(&prm.default),
-            got: if e == glow::NO_ERROR { show(&got) } else { error_name(e) },
+            got: if e == glow::NO_ERROR {
+                show(&got)
+            } else {
+                error_name(e)
+            },
             ok: e == glow::NO_ERROR && same(&got, &prm.default),
             cite: prm.cite.into(),
         });
@@ -131,7 +139,10 @@ pub unsafe fn check(gl: &glow::Context, info: &GlInfo) -> Vec<StateCheck> {
             let (expected, ok) = match &want {
                 Ok(s) => (show(s), e == glow::NO_ERROR && same(&after, s)),
                 // An error leaves the state unchanged.
-                Err(k) => (format!("GL_{} (state stays {})", k.name(), show(&prm.default)), e == k.gl() && same(&after, &prm.default)),
+                Err(k) => (
+                    format!("GL_{} (state stays {})", k.name(), show(&prm.default)),
+                    e == k.gl() && same(&after, &prm.default),
+                ),
             };
             let vs = match v {
                 Value::Int(i) => format!("0x{i:04X}"),
@@ -142,7 +153,11 @@ pub unsafe fn check(gl: &glow::Context, info: &GlInfo) -> Vec<StateCheck> {
                 pname: prm.name.into(),
                 check: format!("set {vs}"),
                 expected,
-                got: if e == glow::NO_ERROR { show(&after) } else { format!("{} (state {})", error_name(e), show(&after)) },
+                got: if e == glow::NO_ERROR {
+                    show(&after)
+                } else {
+                    format!("{} (state {})", error_name(e), show(&after))
+                },
                 ok,
                 cite: prm.cite.into(),
             });

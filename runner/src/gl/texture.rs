@@ -17,13 +17,48 @@ const GL_TEXTURE_COMPARE_FAIL_VALUE_ARB: u32 = 0x80BF;
 /// Pixel transfer format/type for a texture format: (internal format, format, type, bytes/texel).
 pub fn transfer(format: Format) -> (i32, u32, u32, usize) {
     match format {
-        Format::D16 => (glow::DEPTH_COMPONENT16 as i32, glow::DEPTH_COMPONENT, glow::UNSIGNED_SHORT, 2),
-        Format::DepthUnsized => (glow::DEPTH_COMPONENT as i32, glow::DEPTH_COMPONENT, glow::UNSIGNED_SHORT, 2),
-        Format::D24 => (glow::DEPTH_COMPONENT24 as i32, glow::DEPTH_COMPONENT, glow::UNSIGNED_INT, 4),
-        Format::D32 => (glow::DEPTH_COMPONENT32 as i32, glow::DEPTH_COMPONENT, glow::UNSIGNED_INT, 4),
-        Format::D32f => (glow::DEPTH_COMPONENT32F as i32, glow::DEPTH_COMPONENT, glow::FLOAT, 4),
-        Format::D24S8 => (glow::DEPTH24_STENCIL8 as i32, glow::DEPTH_STENCIL, glow::UNSIGNED_INT_24_8, 4),
-        Format::D32fS8 => (glow::DEPTH32F_STENCIL8 as i32, glow::DEPTH_STENCIL, glow::FLOAT_32_UNSIGNED_INT_24_8_REV, 8),
+        Format::D16 => (
+            glow::DEPTH_COMPONENT16 as i32,
+            glow::DEPTH_COMPONENT,
+            glow::UNSIGNED_SHORT,
+            2,
+        ),
+        Format::DepthUnsized => (
+            glow::DEPTH_COMPONENT as i32,
+            glow::DEPTH_COMPONENT,
+            glow::UNSIGNED_SHORT,
+            2,
+        ),
+        Format::D24 => (
+            glow::DEPTH_COMPONENT24 as i32,
+            glow::DEPTH_COMPONENT,
+            glow::UNSIGNED_INT,
+            4,
+        ),
+        Format::D32 => (
+            glow::DEPTH_COMPONENT32 as i32,
+            glow::DEPTH_COMPONENT,
+            glow::UNSIGNED_INT,
+            4,
+        ),
+        Format::D32f => (
+            glow::DEPTH_COMPONENT32F as i32,
+            glow::DEPTH_COMPONENT,
+            glow::FLOAT,
+            4,
+        ),
+        Format::D24S8 => (
+            glow::DEPTH24_STENCIL8 as i32,
+            glow::DEPTH_STENCIL,
+            glow::UNSIGNED_INT_24_8,
+            4,
+        ),
+        Format::D32fS8 => (
+            glow::DEPTH32F_STENCIL8 as i32,
+            glow::DEPTH_STENCIL,
+            glow::FLOAT_32_UNSIGNED_INT_24_8_REV,
+            8,
+        ),
         Format::R8 => (glow::R8 as i32, glow::RED, glow::UNSIGNED_BYTE, 1),
     }
 }
@@ -35,40 +70,69 @@ pub fn transfer(format: Format) -> (i32, u32, u32, usize) {
 /// clamped so that dropping it also gives c.
 fn widen24(c: u32) -> u32 {
     const R: f64 = 4294967295.0 / 16777215.0;
-    let low = ((c as f64 + 0.25) * R - 256.0 * c as f64).round().clamp(0.0, 255.0) as u32;
+    let low = ((c as f64 + 0.25) * R - 256.0 * c as f64)
+        .round()
+        .clamp(0.0, 255.0) as u32;
     (c << 8) | low
 }
 
 /// The bytes to upload for one level.
 pub fn level_bytes(format: Format, level: &Level) -> Result<Vec<u8>, GlError> {
     let n = level.texel_count();
-    let stencil = |i: usize| level.stencil.as_ref().and_then(|s| s.get(i)).copied().unwrap_or(0) as u32;
+    let stencil = |i: usize| {
+        level
+            .stencil
+            .as_ref()
+            .and_then(|s| s.get(i))
+            .copied()
+            .unwrap_or(0) as u32
+    };
     let mut out = Vec::with_capacity(n * transfer(format).3);
     match (&level.depth, format) {
-        (Texels::Unorm(v), Format::D16 | Format::DepthUnsized) => v.iter().for_each(|&c| out.extend_from_slice(&(c as u16).to_ne_bytes())),
-        (Texels::Unorm(v), Format::D24) => v.iter().for_each(|&c| out.extend_from_slice(&widen24(c).to_ne_bytes())),
-        (Texels::Unorm(v), Format::D32) => v.iter().for_each(|&c| out.extend_from_slice(&c.to_ne_bytes())),
-        (Texels::Unorm(v), Format::D24S8) => {
-            v.iter().enumerate().for_each(|(i, &c)| out.extend_from_slice(&((c << 8) | stencil(i)).to_ne_bytes()))
-        }
+        (Texels::Unorm(v), Format::D16 | Format::DepthUnsized) => v
+            .iter()
+            .for_each(|&c| out.extend_from_slice(&(c as u16).to_ne_bytes())),
+        (Texels::Unorm(v), Format::D24) => v
+            .iter()
+            .for_each(|&c| out.extend_from_slice(&widen24(c).to_ne_bytes())),
+        (Texels::Unorm(v), Format::D32) => v
+            .iter()
+            .for_each(|&c| out.extend_from_slice(&c.to_ne_bytes())),
+        (Texels::Unorm(v), Format::D24S8) => v
+            .iter()
+            .enumerate()
+            .for_each(|(i, &c)| out.extend_from_slice(&((c << 8) | stencil(i)).to_ne_bytes())),
         (Texels::Unorm(v), Format::R8) => v.iter().for_each(|&c| out.push(c as u8)),
-        (Texels::Float(v), Format::D32f) => v.iter().for_each(|&f| out.extend_from_slice(&f.to_ne_bytes())),
+        (Texels::Float(v), Format::D32f) => v
+            .iter()
+            .for_each(|&f| out.extend_from_slice(&f.to_ne_bytes())),
         (Texels::Float(v), Format::D32fS8) => v.iter().enumerate().for_each(|(i, &f)| {
             out.extend_from_slice(&f.to_ne_bytes());
             out.extend_from_slice(&stencil(i).to_ne_bytes());
         }),
-        _ => return Err(GlError::Gl(format!("texel encoding does not match format {format}"))),
+        _ => {
+            return Err(GlError::Gl(format!(
+                "texel encoding does not match format {format}"
+            )))
+        }
     }
     Ok(out)
 }
 
 /// Decodes read-back bytes into the fixture's encoding.
 pub fn decode_stored(format: Format, bytes: &[u8]) -> Texels {
-    let u32s = |step: usize| bytes.chunks_exact(step).map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]));
+    let u32s = |step: usize| {
+        bytes
+            .chunks_exact(step)
+            .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+    };
     match format {
-        Format::D16 | Format::DepthUnsized => {
-            Texels::Unorm(bytes.chunks_exact(2).map(|c| u16::from_ne_bytes([c[0], c[1]]) as u32).collect())
-        }
+        Format::D16 | Format::DepthUnsized => Texels::Unorm(
+            bytes
+                .chunks_exact(2)
+                .map(|c| u16::from_ne_bytes([c[0], c[1]]) as u32)
+                .collect(),
+        ),
         // UNSIGNED_INT from a 24-bit store: c * (2^32-1)/(2^24-1) rounded; the top 24 bits are c.
         Format::D24 | Format::D24S8 => Texels::Unorm(u32s(4).map(|u| u >> 8).collect()),
         Format::D32 => Texels::Unorm(u32s(4).collect()),
@@ -80,7 +144,9 @@ pub fn decode_stored(format: Format, bytes: &[u8]) -> Texels {
 
 fn face_targets(target: Target) -> Vec<u32> {
     if target == Target::Cube {
-        (0..6).map(|f| glow::TEXTURE_CUBE_MAP_POSITIVE_X + f).collect()
+        (0..6)
+            .map(|f| glow::TEXTURE_CUBE_MAP_POSITIVE_X + f)
+            .collect()
     } else {
         vec![target.gl()]
     }
@@ -91,7 +157,11 @@ fn face_targets(target: Target) -> Vec<u32> {
 ///
 /// # Safety
 /// `gl` must be current.
-pub unsafe fn create(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<glow::Texture, GlError> {
+pub unsafe fn create(
+    gl: &glow::Context,
+    info: &GlInfo,
+    case: &Case,
+) -> Result<glow::Texture, GlError> {
     let t = &case.texture;
     let target = t.target.gl();
     let (ifmt, fmt, ty, bpt) = transfer(t.format);
@@ -105,14 +175,30 @@ pub unsafe fn create(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<g
         let data = glow::PixelUnpackData::Slice(Some(&bytes));
         match t.target {
             Target::T1d => gl.tex_image_1d(target, level, ifmt, w, 0, fmt, ty, data),
-            Target::T2d | Target::Rect => gl.tex_image_2d(target, level, ifmt, w, h, 0, fmt, ty, data),
+            Target::T2d | Target::Rect => {
+                gl.tex_image_2d(target, level, ifmt, w, h, 0, fmt, ty, data)
+            }
             Target::T1dArray => gl.tex_image_2d(target, level, ifmt, w, l, 0, fmt, ty, data),
-            Target::T2dArray | Target::CubeArray => gl.tex_image_3d(target, level, ifmt, w, h, l, 0, fmt, ty, data),
+            Target::T2dArray | Target::CubeArray => {
+                gl.tex_image_3d(target, level, ifmt, w, h, l, 0, fmt, ty, data)
+            }
             Target::Cube => {
                 let face = (w * h) as usize * bpt;
                 for (f, ft) in face_targets(Target::Cube).into_iter().enumerate() {
-                    let part = bytes.get(f * face..(f + 1) * face).ok_or_else(|| GlError::Gl("cube level has fewer than 6 faces".into()))?;
-                    gl.tex_image_2d(ft, level, ifmt, w, h, 0, fmt, ty, glow::PixelUnpackData::Slice(Some(part)));
+                    let part = bytes
+                        .get(f * face..(f + 1) * face)
+                        .ok_or_else(|| GlError::Gl("cube level has fewer than 6 faces".into()))?;
+                    gl.tex_image_2d(
+                        ft,
+                        level,
+                        ifmt,
+                        w,
+                        h,
+                        0,
+                        fmt,
+                        ty,
+                        glow::PixelUnpackData::Slice(Some(part)),
+                    );
                 }
             }
         }
@@ -165,8 +251,16 @@ unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<()
     if let Some(m) = s.max_level {
         pi(glow::TEXTURE_MAX_LEVEL, m, "TEXTURE_MAX_LEVEL")?;
     }
-    pi(glow::TEXTURE_MIN_FILTER, s.min_filter.gl(), "TEXTURE_MIN_FILTER")?;
-    pi(glow::TEXTURE_MAG_FILTER, s.mag_filter.gl(), "TEXTURE_MAG_FILTER")?;
+    pi(
+        glow::TEXTURE_MIN_FILTER,
+        s.min_filter.gl(),
+        "TEXTURE_MIN_FILTER",
+    )?;
+    pi(
+        glow::TEXTURE_MAG_FILTER,
+        s.mag_filter.gl(),
+        "TEXTURE_MAG_FILTER",
+    )?;
     // Only the wraps of coordinates the target uses: a rectangle texture rejects REPEAT even for
     // a coordinate it never wraps.
     pi(glow::TEXTURE_WRAP_S, s.wrap_s.gl(), "TEXTURE_WRAP_S")?;
@@ -192,13 +286,25 @@ unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<()
         gl.tex_parameter_f32(target, glow::TEXTURE_LOD_BIAS, s.lod_bias);
         check(gl, "glTexParameterf(TEXTURE_LOD_BIAS)")?;
     }
-    pi(glow::TEXTURE_COMPARE_MODE, s.compare_mode.gl(), "TEXTURE_COMPARE_MODE")?;
-    pi(glow::TEXTURE_COMPARE_FUNC, s.compare_func.gl(), "TEXTURE_COMPARE_FUNC")?;
+    pi(
+        glow::TEXTURE_COMPARE_MODE,
+        s.compare_mode.gl(),
+        "TEXTURE_COMPARE_MODE",
+    )?;
+    pi(
+        glow::TEXTURE_COMPARE_FUNC,
+        s.compare_func.gl(),
+        "TEXTURE_COMPARE_FUNC",
+    )?;
     if let (Some(m), true) = (s.depth_texture_mode, info.compat) {
         pi(GL_DEPTH_TEXTURE_MODE, m.gl(), "DEPTH_TEXTURE_MODE")?;
     }
     if let Some(m) = s.depth_stencil_mode {
-        pi(GL_DEPTH_STENCIL_TEXTURE_MODE, m.gl(), "DEPTH_STENCIL_TEXTURE_MODE")?;
+        pi(
+            GL_DEPTH_STENCIL_TEXTURE_MODE,
+            m.gl(),
+            "DEPTH_STENCIL_TEXTURE_MODE",
+        )?;
     }
     if let Some(v) = s.fail_value {
         gl.tex_parameter_f32(target, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, v);
@@ -212,18 +318,31 @@ unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<()
 ///
 /// # Safety
 /// `gl` must be current.
-pub unsafe fn read_back(gl: &glow::Context, tex: glow::Texture, case: &Case) -> Result<Texels, GlError> {
+pub unsafe fn read_back(
+    gl: &glow::Context,
+    tex: glow::Texture,
+    case: &Case,
+) -> Result<Texels, GlError> {
     let t = &case.texture;
     gl.active_texture(glow::TEXTURE0);
     gl.bind_texture(t.target.gl(), Some(tex));
-    let lvl = t.levels.first().ok_or_else(|| GlError::Gl("no levels".into()))?;
+    let lvl = t
+        .levels
+        .first()
+        .ok_or_else(|| GlError::Gl("no levels".into()))?;
     let (_, fmt, ty, bpt) = transfer(t.format);
     let mut all = Vec::with_capacity(lvl.texel_count() * bpt);
     let targets = face_targets(t.target);
     let per = lvl.texel_count() * bpt / targets.len();
     for ft in targets {
         let mut buf = vec![0u8; per];
-        gl.get_tex_image(ft, t.base_level as i32, fmt, ty, glow::PixelPackData::Slice(Some(&mut buf)));
+        gl.get_tex_image(
+            ft,
+            t.base_level as i32,
+            fmt,
+            ty,
+            glow::PixelPackData::Slice(Some(&mut buf)),
+        );
         all.extend_from_slice(&buf);
     }
     check(gl, "glGetTexImage")?;
@@ -239,7 +358,10 @@ mod tests {
         // GL 4.6 §2.3.5: f = c / (2^b - 1); a driver may round or truncate c32 * (2^24-1)/(2^32-1),
         // or drop the low byte. Every 24-bit value must survive all three (exact integer arithmetic).
         let (m24, m32) = ((1u64 << 24) - 1, (1u64 << 32) - 1);
-        for c in (0..=m24 as u32).step_by(97).chain([1, 2, 65535, 0xFFFFFE, 0xFFFFFF]) {
+        for c in (0..=m24 as u32)
+            .step_by(97)
+            .chain([1, 2, 65535, 0xFFFFFE, 0xFFFFFF])
+        {
             let u = widen24(c) as u64;
             assert_eq!(u * m24 / m32, c as u64, "truncating {c}");
             assert!(2 * u * m24 < (2 * c as u64 + 1) * m32, "rounding {c}");
@@ -249,11 +371,26 @@ mod tests {
 
     #[test]
     fn level_bytes_pack_stencil_and_floats() {
-        let lvl = Level { width: 2, height: 1, layers: 1, depth: Texels::Unorm(vec![1, 0xFFFFFF]), stencil: Some(vec![7, 9]) };
+        let lvl = Level {
+            width: 2,
+            height: 1,
+            layers: 1,
+            depth: Texels::Unorm(vec![1, 0xFFFFFF]),
+            stencil: Some(vec![7, 9]),
+        };
         let b = level_bytes(Format::D24S8, &lvl).unwrap();
         assert_eq!(u32::from_ne_bytes([b[0], b[1], b[2], b[3]]), (1 << 8) | 7);
-        assert_eq!(decode_stored(Format::D24S8, &b), Texels::Unorm(vec![1, 0xFFFFFF]));
-        let f = Level { width: 1, height: 1, layers: 1, depth: Texels::Float(vec![0.25]), stencil: None };
+        assert_eq!(
+            decode_stored(Format::D24S8, &b),
+            Texels::Unorm(vec![1, 0xFFFFFF])
+        );
+        let f = Level {
+            width: 1,
+            height: 1,
+            layers: 1,
+            depth: Texels::Float(vec![0.25]),
+            stencil: None,
+        };
         let b = level_bytes(Format::D32fS8, &f).unwrap();
         assert_eq!(b.len(), 8);
         assert_eq!(decode_stored(Format::D32fS8, &b), Texels::Float(vec![0.25]));

@@ -45,11 +45,21 @@ pub struct Worker {
 }
 
 fn parse_version(s: &str) -> (u32, u32) {
-    let v = s.trim_start_matches("OpenGL ES GLSL ES ").trim_start_matches("OpenGL ES ");
+    let v = s
+        .trim_start_matches("OpenGL ES GLSL ES ")
+        .trim_start_matches("OpenGL ES ");
     let num = v.split_whitespace().next().unwrap_or("0.0");
     let mut it = num.split('.');
     let major = it.next().and_then(|x| x.parse().ok()).unwrap_or(0);
-    let minor = it.next().map(|x| x.chars().take_while(|c| c.is_ascii_digit()).collect::<String>()).and_then(|x| x.parse().ok()).unwrap_or(0);
+    let minor = it
+        .next()
+        .map(|x| {
+            x.chars()
+                .take_while(|c| c.is_ascii_digit())
+                .collect::<String>()
+        })
+        .and_then(|x| x.parse().ok())
+        .unwrap_or(0);
     (major, minor)
 }
 
@@ -66,21 +76,31 @@ impl Worker {
         }
         type FnGetString = unsafe extern "system" fn(u32) -> *const u8;
         // SAFETY: glGetString has this signature; the context is current.
-        let gs: FnGetString = unsafe { std::mem::transmute::<*const c_void, FnGetString>(get_string) };
+        let gs: FnGetString =
+            unsafe { std::mem::transmute::<*const c_void, FnGetString>(get_string) };
         // SAFETY: GL_VERSION is a valid enum; the result is null or a NUL-terminated string.
         let v = unsafe { gs(glow::VERSION) };
         if v.is_null() {
-            return Err(GlError::ContextFailed("glGetString(GL_VERSION) returned NULL".into()));
+            return Err(GlError::ContextFailed(
+                "glGetString(GL_VERSION) returned NULL".into(),
+            ));
         }
         // SAFETY: the context is current and the loader returns its entry points.
         let gl = unsafe { glow::Context::from_loader_function(|s| loader(s)) };
         use glow::HasContext;
         // SAFETY: context current.
         let (renderer, version_string, glsl_string) = unsafe {
-            (gl.get_parameter_string(glow::RENDERER), gl.get_parameter_string(glow::VERSION), gl.get_parameter_string(glow::SHADING_LANGUAGE_VERSION))
+            (
+                gl.get_parameter_string(glow::RENDERER),
+                gl.get_parameter_string(glow::VERSION),
+                gl.get_parameter_string(glow::SHADING_LANGUAGE_VERSION),
+            )
         };
         if !renderer.to_lowercase().contains(name.driver.key()) {
-            return Err(GlError::WrongDriver { wanted: name.driver.key().into(), renderer });
+            return Err(GlError::WrongDriver {
+                wanted: name.driver.key().into(),
+                renderer,
+            });
         }
         let (gmaj, gmin) = parse_version(&glsl_string);
         let info = GlInfo {
@@ -93,10 +113,18 @@ impl Worker {
             version_string,
             extensions: gl.supported_extensions().clone(),
         };
-        let legacy = if info.compat { Some(Legacy::load(&loader, info.arbfp_shadow())?) } else { None };
+        let legacy = if info.compat {
+            Some(Legacy::load(&loader, info.arbfp_shadow())?)
+        } else {
+            None
+        };
         // SAFETY: context current for the worker's life (it owns the context).
         let renderer = unsafe { Renderer::new(gl, info, legacy)? };
-        Ok(Worker { name, renderer, _ctx: ctx })
+        Ok(Worker {
+            name,
+            renderer,
+            _ctx: ctx,
+        })
     }
 
     /// TexParameter state self-check against the oracle's tables (see `state.rs`).
@@ -139,7 +167,11 @@ impl Worker {
     }
 
     pub fn formats(&self) -> Vec<Format> {
-        Format::ALL.iter().copied().filter(|f| !(self.info().es && *f == Format::D32)).collect()
+        Format::ALL
+            .iter()
+            .copied()
+            .filter(|f| !(self.info().es && *f == Format::D32))
+            .collect()
     }
 
     pub fn capabilities(&self) -> Capabilities {
@@ -149,22 +181,37 @@ impl Worker {
             api: i.paths().iter().map(|p| p.key().to_string()).collect(),
             targets: i.targets().iter().map(|t| t.key().to_string()).collect(),
             formats: self.formats().iter().map(|f| f.key().to_string()).collect(),
-            extensions: RELEVANT_EXTENSIONS.iter().filter(|e| i.has_ext(e)).map(|e| e.to_string()).collect(),
+            extensions: RELEVANT_EXTENSIONS
+                .iter()
+                .filter(|e| i.has_ext(e))
+                .map(|e| e.to_string())
+                .collect(),
         }
     }
 
     /// The implementation's name for the handshake, e.g. `egl:llvmpipe:core (4.5 (Core Profile) Mesa 22.3.6; llvmpipe ...)`.
     pub fn display_name(&self) -> String {
-        format!("{} ({}; {})", self.name, self.info().version_string, self.info().renderer)
+        format!(
+            "{} ({}; {})",
+            self.name,
+            self.info().version_string,
+            self.info().renderer
+        )
     }
 
     /// Why a case is not for this worker (spec, format, API paths), or None.
     fn precheck(&self, case: &Case) -> Option<String> {
         if !self.specs().contains(&case.spec) {
-            return Some(format!("spec {} not checkable on {} (needed extensions not exposed)", case.spec, self.name));
+            return Some(format!(
+                "spec {} not checkable on {} (needed extensions not exposed)",
+                case.spec, self.name
+            ));
         }
         if !self.formats().contains(&case.texture.format) {
-            return Some(format!("format {} not available on {}", case.texture.format, self.name));
+            return Some(format!(
+                "format {} not available on {}",
+                case.texture.format, self.name
+            ));
         }
         if let Err(e) = shadowcheck_model::validate::validate(case) {
             return Some(format!("invalid case: {e}"));
@@ -174,8 +221,16 @@ impl Worker {
 
     /// Answers a batch in order.
     pub fn run_batch(&mut self, cases: &[Case]) -> Vec<Answer> {
-        let mut answers: Vec<Option<Answer>> = cases.iter().map(|c| self.precheck(c).map(Answer::Skip)).collect();
-        let runnable: Vec<Case> = cases.iter().zip(&answers).filter(|(_, a)| a.is_none()).map(|(c, _)| c.clone()).collect();
+        let mut answers: Vec<Option<Answer>> = cases
+            .iter()
+            .map(|c| self.precheck(c).map(Answer::Skip))
+            .collect();
+        let runnable: Vec<Case> = cases
+            .iter()
+            .zip(&answers)
+            .filter(|(_, a)| a.is_none())
+            .map(|(c, _)| c.clone())
+            .collect();
         // SAFETY: the worker's context is current on this thread.
         let mut drawn = unsafe { self.renderer.run_batch(&runnable) }.into_iter();
         for a in answers.iter_mut() {
@@ -183,7 +238,10 @@ impl Worker {
                 *a = drawn.next();
             }
         }
-        answers.into_iter().map(|a| a.unwrap_or_else(|| Answer::Error("internal: missing answer".into()))).collect()
+        answers
+            .into_iter()
+            .map(|a| a.unwrap_or_else(|| Answer::Error("internal: missing answer".into())))
+            .collect()
     }
 }
 
@@ -197,7 +255,7 @@ fn answer_message(case_id: String, a: Answer) -> Outgoing {
 
 /// An entry of the batch: a parsed case, or a line that should have been one.
 enum Entry {
-    Case(Case),
+    Case(Box<Case>),
     Bad { id: String, message: String },
 }
 
@@ -207,13 +265,36 @@ fn write_line(out: &mut impl Write, msg: &Outgoing) -> std::io::Result<()> {
     out.write_all(b"\n")
 }
 
-fn flush_batch(worker: &mut Worker, batch: &mut Vec<Entry>, out: &mut impl Write) -> std::io::Result<()> {
-    let cases: Vec<Case> = batch.iter().filter_map(|e| if let Entry::Case(c) = e { Some(c.clone()) } else { None }).collect();
-    let mut answers = worker.run_batch(&cases).into_iter();
+fn flush_batch(
+    worker: &mut Worker,
+    batch: &mut Vec<Entry>,
+    out: &mut impl Write,
+) -> std::io::Result<()> {
+    // Move the cases out; keep where each answer goes (a case id, or a parse error).
+    let mut cases: Vec<Case> = Vec::new();
+    let mut slots: Vec<Result<String, (String, String)>> = Vec::new();
     for e in batch.drain(..) {
-        let msg = match e {
-            Entry::Case(c) => answer_message(c.id, answers.next().unwrap_or(Answer::Error("internal: missing answer".into()))),
-            Entry::Bad { id, message } => Outgoing::Error { case_id: id, message },
+        match e {
+            Entry::Case(c) => {
+                slots.push(Ok(c.id.clone()));
+                cases.push(*c);
+            }
+            Entry::Bad { id, message } => slots.push(Err((id, message))),
+        }
+    }
+    let mut answers = worker.run_batch(&cases).into_iter();
+    for slot in slots {
+        let msg = match slot {
+            Ok(id) => answer_message(
+                id,
+                answers
+                    .next()
+                    .unwrap_or(Answer::Error("internal: missing answer".into())),
+            ),
+            Err((id, message)) => Outgoing::Error {
+                case_id: id,
+                message,
+            },
         };
         write_line(out, &msg)?;
     }
@@ -221,7 +302,11 @@ fn flush_batch(worker: &mut Worker, batch: &mut Vec<Entry>, out: &mut impl Write
 }
 
 /// Speaks the protocol on `input`/`output` until `bye` or end of input.
-pub fn serve(worker: &mut Worker, input: impl BufRead, mut output: impl Write) -> std::io::Result<()> {
+pub fn serve(
+    worker: &mut Worker,
+    input: impl BufRead,
+    mut output: impl Write,
+) -> std::io::Result<()> {
     let mut batch: Vec<Entry> = Vec::new();
     for line in input.lines() {
         let line = line?;
@@ -233,20 +318,36 @@ pub fn serve(worker: &mut Worker, input: impl BufRead, mut output: impl Write) -
                 if protocol != 0 && protocol != PROTOCOL_VERSION {
                     eprintln!("gl-worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}");
                 }
-                let hello = Outgoing::Hello { protocol: PROTOCOL_VERSION, name: worker.display_name(), capabilities: worker.capabilities() };
+                let hello = Outgoing::Hello {
+                    protocol: PROTOCOL_VERSION,
+                    name: worker.display_name(),
+                    capabilities: worker.capabilities(),
+                };
                 write_line(&mut output, &hello)?;
                 output.flush()?;
             }
-            Ok(Incoming::Case { case }) => batch.push(Entry::Case(*case)),
+            Ok(Incoming::Case { case }) => batch.push(Entry::Case(case)),
             Ok(Incoming::Flush) => flush_batch(worker, &mut batch, &mut output)?,
             Ok(Incoming::Bye) => break,
             Err(e) => {
                 // A case line we cannot parse still gets its one answer, in order.
                 let v: Option<serde_json::Value> = serde_json::from_str(&line).ok();
-                let is_case = v.as_ref().and_then(|v| v.get("type")).and_then(|t| t.as_str()) == Some("case");
+                let is_case = v
+                    .as_ref()
+                    .and_then(|v| v.get("type"))
+                    .and_then(|t| t.as_str())
+                    == Some("case");
                 if is_case {
-                    let id = v.as_ref().and_then(|v| v.pointer("/case/id")).and_then(|i| i.as_str()).unwrap_or("").to_string();
-                    batch.push(Entry::Bad { id, message: format!("cannot parse case: {e}") });
+                    let id = v
+                        .as_ref()
+                        .and_then(|v| v.pointer("/case/id"))
+                        .and_then(|i| i.as_str())
+                        .unwrap_or("")
+                        .to_string();
+                    batch.push(Entry::Bad {
+                        id,
+                        message: format!("cannot parse case: {e}"),
+                    });
                 } else {
                     eprintln!("gl-worker: ignoring unknown message: {e}");
                 }

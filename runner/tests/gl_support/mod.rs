@@ -51,7 +51,13 @@ impl Session {
             .expect("spawn gl-worker");
         let stdin = child.stdin.take();
         let stdout = BufReader::new(child.stdout.take().expect("stdout"));
-        let mut s = Session { backend: backend.to_string(), child, stdin, stdout, hello: Value::Null };
+        let mut s = Session {
+            backend: backend.to_string(),
+            child,
+            stdin,
+            stdout,
+            hello: Value::Null,
+        };
         s.send(&json!({"type": "hello", "protocol": 1}));
         match s.read() {
             Some(h) => {
@@ -82,12 +88,22 @@ impl Session {
         let mut line = String::new();
         match self.stdout.read_line(&mut line) {
             Ok(0) | Err(_) => None,
-            Ok(_) => Some(serde_json::from_str(&line).unwrap_or_else(|e| panic!("bad line from worker: {e}: {line}"))),
+            Ok(_) => Some(
+                serde_json::from_str(&line)
+                    .unwrap_or_else(|e| panic!("bad line from worker: {e}: {line}")),
+            ),
         }
     }
 
     pub fn caps(&self, list: &str) -> Vec<String> {
-        self.hello["capabilities"][list].as_array().map(|a| a.iter().filter_map(|v| v.as_str().map(String::from)).collect()).unwrap_or_default()
+        self.hello["capabilities"][list]
+            .as_array()
+            .map(|a| {
+                a.iter()
+                    .filter_map(|v| v.as_str().map(String::from))
+                    .collect()
+            })
+            .unwrap_or_default()
     }
 
     /// Sends the cases and a flush; returns one answer per case, in order.
@@ -96,7 +112,9 @@ impl Session {
             self.send(&json!({"type": "case", "case": c}));
         }
         self.send(&json!({"type": "flush"}));
-        let answers: Vec<Value> = (0..cases.len()).map(|_| self.read().expect("worker died")).collect();
+        let answers: Vec<Value> = (0..cases.len())
+            .map(|_| self.read().expect("worker died"))
+            .collect();
         for (c, a) in cases.iter().zip(&answers) {
             assert_eq!(a["case_id"], c.id.as_str(), "answers in order");
         }
@@ -106,8 +124,18 @@ impl Session {
     /// The rgba of `api` in an observation (panics on skip/error, showing it).
     pub fn rgba(answer: &Value, api: ApiPath) -> [f64; 4] {
         assert_eq!(answer["type"], "observation", "{answer}");
-        let r = answer["results"].as_array().unwrap().iter().find(|r| r["api"] == api.key()).unwrap_or_else(|| panic!("no {api} result in {answer}"));
-        let v: Vec<f64> = r["rgba"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+        let r = answer["results"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["api"] == api.key())
+            .unwrap_or_else(|| panic!("no {api} result in {answer}"));
+        let v: Vec<f64> = r["rgba"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect();
         [v[0], v[1], v[2], v[3]]
     }
 }
@@ -121,9 +149,16 @@ impl Drop for Session {
 
 /// Each backend of a context kind, for the tests to loop over.
 pub fn backends(api: &str, with_osmesa: bool) -> Vec<String> {
-    let mut v: Vec<String> = ["llvmpipe", "softpipe", "zink"].iter().map(|d| format!("egl:{d}:{api}")).collect();
+    let mut v: Vec<String> = ["llvmpipe", "softpipe", "zink"]
+        .iter()
+        .map(|d| format!("egl:{d}:{api}"))
+        .collect();
     if with_osmesa {
-        v.extend(["llvmpipe", "softpipe"].iter().map(|d| format!("osmesa:{d}:{api}")));
+        v.extend(
+            ["llvmpipe", "softpipe"]
+                .iter()
+                .map(|d| format!("osmesa:{d}:{api}")),
+        );
     }
     v
 }
@@ -154,17 +189,41 @@ pub fn d16_case(id: &str, spec: Spec, api: &[ApiPath], target: Target, c: u32, d
             target,
             format: Format::D16,
             base_level: 0,
-            levels: vec![Level { width: w, height: h, layers, depth: Texels::Unorm(vec![c; n]), stencil: None }],
+            levels: vec![Level {
+                width: w,
+                height: h,
+                layers,
+                depth: Texels::Unorm(vec![c; n]),
+                stencil: None,
+            }],
         },
         sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
-        lookup: Lookup { coord, layer: if target == Target::CubeArray { 1.0 } else { 0.0 }, dref, projective: false, lod: 0.0, bias: 0.0 },
+        lookup: Lookup {
+            coord,
+            layer: if target == Target::CubeArray {
+                1.0
+            } else {
+                0.0
+            },
+            dref,
+            projective: false,
+            lod: 0.0,
+            bias: 0.0,
+        },
         expect: None,
     }
 }
 
 /// A 4x4 2D (or cube / array) texture with three mip levels whose texels are 0, 65535, 0 by level,
 /// sampled with NEAREST_MIPMAP_NEAREST and LEQUAL against 0.5: r = 1 exactly when level 1 is chosen.
-pub fn mip_case(id: &str, spec: Spec, api: &[ApiPath], target: Target, lod: f64, bias: f64) -> Case {
+pub fn mip_case(
+    id: &str,
+    spec: Spec,
+    api: &[ApiPath],
+    target: Target,
+    lod: f64,
+    bias: f64,
+) -> Case {
     let layers = match target {
         Target::Cube => 6,
         Target::CubeArray => 12,
@@ -179,11 +238,18 @@ pub fn mip_case(id: &str, spec: Spec, api: &[ApiPath], target: Target, lod: f64,
             width: s,
             height: s,
             layers,
-            depth: Texels::Unorm(vec![if i == 1 { 65535 } else { 0 }; (s * s * layers) as usize]),
+            depth: Texels::Unorm(vec![
+                if i == 1 { 65535 } else { 0 };
+                (s * s * layers) as usize
+            ]),
             stencil: None,
         })
         .collect();
-    c.sampler = Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::NearestMipmapNearest);
+    c.sampler = Sampler::new(
+        CompareMode::Compare,
+        CompareFunc::Lequal,
+        Filter::NearestMipmapNearest,
+    );
     if target == Target::T2dArray {
         c.lookup.coord = [0.25, 0.5, 1.0, 1.0];
     }
