@@ -98,21 +98,25 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
             fixtures::write_dir(&out, &written).with_context(|| format!("writing {}", out.display()))?;
         }
     }
+    // The report is assembled first and written once; a closed pipe (`| head`) is not an error
+    // here (the files are already written).
+    let mut report = String::new();
     if !args.summary_only && !streaming {
-        println!("{}", coverage.markdown());
+        report.push_str(&coverage.markdown());
+        report.push('\n');
     }
-    print!("{}", coverage.summary());
+    report.push_str(&coverage.summary());
     if args.grid != "exhaustive" {
         for (why, n) in grids::pruned() {
-            println!("pruned {n} combinations: {why}");
+            report.push_str(&format!("pruned {n} combinations: {why}\n"));
         }
     }
     let missing = coverage.missing();
     if args.grid == "default" && !missing.is_empty() {
-        println!(
-            "{} allowed spec x target x format x filter x func combinations have no case",
+        report.push_str(&format!(
+            "{} allowed spec x target x format x filter x func combinations have no case\n",
             missing.len()
-        );
+        ));
     }
     if let Some(readme) = &args.update_readme {
         let text = std::fs::read_to_string(readme).with_context(|| format!("reading {}", readme.display()))?;
@@ -120,8 +124,8 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
             .with_context(|| format!("{}: no coverage markers", readme.display()))?;
         std::fs::write(readme, new).with_context(|| format!("writing {}", readme.display()))?;
     }
-    println!(
-        "grid `{}` seed {}: {} cases in {} files, {} bytes ({:.1} MiB), generated in {:.2} s -> {}",
+    report.push_str(&format!(
+        "grid `{}` seed {}: {} cases in {} files, {} bytes ({:.1} MiB), generated in {:.2} s -> {}\n",
         args.grid,
         args.seed,
         coverage.total,
@@ -130,7 +134,12 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
         bytes as f64 / (1024.0 * 1024.0),
         gen_time.as_secs_f64(),
         out.display()
-    );
+    ));
+    {
+        use std::io::Write;
+        let mut stdout = std::io::stdout().lock();
+        let _ = stdout.write_all(report.as_bytes()).and_then(|_| stdout.flush());
+    }
     if args.check && !differ.is_empty() {
         for d in &differ {
             eprintln!("differs: {}", out.join(d).display());
