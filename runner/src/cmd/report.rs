@@ -28,11 +28,11 @@ pub struct Args {
     /// Dumps shown per matrix cell (the rest are counted).
     #[arg(long, value_name = "N", default_value_t = 50)]
     max_details: usize,
-    /// Dumps shown in the whole report.
-    #[arg(long, value_name = "N", default_value_t = 4000)]
+    /// Dumps shown in the whole report (shared out among the cells, at least 3 each).
+    #[arg(long, value_name = "N", default_value_t = 600)]
     max_details_total: usize,
     /// Tests drawn per acceptance plot (warnings and failures first).
-    #[arg(long, value_name = "N", default_value_t = 80)]
+    #[arg(long, value_name = "N", default_value_t = 60)]
     max_plot_points: usize,
     /// Title of the page.
     #[arg(long, default_value = "shadowcheck report")]

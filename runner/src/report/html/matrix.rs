@@ -145,17 +145,16 @@ fn anchor(row: usize, col: usize) -> String {
 
 fn cell_text(c: &Cell) -> String {
     match c.kind() {
-        Kind::Empty => "·".into(),
-        Kind::Skip => "skip".into(),
+        Kind::Empty | Kind::Skip => String::new(),
         Kind::Pass => format!("{}", c.pass),
         Kind::Warn => format!("{} warn", c.warn),
-        Kind::Fail if c.warn > 0 => format!("{} fail {} warn", c.fail, c.warn),
         Kind::Fail => format!("{} fail", c.fail),
     }
 }
 
 /// The matrix as an HTML table (`id="matrix"`). Rows without a warning or failure carry class
-/// `same`, hidden while the table has class `only-diff`.
+/// `same`, hidden while the table has class `only-diff`. Cells omit their end tags (as HTML
+/// allows) and skipped cells their text, so 1500 rows × 17 backends stay well under a megabyte.
 pub fn render(m: &Matrix, out: &mut String) {
     let differing = m.rows_differing();
     let only_diff = differing > 0;
@@ -163,7 +162,7 @@ pub fn render(m: &Matrix, out: &mut String) {
         out,
         "<p class=\"note\">{} rows (spec / compare func / min/mag filter / format) × {} backends; {} rows have a warning or failure. \
          A cell counts its tests by raw outcome: a number alone is all pass; <span class=\"w pill\">warn</span> inside the lenient \
-         profile only; <span class=\"f pill\">fail</span> outside lenient, crash or timeout; <span class=\"s pill\">skip</span> not run. \
+         profile only; <span class=\"f pill\">fail</span> outside lenient, crash or timeout; <span class=\"s pill\">grey</span> not run (skipped). \
          Hover a cell for its counts, click it for its cases.</p>",
         m.rows.len(),
         m.backends.len(),
@@ -176,7 +175,9 @@ pub fn render(m: &Matrix, out: &mut String) {
     );
     let _ = write!(out, "<table id=\"matrix\" class=\"matrix{}\"><thead><tr><th>spec</th><th>func</th><th>filter</th><th>format</th>", if only_diff { " only-diff" } else { "" });
     for b in &m.backends {
-        let _ = write!(out, "<th class=\"be\">{}</th>", esc(b));
+        // Break long names at their colons (egl / llvmpipe / compat) to keep columns narrow.
+        let name = b.split(':').map(esc).collect::<Vec<_>>().join(":<br>");
+        let _ = write!(out, "<th class=\"be\" title=\"{}\">{name}</th>", esc(b));
     }
     out.push_str("</tr></thead><tbody>\n");
     for (ri, (key, cells)) in m.rows.iter().enumerate() {
@@ -187,7 +188,7 @@ pub fn render(m: &Matrix, out: &mut String) {
         };
         let _ = write!(out, "<tr class=\"{class}\">");
         for k in key {
-            let _ = write!(out, "<td>{}</td>", esc(k));
+            let _ = write!(out, "<td>{}", esc(k));
         }
         for (ci, c) in cells.iter().enumerate() {
             let title = if c.mixed() {
@@ -203,11 +204,11 @@ pub fn render(m: &Matrix, out: &mut String) {
             };
             let text = cell_text(c);
             if c.dumps.is_empty() {
-                let _ = write!(out, "<td class={}{title}>{text}</td>", c.kind().class());
+                let _ = write!(out, "<td class={}{title}>{text}", c.kind().class());
             } else {
                 let _ = write!(
                     out,
-                    "<td class={}{title}><a href=\"#{}\">{text}</a></td>",
+                    "<td class={}{title}><a href=\"#{}\">{text}</a>",
                     c.kind().class(),
                     anchor(ri, ci)
                 );
@@ -227,19 +228,33 @@ pub struct DetailCaps {
     pub total: usize,
 }
 
+/// How many dumps each cell shows: `caps.per_cell`, lowered so that every cell with dumps gets
+/// its share of `caps.total` (but at least 3), rather than the first cells taking it all.
+pub fn per_cell_share(m: &Matrix, caps: DetailCaps) -> usize {
+    let cells = m
+        .rows
+        .iter()
+        .flat_map(|(_, c)| c)
+        .filter(|c| !c.dumps.is_empty())
+        .count()
+        .max(1);
+    caps.per_cell.min((caps.total / cells).max(3))
+}
+
 /// The dumps of every cell with warnings or failures (id, backend, API path, expected per
-/// profile, observed RGBA, footprint, re-run command), at most `caps.per_cell` per cell and
+/// profile, observed RGBA, footprint, re-run command), at most [`per_cell_share`] per cell and
 /// `caps.total` in all; each section says how many it leaves out.
 pub fn render_details(m: &Matrix, results: &[TestResult], caps: DetailCaps, out: &mut String) {
     let mut shown_total = 0usize;
     let mut any = false;
+    let share = per_cell_share(m, caps);
     for (ri, (key, cells)) in m.rows.iter().enumerate() {
         for (ci, c) in cells.iter().enumerate() {
             if c.dumps.is_empty() {
                 continue;
             }
             any = true;
-            let room = caps.per_cell.min(caps.total.saturating_sub(shown_total));
+            let room = share.min(caps.total.saturating_sub(shown_total));
             let show = c.dumps.len().min(room);
             shown_total += show;
             let _ = writeln!(

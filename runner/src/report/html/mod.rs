@@ -46,9 +46,9 @@ impl Default for Options {
             title: "shadowcheck report".into(),
             details: DetailCaps {
                 per_cell: 50,
-                total: 4000,
+                total: 600,
             },
-            plot_points: 80,
+            plot_points: 60,
         }
     }
 }
@@ -283,8 +283,9 @@ pub fn render(input: &ReportInput, geo: &Geometry, opts: &Options) -> String {
     o.push_str("<h2 id=\"s-details\">Details</h2>\n");
     let _ = writeln!(
         o,
-        "<p class=\"note\">Every warning and failure of a cell, at most {} per cell and {} in all: expected value and acceptance per profile, observed RGBA, footprint, and the command that re-runs the case.</p>",
-        opts.details.per_cell, opts.details.total
+        "<p class=\"note\">The warnings and failures of each cell, at most {} per cell and {} in all: expected value and acceptance per profile, observed RGBA, footprint, and the command that re-runs the case. Every record is in the runs' results.jsonl.</p>",
+        matrix::per_cell_share(&m, opts.details),
+        opts.details.total
     );
     matrix::render_details(&m, &input.results, opts.details, &mut o);
     let _ = write!(o, "<script>{}</script>\n</body></html>\n", page::SCRIPT);

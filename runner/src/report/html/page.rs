@@ -26,7 +26,7 @@ h1{font-size:22px;margin:18px 0 4px}h2{font-size:18px;margin:28px 0 8px;border-b
 h3{font-size:14px;margin:16px 0 6px}nav a{margin-right:14px}.note{color:#556;font-size:13px;margin:4px 0}
 table{border-collapse:collapse;font-size:12.5px}th,td{border:1px solid #d0d4dc;padding:2px 6px;text-align:left}
 th{background:#eef1f6;position:sticky;top:0}td.num{text-align:right}
-.matrix td:nth-child(n+5){text-align:center;min-width:56px}.matrix th.be{font-size:11px;max-width:110px;word-break:break-all;vertical-align:bottom}
+.matrix td{padding:2px 4px}.matrix td:nth-child(n+5){text-align:center;min-width:38px;white-space:nowrap}.matrix th.be{font-size:10.5px;max-width:58px;vertical-align:bottom;font-weight:600;padding:2px 3px}
 #summary td:first-child{max-width:420px;word-break:break-all}
 table.only-diff tr.same{display:none}
 .p{background:#cdebd3}.w{background:#ffd98a}.f{background:#f4a3a3;font-weight:600}.s{background:#e4e6ea;color:#667}.n{color:#aab}
@@ -36,7 +36,7 @@ td a{color:inherit;display:block}.pill{padding:0 6px;border-radius:8px}
 .pics{display:flex;flex-wrap:wrap;gap:10px 18px;align-items:flex-start}
 svg{font:10px sans-serif;background:#fff}svg .t{font-weight:600;font-size:11px}svg .ax{fill:#556}
 svg .frame{fill:#fafbfc;stroke:#9aa}svg .diag{stroke:#000;stroke-opacity:.25;stroke-dasharray:3 3}
-svg .miss rect{stroke:#000;stroke-width:1.2}svg .grid{stroke:#dde}svg .len{fill:#c9d3e3}svg .str{fill:#6b7fa8}
+svg .miss rect{stroke:#000;stroke-width:1.2}svg .grid{stroke:#dde}svg .len{fill:#c9d3e3}svg .str{fill:#6b7fa8}svg .hit rect{fill:transparent}svg .hit rect:hover{fill:#0001}
 pre.dump{background:#f6f7f9;border-left:4px solid #ccc;padding:6px 10px;font-size:12px;overflow-x:auto;margin:6px 0}
 pre.dump{background:#f6f7f9}pre.dump.f{border-color:#d62728;font-weight:normal;background:#f6f7f9}pre.dump.w{border-color:#f0a020;background:#f6f7f9}
 .legend span{display:inline-block;width:12px;height:12px;vertical-align:middle;margin:0 4px 0 12px;border:1px solid #888}

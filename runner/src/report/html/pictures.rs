@@ -6,12 +6,12 @@
 //!   the compare function's step shows), orange where one only met the lenient profile, red
 //!   with a black outline where one was outside every acceptance set.
 //! - [`plot`]: for filtered / mipmapped tests, each test's lenient acceptance interval (light
-//!   bar), strict interval (dark bar) and the observed r (dot, coloured by outcome); values
+//!   bar), strict interval (dark bar) and the observed r (diamond, coloured by outcome); values
 //!   outside the axis are drawn at its edge as triangles.
 
 use super::matrix::Kind;
-use svg::node::element::path::Data;
-use svg::node::element::{Circle, Group, Line, Path, Rectangle, Text, Title};
+use std::fmt::Write as _;
+use svg::node::element::{Group, Line, Path, Rectangle, Text, Title};
 use svg::Document;
 
 /// One test placed on a heatmap.
@@ -73,6 +73,8 @@ fn tone(r: f64) -> String {
 
 pub const WARN_COLOUR: &str = "#f0a020";
 pub const FAIL_COLOUR: &str = "#d62728";
+/// Observed values that passed, on the plots.
+pub const PASS_MARK: &str = "#17305c";
 
 /// Coordinates to 0.1 px: the svg crate writes f64 in full, which would triple the page size.
 fn q(v: f64) -> f64 {
@@ -88,7 +90,7 @@ fn text(x: f64, y: f64, s: &str, anchor: &str) -> Text {
 
 /// The heatmap of `points` (one func, one backend). `title` heads it.
 pub fn heatmap(title: &str, points: &[HeatPoint]) -> String {
-    const CELL: f64 = 12.0;
+    const CELL: f64 = 11.0;
     const LEFT: f64 = 34.0;
     const TOP: f64 = 18.0;
     let size = CELL * BINS as f64;
@@ -258,7 +260,7 @@ pub fn plot(title: &str, items: &[PlotItem], caption: &str) -> String {
     const LO: f64 = -0.1;
     const HI: f64 = 1.1;
     let n = items.len().max(1) as f64;
-    let step = (640.0 / n).clamp(4.0, 14.0);
+    let step = (520.0 / n).clamp(4.0, 14.0);
     let width = step * n;
     let (w, h) = (q(LEFT + width + 8.0), TOP + H + 30.0);
     let y = |v: f64| TOP + H - (v.clamp(LO, HI) - LO) / (HI - LO) * H;
@@ -288,85 +290,86 @@ pub fn plot(title: &str, items: &[PlotItem], caption: &str) -> String {
             )
             .add(text(LEFT - 3.0, y(v) + 3.0, &format!("{v}"), "end"));
     }
-    let bar = |x: f64, bw: f64, (lo, hi): (f64, f64), class: &str| {
-        let (top, bottom) = (y(hi), y(lo));
-        Rectangle::new()
-            .set("x", q(x))
-            .set("y", q(top - 1.0))
-            .set("width", q(bw))
-            .set("height", q(bottom - top + 2.0))
-            .set("class", class.to_string())
+    // All bars of a kind, and all markers of a colour, go into one path each: a plot of a hundred
+    // tests is then a few kilobytes. Warnings and failures also get an invisible hover target.
+    let mut len_d = String::new();
+    let mut str_d = String::new();
+    let mut marks: [String; 3] = Default::default();
+    let mut hits = Group::new().set("class", "hit");
+    let bar = |d: &mut String, x: f64, bw: f64, (lo, hi): (f64, f64)| {
+        let (top, bottom) = (y(hi) - 1.0, y(lo) + 1.0);
+        let _ = write!(
+            d,
+            "M{} {}h{}v{}h{}z",
+            q(x),
+            q(top),
+            q(bw),
+            q(bottom - top),
+            q(-bw)
+        );
     };
     for (i, it) in items.iter().enumerate() {
         let x0 = LEFT + i as f64 * step;
         let cx = x0 + step / 2.0;
-        let obs = it
-            .observed
-            .map(|v| {
-                if v.is_nan() {
-                    "nan".to_string()
-                } else {
-                    format!("{v}")
-                }
-            })
-            .unwrap_or_else(|| "none".into());
-        let fmt_set = |s: &[(f64, f64)]| {
-            s.iter()
-                .map(|&(a, b)| {
-                    if a == b {
-                        format!("{{{a}}}")
-                    } else {
-                        format!("[{a}, {b}]")
-                    }
-                })
-                .collect::<Vec<_>>()
-                .join(" ∪ ")
-        };
-        // Hover text only where something is off (a few hundred bytes per test otherwise).
-        let mut g = Group::new();
-        if it.kind >= Kind::Warn {
-            g = g.add(Title::new(format!(
-                "{}\nobserved r {obs}; strict {}; lenient {}",
-                it.test,
-                fmt_set(&it.strict),
-                fmt_set(&it.lenient)
-            )));
-        }
         for &iv in &it.lenient {
-            g = g.add(bar(x0 + step * 0.1, step * 0.8, iv, "len"));
+            bar(&mut len_d, x0 + step * 0.1, step * 0.8, iv);
         }
         for &iv in &it.strict {
-            g = g.add(bar(x0 + step * 0.3, step * 0.4, iv, "str"));
+            bar(&mut str_d, x0 + step * 0.3, step * 0.4, iv);
         }
-        let colour = match it.kind {
-            Kind::Fail => FAIL_COLOUR,
-            Kind::Warn => WARN_COLOUR,
-            _ => "#17305c",
-        };
+        let m = &mut marks[match it.kind {
+            Kind::Fail => 2,
+            Kind::Warn => 1,
+            _ => 0,
+        }];
+        let r = (step * 0.3).clamp(1.8, 3.0);
         match it.observed.filter(|v| !v.is_nan()) {
+            // A diamond at the observed value.
             Some(v) if (LO..=HI).contains(&v) => {
-                g = g.add(
-                    Circle::new()
-                        .set("cx", q(cx))
-                        .set("cy", q(y(v)))
-                        .set("r", q((step * 0.3).clamp(1.8, 3.0)))
-                        .set("fill", colour),
-                );
+                let _ = write!(m, "M{} {}l{r} {r}l{r} -{r}l-{r} -{r}z", q(cx - r), q(y(v)));
             }
+            // Off the axis: a triangle at the edge, pointing out.
             Some(v) => {
-                // Off the axis: a triangle at the edge, pointing out.
                 let (edge, dir) = if v < LO { (TOP + H, 1.0) } else { (TOP, -1.0) };
-                let d = Data::new()
-                    .move_to((q(cx - 3.5), q(edge - dir * 5.0)))
-                    .line_to((q(cx + 3.5), q(edge - dir * 5.0)))
-                    .line_to((q(cx), edge))
-                    .close();
-                g = g.add(Path::new().set("d", d).set("fill", colour));
+                let _ = write!(
+                    m,
+                    "M{} {}h7l-3.5 {}z",
+                    q(cx - 3.5),
+                    q(edge - dir * 5.0),
+                    q(dir * 5.0)
+                );
             }
             None => {}
         }
-        doc = doc.add(g);
+        if it.kind >= Kind::Warn {
+            let obs = match it.observed {
+                Some(v) if v.is_nan() => "nan".to_string(),
+                Some(v) => format!("{v}"),
+                None => "none".into(),
+            };
+            // The intervals are drawn; the dump in the details has them in full.
+            let tip = format!("{} — observed r {obs}", it.test);
+            hits = hits.add(
+                Rectangle::new()
+                    .set("x", q(x0))
+                    .set("y", TOP)
+                    .set("width", q(step))
+                    .set("height", H)
+                    .add(Title::new(tip)),
+            );
+        }
     }
+    for (d, class) in [(len_d, "len"), (str_d, "str")] {
+        if !d.is_empty() {
+            doc = doc.add(Path::new().set("d", d).set("class", class));
+        }
+    }
+    for (d, colour) in marks.into_iter().zip([PASS_MARK, WARN_COLOUR, FAIL_COLOUR]) {
+        if !d.is_empty() {
+            doc = doc.add(Path::new().set("d", d).set("fill", colour));
+        }
+    }
+    doc = doc.add(hits);
     doc = doc.add(text(LEFT, TOP + H + 14.0, caption, "start").set("class", "ax"));
     doc.to_string()
 }
