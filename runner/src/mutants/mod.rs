@@ -31,7 +31,10 @@
 //! Speed: each mutant samples every test once; observations bit-identical to the baseline's are not
 //! judged again (they have the baseline's verdict, Pass or Skip). Mutants run in parallel.
 
+pub mod catalog;
 pub mod render;
+
+pub use catalog::{about, grid_change, unobservable, witness};
 
 use crate::verdict::{self, Outcome};
 use serde::Serialize;
@@ -466,22 +469,6 @@ impl MutantResult {
     }
 }
 
-/// The case that shows `fault`: the soft crate's witness, except where that witness sits on state
-/// the specifications leave undefined, where a case from the grid change ([`grid_change`]) replaces it.
-pub fn witness(fault: Fault) -> (Case, ApiPath) {
-    let (mut case, api) = shadowcheck_soft::witness::witness(fault);
-    if fault == Fault::DtNotClamped {
-        // GL 4.6 leaves a fixed-point border outside [0,1] undefined; ARB_shadow has Dt in [0,1]:
-        // border 1.5 reads as Dt = 1, and GEQUAL with R = 1 passes (r = 1; unclamped, 1 >= 1.5 fails).
-        case.spec = Spec::Arb;
-        case.api = vec![ApiPath::FixedFunction];
-        case.sampler.compare_func = shadowcheck_model::CompareFunc::Gequal;
-        case.lookup.dref = 1.0;
-        return (case, ApiPath::FixedFunction);
-    }
-    (case, api)
-}
-
 /// Judges the soft crate's witness of `fault` with the oracle (see the module docs).
 pub fn check_witness(fault: Fault) -> WitnessCheck {
     let (mut case, api) = witness(fault);
@@ -568,99 +555,6 @@ pub fn run(
         run_seconds: t0.elapsed().as_secs_f64(),
         wall_seconds: 0.0,
     }
-}
-
-/// The real-world defect each fault is modelled on (for the report).
-pub fn about(f: Fault) -> &'static str {
-    use Fault as F;
-    match f {
-        F::RefClampedForFloat => "Dref clamped to [0,1] for a D32F texture (pre-GL 3.0 rule kept for float depth)",
-        F::RefNotClamped => "Dref not clamped for fixed-point formats",
-        F::DtClampedForFloat => "Dt clamped to [0,1] at sample time for float depth (border > 1 visible)",
-        F::DtNotClamped => "Dt (border) not clamped for fixed-point formats",
-        F::FilterThenCompare => "filter the depths, then compare once (no PCF)",
-        F::PcfHalfTexelOff => "PCF footprint and weights off by half a texel",
-        F::LinearAsNearest => "LINEAR comparison sampled as NEAREST",
-        F::LequalGequalSwapped => "LEQUAL and GEQUAL swapped (SGIX/ARB operator confusion)",
-        F::LessAsLequal => "LESS treated as LEQUAL",
-        F::GreaterAsGequal => "GREATER treated as GEQUAL",
-        F::EqualWithTolerance => "EQUAL / NOTEQUAL with a tolerance",
-        F::NanOrderedNotequal => "NOTEQUAL as an ordered compare (NaN Dref fails)",
-        F::AlwaysNeverSwapped => "ALWAYS and NEVER swapped",
-        F::SgixOperatorsReversed => "SGIX operators read as ARB issue 2 describes them",
-        F::AmbientAppliedToPass => "ambient / fail value applied to passing texels",
-        F::AmbientIgnored => "ambient / fail value ignored",
-        F::FailValueNotClamped => "TEXTURE_COMPARE_FAIL_VALUE_ARB / SHADOW_AMBIENT_SGIX not clamped to [0,1]",
-        F::RedModeAsLuminance => "DEPTH_TEXTURE_MODE RED returned as LUMINANCE",
-        F::IntensityAsLuminance => "DEPTH_TEXTURE_MODE INTENSITY returned as LUMINANCE",
-        F::WrongDefaultDepthMode => "wrong default DEPTH_TEXTURE_MODE in the compatibility profile",
-        F::AlphaModeZeroOnGlsl130 => "GLSL 1.30 shadow lookup with DEPTH_TEXTURE_MODE ALPHA returns 0 (Cs[0] of (0,0,0,r))",
-        F::Glsl120IgnoresDepthMode => "vec4 shadow2D (GLSL 1.20) ignoring DEPTH_TEXTURE_MODE",
-        F::CompareAppliedToColour => "comparison applied to a colour (R8) texture",
-        F::StencilModeIgnored => "DEPTH_STENCIL_TEXTURE_MODE STENCIL_INDEX ignored (depth sampled)",
-        F::StencilCompared => "stencil index sampled with the comparison on under STENCIL_INDEX",
-        F::IncompleteNotZero => "incomplete texture sampled instead of returning 0",
-        F::MipmapCompletenessIgnored => "missing mip levels not detected",
-        F::EsDepthFilterCompletenessIgnored => "ES rule: sized depth + compare NONE + LINEAR not incomplete",
-        F::ProjectiveDivideMissing => "projective divide missing",
-        F::RefNotDividedByQ => "projective divide of the coordinates but not of Dref",
-        F::LayerTruncated => "array layer truncated instead of rounded",
-        F::CubeNegYFlipped => "cube -Y face t coordinate flipped",
-        F::MipLevelOffByOne => "NEAREST-mipmap level off by one",
-        F::TrilinearNoBlend => "trilinear filtering without the level blend",
-        F::LodBiasIgnored => "TEXTURE_LOD_BIAS ignored",
-        F::LodClampIgnored => "TEXTURE_MIN_LOD / MAX_LOD ignored",
-        F::MaxLevelIgnored => "TEXTURE_MAX_LEVEL ignored",
-        F::BorderIgnored => "border depth ignored (CLAMP_TO_BORDER as CLAMP_TO_EDGE)",
-        F::BorderDepthFromAlpha => "border depth read from the alpha component",
-        F::MirroredRepeatOffByOne => "MIRRORED_REPEAT off by one texel",
-        F::UnormDividedByPowerOfTwo => "unorm conversion c/2^b instead of c/(2^b-1)",
-        F::UploadNotClamped => "floating-point depth upload not clamped to [0,1]",
-        #[allow(unreachable_patterns)]
-        _ => "",
-    }
-}
-
-/// Why a fault cannot be observed through the API, for the faults where no conforming application
-/// can tell the faulty unit from the correct one. Only reported for mutants the suite does not kill
-/// and whose witness the oracle accepts.
-pub fn unobservable(f: Fault) -> Option<&'static str> {
-    Some(match f {
-        Fault::NanOrderedNotequal => {
-            "a NaN reference has no defined comparison result: Table 8.23 (and every extension's table) orders Dref and Dt, \
-             GL 4.6 / ES 3.2 §2.3.4.1 leave the result of a NaN input unspecified, and clamping a NaN (fixed-point formats, \
-             EXT_shadow_samplers) is not defined either; the oracle accepts 0 and 1 for every NaN-reference case, so treating \
-             NOTEQUAL as ordered (NaN fails) is as conforming as IEEE != (NaN passes)"
-        }
-        _ => return None,
-    })
-}
-
-/// The grid change (cases/src/grids) that kills a fault the default grid misses, where known; the
-/// witness case is the generic answer.
-pub fn grid_change(f: Fault) -> Option<&'static str> {
-    Some(match f {
-        Fault::EqualWithTolerance => {
-            "cases/src/grids/families.rs `exact`: for EQUAL and NOTEQUAL also R = at ± 2^-14 (outside the lenient \
-             16-bit reference precision, inside the 2^-12 tolerance); the present at± (adjacent f32) cases only Warn"
-        }
-        Fault::DtNotClamped => {
-            "cases/src/grids/families.rs `wrap`: for the pre-3.0 specs (sgix, arb, arb_ambient, ext_funcs), whose Dt is \
-             in [0,1] (ARB_shadow 3.8.13.1), also the fixed-point format with CLAMP_TO_BORDER, border 1.5, R = 1, GEQUAL \
-             (r = 1; unclamped Dt 1.5 gives 0) and border -0.5, R = 0, LEQUAL; GL 4.6 leaves a fixed-point border outside \
-             [0,1] undefined and ES 3.2 clamps it, so gl46/gles32 cannot show this fault"
-        }
-        Fault::FailValueNotClamped => {
-            "cases/src/grids/families.rs `ambient`: fail values 1.5 and -0.5 besides 0, 0.25, 0.5, 1 \
-             (ARB_shadow_ambient: the value is clamped to [0,1] when specified)"
-        }
-        Fault::LayerTruncated => "cases/src/grids/families.rs `layer`: layer coordinates with a fraction of at least 0.5 (e.g. 1.5)",
-        Fault::CubeNegYFlipped => "cases/src/grids/families.rs `cube`: -Y face lookups whose rows differ",
-        Fault::DtClampedForFloat => {
-            "cases/src/grids/families.rs `wrap`: D32F with a border outside [0,1] and a function that tells 1 from 1.5"
-        }
-        _ => return None,
-    })
 }
 
 #[cfg(test)]
