@@ -69,7 +69,7 @@ fn layout(target: Target) -> (u32, f64, u32) {
 }
 
 /// Values of a whole level: the sampled image holds `img`, every other image its complement.
-pub fn fill(target: Target, w: u32, h: u32, layers: u32, sampled: usize, img: &[f64]) -> Vec<f64> {
+pub fn fill(w: u32, h: u32, layers: u32, sampled: usize, img: &[f64]) -> Vec<f64> {
     let per = (w * h) as usize;
     let mut v = Vec::with_capacity(per * layers as usize);
     for l in 0..layers as usize {
@@ -78,7 +78,6 @@ pub fn fill(target: Target, w: u32, h: u32, layers: u32, sampled: usize, img: &[
             v.push(if l == sampled { x } else { 1.0 - x });
         }
     }
-    let _ = target;
     v
 }
 
@@ -88,7 +87,7 @@ pub fn pattern_texture(cell: &Cell) -> (Texture, u32, u32, At) {
     let size = if cell.target.dims() == 1 { 4 } else { 2 };
     let (w, h, layers) = build::dims(cell.target, size, n);
     let sampled = build::image_offset(cell.target, w, h, layer as u32, face) / (w * h) as usize;
-    let vals = fill(cell.target, w, h, layers, sampled, &PATTERN);
+    let vals = fill(w, h, layers, sampled, &PATTERN);
     let tex = texture(cell, vec![build::level(cell.format, w, h, layers, &vals)]);
     (
         tex,
@@ -114,7 +113,7 @@ pub fn mip_texture(cell: &Cell) -> (Texture, At) {
     loop {
         let (w, h, layers) = build::dims(cell.target, s, n);
         let sampled = build::image_offset(cell.target, w, h, layer as u32, face) / (w * h) as usize;
-        let vals = fill(cell.target, w, h, layers, sampled, &[LEVELS[i % LEVELS.len()]]);
+        let vals = fill(w, h, layers, sampled, &[LEVELS[i % LEVELS.len()]]);
         levels.push(build::level(cell.format, w, h, layers, &vals));
         if s == 1 {
             break;
