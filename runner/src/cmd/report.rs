@@ -32,7 +32,7 @@ pub struct Args {
     #[arg(long, value_name = "N", default_value_t = 600)]
     max_details_total: usize,
     /// Tests drawn per acceptance plot (warnings and failures first).
-    #[arg(long, value_name = "N", default_value_t = 60)]
+    #[arg(long, value_name = "N", default_value_t = 48)]
     max_plot_points: usize,
     /// Title of the page.
     #[arg(long, default_value = "shadowcheck report")]

@@ -48,7 +48,7 @@ impl Default for Options {
                 per_cell: 50,
                 total: 600,
             },
-            plot_points: 60,
+            plot_points: 48,
         }
     }
 }

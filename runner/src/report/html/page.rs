@@ -21,12 +21,12 @@ pub fn esc(s: &str) -> String {
 }
 
 pub const STYLE: &str = r#"
-body{font:14px/1.4 system-ui,-apple-system,"Segoe UI",sans-serif;margin:0 24px 48px;color:#1d2330;background:#fff}
+body{font:14px/1.4 system-ui,-apple-system,"Segoe UI",sans-serif;margin:0 14px 48px;color:#1d2330;background:#fff}
 h1{font-size:22px;margin:18px 0 4px}h2{font-size:18px;margin:28px 0 8px;border-bottom:1px solid #ccd;padding-bottom:3px}
 h3{font-size:14px;margin:16px 0 6px}nav a{margin-right:14px}.note{color:#556;font-size:13px;margin:4px 0}
 table{border-collapse:collapse;font-size:12.5px}th,td{border:1px solid #d0d4dc;padding:2px 6px;text-align:left}
 th{background:#eef1f6;position:sticky;top:0}td.num{text-align:right}
-.matrix td{padding:2px 4px}.matrix td:nth-child(n+5){text-align:center;min-width:38px;white-space:nowrap}.matrix th.be{font-size:10.5px;max-width:58px;vertical-align:bottom;font-weight:600;padding:2px 3px}
+.matrix{font-size:12px}.matrix td{padding:2px 4px}.matrix td:nth-child(n+5){text-align:center;min-width:34px;white-space:nowrap}.matrix th.be{font-size:10px;max-width:54px;vertical-align:bottom;font-weight:500;padding:2px 3px}.matrix .f{font-weight:500}
 #summary td:first-child{max-width:420px;word-break:break-all}
 table.only-diff tr.same{display:none}
 .p{background:#cdebd3}.w{background:#ffd98a}.f{background:#f4a3a3;font-weight:600}.s{background:#e4e6ea;color:#667}.n{color:#aab}
