@@ -140,10 +140,24 @@ fn read_file(path: &Path) -> Result<FileRecords, InputError> {
     if is_jsonl {
         return read_jsonl(path, &text);
     }
-    let doc: JsonReport = serde_json::from_str(&text).map_err(|e| InputError::Format {
-        file,
-        msg: e.to_string(),
-    })?;
+    // As for JSON lines: results whose footprint does not read back lose only the footprint.
+    let doc: JsonReport = serde_json::from_str(&text)
+        .or_else(|e| {
+            let mut v: serde_json::Value = serde_json::from_str(&text)?;
+            let Some(results) = v.get_mut("results").and_then(|r| r.as_array_mut()) else {
+                return Err(e);
+            };
+            for r in results {
+                if let Some(o) = r.as_object_mut() {
+                    o.remove("footprint");
+                }
+            }
+            serde_json::from_value(v)
+        })
+        .map_err(|e| InputError::Format {
+            file,
+            msg: e.to_string(),
+        })?;
     Ok((doc.summary.backends, vec![], doc.results, doc.load_errors))
 }
 
@@ -209,5 +223,40 @@ mod tests {
         assert_eq!(results[0].outcome, crate::verdict::Outcome::Pass);
         assert!(results[0].footprint.is_none());
         assert!(read_jsonl(Path::new("x.jsonl"), &format!("{meta}\nnot json\n{rec}\n")).is_err());
+    }
+
+    #[test]
+    fn report_json_documents_and_directories_are_read_and_merged() {
+        let dir =
+            std::env::temp_dir().join(format!("shadowcheck-html-load-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("run")).unwrap();
+        let rec = r#"{"backend":"b","test":"c@core","case_id":"c","api":"core","status":"Fail","outcome":"Fail","duration":0.0,"tags":{"spec":"gl46","target":"2d","format":"d24","func":"lequal","filter":"nearest/nearest"},"footprint":{"dref":null,"texels":[]}}"#;
+        let summary = r#"{"schema_version":1,"backends":["b"],"counts":{"pass":0,"warn":0,"fail":1,"skip":0,"crash":0,"timeout":0,"expected_fail":0,"unexpected_improvement":0,"flake":0,"known_flake":0},"load_errors":0,"exit_code":100}"#;
+        let doc = format!(
+            r#"{{"schema_version":1,"summary":{summary},"load_errors":[],"results":[{rec}]}}"#
+        );
+        std::fs::write(dir.join("run/report.json"), &doc).unwrap();
+        let other = rec
+            .replace("\"b\"", "\"b2\"")
+            .replace(r#","footprint":{"dref":null,"texels":[]}"#, "");
+        std::fs::write(
+            dir.join("other.jsonl"),
+            format!("{{\"kind\":\"result\",{}\n", &other[1..]),
+        )
+        .unwrap();
+        let input = read_inputs(&[dir.join("run"), dir.join("other.jsonl")]).unwrap();
+        assert_eq!(input.backends, vec!["b".to_string(), "b2".to_string()]);
+        assert_eq!(input.results.len(), 2);
+        assert!(matches!(
+            read_inputs(&[dir.join("missing")]),
+            Err(InputError::Io { .. })
+        ));
+        std::fs::create_dir_all(dir.join("empty")).unwrap();
+        assert!(matches!(
+            read_inputs(&[dir.join("empty")]),
+            Err(InputError::EmptyDir(_))
+        ));
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

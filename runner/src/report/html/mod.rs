@@ -271,7 +271,7 @@ pub fn render(input: &ReportInput, geo: &Geometry, opts: &Options) -> String {
          matching bins shaded by observed r<span style=\"background:#e8f0fe\"></span>0<span style=\"background:#183c8c\"></span>1 \
          <span style=\"background:#f0a020\"></span>warn (lenient only)<span style=\"background:#d62728\"></span>mismatch (outlined); \
          dashed line: Dref = Dt. Plots: filtered / mipmapped lookups, lenient interval<span style=\"background:#c9d3e3\"></span>\
-         strict interval<span style=\"background:#6b7fa8\"></span>observed r as a dot (▲▼ off the axis). Hover for values.</p>\n",
+         strict interval<span style=\"background:#6b7fa8\"></span>observed r as a diamond coloured by the test's outcome (▲▼ off the axis; a test can fail on another channel than r, see its dump). Hover for values.</p>\n",
     );
     if geo.fixtures.is_empty() {
         o.push_str("<p class=\"note\">No fixture files were found (give --fixtures): the heatmaps place only the tests whose records carry a footprint (warnings and failures).</p>\n");

@@ -188,9 +188,12 @@ pub fn heatmap(title: &str, points: &[HeatPoint]) -> String {
         .set("class", "diag");
     doc = doc.add(diag);
     for b in [0, 1, 6, 11, 16, 21, BINS - 1] {
-        let l = label(b);
-        let l = l.trim_end_matches('0').trim_end_matches('.');
-        let l = if l.is_empty() { "0" } else { l };
+        // 0.50 -> 0.5, 1.00 -> 1, 0.00 -> 0; the edge bins keep "<0" and ">1".
+        let l = match label(b).parse::<f64>() {
+            Ok(v) => format!("{v}"),
+            Err(_) => label(b),
+        };
+        let l = l.as_str();
         doc = doc
             .add(text(
                 LEFT + (b as f64 + 0.5) * CELL,
@@ -388,6 +391,8 @@ mod tests {
         assert_eq!(bin(f64::NAN), None);
         assert_eq!(label(0), "<0");
         assert_eq!(label(11), "0.50");
+        let s = heatmap("t", &[]);
+        assert!(s.contains(">\n&lt;0\n<") && s.contains(">\n0.5\n<") && s.contains(">\n1\n<"), "tick labels: {s}");
     }
 
     #[test]
