@@ -37,7 +37,7 @@ td a{color:inherit;display:block}.pill{padding:0 6px;border-radius:8px}
 svg{font:10px sans-serif;background:#fff}svg .t{font-weight:600;font-size:11px}svg .ax{fill:#556}
 svg .frame{fill:#fafbfc;stroke:#9aa}svg .diag{stroke:#000;stroke-opacity:.25;stroke-dasharray:3 3}
 svg .miss rect{stroke:#000;stroke-width:1.2}svg .grid{stroke:#dde}svg .len{fill:#c9d3e3}svg .str{fill:#6b7fa8}svg .hit rect{fill:transparent}svg .hit rect:hover{fill:#0001}
-pre.dump{background:#f6f7f9;border-left:4px solid #ccc;padding:6px 10px;font-size:12px;overflow-x:auto;margin:6px 0}
+pre.dump{background:#f6f7f9;border-left:4px solid #ccc;padding:6px 10px;font-size:12px;white-space:pre-wrap;overflow-wrap:anywhere;margin:6px 0}
 pre.dump{background:#f6f7f9}pre.dump.f{border-color:#d62728;font-weight:normal;background:#f6f7f9}pre.dump.w{border-color:#f0a020;background:#f6f7f9}
 .legend span{display:inline-block;width:12px;height:12px;vertical-align:middle;margin:0 4px 0 12px;border:1px solid #888}
 "#;
