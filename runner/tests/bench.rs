@@ -49,6 +49,7 @@ fn quick_json_has_every_row_with_positive_finite_values() {
         positive(&rep, "gl_floor_lookups_per_s_1thread", Some(llvmpipe));
         positive(&rep, "gl_e2e_cases_per_s", Some(llvmpipe));
         positive(&rep, "gl_e2e_steady_cases_per_s", Some(llvmpipe));
+        positive(&rep, "gl_e2e_warm_cases_per_s", Some(llvmpipe));
         positive(&rep, "gl_e2e_over_floor", Some(llvmpipe));
         positive(&rep, "suite_wall_s", Some("llvmpipe"));
         positive(&rep, "suite_peak_rss_mib", Some("llvmpipe"));

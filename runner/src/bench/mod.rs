@@ -123,6 +123,7 @@ pub mod ids {
     pub const GL_FLOOR_1T: &str = "gl_floor_lookups_per_s_1thread";
     pub const GL_E2E: &str = "gl_e2e_cases_per_s";
     pub const GL_E2E_STEADY: &str = "gl_e2e_steady_cases_per_s";
+    pub const GL_E2E_WARM: &str = "gl_e2e_warm_cases_per_s";
     pub const GL_RATIO: &str = "gl_e2e_over_floor";
     pub const SUITE_WALL: &str = "suite_wall_s";
     pub const SUITE_RSS: &str = "suite_peak_rss_mib";

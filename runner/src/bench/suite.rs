@@ -27,6 +27,9 @@ pub struct E2e {
     pub backend_s: f64,
     /// Of run_s: judging answers.
     pub verdict_s: f64,
+    /// A second pass over the same cases on the same worker: the driver's shader variants and the
+    /// worker's programs are compiled, the fixtures loaded.
+    pub warm_run_s: f64,
 }
 
 impl E2e {
@@ -38,6 +41,9 @@ impl E2e {
     }
     pub fn steady_per_s(&self) -> f64 {
         self.verified as f64 / self.run_s
+    }
+    pub fn warm_per_s(&self) -> f64 {
+        self.verified as f64 / self.warm_run_s
     }
 }
 
@@ -68,6 +74,9 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
     let t2 = Instant::now();
     let (results, timing) = run::run_backend(b.as_mut(), &set, &Prior::default(), &Settings::default(), &mut Fanout::default());
     let run_s = t2.elapsed().as_secs_f64();
+    let t3 = Instant::now();
+    let _ = run::run_backend(b.as_mut(), &set, &Prior::default(), &Settings::default(), &mut Fanout::default());
+    let warm_run_s = t3.elapsed().as_secs_f64();
     drop(b);
     let verified = results.iter().filter(|r| matches!(r.outcome, Outcome::Pass | Outcome::Warn | Outcome::Fail)).count();
     let skipped = results.iter().filter(|r| r.outcome == Outcome::Skip).count();
@@ -83,6 +92,7 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
         run_s,
         backend_s: timing.backend_s,
         verdict_s: timing.verdict_s,
+        warm_run_s,
     })
 }
 
