@@ -79,7 +79,7 @@ pub fn text(rep: &Report) -> String {
 fn machine_line(rep: &Report) -> String {
     let m = &rep.machine;
     format!(
-        "{} logical CPUs ({}), {} MiB, {}, Linux {}, load average {:.2} at start, {}{}",
+        "{} logical CPUs ({}), {} MiB, {}, Linux {}, load average {:.2} at start, finished {}{}",
         m.nproc,
         m.cpu,
         m.memory_mib,
