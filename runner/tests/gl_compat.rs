@@ -42,7 +42,7 @@ const KNOWN: &[(&str, ApiPath, &str, [f64; 4])] = &[
     ("zink", ApiPath::FixedFunction, "red/r=1", [1.0; 4]),
 ];
 
-/// Flaky deviations (Mesa 22.3, EGL, MESA_SHADER_CACHE_DISABLE=true): the same input gives the spec
+/// Flaky deviations (Mesa 22.3, EGL, with or without Mesa's shader cache): the same input gives the spec
 /// layout or this one from run to run, even for one ARB program alone in its process. Either is
 /// accepted here; the runner's flake detection is what reports them.
 const FLAKY: &[(&str, ApiPath, &str, [f64; 4])] = &[
@@ -233,6 +233,43 @@ fn fixed_function_skips_what_it_cannot_realize_and_says_why() {
             a[0]["reason"].as_str().unwrap().contains("lambda"),
             "{}",
             a[0]
+        );
+    }
+}
+
+#[test]
+fn legacy_specs_see_the_colour_texture_as_luminance8() {
+    // ARB_shadow: a non-depth texture "operates in the normal manner"; in GL 2.1 terms the colour
+    // texture is LUMINANCE8, read as (L, L, L, 1) (Table 3.20; REPLACE keeps the fragment alpha 1).
+    for b in backends("compat", false).into_iter().take(2) {
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
+        let mut c = d16_case(
+            "arb/r8",
+            Spec::Arb,
+            &[ApiPath::FixedFunction, ApiPath::Glsl120],
+            Target::T2d,
+            0,
+            0.5,
+        );
+        c.texture.format = Format::R8;
+        c.texture.levels[0].depth = Texels::Unorm(vec![51; 4]);
+        c.sampler.compare_mode = CompareMode::None;
+        let a = s.run(&[c]);
+        let l = 51.0 / 255.0;
+        for p in [ApiPath::FixedFunction, ApiPath::Glsl120] {
+            let got = Session::rgba(&a[0], p);
+            assert!(
+                got[..3].iter().all(|v| (v - l).abs() < 1e-6) && got[3] == 1.0,
+                "{b} {p}: {}",
+                a[0]
+            );
+        }
+        assert_eq!(
+            a[0]["results"][0]["stored"]["unorm"],
+            serde_json::json!([51, 51, 51, 51]),
+            "{b}"
         );
     }
 }

@@ -8,11 +8,26 @@
 use super::paths::GlInfo;
 use super::GlError;
 use glow::HasContext;
-use shadowcheck_model::{Case, Format, Level, Target, Texels};
+use shadowcheck_model::{Case, Format, Level, Spec, Target, Texels};
 
 const GL_DEPTH_TEXTURE_MODE: u32 = 0x884B;
 const GL_DEPTH_STENCIL_TEXTURE_MODE: u32 = 0x90EA;
 const GL_TEXTURE_COMPARE_FAIL_VALUE_ARB: u32 = 0x80BF;
+
+/// The transfer of a case's texture: the legacy specs (SGIX_shadow, ARB_shadow, EXT_shadow_funcs)
+/// know the colour texture as LUMINANCE8 (GL 2.1 Table 3.20), GL 3.0+ and ES as R8.
+pub fn transfer_for(case: &Case) -> (i32, u32, u32, usize) {
+    let legacy = matches!(
+        case.spec,
+        Spec::Sgix | Spec::SgixAmbient | Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs
+    );
+    if case.texture.format == Format::R8 && legacy {
+        const LUMINANCE8: i32 = 0x8040;
+        const LUMINANCE: u32 = 0x1909;
+        return (LUMINANCE8, LUMINANCE, glow::UNSIGNED_BYTE, 1);
+    }
+    transfer(case.texture.format)
+}
 
 /// Pixel transfer format/type for a texture format: (internal format, format, type, bytes/texel).
 pub fn transfer(format: Format) -> (i32, u32, u32, usize) {
@@ -164,7 +179,7 @@ pub unsafe fn create(
 ) -> Result<glow::Texture, GlError> {
     let t = &case.texture;
     let target = t.target.gl();
-    let (ifmt, fmt, ty, bpt) = transfer(t.format);
+    let (ifmt, fmt, ty, bpt) = transfer_for(case);
     let tex = gl.create_texture().map_err(GlError::Gl)?;
     gl.active_texture(glow::TEXTURE0);
     gl.bind_texture(target, Some(tex));
@@ -330,7 +345,7 @@ pub unsafe fn read_back(
         .levels
         .first()
         .ok_or_else(|| GlError::Gl("no levels".into()))?;
-    let (_, fmt, ty, bpt) = transfer(t.format);
+    let (_, fmt, ty, bpt) = transfer_for(case);
     let mut all = Vec::with_capacity(lvl.texel_count() * bpt);
     let targets = face_targets(t.target);
     let per = lvl.texel_count() * bpt / targets.len();
