@@ -234,6 +234,26 @@ fn fixed_function_skips_what_it_cannot_realize_and_says_why() {
             "{}",
             a[0]
         );
+        // With another path that can run, the observation says why `ff` is missing.
+        let c = mip_case(
+            "mip/lod=1/two",
+            Spec::Gl46,
+            &[ApiPath::FixedFunction, ApiPath::Glsl130],
+            Target::T2d,
+            1.0,
+            0.0,
+        );
+        let a = s.run(&[c]);
+        assert_eq!(Session::rgba(&a[0], ApiPath::Glsl130)[0], 1.0, "{}", a[0]);
+        assert_eq!(a[0]["skipped"][0]["api"], "ff", "{}", a[0]);
+        assert!(
+            a[0]["skipped"][0]["reason"]
+                .as_str()
+                .unwrap()
+                .contains("lambda"),
+            "{}",
+            a[0]
+        );
     }
 }
 

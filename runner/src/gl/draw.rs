@@ -9,7 +9,7 @@
 
 use super::legacy::{self, Legacy};
 use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
-use super::protocol::PathResult;
+use super::protocol::{PathResult, PathSkip};
 use super::shaders;
 use super::texture;
 use super::GlError;
@@ -27,7 +27,8 @@ const MAX_DEFERRED: usize = 4096;
 /// The answer for one case.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Answer {
-    Observation(Vec<PathResult>),
+    /// The paths that ran, and why the others did not.
+    Observation(Vec<PathResult>, Vec<PathSkip>),
     Skip(String),
     Error(String),
 }
@@ -79,6 +80,8 @@ pub(super) struct BatchState {
     /// Textures whose level 0 is read back after the batch is drawn (reading back between draws
     /// makes the driver finish the queued draws first): texture, its case, the cases sharing it.
     pub(super) readbacks: Vec<(glow::Texture, usize, Vec<usize>)>,
+    /// Per case: the API paths it names that this context cannot run, with the reason.
+    pub(super) skipped: Vec<Vec<PathSkip>>,
 }
 
 impl BatchState {
@@ -410,6 +413,7 @@ impl Renderer {
             stored: vec![None; cases.len()],
             pending: Vec::new(),
             readbacks: Vec::new(),
+            skipped: vec![Vec::new(); cases.len()],
         };
         let paths = self.info.paths();
         self.clear();
@@ -423,17 +427,22 @@ impl Renderer {
             let mut skipped = Vec::new();
             for &path in &case.api {
                 if !paths.contains(&path) {
-                    skipped.push(format!("{path}: not run by this context"));
+                    skipped.push(PathSkip {
+                        api: path,
+                        reason: format!("{path}: not run by this context"),
+                    });
                     continue;
                 }
                 match paths::plan(path, case) {
                     Ok(p) => plans.push(p),
-                    Err(why) => skipped.push(why),
+                    Err(reason) => skipped.push(PathSkip { api: path, reason }),
                 }
             }
             if plans.is_empty() {
-                st.answers[ci] = Some(Answer::Skip(skipped.join("; ")));
+                let why: Vec<String> = skipped.into_iter().map(|s| s.reason).collect();
+                st.answers[ci] = Some(Answer::Skip(why.join("; ")));
             } else {
+                st.skipped[ci] = skipped;
                 planned.push((ci, plans));
             }
         }
@@ -465,14 +474,15 @@ impl Renderer {
             .into_iter()
             .zip(st.results)
             .zip(st.stored)
+            .zip(st.skipped)
             .zip(cases)
-            .map(|(((a, mut r), stored), case)| {
+            .map(|((((a, mut r), stored), skipped), case)| {
                 a.unwrap_or_else(|| {
                     r.sort_by_key(|e| case.api.iter().position(|p| *p == e.api));
                     for e in &mut r {
                         e.stored = stored.clone();
                     }
-                    Answer::Observation(r)
+                    Answer::Observation(r, skipped)
                 })
             })
             .collect()

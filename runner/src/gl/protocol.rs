@@ -67,6 +67,13 @@ pub struct PathResult {
     pub note: Option<String>,
 }
 
+/// An API path of a case that was not run, and why.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct PathSkip {
+    pub api: ApiPath,
+    pub reason: String,
+}
+
 /// A message to the runner.
 #[derive(Debug, Serialize, Deserialize)]
 #[serde(tag = "type", rename_all = "snake_case")]
@@ -79,6 +86,10 @@ pub enum Outgoing {
     Observation {
         case_id: String,
         results: Vec<PathResult>,
+        /// The case's API paths this worker did not run, with the reason (an extension of
+        /// PROTOCOL.md; readers that do not know it ignore it).
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        skipped: Vec<PathSkip>,
     },
     Skip {
         case_id: String,

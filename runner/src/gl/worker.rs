@@ -247,7 +247,11 @@ impl Worker {
 
 fn answer_message(case_id: String, a: Answer) -> Outgoing {
     match a {
-        Answer::Observation(results) => Outgoing::Observation { case_id, results },
+        Answer::Observation(results, skipped) => Outgoing::Observation {
+            case_id,
+            results,
+            skipped,
+        },
         Answer::Skip(reason) => Outgoing::Skip { case_id, reason },
         Answer::Error(message) => Outgoing::Error { case_id, message },
     }
