@@ -50,6 +50,9 @@ fn quick_json_has_every_row_with_positive_finite_values() {
         positive(&rep, "gl_e2e_cases_per_s", Some(llvmpipe));
         positive(&rep, "gl_e2e_steady_cases_per_s", Some(llvmpipe));
         positive(&rep, "gl_e2e_warm_cases_per_s", Some(llvmpipe));
+        positive(&rep, "gl_e2e_cached_cases_per_s", Some(llvmpipe));
+        positive(&rep, "suite_wall_cached_s", Some("llvmpipe"));
+        positive(&rep, "suite_total_wall_cached_s", None);
         positive(&rep, "gl_e2e_over_floor", Some(llvmpipe));
         positive(&rep, "suite_wall_s", Some("llvmpipe"));
         positive(&rep, "suite_peak_rss_mib", Some("llvmpipe"));

@@ -20,10 +20,13 @@ fn label(id: &str) -> &'static str {
         GL_E2E => "GL end to end, 2D NEAREST",
         GL_E2E_STEADY => "GL end to end, no load / worker start",
         GL_E2E_WARM => "GL end to end, warm (2nd pass, same worker)",
+        GL_E2E_CACHED => "GL end to end, new worker, shader cache filled",
         GL_RATIO => "GL end to end / floor",
         SUITE_WALL => "default suite: wall",
         SUITE_RSS => "default suite: peak RSS",
         SUITE_TOTAL => "default suite: llvmpipe + softpipe + zink",
+        SUITE_WALL_CACHED => "default suite: wall, shader cache filled",
+        SUITE_TOTAL_CACHED => "default suite: llvmpipe + softpipe + zink, cache filled",
         _ => "",
     }
 }

@@ -124,10 +124,13 @@ pub mod ids {
     pub const GL_E2E: &str = "gl_e2e_cases_per_s";
     pub const GL_E2E_STEADY: &str = "gl_e2e_steady_cases_per_s";
     pub const GL_E2E_WARM: &str = "gl_e2e_warm_cases_per_s";
+    pub const GL_E2E_CACHED: &str = "gl_e2e_cached_cases_per_s";
     pub const GL_RATIO: &str = "gl_e2e_over_floor";
     pub const SUITE_WALL: &str = "suite_wall_s";
     pub const SUITE_RSS: &str = "suite_peak_rss_mib";
     pub const SUITE_TOTAL: &str = "suite_total_wall_s";
+    pub const SUITE_WALL_CACHED: &str = "suite_wall_cached_s";
+    pub const SUITE_TOTAL_CACHED: &str = "suite_total_wall_cached_s";
 }
 
 /// Targets of issue 6.

@@ -11,6 +11,42 @@ use std::path::{Path, PathBuf};
 use std::process::Stdio;
 use std::time::Instant;
 
+/// A fresh, empty Mesa on-disk shader cache for the GL children started while it lives
+/// (`MESA_SHADER_CACHE_DIR` set in this process's environment, which workers inherit;
+/// `MESA_SHADER_CACHE_DISABLE` removed). llvmpipe and zink compile one shader variant per sampler
+/// state, so cold and cached runs differ by an order of magnitude: the bench measures both.
+/// Environment changes are process-wide: the bench is single-threaded while one exists.
+pub struct ShaderCache {
+    dir: PathBuf,
+    old_dir: Option<std::ffi::OsString>,
+    old_disable: Option<std::ffi::OsString>,
+}
+
+impl ShaderCache {
+    pub fn fresh(label: &str) -> Result<ShaderCache, String> {
+        let dir = std::env::temp_dir().join(format!("shadowcheck-bench-cache-{}-{label}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
+        let c = ShaderCache { dir, old_dir: std::env::var_os("MESA_SHADER_CACHE_DIR"), old_disable: std::env::var_os("MESA_SHADER_CACHE_DISABLE") };
+        std::env::set_var("MESA_SHADER_CACHE_DIR", &c.dir);
+        std::env::remove_var("MESA_SHADER_CACHE_DISABLE");
+        Ok(c)
+    }
+}
+
+impl Drop for ShaderCache {
+    fn drop(&mut self) {
+        match &self.old_dir {
+            Some(v) => std::env::set_var("MESA_SHADER_CACHE_DIR", v),
+            None => std::env::remove_var("MESA_SHADER_CACHE_DIR"),
+        }
+        if let Some(v) = &self.old_disable {
+            std::env::set_var("MESA_SHADER_CACHE_DISABLE", v);
+        }
+        let _ = std::fs::remove_dir_all(&self.dir);
+    }
+}
+
 /// One end-to-end run of a backend over a set of fixtures.
 #[derive(Debug, Clone, PartialEq)]
 pub struct E2e {
@@ -30,6 +66,9 @@ pub struct E2e {
     /// A second pass over the same cases on the same worker: the driver's shader variants and the
     /// worker's programs are compiled, the fixtures loaded.
     pub warm_run_s: f64,
+    /// A third pass on a new worker whose on-disk shader cache the first pass filled (worker
+    /// start included).
+    pub cached_s: f64,
 }
 
 impl E2e {
@@ -44,6 +83,9 @@ impl E2e {
     }
     pub fn warm_per_s(&self) -> f64 {
         self.verified as f64 / self.warm_run_s
+    }
+    pub fn cached_per_s(&self) -> f64 {
+        self.verified as f64 / self.cached_s
     }
 }
 
@@ -60,8 +102,10 @@ pub fn nearest_2d_fixtures(root: &Path) -> Vec<PathBuf> {
     v
 }
 
-/// Runs `backend` over `fixtures` in this process with no reporters and no flake re-runs.
+/// Runs `backend` over `fixtures` in this process with no reporters and no flake re-runs: cold
+/// (empty shader cache), warm (same worker again), cached (new worker, filled cache).
 pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
+    let cache = ShaderCache::fresh("e2e")?;
     let t0 = Instant::now();
     let set = run::load_cases(fixtures);
     let load_s = t0.elapsed().as_secs_f64();
@@ -78,6 +122,12 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
     let _ = run::run_backend(b.as_mut(), &set, &Prior::default(), &Settings::default(), &mut Fanout::default());
     let warm_run_s = t3.elapsed().as_secs_f64();
     drop(b);
+    let t4 = Instant::now();
+    let mut b = backend::open(backend_name, &Options::default()).map_err(|e| e.to_string())?;
+    let _ = run::run_backend(b.as_mut(), &set, &Prior::default(), &Settings::default(), &mut Fanout::default());
+    drop(b);
+    let cached_s = t4.elapsed().as_secs_f64();
+    drop(cache);
     let verified = results.iter().filter(|r| matches!(r.outcome, Outcome::Pass | Outcome::Warn | Outcome::Fail)).count();
     let skipped = results.iter().filter(|r| r.outcome == Outcome::Skip).count();
     if verified == 0 {
@@ -93,6 +143,7 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
         backend_s: timing.backend_s,
         verdict_s: timing.verdict_s,
         warm_run_s,
+        cached_s,
     })
 }
 
