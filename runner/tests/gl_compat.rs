@@ -214,45 +214,60 @@ fn fixed_function_1d_uses_texture_coordinate_r_as_the_reference() {
 }
 
 #[test]
-fn fixed_function_skips_what_it_cannot_realize_and_says_why() {
-    for b in backends("compat", false).into_iter().take(1) {
+fn fixed_function_realizes_lod_and_bias_and_says_why_it_skips() {
+    for b in backends("compat", true) {
         let Some(mut s) = Session::start(&b) else {
             continue;
         };
-        let c = mip_case(
-            "mip/lod=1",
-            Spec::Gl46,
-            &[ApiPath::FixedFunction],
-            Target::T2d,
-            1.0,
-            0.0,
-        );
-        let a = s.run(&[c]);
-        assert_eq!(a[0]["type"], "skip", "{}", a[0]);
-        assert!(
-            a[0]["reason"].as_str().unwrap().contains("lambda"),
-            "{}",
-            a[0]
-        );
-        // With another path that can run, the observation says why `ff` is missing.
-        let c = mip_case(
-            "mip/lod=1/two",
+        // NEAREST_MIPMAP_NEAREST picks level nearest(lambda) (§8.14.3): only level 1 holds 1.0.
+        // Fixed-function gets lambda from coordinates varying across the pixel quad and the shader
+        // bias from the texture unit's TEXTURE_LOD_BIAS.
+        let mut cs = Vec::new();
+        let mut want = Vec::new();
+        for (lod, bias, r) in [
+            (0.0, 0.0, 0.0),
+            (1.0, 0.0, 1.0),
+            (2.0, 0.0, 0.0),
+            (0.0, 1.0, 1.0),
+            (2.0, -1.0, 1.0),
+        ] {
+            cs.push(mip_case(
+                &format!("mip/lod={lod}/bias={bias}"),
+                Spec::Gl46,
+                &[ApiPath::FixedFunction],
+                Target::T2d,
+                lod,
+                bias,
+            ));
+            want.push(r);
+        }
+        // No fixed-function shadow lookup on a cube map (ARB_shadow covers 1D and 2D targets).
+        cs.push(d16_case(
+            "cube",
             Spec::Gl46,
             &[ApiPath::FixedFunction, ApiPath::Glsl130],
-            Target::T2d,
-            1.0,
-            0.0,
-        );
-        let a = s.run(&[c]);
-        assert_eq!(Session::rgba(&a[0], ApiPath::Glsl130)[0], 1.0, "{}", a[0]);
-        assert_eq!(a[0]["skipped"][0]["api"], "ff", "{}", a[0]);
+            Target::Cube,
+            32768,
+            0.1,
+        ));
+        let a = s.run(&cs);
+        for ((c, r), a) in cs.iter().zip(want).zip(&a) {
+            assert_eq!(
+                Session::rgba(a, ApiPath::FixedFunction),
+                [r, r, r, 1.0],
+                "{b} {}: {a}",
+                c.id
+            );
+        }
+        let cube = &a[5];
+        assert_eq!(Session::rgba(cube, ApiPath::Glsl130)[0], 1.0, "{b}: {cube}");
+        assert_eq!(cube["skipped"][0]["api"], "ff", "{b}: {cube}");
         assert!(
-            a[0]["skipped"][0]["reason"]
+            cube["skipped"][0]["reason"]
                 .as_str()
                 .unwrap()
-                .contains("lambda"),
-            "{}",
-            a[0]
+                .contains("cube"),
+            "{b}: {cube}"
         );
     }
 }

@@ -343,8 +343,32 @@ impl Renderer {
                     Target::Cube => [plan.p[0], plan.p[1], plan.p[2], 1.0],
                     _ => plan.p,
                 };
-                l.tex_coord4f(tc);
-                l.fullscreen_triangle();
+                if let LodForm::Implicit(bias) = plan.key.form {
+                    // Vertex (X, Y) in NDC lies (X/2, Y/2) pixels from the pixel centre (1x1
+                    // viewport): the coordinate there is tc + X/2 * dx + Y/2 * dy.
+                    let b = if bias { plan.x } else { 0.0 };
+                    l.tex_envf(
+                        legacy::GL_TEXTURE_FILTER_CONTROL,
+                        legacy::GL_TEXTURE_LOD_BIAS,
+                        b,
+                    );
+                    let at = |ox: f32, oy: f32| -> [f32; 4] {
+                        let mut v = tc;
+                        for (i, c) in v.iter_mut().enumerate() {
+                            *c += ox * plan.dx[i] + oy * plan.dy[i];
+                        }
+                        v
+                    };
+                    l.triangle_with_tex_coords([at(-0.5, -0.5), at(1.5, -0.5), at(-0.5, 1.5)]);
+                    l.tex_envf(
+                        legacy::GL_TEXTURE_FILTER_CONTROL,
+                        legacy::GL_TEXTURE_LOD_BIAS,
+                        0.0,
+                    );
+                } else {
+                    l.tex_coord4f(tc);
+                    l.fullscreen_triangle();
+                }
                 gl.disable(enable);
             }
             Some(Err(e)) => return Err(e.clone()),

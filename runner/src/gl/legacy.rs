@@ -100,6 +100,20 @@ impl Legacy {
         (self.end)();
     }
 
+    /// The full-viewport triangle with one texture coordinate per vertex (corners (-1,-1), (3,-1),
+    /// (-1,3) in NDC).
+    ///
+    /// # Safety
+    /// A compatibility context must be current.
+    pub unsafe fn triangle_with_tex_coords(&self, tc: [[f32; 4]; 3]) {
+        (self.begin)(GL_TRIANGLES);
+        for (v, (x, y)) in tc.iter().zip([(-1.0, -1.0), (3.0, -1.0), (-1.0, 3.0)]) {
+            (self.tex_coord4f)(v[0], v[1], v[2], v[3]);
+            (self.vertex2f)(x, y);
+        }
+        (self.end)();
+    }
+
     /// # Safety
     /// A compatibility context must be current.
     pub unsafe fn tex_coord4f(&self, v: [f32; 4]) {

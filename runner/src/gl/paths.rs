@@ -197,7 +197,7 @@ pub fn available(
     }
     match d {
         Dialect::Ff => {
-            form == LodForm::Constant
+            matches!(form, LodForm::Constant | LodForm::Implicit(_))
                 && (matches!(target, T1d | T2d | Rect)
                     || (kind != SamplerKind::Shadow && target == Cube))
         }
@@ -312,12 +312,18 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
                 }
             )
         })?;
-    if form == LodForm::Constant && !constant_coords_equivalent(case) {
-        return Err(format!(
-            "fixed-function texturing cannot realize lambda_base={} bias={} exactly (constant coordinates give lambda=min_lod)",
-            l.lod, l.bias
-        ));
-    }
+    // Fixed-function: constant coordinates are exact but give lambda_base = -inf; where that
+    // changes the filter or level, the coordinates vary across the pixel quad instead (by the
+    // gradients, interpolated by the rasterizer) and the shader bias goes to the texture unit's
+    // TEXTURE_LOD_BIAS (GL 4.6 compatibility §8.14.1: bias_texunit + bias_shader).
+    let (form, how) = if form == LodForm::Constant && !constant_coords_equivalent(case) {
+        (
+            LodForm::Implicit(bias != 0.0),
+            "fixed-function, coordinates varying 2^lod texels per pixel (interpolated), bias via TEXTURE_LOD_BIAS",
+        )
+    } else {
+        (form, how)
+    };
     let key = ShaderKey {
         path,
         target: t,
@@ -561,14 +567,25 @@ mod tests {
     }
 
     #[test]
-    fn fixed_function_skips_when_lambda_would_matter() {
+    fn fixed_function_keeps_exact_coordinates_unless_lambda_matters() {
         let mut c = case(Target::T2d, 4, 4, 1);
         c.api = vec![ApiPath::FixedFunction];
-        assert!(plan(ApiPath::FixedFunction, &c).is_ok());
+        assert_eq!(
+            plan(ApiPath::FixedFunction, &c).unwrap().key.form,
+            LodForm::Constant
+        );
         c.sampler.min_filter = Filter::LinearMipmapLinear;
         c.lookup.lod = 1.0;
+        c.lookup.bias = 0.5;
+        let p = plan(ApiPath::FixedFunction, &c).unwrap();
+        // lambda_base = 1 from gradients of 2 texels per pixel; the bias goes to the texture unit.
+        assert_eq!(
+            (p.key.form, p.x, p.dx[0] * 4.0),
+            (LodForm::Implicit(true), 0.5, 2.0)
+        );
+        c.texture.target = Target::Cube;
         assert!(plan(ApiPath::FixedFunction, &c)
             .unwrap_err()
-            .contains("lambda"));
+            .contains("cube"));
     }
 }
