@@ -231,11 +231,21 @@ pub fn render(input: &ReportInput, geo: &Geometry, opts: &Options) -> String {
     let _ = writeln!(o, "<h1>{}</h1>", esc(&opts.title));
     let _ = writeln!(
         o,
-        "<p class=\"note\">shadowcheck {} · {} tests on {} backends · from {}</p>",
+        "<div class=\"note\">shadowcheck {} · {} tests on {} backends · from {}</div>",
         env!("CARGO_PKG_VERSION"),
         input.results.len(),
         input.backends.len(),
-        esc(&input.sources.join(", "))
+        if input.sources.len() <= 2 {
+            esc(&input.sources.join(", "))
+        } else {
+            // Many inputs: a count, and the list folded away.
+            let items: Vec<String> = input
+                .sources
+                .iter()
+                .map(|s| format!("<li>{}</li>", esc(s)))
+                .collect();
+            format!("<details style=\"display:inline\"><summary>{} inputs</summary><ul>{}</ul></details>", input.sources.len(), items.join(""))
+        }
     );
     o.push_str("<nav><a href=\"#s-summary\">Summary</a><a href=\"#s-matrix\">Matrix</a><a href=\"#s-pictures\">Pictures</a><a href=\"#s-details\">Details</a></nav>\n");
 
