@@ -10,11 +10,21 @@ fn positive(rep: &serde_json::Value, id: &str, backend: Option<&str>) -> f64 {
         .iter()
         .find(|r| r["id"] == id && r["backend"].as_str() == backend)
         .unwrap_or_else(|| panic!("no row {id} {backend:?} in {rep:#}"));
-    let v = row["value"].as_f64().unwrap_or_else(|| panic!("{id}: value is not a number: {row}"));
+    let v = row["value"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{id}: value is not a number: {row}"));
     assert!(v.is_finite() && v > 0.0, "{id} {backend:?}: {v}");
     if let Some(t) = row.get("target").filter(|t| !t.is_null()) {
-        assert!(row["met"].is_boolean(), "a row with a target says whether it was met: {row}");
-        assert!(t["bound"].as_f64().is_some_and(|b| b.is_finite() && b > 0.0), "{row}");
+        assert!(
+            row["met"].is_boolean(),
+            "a row with a target says whether it was met: {row}"
+        );
+        assert!(
+            t["bound"]
+                .as_f64()
+                .is_some_and(|b| b.is_finite() && b > 0.0),
+            "{row}"
+        );
     }
     v
 }
@@ -27,8 +37,14 @@ fn quick_json_has_every_row_with_positive_finite_values() {
         .current_dir(&root)
         .output()
         .expect("run shadowcheck bench");
-    assert!(out.status.success(), "exit {}: {}", out.status, String::from_utf8_lossy(&out.stderr));
-    let rep: serde_json::Value = serde_json::from_slice(&out.stdout).expect("bench --json prints one JSON document");
+    assert!(
+        out.status.success(),
+        "exit {}: {}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rep: serde_json::Value =
+        serde_json::from_slice(&out.stdout).expect("bench --json prints one JSON document");
     assert_eq!(rep["schema"], 1);
     assert_eq!(rep["quick"], true);
     assert!(rep["machine"]["nproc"].as_u64().is_some_and(|n| n >= 1));
@@ -43,7 +59,11 @@ fn quick_json_has_every_row_with_positive_finite_values() {
 
     // GL rows exist exactly when the driver could be used; otherwise the report says why.
     let llvmpipe = "egl:llvmpipe:core";
-    let gl_ran = rep["rows"].as_array().unwrap().iter().any(|r| r["id"] == "gl_floor_lookups_per_s" && r["backend"] == llvmpipe);
+    let gl_ran = rep["rows"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|r| r["id"] == "gl_floor_lookups_per_s" && r["backend"] == llvmpipe);
     if gl_ran {
         positive(&rep, "gl_floor_lookups_per_s", Some(llvmpipe));
         positive(&rep, "gl_floor_lookups_per_s_1thread", Some(llvmpipe));
@@ -58,7 +78,12 @@ fn quick_json_has_every_row_with_positive_finite_values() {
         positive(&rep, "suite_peak_rss_mib", Some("llvmpipe"));
         positive(&rep, "suite_total_wall_s", None);
         // soft is compared with llvmpipe's single-thread rate.
-        let soft = rep["rows"].as_array().unwrap().iter().find(|r| r["id"] == "soft_lookups_per_s").unwrap();
+        let soft = rep["rows"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["id"] == "soft_lookups_per_s")
+            .unwrap();
         assert!(soft["target"]["bound"].as_f64().is_some(), "{soft}");
     } else {
         let why = rep["unavailable"].as_array().expect("unavailable");

@@ -25,7 +25,16 @@ pub fn repeat_for(min: Duration, mut f: impl FnMut()) -> (u64, f64) {
 /// strict interval) placed per the expectation's layout; `None` without a layout.
 pub fn exact_rgba(e: &Expectation, api: ApiPath) -> Option<[f64; 4]> {
     let layout = e.layout.get(&api)?;
-    let r = e.spec_value.or_else(|| e.accept.values().next().and_then(|a| a.0.first()).map(|i| (i.lo + i.hi) / 2.0)).unwrap_or(0.0);
+    let r = e
+        .spec_value
+        .or_else(|| {
+            e.accept
+                .values()
+                .next()
+                .and_then(|a| a.0.first())
+                .map(|i| (i.lo + i.hi) / 2.0)
+        })
+        .unwrap_or(0.0);
     Some(layout.map(|c| match c {
         Channel::R => r,
         Channel::Zero | Channel::Unused => 0.0,
@@ -67,7 +76,11 @@ pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Row> {
     let judged: Vec<(&Expectation, ApiPath, [f64; 4])> = cases
         .iter()
         .filter_map(|c| c.expect.as_ref().map(|e| (c, e)))
-        .flat_map(|(c, e)| c.api.iter().filter_map(move |&api| exact_rgba(e, api).map(|rgba| (e, api, rgba))))
+        .flat_map(|(c, e)| {
+            c.api
+                .iter()
+                .filter_map(move |&api| exact_rgba(e, api).map(|rgba| (e, api, rgba)))
+        })
         .collect();
     if !judged.is_empty() {
         let (passes, secs) = repeat_for(min, || {
@@ -93,8 +106,12 @@ pub const BENCH_TEXTURE: u32 = 64;
 /// LEQUAL, REPEAT) with NEAREST (the figure compared with llvmpipe) and LINEAR (PCF, 4 texels).
 pub fn soft_rows(lookups: usize, min: Duration) -> Result<Vec<Row>, String> {
     let mut rows = Vec::new();
-    for (id, filter) in [(ids::SOFT_LOOKUPS, Filter::Nearest), (ids::SOFT_LOOKUPS_LINEAR, Filter::Linear)] {
-        let w = Workload::new(Spec::Gl46, BENCH_TEXTURE, filter, lookups).map_err(|e| e.to_string())?;
+    for (id, filter) in [
+        (ids::SOFT_LOOKUPS, Filter::Nearest),
+        (ids::SOFT_LOOKUPS_LINEAR, Filter::Linear),
+    ] {
+        let w =
+            Workload::new(Spec::Gl46, BENCH_TEXTURE, filter, lookups).map_err(|e| e.to_string())?;
         let mut sum = 0.0;
         let (passes, secs) = repeat_for(min, || sum += black_box(&w).run());
         black_box(sum);
@@ -124,11 +141,23 @@ mod tests {
         accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
         accept.insert(Profile::Lenient, Acceptance(vec![Interval::point(1.0)]));
         let mut layout = BTreeMap::new();
-        layout.insert(ApiPath::GlslCore, [Channel::R, Channel::Zero, Channel::Zero, Channel::One]);
-        let e = Expectation { spec_value: Some(1.0), accept, layout, implementation_defined: None, citations: vec![] };
+        layout.insert(
+            ApiPath::GlslCore,
+            [Channel::R, Channel::Zero, Channel::Zero, Channel::One],
+        );
+        let e = Expectation {
+            spec_value: Some(1.0),
+            accept,
+            layout,
+            implementation_defined: None,
+            citations: vec![],
+        };
         let rgba = exact_rgba(&e, ApiPath::GlslCore).unwrap();
         assert_eq!(rgba, [1.0, 0.0, 0.0, 1.0]);
-        assert_eq!(e.judge(ApiPath::GlslCore, rgba), Some(shadowcheck_model::Judgement::Strict));
+        assert_eq!(
+            e.judge(ApiPath::GlslCore, rgba),
+            Some(shadowcheck_model::Judgement::Strict)
+        );
         assert!(exact_rgba(&e, ApiPath::Es300).is_none());
     }
 }

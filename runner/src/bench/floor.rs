@@ -36,7 +36,15 @@ pub struct FloorResult {
 
 impl FloorResult {
     fn err(e: impl std::fmt::Display) -> FloorResult {
-        FloorResult { ok: false, error: Some(e.to_string()), lookups: 0, seconds: 0.0, draws: 0, renderer: String::new(), version: String::new() }
+        FloorResult {
+            ok: false,
+            error: Some(e.to_string()),
+            lookups: 0,
+            seconds: 0.0,
+            draws: 0,
+            renderer: String::new(),
+            version: String::new(),
+        }
     }
     pub fn per_s(&self) -> f64 {
         self.lookups as f64 / self.seconds
@@ -47,7 +55,9 @@ fn header(api: ContextApi) -> &'static str {
     match api {
         ContextApi::Core => "#version 330 core\n",
         ContextApi::Compat => "#version 130\n",
-        ContextApi::Es3 | ContextApi::Es2 => "#version 300 es\nprecision highp float;\nprecision highp int;\n",
+        ContextApi::Es3 | ContextApi::Es2 => {
+            "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+        }
     }
 }
 
@@ -88,12 +98,18 @@ pub fn measure(name: BackendName, size: i32, min: Duration) -> FloorResult {
 
 unsafe fn compile(gl: &glow::Context, api: ContextApi) -> Result<glow::Program, String> {
     let program = gl.create_program()?;
-    for (ty, src) in [(glow::VERTEX_SHADER, vertex_source(api)), (glow::FRAGMENT_SHADER, fragment_source(api))] {
+    for (ty, src) in [
+        (glow::VERTEX_SHADER, vertex_source(api)),
+        (glow::FRAGMENT_SHADER, fragment_source(api)),
+    ] {
         let sh = gl.create_shader(ty)?;
         gl.shader_source(sh, &src);
         gl.compile_shader(sh);
         if !gl.get_shader_compile_status(sh) {
-            return Err(format!("shader compile failed: {}\n{src}", gl.get_shader_info_log(sh)));
+            return Err(format!(
+                "shader compile failed: {}\n{src}",
+                gl.get_shader_info_log(sh)
+            ));
         }
         gl.attach_shader(program, sh);
         gl.delete_shader(sh);
@@ -105,7 +121,12 @@ unsafe fn compile(gl: &glow::Context, api: ContextApi) -> Result<glow::Program, 
     Ok(program)
 }
 
-unsafe fn draw_loop(gl: &glow::Context, name: BackendName, size: i32, min: Duration) -> Result<FloorResult, String> {
+unsafe fn draw_loop(
+    gl: &glow::Context,
+    name: BackendName,
+    size: i32,
+    min: Duration,
+) -> Result<FloorResult, String> {
     let renderer = gl.get_parameter_string(glow::RENDERER);
     let version = gl.get_parameter_string(glow::VERSION);
     if !renderer.to_lowercase().contains(name.driver.key()) {
@@ -114,12 +135,36 @@ unsafe fn draw_loop(gl: &glow::Context, name: BackendName, size: i32, min: Durat
     // Framebuffer: RGBA32F like the worker's result buffer.
     let color = gl.create_texture()?;
     gl.bind_texture(glow::TEXTURE_2D, Some(color));
-    gl.tex_image_2d(glow::TEXTURE_2D, 0, glow::RGBA32F as i32, size, size, 0, glow::RGBA, glow::FLOAT, glow::PixelUnpackData::Slice(None));
-    gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
-    gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
+    gl.tex_image_2d(
+        glow::TEXTURE_2D,
+        0,
+        glow::RGBA32F as i32,
+        size,
+        size,
+        0,
+        glow::RGBA,
+        glow::FLOAT,
+        glow::PixelUnpackData::Slice(None),
+    );
+    gl.tex_parameter_i32(
+        glow::TEXTURE_2D,
+        glow::TEXTURE_MIN_FILTER,
+        glow::NEAREST as i32,
+    );
+    gl.tex_parameter_i32(
+        glow::TEXTURE_2D,
+        glow::TEXTURE_MAG_FILTER,
+        glow::NEAREST as i32,
+    );
     let fbo = gl.create_framebuffer()?;
     gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-    gl.framebuffer_texture_2d(glow::FRAMEBUFFER, glow::COLOR_ATTACHMENT0, glow::TEXTURE_2D, Some(color), 0);
+    gl.framebuffer_texture_2d(
+        glow::FRAMEBUFFER,
+        glow::COLOR_ATTACHMENT0,
+        glow::TEXTURE_2D,
+        Some(color),
+        0,
+    );
     let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
     if status != glow::FRAMEBUFFER_COMPLETE {
         return Err(format!("RGBA32F framebuffer incomplete (0x{status:04X})"));
@@ -139,7 +184,17 @@ unsafe fn draw_loop(gl: &glow::Context, name: BackendName, size: i32, min: Durat
     gl.active_texture(glow::TEXTURE0);
     gl.bind_texture(glow::TEXTURE_2D, Some(depth));
     gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
-    gl.tex_image_2d(glow::TEXTURE_2D, 0, glow::DEPTH_COMPONENT24 as i32, n, n, 0, glow::DEPTH_COMPONENT, glow::UNSIGNED_INT, glow::PixelUnpackData::Slice(Some(&texels)));
+    gl.tex_image_2d(
+        glow::TEXTURE_2D,
+        0,
+        glow::DEPTH_COMPONENT24 as i32,
+        n,
+        n,
+        0,
+        glow::DEPTH_COMPONENT,
+        glow::UNSIGNED_INT,
+        glow::PixelUnpackData::Slice(Some(&texels)),
+    );
     for (p, v) in [
         (glow::TEXTURE_MIN_FILTER, glow::NEAREST),
         (glow::TEXTURE_MAG_FILTER, glow::NEAREST),
@@ -178,39 +233,77 @@ unsafe fn draw_loop(gl: &glow::Context, name: BackendName, size: i32, min: Durat
     }
     let seconds = t0.elapsed().as_secs_f64();
     let mut px = [0u8; 16];
-    gl.read_pixels(size / 2, size / 2, 1, 1, glow::RGBA, glow::FLOAT, glow::PixelPackData::Slice(Some(&mut px)));
+    gl.read_pixels(
+        size / 2,
+        size / 2,
+        1,
+        1,
+        glow::RGBA,
+        glow::FLOAT,
+        glow::PixelPackData::Slice(Some(&mut px)),
+    );
     let r = f32::from_ne_bytes([px[0], px[1], px[2], px[3]]);
     if r != 0.0 && r != 1.0 {
-        return Err(format!("a NEAREST shadow lookup returned {r}, not 0 or 1: the draw did not run as intended"));
+        return Err(format!(
+            "a NEAREST shadow lookup returned {r}, not 0 or 1: the draw did not run as intended"
+        ));
     }
     let err = gl.get_error();
     if err != glow::NO_ERROR {
         return Err(format!("GL error 0x{err:04X} while drawing"));
     }
-    Ok(FloorResult { ok: true, error: None, lookups: draws as u64 * (size as u64 * size as u64), seconds, draws, renderer, version })
+    Ok(FloorResult {
+        ok: true,
+        error: None,
+        lookups: draws as u64 * (size as u64 * size as u64),
+        seconds,
+        draws,
+        renderer,
+        version,
+    })
 }
 
 /// Parent side: run the floor child for `backend` with its driver environment plus `extra_env`.
-pub fn run_child(backend: &str, size: i32, min: Duration, extra_env: &[(&str, &str)]) -> FloorResult {
+pub fn run_child(
+    backend: &str,
+    size: i32,
+    min: Duration,
+    extra_env: &[(&str, &str)],
+) -> FloorResult {
     let wc = match crate::gl::worker_command(backend) {
         Ok(w) => w,
         Err(e) => return FloorResult::err(e),
     };
     let mut c = std::process::Command::new(&wc.program);
-    c.args(["bench", "--floor-child", backend, "--floor-size", &size.to_string(), "--floor-seconds", &min.as_secs_f64().to_string()]);
+    c.args([
+        "bench",
+        "--floor-child",
+        backend,
+        "--floor-size",
+        &size.to_string(),
+        "--floor-seconds",
+        &min.as_secs_f64().to_string(),
+    ]);
     for (k, v) in &wc.env {
         c.env(k, v);
     }
     for (k, v) in extra_env {
         c.env(k, v);
     }
-    c.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
+    c.stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
     let out = match c.output() {
         Ok(o) => o,
         Err(e) => return FloorResult::err(format!("cannot start {}: {e}", wc.program.display())),
     };
     let stdout = String::from_utf8_lossy(&out.stdout);
-    match stdout.lines().rev().find(|l| l.trim_start().starts_with('{')).map(serde_json::from_str::<FloorResult>) {
+    match stdout
+        .lines()
+        .rev()
+        .find(|l| l.trim_start().starts_with('{'))
+        .map(serde_json::from_str::<FloorResult>)
+    {
         Some(Ok(r)) => r,
         _ => {
             use std::os::unix::process::ExitStatusExt;
@@ -220,7 +313,10 @@ pub fn run_child(backend: &str, size: i32, min: Duration, extra_env: &[(&str, &s
             };
             let stderr = String::from_utf8_lossy(&out.stderr);
             let tail: Vec<&str> = stderr.lines().rev().take(3).collect();
-            FloorResult::err(format!("{how}: {}", tail.into_iter().rev().collect::<Vec<_>>().join(" | ")))
+            FloorResult::err(format!(
+                "{how}: {}",
+                tail.into_iter().rev().collect::<Vec<_>>().join(" | ")
+            ))
         }
     }
 }
@@ -232,7 +328,12 @@ mod tests {
     #[test]
     fn shaders_use_an_explicit_lod_shadow_lookup_per_context_kind() {
         let f = fragment_source(ContextApi::Es3);
-        assert!(f.starts_with("#version 300 es") && f.contains("highp sampler2DShadow") && f.contains("textureLod(u_tex, vec3(uv, dref), 0.0)"), "{f}");
+        assert!(
+            f.starts_with("#version 300 es")
+                && f.contains("highp sampler2DShadow")
+                && f.contains("textureLod(u_tex, vec3(uv, dref), 0.0)"),
+            "{f}"
+        );
         assert!(fragment_source(ContextApi::Core).starts_with("#version 330 core"));
         assert!(vertex_source(ContextApi::Compat).contains("gl_VertexID"));
     }

@@ -26,11 +26,20 @@ fn read(path: &str) -> String {
 /// `Mesa 22.3.6` from a GL_VERSION string such as `4.5 (Core Profile) Mesa 22.3.6`.
 pub fn mesa_from_gl_version(v: &str) -> Option<String> {
     let i = v.find("Mesa ")?;
-    Some(v[i..].split_whitespace().take(2).collect::<Vec<_>>().join(" "))
+    Some(
+        v[i..]
+            .split_whitespace()
+            .take(2)
+            .collect::<Vec<_>>()
+            .join(" "),
+    )
 }
 
 fn mesa_package() -> Option<String> {
-    let o = std::process::Command::new("dpkg-query").args(["-W", "-f", "${Version}", "libgl1-mesa-dri"]).output().ok()?;
+    let o = std::process::Command::new("dpkg-query")
+        .args(["-W", "-f", "${Version}", "libgl1-mesa-dri"])
+        .output()
+        .ok()?;
     let v = String::from_utf8_lossy(&o.stdout).trim().to_string();
     (o.status.success() && !v.is_empty()).then(|| format!("Mesa {v} (libgl1-mesa-dri)"))
 }
@@ -52,7 +61,12 @@ fn civil(days: i64) -> (i64, u32, u32) {
 pub fn iso8601(secs: u64) -> String {
     let (y, m, d) = civil((secs / 86_400) as i64);
     let s = secs % 86_400;
-    format!("{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z", s / 3600, s / 60 % 60, s % 60)
+    format!(
+        "{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z",
+        s / 3600,
+        s / 60 % 60,
+        s % 60
+    )
 }
 
 impl Machine {
@@ -71,10 +85,19 @@ impl Machine {
             .and_then(|l| l.split_whitespace().nth(1))
             .and_then(|k| k.parse::<u64>().ok())
             .map_or(0, |k| k / 1024);
-        let load_average = read("/proc/loadavg").split_whitespace().next().and_then(|v| v.parse().ok()).unwrap_or(0.0);
+        let load_average = read("/proc/loadavg")
+            .split_whitespace()
+            .next()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(0.0);
         let kernel = read("/proc/sys/kernel/osrelease").trim().to_string();
-        let mesa = gl_version.and_then(mesa_from_gl_version).or_else(mesa_package).unwrap_or_else(|| "unknown".into());
-        let now = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
+        let mesa = gl_version
+            .and_then(mesa_from_gl_version)
+            .or_else(mesa_package)
+            .unwrap_or_else(|| "unknown".into());
+        let now = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_secs());
         Machine {
             nproc: std::thread::available_parallelism().map_or(1, |n| n.get()),
             cpu,
@@ -101,8 +124,14 @@ mod tests {
 
     #[test]
     fn mesa_version_comes_from_gl_version() {
-        assert_eq!(mesa_from_gl_version("4.5 (Core Profile) Mesa 22.3.6").as_deref(), Some("Mesa 22.3.6"));
-        assert_eq!(mesa_from_gl_version("OpenGL ES 3.2 Mesa 22.3.6").as_deref(), Some("Mesa 22.3.6"));
+        assert_eq!(
+            mesa_from_gl_version("4.5 (Core Profile) Mesa 22.3.6").as_deref(),
+            Some("Mesa 22.3.6")
+        );
+        assert_eq!(
+            mesa_from_gl_version("OpenGL ES 3.2 Mesa 22.3.6").as_deref(),
+            Some("Mesa 22.3.6")
+        );
         assert_eq!(mesa_from_gl_version("4.6 NVIDIA"), None);
     }
 }

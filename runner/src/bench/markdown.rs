@@ -5,7 +5,8 @@
 
 use super::{fmt_num, Report, Row};
 
-pub const BEGIN: &str = "<!-- shadowcheck bench: begin (generated; text outside the markers is kept) -->";
+pub const BEGIN: &str =
+    "<!-- shadowcheck bench: begin (generated; text outside the markers is kept) -->";
 pub const END: &str = "<!-- shadowcheck bench: end -->";
 
 fn label(id: &str) -> &'static str {
@@ -36,13 +37,24 @@ fn cells(r: &Row) -> [String; 6] {
         "" => r.id.clone(),
         l => l.to_string(),
     };
-    let target = r.target.as_ref().map(|t| format!("{} ({})", t.describe(&r.unit), t.source)).unwrap_or_default();
+    let target = r
+        .target
+        .as_ref()
+        .map(|t| format!("{} ({})", t.describe(&r.unit), t.source))
+        .unwrap_or_default();
     let met = match r.met {
         Some(true) => "met",
         Some(false) => "MISSED",
         None => "",
     };
-    [name, r.backend.clone().unwrap_or_default(), fmt_num(r.value), r.unit.clone(), target, met.to_string()]
+    [
+        name,
+        r.backend.clone().unwrap_or_default(),
+        fmt_num(r.value),
+        r.unit.clone(),
+        target,
+        met.to_string(),
+    ]
 }
 
 const HEADERS: [&str; 6] = ["measure", "backend", "value", "unit", "target", ""];
@@ -74,7 +86,15 @@ pub fn text(rep: &Report) -> String {
         s += &line([&r[0], &r[1], &r[2], &r[3], &r[4], &r[5]]);
     }
     for u in &rep.unavailable {
-        s += &format!("not measured: {}{}: {}\n", u.what, u.backend.as_deref().map(|b| format!(" ({b})")).unwrap_or_default(), u.reason);
+        s += &format!(
+            "not measured: {}{}: {}\n",
+            u.what,
+            u.backend
+                .as_deref()
+                .map(|b| format!(" ({b})"))
+                .unwrap_or_default(),
+            u.reason
+        );
     }
     s
 }
@@ -100,16 +120,44 @@ pub fn block(rep: &Report) -> String {
     s += "| measure | backend | value | unit | target | |\n|---|---|--:|---|---|---|\n";
     for r in &rep.rows {
         let c = cells(r);
-        s += &format!("| {} | {} | {} | {} | {} | {} |\n", c[0], c[1], c[2], c[3], c[4], if c[5] == "MISSED" { "**MISSED**" } else { &c[5] });
+        s += &format!(
+            "| {} | {} | {} | {} | {} | {} |\n",
+            c[0],
+            c[1],
+            c[2],
+            c[3],
+            c[4],
+            if c[5] == "MISSED" {
+                "**MISSED**"
+            } else {
+                &c[5]
+            }
+        );
     }
     s += "\nHow each row was measured:\n\n";
     for r in &rep.rows {
-        s += &format!("- {}{}: {}\n", cells(r)[0], r.backend.as_deref().map(|b| format!(" ({b})")).unwrap_or_default(), r.detail);
+        s += &format!(
+            "- {}{}: {}\n",
+            cells(r)[0],
+            r.backend
+                .as_deref()
+                .map(|b| format!(" ({b})"))
+                .unwrap_or_default(),
+            r.detail
+        );
     }
     if !rep.unavailable.is_empty() {
         s += "\nNot measured:\n\n";
         for u in &rep.unavailable {
-            s += &format!("- {}{}: {}\n", u.what, u.backend.as_deref().map(|b| format!(" ({b})")).unwrap_or_default(), u.reason);
+            s += &format!(
+                "- {}{}: {}\n",
+                u.what,
+                u.backend
+                    .as_deref()
+                    .map(|b| format!(" ({b})"))
+                    .unwrap_or_default(),
+                u.reason
+            );
         }
     }
     s + "\n" + END + "\n"
@@ -126,7 +174,10 @@ pub fn document(rep: &Report, old: Option<&str>) -> String {
             }
         }
     }
-    format!("# shadowcheck bench\n\nWritten by `shadowcheck bench -o reports/BENCH.md`.\n\n{}", block(rep))
+    format!(
+        "# shadowcheck bench\n\nWritten by `shadowcheck bench -o reports/BENCH.md`.\n\n{}",
+        block(rep)
+    )
 }
 
 #[cfg(test)]
@@ -138,8 +189,23 @@ mod tests {
         Report {
             schema: 1,
             quick: true,
-            machine: Machine { nproc: 2, cpu: "cpu".into(), memory_mib: 1, mesa: "Mesa 1".into(), load_average: 0.5, kernel: "6".into(), date: "d".into() },
-            rows: vec![Row::new(super::super::ids::ORACLE_VERDICTS, None, 2.0e6, "verdicts/s/core", "how".into()).with_target(Target::new(Goal::AtLeast, 5e7, "issue 6"))],
+            machine: Machine {
+                nproc: 2,
+                cpu: "cpu".into(),
+                memory_mib: 1,
+                mesa: "Mesa 1".into(),
+                load_average: 0.5,
+                kernel: "6".into(),
+                date: "d".into(),
+            },
+            rows: vec![Row::new(
+                super::super::ids::ORACLE_VERDICTS,
+                None,
+                2.0e6,
+                "verdicts/s/core",
+                "how".into(),
+            )
+            .with_target(Target::new(Goal::AtLeast, 5e7, "issue 6"))],
             unavailable: vec![],
         }
     }
@@ -149,9 +215,13 @@ mod tests {
         let rep = report();
         let doc = document(&rep, None);
         assert!(doc.contains("| oracle: evaluate + judge |  | 2.00M | verdicts/s/core | >= 50.0M verdicts/s/core (issue 6) | **MISSED** |"), "{doc}");
-        let edited = doc.replace("# shadowcheck bench\n", "# shadowcheck bench\n\nintro\n") + "\n## Profiles\nkept\n";
+        let edited = doc.replace("# shadowcheck bench\n", "# shadowcheck bench\n\nintro\n")
+            + "\n## Profiles\nkept\n";
         let again = document(&rep, Some(&edited));
-        assert!(again.contains("intro") && again.ends_with("## Profiles\nkept\n"), "{again}");
+        assert!(
+            again.contains("intro") && again.ends_with("## Profiles\nkept\n"),
+            "{again}"
+        );
         assert_eq!(again.matches(BEGIN).count(), 1);
     }
 

@@ -42,7 +42,11 @@ pub struct Target {
 
 impl Target {
     pub fn new(goal: Goal, bound: f64, source: &str) -> Target {
-        Target { goal, bound, source: source.to_string() }
+        Target {
+            goal,
+            bound,
+            source: source.to_string(),
+        }
     }
     pub fn met(&self, value: f64) -> bool {
         match self.goal {
@@ -80,7 +84,15 @@ pub struct Row {
 
 impl Row {
     pub fn new(id: &str, backend: Option<&str>, value: f64, unit: &str, detail: String) -> Row {
-        Row { id: id.to_string(), backend: backend.map(str::to_string), value, unit: unit.to_string(), target: None, met: None, detail }
+        Row {
+            id: id.to_string(),
+            backend: backend.map(str::to_string),
+            value,
+            unit: unit.to_string(),
+            target: None,
+            met: None,
+            detail,
+        }
     }
     pub fn with_target(mut self, t: Target) -> Row {
         self.met = Some(t.met(self.value));
@@ -109,7 +121,9 @@ pub struct Report {
 
 impl Report {
     pub fn row(&self, id: &str, backend: Option<&str>) -> Option<&Row> {
-        self.rows.iter().find(|r| r.id == id && r.backend.as_deref() == backend)
+        self.rows
+            .iter()
+            .find(|r| r.id == id && r.backend.as_deref() == backend)
     }
 }
 
@@ -163,7 +177,15 @@ pub fn fmt_num(v: f64) -> String {
         (v, "")
     };
     let ax = x.abs();
-    let digits = if ax >= 100.0 { 0 } else if ax >= 10.0 { 1 } else if ax >= 1.0 { 2 } else { 3 };
+    let digits = if ax >= 100.0 {
+        0
+    } else if ax >= 10.0 {
+        1
+    } else if ax >= 1.0 {
+        2
+    } else {
+        3
+    };
     format!("{x:.digits$}{s}")
 }
 
@@ -176,7 +198,11 @@ mod tests {
         assert!(Target::new(Goal::AtLeast, 2.0, "x").met(2.0));
         assert!(!Target::new(Goal::Below, 2.0, "x").met(2.0));
         assert!(Target::new(Goal::AtMost, 2.0, "x").met(2.0));
-        let r = Row::new("a", None, 1.0, "u", String::new()).with_target(Target::new(Goal::AtLeast, 2.0, "x"));
+        let r = Row::new("a", None, 1.0, "u", String::new()).with_target(Target::new(
+            Goal::AtLeast,
+            2.0,
+            "x",
+        ));
         assert_eq!(r.met, Some(false));
     }
 

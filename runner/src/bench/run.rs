@@ -2,7 +2,9 @@
 
 use super::floor::{self, FloorResult};
 use super::suite::{self, nearest_2d_fixtures};
-use super::{cpu, ids, machine::Machine, targets, Goal, Report, Row, Target, Unavailable, SCHEMA_VERSION};
+use super::{
+    cpu, ids, machine::Machine, targets, Goal, Report, Row, Target, Unavailable, SCHEMA_VERSION,
+};
 use crate::gl::names::{BackendName, Driver};
 use std::path::PathBuf;
 use std::time::Duration;
@@ -27,7 +29,13 @@ pub fn candidates(o: &Options) -> Vec<String> {
         .into_iter()
         .filter(|b| b.static_unavailability().is_none())
         .map(|b| b.to_string())
-        .filter(|n| if o.backends.is_empty() { !o.quick || n == "egl:llvmpipe:core" } else { o.backends.iter().any(|f| n.contains(f.as_str())) })
+        .filter(|n| {
+            if o.backends.is_empty() {
+                !o.quick || n == "egl:llvmpipe:core"
+            } else {
+                o.backends.iter().any(|f| n.contains(f.as_str()))
+            }
+        })
         .collect()
 }
 
@@ -45,13 +53,23 @@ fn floor_row(id: &str, backend: &str, f: &FloorResult, extra: &str) -> Row {
         Some(backend),
         f.per_s(),
         "lookups/s",
-        format!("{} draws of {} fragments in {:.2} s{extra}; {}", f.draws, f.lookups / f.draws.max(1) as u64, f.seconds, f.renderer),
+        format!(
+            "{} draws of {} fragments in {:.2} s{extra}; {}",
+            f.draws,
+            f.lookups / f.draws.max(1) as u64,
+            f.seconds,
+            f.renderer
+        ),
     )
 }
 
 /// Runs every measurement. `progress` gets a line before each step (the library never prints).
 pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
-    let min = if o.quick { Duration::from_millis(150) } else { Duration::from_secs(2) };
+    let min = if o.quick {
+        Duration::from_millis(150)
+    } else {
+        Duration::from_secs(2)
+    };
     let mut rows = Vec::new();
     let mut unavailable = Vec::new();
     let mut gl_version = None;
@@ -64,7 +82,11 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
         cases = cases.into_iter().step_by(10).collect();
     }
     if cases.is_empty() {
-        unavailable.push(Unavailable { what: "oracle".into(), backend: None, reason: format!("no case loaded from {}", o.fixtures.display()) });
+        unavailable.push(Unavailable {
+            what: "oracle".into(),
+            backend: None,
+            reason: format!("no case loaded from {}", o.fixtures.display()),
+        });
     } else {
         progress(&format!("oracle: {} cases, one thread", cases.len()));
         rows.extend(cpu::oracle_rows(&cases, min));
@@ -74,13 +96,25 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
     progress("soft: raw lookups, one thread");
     match cpu::soft_rows(if o.quick { 1 << 16 } else { 1 << 20 }, min) {
         Ok(r) => rows.extend(r),
-        Err(e) => unavailable.push(Unavailable { what: "soft".into(), backend: None, reason: e }),
+        Err(e) => unavailable.push(Unavailable {
+            what: "soft".into(),
+            backend: None,
+            reason: e,
+        }),
     }
 
-    let floor_min = if o.quick { Duration::from_millis(100) } else { Duration::from_secs(1) };
+    let floor_min = if o.quick {
+        Duration::from_millis(100)
+    } else {
+        Duration::from_secs(1)
+    };
     let e2e_fixtures = if o.quick {
         let one = o.fixtures.join("gl46/2d/nearest.json");
-        if one.is_file() { vec![one] } else { nearest_2d_fixtures(&o.fixtures) }
+        if one.is_file() {
+            vec![one]
+        } else {
+            nearest_2d_fixtures(&o.fixtures)
+        }
     } else {
         nearest_2d_fixtures(&o.fixtures)
     };
@@ -89,7 +123,11 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
         progress(&format!("{name}: bare-draw floor"));
         let f = floor::run_child(&name, floor_size(o.quick), floor_min, &[]);
         if !f.ok {
-            unavailable.push(Unavailable { what: "gl".into(), backend: Some(name.clone()), reason: f.error.unwrap_or_default() });
+            unavailable.push(Unavailable {
+                what: "gl".into(),
+                backend: Some(name.clone()),
+                reason: f.error.unwrap_or_default(),
+            });
             continue;
         }
         gl_version.get_or_insert_with(|| f.version.clone());
@@ -105,10 +143,20 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
                 );
                 let mut r = Row::new(ids::GL_E2E, Some(&name), e.per_s(), "cases/s", detail);
                 if name.contains(":llvmpipe:") {
-                    r = r.with_target(Target::new(Goal::AtLeast, targets::LLVMPIPE_E2E_PER_S, "issue 6 (llvmpipe, 2D NEAREST)"));
+                    r = r.with_target(Target::new(
+                        Goal::AtLeast,
+                        targets::LLVMPIPE_E2E_PER_S,
+                        "issue 6 (llvmpipe, 2D NEAREST)",
+                    ));
                 }
                 rows.push(r);
-                rows.push(Row::new(ids::GL_E2E_STEADY, Some(&name), e.steady_per_s(), "cases/s", "verified tests / run time (no fixture load, no worker start)".into()));
+                rows.push(Row::new(
+                    ids::GL_E2E_STEADY,
+                    Some(&name),
+                    e.steady_per_s(),
+                    "cases/s",
+                    "verified tests / run time (no fixture load, no worker start)".into(),
+                ));
                 rows.push(Row::new(
                     ids::GL_E2E_WARM,
                     Some(&name),
@@ -124,26 +172,62 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
                     format!("a new worker with the on-disk shader cache the cold pass filled ({:.2} s incl. worker start; the cold pass starts from an empty cache)", e.cached_s),
                 ));
                 rows.push(
-                    Row::new(ids::GL_RATIO, Some(&name), e.per_s() / floor_per_s, "x", format!("end to end {:.3e} cases/s over floor {:.3e} lookups/s", e.per_s(), floor_per_s))
-                        .with_target(Target::new(Goal::AtLeast, targets::E2E_OVER_FLOOR, "issue 6")),
+                    Row::new(
+                        ids::GL_RATIO,
+                        Some(&name),
+                        e.per_s() / floor_per_s,
+                        "x",
+                        format!(
+                            "end to end {:.3e} cases/s over floor {:.3e} lookups/s",
+                            e.per_s(),
+                            floor_per_s
+                        ),
+                    )
+                    .with_target(Target::new(
+                        Goal::AtLeast,
+                        targets::E2E_OVER_FLOOR,
+                        "issue 6",
+                    )),
                 );
             }
-            Err(e) => unavailable.push(Unavailable { what: "gl end to end".into(), backend: Some(name.clone()), reason: e }),
+            Err(e) => unavailable.push(Unavailable {
+                what: "gl end to end".into(),
+                backend: Some(name.clone()),
+                reason: e,
+            }),
         }
     }
 
     // llvmpipe's single-thread lookup rate: the bar for `soft`.
     if available.iter().any(|n| n == "egl:llvmpipe:core") {
         progress("egl:llvmpipe:core: bare-draw floor with LP_NUM_THREADS=1");
-        let f = floor::run_child("egl:llvmpipe:core", floor_size(o.quick), floor_min, &[("LP_NUM_THREADS", "1")]);
+        let f = floor::run_child(
+            "egl:llvmpipe:core",
+            floor_size(o.quick),
+            floor_min,
+            &[("LP_NUM_THREADS", "1")],
+        );
         if f.ok {
             let one = f.per_s();
-            rows.push(floor_row(ids::GL_FLOOR_1T, "egl:llvmpipe:core", &f, ", LP_NUM_THREADS=1"));
+            rows.push(floor_row(
+                ids::GL_FLOOR_1T,
+                "egl:llvmpipe:core",
+                &f,
+                ", LP_NUM_THREADS=1",
+            ));
             if let Some(s) = rows.iter_mut().find(|r| r.id == ids::SOFT_LOOKUPS) {
-                *s = s.clone().with_target(Target::new(Goal::AtLeast, one, "llvmpipe floor, LP_NUM_THREADS=1"));
+                *s = s.clone().with_target(Target::new(
+                    Goal::AtLeast,
+                    one,
+                    "llvmpipe floor, LP_NUM_THREADS=1",
+                ));
             }
         } else {
-            unavailable.push(Unavailable { what: "gl floor, 1 thread".into(), backend: Some("egl:llvmpipe:core".into()), reason: f.error.unwrap_or_default() });
+            unavailable.push(Unavailable {
+                what: "gl floor, 1 thread".into(),
+                backend: Some("egl:llvmpipe:core".into()),
+                reason: f.error.unwrap_or_default(),
+            });
         }
     } else {
         unavailable.push(Unavailable {
@@ -154,12 +238,24 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
     }
 
     // The default suite per driver (quick: the 2D NEAREST fixtures).
-    let suite_fixtures = if o.quick { e2e_fixtures.clone() } else { vec![o.fixtures.clone()] };
-    let what = if o.quick { "2D NEAREST fixtures (quick)" } else { "default fixtures" };
+    let suite_fixtures = if o.quick {
+        e2e_fixtures.clone()
+    } else {
+        vec![o.fixtures.clone()]
+    };
+    let what = if o.quick {
+        "2D NEAREST fixtures (quick)"
+    } else {
+        "default fixtures"
+    };
     let out_root = std::env::temp_dir().join(format!("shadowcheck-bench-{}", std::process::id()));
     let mut groups: Vec<(String, Vec<String>)> = vec![("soft".into(), vec!["soft".into()])];
     for d in Driver::ALL {
-        let bs: Vec<String> = available.iter().filter(|n| n.split(':').nth(1) == Some(d.key())).cloned().collect();
+        let bs: Vec<String> = available
+            .iter()
+            .filter(|n| n.split(':').nth(1) == Some(d.key()))
+            .cloned()
+            .collect();
         if !bs.is_empty() {
             groups.push((d.key().to_string(), bs));
         }
@@ -168,22 +264,52 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
     let mut total_cached = 0.0;
     let mut total_drivers = Vec::new();
     for (label, bs) in groups {
-        progress(&format!("suite: {label} ({}), empty shader cache, then cached", bs.join(", ")));
+        progress(&format!(
+            "suite: {label} ({}), empty shader cache, then cached",
+            bs.join(", ")
+        ));
         let cache = match suite::ShaderCache::fresh(&label) {
             Ok(c) => c,
             Err(e) => {
-                unavailable.push(Unavailable { what: "suite".into(), backend: Some(label), reason: e });
+                unavailable.push(Unavailable {
+                    what: "suite".into(),
+                    backend: Some(label),
+                    reason: e,
+                });
                 continue;
             }
         };
         let cold = suite::suite(&o.exe, &bs, &suite_fixtures, &out_root.join(&label));
-        let cached = cold.as_ref().ok().map(|_| suite::suite(&o.exe, &bs, &suite_fixtures, &out_root.join(format!("{label}-cached"))));
+        let cached = cold.as_ref().ok().map(|_| {
+            suite::suite(
+                &o.exe,
+                &bs,
+                &suite_fixtures,
+                &out_root.join(format!("{label}-cached")),
+            )
+        });
         drop(cache);
         match (cold, cached) {
             (Ok(s), Some(Ok(c))) => {
-                let detail = format!("`shadowcheck run` over the {what}, backends {}, exit {}", bs.join(" "), s.exit_code);
-                rows.push(Row::new(ids::SUITE_WALL, Some(&label), s.wall_s, "s", format!("{detail}; empty Mesa shader cache")));
-                rows.push(Row::new(ids::SUITE_WALL_CACHED, Some(&label), c.wall_s, "s", format!("{detail}; again with the shader cache the first run filled")));
+                let detail = format!(
+                    "`shadowcheck run` over the {what}, backends {}, exit {}",
+                    bs.join(" "),
+                    s.exit_code
+                );
+                rows.push(Row::new(
+                    ids::SUITE_WALL,
+                    Some(&label),
+                    s.wall_s,
+                    "s",
+                    format!("{detail}; empty Mesa shader cache"),
+                ));
+                rows.push(Row::new(
+                    ids::SUITE_WALL_CACHED,
+                    Some(&label),
+                    c.wall_s,
+                    "s",
+                    format!("{detail}; again with the shader cache the first run filled"),
+                ));
                 rows.push(
                     Row::new(ids::SUITE_RSS, Some(&label), s.peak_rss_mib.max(c.peak_rss_mib), "MiB", format!("largest process (runner or worker) of either run, wait4 ru_maxrss; {detail}"))
                         .with_target(Target::new(Goal::AtMost, targets::PEAK_RSS_MIB, "issue 6")),
@@ -194,23 +320,46 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
                     total_drivers.push(label);
                 }
             }
-            (Err(e), _) | (_, Some(Err(e))) => unavailable.push(Unavailable { what: "suite".into(), backend: Some(label), reason: e }),
+            (Err(e), _) | (_, Some(Err(e))) => unavailable.push(Unavailable {
+                what: "suite".into(),
+                backend: Some(label),
+                reason: e,
+            }),
             (Ok(_), None) => {}
         }
     }
     let _ = std::fs::remove_dir_all(&out_root);
     if !total_drivers.is_empty() {
         let all3 = total_drivers.len() == Driver::ALL.len();
-        for (id, v, how) in [(ids::SUITE_TOTAL, total, "empty shader cache"), (ids::SUITE_TOTAL_CACHED, total_cached, "shader cache filled by the first run")] {
+        for (id, v, how) in [
+            (ids::SUITE_TOTAL, total, "empty shader cache"),
+            (
+                ids::SUITE_TOTAL_CACHED,
+                total_cached,
+                "shader cache filled by the first run",
+            ),
+        ] {
             let mut r = Row::new(
                 id,
                 None,
                 v,
                 "s",
-                format!("sum over {} ({what}, {how}){}", total_drivers.join(", "), if all3 { "" } else { "; not every driver was measured" }),
+                format!(
+                    "sum over {} ({what}, {how}){}",
+                    total_drivers.join(", "),
+                    if all3 {
+                        ""
+                    } else {
+                        "; not every driver was measured"
+                    }
+                ),
             );
             if !o.quick && all3 {
-                r = r.with_target(Target::new(Goal::Below, targets::SUITE_TOTAL_S, "issue 6 (2-core machine)"));
+                r = r.with_target(Target::new(
+                    Goal::Below,
+                    targets::SUITE_TOTAL_S,
+                    "issue 6 (2-core machine)",
+                ));
             }
             rows.push(r);
         }
@@ -218,5 +367,11 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
 
     let mut machine = Machine::describe(gl_version.as_deref());
     machine.load_average = load_avg;
-    Report { schema: SCHEMA_VERSION, quick: o.quick, machine, rows, unavailable }
+    Report {
+        schema: SCHEMA_VERSION,
+        quick: o.quick,
+        machine,
+        rows,
+        unavailable,
+    }
 }

@@ -24,10 +24,17 @@ pub struct ShaderCache {
 
 impl ShaderCache {
     pub fn fresh(label: &str) -> Result<ShaderCache, String> {
-        let dir = std::env::temp_dir().join(format!("shadowcheck-bench-cache-{}-{label}", std::process::id()));
+        let dir = std::env::temp_dir().join(format!(
+            "shadowcheck-bench-cache-{}-{label}",
+            std::process::id()
+        ));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
-        let c = ShaderCache { dir, old_dir: std::env::var_os("MESA_SHADER_CACHE_DIR"), old_disable: std::env::var_os("MESA_SHADER_CACHE_DISABLE") };
+        let c = ShaderCache {
+            dir,
+            old_dir: std::env::var_os("MESA_SHADER_CACHE_DIR"),
+            old_disable: std::env::var_os("MESA_SHADER_CACHE_DISABLE"),
+        };
         std::env::set_var("MESA_SHADER_CACHE_DIR", &c.dir);
         std::env::remove_var("MESA_SHADER_CACHE_DISABLE");
         Ok(c)
@@ -96,7 +103,12 @@ pub fn nearest_2d_fixtures(root: &Path) -> Vec<PathBuf> {
         return vec![root.to_path_buf()];
     }
     let mut v: Vec<PathBuf> = std::fs::read_dir(root)
-        .map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path().join("2d").join("nearest.json")).filter(|p| p.is_file()).collect())
+        .map(|rd| {
+            rd.filter_map(|e| e.ok())
+                .map(|e| e.path().join("2d").join("nearest.json"))
+                .filter(|p| p.is_file())
+                .collect()
+        })
         .unwrap_or_default();
     v.sort();
     v
@@ -116,22 +128,50 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
     let mut b = backend::open(backend_name, &Options::default()).map_err(|e| e.to_string())?;
     let open_s = t1.elapsed().as_secs_f64();
     let t2 = Instant::now();
-    let (results, timing) = run::run_backend(b.as_mut(), &set, &Prior::default(), &Settings::default(), &mut Fanout::default());
+    let (results, timing) = run::run_backend(
+        b.as_mut(),
+        &set,
+        &Prior::default(),
+        &Settings::default(),
+        &mut Fanout::default(),
+    );
     let run_s = t2.elapsed().as_secs_f64();
     let t3 = Instant::now();
-    let _ = run::run_backend(b.as_mut(), &set, &Prior::default(), &Settings::default(), &mut Fanout::default());
+    let _ = run::run_backend(
+        b.as_mut(),
+        &set,
+        &Prior::default(),
+        &Settings::default(),
+        &mut Fanout::default(),
+    );
     let warm_run_s = t3.elapsed().as_secs_f64();
     drop(b);
     let t4 = Instant::now();
     let mut b = backend::open(backend_name, &Options::default()).map_err(|e| e.to_string())?;
-    let _ = run::run_backend(b.as_mut(), &set, &Prior::default(), &Settings::default(), &mut Fanout::default());
+    let _ = run::run_backend(
+        b.as_mut(),
+        &set,
+        &Prior::default(),
+        &Settings::default(),
+        &mut Fanout::default(),
+    );
     drop(b);
     let cached_s = t4.elapsed().as_secs_f64();
     drop(cache);
-    let verified = results.iter().filter(|r| matches!(r.outcome, Outcome::Pass | Outcome::Warn | Outcome::Fail)).count();
-    let skipped = results.iter().filter(|r| r.outcome == Outcome::Skip).count();
+    let verified = results
+        .iter()
+        .filter(|r| matches!(r.outcome, Outcome::Pass | Outcome::Warn | Outcome::Fail))
+        .count();
+    let skipped = results
+        .iter()
+        .filter(|r| r.outcome == Outcome::Skip)
+        .count();
     if verified == 0 {
-        return Err(format!("{backend_name} verified no case of {} ({} skipped)", set.cases.len(), skipped));
+        return Err(format!(
+            "{backend_name} verified no case of {} ({} skipped)",
+            set.cases.len(),
+            skipped
+        ));
     }
     Ok(E2e {
         cases_loaded: set.cases.len(),
@@ -158,7 +198,12 @@ pub struct SuiteRun {
 
 /// Runs `shadowcheck run --backend B... --fixtures F... --out OUT --no-rerun` and reaps it with
 /// wait4. Exit codes 0 (all passed) and 100 (failures) are both a finished suite.
-pub fn suite(exe: &Path, backends: &[String], fixtures: &[PathBuf], out: &Path) -> Result<SuiteRun, String> {
+pub fn suite(
+    exe: &Path,
+    backends: &[String],
+    fixtures: &[PathBuf],
+    out: &Path,
+) -> Result<SuiteRun, String> {
     let mut c = std::process::Command::new(exe);
     c.arg("run");
     for b in backends {
@@ -168,9 +213,13 @@ pub fn suite(exe: &Path, backends: &[String], fixtures: &[PathBuf], out: &Path) 
         c.arg("--fixtures").arg(f);
     }
     c.arg("--out").arg(out).arg("--no-rerun");
-    c.stdin(Stdio::null()).stdout(Stdio::null()).stderr(Stdio::null());
+    c.stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null());
     let t0 = Instant::now();
-    let child = c.spawn().map_err(|e| format!("cannot start {}: {e}", exe.display()))?;
+    let child = c
+        .spawn()
+        .map_err(|e| format!("cannot start {}: {e}", exe.display()))?;
     let pid = child.id() as libc::pid_t;
     let mut status: libc::c_int = 0;
     // SAFETY: rusage is plain old data, zero is a valid value.
@@ -187,12 +236,23 @@ pub fn suite(exe: &Path, backends: &[String], fixtures: &[PathBuf], out: &Path) 
     if r != pid {
         return Err(format!("wait4: {}", std::io::Error::last_os_error()));
     }
-    let exit_code = if libc::WIFEXITED(status) { libc::WEXITSTATUS(status) } else { -libc::WTERMSIG(status) };
+    let exit_code = if libc::WIFEXITED(status) {
+        libc::WEXITSTATUS(status)
+    } else {
+        -libc::WTERMSIG(status)
+    };
     if exit_code != 0 && exit_code != 100 {
-        return Err(format!("`shadowcheck run` ended with {exit_code} (see {})", out.display()));
+        return Err(format!(
+            "`shadowcheck run` ended with {exit_code} (see {})",
+            out.display()
+        ));
     }
     // ru_maxrss is in KiB on Linux.
-    Ok(SuiteRun { wall_s, peak_rss_mib: ru.ru_maxrss as f64 / 1024.0, exit_code })
+    Ok(SuiteRun {
+        wall_s,
+        peak_rss_mib: ru.ru_maxrss as f64 / 1024.0,
+        exit_code,
+    })
 }
 
 #[cfg(test)]
@@ -203,7 +263,10 @@ mod tests {
     fn nearest_2d_fixtures_are_found_per_spec() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures");
         let v = nearest_2d_fixtures(&root);
-        assert!(v.iter().any(|p| p.ends_with("gl46/2d/nearest.json")), "{v:?}");
+        assert!(
+            v.iter().any(|p| p.ends_with("gl46/2d/nearest.json")),
+            "{v:?}"
+        );
         assert!(v.iter().all(|p| p.ends_with("2d/nearest.json")));
         let one = root.join("gl46/2d/nearest.json");
         assert_eq!(nearest_2d_fixtures(&one), vec![one]);

@@ -39,17 +39,27 @@ pub struct Args {
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     if let Some(name) = &a.floor_child {
         let name: BackendName = name.parse()?;
-        let r = bench::floor::measure(name, a.floor_size.clamp(1, 4096), Duration::from_secs_f64(a.floor_seconds.clamp(0.0, 600.0)));
+        let r = bench::floor::measure(
+            name,
+            a.floor_size.clamp(1, 4096),
+            Duration::from_secs_f64(a.floor_seconds.clamp(0.0, 600.0)),
+        );
         println!("{}", serde_json::to_string(&r)?);
         return Ok(ExitCode::SUCCESS);
     }
     let exe = std::env::current_exe().context("locating the shadowcheck executable")?;
-    let opts = Options { quick: a.quick, backends: a.backends.clone(), fixtures: a.fixtures.clone(), exe };
+    let opts = Options {
+        quick: a.quick,
+        backends: a.backends.clone(),
+        fixtures: a.fixtures.clone(),
+        exe,
+    };
     let mut progress = |m: &str| eprintln!("bench: {m}");
     let report = bench::run::run(&opts, &mut progress);
     if let Some(path) = &a.output {
         let old = std::fs::read_to_string(path).ok();
-        std::fs::write(path, markdown::document(&report, old.as_deref())).with_context(|| format!("writing {}", path.display()))?;
+        std::fs::write(path, markdown::document(&report, old.as_deref()))
+            .with_context(|| format!("writing {}", path.display()))?;
         eprintln!("bench: wrote {}", path.display());
     }
     if a.json {
