@@ -85,26 +85,27 @@ pub fn is_filtered(r: &TestResult) -> bool {
     r.tags.filter != "nearest/nearest"
 }
 
-/// Picks at most `cap` items: every warning / failure first (up to the cap), then passes evenly
-/// spaced; the result is ordered by expected value, then name, so the plot reads as a staircase.
+/// `n` items of `v`, evenly spaced (all of them when there are no more than `n`).
+fn even<T: Clone>(v: &[T], n: usize) -> Vec<T> {
+    if v.len() <= n {
+        return v.to_vec();
+    }
+    (0..n).map(|k| v[k * v.len() / n].clone()).collect()
+}
+
+/// Picks at most `cap` items: warnings and failures first (up to three quarters of the cap when
+/// there are passes to show beside them, evenly spaced), then passes evenly spaced; the result is
+/// ordered by expected value, then name, so the plot reads as a staircase.
 fn select_plot(mut items: Vec<PlotItem>, cap: usize) -> (Vec<PlotItem>, usize) {
     let total = items.len();
     if total > cap {
-        let (mut bad, good): (Vec<PlotItem>, Vec<PlotItem>) =
+        let (bad, good): (Vec<PlotItem>, Vec<PlotItem>) =
             items.into_iter().partition(|i| i.kind >= Kind::Warn);
-        bad.truncate(cap);
-        let room = cap - bad.len();
-        if room > 0 && !good.is_empty() {
-            let stride = good.len() as f64 / room as f64;
-            let mut k = 0.0f64;
-            let mut picked = Vec::with_capacity(room);
-            while picked.len() < room && (k as usize) < good.len() {
-                picked.push(good[k as usize].clone());
-                k += stride.max(1.0);
-            }
-            bad.extend(picked);
-        }
-        items = bad;
+        let n_bad = bad
+            .len()
+            .min((cap * 3 / 4).max(cap.saturating_sub(good.len())));
+        items = even(&bad, n_bad);
+        items.extend(even(&good, cap - n_bad));
     }
     let key = |i: &PlotItem| {
         i.spec_value
@@ -188,7 +189,7 @@ fn render_pictures(input: &ReportInput, geo: &Geometry, opts: &Options, out: &mu
                 let (sel, total) = select_plot(items, opts.plot_points);
                 let bad = sel.iter().filter(|i| i.kind >= Kind::Warn).count();
                 let caption = if sel.len() < total {
-                    format!("{} of {total} filtered/mipmap tests: every warn/fail first ({bad}), then an even sample; by expected value", sel.len())
+                    format!("{} of {total} filtered/mipmap tests: {bad} warn/fail and passes, evenly sampled; by expected value", sel.len())
                 } else {
                     format!(
                         "all {total} filtered/mipmap tests ({bad} warn/fail), by expected value"
@@ -386,7 +387,7 @@ mod tests {
     }
 
     #[test]
-    fn plot_selection_keeps_every_failure_and_samples_passes() {
+    fn plot_selection_favours_failures_and_keeps_passes_beside_them() {
         let mut items: Vec<PlotItem> = (0..100)
             .map(|i| {
                 plot_item(
@@ -406,6 +407,24 @@ mod tests {
         let (sel, total) = select_plot(items, 10);
         assert_eq!((sel.len(), total), (10, 103));
         assert_eq!(sel.iter().filter(|i| i.kind == Kind::Fail).count(), 3);
+        // Many failures: three quarters of the plot for them, the rest for passes beside them.
+        let many: Vec<PlotItem> = (0..40)
+            .map(|i| {
+                let o = if i % 2 == 0 {
+                    Outcome::Fail
+                } else {
+                    Outcome::Pass
+                };
+                plot_item(
+                    &result("b", &format!("t{i:02}"), o, 0.0),
+                    &Geometry::default(),
+                )
+                .unwrap()
+            })
+            .collect();
+        let (sel, _) = select_plot(many, 8);
+        assert_eq!(sel.iter().filter(|i| i.kind == Kind::Fail).count(), 6);
+        assert_eq!(sel.iter().filter(|i| i.kind == Kind::Pass).count(), 2);
     }
 
     #[test]
