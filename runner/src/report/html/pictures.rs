@@ -392,7 +392,10 @@ mod tests {
         assert_eq!(label(0), "<0");
         assert_eq!(label(11), "0.50");
         let s = heatmap("t", &[]);
-        assert!(s.contains(">\n&lt;0\n<") && s.contains(">\n0.5\n<") && s.contains(">\n1\n<"), "tick labels: {s}");
+        assert!(
+            s.contains(">\n&lt;0\n<") && s.contains(">\n0.5\n<") && s.contains(">\n1\n<"),
+            "tick labels: {s}"
+        );
     }
 
     #[test]
