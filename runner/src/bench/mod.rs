@@ -167,6 +167,9 @@ pub fn fmt_num(v: f64) -> String {
         return format!("{v}");
     }
     let a = v.abs();
+    if a != 0.0 && a < 1e-3 {
+        return format!("{v:.1e}");
+    }
     let (x, s) = if a >= 1e9 {
         (v / 1e9, "G")
     } else if a >= 1e6 {
@@ -213,5 +216,6 @@ mod tests {
         assert_eq!(fmt_num(0.5), "0.500");
         assert_eq!(fmt_num(2.5e9), "2.50G");
         assert_eq!(fmt_num(12.0), "12.0");
+        assert_eq!(fmt_num(2.013e-6), "2.0e-6");
     }
 }

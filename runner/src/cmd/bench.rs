@@ -27,6 +27,9 @@ pub struct Args {
     /// generated block of an existing file is replaced.
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     output: Option<PathBuf>,
+    /// Render a report written earlier by `--json` (table, `-o`) instead of measuring.
+    #[arg(long, value_name = "FILE")]
+    from_json: Option<PathBuf>,
     /// (internal) Measure the bare-draw floor of this GL backend in this process and print JSON.
     #[arg(long, hide = true, value_name = "NAME")]
     floor_child: Option<String>,
@@ -55,7 +58,16 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         exe,
     };
     let mut progress = |m: &str| eprintln!("bench: {m}");
-    let report = bench::run::run(&opts, &mut progress);
+    let report = match &a.from_json {
+        Some(p) => {
+            let text =
+                std::fs::read_to_string(p).with_context(|| format!("reading {}", p.display()))?;
+            serde_json::from_str(&text).with_context(|| {
+                format!("{} is not a `shadowcheck bench --json` report", p.display())
+            })?
+        }
+        None => bench::run::run(&opts, &mut progress),
+    };
     if let Some(path) = &a.output {
         let old = std::fs::read_to_string(path).ok();
         std::fs::write(path, markdown::document(&report, old.as_deref()))
