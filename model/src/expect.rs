@@ -146,13 +146,16 @@ pub struct FootprintTexel {
     /// Texel coordinates (x, y, layer); `None` for a border texel.
     pub xyz: Option<[u32; 3]>,
     /// The stored value as written in the fixture (integer for unorm) and as a real.
+    #[serde(with = "crate::real")]
     pub stored: f64,
     /// Dt after the specification's clamping.
+    #[serde(with = "crate::real")]
     pub dt: f64,
     /// Per-texel comparison: `Some(pass)`, or `None` when the texel is within reference precision
     /// (either outcome allowed).
     pub pass: Option<bool>,
     /// Filter weight of this texel in the spec value.
+    #[serde(with = "crate::real")]
     pub weight: f64,
 }
 
@@ -160,6 +163,7 @@ pub struct FootprintTexel {
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct Footprint {
     /// Dref after projective divide and clamping.
+    #[serde(with = "crate::real")]
     pub dref: f64,
     pub texels: Vec<FootprintTexel>,
 }

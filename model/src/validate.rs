@@ -211,4 +211,17 @@ mod tests {
         assert_eq!(e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 0.0]), Some(Judgement::Outside));
         assert_eq!(e.judge(ApiPath::GlslCore, [1.0; 4]), None);
     }
+
+    #[test]
+    fn footprint_with_nan_reference_round_trips() {
+        let f = Footprint {
+            dref: f64::NAN,
+            texels: vec![FootprintTexel { level: 0, xyz: Some([0, 0, 0]), stored: 1.0, dt: f64::INFINITY, pass: None, weight: 1.0 }],
+        };
+        let json = serde_json::to_string(&f).unwrap();
+        assert!(json.contains("\"dref\":\"nan\"") && json.contains("\"dt\":\"inf\""), "{json}");
+        let back: Footprint = serde_json::from_str(&json).unwrap();
+        assert!(back.dref.is_nan());
+        assert_eq!(back.texels[0].dt, f64::INFINITY);
+    }
 }
