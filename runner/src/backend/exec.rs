@@ -7,7 +7,7 @@
 //! run goes on. When the process was answering case by case, the first unanswered case is tried
 //! alone first (one restart instead of log2(group) when it is the culprit). The GL backends and the mock use the same machinery.
 
-use super::protocol::{self, Answer, ApiResultMsg};
+use super::protocol::{self, Answer, ApiResultMsg, SkippedMsg};
 use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome, Options};
 use shadowcheck_model::{ApiPath, Case};
 use std::collections::VecDeque;
@@ -412,12 +412,23 @@ fn to_outcome(case: &Case, a: Answer) -> CaseOutcome {
     match a {
         Answer::Skip { reason, .. } => CaseOutcome::Skip(reason),
         Answer::Error { message, .. } => CaseOutcome::Error(message),
-        Answer::Observation { results, .. } => {
-            let mut v = Vec::with_capacity(results.len());
-            for ApiResultMsg { api, rgba, stored } in results {
+        Answer::Observation { results, skipped, .. } => {
+            let mut v = Vec::with_capacity(results.len() + skipped.len());
+            for ApiResultMsg { api, rgba, stored, .. } in results {
                 match ApiPath::from_key(&api) {
                     Some(a) if case.api.contains(&a) => v.push((a, ApiOutcome::Rgba { rgba: rgba.0, stored })),
                     _ => return CaseOutcome::Error(format!("result for API path `{api}`, which the case does not have")),
+                }
+            }
+            // A path both answered and listed as skipped keeps its result (judged, never hidden).
+            for SkippedMsg { api, reason } in skipped {
+                match ApiPath::from_key(&api) {
+                    Some(a) if case.api.contains(&a) => {
+                        if !v.iter().any(|(p, _)| *p == a) {
+                            v.push((a, ApiOutcome::Skip(reason)));
+                        }
+                    }
+                    _ => return CaseOutcome::Error(format!("skipped API path `{api}`, which the case does not have")),
                 }
             }
             CaseOutcome::Observed(v)
@@ -461,5 +472,32 @@ mod tests {
         assert_eq!(split_command(" 'a b' \"c \\\" d\" e\\ f ").unwrap(), ["a b", "c \" d", "e f"]);
         assert_eq!(split_command("''").unwrap(), [""]);
         assert!(split_command("'open").is_err());
+    }
+
+    /// A case with the compat paths (ff, glsl120) of a GL 4.6 2D lookup; only `api` matters here.
+    fn compat_case() -> Case {
+        let json = r#"{"id":"x","spec":"gl46","api":["ff","glsl120"],"texture":{"target":"2d","format":"d16","levels":[{"width":1,"height":1,"layers":1,"depth":{"unorm":[7]}}]},"sampler":{"compare_mode":"compare","compare_func":"lequal","min_filter":"nearest","mag_filter":"nearest","wrap_s":"edge","wrap_t":"edge","wrap_r":"edge","border":[0,0,0,0]},"lookup":{"coord":[0.5,0.5,0,1],"dref":0.5}}"#;
+        serde_json::from_str(json).unwrap()
+    }
+
+    #[test]
+    fn skipped_paths_become_skip_with_the_implementations_reason() {
+        let case = compat_case();
+        let line = r#"{"type":"observation","case_id":"x","results":[{"api":"glsl120","rgba":[1,1,1,1],"note":"shadow2D"}],"skipped":[{"api":"ff","reason":"fixed-function has no cube arrays"}]}"#;
+        let out = to_outcome(&case, protocol::parse_answer(line).unwrap());
+        let CaseOutcome::Observed(v) = out else { panic!("{out:?}") };
+        assert!(matches!(v.iter().find(|(a, _)| *a == ApiPath::Glsl120), Some((_, ApiOutcome::Rgba { .. }))));
+        match v.iter().find(|(a, _)| *a == ApiPath::FixedFunction) {
+            Some((_, ApiOutcome::Skip(m))) => assert_eq!(m, "fixed-function has no cube arrays"),
+            other => panic!("{other:?}"),
+        }
+        // A skipped path the case does not have is the implementation's error, as a stray result is.
+        let bad = r#"{"type":"observation","case_id":"x","results":[],"skipped":[{"api":"core","reason":"no"}]}"#;
+        assert!(matches!(to_outcome(&case, protocol::parse_answer(bad).unwrap()), CaseOutcome::Error(_)));
+        // An answered path that is also listed keeps its result.
+        let both = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}],"skipped":[{"api":"ff","reason":"no"}]}"#;
+        let CaseOutcome::Observed(v) = to_outcome(&case, protocol::parse_answer(both).unwrap()) else { panic!() };
+        assert_eq!(v.len(), 1);
+        assert!(matches!(v[0].1, ApiOutcome::Rgba { .. }));
     }
 }

@@ -124,8 +124,8 @@ fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Answer {
         return Answer::Skip { case_id: id, reason: "mock: the case carries no expectation to answer from".into() };
     };
     let results =
-        case.api.iter().map(|&a| ApiResultMsg { api: a.key().to_string(), rgba: Rgba(laid_out(case, a, r)), stored: None }).collect();
-    Answer::Observation { case_id: id, results }
+        case.api.iter().map(|&a| ApiResultMsg { api: a.key().to_string(), rgba: Rgba(laid_out(case, a, r)), stored: None, note: None }).collect();
+    Answer::Observation { case_id: id, results, skipped: Vec::new() }
 }
 
 fn kill_parent() {

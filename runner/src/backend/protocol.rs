@@ -84,13 +84,30 @@ pub struct ApiResultMsg {
     pub rgba: Rgba,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stored: Option<Texels>,
+    /// How the implementation realized this path (informative; not judged).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+/// An API path of a case that the implementation did not run, and why.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct SkippedMsg {
+    pub api: String,
+    pub reason: String,
 }
 
 /// An implementation's answer to one case.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(tag = "type", rename_all = "snake_case")]
 pub enum Answer {
-    Observation { case_id: String, results: Vec<ApiResultMsg> },
+    Observation {
+        case_id: String,
+        results: Vec<ApiResultMsg>,
+        /// API paths not run, each Skip with its reason (optional; a path with neither a result
+        /// nor an entry here is Skip without a reason).
+        #[serde(default)]
+        skipped: Vec<SkippedMsg>,
+    },
     Skip { case_id: String, reason: String },
     Error { case_id: String, message: String },
 }
@@ -131,7 +148,7 @@ mod tests {
         let a =
             parse_answer(r#"{"type":"observation","case_id":"x","extra":1,"results":[{"api":"core","rgba":["nan",0,"inf",1]}]}"#).unwrap();
         match a {
-            Answer::Observation { case_id, results } => {
+            Answer::Observation { case_id, results, .. } => {
                 assert_eq!(case_id, "x");
                 assert!(results[0].rgba.0[0].is_nan());
                 assert_eq!(results[0].rgba.0[2], f64::INFINITY);
