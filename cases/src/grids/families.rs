@@ -117,7 +117,14 @@ pub fn exact(d: &SpecDims) -> Vec<Draft> {
                     Stored::Unorm(v) => format!("c={v}"),
                     Stored::Float(v) => format!("dt={}", num(v as f64)),
                 };
-                for (tag, r) in [("at-", build::f32_next_down(at)), ("at", at), ("at+", build::f32_next_up(at))] {
+                let mut refs = vec![("at-", build::f32_next_down(at)), ("at", at), ("at+", build::f32_next_up(at))];
+                if matches!(func, CompareFunc::Equal | CompareFunc::Notequal) {
+                    // Near misses beyond the lenient 16-bit reference precision: an EQUAL with a
+                    // tolerance (mutant equal-with-tolerance) passes them.
+                    refs.push(("at-2^-14", build::f32r(at - 2f64.powi(-14))));
+                    refs.push(("at+2^-14", build::f32r(at + 2f64.powi(-14))));
+                }
+                for (tag, r) in refs {
                     let lk = lookup(Target::T2d, At::st(0.5, 0.5), 1, 1, r);
                     out.push(Draft::new("exact", c, tex.clone(), lk, format!("{label}/ref={tag}")));
                 }
@@ -250,6 +257,26 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
         let c = cell(d, Target::T2d, Format::D32f, Filter::Nearest, func);
         let (tex, w, h, _) = pattern_texture(&c);
         for (border, r) in [(1.5, 1.25), (-0.5, -0.25), (-0.5, 0.0)] {
+            let mut x = Draft::new(
+                "wrap",
+                c,
+                tex.clone(),
+                lookup(Target::T2d, At::st(-0.25, 0.25), w, h, r),
+                format!("wrap=border/st=-0.25,0.25/border={}/ref={}", num(border), num(r)),
+            );
+            x.sampler.wrap_s = Wrap::ClampToBorder;
+            x.sampler.wrap_t = Wrap::ClampToBorder;
+            x.sampler.border = [border as f32, 0.0, 0.0, 0.0];
+            out.push(x);
+        }
+    }
+    // ARB_shadow 3.8.13.1 puts Dt in [0, 1] for the pre-3.0 specs (GL 4.6 leaves a fixed-point border
+    // outside [0, 1] undefined, ES 3.2 clamps it): border 1.5 reads as 1, -0.5 as 0.
+    if matches!(d.spec, Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs) && d.wraps.contains(&Wrap::ClampToBorder) {
+        let pairs = [(1.5, 1.0, CompareFunc::Gequal), (-0.5, 0.0, CompareFunc::Lequal)];
+        for (border, r, func) in pairs {
+            let c = cell(d, Target::T2d, fmt, Filter::Nearest, func);
+            let (tex, w, h, _) = pattern_texture(&c);
             let mut x = Draft::new(
                 "wrap",
                 c,
@@ -515,7 +542,8 @@ pub fn ambient(d: &SpecDims) -> Vec<Draft> {
             for filter in [Filter::Nearest, Filter::Linear] {
                 let c = cell(d, Target::T2d, fmt, filter, func);
                 let (tex, w, h, _) = pattern_texture(&c);
-                for fail in [0.0f32, 0.25, 0.5, 1.0] {
+                // 1.5 and -0.5: the value is clamped to [0, 1] when specified (ARB_shadow_ambient).
+                for fail in [0.0f32, 0.25, 0.5, 1.0, 1.5, -0.5] {
                     let lks: Vec<(At, f64, &str)> = if filter == Filter::Nearest {
                         vec![(At::st(0.75, 0.25), 0.3, "texel1"), (At::st(0.75, 0.25), 0.5, "texel1")]
                     } else {
