@@ -198,3 +198,28 @@ fn cli_runs_one_mutant_on_the_smoke_grid_and_writes_markdown() {
     assert_eq!(o.status.code(), Some(96));
     assert!(String::from_utf8_lossy(&o.stderr).contains("unknown mutant"));
 }
+
+#[test]
+fn the_committed_default_fixtures_kill_every_observable_mutant() {
+    // Must show: over cases/fixtures every fault is killed (a Fail, not only a Warn), except the
+    // ones documented as unobservable through the API, and the correct unit has no Fail.
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let o = bin().current_dir(&root).args(["mutants", "--json", "-q"]).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["baseline"]["fail"], 0);
+    assert_eq!(v["baseline"]["warn"], 0);
+    let ms = v["mutants"].as_array().unwrap();
+    assert_eq!(ms.len(), Fault::ALL.len());
+    for m in ms {
+        assert!(
+            m["status"] == "killed" || m["unobservable"].is_string(),
+            "{} not killed: {m}",
+            m["key"]
+        );
+        if m["status"] == "killed" {
+            assert!(m["minimal"]["case"].is_string() && m["killing_cases"].as_u64().unwrap() > 0);
+        }
+    }
+    assert_eq!(v["score_observable"], 100.0);
+}
