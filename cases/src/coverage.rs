@@ -130,14 +130,10 @@ pub const END: &str = "<!-- coverage:end -->";
 
 /// The text between the coverage markers of `readme`, if both are there.
 pub fn section(readme: &str) -> Option<&str> {
-    let a = readme.find(BEGIN)? + BEGIN.len();
-    let b = readme[a..].find(END)? + a;
-    Some(readme[a..b].trim_matches('\n'))
+    crate::markers::section(readme, BEGIN, END)
 }
 
 /// `readme` with the text between the coverage markers replaced by `table`.
 pub fn replace_section(readme: &str, table: &str) -> Option<String> {
-    let a = readme.find(BEGIN)? + BEGIN.len();
-    let b = readme[a..].find(END)? + a;
-    Some(format!("{}\n{}\n{}", &readme[..a], table.trim_matches('\n'), &readme[b..]))
+    crate::markers::replace(readme, BEGIN, END, table)
 }

@@ -5,7 +5,8 @@
 //! - [`build`]: stored texel values per format, textures per target, lookups at known positions;
 //! - [`grids`]: the named grids (`smoke`, `default`, `exhaustive`) and [`grids::generate`];
 //! - [`fixtures`]: the versioned fixture file format, its writer and loaders;
-//! - [`coverage`]: cases per spec x target x format x filter x func.
+//! - [`coverage`]: cases per spec x target x format x filter x func;
+//! - [`markers`]: generated sections of hand-written Markdown (README tables).
 //!
 //! The format is documented in cases/README.md; its JSON Schema is cases/schema/fixture.schema.json.
 
@@ -14,5 +15,6 @@ pub mod coverage;
 pub mod dsl;
 pub mod fixtures;
 pub mod grids;
+pub mod markers;
 
 pub use grids::GridError;

@@ -147,6 +147,10 @@ fn run_reports_score_matrix_and_markdown() {
     let min = r.mutants[0].minimal.as_ref().unwrap();
     assert!(md.contains(&format!("`{}`", min.case)));
     assert!(render::table(&r).contains("lequal-gequal-swapped"));
+    // The README section: same rows, no timings (it must not change from run to run).
+    let sec = render::readme_section(&r);
+    assert!(sec.contains(&format!("| 1 | `lequal-gequal-swapped` | {} | killed | `{}` |", mutants::about(faults[0]), min.case)), "{sec}");
+    assert!(!sec.contains(" s ") && !sec.contains("threads"), "{sec}");
 }
 
 #[test]
@@ -197,6 +201,19 @@ fn cli_runs_one_mutant_on_the_smoke_grid_and_writes_markdown() {
         .unwrap();
     assert_eq!(o.status.code(), Some(96));
     assert!(String::from_utf8_lossy(&o.stderr).contains("unknown mutant"));
+
+    // --update-readme on a file without the markers: a setup error naming the file, file untouched.
+    let plain = tmp.join("PLAIN.md");
+    std::fs::write(&plain, "# no markers here\n").unwrap();
+    let o = bin()
+        .args(["mutants", "--grid", "smoke", "--mutant", "less-as-lequal", "-q", "--update-readme"])
+        .arg(&plain)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(96));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("PLAIN.md") && err.contains("no kill-matrix markers"), "{err}");
+    assert_eq!(std::fs::read_to_string(&plain).unwrap(), "# no markers here\n");
 }
 
 #[test]
@@ -204,7 +221,16 @@ fn the_committed_default_fixtures_kill_every_observable_mutant() {
     // Must show: over cases/fixtures every fault is killed (a Fail, not only a Warn), except the
     // ones documented as unobservable through the API, and the correct unit has no Fail.
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
-    let o = bin().current_dir(&root).args(["mutants", "--json", "-q"]).output().unwrap();
+    // The kill matrix in README.md is generated: regenerate it into a copy and compare.
+    let readme = root.join("README.md");
+    let copy = tmpdir("mutants-readme").join("README.md");
+    std::fs::copy(&readme, &copy).unwrap();
+    let o = bin()
+        .current_dir(&root)
+        .args(["mutants", "--json", "-q", "--update-readme"])
+        .arg(&copy)
+        .output()
+        .unwrap();
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["baseline"]["fail"], 0);
@@ -222,4 +248,8 @@ fn the_committed_default_fixtures_kill_every_observable_mutant() {
         }
     }
     assert_eq!(v["score_observable"], 100.0);
+    assert!(
+        std::fs::read_to_string(&copy).unwrap() == std::fs::read_to_string(&readme).unwrap(),
+        "the kill matrix in README.md is stale: run `cargo run --release -- mutants -o reports/MUTANTS.md --update-readme README.md`"
+    );
 }

@@ -32,6 +32,10 @@ pub struct Args {
     /// Also write the Markdown report (kill matrix, score, survivors) to FILE.
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     output: Option<PathBuf>,
+    /// Rewrite the kill-matrix section of FILE (between the `mutants:begin` / `mutants:end`
+    /// markers, e.g. README.md); the rest of the file is kept.
+    #[arg(long, value_name = "FILE")]
+    update_readme: Option<PathBuf>,
     /// Worker threads (default: the available parallelism).
     #[arg(long, short = 'j', value_name = "N")]
     jobs: Option<usize>,
@@ -54,6 +58,9 @@ fn command_line(a: &Args) -> String {
     }
     if let Some(o) = &a.output {
         s += &format!(" -o {}", o.display());
+    }
+    if let Some(r) = &a.update_readme {
+        s += &format!(" --update-readme {}", r.display());
     }
     s
 }
@@ -126,6 +133,27 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         std::fs::write(path, render::markdown(&report, &command_line(&a))).with_context(|| format!("writing {}", path.display()))?;
         if !a.quiet {
             eprintln!("mutants: wrote {}", path.display());
+        }
+    }
+    if let Some(path) = &a.update_readme {
+        let text = std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+        let new = shadowcheck_cases::markers::replace(
+            &text,
+            render::README_BEGIN,
+            render::README_END,
+            &render::readme_section(&report),
+        )
+        .with_context(|| {
+            format!(
+                "{}: no kill-matrix markers (add the lines `{}` and `{}` where the matrix goes)",
+                path.display(),
+                render::README_BEGIN,
+                render::README_END
+            )
+        })?;
+        std::fs::write(path, new).with_context(|| format!("writing {}", path.display()))?;
+        if !a.quiet {
+            eprintln!("mutants: updated the kill matrix in {}", path.display());
         }
     }
     Ok(if !report.baseline.ok() {
