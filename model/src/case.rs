@@ -123,10 +123,18 @@ pub struct Lookup {
     /// Shader bias added to lambda_base (GLSL bias argument).
     #[serde(default, skip_serializing_if = "is_zero")]
     pub bias: f64,
+    /// Texel offset (δu, δv, δw) of the GLSL `*Offset` lookup functions, added to u, v, w in the
+    /// selected level's texel units (GL 4.6 §8.14.2 (8.10), §8.14.3); zero when the lookup
+    /// function takes no offset. Components a target does not use are 0.
+    #[serde(default, skip_serializing_if = "is_zero3")]
+    pub offset: [i32; 3],
 }
 
 fn is_zero(v: &f64) -> bool {
     *v == 0.0
+}
+fn is_zero3(v: &[i32; 3]) -> bool {
+    *v == [0; 3]
 }
 fn is_false(v: &bool) -> bool {
     !*v

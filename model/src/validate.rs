@@ -2,7 +2,7 @@
 //! with an error naming the case and the field. (Semantic legality, e.g. a compare function a spec
 //! does not define, is the oracle's business: it answers with that spec's GL error.)
 
-use crate::{Case, ModelError, Target, Texels};
+use crate::{ApiPath, Case, ModelError, Target, Texels};
 
 /// Largest texel count accepted for one level (16 Mi texels); larger is treated as absurd input.
 pub const MAX_TEXELS_PER_LEVEL: usize = 1 << 24;
@@ -125,6 +125,51 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
     if l.projective && l.coord[3] == 0.0 {
         return Err(invalid(case, "lookup.coord[3]", "projective lookup with q = 0"));
     }
+    if l.offset != [0; 3] {
+        validate_offset(case)?;
+    }
+    Ok(())
+}
+
+/// Smallest MIN_PROGRAM_TEXEL_OFFSET and largest MAX_PROGRAM_TEXEL_OFFSET every GL 3.0+ / ES 3.0+
+/// implementation supports (GL 4.6 Table 23.55, ES 3.2 Table 21.41: -8 and 7); outside them the
+/// lookup is undefined (GL 4.6 §8.14.2), so a fixture may not ask for it.
+pub const TEXEL_OFFSET_RANGE: std::ops::RangeInclusive<i32> = -8..=7;
+
+/// A texel offset needs a lookup function that takes one (GLSL >= 1.30, GLSL ES 3.00), a target
+/// with texel offsets (not cube maps), zeros in the components the target ignores, and values
+/// every implementation supports.
+fn validate_offset(case: &Case) -> Result<(), ModelError> {
+    let o = case.lookup.offset;
+    if let Some(api) = case
+        .api
+        .iter()
+        .find(|a| !matches!(a, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300))
+    {
+        return Err(invalid(
+            case,
+            "lookup.offset",
+            format!("API path `{}` has no lookup function with a texel offset (GLSL >= 1.30 and GLSL ES 3.00 only)", api.key()),
+        ));
+    }
+    let used = match case.texture.target {
+        Target::Cube | Target::CubeArray => 0,
+        Target::T1d | Target::T1dArray => 1,
+        Target::T2d | Target::Rect | Target::T2dArray => 2,
+    };
+    if used == 0 {
+        return Err(invalid(case, "lookup.offset", "cube map lookups take no texel offset"));
+    }
+    if let Some(j) = (used..3).find(|&j| o[j] != 0) {
+        return Err(invalid(case, format!("lookup.offset[{j}]"), format!("{} but the target has no such coordinate (must be 0)", o[j])));
+    }
+    if let Some(j) = (0..3).find(|&j| !TEXEL_OFFSET_RANGE.contains(&o[j])) {
+        return Err(invalid(
+            case,
+            format!("lookup.offset[{j}]"),
+            format!("{} is outside {}..={}, the range every implementation supports", o[j], TEXEL_OFFSET_RANGE.start(), TEXEL_OFFSET_RANGE.end()),
+        ));
+    }
     Ok(())
 }
 
@@ -145,7 +190,7 @@ mod tests {
                 levels: vec![Level { width: 2, height: 1, layers: 1, depth: Texels::Unorm(vec![0, 65535]), stencil: None }],
             },
             sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
-            lookup: Lookup { coord: [0.25, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0 },
+            lookup: Lookup { coord: [0.25, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0, offset: [0; 3] },
             expect: None,
         }
     }
@@ -178,6 +223,29 @@ mod tests {
         c.texture.levels[0].depth = Texels::Unorm(vec![0, 70000]);
         let e = validate(&c).unwrap_err().to_string();
         assert!(e.contains("texture.levels[0].depth[1]") && e.contains("`t`"), "{e}");
+    }
+
+    #[test]
+    fn texel_offsets_need_a_glsl_130_path_a_target_with_offsets_and_a_supported_value() {
+        let mut c = case();
+        c.lookup.offset = [-8, 7, 0];
+        validate(&c).unwrap();
+        let json = serde_json::to_string(&c).unwrap();
+        assert!(json.contains("\"offset\":[-8,7,0]"), "{json}");
+        assert!(!serde_json::to_string(&case()).unwrap().contains("offset"));
+        c.lookup.offset = [8, 0, 0];
+        let e = validate(&c).unwrap_err().to_string();
+        assert!(e.contains("lookup.offset[0]") && e.contains("-8..=7"), "{e}");
+        c.lookup.offset = [1, 0, 1];
+        assert!(validate(&c).unwrap_err().to_string().contains("lookup.offset[2]"));
+        c.lookup.offset = [1, 0, 0];
+        c.api = vec![ApiPath::GlslCore, ApiPath::Glsl120];
+        assert!(validate(&c).unwrap_err().to_string().contains("`glsl120`"));
+        c.api = vec![ApiPath::Es300];
+        c.texture.target = Target::Cube;
+        c.texture.levels = vec![Level { width: 1, height: 1, layers: 6, depth: Texels::Unorm(vec![0; 6]), stencil: None }];
+        let e = validate(&c).unwrap_err().to_string();
+        assert!(e.contains("cube map lookups take no texel offset"), "{e}");
     }
 
     #[test]

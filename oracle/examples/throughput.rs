@@ -46,6 +46,7 @@ fn case(filter: Filter, i: usize) -> Case {
             projective: false,
             lod: (i % 5) as f64 * 0.4,
             bias: 0.0,
+            offset: [0; 3],
         },
         expect: None,
     }

@@ -308,6 +308,16 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
             );
         }
     }
+    let o = case.lookup.offset;
+    if o != [0; 3] {
+        e.step(
+            format!(
+                "texel offset (δu, δv, δw) = ({}, {}, {}): u = w·s + δu, v = h·t + δv in the texels of each selected level, before wrapping",
+                o[0], o[1], o[2]
+            ),
+            "GL 4.6 §8.14.2 (8.10), §8.14.3; GLSL 4.60 §8.9.2 textureOffset",
+        );
+    }
     let finite = geos.iter().all(|g| g.s.is_finite() && g.t.is_finite());
     if geos.is_empty() || !finite {
         return Ok(undefined(

@@ -79,10 +79,14 @@ fn taps(
     let l = &tex.levels[(level as usize).min(tex.levels.len() - 1)];
     let (w, h) = (l.width as i64, l.height as i64);
     let rect = tex.target == Target::Rect;
+    // (8.10): u = w_s·s + δu, v = h_s·t + δv with the size of the selected level (§8.14.3: "for
+    // level d1, the coordinate (u, v, w) is computed as in equation 8.10, with w_s, h_s, and d_s
+    // equal to the width, height, and depth of level d1"); rectangles: u = s + δu.
+    let (du, dv) = (case.lookup.offset[0] as f64, case.lookup.offset[1] as f64);
     let (u, v) = if rect {
-        (g.s, g.t)
+        (g.s + du, g.t + dv)
     } else {
-        (g.s * w as f64, g.t * h as f64)
+        (g.s * w as f64 + du, g.t * h as f64 + dv)
     };
     let seamless = g.face.is_some() && rules.seamless_cube;
     // §8.13.1: "If NEAREST filtering is done within a miplevel, always apply wrap mode CLAMP_TO_EDGE.

@@ -239,6 +239,7 @@ fn wide_case() -> impl Strategy<Value = Case> {
                         projective: proj,
                         lod,
                         bias,
+                        offset: [0; 3],
                     },
                     expect: None,
                 }

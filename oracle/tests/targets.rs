@@ -86,6 +86,50 @@ fn wrap_modes_pick_the_texel_of_table_8_20() {
 }
 
 #[test]
+fn texel_offsets_are_added_to_u_before_wrapping_in_the_selected_levels_texels() {
+    // (8.10): u = w·s + δu. 4x1, only texel 3 passes; s = 0.375 → u = 1.5 (texel 1).
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        CompareFunc::Lequal,
+        Filter::Nearest,
+        4,
+        1,
+        &[0.0, 0.0, 0.0, 1.0],
+        (0.375, 0.5),
+        0.5,
+    );
+    assert_eq!(value(&c), 0.0);
+    c.lookup.offset = [2, 0, 0]; // u = 3.5: texel 3
+    assert_eq!(value(&c), 1.0);
+    c.lookup.offset = [-2, 0, 0]; // u = -0.5: CLAMP_TO_EDGE texel 0; REPEAT wraps to texel 3
+    assert_eq!(value(&c), 0.0);
+    c.sampler.wrap_s = Wrap::Repeat;
+    assert_eq!(value(&c), 1.0);
+    // §8.14.3: level d's (u, v) "as in equation 8.10, with w_s, h_s, d_s" of level d, so the
+    // offset counts level-d texels. Level 1 (2x2 of a 4x4 chain) = [0, 1 / 0, 1], s = 0.1:
+    // u = 0.2 + 1 = 1.2 reads texel 1 (pass); one base texel (½ level-1 texel) would stay on 0.
+    let mut m = case2d(
+        Spec::Gles32,
+        Format::D16,
+        CompareFunc::Lequal,
+        Filter::NearestMipmapNearest,
+        4,
+        4,
+        &[0.0; 16],
+        (0.1, 0.1),
+        0.5,
+    );
+    for (w, vals) in [(2u32, vec![0.0, 1.0, 0.0, 1.0]), (1, vec![0.0])] {
+        m.texture.levels.push(Level { width: w, height: w, layers: 1, depth: texels(Format::D16, &vals), stencil: None });
+    }
+    m.lookup.lod = 1.0;
+    assert_eq!(value(&m), 0.0);
+    m.lookup.offset = [1, 0, 0];
+    assert_eq!(value(&m), 1.0);
+}
+
+#[test]
 fn mipmap_level_selection_and_blend() {
     // 4x4 base (all 0), 2x2 level 1 (all 1), 1x1 level 2 (0). Dref 0.5, LEQUAL passes on level 1 only.
     let mut c = case2d(

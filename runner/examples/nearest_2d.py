@@ -3,7 +3,7 @@
 
 OpenGL 4.6 core, GLSL `texture(sampler2DShadow, ...)`: 2D depth textures (d16, d24, d32, d32f),
 NEAREST and LINEAR filtering of the base level, REPEAT / CLAMP_TO_EDGE / MIRRORED_REPEAT wrapping,
-depth comparison per GL 4.6 §8.23.1 (compare each texel, then filter). It declares these
+texel offsets (`textureOffset`: u = w*s + du before wrapping, GL 4.6 (8.10)), depth comparison per GL 4.6 §8.23.1 (compare each texel, then filter). It declares these
 capabilities in its hello, so the runner skips every other case; anything else it meets is answered
 with a skip message. It speaks runner/PROTOCOL.md.
 
@@ -54,7 +54,8 @@ def sample(case):
         s, t, dref = f32(s / q), f32(t / q), f32(dref / q)
     if fmt in BITS:  # fixed-point formats clamp Dref (GL 4.6 §8.23.1)
         dref = min(max(dref, 0.0), 1.0)
-    u, v = s * w, t * h
+    du, dv = (lk.get("offset") or [0, 0, 0])[:2]
+    u, v = s * w + du, t * h + dv
     try:
         if flt == "nearest":
             taps = [(wrap(math.floor(u), w, smp["wrap_s"]), wrap(math.floor(v), h, smp["wrap_t"]), 1.0)]

@@ -418,7 +418,7 @@ mod tests {
                 levels: vec![Level { width: 1, height: 1, layers: 1, depth: Texels::Unorm(vec![65535]), stencil: None }],
             },
             sampler: Sampler::new(CompareMode::Compare, CompareFunc::Always, Filter::Nearest),
-            lookup: Lookup { coord: [0.5, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0 },
+            lookup: Lookup { coord: [0.5, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0, offset: [0; 3] },
             expect: Some(Expectation { spec_value: Some(1.0), accept, layout, implementation_defined: None, citations: vec![] }),
         }
     }

@@ -329,7 +329,7 @@ mod tests {
                 levels: vec![Level { width: 2, height: 1, layers: 1, depth: Texels::Unorm(vec![0, 65535]), stencil: None }],
             },
             sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
-            lookup: Lookup { coord: [0.25, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0 },
+            lookup: Lookup { coord: [0.25, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0, offset: [0; 3] },
             expect,
         }
     }

@@ -235,3 +235,38 @@ fn batched_draws_keep_every_case_in_its_own_pixel() {
         }
     }
 }
+
+#[test]
+fn core_texel_offsets_are_added_before_wrapping() {
+    // GL 4.6 (8.10): u = w·s + δu, then the wrap mode (Table 8.20). A 4x1 D16 texture where only
+    // texel 3 holds 1.0; s = 0.375 is texel 1; LEQUAL with Dref 0.5 passes on texel 3 only.
+    for b in backends("core", true) {
+        let Some(mut s) = Session::start(&b) else {
+            continue;
+        };
+        let mut cases = Vec::new();
+        for (offset, wrap, lod, want) in [
+            (0, Wrap::ClampToEdge, 0.0, 0.0),  // texel 1
+            (2, Wrap::ClampToEdge, 0.0, 1.0),  // u = 3.5: texel 3
+            (-2, Wrap::ClampToEdge, 0.0, 0.0), // u = -0.5: clamped to texel 0
+            (-2, Wrap::Repeat, 0.0, 1.0),      // u = -0.5: repeats to texel 3
+            (6, Wrap::Repeat, 0.0, 1.0),       // u = 7.5: texel 7 mod 4 = 3
+            (2, Wrap::ClampToEdge, 0.5, 1.0),  // explicit LOD (textureLodOffset); NEAREST, one level
+        ] {
+            let mut c = d16_case(&format!("offset={offset}/{wrap}/lod={lod}"), Spec::Gl46, &[ApiPath::GlslCore], Target::T2d, 0, 0.5);
+            c.texture.levels[0].width = 4;
+            c.texture.levels[0].height = 1;
+            c.texture.levels[0].depth = Texels::Unorm(vec![0, 0, 0, 65535]);
+            c.sampler.wrap_s = wrap;
+            c.lookup.coord = [0.375, 0.5, 0.0, 1.0];
+            c.lookup.offset = [offset, 0, 0];
+            c.lookup.lod = lod;
+            cases.push((c, want));
+        }
+        let (cs, want): (Vec<Case>, Vec<f64>) = cases.into_iter().unzip();
+        let answers = s.run(&cs);
+        for ((c, w), a) in cs.iter().zip(want).zip(&answers) {
+            assert_eq!(Session::rgba(a, ApiPath::GlslCore)[0], w, "{b} {}: {a}", c.id);
+        }
+    }
+}

@@ -70,6 +70,7 @@ impl Workload {
                 dref: rng.unit(),
                 lambda_base: if filter.is_mipmap() { rng.unit() * 4.0 - 1.0 } else { 0.0 },
                 bias: 0.0,
+                offset: [0; 2],
             })
             .collect();
         Ok(Workload { texture, state, coords })

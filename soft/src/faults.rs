@@ -99,6 +99,14 @@ faults! {
     LayerTruncated = "layer-truncated",
     /// Cube map -Y face: t_c taken as +r_z instead of -r_z.
     CubeNegYFlipped = "cube-neg-y-flipped",
+    /// The texel offset of `textureOffset` & co. dropped.
+    OffsetIgnored = "offset-ignored",
+    /// The texel offset applied in texels of the base level at every level (converted once to a
+    /// normalized offset), instead of in texels of the selected level (§8.14.3).
+    OffsetInBaseLevelTexels = "offset-in-base-level-texels",
+    /// The texel offset added to the already wrapped texel index and clamped into the image,
+    /// instead of to u, v before wrapping (REPEAT does not wrap the offset texel).
+    OffsetAfterWrap = "offset-after-wrap",
     // --- level of detail (§8.14) ---
     /// NEAREST-mipmap level selection one level too far (d + 1, clamped to q).
     MipLevelOffByOne = "mip-level-off-by-one",

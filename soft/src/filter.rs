@@ -32,6 +32,8 @@ pub struct Coords {
     pub lambda_base: f32,
     /// Shader bias.
     pub bias: f32,
+    /// Texel offset (δu, δv) of the `*Offset` lookup functions (0 for 1D's δv).
+    pub offset: [i32; 2],
 }
 
 /// Where in the texture one lookup reads: normalized (or, for rectangles, unnormalized) s, t
@@ -87,10 +89,10 @@ impl PreparedTexture {
             obs.reference(dref);
         }
         match choice {
-            LevelChoice::Single { level, linear } => self.sample_level(st, level, linear, &addr, dref, 1.0, obs),
+            LevelChoice::Single { level, linear } => self.sample_level(st, level, linear, &addr, c.offset, dref, 1.0, obs),
             LevelChoice::Blend { d1, d2, frac, linear } => {
-                let t1 = self.sample_level(st, d1, linear, &addr, dref, 1.0 - frac, obs);
-                let t2 = self.sample_level(st, d2, linear, &addr, dref, frac, obs);
+                let t1 = self.sample_level(st, d1, linear, &addr, c.offset, dref, 1.0 - frac, obs);
+                let t2 = self.sample_level(st, d2, linear, &addr, c.offset, dref, frac, obs);
                 (1.0 - frac) * t1 + frac * t2
             }
         }
@@ -238,6 +240,7 @@ impl PreparedTexture {
         level: u32,
         linear: bool,
         a: &Address,
+        offset: [i32; 2],
         dref: f32,
         scale: f32,
         obs: &mut O,
@@ -247,20 +250,41 @@ impl PreparedTexture {
         let target = self.target();
         let rect = target == Target::Rect;
         let (w, h) = (l.width, l.height);
-        // Equation 8.10: u = w_s · s (rectangles: u = s).
-        let u = if rect { a.s } else { a.s * w as f32 };
-        let v = if rect { a.t } else { a.t * h as f32 };
+        let f = st.faults;
+        // Equation 8.10: u = w_s · s + δu with the size of this level (rectangles: u = s + δu).
+        let (du, dv) = if f.has(Fault::OffsetIgnored) {
+            (0.0, 0.0)
+        } else if f.has(Fault::OffsetInBaseLevelTexels) {
+            let b = self.level_desc(st, st.lod.level_base);
+            (
+                offset[0] as f32 * w as f32 / b.width as f32,
+                offset[1] as f32 * h as f32 / b.height as f32,
+            )
+        } else {
+            (offset[0] as f32, offset[1] as f32)
+        };
+        let after_wrap = f.has(Fault::OffsetAfterWrap);
+        let (du, dv) = if after_wrap { (0.0, 0.0) } else { (du, dv) };
+        let u = if rect { a.s + du } else { a.s * w as f32 + du };
+        let v = if rect { a.t + dv } else { a.t * h as f32 + dv };
+        // Fault: the offset added to the wrapped texel index, then clamped into the image.
+        let shift = |i: i64, d: i32, n: u32| -> i64 {
+            if after_wrap && (0..n as i64).contains(&i) {
+                (i + d as i64).clamp(0, n as i64 - 1)
+            } else {
+                i
+            }
+        };
         let one_d = matches!(target, Target::T1d | Target::T1dArray);
         let (ws, wt) = if st.seamless {
             (Wrap::ClampToEdge, Wrap::ClampToEdge)
         } else {
             (st.wrap_s, st.wrap_t)
         };
-        let f = st.faults;
 
         if !linear || f.has(Fault::LinearAsNearest) {
-            let i = wrap::nearest(ws, u, w, f);
-            let j = if one_d { 0 } else { wrap::nearest(wt, v, h, f) };
+            let i = shift(wrap::nearest(ws, u, w, f), offset[0], w);
+            let j = if one_d { 0 } else { shift(wrap::nearest(wt, v, h, f), offset[1], h) };
             let raw = self.fetch(st, l, i, j, layer);
             if O::ACTIVE {
                 self.report(st, obs, level, Self::loc(l, i, j, layer), raw, dref, scale);
@@ -276,7 +300,9 @@ impl PreparedTexture {
             (ws, wt)
         };
         let (i0, i1, alpha) = wrap::linear(ls, u, w, f);
+        let (i0, i1) = (shift(i0, offset[0], w), shift(i1, offset[0], w));
         let (j0, j1, beta) = if one_d { (0, 0, 0.0) } else { wrap::linear(lt, v, h, f) };
+        let (j0, j1) = (shift(j0, offset[1], h), shift(j1, offset[1], h));
         let mut pos = [(i0, j0, layer), (i1, j0, layer), (i0, j1, layer), (i1, j1, layer)];
         let mut missing = None;
         if let (true, Some(face)) = (st.seamless, a.face) {

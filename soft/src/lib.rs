@@ -179,6 +179,7 @@ impl SoftUnit {
             dref,
             lambda_base: l.lod as f32,
             bias: l.bias as f32,
+            offset: [l.offset[0], l.offset[1]],
         })
     }
 
@@ -190,6 +191,13 @@ impl SoftUnit {
         let target = case.texture.target;
         if !path_targets(api, target) {
             return Err(SoftError::Target { api, target });
+        }
+        if case.lookup.offset != [0; 3] && !matches!(api, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300) {
+            // GLSL 1.20, GLSL ES 1.00, fixed function and ARB programs have no offset lookups.
+            return Err(SoftError::Undefined {
+                spec: self.spec,
+                what: "a texel offset on a path without *Offset lookup functions",
+            });
         }
         if api == ApiPath::Es100Ext && case.lookup.bias != 0.0 {
             // EXT_shadow_samplers: shadow2DEXT(sampler, vec3) and shadow2DProjEXT(sampler, vec4) only.

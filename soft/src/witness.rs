@@ -42,6 +42,7 @@ fn case(spec: Spec, w: u32, h: u32, texels: Vec<u32>, func: CompareFunc) -> Case
             projective: false,
             lod: 0.0,
             bias: 0.0,
+            offset: [0; 3],
         },
         expect: None,
     }
@@ -253,6 +254,31 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
             c.lookup.coord[0] = 0.3;
             c
         }
+        Fault::OffsetIgnored => {
+            // s = 0.125 on [1, 0, 0, 0]: texel 0 passes; offset +1 reads texel 1 (Dt 0), which fails.
+            let mut c = gl(vec![65535, 0, 0, 0], 4, C::Lequal);
+            c.lookup.coord[0] = 0.125;
+            c.lookup.offset = [1, 0, 0];
+            c
+        }
+        Fault::OffsetInBaseLevelTexels => {
+            // Level 1 (2x2) = [1, 0 / 1, 0], s = 0.1: u = 0.2 + 1 reads texel 1 (fails); one
+            // base-level texel is half a level-1 texel, u = 0.7 reads texel 0 (passes).
+            let mut c = mips(Filter::NearestMipmapNearest, 1.0);
+            c.texture.levels[1].depth = Texels::Unorm(vec![65535, 0, 65535, 0]);
+            c.lookup.coord[0] = 0.1;
+            c.lookup.offset = [1, 0, 0];
+            c
+        }
+        Fault::OffsetAfterWrap => {
+            // REPEAT, s = 0.875 on [0, 0, 0, 1]: u = 3.5 + 1 wraps to texel 0 (fails); the
+            // faulty unit wraps first (texel 3), then adds 1 and clamps back to texel 3 (passes).
+            let mut c = gl(vec![0, 0, 0, 65535], 4, C::Lequal);
+            c.sampler.wrap_s = Wrap::Repeat;
+            c.lookup.coord[0] = 0.875;
+            c.lookup.offset = [1, 0, 0];
+            c
+        }
         Fault::UnormDividedByPowerOfTwo => {
             let mut c = gl(vec![65535], 1, C::Lequal);
             c.lookup.dref = 1.0;
@@ -297,5 +323,9 @@ mod tests {
         assert_eq!(r(Fault::CubeNegYFlipped)[0], 1.0);
         assert_eq!(r(Fault::MirroredRepeatOffByOne)[0], 0.0); // texel 1 (Dt 0) fails
         assert_eq!(r(Fault::AmbientIgnored), [0.25, 0.25, 0.25, 1.0]);
+        // Texel offsets (GL 4.6 (8.10)): u = w·s + δu at the selected level, then wrap.
+        assert_eq!(r(Fault::OffsetIgnored)[0], 0.0);
+        assert_eq!(r(Fault::OffsetInBaseLevelTexels)[0], 0.0);
+        assert_eq!(r(Fault::OffsetAfterWrap)[0], 0.0);
     }
 }

@@ -97,7 +97,11 @@ impl Draft {
 
     pub fn into_case(self) -> Case {
         let id = self.id();
-        let api = specs::apis(self.cell.spec, self.texture.target, &self.sampler);
+        let mut api = specs::apis(self.cell.spec, self.texture.target, &self.sampler);
+        if self.lookup.offset != [0; 3] {
+            // Only GLSL >= 1.30 and GLSL ES 3.00 have lookup functions with a texel offset.
+            api.retain(|a| matches!(a, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300));
+        }
         Case {
             id,
             spec: self.cell.spec,
@@ -120,6 +124,7 @@ pub fn lookup(target: Target, at: At, w: u32, h: u32, dref: f64) -> Lookup {
         projective: false,
         lod: 0.0,
         bias: 0.0,
+        offset: [0; 3],
     }
 }
 

@@ -5,6 +5,7 @@ pub mod cells;
 pub mod draft;
 pub mod exhaustive;
 pub mod families;
+pub mod offset;
 pub mod specs;
 
 use crate::dsl;
@@ -78,7 +79,8 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             .extend(families::cube(d))
             .extend(families::layer(d))
             .extend(families::incomplete(d))
-            .extend(families::proj(d));
+            .extend(families::proj(d))
+            .extend(offset::offset(d));
     }
     g.extend(families::wrap(d))
         .extend(families::dtm(d))

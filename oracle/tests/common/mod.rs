@@ -77,6 +77,7 @@ pub fn case2d(
             projective: false,
             lod: 0.0,
             bias: 0.0,
+            offset: [0; 3],
         },
         expect: None,
     }

@@ -72,6 +72,9 @@ pub struct Args {
     /// Shader bias.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     bias: f64,
+    /// Texel offset du,dv[,dw] of the GLSL `*Offset` lookups (GLSL >= 1.30 / ES 3.00 paths; -8..=7).
+    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+    offset: Vec<i32>,
     /// TEXTURE_COMPARE_FAIL_VALUE_ARB / SHADOW_AMBIENT_SGIX.
     #[arg(long)]
     fail: Option<f32>,
@@ -164,7 +167,15 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
     for (i, c) in a.coord.iter().enumerate() {
         coord[i] = *c;
     }
-    let api: Vec<ApiPath> = if a.api.is_empty() {
+    if a.offset.len() > 3 {
+        anyhow::bail!("--offset takes at most three components (du,dv,dw), got {}", a.offset.len());
+    }
+    let mut offset = [0; 3];
+    offset[..a.offset.len()].copy_from_slice(&a.offset);
+    let api: Vec<ApiPath> = if a.api.is_empty() && offset != [0; 3] {
+        // Only GLSL >= 1.30 and GLSL ES 3.00 have offset lookups.
+        vec![if spec == Spec::Gles32 { ApiPath::Es300 } else { ApiPath::GlslCore }]
+    } else if a.api.is_empty() {
         vec![default_api(spec, target)]
     } else {
         a.api
@@ -172,7 +183,7 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
             .map(|s| key(s))
             .collect::<anyhow::Result<_>>()?
     };
-    let id = format!(
+    let mut id = format!(
         "explain/{}/{}/{}/{}/{}/ref={}/dt={}",
         spec,
         target,
@@ -185,6 +196,9 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
             .collect::<Vec<_>>()
             .join(",")
     );
+    if offset != [0; 3] {
+        id += &format!("/offset={},{},{}", offset[0], offset[1], offset[2]);
+    }
     Ok(Case {
         id,
         spec,
@@ -209,6 +223,7 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
             projective: a.projective,
             lod: a.lod,
             bias: a.bias,
+            offset,
         },
         expect: None,
     })

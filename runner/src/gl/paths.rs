@@ -128,6 +128,9 @@ pub struct ShaderKey {
     /// DEPTH_TEXTURE_MODE: one program per mode, so that a driver's per-program variant caching
     /// cannot carry one mode's layout into another mode's draws.
     pub mode: Option<DepthTextureMode>,
+    /// Texel offset (δu, δv) of a `*Offset` lookup (a constant expression in GLSL, so part of
+    /// the program); [0, 0]: the plain function.
+    pub offset: [i8; 2],
 }
 
 /// One API path's plan for one case.
@@ -278,6 +281,20 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
     let kind = sampler_kind(case);
     let t = case.texture.target;
     let l = &case.lookup;
+    let offset = if l.offset == [0; 3] {
+        [0, 0]
+    } else if !matches!(path, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300) {
+        return Err(format!("{path} has no lookup function with a texel offset"));
+    } else if t != Target::T2d {
+        // Every form (textureOffset, textureLodOffset, textureGradOffset, textureProj*Offset) exists
+        // for sampler2D / sampler2DShadow in GLSL 1.30+ and GLSL ES 3.00; other targets lack some.
+        return Err(format!("the GL worker draws texel-offset lookups on 2D textures only, not on {t}"));
+    } else {
+        match (i8::try_from(l.offset[0]), i8::try_from(l.offset[1])) {
+            (Ok(a), Ok(b)) => [a, b],
+            _ => return Err(format!("texel offset {:?} out of range", l.offset)),
+        }
+    };
     let proj = l.projective;
     let (lod, bias) = (l.lod as f32, l.bias as f32);
     let forms: Vec<(LodForm, &str)> = if path == ApiPath::FixedFunction {
@@ -331,6 +348,7 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
         form,
         proj,
         mode: case.sampler.depth_texture_mode,
+        offset,
     };
     let folded = matches!(form, LodForm::Lod | LodForm::Grad) && bias != 0.0;
     let lod_eff = if folded { lod + bias } else { lod };
@@ -459,6 +477,7 @@ mod tests {
                 projective: false,
                 lod: 0.0,
                 bias: 0.0,
+                offset: [0; 3],
             },
             expect: None,
         }

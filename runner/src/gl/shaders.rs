@@ -56,12 +56,19 @@ fn modern_call(key: &ShaderKey) -> String {
     let p = p_expr(key.kind, key.target, key.proj);
     let g = grad_swizzle(key.target);
     let cube_array_shadow = key.kind == SamplerKind::Shadow && key.target == Target::CubeArray;
+    // *Offset forms (GLSL 4.60 §8.9.2): the constant offset follows P (and the LOD or the
+    // gradients) and precedes the bias.
+    let (o, oa) = match key.offset {
+        [0, 0] => ("", String::new()),
+        [a, _] if matches!(key.target, Target::T1d | Target::T1dArray) => ("Offset", format!(", {a}")),
+        [a, b] => ("Offset", format!(", ivec2({a}, {b})")),
+    };
     match key.form {
-        LodForm::Lod => format!("texture{s}Lod(u_tex, {p}, u_x)"),
-        LodForm::Grad => format!("texture{s}Grad(u_tex, {p}, u_dx{g}, u_dy{g})"),
-        LodForm::Implicit(true) => format!("texture{s}(u_tex, {p}, u_x)"),
+        LodForm::Lod => format!("texture{s}Lod{o}(u_tex, {p}, u_x{oa})"),
+        LodForm::Grad => format!("texture{s}Grad{o}(u_tex, {p}, u_dx{g}, u_dy{g}{oa})"),
+        LodForm::Implicit(true) => format!("texture{s}{o}(u_tex, {p}{oa}, u_x)"),
         LodForm::Implicit(false) if cube_array_shadow => "texture(u_tex, p, u_x)".to_string(),
-        LodForm::Implicit(false) | LodForm::Constant => format!("texture{s}(u_tex, {p})"),
+        LodForm::Implicit(false) | LodForm::Constant => format!("texture{s}{o}(u_tex, {p}{oa})"),
     }
 }
 
@@ -238,6 +245,7 @@ mod tests {
             form: LodForm::Lod,
             proj: false,
             mode: None,
+            offset: [0, 0],
         };
         assert_eq!(modern_call(&k), "textureLod(u_tex, p.xyz, u_x)");
         let k = ShaderKey {
@@ -256,6 +264,27 @@ mod tests {
             modern_call(&k),
             "textureProjGrad(u_tex, p, u_dx.xy, u_dy.xy)"
         );
+        // *Offset forms: the offset after P / LOD / gradients, before the bias.
+        let k = ShaderKey {
+            target: Target::T2d,
+            offset: [-8, 7],
+            ..k
+        };
+        assert_eq!(
+            modern_call(&k),
+            "textureProjGradOffset(u_tex, p, u_dx.xy, u_dy.xy, ivec2(-8, 7))"
+        );
+        let k = ShaderKey {
+            form: LodForm::Lod,
+            proj: false,
+            ..k
+        };
+        assert_eq!(modern_call(&k), "textureLodOffset(u_tex, p.xyz, u_x, ivec2(-8, 7))");
+        let k = ShaderKey {
+            form: LodForm::Implicit(true),
+            ..k
+        };
+        assert_eq!(modern_call(&k), "textureOffset(u_tex, p.xyz, ivec2(-8, 7), u_x)");
     }
 
     #[test]
@@ -267,6 +296,7 @@ mod tests {
             form: LodForm::Implicit(false),
             proj: true,
             mode: None,
+            offset: [0, 0],
         };
         assert_eq!(legacy_call(&k), "shadow2DRectProj(u_tex, p)");
         let k = ShaderKey {
@@ -286,6 +316,7 @@ mod tests {
             form: LodForm::Implicit(true),
             proj: false,
             mode: None,
+            offset: [0, 0],
         };
         let s = arbfp(&k);
         assert!(

@@ -57,6 +57,9 @@ pub fn about(f: Fault) -> &'static str {
         F::RefNotDividedByQ => "projective divide of the coordinates but not of Dref",
         F::LayerTruncated => "array layer truncated instead of rounded",
         F::CubeNegYFlipped => "cube -Y face t coordinate flipped",
+        F::OffsetIgnored => "texel offset of textureOffset & co. dropped",
+        F::OffsetInBaseLevelTexels => "texel offset in base-level texels at every mip level",
+        F::OffsetAfterWrap => "texel offset added after wrapping (REPEAT does not wrap the offset texel)",
         F::MipLevelOffByOne => "NEAREST-mipmap level off by one",
         F::TrilinearNoBlend => "trilinear filtering without the level blend",
         F::LodBiasIgnored => "TEXTURE_LOD_BIAS ignored",
@@ -107,6 +110,10 @@ pub fn grid_change(f: Fault) -> Option<&'static str> {
         }
         Fault::LayerTruncated => "cases/src/grids/families.rs `layer`: layer coordinates with a fraction of at least 0.5 (e.g. 1.5)",
         Fault::CubeNegYFlipped => "cases/src/grids/families.rs `cube`: -Y face lookups whose rows differ",
+        Fault::OffsetInBaseLevelTexels | Fault::OffsetAfterWrap | Fault::OffsetIgnored => {
+            "cases/src/grids/families.rs `offset`: offset lookups on a mip level above the base and with REPEAT \
+             across the edge"
+        }
         Fault::DtClampedForFloat => {
             "cases/src/grids/families.rs `wrap`: D32F with a border outside [0,1] and a function that tells 1 from 1.5"
         }

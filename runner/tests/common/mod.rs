@@ -79,6 +79,7 @@ pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
             projective: false,
             lod: 0.0,
             bias: 0.0,
+            offset: [0; 3],
         },
         expect: Some(Expectation {
             spec_value: Some(r),

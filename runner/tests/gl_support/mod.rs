@@ -209,6 +209,7 @@ pub fn d16_case(id: &str, spec: Spec, api: &[ApiPath], target: Target, c: u32, d
             projective: false,
             lod: 0.0,
             bias: 0.0,
+            offset: [0; 3],
         },
         expect: None,
     }

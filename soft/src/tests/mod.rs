@@ -44,6 +44,7 @@ pub(super) fn case2d(spec: Spec, format: Format, w: u32, h: u32, texels: Vec<u32
             projective: false,
             lod: 0.0,
             bias: 0.0,
+            offset: [0; 3],
         },
         expect: None,
     }
