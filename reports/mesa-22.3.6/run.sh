@@ -3,7 +3,7 @@
 # Mesa from the distribution: libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers).
 # Run from the repository root:  sh reports/mesa-22.3.6/run.sh [OUTROOT]
 #
-# Binary: commit 2c9456d (runner turns the GL worker's `skipped` paths into Skip with its reason).
+# Binary: the commit that last changed this folder (run.sh is re-run whenever the fixtures change).
 # Fixtures: the committed default set (cases/fixtures).
 #
 # Shader cache: Mesa's on-disk cache is left ON (default: ~/.cache/mesa_shader_cache; the GL worker
@@ -41,3 +41,7 @@ for d in reports/mesa-22.3.6/*/; do
   fl=""; [ -f "$d/flakes.txt" ] && fl="--flakes $d/flakes.txt"
   target/release/shadowcheck run --backend "$b" --baseline "$d/failures.csv" $fl --out "$OUT/check-$(basename "$d")"
 done
+# The HTML report (reports/index.html): every backend of this machine in one run (the main job),
+# then `shadowcheck report` over its results.
+/usr/bin/time -f "all backends %e s" target/release/shadowcheck run --out "$OUT/all" || true
+target/release/shadowcheck report "$OUT/all" -o reports --title "shadowcheck — Mesa 22.3.6 (Debian 12): EGL and OSMesa drivers, with the soft reference"
