@@ -270,3 +270,34 @@ fn core_texel_offsets_are_added_before_wrapping() {
         }
     }
 }
+
+#[test]
+fn core_every_lookup_form_selects_the_levels_of_8_14_3() {
+    // The backend name's fourth part picks textureLod, textureGrad or texture() with derivatives;
+    // λ = 0, 1, 2 and λ = 0 + bias 1 must select level nearest(λ) whichever form realizes it
+    // (GL 4.6 §8.14.1 / §8.14.3): only level 1 holds 1.0.
+    for b in backends("core", false) {
+        for form in ["lod", "grad", "implicit"] {
+            let name = format!("{b}:{form}");
+            let Some(mut s) = Session::start(&name) else {
+                continue;
+            };
+            let mut cases = Vec::new();
+            for (lod, bias, want) in [(0.0, 0.0, 0.0), (1.0, 0.0, 1.0), (2.0, 0.0, 0.0), (0.0, 1.0, 1.0)] {
+                cases.push((mip_case(&format!("{form}/lod={lod}/bias={bias}"), Spec::Gl46, &[ApiPath::GlslCore], Target::T2d, lod, bias), want));
+            }
+            let (cs, want): (Vec<Case>, Vec<f64>) = cases.into_iter().unzip();
+            let answers = s.run(&cs);
+            for ((c, w), a) in cs.iter().zip(want).zip(&answers) {
+                assert_eq!(Session::rgba(a, ApiPath::GlslCore)[0], w, "{name} {}: {a}", c.id);
+                let note = a["results"][0]["note"].as_str().unwrap_or("");
+                let expected_fn = match form {
+                    "lod" => "explicit LOD",
+                    "grad" => "gradients",
+                    _ => "implicit derivatives",
+                };
+                assert!(note.contains(expected_fn), "{name} {}: realized as `{note}`", c.id);
+            }
+        }
+    }
+}

@@ -457,7 +457,7 @@ impl Renderer {
                     });
                     continue;
                 }
-                match paths::plan(path, case) {
+                match paths::plan_with(path, case, self.info.form) {
                     Ok(p) => plans.push(p),
                     Err(reason) => skipped.push(PathSkip { api: path, reason }),
                 }

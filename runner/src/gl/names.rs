@@ -1,4 +1,8 @@
-//! Backend names: `egl:<driver>:<api>` and `osmesa:<driver>:<api>`.
+//! Backend names: `egl:<driver>:<api>[:<form>]` and `osmesa:<driver>:<api>[:<form>]`.
+//!
+//! The optional `<form>` (`lod`, `grad`, `implicit`) says which GLSL lookup function realizes the
+//! level of detail where several exist (`textureLod`, `textureGrad`, `texture` with derivatives);
+//! without it the worker prefers `textureLod` (exact λ), then gradients, then derivatives.
 //!
 //! A name says which window-system layer creates the context (EGL surfaceless or OSMesa), which Mesa
 //! Gallium driver runs it, and which kind of context is asked for. The driver is chosen by
@@ -39,12 +43,41 @@ pub enum ContextApi {
     Es2,
 }
 
+/// Which GLSL lookup function realizes λ when the target has several (GLSL >= 1.30 / ES 3.00
+/// paths only; the legacy paths have one form each).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum LookupForm {
+    /// textureLod, else textureGrad, else texture() with derivatives (the default).
+    #[default]
+    Auto,
+    /// textureLod first.
+    Lod,
+    /// textureGrad first (λ from explicit gradients).
+    Grad,
+    /// texture() first (λ from the derivatives of the coordinates across the pixel quad).
+    Implicit,
+}
+
+impl LookupForm {
+    pub const NAMED: [LookupForm; 3] = [LookupForm::Lod, LookupForm::Grad, LookupForm::Implicit];
+    pub fn key(self) -> &'static str {
+        match self {
+            LookupForm::Auto => "auto",
+            LookupForm::Lod => "lod",
+            LookupForm::Grad => "grad",
+            LookupForm::Implicit => "implicit",
+        }
+    }
+}
+
 /// A parsed backend name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct BackendName {
     pub platform: Platform,
     pub driver: Driver,
     pub api: ContextApi,
+    /// The preferred lookup function (a fourth name part; `Auto` when absent).
+    pub form: LookupForm,
 }
 
 impl Platform {
@@ -113,6 +146,7 @@ impl BackendName {
                         platform,
                         driver,
                         api,
+                        form: LookupForm::Auto,
                     });
                 }
             }
@@ -163,7 +197,11 @@ impl std::fmt::Display for BackendName {
             self.platform.key(),
             self.driver.key(),
             self.api.key()
-        )
+        )?;
+        if self.form != LookupForm::Auto {
+            write!(f, ":{}", self.form.key())?;
+        }
+        Ok(())
     }
 }
 
@@ -175,11 +213,18 @@ impl std::str::FromStr for BackendName {
             why: why.to_string(),
         };
         let parts: Vec<&str> = s.split(':').collect();
-        if parts.len() != 3 {
+        if !(3..=4).contains(&parts.len()) {
             return Err(bad(
-                "expected egl|osmesa:llvmpipe|softpipe|zink:core|compat|es3|es2",
+                "expected egl|osmesa:llvmpipe|softpipe|zink:core|compat|es3|es2[:lod|grad|implicit]",
             ));
         }
+        let form = match parts.get(3) {
+            None => LookupForm::Auto,
+            Some(k) => LookupForm::NAMED
+                .into_iter()
+                .find(|f| f.key() == *k)
+                .ok_or_else(|| bad("the lookup form (fourth part) must be lod, grad or implicit"))?,
+        };
         let platform = match parts[0] {
             "egl" => Platform::Egl,
             "osmesa" => Platform::Osmesa,
@@ -197,6 +242,7 @@ impl std::str::FromStr for BackendName {
             platform,
             driver,
             api,
+            form,
         })
     }
 }
@@ -204,6 +250,17 @@ impl std::str::FromStr for BackendName {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn lookup_form_is_an_optional_fourth_part() {
+        let b: BackendName = "egl:llvmpipe:core:grad".parse().unwrap();
+        assert_eq!((b.api, b.form), (ContextApi::Core, LookupForm::Grad));
+        assert_eq!(b.to_string(), "egl:llvmpipe:core:grad");
+        assert_eq!("egl:llvmpipe:core".parse::<BackendName>().unwrap().form, LookupForm::Auto);
+        let e = "egl:llvmpipe:core:fast".parse::<BackendName>().unwrap_err().to_string();
+        assert!(e.contains("lod, grad or implicit"), "{e}");
+        assert!("egl:llvmpipe:core:grad:x".parse::<BackendName>().is_err());
+    }
 
     #[test]
     fn names_round_trip() {

@@ -13,7 +13,7 @@
 //! Where a sampler type has no bias form but has `Lod`/`Grad`, the bias is folded into the explicit
 //! LOD (same lambda' by §8.14.1, noted in the result). Anything else is skipped with the reason.
 
-use super::names::ContextApi;
+use super::names::{ContextApi, LookupForm};
 use shadowcheck_model::{
     ApiPath, Case, CompareMode, DepthStencilMode, DepthTextureMode, Filter, Target,
 };
@@ -32,6 +32,8 @@ pub struct GlInfo {
     pub renderer: String,
     pub version_string: String,
     pub extensions: HashSet<String>,
+    /// The preferred lookup function (from the backend name).
+    pub form: LookupForm,
 }
 
 impl GlInfo {
@@ -278,6 +280,12 @@ fn constant_coords_equivalent(case: &Case) -> bool {
 
 /// Plans `path` for `case`, or says why it cannot be run.
 pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
+    plan_with(path, case, LookupForm::Auto)
+}
+
+/// [`plan`] with a preferred lookup function: the preferred form is tried first, then the usual
+/// order (the backend name's fourth part, see `names::LookupForm`).
+pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan, String> {
     let kind = sampler_kind(case);
     let t = case.texture.target;
     let l = &case.lookup;
@@ -308,10 +316,19 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
     } else {
         vec![
             (LodForm::Implicit(true), "implicit derivatives with bias"),
-            (LodForm::Lod, "explicit LOD = lod + bias (no bias form)"),
-            (LodForm::Grad, "gradients for lod + bias (no bias form)"),
+            (LodForm::Lod, "explicit LOD = lod + bias"),
+            (LodForm::Grad, "gradients for lod + bias"),
         ]
     };
+    let mut forms = forms;
+    let preferred = |f: &LodForm| match prefer {
+        LookupForm::Auto => false,
+        LookupForm::Lod => *f == LodForm::Lod,
+        LookupForm::Grad => *f == LodForm::Grad,
+        LookupForm::Implicit => matches!(f, LodForm::Implicit(_)),
+    };
+    // Stable: the preferred form first, the others in their usual order.
+    forms.sort_by_key(|(f, _)| !preferred(f));
     let (form, how) = forms
         .into_iter()
         .find(|(f, _)| available(path, kind, t, *f, proj))
@@ -571,6 +588,22 @@ mod tests {
         b.lookup.bias = 1.0;
         let p = plan(ApiPath::GlslCore, &b).unwrap();
         assert_eq!(p.key.form, LodForm::Grad, "bias folded into gradients");
+    }
+
+    #[test]
+    fn a_preferred_lookup_form_goes_first_where_it_exists() {
+        let c = case(Target::T2d, 4, 4, 1);
+        let form = |p| plan_with(ApiPath::GlslCore, &c, p).unwrap().key.form;
+        assert_eq!(form(LookupForm::Auto), LodForm::Lod);
+        assert_eq!(form(LookupForm::Grad), LodForm::Grad);
+        assert_eq!(form(LookupForm::Implicit), LodForm::Implicit(false));
+        // GLSL 1.20 has only the implicit form: the preference cannot change it.
+        assert_eq!(plan_with(ApiPath::Glsl120, &c, LookupForm::Grad).unwrap().key.form, LodForm::Implicit(false));
+        // A shader bias: the bias form by default, the folded LOD when textureLod is preferred.
+        let mut b = c.clone();
+        b.lookup.bias = 1.0;
+        assert_eq!(plan_with(ApiPath::GlslCore, &b, LookupForm::Auto).unwrap().key.form, LodForm::Implicit(true));
+        assert_eq!(plan_with(ApiPath::GlslCore, &b, LookupForm::Lod).unwrap().key.form, LodForm::Lod);
     }
 
     #[test]

@@ -112,6 +112,7 @@ impl Worker {
             renderer,
             version_string,
             extensions: gl.supported_extensions().clone(),
+            form: name.form,
         };
         let legacy = if info.compat {
             Some(Legacy::load(&loader, info.arbfp_shadow())?)
