@@ -9,6 +9,7 @@
 
 use super::legacy::{self, Legacy};
 use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
+use super::programs::Compiled;
 use super::protocol::{PathResult, PathSkip};
 use super::shaders;
 use super::texture;
@@ -33,34 +34,17 @@ pub enum Answer {
     Error(String),
 }
 
-struct Program {
-    program: glow::Program,
-    u_p: Option<glow::UniformLocation>,
-    u_x: Option<glow::UniformLocation>,
-    u_dx: Option<glow::UniformLocation>,
-    u_dy: Option<glow::UniformLocation>,
-    u_c: Option<glow::UniformLocation>,
-    u_base: Option<glow::UniformLocation>,
-    u_count: Option<glow::UniformLocation>,
-}
-
-enum Compiled {
-    Glsl(Program),
-    Arb(u32),
-    Fixed,
-}
-
 /// The GL objects of a worker and its program cache.
 pub struct Renderer {
     pub gl: glow::Context,
     pub info: GlInfo,
-    legacy: Option<Legacy>,
+    pub(super) legacy: Option<Legacy>,
     fbo: glow::Framebuffer,
     vao: glow::VertexArray,
     /// RGBA32F case values for batched draws (unit 1).
     pub(super) params: glow::Texture,
     /// Programs by (key, batched).
-    programs: HashMap<(ShaderKey, bool), Result<Compiled, String>>,
+    pub(super) programs: HashMap<(ShaderKey, bool), Result<Compiled, String>>,
 }
 
 /// A drawn path waiting for read-back.
@@ -190,77 +174,6 @@ impl Renderer {
             params,
             programs: HashMap::new(),
         })
-    }
-
-    unsafe fn compile(&mut self, key: &ShaderKey, batched: bool) -> Result<Compiled, String> {
-        let gl = &self.gl;
-        match key.path {
-            ApiPath::FixedFunction => Ok(Compiled::Fixed),
-            ApiPath::ArbFp => {
-                let l = self
-                    .legacy
-                    .as_ref()
-                    .ok_or("legacy entry points not loaded")?;
-                l.arbfp_program(gl, &shaders::arbfp(key))
-                    .map(Compiled::Arb)
-                    .map_err(|e| e.to_string())
-            }
-            _ => {
-                let (vs, fs) = shaders::glsl(&self.info, key, batched.then_some(FB_SIZE));
-                let program = gl.create_program()?;
-                for (ty, src) in [(glow::VERTEX_SHADER, &vs), (glow::FRAGMENT_SHADER, &fs)] {
-                    let sh = gl.create_shader(ty)?;
-                    gl.shader_source(sh, src);
-                    gl.compile_shader(sh);
-                    if !gl.get_shader_compile_status(sh) {
-                        return Err(format!(
-                            "shader compile failed: {}\n{src}",
-                            gl.get_shader_info_log(sh).trim()
-                        ));
-                    }
-                    gl.attach_shader(program, sh);
-                    gl.delete_shader(sh);
-                }
-                gl.bind_attrib_location(program, 0, "a_pos");
-                gl.link_program(program);
-                if !gl.get_program_link_status(program) {
-                    return Err(format!(
-                        "program link failed: {}\n{fs}",
-                        gl.get_program_info_log(program).trim()
-                    ));
-                }
-                gl.use_program(Some(program));
-                let u = |n: &str| gl.get_uniform_location(program, n);
-                if let Some(t) = u("u_tex") {
-                    gl.uniform_1_i32(Some(&t), 0);
-                }
-                if let Some(t) = u("u_params") {
-                    gl.uniform_1_i32(Some(&t), 1);
-                }
-                Ok(Compiled::Glsl(Program {
-                    program,
-                    u_p: u("u_p"),
-                    u_x: u("u_x"),
-                    u_dx: u("u_dx"),
-                    u_dy: u("u_dy"),
-                    u_c: u("u_c"),
-                    u_base: u("u_base"),
-                    u_count: u("u_count"),
-                }))
-            }
-        }
-    }
-
-    /// Compiles on first use; the program for (key, batched).
-    pub(super) unsafe fn program(&mut self, key: &ShaderKey, batched: bool) -> Result<(), String> {
-        if !self.programs.contains_key(&(*key, batched)) {
-            let c = self.compile(key, batched);
-            self.programs.insert((*key, batched), c);
-        }
-        match self.programs.get(&(*key, batched)) {
-            Some(Err(e)) => Err(e.clone()),
-            _ => Ok(()),
-        }
     }
 
     /// One batched draw: cases' values are in the parameter texture, written at `slot0..slot0+n`.

@@ -14,6 +14,7 @@ pub mod draw;
 pub mod legacy;
 pub mod names;
 pub mod paths;
+mod programs;
 pub mod protocol;
 pub mod shaders;
 pub mod state;

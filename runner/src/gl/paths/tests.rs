@@ -1,0 +1,175 @@
+//! Unit tests of the per-path plans: lookup forms, P layout, gradients, fixed-function coordinates.
+use super::*;
+use shadowcheck_model::*;
+
+fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
+    Case {
+        id: "t".into(),
+        spec: Spec::Gl46,
+        api: vec![ApiPath::GlslCore],
+        texture: Texture {
+            target,
+            format: Format::D16,
+            base_level: 0,
+            levels: vec![Level {
+                width: w,
+                height: h,
+                layers,
+                depth: Texels::Unorm(vec![0; (w * h * layers) as usize]),
+                stencil: None,
+            }],
+        },
+        sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
+        lookup: Lookup {
+            coord: [0.5, 0.5, 0.5, 1.0],
+            layer: 0.0,
+            dref: 0.5,
+            projective: false,
+            lod: 0.0,
+            bias: 0.0,
+            offset: [0; 3],
+        },
+        expect: None,
+    }
+}
+
+#[test]
+fn glsl_function_availability_follows_the_language_tables() {
+    use LodForm::*;
+    // GLSL 4.60 §8.9.2: textureLod exists for 1D/2D/1DArray shadow only; no textureGrad on cube array shadow.
+    assert!(available(
+        ApiPath::GlslCore,
+        SamplerKind::Shadow,
+        Target::T2d,
+        Lod,
+        true
+    ));
+    assert!(!available(
+        ApiPath::GlslCore,
+        SamplerKind::Shadow,
+        Target::Cube,
+        Lod,
+        false
+    ));
+    assert!(available(
+        ApiPath::GlslCore,
+        SamplerKind::Shadow,
+        Target::Cube,
+        Grad,
+        false
+    ));
+    assert!(!available(
+        ApiPath::GlslCore,
+        SamplerKind::Shadow,
+        Target::CubeArray,
+        Grad,
+        false
+    ));
+    assert!(!available(
+        ApiPath::GlslCore,
+        SamplerKind::Shadow,
+        Target::T2dArray,
+        Implicit(true),
+        false
+    ));
+    // GLSL ES 3.00 has no 1D or rectangle samplers.
+    assert!(!available(
+        ApiPath::Es300,
+        SamplerKind::Shadow,
+        Target::T1d,
+        Implicit(false),
+        false
+    ));
+    // Projective forms exist for 1D, 2D and rect only.
+    assert!(!available(
+        ApiPath::GlslCore,
+        SamplerKind::Shadow,
+        Target::Cube,
+        Grad,
+        true
+    ));
+    // Fixed-function shadow: 1D, 2D, rect.
+    assert!(available(
+        ApiPath::FixedFunction,
+        SamplerKind::Shadow,
+        Target::Rect,
+        Constant,
+        false
+    ));
+    assert!(!available(
+        ApiPath::FixedFunction,
+        SamplerKind::Shadow,
+        Target::Cube,
+        Constant,
+        false
+    ));
+}
+
+#[test]
+fn plan_prefers_explicit_lod_and_puts_dref_where_the_language_wants_it() {
+    let c = case(Target::T2d, 4, 4, 1);
+    let p = plan(ApiPath::GlslCore, &c).unwrap();
+    assert_eq!(p.key.form, LodForm::Lod);
+    assert_eq!(p.p, [0.5, 0.5, 0.5, 1.0]);
+    let mut ca = case(Target::CubeArray, 4, 4, 12);
+    ca.lookup.layer = 1.0;
+    ca.lookup.dref = 0.25;
+    let p = plan(ApiPath::GlslCore, &ca).unwrap();
+    assert_eq!(p.key.form, LodForm::Implicit(false));
+    assert_eq!((p.p[3], p.x), (1.0, 0.25));
+    let mut b = case(Target::T2dArray, 4, 4, 2);
+    b.lookup.bias = 1.0;
+    let p = plan(ApiPath::GlslCore, &b).unwrap();
+    assert_eq!(p.key.form, LodForm::Grad, "bias folded into gradients");
+}
+
+#[test]
+fn a_preferred_lookup_form_goes_first_where_it_exists() {
+    let c = case(Target::T2d, 4, 4, 1);
+    let form = |p| plan_with(ApiPath::GlslCore, &c, p).unwrap().key.form;
+    assert_eq!(form(LookupForm::Auto), LodForm::Lod);
+    assert_eq!(form(LookupForm::Grad), LodForm::Grad);
+    assert_eq!(form(LookupForm::Implicit), LodForm::Implicit(false));
+    // GLSL 1.20 has only the implicit form: the preference cannot change it.
+    assert_eq!(plan_with(ApiPath::Glsl120, &c, LookupForm::Grad).unwrap().key.form, LodForm::Implicit(false));
+    // A shader bias: the bias form by default, the folded LOD when textureLod is preferred.
+    let mut b = c.clone();
+    b.lookup.bias = 1.0;
+    assert_eq!(plan_with(ApiPath::GlslCore, &b, LookupForm::Auto).unwrap().key.form, LodForm::Implicit(true));
+    assert_eq!(plan_with(ApiPath::GlslCore, &b, LookupForm::Lod).unwrap().key.form, LodForm::Lod);
+}
+
+#[test]
+fn gradients_give_rho_two_to_the_lod() {
+    let c = case(Target::T2d, 8, 4, 1);
+    let (dx, dy) = gradients(&c, 1.0);
+    assert_eq!((dx[0] * 8.0, dy[1] * 4.0), (2.0, 2.0));
+    let mut cube = case(Target::Cube, 4, 4, 6);
+    cube.lookup.coord = [0.1, -0.2, -2.0, 1.0];
+    let (dx, dy) = gradients(&cube, 0.0);
+    // major axis r (|ma| = 2): one texel of a 4-wide face is 2*|ma|/4 in direction units.
+    assert_eq!((dx[0], dy[1], dx[2], dy[2]), (1.0, 1.0, 0.0, 0.0));
+}
+
+#[test]
+fn fixed_function_keeps_exact_coordinates_unless_lambda_matters() {
+    let mut c = case(Target::T2d, 4, 4, 1);
+    c.api = vec![ApiPath::FixedFunction];
+    assert_eq!(
+        plan(ApiPath::FixedFunction, &c).unwrap().key.form,
+        LodForm::Constant
+    );
+    c.sampler.min_filter = Filter::LinearMipmapLinear;
+    c.lookup.lod = 1.0;
+    c.lookup.bias = 0.5;
+    let p = plan(ApiPath::FixedFunction, &c).unwrap();
+    // lambda_base = 1 from gradients of 2 texels per pixel; the bias goes to the texture unit.
+    assert_eq!(
+        (p.key.form, p.x, p.dx[0] * 4.0),
+        (LodForm::Implicit(true), 0.5, 2.0)
+    );
+    c.texture.target = Target::Cube;
+    assert!(plan(ApiPath::FixedFunction, &c)
+        .unwrap_err()
+        .contains("cube"));
+}
