@@ -1,6 +1,7 @@
 //! The `offset` family: texel offsets of the GLSL `*Offset` lookup functions (GL 4.6 §8.14.2
 //! (8.10), §8.14.3; GLSL 4.60 §8.9.2 `textureOffset`), for the specs whose shading language has them
-//! (GL 3.0+ core / GLSL 1.30, GLES 3.x).
+//! (GL 3.0+ core / GLSL 1.30, GLES 3.x): 2D in depth (wraps, LINEAR, mip levels, projective), then
+//! 1D, rectangle and array textures.
 //!
 //! Every texture is "one-hot": the texel the offset lookup should read holds 0.75, every other
 //! texel 0.25, and Dref is 0.5, so LEQUAL gives 1 exactly when the right texel is read (and NONE
@@ -167,6 +168,72 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
             lk,
             format!("proj/q=2/texel={i},{j}/offset={},{}/ref=0.5", o[0], o[1]),
         ));
+    }
+    out.extend(other_targets(d));
+    out
+}
+
+/// The other targets with offset lookups (GLSL 4.60 §8.9.2; not cube maps): 1D, rectangle and the
+/// arrays (GL), the 2D array (ES). NEAREST, LEQUAL, from texel (1, 2) (1D: texel 1) of the sampled
+/// image (arrays: layer 1, whose other layer is all cold), CLAMP_TO_EDGE and, except rectangles
+/// (which have no REPEAT), REPEAT.
+fn other_targets(d: &SpecDims) -> Vec<Draft> {
+    let targets: &[Target] = match d.spec {
+        Spec::Gl46 => &[Target::T1d, Target::Rect, Target::T1dArray, Target::T2dArray],
+        _ => &[Target::T2dArray],
+    };
+    let mut out = Vec::new();
+    for &target in targets.iter().filter(|t| d.targets.contains(t)) {
+        let c = Cell {
+            spec: d.spec,
+            target,
+            format: fixed_fmt(d),
+            filter: Filter::Nearest,
+            mode: CompareMode::Compare,
+            func: main_func(d),
+            dtm: None,
+        };
+        let one_d = target.dims() == 1;
+        let (layers, layer) = if target.is_array() { (2u32, 1u32) } else { (1, 0) };
+        let (w, h) = if one_d { (SIZE, 1) } else { (SIZE, SIZE) };
+        let (i, j) = if one_d { (1i64, 0i64) } else { (1, 2) };
+        let offsets: &[[i32; 2]] = if one_d { &[[1, 0], [-1, 0], [2, 0], [-8, 0]] } else { &[[1, 0], [-1, -1], [2, -1], [7, -8]] };
+        let wraps: &[Wrap] = if target == Target::Rect { &[Wrap::ClampToEdge] } else { &[Wrap::ClampToEdge, Wrap::Repeat] };
+        for &wrap in wraps {
+            for &o in offsets {
+                let hot = (wrapped(i, o[0], w, wrap), if one_d { 0 } else { wrapped(j, o[1], h, wrap) });
+                let hot_k = (hot.0 + hot.1 * w as i64) as usize + (layer * w * h) as usize;
+                let vals: Vec<f64> = (0..(w * h * layers) as usize).map(|k| if k == hot_k { HOT } else { COLD }).collect();
+                let tex = Texture {
+                    target,
+                    format: c.format,
+                    base_level: 0,
+                    levels: vec![build::level(c.format, w, h, layers, &vals)],
+                };
+                let at = build::At {
+                    s: (i as f64 + 0.5) / w as f64,
+                    t: (j as f64 + 0.5) / h as f64,
+                    layer: layer as f64,
+                    face: 0,
+                };
+                let (coord, lk_layer) = build::coord(target, at, w, h);
+                let lk = Lookup {
+                    coord,
+                    layer: lk_layer,
+                    dref: 0.5,
+                    projective: false,
+                    lod: 0.0,
+                    bias: 0.0,
+                    offset: [o[0], o[1], 0],
+                };
+                let pos = if one_d { format!("{i}") } else { format!("{i},{j}") };
+                let off = if one_d { format!("{}", o[0]) } else { format!("{},{}", o[0], o[1]) };
+                let mut x = Draft::new("offset", c, tex, lk, format!("wrap={wrap}/texel={pos}/offset={off}/ref=0.5"));
+                x.sampler.wrap_s = wrap;
+                x.sampler.wrap_t = wrap;
+                out.push(x);
+            }
+        }
     }
     out
 }

@@ -252,6 +252,24 @@ pub fn available(
 }
 
 /// The `c` of GL 4.6 §8.14 (mag/min switch-over point).
+/// Does the `*Offset` variant of this lookup exist (GLSL 4.60 §8.9.2, GLSL ES 3.00 §8.8)? The
+/// 2D, 1D and 1D-array shadow samplers have every form; sampler2DRectShadow has no LOD form and
+/// its textureOffset no bias; sampler2DArrayShadow has only textureGradOffset (its textureOffset
+/// came with GLSL 4.30, later than the versions the worker writes); ES has offsets on 2D and 2D
+/// arrays only. Cube maps take none.
+pub fn offset_available(path: ApiPath, kind: SamplerKind, target: Target, form: LodForm) -> bool {
+    use Target::*;
+    let shadow = kind == SamplerKind::Shadow;
+    let es = path == ApiPath::Es300;
+    match target {
+        Cube | CubeArray => false,
+        T2d => true,
+        T1d | T1dArray => !es,
+        Rect => !es && matches!(form, LodForm::Grad | LodForm::Implicit(false)),
+        T2dArray => !shadow || form == LodForm::Grad,
+    }
+}
+
 fn switch_over(case: &Case) -> f64 {
     let s = &case.sampler;
     if s.mag_filter == Filter::Linear
@@ -293,10 +311,8 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
         [0, 0]
     } else if !matches!(path, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300) {
         return Err(format!("{path} has no lookup function with a texel offset"));
-    } else if t != Target::T2d {
-        // Every form (textureOffset, textureLodOffset, textureGradOffset, textureProj*Offset) exists
-        // for sampler2D / sampler2DShadow in GLSL 1.30+ and GLSL ES 3.00; other targets lack some.
-        return Err(format!("the GL worker draws texel-offset lookups on 2D textures only, not on {t}"));
+    } else if t.is_cube() {
+        return Err("cube map lookups take no texel offset".to_string());
     } else {
         match (i8::try_from(l.offset[0]), i8::try_from(l.offset[1])) {
             (Ok(a), Ok(b)) => [a, b],
@@ -331,7 +347,7 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
     forms.sort_by_key(|(f, _)| !preferred(f));
     let (form, how) = forms
         .into_iter()
-        .find(|(f, _)| available(path, kind, t, *f, proj))
+        .find(|(f, _)| available(path, kind, t, *f, proj) && (offset == [0, 0] || offset_available(path, kind, t, *f)))
         .ok_or_else(|| {
             format!(
                 "{} has no {}{:?} lookup on a {} texture{}",
