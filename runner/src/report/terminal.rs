@@ -47,8 +47,13 @@ impl Reporter for TerminalReporter {
                 }
             }
             Event::LoadError(e) => {
-                let case = e.case.as_deref().map(|c| format!(" case `{c}`")).unwrap_or_default();
-                self.err_line(&format!("error: {}{case}: {}", e.file, e.message));
+                // The loader's messages usually name the file and the case already.
+                if e.message.starts_with(&e.file) {
+                    self.err_line(&format!("error: {}", e.message));
+                } else {
+                    let case = e.case.as_deref().map(|c| format!(" case `{c}`")).unwrap_or_default();
+                    self.err_line(&format!("error: {}{case}: {}", e.file, e.message));
+                }
             }
             Event::BackendStarted { backend, .. } => {
                 if let Some(b) = &self.bar {
