@@ -8,10 +8,10 @@
 //! returns 0.75). The hot texel is placed by the rule the cases test (u = w·s + δu in the texels of
 //! the sampled level, then wrap); the expectation still comes from the oracle.
 
-use super::draft::{Cell, Draft};
-use super::families::{fixed_fmt, main_func};
+use super::draft::{lookup, texture, Cell, Draft};
+use super::families::{cell, fixed_fmt, main_func};
 use super::specs::SpecDims;
-use crate::build;
+use crate::build::{self, At};
 use shadowcheck_model::*;
 
 const HOT: f64 = 0.75;
@@ -32,33 +32,34 @@ fn wrapped(i: i64, d: i32, n: u32, wrap: Wrap) -> i64 {
     }
 }
 
-/// A `w`×`h` level of `format` with the hot texel at (hx, hy).
-fn one_hot(format: Format, w: u32, h: u32, hot: Option<(i64, i64)>) -> Level {
-    let vals: Vec<f64> = (0..(w * h) as i64)
-        .map(|k| if hot == Some((k % w as i64, k / w as i64)) { HOT } else { COLD })
+/// A `w`×`h`×`layers` level of `format` whose only hot texel is (x, y) of layer `l`.
+fn one_hot(format: Format, w: u32, h: u32, layers: u32, hot: Option<(i64, i64, u32)>) -> Level {
+    let vals: Vec<f64> = (0..(w * h * layers) as i64)
+        .map(|k| {
+            let (x, y, l) = (k % w as i64, k / w as i64 % h as i64, (k / (w * h) as i64) as u32);
+            if hot == Some((x, y, l)) {
+                HOT
+            } else {
+                COLD
+            }
+        })
         .collect();
-    build::level(format, w, h, 1, &vals)
+    build::level(format, w, h, layers, &vals)
 }
 
-fn lookup_at(s: f64, t: f64, dref: f64, offset: [i32; 2]) -> Lookup {
-    Lookup {
-        coord: [s, t, 0.0, 1.0],
-        layer: 0.0,
-        dref,
-        projective: false,
-        lod: 0.0,
-        bias: 0.0,
-        offset: [offset[0], offset[1], 0],
-    }
+/// The lookup at `at` with Dref 0.5 and texel offset `o` (δw = 0).
+fn offset_lookup(target: Target, at: At, w: u32, h: u32, o: [i32; 2]) -> Lookup {
+    let mut l = lookup(target, at, w, h, 0.5);
+    l.offset = [o[0], o[1], 0];
+    l
 }
 
-fn texture(cell: &Cell, levels: Vec<Level>) -> Texture {
-    Texture {
-        target: Target::T2d,
-        format: cell.format,
-        base_level: 0,
-        levels,
-    }
+/// An `offset` draft with `wrap` on s and t.
+fn wrap_draft(c: Cell, tex: Texture, lk: Lookup, wrap: Wrap, tags: String) -> Draft {
+    let mut x = Draft::new("offset", c, tex, lk, tags);
+    x.sampler.wrap_s = wrap;
+    x.sampler.wrap_t = wrap;
+    x
 }
 
 /// The offset family of spec `d` (empty for specs without offset lookups).
@@ -67,70 +68,48 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
         return Vec::new();
     }
     let mut out = Vec::new();
-    let cell = |filter: Filter, mode: CompareMode| Cell {
-        spec: d.spec,
-        target: Target::T2d,
-        format: fixed_fmt(d),
-        filter,
+    let cell2d = |filter: Filter, mode: CompareMode| Cell {
         mode,
-        func: main_func(d),
-        dtm: None,
+        ..cell(d, Target::T2d, fixed_fmt(d), filter, main_func(d))
     };
+    let centre = |i: i64, j: i64, dx: f64| At::st((i as f64 + 0.5 + dx) / SIZE as f64, (j as f64 + 0.5) / SIZE as f64);
     // Level 0, NEAREST: from texel (1, 2), every offset, clamped and repeated; LEQUAL and NONE.
     let (i, j) = (1i64, 2i64);
     for wrap in [Wrap::ClampToEdge, Wrap::Repeat] {
         for mode in [CompareMode::Compare, CompareMode::None] {
-            let c = cell(Filter::Nearest, mode);
+            let c = cell2d(Filter::Nearest, mode);
             for o in OFFSETS {
-                let hot = (wrapped(i, o[0], SIZE, wrap), wrapped(j, o[1], SIZE, wrap));
-                let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, Some(hot))]);
-                let (s, t) = ((i as f64 + 0.5) / SIZE as f64, (j as f64 + 0.5) / SIZE as f64);
-                let mut x = Draft::new(
-                    "offset",
-                    c,
-                    tex,
-                    lookup_at(s, t, 0.5, o),
-                    format!("wrap={wrap}/texel={i},{j}/offset={},{}/ref=0.5", o[0], o[1]),
-                );
-                x.sampler.wrap_s = wrap;
-                x.sampler.wrap_t = wrap;
-                out.push(x);
+                let hot = (wrapped(i, o[0], SIZE, wrap), wrapped(j, o[1], SIZE, wrap), 0);
+                let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, Some(hot))]);
+                let lk = offset_lookup(Target::T2d, centre(i, j, 0.0), SIZE, SIZE, o);
+                out.push(wrap_draft(c, tex, lk, wrap, format!("wrap={wrap}/texel={i},{j}/offset={},{}/ref=0.5", o[0], o[1])));
             }
         }
     }
     // LINEAR (PCF) a quarter texel right of the centre of texel (1, 2): the hot texel (the offset
     // one) weighs 3/4; with the footprint of the offset, 1/4 of the next texel.
     for wrap in [Wrap::ClampToEdge, Wrap::Repeat] {
-        let c = cell(Filter::Linear, CompareMode::Compare);
+        let c = cell2d(Filter::Linear, CompareMode::Compare);
         for o in [[1, 0], [-1, -1], [7, -8]] {
-            let hot = (wrapped(i, o[0], SIZE, wrap), wrapped(j, o[1], SIZE, wrap));
-            let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, Some(hot))]);
-            let (s, t) = ((i as f64 + 0.75) / SIZE as f64, (j as f64 + 0.5) / SIZE as f64);
-            let mut x = Draft::new(
-                "offset",
-                c,
-                tex,
-                lookup_at(s, t, 0.5, o),
-                format!("wrap={wrap}/texel={i}.25,{j}/offset={},{}/ref=0.5", o[0], o[1]),
-            );
-            x.sampler.wrap_s = wrap;
-            x.sampler.wrap_t = wrap;
-            out.push(x);
+            let hot = (wrapped(i, o[0], SIZE, wrap), wrapped(j, o[1], SIZE, wrap), 0);
+            let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, Some(hot))]);
+            let lk = offset_lookup(Target::T2d, centre(i, j, 0.25), SIZE, SIZE, o);
+            out.push(wrap_draft(c, tex, lk, wrap, format!("wrap={wrap}/texel={i}.25,{j}/offset={},{}/ref=0.5", o[0], o[1])));
         }
     }
     // Level 1 (2x2) of a 4x4 chain, at s = t = 0.1 (u = v = 0.2): offset +1 reads texel 1 of level
     // 1; read in base-level texels it would be half a texel and stay on texel 0. Explicit LOD 1
     // (textureLodOffset) and, where the spec has the shader bias, LOD 0 + bias 1 (textureOffset).
     for &filter in d.filters.iter().filter(|f| matches!(f, Filter::NearestMipmapNearest | Filter::LinearMipmapNearest)) {
-        let c = cell(filter, CompareMode::Compare);
+        let c = cell2d(filter, CompareMode::Compare);
         for o in [[1, 0], [0, 1], [1, 1]] {
-            let hot = (o[0] as i64, o[1] as i64);
+            let hot = (o[0] as i64, o[1] as i64, 0);
             let tex = texture(
                 &c,
                 vec![
-                    one_hot(c.format, SIZE, SIZE, None),
-                    one_hot(c.format, SIZE / 2, SIZE / 2, Some(hot)),
-                    one_hot(c.format, 1, 1, None),
+                    one_hot(c.format, SIZE, SIZE, 1, None),
+                    one_hot(c.format, SIZE / 2, SIZE / 2, 1, Some(hot)),
+                    one_hot(c.format, 1, 1, 1, None),
                 ],
             );
             let mut forms: Vec<(&str, f64, f64)> = vec![("lod=1", 1.0, 0.0)];
@@ -138,7 +117,7 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
                 forms.push(("lod=0/bias=1", 0.0, 1.0));
             }
             for (name, lod, bias) in forms {
-                let mut lk = lookup_at(0.1, 0.1, 0.5, o);
+                let mut lk = offset_lookup(Target::T2d, At::st(0.1, 0.1), SIZE, SIZE, o);
                 lk.lod = lod;
                 lk.bias = bias;
                 out.push(Draft::new(
@@ -152,14 +131,14 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
         }
     }
     // Projective (textureProjOffset): P = (s, t, Dref, 1)·q with q = 2.
-    let c = cell(Filter::Nearest, CompareMode::Compare);
+    let c = cell2d(Filter::Nearest, CompareMode::Compare);
     for o in [[1, 0], [-1, 1]] {
-        let hot = (wrapped(i, o[0], SIZE, Wrap::ClampToEdge), wrapped(j, o[1], SIZE, Wrap::ClampToEdge));
-        let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, Some(hot))]);
-        let (s, t) = ((i as f64 + 0.5) / SIZE as f64, (j as f64 + 0.5) / SIZE as f64);
+        let hot = (wrapped(i, o[0], SIZE, Wrap::ClampToEdge), wrapped(j, o[1], SIZE, Wrap::ClampToEdge), 0);
+        let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, Some(hot))]);
         let q = 2.0;
-        let mut lk = lookup_at(s * q, t * q, 0.5 * q, o);
-        lk.coord[3] = q;
+        let mut lk = offset_lookup(Target::T2d, centre(i, j, 0.0), SIZE, SIZE, o);
+        lk.coord = [lk.coord[0] * q, lk.coord[1] * q, 0.0, q];
+        lk.dref *= q;
         lk.projective = true;
         out.push(Draft::new(
             "offset",
@@ -184,15 +163,7 @@ fn other_targets(d: &SpecDims) -> Vec<Draft> {
     };
     let mut out = Vec::new();
     for &target in targets.iter().filter(|t| d.targets.contains(t)) {
-        let c = Cell {
-            spec: d.spec,
-            target,
-            format: fixed_fmt(d),
-            filter: Filter::Nearest,
-            mode: CompareMode::Compare,
-            func: main_func(d),
-            dtm: None,
-        };
+        let c = cell(d, target, fixed_fmt(d), Filter::Nearest, main_func(d));
         let one_d = target.dims() == 1;
         let (layers, layer) = if target.is_array() { (2u32, 1u32) } else { (1, 0) };
         let (w, h) = if one_d { (SIZE, 1) } else { (SIZE, SIZE) };
@@ -201,37 +172,18 @@ fn other_targets(d: &SpecDims) -> Vec<Draft> {
         let wraps: &[Wrap] = if target == Target::Rect { &[Wrap::ClampToEdge] } else { &[Wrap::ClampToEdge, Wrap::Repeat] };
         for &wrap in wraps {
             for &o in offsets {
-                let hot = (wrapped(i, o[0], w, wrap), if one_d { 0 } else { wrapped(j, o[1], h, wrap) });
-                let hot_k = (hot.0 + hot.1 * w as i64) as usize + (layer * w * h) as usize;
-                let vals: Vec<f64> = (0..(w * h * layers) as usize).map(|k| if k == hot_k { HOT } else { COLD }).collect();
-                let tex = Texture {
-                    target,
-                    format: c.format,
-                    base_level: 0,
-                    levels: vec![build::level(c.format, w, h, layers, &vals)],
-                };
-                let at = build::At {
+                let hot = (wrapped(i, o[0], w, wrap), if one_d { 0 } else { wrapped(j, o[1], h, wrap) }, layer);
+                let tex = texture(&c, vec![one_hot(c.format, w, h, layers, Some(hot))]);
+                let at = At {
                     s: (i as f64 + 0.5) / w as f64,
                     t: (j as f64 + 0.5) / h as f64,
                     layer: layer as f64,
                     face: 0,
                 };
-                let (coord, lk_layer) = build::coord(target, at, w, h);
-                let lk = Lookup {
-                    coord,
-                    layer: lk_layer,
-                    dref: 0.5,
-                    projective: false,
-                    lod: 0.0,
-                    bias: 0.0,
-                    offset: [o[0], o[1], 0],
-                };
+                let lk = offset_lookup(target, at, w, h, o);
                 let pos = if one_d { format!("{i}") } else { format!("{i},{j}") };
                 let off = if one_d { format!("{}", o[0]) } else { format!("{},{}", o[0], o[1]) };
-                let mut x = Draft::new("offset", c, tex, lk, format!("wrap={wrap}/texel={pos}/offset={off}/ref=0.5"));
-                x.sampler.wrap_s = wrap;
-                x.sampler.wrap_t = wrap;
-                out.push(x);
+                out.push(wrap_draft(c, tex, lk, wrap, format!("wrap={wrap}/texel={pos}/offset={off}/ref=0.5")));
             }
         }
     }

@@ -133,29 +133,7 @@ unsafe fn draw_loop(
         return Err(format!("wrong driver: GL_RENDERER is `{renderer}`"));
     }
     // Framebuffer: RGBA32F like the worker's result buffer.
-    let color = gl.create_texture()?;
-    gl.bind_texture(glow::TEXTURE_2D, Some(color));
-    gl.tex_image_2d(
-        glow::TEXTURE_2D,
-        0,
-        glow::RGBA32F as i32,
-        size,
-        size,
-        0,
-        glow::RGBA,
-        glow::FLOAT,
-        glow::PixelUnpackData::Slice(None),
-    );
-    gl.tex_parameter_i32(
-        glow::TEXTURE_2D,
-        glow::TEXTURE_MIN_FILTER,
-        glow::NEAREST as i32,
-    );
-    gl.tex_parameter_i32(
-        glow::TEXTURE_2D,
-        glow::TEXTURE_MAG_FILTER,
-        glow::NEAREST as i32,
-    );
+    let color = crate::gl::texture::rgba32f(gl, size, size)?;
     let fbo = gl.create_framebuffer()?;
     gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
     gl.framebuffer_texture_2d(

@@ -87,29 +87,7 @@ impl Renderer {
         info: GlInfo,
         legacy: Option<Legacy>,
     ) -> Result<Renderer, GlError> {
-        let color = gl.create_texture().map_err(GlError::Gl)?;
-        gl.bind_texture(glow::TEXTURE_2D, Some(color));
-        gl.tex_image_2d(
-            glow::TEXTURE_2D,
-            0,
-            glow::RGBA32F as i32,
-            FB_SIZE,
-            FB_SIZE,
-            0,
-            glow::RGBA,
-            glow::FLOAT,
-            glow::PixelUnpackData::Slice(None),
-        );
-        gl.tex_parameter_i32(
-            glow::TEXTURE_2D,
-            glow::TEXTURE_MIN_FILTER,
-            glow::NEAREST as i32,
-        );
-        gl.tex_parameter_i32(
-            glow::TEXTURE_2D,
-            glow::TEXTURE_MAG_FILTER,
-            glow::NEAREST as i32,
-        );
+        let color = texture::rgba32f(&gl, FB_SIZE, FB_SIZE).map_err(GlError::Gl)?;
         let fbo = gl.create_framebuffer().map_err(GlError::Gl)?;
         gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
         gl.framebuffer_texture_2d(
@@ -138,31 +116,9 @@ impl Renderer {
         gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
         gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
         gl.disable(glow::DITHER);
-        let params = gl.create_texture().map_err(GlError::Gl)?;
         gl.active_texture(glow::TEXTURE1);
-        gl.bind_texture(glow::TEXTURE_2D, Some(params));
         let rows = CAPACITY as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
-        gl.tex_image_2d(
-            glow::TEXTURE_2D,
-            0,
-            glow::RGBA32F as i32,
-            shaders::PARAM_WIDTH,
-            rows,
-            0,
-            glow::RGBA,
-            glow::FLOAT,
-            glow::PixelUnpackData::Slice(None),
-        );
-        gl.tex_parameter_i32(
-            glow::TEXTURE_2D,
-            glow::TEXTURE_MIN_FILTER,
-            glow::NEAREST as i32,
-        );
-        gl.tex_parameter_i32(
-            glow::TEXTURE_2D,
-            glow::TEXTURE_MAG_FILTER,
-            glow::NEAREST as i32,
-        );
+        let params = texture::rgba32f(&gl, shaders::PARAM_WIDTH, rows).map_err(GlError::Gl)?;
         gl.active_texture(glow::TEXTURE0);
         texture::check(&gl, "framebuffer setup")?;
         Ok(Renderer {

@@ -242,6 +242,31 @@ pub fn error_name(e: u32) -> String {
 }
 
 /// Turns a pending GL error into `GlError::Gl` naming `what`.
+/// A `w`×`h` RGBA32F texture with NEAREST filtering, bound to TEXTURE_2D of the active unit: the
+/// result framebuffer's colour buffer and the parameter texture of batched draws.
+///
+/// # Safety
+/// `gl` must be current on this thread.
+pub unsafe fn rgba32f(gl: &glow::Context, w: i32, h: i32) -> Result<glow::Texture, String> {
+    let t = gl.create_texture()?;
+    gl.bind_texture(glow::TEXTURE_2D, Some(t));
+    gl.tex_image_2d(
+        glow::TEXTURE_2D,
+        0,
+        glow::RGBA32F as i32,
+        w,
+        h,
+        0,
+        glow::RGBA,
+        glow::FLOAT,
+        glow::PixelUnpackData::Slice(None),
+    );
+    for pname in [glow::TEXTURE_MIN_FILTER, glow::TEXTURE_MAG_FILTER] {
+        gl.tex_parameter_i32(glow::TEXTURE_2D, pname, glow::NEAREST as i32);
+    }
+    Ok(t)
+}
+
 pub fn check(gl: &glow::Context, what: &str) -> Result<(), GlError> {
     match check_err(gl) {
         None => Ok(()),

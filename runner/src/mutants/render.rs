@@ -116,11 +116,7 @@ pub fn readme_section(r: &MutantsReport) -> String {
     let _ = writeln!(out, "| # | mutant | modelled on | result | minimal killing case | API |");
     let _ = writeln!(out, "|---:|---|---|---|---|---|");
     for (i, m) in r.mutants.iter().enumerate() {
-        let result = match m.status {
-            KillStatus::Killed => "killed".to_string(),
-            _ if m.unobservable.is_some() => format!("{} (unobservable)", m.status.as_str()),
-            s => format!("**{}**", s.as_str()),
-        };
+        let result = result_cell(m);
         let (min, api) = match (&m.minimal, m.status) {
             (Some(k), KillStatus::Killed) => (format!("`{}`", cell(&k.case)), format!("`{}`", k.api)),
             _ => ("-".to_string(), "-".to_string()),
@@ -136,6 +132,15 @@ pub fn readme_section(r: &MutantsReport) -> String {
         let _ = writeln!(out, "\n`{}` is not killed: {why}.", m.key);
     }
     out
+}
+
+/// The result column of both Markdown tables: killed, a survivor marked unobservable, or bold.
+fn result_cell(m: &MutantResult) -> String {
+    match m.status {
+        KillStatus::Killed => "killed".to_string(),
+        _ if m.unobservable.is_some() => format!("{} (unobservable)", m.status.as_str()),
+        s => format!("**{}**", s.as_str()),
+    }
 }
 
 /// Escapes text for a Markdown table cell.
@@ -238,11 +243,7 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
             (Some(f), _) => format!("`{}`", cell(&f.case)),
             _ => "-".to_string(),
         };
-        let result = match m.status {
-            KillStatus::Killed => "killed".to_string(),
-            _ if m.unobservable.is_some() => format!("{} (unobservable)", m.status.as_str()),
-            s => format!("**{}**", s.as_str()),
-        };
+        let result = result_cell(m);
         let _ = writeln!(
             out,
             "| {} | `{}` | {} | {} | {} | {} | {} | {} | {} |",
