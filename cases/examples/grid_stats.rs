@@ -13,7 +13,9 @@ fn main() {
     let mut bytes = 0;
     let mut cases = 0;
     for (rel, f) in &files {
-        let n = shadowcheck_cases::fixtures::to_string(f).map(|s| s.len()).unwrap_or(0);
+        let n = shadowcheck_cases::fixtures::to_string(f)
+            .map(|s| s.len())
+            .unwrap_or(0);
         bytes += n;
         cases += f.cases.len();
         println!("{rel:40} {:>6} cases {:>9} bytes", f.cases.len(), n);
@@ -21,5 +23,8 @@ fn main() {
     let cov = shadowcheck_cases::coverage::Coverage::of(files.iter().flat_map(|(_, f)| &f.cases));
     print!("{}", cov.summary());
     println!("missing cells: {}", cov.missing().len());
-    println!("{} files, {cases} cases, {bytes} bytes (without expectations)", files.len());
+    println!(
+        "{} files, {cases} cases, {bytes} bytes (without expectations)",
+        files.len()
+    );
 }

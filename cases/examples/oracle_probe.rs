@@ -16,13 +16,18 @@ fn main() {
                 }
                 Err(e) => {
                     let msg = e.to_string();
-                    let key = msg.split_once(": ").map(|x| x.1.to_string()).unwrap_or(msg.clone());
+                    let key = msg
+                        .split_once(": ")
+                        .map(|x| x.1.to_string())
+                        .unwrap_or(msg.clone());
                     let slot = tally.entry(key).or_insert((0, c.id.clone()));
                     slot.0 += 1;
                 }
             }
         }
-        bytes += shadowcheck_cases::fixtures::to_string(&f).map(|s| s.len()).unwrap_or(0);
+        bytes += shadowcheck_cases::fixtures::to_string(&f)
+            .map(|s| s.len())
+            .unwrap_or(0);
     }
     for (k, (n, id)) in &tally {
         println!("{n:6}  {k}\n        e.g. {id}");

@@ -10,7 +10,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let cov = shadowcheck_cases::coverage::Coverage::of(files.iter().flat_map(|(_, f)| &f.cases));
     if let Some(r) = readme {
         let text = std::fs::read_to_string(&r)?;
-        let new = shadowcheck_cases::coverage::replace_section(&text, &cov.markdown()).ok_or("no coverage markers")?;
+        let new = shadowcheck_cases::coverage::replace_section(&text, &cov.markdown())
+            .ok_or("no coverage markers")?;
         std::fs::write(&r, new)?;
     }
     print!("{}", cov.summary());

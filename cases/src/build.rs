@@ -83,9 +83,17 @@ pub fn texels(format: Format, vals: &[f64]) -> Texels {
 /// Texels given directly as stored unorm integers (or f32 values for float formats).
 pub fn texels_exact(format: Format, vals: &[Stored]) -> Texels {
     if format.unorm_bits().is_some() {
-        Texels::Unorm(vals.iter().map(|s| if let Stored::Unorm(c) = s { *c } else { 0 }).collect())
+        Texels::Unorm(
+            vals.iter()
+                .map(|s| if let Stored::Unorm(c) = s { *c } else { 0 })
+                .collect(),
+        )
     } else {
-        Texels::Float(vals.iter().map(|s| if let Stored::Float(f) = s { *f } else { 0.0 }).collect())
+        Texels::Float(
+            vals.iter()
+                .map(|s| if let Stored::Float(f) = s { *f } else { 0.0 })
+                .collect(),
+        )
     }
 }
 
@@ -130,7 +138,9 @@ pub fn stencil_value(i: usize) -> u8 {
 }
 
 fn stencil_for(format: Format, n: usize) -> Option<Vec<u8>> {
-    format.has_stencil().then(|| (0..n).map(stencil_value).collect())
+    format
+        .has_stencil()
+        .then(|| (0..n).map(stencil_value).collect())
 }
 
 /// A direction vector hitting cube face `face` (GL order +X,-X,+Y,-Y,+Z,-Z) at face coordinates
@@ -160,7 +170,12 @@ pub struct At {
 
 impl At {
     pub fn st(s: f64, t: f64) -> At {
-        At { s, t, layer: 0.0, face: 0 }
+        At {
+            s,
+            t,
+            layer: 0.0,
+            face: 0,
+        }
     }
 }
 
@@ -242,10 +257,13 @@ mod tests {
         // GL 4.6 Table 8.19: the major axis is the largest magnitude component.
         for face in 0..6 {
             let d = cube_dir(face, 0.25, 0.75);
-            let (axis, _) = d
-                .iter()
-                .enumerate()
-                .fold((0, 0.0f64), |acc, (i, v)| if v.abs() > acc.1 { (i, v.abs()) } else { acc });
+            let (axis, _) = d.iter().enumerate().fold((0, 0.0f64), |acc, (i, v)| {
+                if v.abs() > acc.1 {
+                    (i, v.abs())
+                } else {
+                    acc
+                }
+            });
             let neg = d[axis] < 0.0;
             assert_eq!(axis as u32 * 2 + neg as u32, face, "{d:?}");
         }

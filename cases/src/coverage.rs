@@ -42,7 +42,11 @@ impl Coverage {
 
     /// Func columns of a spec: its functions, then `none`.
     fn funcs(spec: Spec) -> Vec<String> {
-        let mut v: Vec<String> = specs::dims(spec).funcs.iter().map(|f| f.key().to_string()).collect();
+        let mut v: Vec<String> = specs::dims(spec)
+            .funcs
+            .iter()
+            .map(|f| f.key().to_string())
+            .collect();
         v.push("none".into());
         v
     }
@@ -76,10 +80,19 @@ impl Coverage {
     pub fn markdown(&self) -> String {
         let mut s = String::new();
         for d in specs::all() {
-            let spec_total: usize = self.counts.iter().filter(|(k, _)| k.0 == d.spec).map(|(_, n)| n).sum();
+            let spec_total: usize = self
+                .counts
+                .iter()
+                .filter(|(k, _)| k.0 == d.spec)
+                .map(|(_, n)| n)
+                .sum();
             let funcs = Self::funcs(d.spec);
             let _ = writeln!(s, "#### {} ({} cases)\n", d.spec, spec_total);
-            let _ = writeln!(s, "| target | format | filter | {} | total |", funcs.join(" | "));
+            let _ = writeln!(
+                s,
+                "| target | format | filter | {} | total |",
+                funcs.join(" | ")
+            );
             let _ = writeln!(s, "|---|---|---|{}---:|", "---:|".repeat(funcs.len()));
             for &t in d.targets {
                 for &fo in d.formats {
@@ -98,8 +111,15 @@ impl Coverage {
                         if !allowed {
                             continue;
                         }
-                        let row_total: usize = funcs.iter().map(|f| self.count(&(d.spec, t, fo, fi, f.clone()))).sum();
-                        let _ = writeln!(s, "| {t} | {fo} | {fi} | {} | {row_total} |", cells.join(" | "));
+                        let row_total: usize = funcs
+                            .iter()
+                            .map(|f| self.count(&(d.spec, t, fo, fi, f.clone())))
+                            .sum();
+                        let _ = writeln!(
+                            s,
+                            "| {t} | {fo} | {fi} | {} | {row_total} |",
+                            cells.join(" | ")
+                        );
                     }
                 }
             }
@@ -114,10 +134,22 @@ impl Coverage {
         let missing = self.missing();
         let mut s = String::from("spec          cases   cells covered/allowed\n");
         for d in specs::all() {
-            let n: usize = self.counts.iter().filter(|(k, _)| k.0 == d.spec).map(|(_, n)| n).sum();
+            let n: usize = self
+                .counts
+                .iter()
+                .filter(|(k, _)| k.0 == d.spec)
+                .map(|(_, n)| n)
+                .sum();
             let covered = self.counts.keys().filter(|k| k.0 == d.spec).count();
             let miss = missing.iter().filter(|k| k.0 == d.spec).count();
-            let _ = writeln!(s, "{:<12} {:>6}   {}/{}", d.spec.key(), n, covered, covered + miss);
+            let _ = writeln!(
+                s,
+                "{:<12} {:>6}   {}/{}",
+                d.spec.key(),
+                n,
+                covered,
+                covered + miss
+            );
         }
         let _ = writeln!(s, "total        {:>6}", self.total);
         s

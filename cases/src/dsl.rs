@@ -40,14 +40,24 @@ impl<P: Clone> Grid<P> {
     }
 
     /// Crosses every item with every value of a dimension; `set` writes the value into the item.
-    pub fn combine<V: Clone>(self, dim: &str, values: impl IntoIterator<Item = V>, set: impl Fn(&mut P, V)) -> Grid<P> {
+    pub fn combine<V: Clone>(
+        self,
+        dim: &str,
+        values: impl IntoIterator<Item = V>,
+        set: impl Fn(&mut P, V),
+    ) -> Grid<P> {
         let values: Vec<V> = values.into_iter().collect();
         self.combine_with(dim, |_| values.clone(), set)
     }
 
     /// Like [`Grid::combine`], but the values of the dimension depend on the item so far (e.g. the
     /// compare functions a spec defines, the formats a target allows).
-    pub fn combine_with<V, I: IntoIterator<Item = V>>(mut self, dim: &str, values: impl Fn(&P) -> I, set: impl Fn(&mut P, V)) -> Grid<P> {
+    pub fn combine_with<V, I: IntoIterator<Item = V>>(
+        mut self,
+        dim: &str,
+        values: impl Fn(&P) -> I,
+        set: impl Fn(&mut P, V),
+    ) -> Grid<P> {
         let mut out = Vec::with_capacity(self.items.len());
         for item in &self.items {
             for v in values(item) {
@@ -145,7 +155,10 @@ mod tests {
             .filter("big", |p| *p < 6)
             .filter("odd", |p| *p != 0);
         assert_eq!(g.items(), &[2, 4]);
-        assert_eq!(g.pruned(), &[("odd".to_string(), 6), ("big".to_string(), 2)]);
+        assert_eq!(
+            g.pruned(),
+            &[("odd".to_string(), 6), ("big".to_string(), 2)]
+        );
     }
 
     #[test]

@@ -53,9 +53,15 @@ impl std::fmt::Display for CaseRef {
 #[derive(Debug, thiserror::Error)]
 pub enum FixtureError {
     #[error("{}: cannot read: {source}", file.display())]
-    Read { file: PathBuf, source: std::io::Error },
+    Read {
+        file: PathBuf,
+        source: std::io::Error,
+    },
     #[error("{}: cannot write: {source}", file.display())]
-    Write { file: PathBuf, source: std::io::Error },
+    Write {
+        file: PathBuf,
+        source: std::io::Error,
+    },
     /// The text is not JSON (truncated file, `NaN` literal, stray comma...).
     #[error("{}: {at}: invalid JSON at line {line} column {column}: {msg}", file.display())]
     Syntax {
@@ -67,9 +73,17 @@ pub enum FixtureError {
     },
     /// The top-level object is not a fixture file (missing or mistyped header field).
     #[error("{}: not a shadowcheck fixture file: field `{field}`: {msg}", file.display())]
-    NotFixture { file: PathBuf, field: String, msg: String },
+    NotFixture {
+        file: PathBuf,
+        field: String,
+        msg: String,
+    },
     #[error("{}: schema_version {found} is not supported (this shadowcheck reads {supported}; regenerate with `shadowcheck gen` or update shadowcheck)", file.display())]
-    Version { file: PathBuf, found: u32, supported: u32 },
+    Version {
+        file: PathBuf,
+        found: u32,
+        supported: u32,
+    },
     /// One case does not deserialize or fails structural validation.
     #[error("{}: {at}: field `{field}`: {msg}", file.display())]
     Case {
@@ -79,7 +93,11 @@ pub enum FixtureError {
         msg: String,
     },
     #[error("{}: {at}: duplicate case id (first at case #{first})", file.display())]
-    DuplicateId { file: PathBuf, at: CaseRef, first: usize },
+    DuplicateId {
+        file: PathBuf,
+        at: CaseRef,
+        first: usize,
+    },
     #[error("{}: no fixture files (*.json) found", path.display())]
     NoFixtures { path: PathBuf },
     #[error("{}: refusing to write outside the output directory: `{rel}`", dir.display())]
@@ -90,14 +108,18 @@ impl FixtureError {
     /// The case this error is about, when known.
     pub fn case_id(&self) -> Option<&str> {
         match self {
-            FixtureError::Syntax { at, .. } | FixtureError::Case { at, .. } | FixtureError::DuplicateId { at, .. } => at.id.as_deref(),
+            FixtureError::Syntax { at, .. }
+            | FixtureError::Case { at, .. }
+            | FixtureError::DuplicateId { at, .. } => at.id.as_deref(),
             _ => None,
         }
     }
     /// The field this error is about, when known.
     pub fn field(&self) -> Option<&str> {
         match self {
-            FixtureError::Case { field, .. } | FixtureError::NotFixture { field, .. } => Some(field),
+            FixtureError::Case { field, .. } | FixtureError::NotFixture { field, .. } => {
+                Some(field)
+            }
             _ => None,
         }
     }
@@ -150,7 +172,10 @@ pub fn parse_str(file: &Path, text: &str) -> Result<FixtureFile, FixtureError> {
 /// A file that is not valid JSON as a whole (truncated, one corrupted line) is still read when it
 /// has the writer's layout (header line, one case per line): each line that parses is kept, the
 /// others are reported with their case index and, where readable, id.
-pub fn parse_str_lenient(file: &Path, text: &str) -> Result<(FixtureFile, Vec<FixtureError>), FixtureError> {
+pub fn parse_str_lenient(
+    file: &Path,
+    text: &str,
+) -> Result<(FixtureFile, Vec<FixtureError>), FixtureError> {
     match parse_inner(file, text, false) {
         Err(e @ FixtureError::Syntax { .. }) => parse_by_line(file, text).ok_or(e),
         other => other,
@@ -209,7 +234,11 @@ fn parse_by_line(file: &Path, text: &str) -> Option<(FixtureFile, Vec<FixtureErr
     Some((f, errors))
 }
 
-fn parse_inner(file: &Path, text: &str, stop_at_first: bool) -> Result<(FixtureFile, Vec<FixtureError>), FixtureError> {
+fn parse_inner(
+    file: &Path,
+    text: &str,
+    stop_at_first: bool,
+) -> Result<(FixtureFile, Vec<FixtureError>), FixtureError> {
     let raw: RawFile = header_or_error(file, text)?;
     if raw.schema_version != SCHEMA_VERSION {
         return Err(FixtureError::Version {
@@ -223,7 +252,10 @@ fn parse_inner(file: &Path, text: &str, stop_at_first: bool) -> Result<(FixtureF
     let mut seen: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
     for (index, value) in raw.cases.into_iter().enumerate() {
         let id = value.get("id").and_then(|v| v.as_str()).map(str::to_string);
-        let at = CaseRef { index: Some(index), id };
+        let at = CaseRef {
+            index: Some(index),
+            id,
+        };
         let result = case_from_value(file, &at, value).and_then(|case| {
             if let Some(&first) = seen.get(&case.id) {
                 return Err(FixtureError::DuplicateId {
@@ -262,7 +294,11 @@ fn header_or_error(file: &Path, text: &str) -> Result<RawFile, FixtureError> {
         json_error(
             file,
             text,
-            if path == "." { "(top level)".to_string() } else { path },
+            if path == "." {
+                "(top level)".to_string()
+            } else {
+                path
+            },
             e.into_inner(),
         )
     })?;
@@ -275,7 +311,9 @@ fn header_or_error(file: &Path, text: &str) -> Result<RawFile, FixtureError> {
 /// the header say the text is not a fixture file.
 fn json_error(file: &Path, text: &str, field: String, inner: serde_json::Error) -> FixtureError {
     match inner.classify() {
-        serde_json::error::Category::Syntax | serde_json::error::Category::Eof | serde_json::error::Category::Io => FixtureError::Syntax {
+        serde_json::error::Category::Syntax
+        | serde_json::error::Category::Eof
+        | serde_json::error::Category::Io => FixtureError::Syntax {
             file: file.to_path_buf(),
             at: locate_case(text, inner.line(), inner.column()),
             line: inner.line(),
@@ -291,7 +329,11 @@ fn json_error(file: &Path, text: &str, field: String, inner: serde_json::Error) 
 }
 
 /// Deserializes one case from its JSON value and validates its structure.
-fn case_from_value(file: &Path, at: &CaseRef, value: serde_json::Value) -> Result<Case, FixtureError> {
+fn case_from_value(
+    file: &Path,
+    at: &CaseRef,
+    value: serde_json::Value,
+) -> Result<Case, FixtureError> {
     let case: Case = serde_path_to_error::deserialize(value).map_err(|e| FixtureError::Case {
         file: file.to_path_buf(),
         at: at.clone(),
@@ -332,7 +374,12 @@ fn strip_position(msg: &str) -> String {
 /// Best effort on broken text: a string containing braces is skipped correctly, anything else may
 /// leave the id unknown.
 fn locate_case(text: &str, line: usize, column: usize) -> CaseRef {
-    let offset = text.split_inclusive('\n').take(line.saturating_sub(1)).map(str::len).sum::<usize>() + column.saturating_sub(1);
+    let offset = text
+        .split_inclusive('\n')
+        .take(line.saturating_sub(1))
+        .map(str::len)
+        .sum::<usize>()
+        + column.saturating_sub(1);
     let upto = &text[..floor_char_boundary(text, offset.min(text.len()))];
     let Some(start) = upto.find("\"cases\"") else {
         return CaseRef::default();
@@ -365,12 +412,17 @@ fn locate_case(text: &str, line: usize, column: usize) -> CaseRef {
             _ => {}
         }
     }
-    let Some(index) = index else { return CaseRef::default() };
+    let Some(index) = index else {
+        return CaseRef::default();
+    };
     let id = upto[case_start..].find("\"id\":").and_then(|p| {
         let rest = upto[case_start + p + 5..].trim_start().strip_prefix('"')?;
         rest.find('"').map(|end| rest[..end].to_string())
     });
-    CaseRef { index: Some(index), id }
+    CaseRef {
+        index: Some(index),
+        id,
+    }
 }
 
 fn floor_char_boundary(s: &str, mut i: usize) -> usize {
@@ -411,11 +463,20 @@ pub fn fixture_paths(path: &Path) -> Result<Vec<PathBuf>, FixtureError> {
     let mut out = Vec::new();
     let mut stack = vec![path.to_path_buf()];
     while let Some(dir) = stack.pop() {
-        let rd = std::fs::read_dir(&dir).map_err(|source| FixtureError::Read { file: dir.clone(), source })?;
+        let rd = std::fs::read_dir(&dir).map_err(|source| FixtureError::Read {
+            file: dir.clone(),
+            source,
+        })?;
         for entry in rd {
-            let entry = entry.map_err(|source| FixtureError::Read { file: dir.clone(), source })?;
+            let entry = entry.map_err(|source| FixtureError::Read {
+                file: dir.clone(),
+                source,
+            })?;
             let p = entry.path();
-            let ft = entry.file_type().map_err(|source| FixtureError::Read { file: p.clone(), source })?;
+            let ft = entry.file_type().map_err(|source| FixtureError::Read {
+                file: p.clone(),
+                source,
+            })?;
             if ft.is_dir() {
                 stack.push(p);
             } else if p.extension().is_some_and(|e| e == "json") {
@@ -425,14 +486,19 @@ pub fn fixture_paths(path: &Path) -> Result<Vec<PathBuf>, FixtureError> {
     }
     out.sort();
     if out.is_empty() {
-        return Err(FixtureError::NoFixtures { path: path.to_path_buf() });
+        return Err(FixtureError::NoFixtures {
+            path: path.to_path_buf(),
+        });
     }
     Ok(out)
 }
 
 /// Loads a file, or every `*.json` under a directory (recursively, sorted by path). Strict.
 pub fn load_path(path: &Path) -> Result<Vec<(PathBuf, FixtureFile)>, FixtureError> {
-    fixture_paths(path)?.into_iter().map(|p| load_file(&p).map(|f| (p, f))).collect()
+    fixture_paths(path)?
+        .into_iter()
+        .map(|p| load_file(&p).map(|f| (p, f)))
+        .collect()
 }
 
 /// Writes `files` (paths relative to `dir`, `/`-separated) under `dir`, creating folders. Fixture
@@ -476,12 +542,17 @@ pub fn write_file(dir: &Path, rel: &str, file: &FixtureFile) -> Result<PathBuf, 
 /// Removes the fixture files under `dir` (recognised by their first bytes) whose paths are not in
 /// `keep`; any other file is left alone.
 pub fn remove_stale(dir: &Path, keep: &BTreeSet<PathBuf>) -> Result<(), FixtureError> {
-    let Ok(existing) = fixture_paths(dir) else { return Ok(()) };
+    let Ok(existing) = fixture_paths(dir) else {
+        return Ok(());
+    };
     for p in existing {
         if keep.contains(&p) || !is_fixture_file(&p) {
             continue;
         }
-        std::fs::remove_file(&p).map_err(|source| FixtureError::Write { file: p.clone(), source })?;
+        std::fs::remove_file(&p).map_err(|source| FixtureError::Write {
+            file: p.clone(),
+            source,
+        })?;
     }
     Ok(())
 }
@@ -490,7 +561,10 @@ fn is_fixture_file(p: &Path) -> bool {
     use std::io::Read;
     let prefix = b"{\"schema_version\":";
     let mut buf = [0u8; 18];
-    std::fs::File::open(p).and_then(|mut f| f.read_exact(&mut buf)).is_ok() && buf[..] == prefix[..]
+    std::fs::File::open(p)
+        .and_then(|mut f| f.read_exact(&mut buf))
+        .is_ok()
+        && buf[..] == prefix[..]
 }
 
 /// A one-line summary of a set of errors (for lenient loading reports).

@@ -14,7 +14,12 @@ pub fn section<'a>(doc: &'a str, begin: &str, end: &str) -> Option<&'a str> {
 pub fn replace(doc: &str, begin: &str, end: &str, body: &str) -> Option<String> {
     let a = doc.find(begin)? + begin.len();
     let b = doc[a..].find(end)? + a;
-    Some(format!("{}\n{}\n{}", &doc[..a], body.trim_matches('\n'), &doc[b..]))
+    Some(format!(
+        "{}\n{}\n{}",
+        &doc[..a],
+        body.trim_matches('\n'),
+        &doc[b..]
+    ))
 }
 
 #[cfg(test)]
@@ -26,8 +31,14 @@ mod tests {
         let doc = "head\n<!-- b -->\nold\n<!-- e -->\ntail\n";
         let new = replace(doc, "<!-- b -->", "<!-- e -->", "\nnew 1\nnew 2\n").unwrap();
         assert_eq!(new, "head\n<!-- b -->\nnew 1\nnew 2\n<!-- e -->\ntail\n");
-        assert_eq!(section(&new, "<!-- b -->", "<!-- e -->"), Some("new 1\nnew 2"));
-        assert_eq!(replace(&new, "<!-- b -->", "<!-- e -->", "new 1\nnew 2").unwrap(), new);
+        assert_eq!(
+            section(&new, "<!-- b -->", "<!-- e -->"),
+            Some("new 1\nnew 2")
+        );
+        assert_eq!(
+            replace(&new, "<!-- b -->", "<!-- e -->", "new 1\nnew 2").unwrap(),
+            new
+        );
         assert!(replace("no markers", "<!-- b -->", "<!-- e -->", "x").is_none());
         assert!(replace("<!-- e --> <!-- b -->", "<!-- b -->", "<!-- e -->", "x").is_none());
     }

@@ -36,7 +36,11 @@ fn default_grid_regenerates_byte_for_byte() {
     }
     let wanted = grids::paths(&files);
     for p in fixtures::fixture_paths(&dir).unwrap_or_default() {
-        let rel = p.strip_prefix(&dir).unwrap().to_string_lossy().replace('\\', "/");
+        let rel = p
+            .strip_prefix(&dir)
+            .unwrap()
+            .to_string_lossy()
+            .replace('\\', "/");
         if !wanted.contains(rel.as_str()) {
             problems.push(format!("{rel}: not produced by the generator (stale)"));
         }
@@ -81,24 +85,36 @@ fn committed_size_is_within_budget() {
         .iter()
         .map(|p| std::fs::metadata(p).unwrap().len())
         .sum();
-    assert!(total <= 20 * 1024 * 1024, "{total} bytes committed (budget 20 MiB)");
+    assert!(
+        total <= 20 * 1024 * 1024,
+        "{total} bytes committed (budget 20 MiB)"
+    );
 }
 
 #[test]
 fn schema_rejects_what_the_loader_rejects() {
     let validator = jsonschema::validator_for(&schema()).unwrap();
     let p = fixtures::fixture_paths(&fixtures_dir()).unwrap().remove(0);
-    let good: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap();
+    let good: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap();
     assert!(validator.is_valid(&good));
     type Edit = (&'static str, fn(&mut serde_json::Value));
     let edits: [Edit; 6] = [
-        ("unknown enum", |v| v["cases"][0]["sampler"]["compare_func"] = "lequalish".into()),
-        ("wrong type", |v| v["cases"][0]["texture"]["levels"][0]["width"] = "4".into()),
-        ("absurd size", |v| v["cases"][0]["texture"]["levels"][0]["width"] = 100000.into()),
+        ("unknown enum", |v| {
+            v["cases"][0]["sampler"]["compare_func"] = "lequalish".into()
+        }),
+        ("wrong type", |v| {
+            v["cases"][0]["texture"]["levels"][0]["width"] = "4".into()
+        }),
+        ("absurd size", |v| {
+            v["cases"][0]["texture"]["levels"][0]["width"] = 100000.into()
+        }),
         ("nan where a number is required", |v| {
             v["cases"][0]["sampler"]["min_lod"] = "nan".into()
         }),
-        ("unknown field", |v| v["cases"][0]["lookup"]["extra"] = 1.into()),
+        ("unknown field", |v| {
+            v["cases"][0]["lookup"]["extra"] = 1.into()
+        }),
         ("wrong version", |v| v["schema_version"] = 2.into()),
     ];
     for (what, edit) in edits {
@@ -129,10 +145,22 @@ fn schema_enums_match_the_model() {
     }
     assert_eq!(keys("spec"), all(Spec::ALL, Spec::key));
     assert_eq!(keys("api"), all(ApiPath::ALL, ApiPath::key));
-    assert_eq!(keys("compare_func"), all(CompareFunc::ALL, CompareFunc::key));
-    assert_eq!(keys("compare_mode"), all(CompareMode::ALL, CompareMode::key));
-    assert_eq!(keys("depth_texture_mode"), all(DepthTextureMode::ALL, DepthTextureMode::key));
-    assert_eq!(keys("depth_stencil_mode"), all(DepthStencilMode::ALL, DepthStencilMode::key));
+    assert_eq!(
+        keys("compare_func"),
+        all(CompareFunc::ALL, CompareFunc::key)
+    );
+    assert_eq!(
+        keys("compare_mode"),
+        all(CompareMode::ALL, CompareMode::key)
+    );
+    assert_eq!(
+        keys("depth_texture_mode"),
+        all(DepthTextureMode::ALL, DepthTextureMode::key)
+    );
+    assert_eq!(
+        keys("depth_stencil_mode"),
+        all(DepthStencilMode::ALL, DepthStencilMode::key)
+    );
     assert_eq!(keys("filter"), all(Filter::ALL, Filter::key));
     assert_eq!(keys("format"), all(Format::ALL, Format::key));
     assert_eq!(keys("target"), all(Target::ALL, Target::key));
@@ -168,7 +196,8 @@ fn default_covers_every_allowed_combination() {
         assert!(d.targets.contains(&c.texture.target), "{}", c.id);
         assert!(d.formats.contains(&c.texture.format), "{}", c.id);
         assert!(
-            c.sampler.compare_mode == CompareMode::None || d.funcs.contains(&c.sampler.compare_func),
+            c.sampler.compare_mode == CompareMode::None
+                || d.funcs.contains(&c.sampler.compare_func),
             "{}",
             c.id
         );
@@ -177,14 +206,31 @@ fn default_covers_every_allowed_combination() {
             "{}",
             c.id
         );
-        assert!(specs::filter_allowed(c.texture.target, c.sampler.min_filter), "{}", c.id);
+        assert!(
+            specs::filter_allowed(c.texture.target, c.sampler.min_filter),
+            "{}",
+            c.id
+        );
         assert!(d.lod_bias || c.sampler.lod_bias == 0.0, "{}", c.id);
         assert!(d.shader_bias || c.lookup.bias == 0.0, "{}", c.id);
-        let lod_state = c.sampler.min_lod != -1000.0 || c.sampler.max_lod != 1000.0 || c.sampler.max_level.is_some() || c.texture.base_level != 0;
+        let lod_state = c.sampler.min_lod != -1000.0
+            || c.sampler.max_lod != 1000.0
+            || c.sampler.max_level.is_some()
+            || c.texture.base_level != 0;
         assert!(d.lod_state || !lod_state, "{}", c.id);
         assert!(d.fail_value || c.sampler.fail_value.is_none(), "{}", c.id);
-        assert!(c.sampler.depth_texture_mode.is_none_or(|m| d.dtms.contains(&m)), "{}", c.id);
-        assert!(d.stencil_mode || c.sampler.depth_stencil_mode.is_none(), "{}", c.id);
+        assert!(
+            c.sampler
+                .depth_texture_mode
+                .is_none_or(|m| d.dtms.contains(&m)),
+            "{}",
+            c.id
+        );
+        assert!(
+            d.stencil_mode || c.sampler.depth_stencil_mode.is_none(),
+            "{}",
+            c.id
+        );
     }
 }
 
@@ -220,7 +266,8 @@ fn smoke_has_one_of_everything_in_under_1000_cases() {
         }
         for fu in d.funcs {
             assert!(
-                of(&|c| c.sampler.compare_mode == CompareMode::Compare && c.sampler.compare_func == *fu),
+                of(&|c| c.sampler.compare_mode == CompareMode::Compare
+                    && c.sampler.compare_func == *fu),
                 "{} {fu}",
                 d.spec
             );
@@ -234,7 +281,10 @@ fn smoke_has_one_of_everything_in_under_1000_cases() {
 #[test]
 fn ids_are_readable_and_start_with_their_coordinates() {
     for c in default_unfilled() {
-        let prefix = format!("{}/{}/{}/{}/", c.spec, c.texture.target, c.texture.format, c.sampler.min_filter);
+        let prefix = format!(
+            "{}/{}/{}/{}/",
+            c.spec, c.texture.target, c.texture.format, c.sampler.min_filter
+        );
         assert!(c.id.starts_with(&prefix), "{}", c.id);
         assert!(c.id.is_ascii() && !c.id.contains(' '), "{}", c.id);
     }
@@ -250,9 +300,16 @@ fn seed_changes_only_the_random_family() {
             .filter(|id| !id.contains("/rand/"))
             .collect()
     };
-    assert!(ids(&a) == ids(&b), "seed changed ids outside the random family");
+    assert!(
+        ids(&a) == ids(&b),
+        "seed changed ids outside the random family"
+    );
     // Compare as text: NaN references make `==` on cases false.
-    let text = |f: &[(String, fixtures::FixtureFile)]| -> Vec<String> { f.iter().map(|(_, f)| fixtures::to_string(f).unwrap()).collect() };
+    let text = |f: &[(String, fixtures::FixtureFile)]| -> Vec<String> {
+        f.iter()
+            .map(|(_, f)| fixtures::to_string(f).unwrap())
+            .collect()
+    };
     assert!(text(&a) != text(&b), "the seed changed nothing");
     assert!(
         text(&grids::unfilled("default", 7).unwrap()) == text(&b),
@@ -276,7 +333,8 @@ fn smoke_generates_with_expectations_that_match_the_schema() {
     let files = grids::generate("smoke", 0).unwrap();
     assert!(!files.is_empty());
     for (rel, f) in &files {
-        let value: serde_json::Value = serde_json::from_str(&fixtures::to_string(f).unwrap()).unwrap();
+        let value: serde_json::Value =
+            serde_json::from_str(&fixtures::to_string(f).unwrap()).unwrap();
         let errors: Vec<String> = validator
             .iter_errors(&value)
             .take(5)

@@ -14,7 +14,10 @@ fn sample() -> FixtureFile {
 }
 
 fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("shadowcheck-cases-test-{}-{name}", std::process::id()));
+    let d = std::env::temp_dir().join(format!(
+        "shadowcheck-cases-test-{}-{name}",
+        std::process::id()
+    ));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
@@ -40,10 +43,20 @@ fn err(text: &str) -> FixtureError {
 fn round_trip_through_a_directory() {
     let d = tmpdir("roundtrip");
     let f = sample();
-    fixtures::write_dir(&d, &[("b/x.json".into(), f.clone()), ("a.json".into(), f.clone())]).unwrap();
+    fixtures::write_dir(
+        &d,
+        &[("b/x.json".into(), f.clone()), ("a.json".into(), f.clone())],
+    )
+    .unwrap();
     let loaded = fixtures::load_path(&d).unwrap();
-    let names: Vec<_> = loaded.iter().map(|(p, _)| p.strip_prefix(&d).unwrap().to_path_buf()).collect();
-    assert_eq!(names, vec![PathBuf::from("a.json"), PathBuf::from("b/x.json")]);
+    let names: Vec<_> = loaded
+        .iter()
+        .map(|(p, _)| p.strip_prefix(&d).unwrap().to_path_buf())
+        .collect();
+    assert_eq!(
+        names,
+        vec![PathBuf::from("a.json"), PathBuf::from("b/x.json")]
+    );
     assert_eq!(loaded[0].1, f);
     assert_eq!(fixtures::load_file(&d.join("a.json")).unwrap(), f);
     // A file that is not in the set any more is removed on rewrite; other files are left alone.
@@ -77,7 +90,10 @@ fn truncated_file_names_the_case_it_stops_in() {
     let msg = e.to_string();
     assert!(matches!(e, FixtureError::Syntax { .. }), "{msg}");
     assert_eq!(e.case_id(), Some(f.cases[2].id.as_str()), "{msg}");
-    assert!(msg.contains("dir/bad.json") && msg.contains("case #2"), "{msg}");
+    assert!(
+        msg.contains("dir/bad.json") && msg.contains("case #2"),
+        "{msg}"
+    );
 }
 
 #[test]
@@ -124,7 +140,10 @@ fn nan_string_where_a_number_is_required_names_the_field() {
 fn absurd_texture_sizes_are_errors_not_allocations() {
     let (text, id) = edited(1, "\"width\":", "\"width\":1000000000,\"w\":");
     let e = err(&text);
-    assert!(e.field().unwrap().starts_with("texture.levels[0].width"), "{e}");
+    assert!(
+        e.field().unwrap().starts_with("texture.levels[0].width"),
+        "{e}"
+    );
     assert!(e.to_string().contains(&id));
     let (text, _) = edited(1, "\"width\":", "\"width\":1099511627776,\"w\":");
     assert_eq!(err(&text).field(), Some("texture.levels[0].width"));
@@ -156,9 +175,11 @@ fn header_errors() {
     let e = err("{\"schema_version\":1,\"generator\":\"g\",\"grid\":\"x\",\"seed\":0}");
     assert!(matches!(e, FixtureError::NotFixture { .. }), "{e}");
     assert!(e.to_string().contains("cases"), "{e}");
-    let e = err("{\"schema_version\":99,\"generator\":\"g\",\"grid\":\"x\",\"seed\":0,\"cases\":[]}");
+    let e =
+        err("{\"schema_version\":99,\"generator\":\"g\",\"grid\":\"x\",\"seed\":0,\"cases\":[]}");
     assert!(matches!(e, FixtureError::Version { found: 99, .. }), "{e}");
-    let e = err("{\"schema_version\":1,\"generator\":\"g\",\"grid\":\"x\",\"seed\":-3,\"cases\":[]}");
+    let e =
+        err("{\"schema_version\":1,\"generator\":\"g\",\"grid\":\"x\",\"seed\":-3,\"cases\":[]}");
     assert_eq!(e.field(), Some("seed"), "{e}");
     let e = err("");
     assert!(matches!(e, FixtureError::Syntax { .. }), "{e}");
@@ -171,7 +192,10 @@ fn duplicate_ids_are_rejected() {
     let mut f = sample();
     f.cases[2].id = f.cases[0].id.clone();
     let e = err(&fixtures::to_string(&f).unwrap());
-    assert!(matches!(e, FixtureError::DuplicateId { first: 0, .. }), "{e}");
+    assert!(
+        matches!(e, FixtureError::DuplicateId { first: 0, .. }),
+        "{e}"
+    );
 }
 
 #[test]
@@ -179,7 +203,10 @@ fn missing_paths_and_empty_directories() {
     let e = fixtures::load_path(Path::new("/nonexistent/shadowcheck")).unwrap_err();
     assert!(e.to_string().contains("/nonexistent/shadowcheck"), "{e}");
     let d = tmpdir("empty");
-    assert!(matches!(fixtures::load_path(&d), Err(FixtureError::NoFixtures { .. })));
+    assert!(matches!(
+        fixtures::load_path(&d),
+        Err(FixtureError::NoFixtures { .. })
+    ));
     let _ = std::fs::remove_dir_all(&d);
 }
 
@@ -214,7 +241,12 @@ fn lenient_loading_recovers_the_intact_cases_of_a_truncated_file() {
     assert_eq!(got.cases.len(), 3);
     assert_eq!(got.cases[..], f.cases[..3]);
     assert_eq!(errors.len(), 1);
-    assert_eq!(errors[0].case_id(), Some(f.cases[3].id.as_str()), "{}", errors[0]);
+    assert_eq!(
+        errors[0].case_id(),
+        Some(f.cases[3].id.as_str()),
+        "{}",
+        errors[0]
+    );
     assert!(errors[0].to_string().contains("case #3"), "{}", errors[0]);
     // Text without the writer's layout still fails as a whole.
     assert!(fixtures::parse_str_lenient(Path::new("t.json"), "{\"schema_version\":1,").is_err());

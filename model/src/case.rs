@@ -159,7 +159,10 @@ pub struct Case {
 impl Sampler {
     /// A sampler with the GL defaults for everything but the compare state and filters.
     pub fn new(compare_mode: CompareMode, compare_func: CompareFunc, filter: Filter) -> Sampler {
-        let mag = if matches!(filter, Filter::Nearest | Filter::NearestMipmapNearest | Filter::NearestMipmapLinear) {
+        let mag = if matches!(
+            filter,
+            Filter::Nearest | Filter::NearestMipmapNearest | Filter::NearestMipmapLinear
+        ) {
             Filter::Nearest
         } else {
             Filter::Linear

@@ -302,7 +302,10 @@ impl Target {
     }
     /// Layers are addressed by a coordinate (array targets).
     pub fn is_array(self) -> bool {
-        matches!(self, Target::T1dArray | Target::T2dArray | Target::CubeArray)
+        matches!(
+            self,
+            Target::T1dArray | Target::T2dArray | Target::CubeArray
+        )
     }
     pub fn is_cube(self) -> bool {
         matches!(self, Target::Cube | Target::CubeArray)

@@ -30,25 +30,49 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
         return Err(invalid(case, "texture.levels", "no levels"));
     }
     if tex.levels.len() > 16 {
-        return Err(invalid(case, "texture.levels", format!("{} levels (at most 16)", tex.levels.len())));
+        return Err(invalid(
+            case,
+            "texture.levels",
+            format!("{} levels (at most 16)", tex.levels.len()),
+        ));
     }
     if tex.base_level > 15 {
-        return Err(invalid(case, "texture.base_level", format!("{} (at most 15)", tex.base_level)));
+        return Err(invalid(
+            case,
+            "texture.base_level",
+            format!("{} (at most 15)", tex.base_level),
+        ));
     }
     if tex.target.is_rect() && tex.levels.len() > 1 {
-        return Err(invalid(case, "texture.levels", "rectangle textures have exactly one level"));
+        return Err(invalid(
+            case,
+            "texture.levels",
+            "rectangle textures have exactly one level",
+        ));
     }
     let bits = tex.format.unorm_bits();
     for (i, lvl) in tex.levels.iter().enumerate() {
         let f = |name: &str| format!("texture.levels[{i}].{name}");
-        for (name, v) in [("width", lvl.width), ("height", lvl.height), ("layers", lvl.layers)] {
+        for (name, v) in [
+            ("width", lvl.width),
+            ("height", lvl.height),
+            ("layers", lvl.layers),
+        ] {
             if v == 0 || v > MAX_DIMENSION {
-                return Err(invalid(case, f(name), format!("{v} is outside 1..={MAX_DIMENSION}")));
+                return Err(invalid(
+                    case,
+                    f(name),
+                    format!("{v} is outside 1..={MAX_DIMENSION}"),
+                ));
             }
         }
         let n = lvl.texel_count();
         if n > MAX_TEXELS_PER_LEVEL {
-            return Err(invalid(case, f("width"), format!("{n} texels in one level (at most {MAX_TEXELS_PER_LEVEL})")));
+            return Err(invalid(
+                case,
+                f("width"),
+                format!("{n} texels in one level (at most {MAX_TEXELS_PER_LEVEL})"),
+            ));
         }
         match tex.target {
             Target::T1d | Target::T1dArray if lvl.height != 1 => {
@@ -59,7 +83,11 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
                     return Err(invalid(case, f("width"), "cube faces must be square"));
                 }
                 if lvl.layers % 6 != 0 {
-                    return Err(invalid(case, f("layers"), "cube layers must be a multiple of 6"));
+                    return Err(invalid(
+                        case,
+                        f("layers"),
+                        "cube layers must be a multiple of 6",
+                    ));
                 }
                 if tex.target == Target::Cube && lvl.layers != 6 {
                     return Err(invalid(case, f("layers"), "a cube map has 6 faces"));
@@ -71,59 +99,111 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
             _ => {}
         }
         if lvl.depth.len() != n {
-            return Err(invalid(case, f("depth"), format!("{} values for {} texels", lvl.depth.len(), n)));
+            return Err(invalid(
+                case,
+                f("depth"),
+                format!("{} values for {} texels", lvl.depth.len(), n),
+            ));
         }
         match (&lvl.depth, bits) {
             (Texels::Unorm(v), Some(b)) => {
                 let max = if b == 32 { u32::MAX } else { (1u32 << b) - 1 };
                 if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| **x > max) {
-                    return Err(invalid(case, format!("{}[{j}]", f("depth")), format!("{x} exceeds {b}-bit unorm maximum {max}")));
+                    return Err(invalid(
+                        case,
+                        format!("{}[{j}]", f("depth")),
+                        format!("{x} exceeds {b}-bit unorm maximum {max}"),
+                    ));
                 }
             }
             (Texels::Float(v), None) => {
                 if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
-                    return Err(invalid(case, format!("{}[{j}]", f("depth")), format!("{x} is not finite")));
+                    return Err(invalid(
+                        case,
+                        format!("{}[{j}]", f("depth")),
+                        format!("{x} is not finite"),
+                    ));
                 }
             }
             (Texels::Unorm(_), None) => {
-                return Err(invalid(case, f("depth"), format!("format {} stores floats, got unorm integers", tex.format)));
+                return Err(invalid(
+                    case,
+                    f("depth"),
+                    format!("format {} stores floats, got unorm integers", tex.format),
+                ));
             }
             (Texels::Float(_), Some(_)) => {
-                return Err(invalid(case, f("depth"), format!("format {} stores unorm integers, got floats", tex.format)));
+                return Err(invalid(
+                    case,
+                    f("depth"),
+                    format!("format {} stores unorm integers, got floats", tex.format),
+                ));
             }
         }
         match (&lvl.stencil, tex.format.has_stencil()) {
             (Some(s), true) if s.len() != n => {
-                return Err(invalid(case, f("stencil"), format!("{} values for {} texels", s.len(), n)));
+                return Err(invalid(
+                    case,
+                    f("stencil"),
+                    format!("{} values for {} texels", s.len(), n),
+                ));
             }
             (Some(_), false) => {
-                return Err(invalid(case, f("stencil"), format!("format {} has no stencil", tex.format)));
+                return Err(invalid(
+                    case,
+                    f("stencil"),
+                    format!("format {} has no stencil", tex.format),
+                ));
             }
             _ => {}
         }
     }
     let s = &case.sampler;
-    for (name, v) in [("min_lod", s.min_lod), ("max_lod", s.max_lod), ("lod_bias", s.lod_bias)] {
+    for (name, v) in [
+        ("min_lod", s.min_lod),
+        ("max_lod", s.max_lod),
+        ("lod_bias", s.lod_bias),
+    ] {
         if !v.is_finite() {
-            return Err(invalid(case, format!("sampler.{name}"), format!("{v} is not finite")));
+            return Err(invalid(
+                case,
+                format!("sampler.{name}"),
+                format!("{v} is not finite"),
+            ));
         }
     }
     if let Some(v) = s.fail_value {
         if !v.is_finite() {
-            return Err(invalid(case, "sampler.fail_value", format!("{v} is not finite")));
+            return Err(invalid(
+                case,
+                "sampler.fail_value",
+                format!("{v} is not finite"),
+            ));
         }
     }
     if let Some((j, v)) = s.border.iter().enumerate().find(|(_, v)| !v.is_finite()) {
-        return Err(invalid(case, format!("sampler.border[{j}]"), format!("{v} is not finite")));
+        return Err(invalid(
+            case,
+            format!("sampler.border[{j}]"),
+            format!("{v} is not finite"),
+        ));
     }
     let l = &case.lookup;
     for (name, v) in [("lod", l.lod), ("bias", l.bias), ("layer", l.layer)] {
         if !v.is_finite() {
-            return Err(invalid(case, format!("lookup.{name}"), format!("{v} is not finite")));
+            return Err(invalid(
+                case,
+                format!("lookup.{name}"),
+                format!("{v} is not finite"),
+            ));
         }
     }
     if l.projective && l.coord[3] == 0.0 {
-        return Err(invalid(case, "lookup.coord[3]", "projective lookup with q = 0"));
+        return Err(invalid(
+            case,
+            "lookup.coord[3]",
+            "projective lookup with q = 0",
+        ));
     }
     if l.offset != [0; 3] {
         validate_offset(case)?;
@@ -158,16 +238,29 @@ fn validate_offset(case: &Case) -> Result<(), ModelError> {
         Target::T2d | Target::Rect | Target::T2dArray => 2,
     };
     if used == 0 {
-        return Err(invalid(case, "lookup.offset", "cube map lookups take no texel offset"));
+        return Err(invalid(
+            case,
+            "lookup.offset",
+            "cube map lookups take no texel offset",
+        ));
     }
     if let Some(j) = (used..3).find(|&j| o[j] != 0) {
-        return Err(invalid(case, format!("lookup.offset[{j}]"), format!("{} but the target has no such coordinate (must be 0)", o[j])));
+        return Err(invalid(
+            case,
+            format!("lookup.offset[{j}]"),
+            format!("{} but the target has no such coordinate (must be 0)", o[j]),
+        ));
     }
     if let Some(j) = (0..3).find(|&j| !TEXEL_OFFSET_RANGE.contains(&o[j])) {
         return Err(invalid(
             case,
             format!("lookup.offset[{j}]"),
-            format!("{} is outside {}..={}, the range every implementation supports", o[j], TEXEL_OFFSET_RANGE.start(), TEXEL_OFFSET_RANGE.end()),
+            format!(
+                "{} is outside {}..={}, the range every implementation supports",
+                o[j],
+                TEXEL_OFFSET_RANGE.start(),
+                TEXEL_OFFSET_RANGE.end()
+            ),
         ));
     }
     Ok(())
@@ -187,10 +280,24 @@ mod tests {
                 target: Target::T2d,
                 format: Format::D16,
                 base_level: 0,
-                levels: vec![Level { width: 2, height: 1, layers: 1, depth: Texels::Unorm(vec![0, 65535]), stencil: None }],
+                levels: vec![Level {
+                    width: 2,
+                    height: 1,
+                    layers: 1,
+                    depth: Texels::Unorm(vec![0, 65535]),
+                    stencil: None,
+                }],
             },
             sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
-            lookup: Lookup { coord: [0.25, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0, offset: [0; 3] },
+            lookup: Lookup {
+                coord: [0.25, 0.5, 0.0, 1.0],
+                layer: 0.0,
+                dref: 0.5,
+                projective: false,
+                lod: 0.0,
+                bias: 0.0,
+                offset: [0; 3],
+            },
             expect: None,
         }
     }
@@ -222,7 +329,10 @@ mod tests {
         let mut c = case();
         c.texture.levels[0].depth = Texels::Unorm(vec![0, 70000]);
         let e = validate(&c).unwrap_err().to_string();
-        assert!(e.contains("texture.levels[0].depth[1]") && e.contains("`t`"), "{e}");
+        assert!(
+            e.contains("texture.levels[0].depth[1]") && e.contains("`t`"),
+            "{e}"
+        );
     }
 
     #[test]
@@ -235,15 +345,27 @@ mod tests {
         assert!(!serde_json::to_string(&case()).unwrap().contains("offset"));
         c.lookup.offset = [8, 0, 0];
         let e = validate(&c).unwrap_err().to_string();
-        assert!(e.contains("lookup.offset[0]") && e.contains("-8..=7"), "{e}");
+        assert!(
+            e.contains("lookup.offset[0]") && e.contains("-8..=7"),
+            "{e}"
+        );
         c.lookup.offset = [1, 0, 1];
-        assert!(validate(&c).unwrap_err().to_string().contains("lookup.offset[2]"));
+        assert!(validate(&c)
+            .unwrap_err()
+            .to_string()
+            .contains("lookup.offset[2]"));
         c.lookup.offset = [1, 0, 0];
         c.api = vec![ApiPath::GlslCore, ApiPath::Glsl120];
         assert!(validate(&c).unwrap_err().to_string().contains("`glsl120`"));
         c.api = vec![ApiPath::Es300];
         c.texture.target = Target::Cube;
-        c.texture.levels = vec![Level { width: 1, height: 1, layers: 6, depth: Texels::Unorm(vec![0; 6]), stencil: None }];
+        c.texture.levels = vec![Level {
+            width: 1,
+            height: 1,
+            layers: 6,
+            depth: Texels::Unorm(vec![0; 6]),
+            stencil: None,
+        }];
         let e = validate(&c).unwrap_err().to_string();
         assert!(e.contains("cube map lookups take no texel offset"), "{e}");
     }
@@ -261,7 +383,9 @@ mod tests {
         let mut c = case();
         c.texture.levels[0].depth = Texels::Unorm(vec![1]);
         assert!(validate(&c).unwrap_err().to_string().contains("depth"));
-        let json = serde_json::to_string(&case()).unwrap().replace("\"lequal\"", "\"lequalish\"");
+        let json = serde_json::to_string(&case())
+            .unwrap()
+            .replace("\"lequal\"", "\"lequalish\"");
         let e = serde_json::from_str::<Case>(&json).unwrap_err().to_string();
         assert!(e.contains("lequalish"), "{e}");
     }
@@ -272,11 +396,29 @@ mod tests {
         accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
         accept.insert(Profile::Lenient, Acceptance(vec![Interval::new(0.9, 1.0)]));
         let mut layout = std::collections::BTreeMap::new();
-        layout.insert(ApiPath::FixedFunction, [Channel::R, Channel::R, Channel::R, Channel::One]);
-        let e = Expectation { spec_value: Some(1.0), accept, layout, implementation_defined: None, citations: vec![] };
-        assert_eq!(e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 1.0]), Some(Judgement::Strict));
-        assert_eq!(e.judge(ApiPath::FixedFunction, [0.95, 1.0, 1.0, 1.0]), Some(Judgement::LenientOnly));
-        assert_eq!(e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 0.0]), Some(Judgement::Outside));
+        layout.insert(
+            ApiPath::FixedFunction,
+            [Channel::R, Channel::R, Channel::R, Channel::One],
+        );
+        let e = Expectation {
+            spec_value: Some(1.0),
+            accept,
+            layout,
+            implementation_defined: None,
+            citations: vec![],
+        };
+        assert_eq!(
+            e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 1.0]),
+            Some(Judgement::Strict)
+        );
+        assert_eq!(
+            e.judge(ApiPath::FixedFunction, [0.95, 1.0, 1.0, 1.0]),
+            Some(Judgement::LenientOnly)
+        );
+        assert_eq!(
+            e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 0.0]),
+            Some(Judgement::Outside)
+        );
         assert_eq!(e.judge(ApiPath::GlslCore, [1.0; 4]), None);
     }
 
@@ -284,10 +426,20 @@ mod tests {
     fn footprint_with_nan_reference_round_trips() {
         let f = Footprint {
             dref: f64::NAN,
-            texels: vec![FootprintTexel { level: 0, xyz: Some([0, 0, 0]), stored: 1.0, dt: f64::INFINITY, pass: None, weight: 1.0 }],
+            texels: vec![FootprintTexel {
+                level: 0,
+                xyz: Some([0, 0, 0]),
+                stored: 1.0,
+                dt: f64::INFINITY,
+                pass: None,
+                weight: 1.0,
+            }],
         };
         let json = serde_json::to_string(&f).unwrap();
-        assert!(json.contains("\"dref\":\"nan\"") && json.contains("\"dt\":\"inf\""), "{json}");
+        assert!(
+            json.contains("\"dref\":\"nan\"") && json.contains("\"dt\":\"inf\""),
+            "{json}"
+        );
         let back: Footprint = serde_json::from_str(&json).unwrap();
         assert!(back.dref.is_nan());
         assert_eq!(back.texels[0].dt, f64::INFINITY);

@@ -121,7 +121,13 @@ fn texel_offsets_are_added_to_u_before_wrapping_in_the_selected_levels_texels() 
         0.5,
     );
     for (w, vals) in [(2u32, vec![0.0, 1.0, 0.0, 1.0]), (1, vec![0.0])] {
-        m.texture.levels.push(Level { width: w, height: w, layers: 1, depth: texels(Format::D16, &vals), stencil: None });
+        m.texture.levels.push(Level {
+            width: w,
+            height: w,
+            layers: 1,
+            depth: texels(Format::D16, &vals),
+            stencil: None,
+        });
     }
     m.lookup.lod = 1.0;
     assert_eq!(value(&m), 0.0);

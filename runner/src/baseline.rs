@@ -13,13 +13,23 @@ use std::path::Path;
 #[derive(Debug, thiserror::Error)]
 pub enum ListError {
     #[error("{file}: {source}")]
-    Io { file: String, source: std::io::Error },
+    Io {
+        file: String,
+        source: std::io::Error,
+    },
     #[error("{file}:{line}: {msg}")]
-    Bad { file: String, line: usize, msg: String },
+    Bad {
+        file: String,
+        line: usize,
+        msg: String,
+    },
 }
 
 fn read(path: &Path) -> Result<String, ListError> {
-    std::fs::read_to_string(path).map_err(|source| ListError::Io { file: path.display().to_string(), source })
+    std::fs::read_to_string(path).map_err(|source| ListError::Io {
+        file: path.display().to_string(),
+        source,
+    })
 }
 
 /// Expected statuses of known failures.
@@ -40,9 +50,15 @@ impl Baseline {
             if line.is_empty() || line.starts_with('#') {
                 continue;
             }
-            let bad = |msg: String| ListError::Bad { file: file.to_string(), line: i + 1, msg };
+            let bad = |msg: String| ListError::Bad {
+                file: file.to_string(),
+                line: i + 1,
+                msg,
+            };
             // The status is the last field; test names may not contain commas (ids never do).
-            let (test, status) = line.rsplit_once(',').ok_or_else(|| bad("expected `test,Status`".into()))?;
+            let (test, status) = line
+                .rsplit_once(',')
+                .ok_or_else(|| bad("expected `test,Status`".into()))?;
             let status: Status = status.trim().parse().map_err(bad)?;
             let test = test.trim();
             // A quoted name (RFC 4180, as failures.csv writes names with commas).
@@ -53,7 +69,11 @@ impl Baseline {
             let status = match status {
                 Status::Plain(o) => Status::Plain(o),
                 // deqp-runner writes the raw status; accept a final status only where it is one.
-                s => return Err(bad(format!("`{s}` is not a status a baseline can expect (use Fail, Crash, Timeout, ...)"))),
+                s => {
+                    return Err(bad(format!(
+                    "`{s}` is not a status a baseline can expect (use Fail, Crash, Timeout, ...)"
+                )))
+                }
             };
             if entries.insert(test.clone(), status).is_some() {
                 return Err(bad(format!("`{test}` is listed twice")));
@@ -84,7 +104,10 @@ pub struct RegexList {
 
 impl Default for RegexList {
     fn default() -> Self {
-        RegexList { set: RegexSet::empty(), patterns: vec![] }
+        RegexList {
+            set: RegexSet::empty(),
+            patterns: vec![],
+        }
     }
 }
 
@@ -100,16 +123,28 @@ impl RegexList {
             if line.is_empty() || line.starts_with('#') {
                 continue;
             }
-            regex::Regex::new(line).map_err(|e| ListError::Bad { file: file.to_string(), line: i + 1, msg: e.to_string() })?;
+            regex::Regex::new(line).map_err(|e| ListError::Bad {
+                file: file.to_string(),
+                line: i + 1,
+                msg: e.to_string(),
+            })?;
             patterns.push(line.to_string());
         }
-        let set = RegexSet::new(&patterns).map_err(|e| ListError::Bad { file: file.to_string(), line: 0, msg: e.to_string() })?;
+        let set = RegexSet::new(&patterns).map_err(|e| ListError::Bad {
+            file: file.to_string(),
+            line: 0,
+            msg: e.to_string(),
+        })?;
         Ok(RegexList { set, patterns })
     }
 
     /// The first pattern matching `test`.
     pub fn matching(&self, test: &str) -> Option<&str> {
-        self.set.matches(test).iter().next().map(|i| self.patterns[i].as_str())
+        self.set
+            .matches(test)
+            .iter()
+            .next()
+            .map(|i| self.patterns[i].as_str())
     }
 }
 
@@ -134,12 +169,18 @@ impl Lists {
             }
             return match listed {
                 Some(Status::Plain(o)) if o == outcome => (Status::ExpectedFail, None),
-                Some(s) => (Status::Plain(outcome), Some(format!("baseline expects {s}"))),
+                Some(s) => (
+                    Status::Plain(outcome),
+                    Some(format!("baseline expects {s}")),
+                ),
                 None => (Status::Plain(outcome), None),
             };
         }
         match listed {
-            Some(Status::Plain(o)) if o.is_failure() => (Status::UnexpectedImprovement(outcome), Some(format!("baseline expects {o}"))),
+            Some(Status::Plain(o)) if o.is_failure() => (
+                Status::UnexpectedImprovement(outcome),
+                Some(format!("baseline expects {o}")),
+            ),
             _ => (Status::Plain(outcome), None),
         }
     }
@@ -155,13 +196,22 @@ mod tests {
         assert_eq!(b.get("a@core"), Some(Status::Plain(Outcome::Fail)));
         assert_eq!(b.get("b@ff"), Some(Status::Plain(Outcome::Crash)));
         assert_eq!(b.len(), 2);
-        let e = Baseline::parse("a@core,Fail\na@core,Crash\n", "b.csv").unwrap_err().to_string();
+        let e = Baseline::parse("a@core,Fail\na@core,Crash\n", "b.csv")
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("b.csv:2") && e.contains("twice"), "{e}");
         assert!(Baseline::parse("a@core,Broken\n", "b.csv").is_err());
         assert!(Baseline::parse("just-a-name\n", "b.csv").is_err());
         // Names with commas, quoted or not.
-        let b = Baseline::parse("\"x/dt=0.25,0.75@core\",Fail\ny/dt=1,0@ff,Timeout\n", "b.csv").unwrap();
-        assert_eq!(b.get("x/dt=0.25,0.75@core"), Some(Status::Plain(Outcome::Fail)));
+        let b = Baseline::parse(
+            "\"x/dt=0.25,0.75@core\",Fail\ny/dt=1,0@ff,Timeout\n",
+            "b.csv",
+        )
+        .unwrap();
+        assert_eq!(
+            b.get("x/dt=0.25,0.75@core"),
+            Some(Status::Plain(Outcome::Fail))
+        );
         assert_eq!(b.get("y/dt=1,0@ff"), Some(Status::Plain(Outcome::Timeout)));
     }
 
@@ -172,18 +222,41 @@ mod tests {
             skips: RegexList::default(),
             flakes: RegexList::parse("# flaky\n^flaky/\n", "f").unwrap(),
         };
-        assert_eq!(lists.status("f@core", Outcome::Fail).0, Status::ExpectedFail);
-        assert_eq!(lists.status("f@core", Outcome::Pass).0, Status::UnexpectedImprovement(Outcome::Pass));
-        assert_eq!(lists.status("f@core", Outcome::Skip).0, Status::UnexpectedImprovement(Outcome::Skip));
-        assert_eq!(lists.status("c@core", Outcome::Fail).0, Status::Plain(Outcome::Fail));
-        assert_eq!(lists.status("new@core", Outcome::Timeout).0, Status::Plain(Outcome::Timeout));
-        assert_eq!(lists.status("flaky/x@core", Outcome::Crash).0, Status::KnownFlake);
-        assert_eq!(lists.status("flaky/x@core", Outcome::Pass).0, Status::Plain(Outcome::Pass));
+        assert_eq!(
+            lists.status("f@core", Outcome::Fail).0,
+            Status::ExpectedFail
+        );
+        assert_eq!(
+            lists.status("f@core", Outcome::Pass).0,
+            Status::UnexpectedImprovement(Outcome::Pass)
+        );
+        assert_eq!(
+            lists.status("f@core", Outcome::Skip).0,
+            Status::UnexpectedImprovement(Outcome::Skip)
+        );
+        assert_eq!(
+            lists.status("c@core", Outcome::Fail).0,
+            Status::Plain(Outcome::Fail)
+        );
+        assert_eq!(
+            lists.status("new@core", Outcome::Timeout).0,
+            Status::Plain(Outcome::Timeout)
+        );
+        assert_eq!(
+            lists.status("flaky/x@core", Outcome::Crash).0,
+            Status::KnownFlake
+        );
+        assert_eq!(
+            lists.status("flaky/x@core", Outcome::Pass).0,
+            Status::Plain(Outcome::Pass)
+        );
     }
 
     #[test]
     fn regex_list_reports_bad_line() {
-        let e = RegexList::parse("ok\n(unclosed\n", "s.txt").unwrap_err().to_string();
+        let e = RegexList::parse("ok\n(unclosed\n", "s.txt")
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with("s.txt:2:"), "{e}");
         let l = RegexList::parse("lequal", "s").unwrap();
         assert_eq!(l.matching("gl46/2d/lequal@core"), Some("lequal"));

@@ -94,7 +94,10 @@ impl TestResult {
 
 /// Quotes for a POSIX shell when needed.
 pub fn shell_quote(s: &str) -> String {
-    if !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric() || "-_./:=,@%+".contains(c)) {
+    if !s.is_empty()
+        && s.chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_./:=,@%+".contains(c))
+    {
         s.to_string()
     } else {
         format!("'{}'", s.replace('\'', "'\\''"))
@@ -127,7 +130,14 @@ pub struct RunMeta {
 
 impl RunMeta {
     pub fn new() -> RunMeta {
-        RunMeta { schema_version: SCHEMA_VERSION, backends: vec![], fixtures: vec![], cases: None, shard: None, baseline: None }
+        RunMeta {
+            schema_version: SCHEMA_VERSION,
+            backends: vec![],
+            fixtures: vec![],
+            cases: None,
+            shard: None,
+            baseline: None,
+        }
     }
 }
 
@@ -235,7 +245,13 @@ impl Summary {
         } else {
             exit::OK
         };
-        Summary { schema_version: SCHEMA_VERSION, backends, counts, load_errors, exit_code }
+        Summary {
+            schema_version: SCHEMA_VERSION,
+            backends,
+            counts,
+            load_errors,
+            exit_code,
+        }
     }
 }
 
@@ -364,25 +380,46 @@ mod tests {
         let better = result("i", Status::UnexpectedImprovement(Outcome::Pass));
         let flake = result("k", Status::Flake);
         let code = |rs: &[TestResult], errors| Summary::new(vec![], rs, errors).exit_code;
-        assert_eq!(code(&[pass.clone(), fail.clone(), better.clone()], 1), exit::REGRESSION);
+        assert_eq!(
+            code(&[pass.clone(), fail.clone(), better.clone()], 1),
+            exit::REGRESSION
+        );
         assert_eq!(code(&[pass.clone(), better.clone()], 1), exit::SETUP);
         assert_eq!(code(&[pass.clone(), better.clone()], 0), exit::IMPROVEMENT);
         assert_eq!(code(&[], 0), exit::NO_TESTS);
-        assert_eq!(code(&[pass, flake, result("e", Status::ExpectedFail), result("w", Status::Plain(Outcome::Warn))], 0), exit::OK);
+        assert_eq!(
+            code(
+                &[
+                    pass,
+                    flake,
+                    result("e", Status::ExpectedFail),
+                    result("w", Status::Plain(Outcome::Warn))
+                ],
+                0
+            ),
+            exit::OK
+        );
     }
 
     #[test]
     fn records_round_trip_and_rerun_commands_quote() {
-        let mut r = result("gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25,1@core", Status::Plain(Outcome::Fail));
+        let mut r = result(
+            "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25,1@core",
+            Status::Plain(Outcome::Fail),
+        );
         r.case_id = "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25,1".into();
         r.observed = Some(Rgba([f64::NAN, 0.0, f64::INFINITY, 1.0]));
         let line = serde_json::to_string(&Line::Result(Box::new(r.clone()))).unwrap();
         let back: Line = serde_json::from_str(&line).unwrap();
-        let Line::Result(back) = back else { panic!("{line}") };
+        let Line::Result(back) = back else {
+            panic!("{line}")
+        };
         assert!(back.observed.unwrap().0[0].is_nan());
         assert_eq!(back.status, r.status);
         assert_eq!(r.rerun_command(), "shadowcheck run --backend b --cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/dt=0\\.25,1$'");
         r.backend = "exec:python3 it's.py".into();
-        assert!(r.rerun_command().starts_with("shadowcheck run --backend 'exec:python3 it'\\''s.py' "));
+        assert!(r
+            .rerun_command()
+            .starts_with("shadowcheck run --backend 'exec:python3 it'\\''s.py' "));
     }
 }

@@ -5,8 +5,8 @@
 //! The library never prints; reporters own every byte of output.
 
 pub mod backend;
-pub mod bench;
 pub mod baseline;
+pub mod bench;
 pub mod events;
 pub mod gl;
 pub mod mutants;

@@ -6,7 +6,11 @@ use clap::{Parser, Subcommand};
 mod cmd;
 
 #[derive(Parser)]
-#[command(name = "shadowcheck", version, about = "Conformance harness and spec-derived oracle for depth-texture comparison (shadow sampling) in OpenGL and OpenGL ES")]
+#[command(
+    name = "shadowcheck",
+    version,
+    about = "Conformance harness and spec-derived oracle for depth-texture comparison (shadow sampling) in OpenGL and OpenGL ES"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

@@ -13,11 +13,26 @@ use std::sync::Mutex;
 
 /// An event with owned data, as sent between threads (the events a backend run emits).
 enum Owned {
-    BackendStarted { backend: String, tests: usize },
-    Diagnostic { backend: String, message: String },
-    CaseFinished { result: Box<TestResult>, replayed: bool },
-    BatchFinished { backend: String },
-    BackendFinished { backend: String, counts: Counts, timing: Timing },
+    BackendStarted {
+        backend: String,
+        tests: usize,
+    },
+    Diagnostic {
+        backend: String,
+        message: String,
+    },
+    CaseFinished {
+        result: Box<TestResult>,
+        replayed: bool,
+    },
+    BatchFinished {
+        backend: String,
+    },
+    BackendFinished {
+        backend: String,
+        counts: Counts,
+        timing: Timing,
+    },
 }
 
 struct ChannelSink(Sender<Owned>);
@@ -25,13 +40,30 @@ struct ChannelSink(Sender<Owned>);
 impl Sink for ChannelSink {
     fn emit(&mut self, ev: &Event<'_>) {
         let owned = match ev {
-            Event::BackendStarted { backend, tests } => Owned::BackendStarted { backend: backend.to_string(), tests: *tests },
-            Event::Diagnostic { backend, message } => Owned::Diagnostic { backend: backend.to_string(), message: message.to_string() },
-            Event::CaseFinished { result, replayed } => Owned::CaseFinished { result: Box::new((*result).clone()), replayed: *replayed },
-            Event::BatchFinished { backend } => Owned::BatchFinished { backend: backend.to_string() },
-            Event::BackendFinished { backend, counts, timing } => {
-                Owned::BackendFinished { backend: backend.to_string(), counts: (*counts).clone(), timing: (*timing).clone() }
-            }
+            Event::BackendStarted { backend, tests } => Owned::BackendStarted {
+                backend: backend.to_string(),
+                tests: *tests,
+            },
+            Event::Diagnostic { backend, message } => Owned::Diagnostic {
+                backend: backend.to_string(),
+                message: message.to_string(),
+            },
+            Event::CaseFinished { result, replayed } => Owned::CaseFinished {
+                result: Box::new((*result).clone()),
+                replayed: *replayed,
+            },
+            Event::BatchFinished { backend } => Owned::BatchFinished {
+                backend: backend.to_string(),
+            },
+            Event::BackendFinished {
+                backend,
+                counts,
+                timing,
+            } => Owned::BackendFinished {
+                backend: backend.to_string(),
+                counts: (*counts).clone(),
+                timing: (*timing).clone(),
+            },
             // Run-level events are emitted by the calling thread only.
             Event::RunStarted { .. } | Event::LoadError(_) | Event::RunFinished { .. } => return,
         };
@@ -42,11 +74,27 @@ impl Sink for ChannelSink {
 
 fn forward(fanout: &mut Fanout, m: &Owned) {
     match m {
-        Owned::BackendStarted { backend, tests } => fanout.emit(&Event::BackendStarted { backend, tests: *tests }),
-        Owned::Diagnostic { backend, message } => fanout.emit(&Event::Diagnostic { backend, message }),
-        Owned::CaseFinished { result, replayed } => fanout.emit(&Event::CaseFinished { result, replayed: *replayed }),
+        Owned::BackendStarted { backend, tests } => fanout.emit(&Event::BackendStarted {
+            backend,
+            tests: *tests,
+        }),
+        Owned::Diagnostic { backend, message } => {
+            fanout.emit(&Event::Diagnostic { backend, message })
+        }
+        Owned::CaseFinished { result, replayed } => fanout.emit(&Event::CaseFinished {
+            result,
+            replayed: *replayed,
+        }),
         Owned::BatchFinished { backend } => fanout.emit(&Event::BatchFinished { backend }),
-        Owned::BackendFinished { backend, counts, timing } => fanout.emit(&Event::BackendFinished { backend, counts, timing }),
+        Owned::BackendFinished {
+            backend,
+            counts,
+            timing,
+        } => fanout.emit(&Event::BackendFinished {
+            backend,
+            counts,
+            timing,
+        }),
     }
 }
 
@@ -60,7 +108,8 @@ pub fn run_backends(
     jobs: usize,
 ) -> Vec<(Vec<TestResult>, Timing)> {
     let n = backends.len();
-    let queue: Mutex<VecDeque<(usize, &mut Box<dyn Backend>)>> = Mutex::new(backends.iter_mut().enumerate().collect());
+    let queue: Mutex<VecDeque<(usize, &mut Box<dyn Backend>)>> =
+        Mutex::new(backends.iter_mut().enumerate().collect());
     type Finished = Option<(Vec<TestResult>, Timing)>;
     let done: Mutex<Vec<Finished>> = Mutex::new((0..n).map(|_| None).collect());
     let (tx, rx) = mpsc::channel();
@@ -82,5 +131,9 @@ pub fn run_backends(
             forward(fanout, &m);
         }
     });
-    done.into_inner().unwrap_or_default().into_iter().map(|r| r.unwrap_or_default()).collect()
+    done.into_inner()
+        .unwrap_or_default()
+        .into_iter()
+        .map(|r| r.unwrap_or_default())
+        .collect()
 }

@@ -15,9 +15,16 @@ pub const RESULTS_FILE: &str = "results.jsonl";
 #[derive(Debug, thiserror::Error)]
 pub enum ResumeError {
     #[error("{file}: {source}")]
-    Io { file: String, source: std::io::Error },
+    Io {
+        file: String,
+        source: std::io::Error,
+    },
     #[error("{file}:{line}: {msg}")]
-    Bad { file: String, line: usize, msg: String },
+    Bad {
+        file: String,
+        line: usize,
+        msg: String,
+    },
 }
 
 /// What a results.jsonl holds.
@@ -32,7 +39,9 @@ pub struct Prior {
 
 impl Prior {
     pub fn get(&self, backend: &str, test: &str) -> Option<&TestResult> {
-        self.index.get(&(backend.to_string(), test.to_string())).map(|&i| &self.results[i])
+        self.index
+            .get(&(backend.to_string(), test.to_string()))
+            .map(|&i| &self.results[i])
     }
 
     pub fn insert(&mut self, r: TestResult) {
@@ -49,7 +58,10 @@ impl Prior {
     /// Reads `path` (a results.jsonl). Lines that do not parse are an error, except a last line
     /// without its newline (a write cut short by a kill), which is dropped.
     pub fn read(path: &Path) -> Result<Prior, ResumeError> {
-        let io = |source| ResumeError::Io { file: path.display().to_string(), source };
+        let io = |source| ResumeError::Io {
+            file: path.display().to_string(),
+            source,
+        };
         let text = std::fs::read_to_string(path).map_err(io)?;
         let mut prior = Prior::default();
         let complete = text.ends_with('\n');
@@ -66,7 +78,13 @@ impl Prior {
                 }
                 Ok(Line::Result(r)) => prior.insert(*r),
                 Err(_) if i + 1 == lines.len() && !complete => {}
-                Err(e) => return Err(ResumeError::Bad { file: path.display().to_string(), line: i + 1, msg: e.to_string() }),
+                Err(e) => {
+                    return Err(ResumeError::Bad {
+                        file: path.display().to_string(),
+                        line: i + 1,
+                        msg: e.to_string(),
+                    })
+                }
             }
         }
         Ok(prior)
@@ -75,8 +93,15 @@ impl Prior {
 
 /// Cuts a results file after its last complete line, so appending continues on a fresh line.
 pub fn truncate_partial_line(path: &Path) -> Result<(), ResumeError> {
-    let io = |source| ResumeError::Io { file: path.display().to_string(), source };
-    let f = std::fs::OpenOptions::new().read(true).write(true).open(path).map_err(io)?;
+    let io = |source| ResumeError::Io {
+        file: path.display().to_string(),
+        source,
+    };
+    let f = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .open(path)
+        .map_err(io)?;
     let mut keep = 0u64;
     let mut pos = 0u64;
     let mut r = BufReader::new(&f);
@@ -106,17 +131,30 @@ mod tests {
 
     #[test]
     fn a_truncated_last_line_is_dropped_and_cut_before_appending() {
-        let dir = std::env::temp_dir().join(format!("shadowcheck-resume-unit-{}", std::process::id()));
+        let dir =
+            std::env::temp_dir().join(format!("shadowcheck-resume-unit-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let p = dir.join(RESULTS_FILE);
         let meta = serde_json::to_string(&Line::Meta(RunMeta::new())).unwrap();
-        let err = serde_json::to_string(&Line::LoadError(LoadError { file: "f".into(), case: None, message: "m".into() })).unwrap();
-        std::fs::write(&p, format!("{meta}\n{err}\n{err}\n{{\"kind\":\"result\",\"back")).unwrap();
+        let err = serde_json::to_string(&Line::LoadError(LoadError {
+            file: "f".into(),
+            case: None,
+            message: "m".into(),
+        }))
+        .unwrap();
+        std::fs::write(
+            &p,
+            format!("{meta}\n{err}\n{err}\n{{\"kind\":\"result\",\"back"),
+        )
+        .unwrap();
         let prior = Prior::read(&p).unwrap();
         assert_eq!(prior.meta, Some(RunMeta::new()));
         assert_eq!(prior.load_errors.len(), 1, "duplicates collapse");
         truncate_partial_line(&p).unwrap();
-        assert_eq!(std::fs::read_to_string(&p).unwrap(), format!("{meta}\n{err}\n{err}\n"));
+        assert_eq!(
+            std::fs::read_to_string(&p).unwrap(),
+            format!("{meta}\n{err}\n{err}\n")
+        );
         // A bad line in the middle is an error naming the line.
         std::fs::write(&p, format!("{meta}\nnot json\n{err}\n")).unwrap();
         let e = Prior::read(&p).unwrap_err().to_string();

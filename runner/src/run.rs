@@ -8,7 +8,9 @@
 
 use crate::backend::{ApiOutcome, Backend, CaseOutcome, Support};
 use crate::baseline::Lists;
-use crate::events::{Counts, Event, Fanout, LoadError, Rgba, Sink, Summary, Tags, TestResult, Timing};
+use crate::events::{
+    Counts, Event, Fanout, LoadError, Rgba, Sink, Summary, Tags, TestResult, Timing,
+};
 use crate::resume::Prior;
 use crate::shard::Shard;
 use crate::verdict::{self, Outcome, Status};
@@ -42,7 +44,11 @@ pub fn load_cases(paths: &[PathBuf]) -> CaseSet {
         let files = match shadowcheck_cases::fixtures::fixture_paths(root) {
             Ok(f) => f,
             Err(e) => {
-                set.errors.push(LoadError { file: root.display().to_string(), case: None, message: e.to_string() });
+                set.errors.push(LoadError {
+                    file: root.display().to_string(),
+                    case: None,
+                    message: e.to_string(),
+                });
                 continue;
             }
         };
@@ -52,7 +58,11 @@ pub fn load_cases(paths: &[PathBuf]) -> CaseSet {
                 Ok((ff, errs)) => {
                     for e in errs {
                         let case = e.case_id().map(str::to_string);
-                        set.errors.push(LoadError { file: file.clone(), case, message: e.to_string() });
+                        set.errors.push(LoadError {
+                            file: file.clone(),
+                            case,
+                            message: e.to_string(),
+                        });
                     }
                     let idx = set.files.len();
                     set.files.push(file.clone());
@@ -61,7 +71,10 @@ pub fn load_cases(paths: &[PathBuf]) -> CaseSet {
                             set.errors.push(LoadError {
                                 file: file.clone(),
                                 case: Some(case.id.clone()),
-                                message: format!("duplicate case id (first in {})", set.files[first]),
+                                message: format!(
+                                    "duplicate case id (first in {})",
+                                    set.files[first]
+                                ),
                             });
                             continue;
                         }
@@ -69,7 +82,11 @@ pub fn load_cases(paths: &[PathBuf]) -> CaseSet {
                         set.cases.push(Loaded { case, file: idx });
                     }
                 }
-                Err(e) => set.errors.push(LoadError { file, case: None, message: e.to_string() }),
+                Err(e) => set.errors.push(LoadError {
+                    file,
+                    case: None,
+                    message: e.to_string(),
+                }),
             }
         }
     }
@@ -79,7 +96,10 @@ pub fn load_cases(paths: &[PathBuf]) -> CaseSet {
 impl CaseSet {
     /// Keeps the cases whose id matches `pattern` and that belong to `shard`.
     pub fn select(&mut self, pattern: Option<&regex::Regex>, shard: Option<Shard>) {
-        self.cases.retain(|l| pattern.is_none_or(|p| p.is_match(&l.case.id)) && shard.is_none_or(|s| s.contains(&l.case.id)));
+        self.cases.retain(|l| {
+            pattern.is_none_or(|p| p.is_match(&l.case.id))
+                && shard.is_none_or(|s| s.contains(&l.case.id))
+        });
     }
     pub fn tests(&self) -> usize {
         self.cases.iter().map(|l| l.case.api.len()).sum()
@@ -104,7 +124,10 @@ struct Ctx<'a> {
 
 impl Ctx<'_> {
     fn finish(&mut self, r: TestResult, replayed: bool) {
-        self.fanout.emit(&Event::CaseFinished { result: &r, replayed });
+        self.fanout.emit(&Event::CaseFinished {
+            result: &r,
+            replayed,
+        });
         self.results.push(r);
     }
 }
@@ -129,7 +152,13 @@ fn base_result(backend: &str, case: &Case, api: ApiPath, fixtures: Option<&str>)
 }
 
 /// The raw outcome of each API path of `sent` from the backend's answer.
-fn judge_outcome(backend: &str, sent: &Case, outcome: &CaseOutcome, duration: f64, fixtures: Option<&str>) -> Vec<TestResult> {
+fn judge_outcome(
+    backend: &str,
+    sent: &Case,
+    outcome: &CaseOutcome,
+    duration: f64,
+    fixtures: Option<&str>,
+) -> Vec<TestResult> {
     sent.api
         .iter()
         .map(|&api| {
@@ -137,11 +166,17 @@ fn judge_outcome(backend: &str, sent: &Case, outcome: &CaseOutcome, duration: f6
             r.duration = duration;
             let (o, reason) = match outcome {
                 CaseOutcome::Skip(m) => (Outcome::Skip, Some(m.clone())),
-                CaseOutcome::Error(m) => (Outcome::Fail, Some(format!("implementation error: {m}"))),
+                CaseOutcome::Error(m) => {
+                    (Outcome::Fail, Some(format!("implementation error: {m}")))
+                }
                 CaseOutcome::Crash(m) => (Outcome::Crash, Some(m.clone())),
                 CaseOutcome::Timeout(m) => (Outcome::Timeout, Some(m.clone())),
-                CaseOutcome::Observed(v) => match v.iter().find(|(a, _)| *a == api).map(|(_, o)| o) {
-                    None => (Outcome::Skip, Some("the backend returned no result for this API path".to_string())),
+                CaseOutcome::Observed(v) => match v.iter().find(|(a, _)| *a == api).map(|(_, o)| o)
+                {
+                    None => (
+                        Outcome::Skip,
+                        Some("the backend returned no result for this API path".to_string()),
+                    ),
                     Some(ApiOutcome::Skip(m)) => (Outcome::Skip, Some(m.clone())),
                     Some(ApiOutcome::Rgba { rgba, stored }) => {
                         let j = verdict::judge(sent, api, *rgba, stored.as_ref());
@@ -168,17 +203,32 @@ pub fn run_backend(
     fanout: &mut dyn Sink,
 ) -> (Vec<TestResult>, Timing) {
     let name = backend.name().to_string();
-    let mut ctx = Ctx { settings, fanout, results: Vec::with_capacity(set.tests()) };
+    let mut ctx = Ctx {
+        settings,
+        fanout,
+        results: Vec::with_capacity(set.tests()),
+    };
     let mut timing = Timing::default();
-    ctx.fanout.emit(&Event::BackendStarted { backend: &name, tests: set.tests() });
+    ctx.fanout.emit(&Event::BackendStarted {
+        backend: &name,
+        tests: set.tests(),
+    });
     let lists = &settings.lists;
-    let file_of = |l: &Loaded| settings.explicit_fixtures.then(|| set.files[l.file].as_str());
+    let file_of = |l: &Loaded| {
+        settings
+            .explicit_fixtures
+            .then(|| set.files[l.file].as_str())
+    };
     let mut to_send: Vec<(Cow<'_, Case>, Option<&str>)> = Vec::new();
     for l in &set.cases {
         let case = &l.case;
         let fixtures = file_of(l);
         // Resumed: every test of the case already on disk.
-        let done: Vec<&TestResult> = case.api.iter().filter_map(|&a| prior.get(&name, &TestResult::name(&case.id, a))).collect();
+        let done: Vec<&TestResult> = case
+            .api
+            .iter()
+            .filter_map(|&a| prior.get(&name, &TestResult::name(&case.id, a)))
+            .collect();
         if done.len() == case.api.len() {
             for r in done {
                 ctx.finish(r.clone(), true);
@@ -200,7 +250,14 @@ pub fn run_backend(
         if apis.is_empty() {
             continue;
         }
-        let narrowed = if apis.len() == case.api.len() { Cow::Borrowed(case) } else { Cow::Owned(Case { api: apis, ..case.clone() }) };
+        let narrowed = if apis.len() == case.api.len() {
+            Cow::Borrowed(case)
+        } else {
+            Cow::Owned(Case {
+                api: apis,
+                ..case.clone()
+            })
+        };
         match backend.capabilities().support(&narrowed) {
             Support::Skip(reason) => {
                 for &api in &narrowed.api {
@@ -220,7 +277,13 @@ pub fn run_backend(
                 if apis.len() == narrowed.api.len() {
                     to_send.push((narrowed, fixtures));
                 } else {
-                    to_send.push((Cow::Owned(Case { api: apis, ..narrowed.into_owned() }), fixtures));
+                    to_send.push((
+                        Cow::Owned(Case {
+                            api: apis,
+                            ..narrowed.into_owned()
+                        }),
+                        fixtures,
+                    ));
                 }
             }
         }
@@ -236,7 +299,10 @@ pub fn run_backend(
         let per_case = dt / refs.len() as f64;
         let t1 = Instant::now();
         let missing = CaseOutcome::Crash("the backend gave no answer".into());
-        for ((case, fixtures), outcome) in chunk.iter().zip(outcomes.iter().chain(std::iter::repeat(&missing))) {
+        for ((case, fixtures), outcome) in chunk
+            .iter()
+            .zip(outcomes.iter().chain(std::iter::repeat(&missing)))
+        {
             for mut r in judge_outcome(&name, case, outcome, per_case, *fixtures) {
                 let (status, note) = lists.status(&r.test, r.outcome);
                 r.status = status;
@@ -250,7 +316,10 @@ pub fn run_backend(
             }
         }
         for d in backend.take_diagnostics() {
-            ctx.fanout.emit(&Event::Diagnostic { backend: &name, message: &d });
+            ctx.fanout.emit(&Event::Diagnostic {
+                backend: &name,
+                message: &d,
+            });
         }
         ctx.fanout.emit(&Event::BatchFinished { backend: &name });
         timing.verdict_s += t1.elapsed().as_secs_f64();
@@ -262,7 +331,11 @@ pub fn run_backend(
     for r in &ctx.results {
         counts.add(r.status);
     }
-    ctx.fanout.emit(&Event::BackendFinished { backend: &name, counts: &counts, timing: &timing });
+    ctx.fanout.emit(&Event::BackendFinished {
+        backend: &name,
+        counts: &counts,
+        timing: &timing,
+    });
     (ctx.results, timing)
 }
 
@@ -285,8 +358,18 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
         .filter_map(|l| {
             let idx = by_case.get(l.case.id.as_str())?;
             let apis = idx.iter().map(|&i| ctx.results[i].api).collect();
-            let file = ctx.settings.explicit_fixtures.then(|| set.files[l.file].as_str());
-            Some((Case { api: apis, ..l.case.clone() }, idx.clone(), file))
+            let file = ctx
+                .settings
+                .explicit_fixtures
+                .then(|| set.files[l.file].as_str());
+            Some((
+                Case {
+                    api: apis,
+                    ..l.case.clone()
+                },
+                idx.clone(),
+                file,
+            ))
         })
         .collect();
     let refs: Vec<&Case> = cases.iter().map(|(c, _, _)| c).collect();
@@ -295,7 +378,10 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
         outcomes.extend(backend.run_batch(chunk));
     }
     for d in backend.take_diagnostics() {
-        ctx.fanout.emit(&Event::Diagnostic { backend: &name, message: &d });
+        ctx.fanout.emit(&Event::Diagnostic {
+            backend: &name,
+            message: &d,
+        });
     }
     for ((case, idx, file), outcome) in cases.iter().zip(outcomes.iter()) {
         let again = judge_outcome(&name, case, outcome, 0.0, *file);
@@ -304,10 +390,17 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
             r.rerun = Some(second.outcome);
             if second.outcome != r.outcome {
                 r.status = Status::Flake;
-                r.reason = Some(format!("{}; re-run gave {}", r.reason.clone().unwrap_or_default(), second.outcome));
+                r.reason = Some(format!(
+                    "{}; re-run gave {}",
+                    r.reason.clone().unwrap_or_default(),
+                    second.outcome
+                ));
             }
             let r = r.clone();
-            ctx.fanout.emit(&Event::CaseFinished { result: &r, replayed: false });
+            ctx.fanout.emit(&Event::CaseFinished {
+                result: &r,
+                replayed: false,
+            });
         }
     }
     ctx.fanout.emit(&Event::BatchFinished { backend: &name });
@@ -315,7 +408,9 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
 
 /// Results in report order: by backend, then by test name.
 pub fn sort_results(results: &mut [TestResult]) {
-    results.sort_by(|a, b| (a.backend.as_str(), a.test.as_str()).cmp(&(b.backend.as_str(), b.test.as_str())));
+    results.sort_by(|a, b| {
+        (a.backend.as_str(), a.test.as_str()).cmp(&(b.backend.as_str(), b.test.as_str()))
+    });
 }
 
 /// Runs every backend over `set` (up to `jobs` backends at once, each in its own thread; the
@@ -330,12 +425,19 @@ pub fn run_all(
     jobs: usize,
 ) -> (Vec<TestResult>, Summary, Vec<Timing>) {
     let names: Vec<String> = backends.iter().map(|b| b.name().to_string()).collect();
-    fanout.emit(&Event::RunStarted { backends: &names, tests: set.tests() * names.len(), out_dir });
+    fanout.emit(&Event::RunStarted {
+        backends: &names,
+        tests: set.tests() * names.len(),
+        out_dir,
+    });
     for e in &set.errors {
         fanout.emit(&Event::LoadError(e));
     }
     let per_backend = if jobs <= 1 || backends.len() <= 1 {
-        backends.iter_mut().map(|b| run_backend(b.as_mut(), set, prior, settings, fanout)).collect()
+        backends
+            .iter_mut()
+            .map(|b| run_backend(b.as_mut(), set, prior, settings, fanout))
+            .collect()
     } else {
         crate::parallel::run_backends(backends, set, prior, settings, fanout, jobs)
     };
@@ -350,10 +452,19 @@ pub fn run_all(
 }
 
 /// Sorts, totals and announces the end of a run (shared with `merge`).
-pub fn finish(backends: Vec<String>, results: &mut [TestResult], errors: &[LoadError], fanout: &mut Fanout) -> Summary {
+pub fn finish(
+    backends: Vec<String>,
+    results: &mut [TestResult],
+    errors: &[LoadError],
+    fanout: &mut Fanout,
+) -> Summary {
     sort_results(results);
     let summary = Summary::new(backends, results, errors.len());
-    fanout.emit(&Event::RunFinished { results, load_errors: errors, summary: &summary });
+    fanout.emit(&Event::RunFinished {
+        results,
+        load_errors: errors,
+        summary: &summary,
+    });
     summary
 }
 
@@ -384,7 +495,18 @@ mod tests {
                 .map(|c| {
                     self.sent.push((c.id.clone(), c.api.clone()));
                     CaseOutcome::Observed(
-                        c.api.iter().map(|&a| (a, ApiOutcome::Rgba { rgba: [1.0, 1.0, 1.0, 1.0], stored: None })).collect(),
+                        c.api
+                            .iter()
+                            .map(|&a| {
+                                (
+                                    a,
+                                    ApiOutcome::Rgba {
+                                        rgba: [1.0, 1.0, 1.0, 1.0],
+                                        stored: None,
+                                    },
+                                )
+                            })
+                            .collect(),
                     )
                 })
                 .collect()
@@ -406,7 +528,20 @@ mod tests {
         let mut accept = BTreeMap::new();
         accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
         accept.insert(Profile::Lenient, Acceptance(vec![Interval::point(1.0)]));
-        let layout = api.iter().map(|&a| (a, [Channel::R, Channel::Unused, Channel::Unused, Channel::Unused])).collect();
+        let layout = api
+            .iter()
+            .map(|&a| {
+                (
+                    a,
+                    [
+                        Channel::R,
+                        Channel::Unused,
+                        Channel::Unused,
+                        Channel::Unused,
+                    ],
+                )
+            })
+            .collect();
         Case {
             id: id.into(),
             spec,
@@ -415,11 +550,31 @@ mod tests {
                 target: Target::T2d,
                 format: Format::D16,
                 base_level: 0,
-                levels: vec![Level { width: 1, height: 1, layers: 1, depth: Texels::Unorm(vec![65535]), stencil: None }],
+                levels: vec![Level {
+                    width: 1,
+                    height: 1,
+                    layers: 1,
+                    depth: Texels::Unorm(vec![65535]),
+                    stencil: None,
+                }],
             },
             sampler: Sampler::new(CompareMode::Compare, CompareFunc::Always, Filter::Nearest),
-            lookup: Lookup { coord: [0.5, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0, offset: [0; 3] },
-            expect: Some(Expectation { spec_value: Some(1.0), accept, layout, implementation_defined: None, citations: vec![] }),
+            lookup: Lookup {
+                coord: [0.5, 0.5, 0.0, 1.0],
+                layer: 0.0,
+                dref: 0.5,
+                projective: false,
+                lod: 0.0,
+                bias: 0.0,
+                offset: [0; 3],
+            },
+            expect: Some(Expectation {
+                spec_value: Some(1.0),
+                accept,
+                layout,
+                implementation_defined: None,
+                citations: vec![],
+            }),
         }
     }
 
@@ -428,8 +583,18 @@ mod tests {
         let set = CaseSet {
             files: vec!["f.json".into()],
             cases: vec![
-                Loaded { case: case("gl46/a", Spec::Gl46, vec![ApiPath::GlslCore, ApiPath::Glsl130, ApiPath::FixedFunction]), file: 0 },
-                Loaded { case: case("gles32/b", Spec::Gles32, vec![ApiPath::Es300]), file: 0 },
+                Loaded {
+                    case: case(
+                        "gl46/a",
+                        Spec::Gl46,
+                        vec![ApiPath::GlslCore, ApiPath::Glsl130, ApiPath::FixedFunction],
+                    ),
+                    file: 0,
+                },
+                Loaded {
+                    case: case("gles32/b", Spec::Gles32, vec![ApiPath::Es300]),
+                    file: 0,
+                },
             ],
             errors: vec![],
         };
@@ -442,37 +607,76 @@ mod tests {
             sent: vec![],
         };
         let settings = Settings {
-            lists: Lists { skips: crate::baseline::RegexList::parse("@glsl130$", "s").unwrap(), ..Lists::default() },
+            lists: Lists {
+                skips: crate::baseline::RegexList::parse("@glsl130$", "s").unwrap(),
+                ..Lists::default()
+            },
             ..Settings::default()
         };
         let n = std::rc::Rc::new(std::cell::Cell::new(0));
         let mut fanout = Fanout::default();
         fanout.reporters.push(Box::new(Count(n.clone())));
-        let (results, timing) = run_backend(&mut fake, &set, &Prior::default(), &settings, &mut fanout);
+        let (results, timing) =
+            run_backend(&mut fake, &set, &Prior::default(), &settings, &mut fanout);
         assert_eq!(fake.sent, [("gl46/a".to_string(), vec![ApiPath::GlslCore])]);
         assert_eq!(timing.cases_sent, 1);
         assert_eq!(n.get(), 4);
-        let by: HashMap<&str, (&Status, Option<&str>)> =
-            results.iter().map(|r| (r.test.as_str(), (&r.status, r.reason.as_deref()))).collect();
+        let by: HashMap<&str, (&Status, Option<&str>)> = results
+            .iter()
+            .map(|r| (r.test.as_str(), (&r.status, r.reason.as_deref())))
+            .collect();
         assert_eq!(by["gl46/a@core"].0, &Status::Plain(Outcome::Pass));
-        assert_eq!(by["gl46/a@glsl130"], (&Status::Plain(Outcome::Skip), Some("skips list: `@glsl130$`")));
-        assert_eq!(by["gl46/a@ff"], (&Status::Plain(Outcome::Skip), Some("API path not supported by this backend")));
-        assert_eq!(by["gles32/b@es300"], (&Status::Plain(Outcome::Skip), Some("spec `gles32` not supported by this backend")));
+        assert_eq!(
+            by["gl46/a@glsl130"],
+            (
+                &Status::Plain(Outcome::Skip),
+                Some("skips list: `@glsl130$`")
+            )
+        );
+        assert_eq!(
+            by["gl46/a@ff"],
+            (
+                &Status::Plain(Outcome::Skip),
+                Some("API path not supported by this backend")
+            )
+        );
+        assert_eq!(
+            by["gles32/b@es300"],
+            (
+                &Status::Plain(Outcome::Skip),
+                Some("spec `gles32` not supported by this backend")
+            )
+        );
     }
 
     #[test]
     fn resumed_tests_are_replayed_not_rerun() {
         let set = CaseSet {
             files: vec!["f.json".into()],
-            cases: vec![Loaded { case: case("gl46/a", Spec::Gl46, vec![ApiPath::GlslCore]), file: 0 }],
+            cases: vec![Loaded {
+                case: case("gl46/a", Spec::Gl46, vec![ApiPath::GlslCore]),
+                file: 0,
+            }],
             errors: vec![],
         };
-        let mut fake = Fake { caps: Capabilities::all(), sent: vec![] };
+        let mut fake = Fake {
+            caps: Capabilities::all(),
+            sent: vec![],
+        };
         let mut fanout = Fanout::default();
-        let (first, _) = run_backend(&mut fake, &set, &Prior::default(), &Settings::default(), &mut fanout);
+        let (first, _) = run_backend(
+            &mut fake,
+            &set,
+            &Prior::default(),
+            &Settings::default(),
+            &mut fanout,
+        );
         let mut prior = Prior::default();
         prior.insert(first[0].clone());
-        let mut fake = Fake { caps: Capabilities::all(), sent: vec![] };
+        let mut fake = Fake {
+            caps: Capabilities::all(),
+            sent: vec![],
+        };
         let (again, _) = run_backend(&mut fake, &set, &prior, &Settings::default(), &mut fanout);
         assert!(fake.sent.is_empty());
         assert_eq!(again, first);

@@ -35,7 +35,10 @@ impl FromStr for Shard {
     fn from_str(s: &str) -> Result<Shard, String> {
         let bad = || format!("--shard `{s}`: expected K/N with 1 <= K <= N, e.g. 1/4");
         let (k, n) = s.split_once('/').ok_or_else(bad)?;
-        let (k, n): (u64, u64) = (k.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
+        let (k, n): (u64, u64) = (
+            k.trim().parse().map_err(|_| bad())?,
+            n.trim().parse().map_err(|_| bad())?,
+        );
         if n == 0 || k == 0 || k > n {
             return Err(bad());
         }
@@ -55,7 +58,9 @@ mod tests {
 
     #[test]
     fn shards_partition_the_ids() {
-        let ids: Vec<String> = (0..500).map(|i| format!("gl46/2d/d16/nearest/lequal/ref={i}")).collect();
+        let ids: Vec<String> = (0..500)
+            .map(|i| format!("gl46/2d/d16/nearest/lequal/ref={i}"))
+            .collect();
         let shards: Vec<Shard> = (1..=3).map(|k| format!("{k}/3").parse().unwrap()).collect();
         let mut sizes = [0; 3];
         for id in &ids {

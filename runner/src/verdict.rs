@@ -64,7 +64,11 @@ impl FromStr for Outcome {
             "Skip" => Outcome::Skip,
             "Crash" => Outcome::Crash,
             "Timeout" => Outcome::Timeout,
-            _ => return Err(format!("unknown outcome `{s}` (Pass, Warn, Fail, Skip, Crash, Timeout)")),
+            _ => {
+                return Err(format!(
+                    "unknown outcome `{s}` (Pass, Warn, Fail, Skip, Crash, Timeout)"
+                ))
+            }
         })
     }
 }
@@ -127,7 +131,10 @@ impl FromStr for Status {
             "ExpectedFail" => Status::ExpectedFail,
             "Flake" => Status::Flake,
             "KnownFlake" => Status::KnownFlake,
-            _ => match s.strip_prefix("UnexpectedImprovement(").and_then(|r| r.strip_suffix(')')) {
+            _ => match s
+                .strip_prefix("UnexpectedImprovement(")
+                .and_then(|r| r.strip_suffix(')'))
+            {
                 Some(inner) => Status::UnexpectedImprovement(inner.parse()?),
                 None => Status::Plain(s.parse()?),
             },
@@ -179,12 +186,17 @@ pub struct Judged {
 /// Runs the oracle, turning a panic (e.g. a part not written yet) into an error string, so that a
 /// single bad case never takes the run down.
 pub fn oracle_evaluate(case: &Case) -> Result<shadowcheck_oracle::Evaluation, String> {
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| shadowcheck_oracle::evaluate(case))) {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        shadowcheck_oracle::evaluate(case)
+    })) {
         Ok(Ok(ev)) => Ok(ev),
         Ok(Err(e)) => Err(e.to_string()),
         Err(p) => Err(format!(
             "oracle panicked: {}",
-            p.downcast_ref::<&str>().copied().or(p.downcast_ref::<String>().map(|s| s.as_str())).unwrap_or("?")
+            p.downcast_ref::<&str>()
+                .copied()
+                .or(p.downcast_ref::<String>().map(|s| s.as_str()))
+                .unwrap_or("?")
         )),
     }
 }
@@ -194,7 +206,12 @@ fn layout_text(layout: &[Channel; 4]) -> String {
 }
 
 /// Which channels of `rgba` break the acceptance of `profile`, e.g. `g = 0 (expected r in {0.4})`.
-fn channel_misses(e: &Expectation, layout: &[Channel; 4], profile: Profile, rgba: [f64; 4]) -> String {
+fn channel_misses(
+    e: &Expectation,
+    layout: &[Channel; 4],
+    profile: Profile,
+    rgba: [f64; 4],
+) -> String {
     let acc = e.accept.get(&profile);
     let mut out = vec![];
     for ((name, ch), v) in ['r', 'g', 'b', 'a'].iter().zip(layout).zip(rgba) {
@@ -217,7 +234,12 @@ fn channel_misses(e: &Expectation, layout: &[Channel; 4], profile: Profile, rgba
 }
 
 fn summary(e: &Expectation, layout: &[Channel; 4], profile: Profile) -> ExpectedSummary {
-    let get = |p| e.accept.get(&p).map(|a| a.to_string()).unwrap_or_else(|| "(none)".into());
+    let get = |p| {
+        e.accept
+            .get(&p)
+            .map(|a| a.to_string())
+            .unwrap_or_else(|| "(none)".into())
+    };
     ExpectedSummary {
         spec_value: e.spec_value,
         strict: get(Profile::Strict),
@@ -230,7 +252,12 @@ fn summary(e: &Expectation, layout: &[Channel; 4], profile: Profile) -> Expected
 
 /// Judges `rgba` observed through `api` for `case`. `stored`: the level-0 texels the backend read
 /// back; the oracle then re-evaluates the case with those texels (PROTOCOL.md §2).
-pub fn judge(case: &Case, api: shadowcheck_model::ApiPath, rgba: [f64; 4], stored: Option<&Texels>) -> Judged {
+pub fn judge(
+    case: &Case,
+    api: shadowcheck_model::ApiPath,
+    rgba: [f64; 4],
+    stored: Option<&Texels>,
+) -> Judged {
     // The case the verdict is about: with the texels the implementation really stored, if known.
     let restored;
     let (subject, mut evaluation) = match stored {
@@ -266,7 +293,9 @@ pub fn judge(case: &Case, api: shadowcheck_model::ApiPath, rgba: [f64; 4], store
     let Some(layout) = expect.layout.get(&api).copied() else {
         return Judged {
             outcome: Outcome::Skip,
-            reason: Some(format!("the expectation has no layout for API path `{api}`")),
+            reason: Some(format!(
+                "the expectation has no layout for API path `{api}`"
+            )),
             expected: None,
             footprint: None,
         };
@@ -282,9 +311,15 @@ pub fn judge(case: &Case, api: shadowcheck_model::ApiPath, rgba: [f64; 4], store
     if outcome != Outcome::Pass {
         reason = Some(match judgement {
             Judgement::LenientOnly => {
-                format!("inside the lenient acceptance set, outside strict: {}", channel_misses(&expect, &layout, Profile::Strict, rgba))
+                format!(
+                    "inside the lenient acceptance set, outside strict: {}",
+                    channel_misses(&expect, &layout, Profile::Strict, rgba)
+                )
             }
-            _ => format!("outside the lenient acceptance set: {}", channel_misses(&expect, &layout, Profile::Lenient, rgba)),
+            _ => format!(
+                "outside the lenient acceptance set: {}",
+                channel_misses(&expect, &layout, Profile::Lenient, rgba)
+            ),
         });
         let ev = match evaluation {
             Some(ev) => Ok(ev),
@@ -298,7 +333,12 @@ pub fn judge(case: &Case, api: shadowcheck_model::ApiPath, rgba: [f64; 4], store
     // What was expected is kept for the reports only where something is to be explained (the
     // fixture has it for the rest), which keeps results.jsonl small and the pass path cheap.
     let expected = (outcome != Outcome::Pass).then(|| summary(&expect, &layout, profile));
-    Judged { outcome, reason, expected, footprint }
+    Judged {
+        outcome,
+        reason,
+        expected,
+        footprint,
+    }
 }
 
 #[cfg(test)]
@@ -315,8 +355,22 @@ mod tests {
             accept.insert(Profile::Strict, Acceptance(vec![Interval::point(0.0)]));
             accept.insert(Profile::Lenient, Acceptance(vec![Interval::new(0.0, 0.1)]));
             let mut layout = BTreeMap::new();
-            layout.insert(ApiPath::GlslCore, [Channel::R, Channel::Unused, Channel::Unused, Channel::Unused]);
-            Expectation { spec_value: Some(0.0), accept, layout, implementation_defined: None, citations: vec![] }
+            layout.insert(
+                ApiPath::GlslCore,
+                [
+                    Channel::R,
+                    Channel::Unused,
+                    Channel::Unused,
+                    Channel::Unused,
+                ],
+            );
+            Expectation {
+                spec_value: Some(0.0),
+                accept,
+                layout,
+                implementation_defined: None,
+                citations: vec![],
+            }
         });
         Case {
             id: "t".into(),
@@ -326,10 +380,24 @@ mod tests {
                 target: Target::T2d,
                 format: Format::D16,
                 base_level: 0,
-                levels: vec![Level { width: 2, height: 1, layers: 1, depth: Texels::Unorm(vec![0, 65535]), stencil: None }],
+                levels: vec![Level {
+                    width: 2,
+                    height: 1,
+                    layers: 1,
+                    depth: Texels::Unorm(vec![0, 65535]),
+                    stencil: None,
+                }],
             },
             sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
-            lookup: Lookup { coord: [0.25, 0.5, 0.0, 1.0], layer: 0.0, dref: 0.5, projective: false, lod: 0.0, bias: 0.0, offset: [0; 3] },
+            lookup: Lookup {
+                coord: [0.25, 0.5, 0.0, 1.0],
+                layer: 0.0,
+                dref: 0.5,
+                projective: false,
+                lod: 0.0,
+                bias: 0.0,
+                offset: [0; 3],
+            },
             expect,
         }
     }
@@ -337,7 +405,10 @@ mod tests {
     #[test]
     fn judge_by_profile_and_layout() {
         let c = case(true);
-        assert_eq!(judge(&c, ApiPath::GlslCore, [0.0, 7.0, 7.0, 7.0], None).outcome, Outcome::Pass);
+        assert_eq!(
+            judge(&c, ApiPath::GlslCore, [0.0, 7.0, 7.0, 7.0], None).outcome,
+            Outcome::Pass
+        );
         let w = judge(&c, ApiPath::GlslCore, [0.05, 0.0, 0.0, 1.0], None);
         assert_eq!(w.outcome, Outcome::Warn);
         assert!(w.reason.unwrap().contains("r = 0.05 (expected r in {0})"));
@@ -347,8 +418,14 @@ mod tests {
         // The oracle's footprint: texel (0,0,0), stored 0, failing the compare, weight 1.
         let fp = f.footprint.expect("footprint from the oracle");
         assert_eq!(fp.texels.len(), 1);
-        assert_eq!((fp.texels[0].xyz, fp.texels[0].pass, fp.texels[0].weight), (Some([0, 0, 0]), Some(false), 1.0));
-        assert_eq!(judge(&c, ApiPath::FixedFunction, [0.0; 4], None).outcome, Outcome::Skip);
+        assert_eq!(
+            (fp.texels[0].xyz, fp.texels[0].pass, fp.texels[0].weight),
+            (Some([0, 0, 0]), Some(false), 1.0)
+        );
+        assert_eq!(
+            judge(&c, ApiPath::FixedFunction, [0.0; 4], None).outcome,
+            Outcome::Skip
+        );
     }
 
     #[test]
@@ -356,10 +433,19 @@ mod tests {
         // The implementation says it stored 65535 in texel 0: then LEQUAL 0.5 <= 1 passes, r = 1.
         let c = case(true);
         let stored = Texels::Unorm(vec![65535, 65535]);
-        assert_eq!(judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], Some(&stored)).outcome, Outcome::Pass);
-        assert_eq!(judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], None).outcome, Outcome::Fail);
+        assert_eq!(
+            judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], Some(&stored)).outcome,
+            Outcome::Pass
+        );
+        assert_eq!(
+            judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], None).outcome,
+            Outcome::Fail
+        );
         // Without a stored expectation the oracle supplies one.
-        assert_eq!(judge(&case(false), ApiPath::GlslCore, [0.0, 0.0, 0.0, 1.0], None).outcome, Outcome::Pass);
+        assert_eq!(
+            judge(&case(false), ApiPath::GlslCore, [0.0, 0.0, 0.0, 1.0], None).outcome,
+            Outcome::Pass
+        );
     }
 
     #[test]
@@ -374,7 +460,10 @@ mod tests {
         ] {
             assert_eq!(s.to_string().parse::<Status>().unwrap(), s);
         }
-        assert_eq!(Status::UnexpectedImprovement(Outcome::Warn).to_string(), "UnexpectedImprovement(Warn)");
+        assert_eq!(
+            Status::UnexpectedImprovement(Outcome::Warn).to_string(),
+            "UnexpectedImprovement(Warn)"
+        );
         assert!("Failed".parse::<Status>().is_err());
         assert!("UnexpectedImprovement(Bogus)".parse::<Status>().is_err());
     }

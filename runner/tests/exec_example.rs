@@ -14,7 +14,12 @@ fn example() -> String {
 /// 4 funcs x 4 texels, reference 0.5, plus a case outside the example's capabilities (a cube map).
 fn fixture(dir: &std::path::Path) -> String {
     let mut cases = vec![];
-    for f in [CompareFunc::Lequal, CompareFunc::Gequal, CompareFunc::Less, CompareFunc::Greater] {
+    for f in [
+        CompareFunc::Lequal,
+        CompareFunc::Gequal,
+        CompareFunc::Less,
+        CompareFunc::Greater,
+    ] {
         for (x, y) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
             cases.push(nearest_case(f, x, y, 0.5));
         }
@@ -37,7 +42,14 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
     let fixed = format!("exec:python3 {}", example());
 
     let out1 = dir.join("swapped");
-    let r = run(&["-b", &swapped, "--fixtures", &fx, "--out", out1.to_str().unwrap()]);
+    let r = run(&[
+        "-b",
+        &swapped,
+        "--fixtures",
+        &fx,
+        "--out",
+        out1.to_str().unwrap(),
+    ]);
     assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
     let rows = results(&out1);
     assert_eq!(rows.len(), 17);
@@ -55,34 +67,93 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
     }
     // The dump of texel (1,1): stored 65535, Dt 1, Dref 0.5, expected 1, observed 0.
     let md = std::fs::read_to_string(out1.join("report.md")).unwrap();
-    let dump = md.split("```text").find(|d| d.contains("/lequal/ref=0.5/texel=1,1@core")).expect("dump of texel 1,1");
-    assert!(dump.contains("expected:  spec value 1; strict {1}; lenient {1}"), "{dump}");
+    let dump = md
+        .split("```text")
+        .find(|d| d.contains("/lequal/ref=0.5/texel=1,1@core"))
+        .expect("dump of texel 1,1");
+    assert!(
+        dump.contains("expected:  spec value 1; strict {1}; lenient {1}"),
+        "{dump}"
+    );
     assert!(dump.contains("observed:  rgba (0, 0, 0, 1)"), "{dump}");
     assert!(dump.contains("footprint: Dref 0.5 (1 texels)"), "{dump}");
-    let texel_line = dump.lines().find(|l| l.trim_start().starts_with("0     1,1,0")).expect("footprint texel line");
+    let texel_line = dump
+        .lines()
+        .find(|l| l.trim_start().starts_with("0     1,1,0"))
+        .expect("footprint texel line");
     let cols: Vec<&str> = texel_line.split_whitespace().collect();
-    assert_eq!(cols, ["0", "1,1,0", "65535", "1", "pass", "1"], "{texel_line}");
-    assert!(dump.contains("re-run:    shadowcheck run --backend 'exec:python3 "), "{dump}");
-    assert!(dump.contains("--cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/texel=1,1$'"), "{dump}");
+    assert_eq!(
+        cols,
+        ["0", "1,1,0", "65535", "1", "pass", "1"],
+        "{texel_line}"
+    );
+    assert!(
+        dump.contains("re-run:    shadowcheck run --backend 'exec:python3 "),
+        "{dump}"
+    );
+    assert!(
+        dump.contains("--cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/texel=1,1$'"),
+        "{dump}"
+    );
     let skip = std::fs::read_to_string(out1.join("report.json")).unwrap();
-    assert!(skip.contains("spec `gles32` not supported by this backend"), "capability skip reason missing");
+    assert!(
+        skip.contains("spec `gles32` not supported by this backend"),
+        "capability skip reason missing"
+    );
 
     // Those failures as the baseline: exit 0.
     let base = out1.join("failures.csv");
     assert_eq!(std::fs::read_to_string(&base).unwrap().lines().count(), 8);
     let out2 = dir.join("baselined");
-    let r = run(&["-b", &swapped, "--fixtures", &fx, "--baseline", base.to_str().unwrap(), "--out", out2.to_str().unwrap()]);
+    let r = run(&[
+        "-b",
+        &swapped,
+        "--fixtures",
+        &fx,
+        "--baseline",
+        base.to_str().unwrap(),
+        "--out",
+        out2.to_str().unwrap(),
+    ]);
     assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
-    assert_eq!(results(&out2).iter().filter(|r| r.1 == "ExpectedFail").count(), 8);
+    assert_eq!(
+        results(&out2)
+            .iter()
+            .filter(|r| r.1 == "ExpectedFail")
+            .count(),
+        8
+    );
 
     // The fixed script: the 8 listed tests are unexpected improvements.
     let out3 = dir.join("fixed");
-    let r = run(&["-b", &fixed, "--fixtures", &fx, "--baseline", base.to_str().unwrap(), "--out", out3.to_str().unwrap()]);
+    let r = run(&[
+        "-b",
+        &fixed,
+        "--fixtures",
+        &fx,
+        "--baseline",
+        base.to_str().unwrap(),
+        "--out",
+        out3.to_str().unwrap(),
+    ]);
     assert_eq!(r.code, 101, "{}{}", r.stdout, r.stderr);
-    assert_eq!(results(&out3).iter().filter(|r| r.1 == "UnexpectedImprovement(Pass)").count(), 8);
+    assert_eq!(
+        results(&out3)
+            .iter()
+            .filter(|r| r.1 == "UnexpectedImprovement(Pass)")
+            .count(),
+        8
+    );
     // And without the baseline everything it supports passes.
     let out4 = dir.join("fixed-plain");
-    let r = run(&["-b", &fixed, "--fixtures", &fx, "--out", out4.to_str().unwrap()]);
+    let r = run(&[
+        "-b",
+        &fixed,
+        "--fixtures",
+        &fx,
+        "--out",
+        out4.to_str().unwrap(),
+    ]);
     assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
 }
 
@@ -90,14 +161,27 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
 fn the_example_passes_every_default_fixture_it_claims() {
     // Over the committed fixtures (cases/fixtures), the correct script passes every gl46 2D case
     // it runs and skips the rest with a reason; swapped, it fails LEQUAL/GEQUAL cases only.
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
-    assert!(root.join("cases/fixtures").is_dir(), "cases/fixtures is missing");
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap();
+    assert!(
+        root.join("cases/fixtures").is_dir(),
+        "cases/fixtures is missing"
+    );
     let dir = tmpdir("exec-example-default");
     let out = dir.join("fixed");
     let r = Run::of(
         bin()
             .current_dir(root)
-            .args(["run", "-b", &format!("exec:python3 {}", example()), "--cases", "^gl46/2d/", "--out", out.to_str().unwrap()])
+            .args([
+                "run",
+                "-b",
+                &format!("exec:python3 {}", example()),
+                "--cases",
+                "^gl46/2d/",
+                "--out",
+                out.to_str().unwrap(),
+            ])
             .output()
             .unwrap(),
     );
@@ -111,14 +195,28 @@ fn the_example_passes_every_default_fixture_it_claims() {
     let r = Run::of(
         bin()
             .current_dir(root)
-            .args(["run", "-b", &format!("exec:python3 {} --swap-lequal-gequal", example()), "--cases", "^gl46/2d/"])
+            .args([
+                "run",
+                "-b",
+                &format!("exec:python3 {} --swap-lequal-gequal", example()),
+                "--cases",
+                "^gl46/2d/",
+            ])
             .args(["--no-rerun", "--out", out.to_str().unwrap()])
             .output()
             .unwrap(),
     );
     assert_eq!(r.code, 100);
     let rows = results(&out);
-    let failed: Vec<_> = rows.iter().filter(|r| r.1 == "Fail" || r.1 == "Warn").collect();
+    let failed: Vec<_> = rows
+        .iter()
+        .filter(|r| r.1 == "Fail" || r.1 == "Warn")
+        .collect();
     assert!(!failed.is_empty());
-    assert!(failed.iter().all(|r| r.0.contains("/lequal/") || r.0.contains("/gequal/")), "{failed:?}");
+    assert!(
+        failed
+            .iter()
+            .all(|r| r.0.contains("/lequal/") || r.0.contains("/gequal/")),
+        "{failed:?}"
+    );
 }

@@ -18,9 +18,15 @@ fn run_with_baseline(backend: &str, cases: &str, name: &str) -> Option<common::R
         gl_support::unavailable(backend, &e.to_string());
         return None;
     }
-    let dir = root().join("reports/mesa-22.3.6").join(backend.replace(':', "-"));
+    let dir = root()
+        .join("reports/mesa-22.3.6")
+        .join(backend.replace(':', "-"));
     let baseline = dir.join("failures.csv");
-    assert!(baseline.is_file(), "committed baseline missing: {}", baseline.display());
+    assert!(
+        baseline.is_file(),
+        "committed baseline missing: {}",
+        baseline.display()
+    );
     let out = common::tmpdir(name);
     let fixtures = root().join("cases/fixtures");
     let mut args: Vec<String> = vec![
@@ -50,10 +56,18 @@ fn run_with_baseline(backend: &str, cases: &str, name: &str) -> Option<common::R
 
 #[test]
 fn llvmpipe_core_subset_passes_with_its_committed_baseline() {
-    let Some(r) = run_with_baseline("egl:llvmpipe:core", "^gl46/(2d|cube)/d24/", "baseline-core") else {
+    let Some(r) = run_with_baseline("egl:llvmpipe:core", "^gl46/(2d|cube)/d24/", "baseline-core")
+    else {
         return;
     };
-    assert_eq!(r.code, 0, "exit code {}\nstdout tail: {}\nstderr tail: {}", r.code, tail(&r.stdout), tail(&r.stderr));
+    assert_eq!(
+        r.code,
+        0,
+        "exit code {}\nstdout tail: {}\nstderr tail: {}",
+        r.code,
+        tail(&r.stdout),
+        tail(&r.stderr)
+    );
 }
 
 #[test]
@@ -63,9 +77,25 @@ fn llvmpipe_es3_known_failures_are_expected_fails_with_its_committed_baseline() 
     let Some(r) = run_with_baseline("egl:llvmpipe:es3", "^gles32/2d/", "baseline-es3") else {
         return;
     };
-    assert_eq!(r.code, 0, "exit code {}\nstdout tail: {}\nstderr tail: {}", r.code, tail(&r.stdout), tail(&r.stderr));
-    let summary = r.stderr.lines().chain(r.stdout.lines()).find(|l| l.contains("expected fail")).unwrap_or("").to_string();
-    assert!(!summary.contains(" 0 expected fail"), "the baseline excused nothing: {summary}");
+    assert_eq!(
+        r.code,
+        0,
+        "exit code {}\nstdout tail: {}\nstderr tail: {}",
+        r.code,
+        tail(&r.stdout),
+        tail(&r.stderr)
+    );
+    let summary = r
+        .stderr
+        .lines()
+        .chain(r.stdout.lines())
+        .find(|l| l.contains("expected fail"))
+        .unwrap_or("")
+        .to_string();
+    assert!(
+        !summary.contains(" 0 expected fail"),
+        "the baseline excused nothing: {summary}"
+    );
 }
 
 fn tail(s: &str) -> String {

@@ -251,9 +251,16 @@ fn core_texel_offsets_are_added_before_wrapping() {
             (-2, Wrap::ClampToEdge, 0.0, 0.0), // u = -0.5: clamped to texel 0
             (-2, Wrap::Repeat, 0.0, 1.0),      // u = -0.5: repeats to texel 3
             (6, Wrap::Repeat, 0.0, 1.0),       // u = 7.5: texel 7 mod 4 = 3
-            (2, Wrap::ClampToEdge, 0.5, 1.0),  // explicit LOD (textureLodOffset); NEAREST, one level
+            (2, Wrap::ClampToEdge, 0.5, 1.0), // explicit LOD (textureLodOffset); NEAREST, one level
         ] {
-            let mut c = d16_case(&format!("offset={offset}/{wrap}/lod={lod}"), Spec::Gl46, &[ApiPath::GlslCore], Target::T2d, 0, 0.5);
+            let mut c = d16_case(
+                &format!("offset={offset}/{wrap}/lod={lod}"),
+                Spec::Gl46,
+                &[ApiPath::GlslCore],
+                Target::T2d,
+                0,
+                0.5,
+            );
             c.texture.levels[0].width = 4;
             c.texture.levels[0].height = 1;
             c.texture.levels[0].depth = Texels::Unorm(vec![0, 0, 0, 65535]);
@@ -266,7 +273,12 @@ fn core_texel_offsets_are_added_before_wrapping() {
         let (cs, want): (Vec<Case>, Vec<f64>) = cases.into_iter().unzip();
         let answers = s.run(&cs);
         for ((c, w), a) in cs.iter().zip(want).zip(&answers) {
-            assert_eq!(Session::rgba(a, ApiPath::GlslCore)[0], w, "{b} {}: {a}", c.id);
+            assert_eq!(
+                Session::rgba(a, ApiPath::GlslCore)[0],
+                w,
+                "{b} {}: {a}",
+                c.id
+            );
         }
     }
 }
@@ -283,20 +295,44 @@ fn core_every_lookup_form_selects_the_levels_of_8_14_3() {
                 continue;
             };
             let mut cases = Vec::new();
-            for (lod, bias, want) in [(0.0, 0.0, 0.0), (1.0, 0.0, 1.0), (2.0, 0.0, 0.0), (0.0, 1.0, 1.0)] {
-                cases.push((mip_case(&format!("{form}/lod={lod}/bias={bias}"), Spec::Gl46, &[ApiPath::GlslCore], Target::T2d, lod, bias), want));
+            for (lod, bias, want) in [
+                (0.0, 0.0, 0.0),
+                (1.0, 0.0, 1.0),
+                (2.0, 0.0, 0.0),
+                (0.0, 1.0, 1.0),
+            ] {
+                cases.push((
+                    mip_case(
+                        &format!("{form}/lod={lod}/bias={bias}"),
+                        Spec::Gl46,
+                        &[ApiPath::GlslCore],
+                        Target::T2d,
+                        lod,
+                        bias,
+                    ),
+                    want,
+                ));
             }
             let (cs, want): (Vec<Case>, Vec<f64>) = cases.into_iter().unzip();
             let answers = s.run(&cs);
             for ((c, w), a) in cs.iter().zip(want).zip(&answers) {
-                assert_eq!(Session::rgba(a, ApiPath::GlslCore)[0], w, "{name} {}: {a}", c.id);
+                assert_eq!(
+                    Session::rgba(a, ApiPath::GlslCore)[0],
+                    w,
+                    "{name} {}: {a}",
+                    c.id
+                );
                 let note = a["results"][0]["note"].as_str().unwrap_or("");
                 let expected_fn = match form {
                     "lod" => "explicit LOD",
                     "grad" => "gradients",
                     _ => "implicit derivatives",
                 };
-                assert!(note.contains(expected_fn), "{name} {}: realized as `{note}`", c.id);
+                assert!(
+                    note.contains(expected_fn),
+                    "{name} {}: realized as `{note}`",
+                    c.id
+                );
             }
         }
     }

@@ -33,7 +33,17 @@ fn junit_output_parses_with_the_right_counts() {
     let failed = s.cases.iter().find(|c| c.name.contains("n=0000")).unwrap();
     assert!(failed.status.is_failure());
     let f = failed.status.failure_as_ref();
-    assert!(f.text.contains("observed:  rgba (-1, 0, 0, 0)"), "{}", f.text);
+    assert!(
+        f.text.contains("observed:  rgba (-1, 0, 0, 0)"),
+        "{}",
+        f.text
+    );
     assert!(f.text.contains("re-run:"), "{}", f.text);
-    assert!(s.cases.iter().find(|c| c.name.contains("n=0005")).unwrap().status.is_error());
+    assert!(s
+        .cases
+        .iter()
+        .find(|c| c.name.contains("n=0005"))
+        .unwrap()
+        .status
+        .is_error());
 }

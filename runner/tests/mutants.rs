@@ -39,7 +39,10 @@ fn correct_unit_has_no_kill_and_the_lequal_gequal_swap_is_killed() {
     assert_eq!(min.outcome, Outcome::Fail);
     let case = cases.iter().find(|c| c.id == min.case).unwrap();
     assert!(
-        matches!(case.sampler.compare_func, CompareFunc::Lequal | CompareFunc::Gequal),
+        matches!(
+            case.sampler.compare_func,
+            CompareFunc::Lequal | CompareFunc::Gequal
+        ),
         "{}",
         case.id
     );
@@ -48,8 +51,14 @@ fn correct_unit_has_no_kill_and_the_lequal_gequal_swap_is_killed() {
         .sample(case, min.api)
         .unwrap();
     let good = SoftUnit::new(case.spec).sample(case, min.api).unwrap();
-    assert_eq!(verdict::judge(case, min.api, bad.map(f64::from), None).outcome, Outcome::Fail);
-    assert_eq!(verdict::judge(case, min.api, good.map(f64::from), None).outcome, Outcome::Pass);
+    assert_eq!(
+        verdict::judge(case, min.api, bad.map(f64::from), None).outcome,
+        Outcome::Fail
+    );
+    assert_eq!(
+        verdict::judge(case, min.api, good.map(f64::from), None).outcome,
+        Outcome::Pass
+    );
     assert_eq!(min.rgba, Some(bad));
     assert_eq!(min.correct, Some(good));
 
@@ -79,7 +88,9 @@ fn a_fault_the_cases_cannot_see_survives_and_its_witness_kills_it() {
     // The smoke cases without CLAMP_TO_BORDER: ignoring the border cannot change any of them.
     let cases: Vec<Case> = smoke()
         .into_iter()
-        .filter(|c| ![c.sampler.wrap_s, c.sampler.wrap_t, c.sampler.wrap_r].contains(&Wrap::ClampToBorder))
+        .filter(|c| {
+            ![c.sampler.wrap_s, c.sampler.wrap_t, c.sampler.wrap_r].contains(&Wrap::ClampToBorder)
+        })
         .collect();
     assert!(!cases.is_empty());
     let suite = Suite::new(cases).unwrap();
@@ -129,7 +140,11 @@ fn unobservable_faults_are_told_apart_from_grid_gaps() {
 #[test]
 fn run_reports_score_matrix_and_markdown() {
     let suite = Suite::new(smoke()).unwrap();
-    let faults = [Fault::LequalGequalSwapped, Fault::LessAsLequal, Fault::AlwaysNeverSwapped];
+    let faults = [
+        Fault::LequalGequalSwapped,
+        Fault::LessAsLequal,
+        Fault::AlwaysNeverSwapped,
+    ];
     let calls = std::sync::atomic::AtomicUsize::new(0);
     let r = mutants::run(&suite, "grid smoke", &faults, 2, |_, _| {
         calls.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
@@ -137,7 +152,11 @@ fn run_reports_score_matrix_and_markdown() {
     assert_eq!(calls.into_inner(), 3);
     assert_eq!(
         r.mutants.iter().map(|m| m.key.as_str()).collect::<Vec<_>>(),
-        ["lequal-gequal-swapped", "less-as-lequal", "always-never-swapped"]
+        [
+            "lequal-gequal-swapped",
+            "less-as-lequal",
+            "always-never-swapped"
+        ]
     );
     assert_eq!(r.killed + r.warn_only + r.survived, 3);
     assert_eq!(r.score, 100.0 * r.killed as f64 / 3.0);
@@ -149,14 +168,24 @@ fn run_reports_score_matrix_and_markdown() {
     assert!(render::table(&r).contains("lequal-gequal-swapped"));
     // The README section: same rows, no timings (it must not change from run to run).
     let sec = render::readme_section(&r);
-    assert!(sec.contains(&format!("| 1 | `lequal-gequal-swapped` | {} | killed | `{}` |", mutants::about(faults[0]), min.case)), "{sec}");
+    assert!(
+        sec.contains(&format!(
+            "| 1 | `lequal-gequal-swapped` | {} | killed | `{}` |",
+            mutants::about(faults[0]),
+            min.case
+        )),
+        "{sec}"
+    );
     assert!(!sec.contains(" s ") && !sec.contains("threads"), "{sec}");
 }
 
 #[test]
 fn mutant_keys_are_checked() {
     assert_eq!(mutants::select(&[]).unwrap().len(), Fault::ALL.len());
-    assert_eq!(mutants::select(&["less-as-lequal".into()]).unwrap(), vec![Fault::LessAsLequal]);
+    assert_eq!(
+        mutants::select(&["less-as-lequal".into()]).unwrap(),
+        vec![Fault::LessAsLequal]
+    );
     assert!(mutants::select(&["no-such-fault".into()])
         .unwrap_err()
         .to_string()
@@ -185,7 +214,12 @@ fn cli_runs_one_mutant_on_the_smoke_grid_and_writes_markdown() {
         .arg(&md)
         .output()
         .unwrap();
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["killed"], 1);
     assert_eq!(v["score"], 100.0);
@@ -193,7 +227,10 @@ fn cli_runs_one_mutant_on_the_smoke_grid_and_writes_markdown() {
     assert_eq!(v["mutants"][0]["status"], "killed");
     assert!(v["mutants"][0]["minimal"]["case"].as_str().is_some());
     let text = std::fs::read_to_string(&md).unwrap();
-    assert!(text.contains("**Mutation score: 100.0 % (1 of 1 mutants killed)**"), "{text}");
+    assert!(
+        text.contains("**Mutation score: 100.0 % (1 of 1 mutants killed)**"),
+        "{text}"
+    );
 
     let o = bin()
         .args(["mutants", "--grid", "smoke", "--mutant", "no-such-fault"])
@@ -206,21 +243,38 @@ fn cli_runs_one_mutant_on_the_smoke_grid_and_writes_markdown() {
     let plain = tmp.join("PLAIN.md");
     std::fs::write(&plain, "# no markers here\n").unwrap();
     let o = bin()
-        .args(["mutants", "--grid", "smoke", "--mutant", "less-as-lequal", "-q", "--update-readme"])
+        .args([
+            "mutants",
+            "--grid",
+            "smoke",
+            "--mutant",
+            "less-as-lequal",
+            "-q",
+            "--update-readme",
+        ])
         .arg(&plain)
         .output()
         .unwrap();
     assert_eq!(o.status.code(), Some(96));
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("PLAIN.md") && err.contains("no kill-matrix markers"), "{err}");
-    assert_eq!(std::fs::read_to_string(&plain).unwrap(), "# no markers here\n");
+    assert!(
+        err.contains("PLAIN.md") && err.contains("no kill-matrix markers"),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(&plain).unwrap(),
+        "# no markers here\n"
+    );
 }
 
 #[test]
 fn the_committed_default_fixtures_kill_every_observable_mutant() {
     // Must show: over cases/fixtures every fault is killed (a Fail, not only a Warn), except the
     // ones documented as unobservable through the API, and the correct unit has no Fail.
-    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf();
     // The kill matrix in README.md is generated: regenerate it into a copy and compare.
     let readme = root.join("README.md");
     let copy = tmpdir("mutants-readme").join("README.md");
@@ -231,7 +285,12 @@ fn the_committed_default_fixtures_kill_every_observable_mutant() {
         .arg(&copy)
         .output()
         .unwrap();
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["baseline"]["fail"], 0);
     assert_eq!(v["baseline"]["warn"], 0);

@@ -16,32 +16,79 @@ fn sigkill_then_resume_gives_the_uninterrupted_report() {
     let script = "mock:fail=n=00[0-4]7,crash=n=0123";
 
     let whole = dir.join("whole");
-    let r = run(&["-b", script, "--fixtures", fx, "--out", whole.to_str().unwrap()]);
+    let r = run(&[
+        "-b",
+        script,
+        "--fixtures",
+        fx,
+        "--out",
+        whole.to_str().unwrap(),
+    ]);
     assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
 
     let killed = dir.join("killed");
     let o = bin()
-        .args(["run", "-b", script, "--fixtures", fx, "--out", killed.to_str().unwrap()])
+        .args([
+            "run",
+            "-b",
+            script,
+            "--fixtures",
+            fx,
+            "--out",
+            killed.to_str().unwrap(),
+        ])
         .env("SHADOWCHECK_MOCK_KILL_RUNNER", "n=0250")
         .output()
         .unwrap();
     {
         use std::os::unix::process::ExitStatusExt;
-        assert_eq!(o.status.signal(), Some(9), "the runner should have been killed: {o:?}");
+        assert_eq!(
+            o.status.signal(),
+            Some(9),
+            "the runner should have been killed: {o:?}"
+        );
     }
     let partial = std::fs::read_to_string(killed.join("results.jsonl")).unwrap();
-    let done = partial.lines().filter(|l| l.contains(r#""kind":"result""#)).count();
-    assert!((100..300).contains(&done), "{done} results on disk after the kill");
-    assert!(!killed.join("report.json").exists(), "no final report from a killed run");
+    let done = partial
+        .lines()
+        .filter(|l| l.contains(r#""kind":"result""#))
+        .count();
+    assert!(
+        (100..300).contains(&done),
+        "{done} results on disk after the kill"
+    );
+    assert!(
+        !killed.join("report.json").exists(),
+        "no final report from a killed run"
+    );
 
-    let r = run(&["-b", script, "--fixtures", fx, "--out", killed.to_str().unwrap(), "--resume"]);
+    let r = run(&[
+        "-b",
+        script,
+        "--fixtures",
+        fx,
+        "--out",
+        killed.to_str().unwrap(),
+        "--resume",
+    ]);
     assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
     assert_eq!(results(&killed), results(&whole));
-    assert_eq!(report_without_durations(&killed), report_without_durations(&whole));
+    assert_eq!(
+        report_without_durations(&killed),
+        report_without_durations(&whole)
+    );
     let read = |d: &std::path::Path| std::fs::read_to_string(d.join("failures.csv")).unwrap();
     assert_eq!(read(&killed), read(&whole));
 
     // Resuming with another selection is refused (bad input).
-    let r = run(&["-b", "mock:", "--fixtures", fx, "--out", killed.to_str().unwrap(), "--resume"]);
+    let r = run(&[
+        "-b",
+        "mock:",
+        "--fixtures",
+        fx,
+        "--out",
+        killed.to_str().unwrap(),
+        "--resume",
+    ]);
     assert_eq!(r.code, 96, "{}", r.stderr);
 }

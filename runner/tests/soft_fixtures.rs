@@ -8,32 +8,54 @@ use shadowcheck_model::Spec;
 use std::path::PathBuf;
 
 fn workspace() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
 }
 
 #[test]
 fn every_soft_variant_passes_its_own_specs_fixtures_under_strict() {
     let root = workspace();
     let fixtures = root.join("cases/fixtures");
-    assert!(fixtures.is_dir(), "{} is missing: generate it with `shadowcheck gen` (the cases crate commits it)", fixtures.display());
+    assert!(
+        fixtures.is_dir(),
+        "{} is missing: generate it with `shadowcheck gen` (the cases crate commits it)",
+        fixtures.display()
+    );
     let tmp = tmpdir("soft-fixtures");
     let mut covered = 0;
     for spec in Spec::ALL {
         let out = tmp.join(spec.key());
         // The generator writes one folder per spec; load only that one when it is there.
         let spec_dir = fixtures.join(spec.key());
-        let from = if spec_dir.is_dir() { spec_dir } else { fixtures.clone() };
+        let from = if spec_dir.is_dir() {
+            spec_dir
+        } else {
+            fixtures.clone()
+        };
         let o = bin()
             .current_dir(&root)
-            .args(["run", "--backend", &format!("soft:{}", spec.key()), "--cases", &format!("^{}/", spec.key())])
+            .args([
+                "run",
+                "--backend",
+                &format!("soft:{}", spec.key()),
+                "--cases",
+                &format!("^{}/", spec.key()),
+            ])
             .args(["--fixtures", from.to_str().unwrap()])
             .args(["--out", out.to_str().unwrap()])
             .output()
             .unwrap();
         let r = Run::of(o);
-        let report: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
+        let report: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap())
+                .unwrap();
         let results = report["results"].as_array().unwrap();
-        let own: Vec<&serde_json::Value> = results.iter().filter(|t| t["tags"]["spec"] == spec.key()).collect();
+        let own: Vec<&serde_json::Value> = results
+            .iter()
+            .filter(|t| t["tags"]["spec"] == spec.key())
+            .collect();
         assert!(!own.is_empty(), "no fixture case for spec {spec}");
         let not_pass: Vec<String> = own
             .iter()
@@ -41,13 +63,28 @@ fn every_soft_variant_passes_its_own_specs_fixtures_under_strict() {
             .take(5)
             .map(|t| format!("{} {} {}", t["test"], t["status"], t["reason"]))
             .collect();
-        assert!(not_pass.is_empty(), "soft:{spec}: not Pass under strict:\n{}\n{}", not_pass.join("\n"), r.stdout);
+        assert!(
+            not_pass.is_empty(),
+            "soft:{spec}: not Pass under strict:\n{}\n{}",
+            not_pass.join("\n"),
+            r.stdout
+        );
         assert_eq!(r.code, 0, "soft:{spec}: {}{}", r.stdout, r.stderr);
         covered += own.len();
     }
     // The same cases through `soft` (each case under its own spec): everything passes at once.
     let out = tmp.join("all");
-    let r = Run::of(bin().current_dir(&root).args(["run", "--backend", "soft", "--out", out.to_str().unwrap()]).output().unwrap());
+    let r = Run::of(
+        bin()
+            .current_dir(&root)
+            .args(["run", "--backend", "soft", "--out", out.to_str().unwrap()])
+            .output()
+            .unwrap(),
+    );
     assert_eq!(r.code, 0, "soft: {}{}", r.stdout, r.stderr);
-    assert_eq!(results(&out).len(), covered, "every fixture case belongs to exactly one spec and was covered once");
+    assert_eq!(
+        results(&out).len(),
+        covered,
+        "every fixture case belongs to exactly one spec and was covered once"
+    );
 }

@@ -8,7 +8,10 @@ use std::time::Instant;
 fn main() {
     let mut args = std::env::args().skip(1);
     let size: u32 = args.next().and_then(|a| a.parse().ok()).unwrap_or(256);
-    let n: usize = args.next().and_then(|a| a.parse().ok()).unwrap_or(4_000_000);
+    let n: usize = args
+        .next()
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(4_000_000);
     for filter in [Filter::Nearest, Filter::Linear, Filter::LinearMipmapLinear] {
         let w = match Workload::new(Spec::Gl46, size, filter, n) {
             Ok(w) => w,

@@ -5,7 +5,9 @@ use crate::filter::Coords;
 use crate::sampler::SamplerState;
 use crate::storage::PreparedTexture;
 use crate::{Faults, SoftError};
-use shadowcheck_model::{CompareFunc, CompareMode, Filter, Format, Level, Sampler, Spec, Target, Texels, Texture, Wrap};
+use shadowcheck_model::{
+    CompareFunc, CompareMode, Filter, Format, Level, Sampler, Spec, Target, Texels, Texture, Wrap,
+};
 
 /// One prepared texture, its sampler state and a list of lookups.
 #[derive(Debug, Clone)]
@@ -33,7 +35,12 @@ impl Workload {
     /// A `size`×`size` DEPTH_COMPONENT24 2D texture of pseudo-random depths (with a full mip
     /// chain), sampled with LEQUAL comparison, REPEAT wrapping and `filter`, at `lookups`
     /// pseudo-random coordinates and references (λ in [−1, 3) for mipmap filters, else 0).
-    pub fn new(spec: Spec, size: u32, filter: Filter, lookups: usize) -> Result<Workload, SoftError> {
+    pub fn new(
+        spec: Spec,
+        size: u32,
+        filter: Filter,
+        lookups: usize,
+    ) -> Result<Workload, SoftError> {
         let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
         let mut levels = Vec::new();
         let mut w = size.max(1);
@@ -68,12 +75,20 @@ impl Workload {
                 r: 0.0,
                 layer: 0.0,
                 dref: rng.unit(),
-                lambda_base: if filter.is_mipmap() { rng.unit() * 4.0 - 1.0 } else { 0.0 },
+                lambda_base: if filter.is_mipmap() {
+                    rng.unit() * 4.0 - 1.0
+                } else {
+                    0.0
+                },
                 bias: 0.0,
                 offset: [0; 2],
             })
             .collect();
-        Ok(Workload { texture, state, coords })
+        Ok(Workload {
+            texture,
+            state,
+            coords,
+        })
     }
 
     /// Performs every lookup once; returns the sum of the results (so the work is not optimized

@@ -46,7 +46,9 @@ pub fn resolve_op(spec: Spec, func: CompareFunc, faults: Faults) -> Result<Compa
         // ARB_shadow table 3.19: LEQUAL, GEQUAL only.
         Spec::Arb | Spec::ArbAmbient => matches!(func, C::Lequal | C::Gequal),
         // EXT_shadow_funcs, EXT_shadow_samplers, GL 4.6 Table 8.17, ES 3.2 Table 8.19: the eight.
-        Spec::ExtFuncs | Spec::Es2Ext | Spec::Gl46 | Spec::Gles32 => !matches!(func, C::LequalRSgix | C::GequalRSgix),
+        Spec::ExtFuncs | Spec::Es2Ext | Spec::Gl46 | Spec::Gles32 => {
+            !matches!(func, C::LequalRSgix | C::GequalRSgix)
+        }
     };
     if !defined {
         return Err(SoftError::CompareFunc { spec, func });
@@ -154,7 +156,10 @@ pub fn passes(op: CompareOp, dref: f32, dt: f32, faults: Faults) -> bool {
                 !close
             } else if faults.has(Fault::NanOrderedNotequal) {
                 // Ordered inequality: false when either operand is NaN.
-                matches!(dref.partial_cmp(&dt), Some(std::cmp::Ordering::Less | std::cmp::Ordering::Greater))
+                matches!(
+                    dref.partial_cmp(&dt),
+                    Some(std::cmp::Ordering::Less | std::cmp::Ordering::Greater)
+                )
             } else {
                 dref != dt
             }
@@ -173,13 +178,17 @@ pub fn passes(op: CompareOp, dref: f32, dt: f32, faults: Faults) -> bool {
 /// pass 1.0, fail 0.0; a `fail_value` set on them is ignored (the state does not exist there).
 pub fn pass_fail_values(spec: Spec, fail_value: Option<f32>, faults: Faults) -> (f32, f32) {
     let ambient = match spec {
-        Spec::SgixAmbient | Spec::ArbAmbient if faults.has(Fault::FailValueNotClamped) => fail_value.unwrap_or(0.0),
+        Spec::SgixAmbient | Spec::ArbAmbient if faults.has(Fault::FailValueNotClamped) => {
+            fail_value.unwrap_or(0.0)
+        }
         Spec::SgixAmbient | Spec::ArbAmbient => crate::storage::clamp01(fail_value.unwrap_or(0.0)),
         _ => 0.0,
     };
     if faults.has(Fault::AmbientIgnored) {
         (1.0, 0.0)
-    } else if faults.has(Fault::AmbientAppliedToPass) && matches!(spec, Spec::SgixAmbient | Spec::ArbAmbient) {
+    } else if faults.has(Fault::AmbientAppliedToPass)
+        && matches!(spec, Spec::SgixAmbient | Spec::ArbAmbient)
+    {
         (ambient, 0.0)
     } else {
         (1.0, ambient)
@@ -241,7 +250,13 @@ mod tests {
                 assert!(resolve_op(s, f, F).is_ok(), "{s} {f}");
             }
         }
-        for s in [Spec::Arb, Spec::ExtFuncs, Spec::Es2Ext, Spec::Gl46, Spec::Gles32] {
+        for s in [
+            Spec::Arb,
+            Spec::ExtFuncs,
+            Spec::Es2Ext,
+            Spec::Gl46,
+            Spec::Gles32,
+        ] {
             assert!(resolve_op(s, CompareFunc::LequalRSgix, F).is_err());
         }
     }
@@ -253,13 +268,24 @@ mod tests {
             assert!(!passes(op, f32::NAN, 0.5, F));
         }
         assert!(passes(O::Notequal, f32::NAN, 0.5, F));
-        assert!(!passes(O::Notequal, f32::NAN, 0.5, F.with(Fault::NanOrderedNotequal)));
+        assert!(!passes(
+            O::Notequal,
+            f32::NAN,
+            0.5,
+            F.with(Fault::NanOrderedNotequal)
+        ));
     }
 
     #[test]
     fn clamping_per_spec() {
-        let both = ClampRule { dref: true, dt: true };
-        let none = ClampRule { dref: false, dt: false };
+        let both = ClampRule {
+            dref: true,
+            dt: true,
+        };
+        let none = ClampRule {
+            dref: false,
+            dt: false,
+        };
         assert_eq!(clamp_rule(Spec::Gl46, Format::D24, F), both);
         assert_eq!(clamp_rule(Spec::Gl46, Format::D32f, F), none);
         assert_eq!(clamp_rule(Spec::Gles32, Format::D32fS8, F), none);
@@ -271,12 +297,22 @@ mod tests {
 
     #[test]
     fn fail_values() {
-        assert_eq!(pass_fail_values(Spec::ArbAmbient, Some(0.25), F), (1.0, 0.25));
-        assert_eq!(pass_fail_values(Spec::SgixAmbient, Some(1.5), F), (1.0, 1.0)); // clamped when set
+        assert_eq!(
+            pass_fail_values(Spec::ArbAmbient, Some(0.25), F),
+            (1.0, 0.25)
+        );
+        assert_eq!(
+            pass_fail_values(Spec::SgixAmbient, Some(1.5), F),
+            (1.0, 1.0)
+        ); // clamped when set
         assert_eq!(pass_fail_values(Spec::SgixAmbient, None, F), (1.0, 0.0)); // initial 0.0
         assert_eq!(pass_fail_values(Spec::Gl46, Some(0.25), F), (1.0, 0.0));
         assert_eq!(
-            pass_fail_values(Spec::ArbAmbient, Some(0.25), F.with(Fault::AmbientAppliedToPass)),
+            pass_fail_values(
+                Spec::ArbAmbient,
+                Some(0.25),
+                F.with(Fault::AmbientAppliedToPass)
+            ),
             (0.25, 0.0)
         );
     }
@@ -284,11 +320,19 @@ mod tests {
     #[test]
     fn faults_swap_functions() {
         let s = F.with(Fault::LequalGequalSwapped);
-        assert_eq!(resolve_op(Spec::Gl46, CompareFunc::Lequal, s).unwrap(), O::Gequal);
+        assert_eq!(
+            resolve_op(Spec::Gl46, CompareFunc::Lequal, s).unwrap(),
+            O::Gequal
+        );
         assert_eq!(
             resolve_op(Spec::Gl46, CompareFunc::Less, F.with(Fault::LessAsLequal)).unwrap(),
             O::Lequal
         );
-        assert!(passes(O::Equal, 0.5, 0.5001, F.with(Fault::EqualWithTolerance)));
+        assert!(passes(
+            O::Equal,
+            0.5,
+            0.5001,
+            F.with(Fault::EqualWithTolerance)
+        ));
     }
 }

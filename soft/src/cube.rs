@@ -26,7 +26,11 @@ pub fn select(rx: f32, ry: f32, rz: f32, faults: Faults) -> Option<(Face, f32, f
         if ry >= 0.0 {
             (2, rx, rz, ry)
         } else {
-            let tc = if faults.has(Fault::CubeNegYFlipped) { rz } else { -rz };
+            let tc = if faults.has(Fault::CubeNegYFlipped) {
+                rz
+            } else {
+                -rz
+            };
             (3, rx, tc, ry)
         }
     } else if rz >= 0.0 {

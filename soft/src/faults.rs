@@ -178,7 +178,9 @@ mod tests {
         for f in Fault::ALL {
             assert_eq!(Fault::from_key(f.key()), Some(*f));
         }
-        let set: Faults = [Fault::BorderIgnored, Fault::LessAsLequal].into_iter().collect();
+        let set: Faults = [Fault::BorderIgnored, Fault::LessAsLequal]
+            .into_iter()
+            .collect();
         assert!(set.has(Fault::BorderIgnored) && set.has(Fault::LessAsLequal));
         assert!(!set.has(Fault::AmbientIgnored));
         assert_eq!(set.iter().count(), 2);

@@ -84,13 +84,24 @@ impl PreparedTexture {
         let lambda = lod::lambda(&st.lod, c.lambda_base, c.bias, st.faults);
         let choice = lod::choose(&st.lod, lambda, st.faults);
         let addr = self.address(st, c);
-        let dref = if st.clamp.dref { clamp01(c.dref) } else { c.dref };
+        let dref = if st.clamp.dref {
+            clamp01(c.dref)
+        } else {
+            c.dref
+        };
         if O::ACTIVE {
             obs.reference(dref);
         }
         match choice {
-            LevelChoice::Single { level, linear } => self.sample_level(st, level, linear, &addr, c.offset, dref, 1.0, obs),
-            LevelChoice::Blend { d1, d2, frac, linear } => {
+            LevelChoice::Single { level, linear } => {
+                self.sample_level(st, level, linear, &addr, c.offset, dref, 1.0, obs)
+            }
+            LevelChoice::Blend {
+                d1,
+                d2,
+                frac,
+                linear,
+            } => {
                 let t1 = self.sample_level(st, d1, linear, &addr, c.offset, dref, 1.0 - frac, obs);
                 let t2 = self.sample_level(st, d2, linear, &addr, c.offset, dref, frac, obs);
                 (1.0 - frac) * t1 + frac * t2
@@ -146,7 +157,8 @@ impl PreparedTexture {
     /// when a fault lets an incomplete texture be sampled).
     #[inline(always)]
     fn level_desc(&self, st: &SamplerState, level: u32) -> &LevelDesc {
-        let i = (level.saturating_sub(st.lod.level_base) as usize).min(self.levels.len().saturating_sub(1));
+        let i = (level.saturating_sub(st.lod.level_base) as usize)
+            .min(self.levels.len().saturating_sub(1));
         &self.levels[i]
     }
 
@@ -209,18 +221,29 @@ impl PreparedTexture {
     /// Texel location (x, y, storage layer) of (i, j), or `None` for a border texel.
     #[inline(always)]
     fn loc(l: &LevelDesc, i: i64, j: i64, layer: u32) -> Option<[u32; 3]> {
-        (i >= 0 && j >= 0 && i < l.width as i64 && j < l.height as i64).then_some([i as u32, j as u32, layer])
+        (i >= 0 && j >= 0 && i < l.width as i64 && j < l.height as i64)
+            .then_some([i as u32, j as u32, layer])
     }
 
     /// Reports one texel to the observer.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn report<O: Observer>(&self, st: &SamplerState, obs: &mut O, level: u32, xyz: Option<[u32; 3]>, raw: f32, dref: f32, weight: f32) {
+    fn report<O: Observer>(
+        &self,
+        st: &SamplerState,
+        obs: &mut O,
+        level: u32,
+        xyz: Option<[u32; 3]>,
+        raw: f32,
+        dref: f32,
+        weight: f32,
+    ) {
         let dt = match st.kind {
             Kind::Compare | Kind::Depth if st.clamp.dt => clamp01(raw),
             _ => raw,
         };
-        let pass = (st.kind == Kind::Compare && !st.faults.has(Fault::FilterThenCompare)).then(|| passes(st.op, dref, dt, st.faults));
+        let pass = (st.kind == Kind::Compare && !st.faults.has(Fault::FilterThenCompare))
+            .then(|| passes(st.op, dref, dt, st.faults));
         obs.texel(TexelVisit {
             level,
             xyz,
@@ -284,7 +307,11 @@ impl PreparedTexture {
 
         if !linear || f.has(Fault::LinearAsNearest) {
             let i = shift(wrap::nearest(ws, u, w, f), offset[0], w);
-            let j = if one_d { 0 } else { shift(wrap::nearest(wt, v, h, f), offset[1], h) };
+            let j = if one_d {
+                0
+            } else {
+                shift(wrap::nearest(wt, v, h, f), offset[1], h)
+            };
             let raw = self.fetch(st, l, i, j, layer);
             if O::ACTIVE {
                 self.report(st, obs, level, Self::loc(l, i, j, layer), raw, dref, scale);
@@ -301,9 +328,18 @@ impl PreparedTexture {
         };
         let (i0, i1, alpha) = wrap::linear(ls, u, w, f);
         let (i0, i1) = (shift(i0, offset[0], w), shift(i1, offset[0], w));
-        let (j0, j1, beta) = if one_d { (0, 0, 0.0) } else { wrap::linear(lt, v, h, f) };
+        let (j0, j1, beta) = if one_d {
+            (0, 0, 0.0)
+        } else {
+            wrap::linear(lt, v, h, f)
+        };
         let (j0, j1) = (shift(j0, offset[1], h), shift(j1, offset[1], h));
-        let mut pos = [(i0, j0, layer), (i1, j0, layer), (i0, j1, layer), (i1, j1, layer)];
+        let mut pos = [
+            (i0, j0, layer),
+            (i1, j0, layer),
+            (i0, j1, layer),
+            (i1, j1, layer),
+        ];
         let mut missing = None;
         if let (true, Some(face)) = (st.seamless, a.face) {
             let base = layer - face as u32;
@@ -334,7 +370,15 @@ impl PreparedTexture {
                 // A missing corner's weight is shared equally by the other three texels.
                 let wk = weights[k] + missing.map_or(0.0, |m| weights[m] / 3.0);
                 let (i, j, ly) = pos[k];
-                self.report(st, obs, level, Self::loc(l, i, j, ly), raw[k], dref, wk * scale);
+                self.report(
+                    st,
+                    obs,
+                    level,
+                    Self::loc(l, i, j, ly),
+                    raw[k],
+                    dref,
+                    wk * scale,
+                );
             }
         }
 
@@ -347,7 +391,11 @@ impl PreparedTexture {
                 d[m] = (d.iter().sum::<f32>() - d[m]) / 3.0;
             }
             let filtered: f32 = (0..4).map(|k| weights[k] * d[k]).sum();
-            return if passes(st.op, dref, filtered, f) { st.pass } else { st.fail };
+            return if passes(st.op, dref, filtered, f) {
+                st.pass
+            } else {
+                st.fail
+            };
         }
 
         let mut vals = [0.0f32; 4];

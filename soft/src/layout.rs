@@ -54,16 +54,28 @@ pub const INCOMPLETE: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
 
 /// Paths returning a float (channel 0).
 pub fn is_float_path(api: ApiPath) -> bool {
-    matches!(api, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es100Ext | ApiPath::Es300)
+    matches!(
+        api,
+        ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es100Ext | ApiPath::Es300
+    )
 }
 
 /// Pre-GL-3.0 extension specs (no RED depth mode, colour textures are LUMINANCE).
 fn is_legacy(spec: Spec) -> bool {
-    matches!(spec, Spec::Sgix | Spec::SgixAmbient | Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs)
+    matches!(
+        spec,
+        Spec::Sgix | Spec::SgixAmbient | Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs
+    )
 }
 
 /// The layout of r on `api` for a texture of `kind` under `spec` with DEPTH_TEXTURE_MODE `mode`.
-pub fn resolve(spec: Spec, api: ApiPath, kind: Kind, mode: Option<DepthTextureMode>, faults: Faults) -> Result<Layout, SoftError> {
+pub fn resolve(
+    spec: Spec,
+    api: ApiPath,
+    kind: Kind,
+    mode: Option<DepthTextureMode>,
+    faults: Faults,
+) -> Result<Layout, SoftError> {
     // Shadow lookups on the float paths return a float. Compare mode NONE (and colour textures) are
     // read through a matching non-shadow sampler, which returns a vec4: in a compatibility context
     // (GLSL 1.30) laid out by DEPTH_TEXTURE_MODE like the legacy paths, and in ES 2.0 as
@@ -90,7 +102,13 @@ pub fn resolve(spec: Spec, api: ApiPath, kind: Kind, mode: Option<DepthTextureMo
     }
     match kind {
         Kind::Stencil => return Ok(Layout::Red),
-        Kind::Colour => return Ok(if is_legacy(spec) { Layout::Luminance } else { Layout::Red }),
+        Kind::Colour => {
+            return Ok(if is_legacy(spec) {
+                Layout::Luminance
+            } else {
+                Layout::Red
+            })
+        }
         Kind::Compare | Kind::Depth => {}
     }
     if matches!(spec, Spec::Sgix | Spec::SgixAmbient) {
@@ -143,7 +161,11 @@ mod tests {
     #[test]
     fn depth_texture_modes_table_16_1() {
         let r = 0.25;
-        let lay = |m| resolve(Spec::Gl46, ApiPath::FixedFunction, Kind::Compare, m, F).unwrap().apply(r);
+        let lay = |m| {
+            resolve(Spec::Gl46, ApiPath::FixedFunction, Kind::Compare, m, F)
+                .unwrap()
+                .apply(r)
+        };
         assert_eq!(lay(None), [r, r, r, 1.0]); // default LUMINANCE in compatibility
         assert_eq!(lay(Some(DepthTextureMode::Luminance)), [r, r, r, 1.0]);
         assert_eq!(lay(Some(DepthTextureMode::Intensity)), [r, r, r, r]);
@@ -153,8 +175,20 @@ mod tests {
 
     #[test]
     fn float_paths_ignore_the_mode() {
-        for api in [ApiPath::Glsl130, ApiPath::GlslCore, ApiPath::Es100Ext, ApiPath::Es300] {
-            let l = resolve(Spec::Gl46, api, Kind::Compare, Some(DepthTextureMode::Alpha), F).unwrap();
+        for api in [
+            ApiPath::Glsl130,
+            ApiPath::GlslCore,
+            ApiPath::Es100Ext,
+            ApiPath::Es300,
+        ] {
+            let l = resolve(
+                Spec::Gl46,
+                api,
+                Kind::Compare,
+                Some(DepthTextureMode::Alpha),
+                F,
+            )
+            .unwrap();
             assert_eq!(l.apply(0.5), [0.5, 0.0, 0.0, 1.0]);
         }
     }
@@ -170,7 +204,10 @@ mod tests {
             resolve(Spec::Gl46, ApiPath::Glsl130, Kind::Compare, None, F).unwrap(),
             Layout::Float
         );
-        assert_eq!(resolve(Spec::Gl46, ApiPath::GlslCore, Kind::Depth, None, F).unwrap(), Layout::Float);
+        assert_eq!(
+            resolve(Spec::Gl46, ApiPath::GlslCore, Kind::Depth, None, F).unwrap(),
+            Layout::Float
+        );
         // ES 2.0: OES_depth_texture reads depth as (d, d, d, 1).
         assert_eq!(
             resolve(Spec::Es2Ext, ApiPath::Es100Ext, Kind::Depth, None, F).unwrap(),
@@ -184,10 +221,31 @@ mod tests {
 
     #[test]
     fn sgix_is_luminance_and_red_needs_gl3() {
-        let l = resolve(Spec::Sgix, ApiPath::FixedFunction, Kind::Compare, Some(DepthTextureMode::Alpha), F).unwrap();
+        let l = resolve(
+            Spec::Sgix,
+            ApiPath::FixedFunction,
+            Kind::Compare,
+            Some(DepthTextureMode::Alpha),
+            F,
+        )
+        .unwrap();
         assert_eq!(l, Layout::Luminance);
-        assert!(resolve(Spec::Arb, ApiPath::Glsl120, Kind::Compare, Some(DepthTextureMode::Red), F).is_err());
-        let l = resolve(Spec::Arb, ApiPath::ArbFp, Kind::Compare, Some(DepthTextureMode::Alpha), F).unwrap();
+        assert!(resolve(
+            Spec::Arb,
+            ApiPath::Glsl120,
+            Kind::Compare,
+            Some(DepthTextureMode::Red),
+            F
+        )
+        .is_err());
+        let l = resolve(
+            Spec::Arb,
+            ApiPath::ArbFp,
+            Kind::Compare,
+            Some(DepthTextureMode::Alpha),
+            F,
+        )
+        .unwrap();
         assert_eq!(l.apply(1.0), [0.0, 0.0, 0.0, 1.0]);
     }
 
@@ -207,11 +265,24 @@ mod tests {
     fn layout_faults() {
         let f = F.with(Fault::RedModeAsLuminance);
         assert_eq!(
-            resolve(Spec::Gl46, ApiPath::Glsl120, Kind::Compare, Some(DepthTextureMode::Red), f).unwrap(),
+            resolve(
+                Spec::Gl46,
+                ApiPath::Glsl120,
+                Kind::Compare,
+                Some(DepthTextureMode::Red),
+                f
+            )
+            .unwrap(),
             Layout::Luminance
         );
         let f = F.with(Fault::WrongDefaultDepthMode);
-        assert_eq!(resolve(Spec::Gl46, ApiPath::Glsl120, Kind::Compare, None, f).unwrap(), Layout::Red);
-        assert_eq!(resolve(Spec::Arb, ApiPath::Glsl120, Kind::Compare, None, f).unwrap(), Layout::Red);
+        assert_eq!(
+            resolve(Spec::Gl46, ApiPath::Glsl120, Kind::Compare, None, f).unwrap(),
+            Layout::Red
+        );
+        assert_eq!(
+            resolve(Spec::Arb, ApiPath::Glsl120, Kind::Compare, None, f).unwrap(),
+            Layout::Red
+        );
     }
 }

@@ -38,7 +38,10 @@ pub use layout::Layout;
 pub use sampler::{Kind, SamplerState};
 pub use storage::PreparedTexture;
 
-use shadowcheck_model::{ApiPath, Case, CompareFunc, Footprint, FootprintTexel, Format, Lookup, Spec, Target, Texels, Wrap};
+use shadowcheck_model::{
+    ApiPath, Case, CompareFunc, Footprint, FootprintTexel, Format, Lookup, Spec, Target, Texels,
+    Wrap,
+};
 
 /// Why the unit gives no result for a case. Every variant is a reason suitable for a Skip.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -70,8 +73,13 @@ pub fn path_exists(spec: Spec, api: ApiPath) -> bool {
     use ApiPath as A;
     match spec {
         Spec::Sgix | Spec::SgixAmbient => matches!(api, A::FixedFunction | A::ArbFp | A::Glsl120),
-        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => matches!(api, A::FixedFunction | A::ArbFp | A::Glsl120 | A::Glsl130),
-        Spec::Gl46 => matches!(api, A::FixedFunction | A::ArbFp | A::Glsl120 | A::Glsl130 | A::GlslCore),
+        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => {
+            matches!(api, A::FixedFunction | A::ArbFp | A::Glsl120 | A::Glsl130)
+        }
+        Spec::Gl46 => matches!(
+            api,
+            A::FixedFunction | A::ArbFp | A::Glsl120 | A::Glsl130 | A::GlslCore
+        ),
         Spec::Es2Ext => api == A::Es100Ext,
         Spec::Gles32 => api == A::Es300,
     }
@@ -138,7 +146,11 @@ impl SoftUnit {
     }
 
     /// Resolves the case's sampler state against a prepared texture.
-    pub fn sampler_state(&self, case: &Case, tex: &PreparedTexture) -> Result<SamplerState, SoftError> {
+    pub fn sampler_state(
+        &self,
+        case: &Case,
+        tex: &PreparedTexture,
+    ) -> Result<SamplerState, SoftError> {
         SamplerState::new(self.spec, &case.sampler, tex, self.faults)
     }
 
@@ -169,7 +181,9 @@ impl SoftUnit {
             _ => 0.0,
         };
         if target.is_cube() && cube::select(s, t, r, f).is_none() {
-            return Err(SoftError::UndefinedResult("cube direction has no major axis (zero or NaN)"));
+            return Err(SoftError::UndefinedResult(
+                "cube direction has no major axis (zero or NaN)",
+            ));
         }
         Ok(Coords {
             s,
@@ -186,13 +200,18 @@ impl SoftUnit {
     /// Checks that `api` exists for this spec and can sample the case's target and wrap modes.
     fn check_path(&self, case: &Case, api: ApiPath) -> Result<(), SoftError> {
         if !path_exists(self.spec, api) {
-            return Err(SoftError::ApiPath { spec: self.spec, api });
+            return Err(SoftError::ApiPath {
+                spec: self.spec,
+                api,
+            });
         }
         let target = case.texture.target;
         if !path_targets(api, target) {
             return Err(SoftError::Target { api, target });
         }
-        if case.lookup.offset != [0; 3] && !matches!(api, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300) {
+        if case.lookup.offset != [0; 3]
+            && !matches!(api, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300)
+        {
             // GLSL 1.20, GLSL ES 1.00, fixed function and ARB programs have no offset lookups.
             return Err(SoftError::Undefined {
                 spec: self.spec,
@@ -265,20 +284,30 @@ impl SoftUnit {
         }
     }
 
-    fn sample_with(&self, case: &Case, api: ApiPath, tex: &mut PreparedTexture) -> Result<[f32; 4], SoftError> {
+    fn sample_with(
+        &self,
+        case: &Case,
+        api: ApiPath,
+        tex: &mut PreparedTexture,
+    ) -> Result<[f32; 4], SoftError> {
         let (st, coords) = self.prepare_case(case, tex)?;
         self.finish(case, api, tex, &st, &coords)
     }
 
     /// Path-independent part: validation, texture conversion, sampler state, coordinates.
-    fn prepare_case(&self, case: &Case, tex: &mut PreparedTexture) -> Result<(SamplerState, Coords), SoftError> {
+    fn prepare_case(
+        &self,
+        case: &Case,
+        tex: &mut PreparedTexture,
+    ) -> Result<(SamplerState, Coords), SoftError> {
         if case.spec != self.spec {
             return Err(SoftError::SpecMismatch {
                 unit: self.spec,
                 case: case.spec,
             });
         }
-        shadowcheck_model::validate::validate(case).map_err(|e| SoftError::Invalid(e.to_string()))?;
+        shadowcheck_model::validate::validate(case)
+            .map_err(|e| SoftError::Invalid(e.to_string()))?;
         tex.prepare_into(&case.texture, self.faults)?;
         let st = SamplerState::new(self.spec, &case.sampler, tex, self.faults)?;
         let coords = self.coords(case.texture.target, &case.lookup)?;
@@ -286,9 +315,22 @@ impl SoftUnit {
     }
 
     /// Path-dependent part: path checks, completeness, the lookup, the layout.
-    fn finish(&self, case: &Case, api: ApiPath, tex: &PreparedTexture, st: &SamplerState, c: &Coords) -> Result<[f32; 4], SoftError> {
+    fn finish(
+        &self,
+        case: &Case,
+        api: ApiPath,
+        tex: &PreparedTexture,
+        st: &SamplerState,
+        c: &Coords,
+    ) -> Result<[f32; 4], SoftError> {
         self.check_path(case, api)?;
-        let lay = layout::resolve(self.spec, api, st.kind, case.sampler.depth_texture_mode, self.faults)?;
+        let lay = layout::resolve(
+            self.spec,
+            api,
+            st.kind,
+            case.sampler.depth_texture_mode,
+            self.faults,
+        )?;
         if !st.complete {
             return Ok(layout::INCOMPLETE);
         }
@@ -327,7 +369,11 @@ impl SoftUnit {
                         lvl.map_or(t.raw as f64, |l| {
                             let i = ((layer * l.height + y) * l.width + x) as usize;
                             match (&l.depth, st.kind) {
-                                (_, Kind::Stencil) => l.stencil.as_ref().and_then(|s| s.get(i)).map_or(0.0, |&v| v as f64),
+                                (_, Kind::Stencil) => l
+                                    .stencil
+                                    .as_ref()
+                                    .and_then(|s| s.get(i))
+                                    .map_or(0.0, |&v| v as f64),
                                 (Texels::Unorm(v), _) => v.get(i).map_or(0.0, |&c| c as f64),
                                 (Texels::Float(v), _) => v.get(i).map_or(0.0, |&d| d as f64),
                             }
@@ -353,5 +399,7 @@ impl SoftUnit {
 
 /// Samples `case` on `api` with the unit for `case.spec` (and `faults`).
 pub fn sample_case(case: &Case, api: ApiPath, faults: Faults) -> Result<[f32; 4], SoftError> {
-    SoftUnit::new(case.spec).with_faults(faults).sample(case, api)
+    SoftUnit::new(case.spec)
+        .with_faults(faults)
+        .sample(case, api)
 }

@@ -14,7 +14,12 @@ pub enum LevelChoice {
     /// Sample level `level` with LINEAR (true) or NEAREST (false) filtering within it.
     Single { level: u32, linear: bool },
     /// Sample `d1` and `d2`, τ = (1 − frac(λ)) τ1 + frac(λ) τ2 (§8.14.3).
-    Blend { d1: u32, d2: u32, frac: f32, linear: bool },
+    Blend {
+        d1: u32,
+        d2: u32,
+        frac: f32,
+        linear: bool,
+    },
 }
 
 /// Level parameters that do not depend on the lookup.
@@ -33,7 +38,11 @@ pub struct LodParams {
 /// λ of equation 8.9, in f32.
 #[inline(always)]
 pub fn lambda(p: &LodParams, lambda_base: f32, shader_bias: f32, faults: Faults) -> f32 {
-    let texobj = if faults.has(Fault::LodBiasIgnored) { 0.0 } else { p.lod_bias };
+    let texobj = if faults.has(Fault::LodBiasIgnored) {
+        0.0
+    } else {
+        p.lod_bias
+    };
     let l = lambda_base + (texobj + shader_bias);
     if faults.has(Fault::LodClampIgnored) {
         l
@@ -150,8 +159,20 @@ mod tests {
     fn magnification_uses_base_level_and_mag_filter() {
         let mut p = params(Filter::NearestMipmapNearest, 2, 5);
         p.mag_filter = Filter::Nearest;
-        assert_eq!(choose(&p, 0.0, F), LevelChoice::Single { level: 2, linear: false });
-        assert_eq!(choose(&p, -1.0, F), LevelChoice::Single { level: 2, linear: false });
+        assert_eq!(
+            choose(&p, 0.0, F),
+            LevelChoice::Single {
+                level: 2,
+                linear: false
+            }
+        );
+        assert_eq!(
+            choose(&p, -1.0, F),
+            LevelChoice::Single {
+                level: 2,
+                linear: false
+            }
+        );
     }
 
     #[test]
@@ -171,10 +192,19 @@ mod tests {
         assert_eq!(lv(100.0), 3);
         // level_base 1: d = ⌈1 + λ + ½⌉ − 1.
         let p = params(Filter::LinearMipmapNearest, 1, 3);
-        assert_eq!(choose(&p, 0.75, F), LevelChoice::Single { level: 2, linear: true });
+        assert_eq!(
+            choose(&p, 0.75, F),
+            LevelChoice::Single {
+                level: 2,
+                linear: true
+            }
+        );
         assert_eq!(
             choose(&p, 0.75, F.with(Fault::MipLevelOffByOne)),
-            LevelChoice::Single { level: 3, linear: true }
+            LevelChoice::Single {
+                level: 3,
+                linear: true
+            }
         );
     }
 
@@ -199,8 +229,20 @@ mod tests {
                 linear: true
             }
         );
-        assert_eq!(choose(&p, 2.0, F), LevelChoice::Single { level: 2, linear: true });
-        assert_eq!(choose(&p, 7.0, F), LevelChoice::Single { level: 2, linear: true });
+        assert_eq!(
+            choose(&p, 2.0, F),
+            LevelChoice::Single {
+                level: 2,
+                linear: true
+            }
+        );
+        assert_eq!(
+            choose(&p, 7.0, F),
+            LevelChoice::Single {
+                level: 2,
+                linear: true
+            }
+        );
         let p = params(Filter::NearestMipmapLinear, 1, 3);
         assert_eq!(
             choose(&p, 1.5, F),
@@ -217,11 +259,17 @@ mod tests {
     fn non_mipmap_min_filters_use_base() {
         assert_eq!(
             choose(&params(Filter::Linear, 1, 4), 2.0, F),
-            LevelChoice::Single { level: 1, linear: true }
+            LevelChoice::Single {
+                level: 1,
+                linear: true
+            }
         );
         assert_eq!(
             choose(&params(Filter::Nearest, 0, 4), 2.0, F),
-            LevelChoice::Single { level: 0, linear: false }
+            LevelChoice::Single {
+                level: 0,
+                linear: false
+            }
         );
     }
 }

@@ -9,7 +9,9 @@ use crate::faults::{Fault, Faults};
 use crate::lod::LodParams;
 use crate::storage::{clamp01, PreparedTexture};
 use crate::SoftError;
-use shadowcheck_model::{CompareMode, DepthStencilMode, Filter, Format, Sampler, Spec, Target, Wrap};
+use shadowcheck_model::{
+    CompareMode, DepthStencilMode, Filter, Format, Sampler, Spec, Target, Wrap,
+};
 
 /// What a fetched texel turns into before filtering.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -89,24 +91,41 @@ fn check_format(spec: Spec, f: Format) -> Result<(), SoftError> {
 
 /// Filters that need only one texel: MAG NEAREST with MIN NEAREST or NEAREST_MIPMAP_NEAREST.
 pub fn is_nearest_only(s: &Sampler) -> bool {
-    s.mag_filter == Filter::Nearest && matches!(s.min_filter, Filter::Nearest | Filter::NearestMipmapNearest)
+    s.mag_filter == Filter::Nearest
+        && matches!(s.min_filter, Filter::Nearest | Filter::NearestMipmapNearest)
 }
 
 impl SamplerState {
     /// Resolves `s` for `tex` under `spec`. Errors name state the spec does not define.
-    pub fn new(spec: Spec, s: &Sampler, tex: &PreparedTexture, faults: Faults) -> Result<SamplerState, SoftError> {
+    pub fn new(
+        spec: Spec,
+        s: &Sampler,
+        tex: &PreparedTexture,
+        faults: Faults,
+    ) -> Result<SamplerState, SoftError> {
         let format = tex.format();
         let target = tex.target();
         check_format(spec, format)?;
         check_wrap(spec, target, s.wrap_s)?;
         check_wrap(spec, target, s.wrap_t)?;
         // Only s and t address a rectangle; wrap_r is still checked against the spec's enums.
-        check_wrap(spec, if target.is_rect() { Target::T2d } else { target }, s.wrap_r)?;
+        check_wrap(
+            spec,
+            if target.is_rect() {
+                Target::T2d
+            } else {
+                target
+            },
+            s.wrap_r,
+        )?;
         if !matches!(s.mag_filter, Filter::Nearest | Filter::Linear) {
             return Err(undefined(spec, "a mipmap TEXTURE_MAG_FILTER"));
         }
         if target.is_rect() && s.min_filter.is_mipmap() {
-            return Err(undefined(spec, "mipmap minification on rectangle textures (§8.14.3)"));
+            return Err(undefined(
+                spec,
+                "mipmap minification on rectangle textures (§8.14.3)",
+            ));
         }
         if is_es(spec) && s.lod_bias != 0.0 {
             return Err(undefined(spec, "TEXTURE_LOD_BIAS (not in OpenGL ES)"));
@@ -114,10 +133,16 @@ impl SamplerState {
         if spec == Spec::Es2Ext {
             // ES 2.0 has no TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD.
             if tex.base_level != 0 || s.max_level.is_some() {
-                return Err(undefined(spec, "TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL (not in OpenGL ES 2.0)"));
+                return Err(undefined(
+                    spec,
+                    "TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL (not in OpenGL ES 2.0)",
+                ));
             }
             if s.min_lod != -1000.0 || s.max_lod != 1000.0 {
-                return Err(undefined(spec, "TEXTURE_MIN_LOD / TEXTURE_MAX_LOD (not in OpenGL ES 2.0)"));
+                return Err(undefined(
+                    spec,
+                    "TEXTURE_MIN_LOD / TEXTURE_MAX_LOD (not in OpenGL ES 2.0)",
+                ));
             }
         }
         if s.min_lod > s.max_lod {
@@ -127,7 +152,8 @@ impl SamplerState {
         }
 
         // Which texels take part (§8.23.1).
-        let stencil_mode = format.has_stencil() && s.depth_stencil_mode == Some(DepthStencilMode::StencilIndex);
+        let stencil_mode =
+            format.has_stencil() && s.depth_stencil_mode == Some(DepthStencilMode::StencilIndex);
         if stencil_mode && !matches!(spec, Spec::Gl46 | Spec::Gles32) {
             return Err(undefined(spec, "DEPTH_STENCIL_TEXTURE_MODE"));
         }
@@ -151,7 +177,8 @@ impl SamplerState {
             Kind::Depth
         };
         // Faulty only: the stencil index compared with Dref ([`Fault::StencilCompared`]).
-        let stencil_compare = kind == Kind::Stencil && compare_on && faults.has(Fault::StencilCompared);
+        let stencil_compare =
+            kind == Kind::Stencil && compare_on && faults.has(Fault::StencilCompared);
         let op = if kind == Kind::Compare || stencil_compare {
             compare::resolve_op(spec, s.compare_func, faults)?
         } else {
@@ -175,13 +202,20 @@ impl SamplerState {
         let base = tex.base_level;
         let level_max = s.max_level.unwrap_or(1000);
         let p = tex.max_mip_index() + base;
-        let q = if faults.has(Fault::MaxLevelIgnored) { p } else { p.min(level_max) };
+        let q = if faults.has(Fault::MaxLevelIgnored) {
+            p
+        } else {
+            p.min(level_max)
+        };
         let q_sample = q.max(base);
 
         // Completeness (§8.17).
         let mip_complete = base <= level_max && q - base.min(q) < tex.chain_len;
         let mut complete = true;
-        if s.min_filter.is_mipmap() && !mip_complete && !faults.has(Fault::MipmapCompletenessIgnored) {
+        if s.min_filter.is_mipmap()
+            && !mip_complete
+            && !faults.has(Fault::MipmapCompletenessIgnored)
+        {
             complete = false;
         }
         let nearest_only = is_nearest_only(s);
@@ -270,12 +304,22 @@ mod tests {
     #[test]
     fn mipmap_filter_needs_full_chain() {
         let t = tex(Format::D16, &[(4, 4), (2, 2)]);
-        let st = SamplerState::new(Spec::Gl46, &sampler(Filter::NearestMipmapNearest), &t, Faults::NONE).unwrap();
+        let st = SamplerState::new(
+            Spec::Gl46,
+            &sampler(Filter::NearestMipmapNearest),
+            &t,
+            Faults::NONE,
+        )
+        .unwrap();
         assert!(!st.complete);
         // TEXTURE_MAX_LEVEL 1 makes q = 1: the two levels suffice.
         let mut s = sampler(Filter::NearestMipmapNearest);
         s.max_level = Some(1);
-        assert!(SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE).unwrap().complete);
+        assert!(
+            SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE)
+                .unwrap()
+                .complete
+        );
         // Non-mipmap filters only need the base level.
         assert!(
             SamplerState::new(Spec::Gl46, &sampler(Filter::Linear), &t, Faults::NONE)
@@ -284,9 +328,14 @@ mod tests {
         );
         let t = tex(Format::D16, &[(4, 4), (2, 2), (1, 1)]);
         assert!(
-            SamplerState::new(Spec::Gl46, &sampler(Filter::LinearMipmapLinear), &t, Faults::NONE)
-                .unwrap()
-                .complete
+            SamplerState::new(
+                Spec::Gl46,
+                &sampler(Filter::LinearMipmapLinear),
+                &t,
+                Faults::NONE
+            )
+            .unwrap()
+            .complete
         );
     }
 
@@ -295,17 +344,34 @@ mod tests {
         let t = tex(Format::D24, &[(2, 2)]);
         let mut s = sampler(Filter::Linear);
         s.compare_mode = CompareMode::None;
-        assert!(!SamplerState::new(Spec::Gles32, &s, &t, Faults::NONE).unwrap().complete);
-        assert!(SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE).unwrap().complete);
+        assert!(
+            !SamplerState::new(Spec::Gles32, &s, &t, Faults::NONE)
+                .unwrap()
+                .complete
+        );
+        assert!(
+            SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE)
+                .unwrap()
+                .complete
+        );
         s.compare_mode = CompareMode::Compare;
-        assert!(SamplerState::new(Spec::Gles32, &s, &t, Faults::NONE).unwrap().complete);
+        assert!(
+            SamplerState::new(Spec::Gles32, &s, &t, Faults::NONE)
+                .unwrap()
+                .complete
+        );
         // The unsized format is not caught by the rule.
         let mut s = sampler(Filter::Linear);
         s.compare_mode = CompareMode::None;
         assert!(
-            SamplerState::new(Spec::Gles32, &s, &tex(Format::DepthUnsized, &[(2, 2)]), Faults::NONE)
-                .unwrap()
-                .complete
+            SamplerState::new(
+                Spec::Gles32,
+                &s,
+                &tex(Format::DepthUnsized, &[(2, 2)]),
+                Faults::NONE
+            )
+            .unwrap()
+            .complete
         );
     }
 
@@ -318,7 +384,11 @@ mod tests {
         assert_eq!((st.kind, st.complete), (Kind::Stencil, false));
         let mut s = sampler(Filter::Nearest);
         s.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
-        assert!(SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE).unwrap().complete);
+        assert!(
+            SamplerState::new(Spec::Gl46, &s, &t, Faults::NONE)
+                .unwrap()
+                .complete
+        );
         assert!(SamplerState::new(Spec::Arb, &s, &t, Faults::NONE).is_err());
     }
 
@@ -333,7 +403,13 @@ mod tests {
         s.wrap_s = Wrap::ClampToBorder;
         assert!(SamplerState::new(Spec::Es2Ext, &s, &t, Faults::NONE).is_err());
         assert!(SamplerState::new(Spec::Gles32, &s, &t, Faults::NONE).is_ok());
-        assert!(SamplerState::new(Spec::Gles32, &sampler(Filter::Nearest), &tex(Format::D32, &[(1, 1)]), Faults::NONE).is_err());
+        assert!(SamplerState::new(
+            Spec::Gles32,
+            &sampler(Filter::Nearest),
+            &tex(Format::D32, &[(1, 1)]),
+            Faults::NONE
+        )
+        .is_err());
     }
 
     #[test]
@@ -347,9 +423,14 @@ mod tests {
             1.0
         );
         assert_eq!(
-            SamplerState::new(Spec::Gles32, &s, &tex(Format::D32f, &[(1, 1)]), Faults::NONE)
-                .unwrap()
-                .border,
+            SamplerState::new(
+                Spec::Gles32,
+                &s,
+                &tex(Format::D32f, &[(1, 1)]),
+                Faults::NONE
+            )
+            .unwrap()
+            .border,
             1.5
         );
     }

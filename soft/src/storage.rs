@@ -57,7 +57,8 @@ impl PreparedTexture {
         self.stencil.clear();
         let total: usize = tex.levels.iter().map(|l| l.texel_count()).sum();
         self.data.reserve(total);
-        let has_stencil = tex.format.has_stencil() && tex.levels.iter().all(|l| l.stencil.is_some());
+        let has_stencil =
+            tex.format.has_stencil() && tex.levels.iter().all(|l| l.stencil.is_some());
         let bits = tex.format.unorm_bits();
         if tex.levels.is_empty() {
             return Err(SoftError::Invalid("texture has no levels".into()));
@@ -69,11 +70,17 @@ impl PreparedTexture {
                 return Err(SoftError::Invalid("level with a zero dimension".into()));
             }
             if tex.target.is_cube() && (lvl.width != lvl.height || lvl.layers % 6 != 0) {
-                return Err(SoftError::Invalid("cube levels must be square with 6 faces per cube".into()));
+                return Err(SoftError::Invalid(
+                    "cube levels must be square with 6 faces per cube".into(),
+                ));
             }
             let n = lvl.texel_count();
             if lvl.depth.len() != n {
-                return Err(SoftError::Invalid(format!("level has {} values for {} texels", lvl.depth.len(), n)));
+                return Err(SoftError::Invalid(format!(
+                    "level has {} values for {} texels",
+                    lvl.depth.len(),
+                    n
+                )));
             }
             self.levels.push(LevelDesc {
                 width: lvl.width,
@@ -103,14 +110,22 @@ impl PreparedTexture {
                     return Err(SoftError::Invalid(format!(
                         "format {} does not store {} texels",
                         tex.format,
-                        if bits.is_some() { "floating-point" } else { "unorm" }
+                        if bits.is_some() {
+                            "floating-point"
+                        } else {
+                            "unorm"
+                        }
                     )))
                 }
             }
             if has_stencil {
                 if let Some(s) = &lvl.stencil {
                     if s.len() != n {
-                        return Err(SoftError::Invalid(format!("level has {} stencil values for {} texels", s.len(), n)));
+                        return Err(SoftError::Invalid(format!(
+                            "level has {} stencil values for {} texels",
+                            s.len(),
+                            n
+                        )));
                     }
                     self.stencil.extend_from_slice(s);
                 }
@@ -138,19 +153,25 @@ impl PreparedTexture {
     /// The caller guarantees the indices are in range.
     #[inline(always)]
     pub(crate) fn texel(&self, l: &LevelDesc, x: u32, y: u32, layer: u32) -> f32 {
-        let idx = l.offset + ((layer as usize * l.height as usize + y as usize) * l.width as usize) + x as usize;
+        let idx = l.offset
+            + ((layer as usize * l.height as usize + y as usize) * l.width as usize)
+            + x as usize;
         self.data[idx]
     }
 
     #[inline(always)]
     pub(crate) fn stencil_texel(&self, l: &LevelDesc, x: u32, y: u32, layer: u32) -> f32 {
-        let idx = l.offset + ((layer as usize * l.height as usize + y as usize) * l.width as usize) + x as usize;
+        let idx = l.offset
+            + ((layer as usize * l.height as usize + y as usize) * l.width as usize)
+            + x as usize;
         self.stencil.get(idx).copied().unwrap_or(0) as f32
     }
 
     /// `p` of §8.14.3 relative to the base level: ⌊log2(maxsize)⌋.
     pub(crate) fn max_mip_index(&self) -> u32 {
-        let Some(l0) = self.levels.first() else { return 0 };
+        let Some(l0) = self.levels.first() else {
+            return 0;
+        };
         let maxsize = match self.target() {
             Target::T1d | Target::T1dArray => l0.width,
             _ => l0.width.max(l0.height),
@@ -217,27 +238,48 @@ mod tests {
     #[test]
     fn unorm_conversion_is_c_over_2b_minus_1() {
         // §2.3.5.1 equation 2.1: 0 -> 0.0, 2^b-1 -> 1.0, 32768/65535 for D16.
-        let t = tex(Format::D16, vec![lvl(3, 1, Texels::Unorm(vec![0, 32768, 65535]))]);
+        let t = tex(
+            Format::D16,
+            vec![lvl(3, 1, Texels::Unorm(vec![0, 32768, 65535]))],
+        );
         let p = PreparedTexture::new(&t, Faults::NONE).unwrap();
         assert_eq!(p.data, vec![0.0, (32768.0f64 / 65535.0) as f32, 1.0]);
-        let t = tex(Format::D24, vec![lvl(1, 1, Texels::Unorm(vec![(1 << 24) - 1]))]);
-        assert_eq!(PreparedTexture::new(&t, Faults::NONE).unwrap().data, vec![1.0]);
+        let t = tex(
+            Format::D24,
+            vec![lvl(1, 1, Texels::Unorm(vec![(1 << 24) - 1]))],
+        );
+        assert_eq!(
+            PreparedTexture::new(&t, Faults::NONE).unwrap().data,
+            vec![1.0]
+        );
         let t = tex(Format::R8, vec![lvl(1, 1, Texels::Unorm(vec![51]))]);
-        assert_eq!(PreparedTexture::new(&t, Faults::NONE).unwrap().data, vec![0.2]);
+        assert_eq!(
+            PreparedTexture::new(&t, Faults::NONE).unwrap().data,
+            vec![0.2]
+        );
     }
 
     #[test]
     fn float_depth_is_clamped_at_upload() {
         // §8.5: depth component groups are clamped to [0, 1], D32F included.
-        let t = tex(Format::D32f, vec![lvl(3, 1, Texels::Float(vec![-0.5, 0.25, 1.5]))]);
-        assert_eq!(PreparedTexture::new(&t, Faults::NONE).unwrap().data, vec![0.0, 0.25, 1.0]);
+        let t = tex(
+            Format::D32f,
+            vec![lvl(3, 1, Texels::Float(vec![-0.5, 0.25, 1.5]))],
+        );
+        assert_eq!(
+            PreparedTexture::new(&t, Faults::NONE).unwrap().data,
+            vec![0.0, 0.25, 1.0]
+        );
     }
 
     #[test]
     fn mip_chain_follows_halving_sequence() {
         let z = |n| Texels::Unorm(vec![0; n]);
         // 4x2 -> 2x1 -> 1x1: complete chain of 3 levels; p = floor(log2 4) = 2.
-        let t = tex(Format::D16, vec![lvl(4, 2, z(8)), lvl(2, 1, z(2)), lvl(1, 1, z(1))]);
+        let t = tex(
+            Format::D16,
+            vec![lvl(4, 2, z(8)), lvl(2, 1, z(2)), lvl(1, 1, z(1))],
+        );
         let p = PreparedTexture::new(&t, Faults::NONE).unwrap();
         assert_eq!((p.chain_len, p.max_mip_index()), (3, 2));
         // A wrong second level stops the chain.
@@ -261,9 +303,16 @@ mod tests {
 
     #[test]
     fn prepare_into_reuses_buffers() {
-        let mut p = PreparedTexture::new(&tex(Format::D16, vec![lvl(2, 1, Texels::Unorm(vec![0, 65535]))]), Faults::NONE).unwrap();
-        p.prepare_into(&tex(Format::D16, vec![lvl(1, 1, Texels::Unorm(vec![65535]))]), Faults::NONE)
-            .unwrap();
+        let mut p = PreparedTexture::new(
+            &tex(Format::D16, vec![lvl(2, 1, Texels::Unorm(vec![0, 65535]))]),
+            Faults::NONE,
+        )
+        .unwrap();
+        p.prepare_into(
+            &tex(Format::D16, vec![lvl(1, 1, Texels::Unorm(vec![65535]))]),
+            Faults::NONE,
+        )
+        .unwrap();
         assert_eq!(p.data, vec![1.0]);
         assert_eq!(p.levels.len(), 1);
     }

@@ -123,7 +123,15 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         Fault::FilterThenCompare | Fault::PcfHalfTexelOff | Fault::LinearAsNearest => linear_pair(),
         Fault::LequalGequalSwapped => gl(vec![65535], 1, C::Lequal),
         Fault::LessAsLequal | Fault::GreaterAsGequal => {
-            let mut c = gl(vec![d16(0.6)], 1, if fault == Fault::LessAsLequal { C::Less } else { C::Greater });
+            let mut c = gl(
+                vec![d16(0.6)],
+                1,
+                if fault == Fault::LessAsLequal {
+                    C::Less
+                } else {
+                    C::Greater
+                },
+            );
             c.lookup.dref = 0.6;
             c
         }
@@ -137,7 +145,13 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         Fault::SgixOperatorsReversed => case(Spec::Sgix, 1, 1, vec![d16(0.2)], C::LequalRSgix),
         Fault::AmbientAppliedToPass | Fault::AmbientIgnored => {
             let pass = fault == Fault::AmbientAppliedToPass;
-            let mut c = case(Spec::ArbAmbient, 1, 1, vec![if pass { 65535 } else { 0 }], C::Lequal);
+            let mut c = case(
+                Spec::ArbAmbient,
+                1,
+                1,
+                vec![if pass { 65535 } else { 0 }],
+                C::Lequal,
+            );
             c.sampler.fail_value = Some(0.25);
             c
         }
@@ -246,7 +260,9 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
             c.sampler.max_level = Some(0);
             c
         }
-        Fault::BorderIgnored | Fault::BorderDepthFromAlpha => border(Format::D16, C::Lequal, [1.0, 0.0, 0.0, 0.0], 0.5),
+        Fault::BorderIgnored | Fault::BorderDepthFromAlpha => {
+            border(Format::D16, C::Lequal, [1.0, 0.0, 0.0, 0.0], 0.5)
+        }
         Fault::MirroredRepeatOffByOne => {
             // s = 0.3 on 4 texels: u = 1.2, i = 1 -> (3) − mirror(1 − 4) = 3 − 2 = 1.
             let mut c = gl(vec![65535, 0, 0, 0], 4, C::Lequal);

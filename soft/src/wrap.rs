@@ -107,7 +107,11 @@ pub fn nearest(mode: Wrap, u: f32, size: u32, faults: Faults) -> i64 {
 #[inline(always)]
 pub fn linear(mode: Wrap, u: f32, size: u32, faults: Faults) -> (i64, i64, f32) {
     let u = pre_clamp(mode, u, size as f32);
-    let a = if faults.has(Fault::PcfHalfTexelOff) { u } else { u - 0.5 };
+    let a = if faults.has(Fault::PcfHalfTexelOff) {
+        u
+    } else {
+        u - 0.5
+    };
     let (i, alpha) = floor_frac(a);
     let s = size as i64;
     (
@@ -132,7 +136,9 @@ mod tests {
         assert_eq!(wrap(Wrap::Repeat, -1, 4, false, F), 3);
         assert_eq!(wrap(Wrap::Repeat, 9, 4, false, F), 1);
         // MIRRORED_REPEAT over 2*size = 8: 0 1 2 3 3 2 1 0, and -1 -> 0, -2 -> 1.
-        let m: Vec<i64> = (-2..10).map(|c| wrap(Wrap::MirroredRepeat, c, 4, false, F)).collect();
+        let m: Vec<i64> = (-2..10)
+            .map(|c| wrap(Wrap::MirroredRepeat, c, 4, false, F))
+            .collect();
         assert_eq!(m, vec![1, 0, 0, 1, 2, 3, 3, 2, 1, 0, 0, 1]);
         // MIRROR_CLAMP_TO_EDGE: clamp(mirror(c), 0, 3): -1 -> 0, -3 -> 2, -9 -> 3.
         let m: Vec<i64> = [-9, -3, -1, 0, 2, 7]
@@ -191,7 +197,8 @@ mod tests {
     #[test]
     fn fast_floor_matches_floor() {
         for x in [
-            0.0f32, -0.0, 0.5, -0.5, 1.0, -1.0, 2.75, -2.75, 8388607.5, -8388607.5, 16777216.0, -1e20, 1e20, 3.4e38, -3.4e38,
+            0.0f32, -0.0, 0.5, -0.5, 1.0, -1.0, 2.75, -2.75, 8388607.5, -8388607.5, 16777216.0,
+            -1e20, 1e20, 3.4e38, -3.4e38,
         ] {
             assert_eq!(floor_i64(x), x.floor() as i64, "{x}");
         }

@@ -106,7 +106,11 @@ pub fn pattern_texture(cell: &Cell) -> (Texture, u32, u32, At) {
 /// image.
 pub fn mip_texture(cell: &Cell) -> (Texture, At) {
     let (n, layer, face) = layout(cell.target);
-    let size = if cell.target.is_cube() || cell.target.is_array() { 2 } else { 4 };
+    let size = if cell.target.is_cube() || cell.target.is_array() {
+        2
+    } else {
+        4
+    };
     let mut levels = Vec::new();
     let mut s = size;
     let mut i = 0;
@@ -149,7 +153,11 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
                     ..base
                 }
             } else {
-                At { s: 0.75, t: 0.25, ..base }
+                At {
+                    s: 0.75,
+                    t: 0.25,
+                    ..base
+                }
             };
             let at_ref = build::f32r(build::stored_real(f, PATTERN[1]));
             let refs: Vec<(String, f64)> = if cell.mode == CompareMode::None {
@@ -157,11 +165,21 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
             } else if light(cell.spec, f) {
                 vec![("ref=0.3".into(), 0.3)]
             } else {
-                vec![("ref=0.3".into(), 0.3), ("ref=at".into(), at_ref), ("ref=0.5".into(), 0.5)]
+                vec![
+                    ("ref=0.3".into(), 0.3),
+                    ("ref=at".into(), at_ref),
+                    ("ref=0.5".into(), 0.5),
+                ]
             };
             for (tag, r) in refs {
                 let lk = lookup(cell.target, at, w, h, r);
-                out.push(Draft::new("cell", *cell, tex.clone(), lk, format!("texel1/{tag}/dt={nominal}")));
+                out.push(Draft::new(
+                    "cell",
+                    *cell,
+                    tex.clone(),
+                    lk,
+                    format!("texel1/{tag}/dt={nominal}"),
+                ));
             }
         } else {
             // alpha = 0.25, beta = 0.5 from texel (0,0) (2D) or from texel 1 (1D).
@@ -172,7 +190,11 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
                     ..base
                 }
             } else {
-                At { s: 0.375, t: 0.5, ..base }
+                At {
+                    s: 0.375,
+                    t: 0.5,
+                    ..base
+                }
             };
             let refs: &[f64] = if cell.mode == CompareMode::None || light(cell.spec, f) {
                 &[0.5]
@@ -186,7 +208,13 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
                 } else {
                     format!("ref={r}")
                 };
-                out.push(Draft::new("cell", *cell, tex.clone(), lk, format!("a=0.25,0.5/{tag}/dt={nominal}")));
+                out.push(Draft::new(
+                    "cell",
+                    *cell,
+                    tex.clone(),
+                    lk,
+                    format!("a=0.25,0.5/{tag}/dt={nominal}"),
+                ));
             }
         }
     } else {

@@ -60,7 +60,13 @@ pub struct Draft {
 }
 
 impl Draft {
-    pub fn new(family: &'static str, cell: Cell, texture: Texture, lookup: Lookup, tags: String) -> Draft {
+    pub fn new(
+        family: &'static str,
+        cell: Cell,
+        texture: Texture,
+        lookup: Lookup,
+        tags: String,
+    ) -> Draft {
         Draft {
             family,
             cell,
@@ -74,7 +80,14 @@ impl Draft {
     /// `spec/target/format/filter/func/family/tags`.
     pub fn id(&self) -> String {
         let c = &self.cell;
-        let mut id = format!("{}/{}/{}/{}/{}", c.spec, c.target, c.format, c.filter, c.func_key());
+        let mut id = format!(
+            "{}/{}/{}/{}/{}",
+            c.spec,
+            c.target,
+            c.format,
+            c.filter,
+            c.func_key()
+        );
         if self.family != "cell" {
             id.push('/');
             id.push_str(self.family);

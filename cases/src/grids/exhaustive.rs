@@ -39,7 +39,11 @@ fn chunk(func: CompareFunc, first: u32) -> (String, Vec<Draft>) {
         let s = Stored::Unorm(c);
         let tex = texture(&cell, vec![build::level_exact(Format::D16, 1, 1, 1, &[s])]);
         let at = build::f32r(build::real(Format::D16, s));
-        for (tag, r) in [("at-", build::f32_next_down(at)), ("at", at), ("at+", build::f32_next_up(at))] {
+        for (tag, r) in [
+            ("at-", build::f32_next_down(at)),
+            ("at", at),
+            ("at+", build::f32_next_up(at)),
+        ] {
             out.push(Draft::new(
                 "all",
                 cell,

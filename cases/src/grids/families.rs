@@ -26,7 +26,11 @@ fn clamp_formats(d: &SpecDims) -> Vec<Format> {
 
 /// Depth formats without stencil (those whose stored values differ in precision).
 pub(super) fn plain_depth_formats(d: &SpecDims) -> Vec<Format> {
-    d.formats.iter().copied().filter(|f| f.is_depth() && !f.has_stencil()).collect()
+    d.formats
+        .iter()
+        .copied()
+        .filter(|f| f.is_depth() && !f.has_stencil())
+        .collect()
 }
 
 /// The function the single-function families use: LEQUAL (R <= Dt) where the spec has it, else
@@ -49,7 +53,13 @@ pub fn func_pair(d: &SpecDims) -> [CompareFunc; 2] {
     }
 }
 
-pub(super) fn cell(d: &SpecDims, target: Target, format: Format, filter: Filter, func: CompareFunc) -> Cell {
+pub(super) fn cell(
+    d: &SpecDims,
+    target: Target,
+    format: Format,
+    filter: Filter,
+    func: CompareFunc,
+) -> Cell {
     Cell {
         spec: d.spec,
         target,
@@ -69,7 +79,17 @@ fn one_texel(c: &Cell, v: Stored) -> Texture {
 /// R and Dt at and beyond the clamping edges: R in {-inf, -0.1, 0, 0.5, 1, 1.1, 1e30, inf,
 /// NaN} against Dt in {0, 0.5, 1}; for D32F also stored values outside [0,1] (the upload clamp).
 pub fn clamp(d: &SpecDims) -> Vec<Draft> {
-    const REFS: [f64; 9] = [f64::NEG_INFINITY, -0.1, 0.0, 0.5, 1.0, 1.1, 1e30, f64::INFINITY, f64::NAN];
+    const REFS: [f64; 9] = [
+        f64::NEG_INFINITY,
+        -0.1,
+        0.0,
+        0.5,
+        1.0,
+        1.1,
+        1e30,
+        f64::INFINITY,
+        f64::NAN,
+    ];
     let mut out = Vec::new();
     for fmt in clamp_formats(d) {
         let mut dts = vec![0.0, 0.5, 1.0];
@@ -82,7 +102,13 @@ pub fn clamp(d: &SpecDims) -> Vec<Draft> {
                 let tex = one_texel(&c, build::store(fmt, dt));
                 for r in REFS {
                     let lk = lookup(Target::T2d, At::st(0.5, 0.5), 1, 1, r);
-                    out.push(Draft::new("clamp", c, tex.clone(), lk, format!("dt={}/ref={}", num(dt), num(r))));
+                    out.push(Draft::new(
+                        "clamp",
+                        c,
+                        tex.clone(),
+                        lk,
+                        format!("dt={}/ref={}", num(dt), num(r)),
+                    ));
                 }
             }
         }
@@ -99,7 +125,12 @@ pub fn exact(d: &SpecDims) -> Vec<Draft> {
         let stored: Vec<Stored> = match fmt.unorm_bits() {
             Some(b) => {
                 let max = build::unorm_max(b) as u32;
-                vec![Stored::Unorm(0), Stored::Unorm(1), Stored::Unorm(1 << (b - 1)), Stored::Unorm(max)]
+                vec![
+                    Stored::Unorm(0),
+                    Stored::Unorm(1),
+                    Stored::Unorm(1 << (b - 1)),
+                    Stored::Unorm(max),
+                ]
             }
             None => vec![
                 Stored::Float(0.0),
@@ -117,7 +148,11 @@ pub fn exact(d: &SpecDims) -> Vec<Draft> {
                     Stored::Unorm(v) => format!("c={v}"),
                     Stored::Float(v) => format!("dt={}", num(v as f64)),
                 };
-                let mut refs = vec![("at-", build::f32_next_down(at)), ("at", at), ("at+", build::f32_next_up(at))];
+                let mut refs = vec![
+                    ("at-", build::f32_next_down(at)),
+                    ("at", at),
+                    ("at+", build::f32_next_up(at)),
+                ];
                 if matches!(func, CompareFunc::Equal | CompareFunc::Notequal) {
                     // Near misses beyond the lenient 16-bit reference precision: an EQUAL with a
                     // tolerance (mutant equal-with-tolerance) passes them.
@@ -126,7 +161,13 @@ pub fn exact(d: &SpecDims) -> Vec<Draft> {
                 }
                 for (tag, r) in refs {
                     let lk = lookup(Target::T2d, At::st(0.5, 0.5), 1, 1, r);
-                    out.push(Draft::new("exact", c, tex.clone(), lk, format!("{label}/ref={tag}")));
+                    out.push(Draft::new(
+                        "exact",
+                        c,
+                        tex.clone(),
+                        lk,
+                        format!("{label}/ref={tag}"),
+                    ));
                 }
             }
         }
@@ -145,7 +186,13 @@ pub fn pcf(d: &SpecDims) -> Vec<Draft> {
             let (tex, w, h, _) = pattern_texture(&c);
             for (a, b) in [(0.25, 0.5), (0.5, 0.5), (0.25, 0.75)] {
                 for r in [0.1, 0.3, 0.5, 0.7, 0.9] {
-                    let lk = lookup(Target::T2d, At::st((0.5 + a) / 2.0, (0.5 + b) / 2.0), w, h, r);
+                    let lk = lookup(
+                        Target::T2d,
+                        At::st((0.5 + a) / 2.0, (0.5 + b) / 2.0),
+                        w,
+                        h,
+                        r,
+                    );
                     out.push(Draft::new(
                         "pcf",
                         c,
@@ -165,8 +212,18 @@ const MIP: [f64; 3] = [0.2, 0.8, 0.4];
 
 fn mip_chain(c: &Cell, base_level: u32) -> Texture {
     let mut levels = Vec::new();
-    for (i, size) in [4u32, 2, 1].into_iter().enumerate().skip(base_level as usize) {
-        levels.push(build::level(c.format, size, size, 1, &vec![MIP[i]; (size * size) as usize]));
+    for (i, size) in [4u32, 2, 1]
+        .into_iter()
+        .enumerate()
+        .skip(base_level as usize)
+    {
+        levels.push(build::level(
+            c.format,
+            size,
+            size,
+            1,
+            &vec![MIP[i]; (size * size) as usize],
+        ));
     }
     Texture {
         target: c.target,
@@ -191,7 +248,13 @@ pub fn mip(d: &SpecDims) -> Vec<Draft> {
             for r in [0.3, 0.5] {
                 let mut lk = lookup(Target::T2d, At::st(0.5, 0.5), 4, 4, r);
                 lk.lod = lod;
-                out.push(Draft::new("mip", c, tex.clone(), lk, format!("lod={lod}/ref={r}/{tags}")));
+                out.push(Draft::new(
+                    "mip",
+                    c,
+                    tex.clone(),
+                    lk,
+                    format!("lod={lod}/ref={r}/{tags}"),
+                ));
             }
         }
         type Variant = (&'static str, fn(&mut Draft));
@@ -209,7 +272,13 @@ pub fn mip(d: &SpecDims) -> Vec<Draft> {
             for lod in [0.0, 2.0] {
                 let mut lk = lookup(Target::T2d, At::st(0.5, 0.5), 4, 4, 0.5);
                 lk.lod = lod;
-                let mut x = Draft::new("mip", c, tex.clone(), lk, format!("{name}/lod={lod}/ref=0.5/{tags}"));
+                let mut x = Draft::new(
+                    "mip",
+                    c,
+                    tex.clone(),
+                    lk,
+                    format!("{name}/lod={lod}/ref=0.5/{tags}"),
+                );
                 apply(&mut x);
                 out.push(x);
             }
@@ -262,7 +331,11 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
                 c,
                 tex.clone(),
                 lookup(Target::T2d, At::st(-0.25, 0.25), w, h, r),
-                format!("wrap=border/st=-0.25,0.25/border={}/ref={}", num(border), num(r)),
+                format!(
+                    "wrap=border/st=-0.25,0.25/border={}/ref={}",
+                    num(border),
+                    num(r)
+                ),
             );
             x.sampler.wrap_s = Wrap::ClampToBorder;
             x.sampler.wrap_t = Wrap::ClampToBorder;
@@ -272,8 +345,13 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
     }
     // ARB_shadow 3.8.13.1 puts Dt in [0, 1] for the pre-3.0 specs (GL 4.6 leaves a fixed-point border
     // outside [0, 1] undefined, ES 3.2 clamps it): border 1.5 reads as 1, -0.5 as 0.
-    if matches!(d.spec, Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs) && d.wraps.contains(&Wrap::ClampToBorder) {
-        let pairs = [(1.5, 1.0, CompareFunc::Gequal), (-0.5, 0.0, CompareFunc::Lequal)];
+    if matches!(d.spec, Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs)
+        && d.wraps.contains(&Wrap::ClampToBorder)
+    {
+        let pairs = [
+            (1.5, 1.0, CompareFunc::Gequal),
+            (-0.5, 0.0, CompareFunc::Lequal),
+        ];
         for (border, r, func) in pairs {
             let c = cell(d, Target::T2d, fmt, Filter::Nearest, func);
             let (tex, w, h, _) = pattern_texture(&c);
@@ -282,7 +360,11 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
                 c,
                 tex.clone(),
                 lookup(Target::T2d, At::st(-0.25, 0.25), w, h, r),
-                format!("wrap=border/st=-0.25,0.25/border={}/ref={}", num(border), num(r)),
+                format!(
+                    "wrap=border/st=-0.25,0.25/border={}/ref={}",
+                    num(border),
+                    num(r)
+                ),
             );
             x.sampler.wrap_s = Wrap::ClampToBorder;
             x.sampler.wrap_t = Wrap::ClampToBorder;
@@ -304,7 +386,11 @@ pub fn cube(d: &SpecDims) -> Vec<Draft> {
         for fmt in clamp_formats(d) {
             let n = if target == Target::CubeArray { 2 } else { 1 };
             let (w, h, layers) = build::dims(target, 2, n);
-            let face_vals = |f: u32| -> Vec<f64> { (0..4).map(|i| 0.1 + 0.13 * f as f64 + 0.02 * i as f64).collect() };
+            let face_vals = |f: u32| -> Vec<f64> {
+                (0..4)
+                    .map(|i| 0.1 + 0.13 * f as f64 + 0.02 * i as f64)
+                    .collect()
+            };
             let mut vals = Vec::new();
             for l in 0..layers {
                 let f = l % 6;
@@ -312,7 +398,11 @@ pub fn cube(d: &SpecDims) -> Vec<Draft> {
                 let sampled = target == Target::Cube || l / 6 == 1;
                 vals.extend(fv.iter().map(|v| if sampled { *v } else { 1.0 - *v }));
             }
-            let cube_index = if target == Target::CubeArray { 1.0 } else { 0.0 };
+            let cube_index = if target == Target::CubeArray {
+                1.0
+            } else {
+                0.0
+            };
             for filter in [Filter::Nearest, Filter::Linear] {
                 let c = cell(d, target, fmt, filter, func);
                 let tex = texture(&c, vec![build::level(fmt, w, h, layers, &vals)]);
@@ -334,7 +424,13 @@ pub fn cube(d: &SpecDims) -> Vec<Draft> {
                                     h,
                                     r,
                                 );
-                                out.push(Draft::new("cube", c, tex.clone(), lk, format!("face={face}/texel={i}/ref={tag}")));
+                                out.push(Draft::new(
+                                    "cube",
+                                    c,
+                                    tex.clone(),
+                                    lk,
+                                    format!("face={face}/texel={i}/ref={tag}"),
+                                ));
                             }
                         }
                     } else {
@@ -352,7 +448,13 @@ pub fn cube(d: &SpecDims) -> Vec<Draft> {
                                 h,
                                 r,
                             );
-                            out.push(Draft::new("cube", c, tex.clone(), lk, format!("face={face}/{tag}/ref={}", num(r))));
+                            out.push(Draft::new(
+                                "cube",
+                                c,
+                                tex.clone(),
+                                lk,
+                                format!("face={face}/{tag}/ref={}", num(r)),
+                            ));
                         }
                     }
                 }
@@ -373,7 +475,9 @@ pub fn layer(d: &SpecDims) -> Vec<Draft> {
         let c = cell(d, target, fmt, Filter::Nearest, func);
         let (w, h, layers) = build::dims(target, 2, 3);
         let per = (w * h) as usize * if target.is_cube() { 6 } else { 1 };
-        let vals: Vec<f64> = (0..layers as usize * (w * h) as usize).map(|i| VALS[i / per]).collect();
+        let vals: Vec<f64> = (0..layers as usize * (w * h) as usize)
+            .map(|i| VALS[i / per])
+            .collect();
         let tex = texture(&c, vec![build::level(fmt, w, h, layers, &vals)]);
         for l in [-1.0, -0.5, -0.49, 0.49, 0.5, 1.4999, 1.5, 2.5, 3.7] {
             for r in [0.3, 0.6] {
@@ -425,7 +529,13 @@ pub fn dtm(d: &SpecDims) -> Vec<Draft> {
                     };
                     let (tex, w, h, _) = pattern_texture(&c);
                     let lk = lookup(Target::T2d, At::st(0.75, 0.25), w, h, 0.3);
-                    out.push(Draft::new("dtm", c, tex, lk, format!("dtm={m}/texel1/ref=0.3")));
+                    out.push(Draft::new(
+                        "dtm",
+                        c,
+                        tex,
+                        lk,
+                        format!("dtm={m}/texel1/ref=0.3"),
+                    ));
                 }
             }
         }
@@ -441,7 +551,10 @@ pub fn stencil(d: &SpecDims) -> Vec<Draft> {
         return out;
     }
     for &fmt in d.formats.iter().filter(|f| f.has_stencil()) {
-        for dsm in [DepthStencilMode::StencilIndex, DepthStencilMode::DepthComponent] {
+        for dsm in [
+            DepthStencilMode::StencilIndex,
+            DepthStencilMode::DepthComponent,
+        ] {
             for filter in [Filter::Nearest, Filter::Linear] {
                 for mode in [CompareMode::Compare, CompareMode::None] {
                     let c = Cell {
@@ -455,7 +568,10 @@ pub fn stencil(d: &SpecDims) -> Vec<Draft> {
                             c,
                             tex.clone(),
                             lookup(Target::T2d, At::st(s, t), w, h, 0.5),
-                            format!("dsm={dsm}/texel{i}/ref=0.5/stencil={}", build::stencil_value(i)),
+                            format!(
+                                "dsm={dsm}/texel{i}/ref=0.5/stencil={}",
+                                build::stencil_value(i)
+                            ),
                         );
                         x.sampler.depth_stencil_mode = Some(dsm);
                         out.push(x);
@@ -475,7 +591,13 @@ pub fn incomplete(d: &SpecDims) -> Vec<Draft> {
     for mode in [CompareMode::Compare, CompareMode::None] {
         let c = Cell {
             mode,
-            ..cell(d, Target::T2d, fmt, Filter::NearestMipmapNearest, main_func(d))
+            ..cell(
+                d,
+                Target::T2d,
+                fmt,
+                Filter::NearestMipmapNearest,
+                main_func(d),
+            )
         };
         let (tex, w, h, _) = pattern_texture(&c);
         let lk = lookup(Target::T2d, At::st(0.75, 0.25), w, h, 0.3);
@@ -497,7 +619,13 @@ pub fn incomplete(d: &SpecDims) -> Vec<Draft> {
         out.push(x);
         let mut bad = tex.clone();
         bad.levels.push(bad.levels[0].clone());
-        out.push(Draft::new("incomplete", c, bad, lk, "level1-size=2x2/texel1/ref=0.3".into()));
+        out.push(Draft::new(
+            "incomplete",
+            c,
+            bad,
+            lk,
+            "level1-size=2x2/texel1/ref=0.3".into(),
+        ));
     }
     out
 }
@@ -508,7 +636,11 @@ pub fn proj(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
     let funcs = func_pair(d);
-    for &target in d.targets.iter().filter(|t| matches!(t, Target::T1d | Target::T2d | Target::Rect)) {
+    for &target in d
+        .targets
+        .iter()
+        .filter(|t| matches!(t, Target::T1d | Target::T2d | Target::Rect))
+    {
         for func in funcs {
             let c = cell(d, target, fmt, Filter::Nearest, func);
             let (tex, w, h, _) = pattern_texture(&c);
@@ -517,14 +649,27 @@ pub fn proj(d: &SpecDims) -> Vec<Draft> {
             } else {
                 At::st(0.25, 0.75)
             };
-            for (q, r) in [(2.0, 0.5), (2.0, 0.7), (2.0, 0.8), (0.5, 0.5), (0.5, 0.7), (-1.0, 0.5)] {
+            for (q, r) in [
+                (2.0, 0.5),
+                (2.0, 0.7),
+                (2.0, 0.8),
+                (0.5, 0.5),
+                (0.5, 0.7),
+                (-1.0, 0.5),
+            ] {
                 let mut lk = lookup(target, at, w, h, r * q);
                 for i in 0..3 {
                     lk.coord[i] *= q;
                 }
                 lk.coord[3] = q;
                 lk.projective = true;
-                out.push(Draft::new("proj", c, tex.clone(), lk, format!("q={q}/texel2/ref={r}")));
+                out.push(Draft::new(
+                    "proj",
+                    c,
+                    tex.clone(),
+                    lk,
+                    format!("q={q}/texel2/ref={r}"),
+                ));
             }
         }
     }
@@ -545,7 +690,10 @@ pub fn ambient(d: &SpecDims) -> Vec<Draft> {
                 // 1.5 and -0.5: the value is clamped to [0, 1] when specified (ARB_shadow_ambient).
                 for fail in [0.0f32, 0.25, 0.5, 1.0, 1.5, -0.5] {
                     let lks: Vec<(At, f64, &str)> = if filter == Filter::Nearest {
-                        vec![(At::st(0.75, 0.25), 0.3, "texel1"), (At::st(0.75, 0.25), 0.5, "texel1")]
+                        vec![
+                            (At::st(0.75, 0.25), 0.3, "texel1"),
+                            (At::st(0.75, 0.25), 0.5, "texel1"),
+                        ]
                     } else {
                         vec![(At::st(0.375, 0.5), 0.5, "a=0.25,0.5")]
                     };

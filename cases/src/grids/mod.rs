@@ -51,17 +51,25 @@ pub fn drafts(name: &str, seed: u64) -> Result<Vec<Draft>, GridError> {
     match name {
         "default" => Ok(default_drafts(seed)),
         "smoke" => Ok(smoke_drafts(seed)),
-        _ => Err(GridError::UnknownGrid { name: name.to_string() }),
+        _ => Err(GridError::UnknownGrid {
+            name: name.to_string(),
+        }),
     }
 }
 
 fn default_drafts(seed: u64) -> Vec<Draft> {
-    specs::all().iter().flat_map(|d| spec_grid(d, seed).into_items()).collect()
+    specs::all()
+        .iter()
+        .flat_map(|d| spec_grid(d, seed).into_items())
+        .collect()
 }
 
 /// TEXTURE_MIN_LOD, TEXTURE_MAX_LOD, TEXTURE_BASE_LEVEL or TEXTURE_MAX_LEVEL differ from the default.
 fn uses_lod_state(x: &Draft) -> bool {
-    x.sampler.min_lod != -1000.0 || x.sampler.max_lod != 1000.0 || x.sampler.max_level.is_some() || x.texture.base_level != 0
+    x.sampler.min_lod != -1000.0
+        || x.sampler.max_lod != 1000.0
+        || x.sampler.max_level.is_some()
+        || x.texture.base_level != 0
 }
 
 /// All `default` cases of one spec: the main product expanded into its lookups, the focused
@@ -174,7 +182,9 @@ fn to_cases(grid: &str, drafts: Vec<Draft>) -> Result<Vec<(String, Case)>, GridE
 
 /// Fills `expect` from the oracle, on all cores; the order of `cases` is kept.
 pub fn fill_expectations(grid: &str, cases: &mut [Case]) -> Result<(), GridError> {
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).clamp(1, 16);
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .clamp(1, 16);
     let chunk = cases.len().div_ceil(threads).max(1);
     let results: Vec<Result<(), OracleError>> = std::thread::scope(|s| {
         let handles: Vec<_> = cases
@@ -195,7 +205,10 @@ pub fn fill_expectations(grid: &str, cases: &mut [Case]) -> Result<(), GridError
             .collect()
     });
     for r in results {
-        r.map_err(|source| GridError::Oracle { grid: grid.into(), source })?;
+        r.map_err(|source| GridError::Oracle {
+            grid: grid.into(),
+            source,
+        })?;
     }
     Ok(())
 }
@@ -236,11 +249,18 @@ pub fn generate(name: &str, seed: u64) -> Result<Vec<(String, FixtureFile)>, Gri
 
 /// Generates a grid file by file, handing each to `sink` as soon as it is complete (so `exhaustive`
 /// never needs to be in memory at once). Files arrive sorted by relative path.
-pub fn for_each_file(name: &str, seed: u64, mut sink: impl FnMut(String, FixtureFile) -> Result<(), GridError>) -> Result<(), GridError> {
+pub fn for_each_file(
+    name: &str,
+    seed: u64,
+    mut sink: impl FnMut(String, FixtureFile) -> Result<(), GridError>,
+) -> Result<(), GridError> {
     if name == "exhaustive" {
         for (rel, drafts) in exhaustive::chunks() {
             // The chunk decides the file, not Draft::file.
-            let mut cases: Vec<Case> = to_cases(name, drafts)?.into_iter().map(|(_, c)| c).collect();
+            let mut cases: Vec<Case> = to_cases(name, drafts)?
+                .into_iter()
+                .map(|(_, c)| c)
+                .collect();
             fill_expectations(name, &mut cases)?;
             sink(
                 rel,

@@ -36,7 +36,11 @@ fn wrapped(i: i64, d: i32, n: u32, wrap: Wrap) -> i64 {
 fn one_hot(format: Format, w: u32, h: u32, layers: u32, hot: Option<(i64, i64, u32)>) -> Level {
     let vals: Vec<f64> = (0..(w * h * layers) as i64)
         .map(|k| {
-            let (x, y, l) = (k % w as i64, k / w as i64 % h as i64, (k / (w * h) as i64) as u32);
+            let (x, y, l) = (
+                k % w as i64,
+                k / w as i64 % h as i64,
+                (k / (w * h) as i64) as u32,
+            );
             if hot == Some((x, y, l)) {
                 HOT
             } else {
@@ -72,17 +76,32 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
         mode,
         ..cell(d, Target::T2d, fixed_fmt(d), filter, main_func(d))
     };
-    let centre = |i: i64, j: i64, dx: f64| At::st((i as f64 + 0.5 + dx) / SIZE as f64, (j as f64 + 0.5) / SIZE as f64);
+    let centre = |i: i64, j: i64, dx: f64| {
+        At::st(
+            (i as f64 + 0.5 + dx) / SIZE as f64,
+            (j as f64 + 0.5) / SIZE as f64,
+        )
+    };
     // Level 0, NEAREST: from texel (1, 2), every offset, clamped and repeated; LEQUAL and NONE.
     let (i, j) = (1i64, 2i64);
     for wrap in [Wrap::ClampToEdge, Wrap::Repeat] {
         for mode in [CompareMode::Compare, CompareMode::None] {
             let c = cell2d(Filter::Nearest, mode);
             for o in OFFSETS {
-                let hot = (wrapped(i, o[0], SIZE, wrap), wrapped(j, o[1], SIZE, wrap), 0);
+                let hot = (
+                    wrapped(i, o[0], SIZE, wrap),
+                    wrapped(j, o[1], SIZE, wrap),
+                    0,
+                );
                 let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, Some(hot))]);
                 let lk = offset_lookup(Target::T2d, centre(i, j, 0.0), SIZE, SIZE, o);
-                out.push(wrap_draft(c, tex, lk, wrap, format!("wrap={wrap}/texel={i},{j}/offset={},{}/ref=0.5", o[0], o[1])));
+                out.push(wrap_draft(
+                    c,
+                    tex,
+                    lk,
+                    wrap,
+                    format!("wrap={wrap}/texel={i},{j}/offset={},{}/ref=0.5", o[0], o[1]),
+                ));
             }
         }
     }
@@ -91,16 +110,34 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
     for wrap in [Wrap::ClampToEdge, Wrap::Repeat] {
         let c = cell2d(Filter::Linear, CompareMode::Compare);
         for o in [[1, 0], [-1, -1], [7, -8]] {
-            let hot = (wrapped(i, o[0], SIZE, wrap), wrapped(j, o[1], SIZE, wrap), 0);
+            let hot = (
+                wrapped(i, o[0], SIZE, wrap),
+                wrapped(j, o[1], SIZE, wrap),
+                0,
+            );
             let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, Some(hot))]);
             let lk = offset_lookup(Target::T2d, centre(i, j, 0.25), SIZE, SIZE, o);
-            out.push(wrap_draft(c, tex, lk, wrap, format!("wrap={wrap}/texel={i}.25,{j}/offset={},{}/ref=0.5", o[0], o[1])));
+            out.push(wrap_draft(
+                c,
+                tex,
+                lk,
+                wrap,
+                format!(
+                    "wrap={wrap}/texel={i}.25,{j}/offset={},{}/ref=0.5",
+                    o[0], o[1]
+                ),
+            ));
         }
     }
     // Level 1 (2x2) of a 4x4 chain, at s = t = 0.1 (u = v = 0.2): offset +1 reads texel 1 of level
     // 1; read in base-level texels it would be half a texel and stay on texel 0. Explicit LOD 1
     // (textureLodOffset) and, where the spec has the shader bias, LOD 0 + bias 1 (textureOffset).
-    for &filter in d.filters.iter().filter(|f| matches!(f, Filter::NearestMipmapNearest | Filter::LinearMipmapNearest)) {
+    for &filter in d.filters.iter().filter(|f| {
+        matches!(
+            f,
+            Filter::NearestMipmapNearest | Filter::LinearMipmapNearest
+        )
+    }) {
         let c = cell2d(filter, CompareMode::Compare);
         for o in [[1, 0], [0, 1], [1, 1]] {
             let hot = (o[0] as i64, o[1] as i64, 0);
@@ -133,7 +170,11 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
     // Projective (textureProjOffset): P = (s, t, Dref, 1)·q with q = 2.
     let c = cell2d(Filter::Nearest, CompareMode::Compare);
     for o in [[1, 0], [-1, 1]] {
-        let hot = (wrapped(i, o[0], SIZE, Wrap::ClampToEdge), wrapped(j, o[1], SIZE, Wrap::ClampToEdge), 0);
+        let hot = (
+            wrapped(i, o[0], SIZE, Wrap::ClampToEdge),
+            wrapped(j, o[1], SIZE, Wrap::ClampToEdge),
+            0,
+        );
         let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, Some(hot))]);
         let q = 2.0;
         let mut lk = offset_lookup(Target::T2d, centre(i, j, 0.0), SIZE, SIZE, o);
@@ -158,21 +199,42 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
 /// (which have no REPEAT), REPEAT.
 fn other_targets(d: &SpecDims) -> Vec<Draft> {
     let targets: &[Target] = match d.spec {
-        Spec::Gl46 => &[Target::T1d, Target::Rect, Target::T1dArray, Target::T2dArray],
+        Spec::Gl46 => &[
+            Target::T1d,
+            Target::Rect,
+            Target::T1dArray,
+            Target::T2dArray,
+        ],
         _ => &[Target::T2dArray],
     };
     let mut out = Vec::new();
     for &target in targets.iter().filter(|t| d.targets.contains(t)) {
         let c = cell(d, target, fixed_fmt(d), Filter::Nearest, main_func(d));
         let one_d = target.dims() == 1;
-        let (layers, layer) = if target.is_array() { (2u32, 1u32) } else { (1, 0) };
+        let (layers, layer) = if target.is_array() {
+            (2u32, 1u32)
+        } else {
+            (1, 0)
+        };
         let (w, h) = if one_d { (SIZE, 1) } else { (SIZE, SIZE) };
         let (i, j) = if one_d { (1i64, 0i64) } else { (1, 2) };
-        let offsets: &[[i32; 2]] = if one_d { &[[1, 0], [-1, 0], [2, 0], [-8, 0]] } else { &[[1, 0], [-1, -1], [2, -1], [7, -8]] };
-        let wraps: &[Wrap] = if target == Target::Rect { &[Wrap::ClampToEdge] } else { &[Wrap::ClampToEdge, Wrap::Repeat] };
+        let offsets: &[[i32; 2]] = if one_d {
+            &[[1, 0], [-1, 0], [2, 0], [-8, 0]]
+        } else {
+            &[[1, 0], [-1, -1], [2, -1], [7, -8]]
+        };
+        let wraps: &[Wrap] = if target == Target::Rect {
+            &[Wrap::ClampToEdge]
+        } else {
+            &[Wrap::ClampToEdge, Wrap::Repeat]
+        };
         for &wrap in wraps {
             for &o in offsets {
-                let hot = (wrapped(i, o[0], w, wrap), if one_d { 0 } else { wrapped(j, o[1], h, wrap) }, layer);
+                let hot = (
+                    wrapped(i, o[0], w, wrap),
+                    if one_d { 0 } else { wrapped(j, o[1], h, wrap) },
+                    layer,
+                );
                 let tex = texture(&c, vec![one_hot(c.format, w, h, layers, Some(hot))]);
                 let at = At {
                     s: (i as f64 + 0.5) / w as f64,
@@ -181,9 +243,23 @@ fn other_targets(d: &SpecDims) -> Vec<Draft> {
                     face: 0,
                 };
                 let lk = offset_lookup(target, at, w, h, o);
-                let pos = if one_d { format!("{i}") } else { format!("{i},{j}") };
-                let off = if one_d { format!("{}", o[0]) } else { format!("{},{}", o[0], o[1]) };
-                out.push(wrap_draft(c, tex, lk, wrap, format!("wrap={wrap}/texel={pos}/offset={off}/ref=0.5")));
+                let pos = if one_d {
+                    format!("{i}")
+                } else {
+                    format!("{i},{j}")
+                };
+                let off = if one_d {
+                    format!("{}", o[0])
+                } else {
+                    format!("{},{}", o[0], o[1])
+                };
+                out.push(wrap_draft(
+                    c,
+                    tex,
+                    lk,
+                    wrap,
+                    format!("wrap={wrap}/texel={pos}/offset={off}/ref=0.5"),
+                ));
             }
         }
     }
@@ -198,12 +274,20 @@ mod tests {
     fn only_the_specs_with_offset_lookups_get_the_family_and_every_case_has_an_offset() {
         for d in super::super::specs::all() {
             let v = offset(&d);
-            assert_eq!(!v.is_empty(), matches!(d.spec, Spec::Gl46 | Spec::Gles32), "{:?}", d.spec);
+            assert_eq!(
+                !v.is_empty(),
+                matches!(d.spec, Spec::Gl46 | Spec::Gles32),
+                "{:?}",
+                d.spec
+            );
             for x in v {
                 assert_ne!(x.lookup.offset, [0; 3], "{}", x.id());
                 let case = x.into_case();
                 shadowcheck_model::validate::validate(&case).unwrap();
-                assert!(case.api.iter().all(|a| matches!(a, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300)));
+                assert!(case
+                    .api
+                    .iter()
+                    .all(|a| matches!(a, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300)));
             }
         }
     }

@@ -38,10 +38,16 @@ pub fn random(d: &SpecDims, seed: u64, n: usize) -> Vec<Draft> {
         let filter = rng.pick(&[Filter::Nearest, Filter::Linear]);
         let func = rng.pick(d.funcs);
         let c = cell(d, target, format, filter, func);
-        let (n_layers, layer) = if target.is_array() { (2, 1.0) } else { (1, 0.0) };
+        let (n_layers, layer) = if target.is_array() {
+            (2, 1.0)
+        } else {
+            (1, 0.0)
+        };
         let (w, h, layers) = build::dims(target, 2, n_layers);
         let img: Vec<f64> = (0..4).map(|_| rng.grid(0.0, 1.0)).collect();
-        let vals: Vec<f64> = (0..(w * h * layers) as usize).map(|i| img[i % img.len()]).collect();
+        let vals: Vec<f64> = (0..(w * h * layers) as usize)
+            .map(|i| img[i % img.len()])
+            .collect();
         let tex = texture(&c, vec![build::level(format, w, h, layers, &vals)]);
         let at = At {
             s: rng.grid(0.0, 1.0),
@@ -50,7 +56,13 @@ pub fn random(d: &SpecDims, seed: u64, n: usize) -> Vec<Draft> {
             face: (rng.next() % 6) as u32,
         };
         let r = rng.grid(-0.25, 1.25);
-        out.push(Draft::new("rand", c, tex, lookup(target, at, w, h, r), format!("seed={seed}/{i}")));
+        out.push(Draft::new(
+            "rand",
+            c,
+            tex,
+            lookup(target, at, w, h, r),
+            format!("seed={seed}/{i}"),
+        ));
     }
     out
 }

@@ -70,12 +70,22 @@ pub fn dims(spec: Spec) -> SpecDims {
         // (ARB_fragment_program_shadow SHADOWRECT); GL 1.4 wrap modes.
         Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => SpecDims {
             spec,
-            funcs: if spec == Spec::ExtFuncs { CORE_FUNCS } else { ARB_FUNCS },
+            funcs: if spec == Spec::ExtFuncs {
+                CORE_FUNCS
+            } else {
+                ARB_FUNCS
+            },
             targets: &[T::T1d, T::T2d, T::Rect],
             formats: LEGACY_FORMATS,
             filters: ALL_FILTERS,
             dtms: LEGACY_DTMS,
-            wraps: &[W::Repeat, W::Clamp, W::ClampToEdge, W::ClampToBorder, W::MirroredRepeat],
+            wraps: &[
+                W::Repeat,
+                W::Clamp,
+                W::ClampToEdge,
+                W::ClampToBorder,
+                W::MirroredRepeat,
+            ],
             lod_bias: true,
             lod_state: true,
             shader_bias: false,
@@ -126,7 +136,12 @@ pub fn dims(spec: Spec) -> SpecDims {
             formats: &[Fo::D16, Fo::D24, Fo::D32f, Fo::D24S8, Fo::D32fS8, Fo::R8],
             filters: ALL_FILTERS,
             dtms: &[],
-            wraps: &[W::Repeat, W::ClampToEdge, W::MirroredRepeat, W::ClampToBorder],
+            wraps: &[
+                W::Repeat,
+                W::ClampToEdge,
+                W::MirroredRepeat,
+                W::ClampToBorder,
+            ],
             lod_bias: false,
             lod_state: true,
             shader_bias: true,
@@ -160,10 +175,13 @@ pub fn apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
     use ApiPath as A;
     let legacy_target = matches!(target, T::T1d | T::T2d | T::Rect);
     let stencil = sampler.depth_stencil_mode == Some(DepthStencilMode::StencilIndex);
-    let compat_only = sampler.depth_texture_mode.is_some() || [sampler.wrap_s, sampler.wrap_t, sampler.wrap_r].contains(&W::Clamp);
+    let compat_only = sampler.depth_texture_mode.is_some()
+        || [sampler.wrap_s, sampler.wrap_t, sampler.wrap_r].contains(&W::Clamp);
     match spec {
         Spec::Sgix | Spec::SgixAmbient => vec![A::FixedFunction],
-        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => vec![A::FixedFunction, A::ArbFp, A::Glsl120],
+        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => {
+            vec![A::FixedFunction, A::ArbFp, A::Glsl120]
+        }
         Spec::Es2Ext => vec![A::Es100Ext],
         Spec::Gles32 => vec![A::Es300],
         Spec::Gl46 => {

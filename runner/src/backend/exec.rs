@@ -51,7 +51,11 @@ pub fn split_command(s: &str) -> Result<Vec<String>, String> {
                 loop {
                     match chars.next() {
                         Some('"') => break,
-                        Some('\\') => cur.push(chars.next().ok_or_else(|| format!("trailing \\ in `{s}`"))?),
+                        Some('\\') => cur.push(
+                            chars
+                                .next()
+                                .ok_or_else(|| format!("trailing \\ in `{s}`"))?,
+                        ),
                         Some(ch) => cur.push(ch),
                         None => return Err(format!("unclosed \" in `{s}`")),
                     }
@@ -59,7 +63,11 @@ pub fn split_command(s: &str) -> Result<Vec<String>, String> {
             }
             '\\' => {
                 in_word = true;
-                cur.push(chars.next().ok_or_else(|| format!("trailing \\ in `{s}`"))?);
+                cur.push(
+                    chars
+                        .next()
+                        .ok_or_else(|| format!("trailing \\ in `{s}`"))?,
+                );
             }
             c if c.is_whitespace() => {
                 if in_word {
@@ -121,12 +129,19 @@ struct Proc {
 impl Proc {
     fn spawn(cmd: &ProcessCommand, diags: &Arc<Mutex<Vec<String>>>) -> Result<Proc, String> {
         let mut c = Command::new(&cmd.program);
-        c.args(&cmd.args).stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped());
+        c.args(&cmd.args)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped());
         for (k, v) in &cmd.env {
             c.env(k, v);
         }
-        let mut child = c.spawn().map_err(|e| format!("cannot start `{}`: {e}", cmd.program.display()))?;
-        let (Some(stdin), Some(stdout), Some(stderr)) = (child.stdin.take(), child.stdout.take(), child.stderr.take()) else {
+        let mut child = c
+            .spawn()
+            .map_err(|e| format!("cannot start `{}`: {e}", cmd.program.display()))?;
+        let (Some(stdin), Some(stdout), Some(stderr)) =
+            (child.stdin.take(), child.stdout.take(), child.stderr.take())
+        else {
             let _ = child.kill();
             return Err("child pipes missing".to_string());
         };
@@ -162,20 +177,31 @@ impl Proc {
         });
         let (input, queue) = mpsc::channel::<Vec<u8>>();
         std::thread::spawn(move || write_loop(stdin, queue));
-        Ok(Proc { child, input: Some(input), lines, tail, stderr_thread: Some(stderr_thread) })
+        Ok(Proc {
+            child,
+            input: Some(input),
+            lines,
+            tail,
+            stderr_thread: Some(stderr_thread),
+        })
     }
 
     /// Queues bytes (whole lines) for the child's stdin. Fails once the writer has stopped (the
     /// child closed its stdin or died).
     fn send(&mut self, bytes: Vec<u8>) -> std::io::Result<()> {
         let tx = self.input.as_ref().ok_or(std::io::ErrorKind::BrokenPipe)?;
-        tx.send(bytes).map_err(|_| std::io::Error::from(std::io::ErrorKind::BrokenPipe))
+        tx.send(bytes)
+            .map_err(|_| std::io::Error::from(std::io::ErrorKind::BrokenPipe))
     }
 
     /// Kills the process and says how it ended, with its last stderr lines.
     fn kill(mut self) -> String {
         let _ = self.child.kill();
-        let status = self.child.wait().map(|s| s.to_string()).unwrap_or_else(|e| e.to_string());
+        let status = self
+            .child
+            .wait()
+            .map(|s| s.to_string())
+            .unwrap_or_else(|e| e.to_string());
         // Give the stderr reader a moment to drain what the process wrote before dying.
         if let Some(h) = self.stderr_thread.take() {
             let t0 = Instant::now();
@@ -183,7 +209,11 @@ impl Proc {
                 std::thread::sleep(Duration::from_millis(5));
             }
         }
-        let tail: Vec<String> = self.tail.lock().map(|t| t.iter().cloned().collect()).unwrap_or_default();
+        let tail: Vec<String> = self
+            .tail
+            .lock()
+            .map(|t| t.iter().cloned().collect())
+            .unwrap_or_default();
         if tail.is_empty() {
             status
         } else {
@@ -231,7 +261,11 @@ pub struct ExecBackend {
 
 impl ExecBackend {
     /// Starts the process and reads its capabilities.
-    pub fn start(name: &str, cmd: ProcessCommand, opts: &Options) -> Result<ExecBackend, BackendError> {
+    pub fn start(
+        name: &str,
+        cmd: ProcessCommand,
+        opts: &Options,
+    ) -> Result<ExecBackend, BackendError> {
         let mut b = ExecBackend {
             name: name.to_string(),
             cmd,
@@ -243,7 +277,10 @@ impl ExecBackend {
             diags: Arc::new(Mutex::new(vec![])),
             spawns: 0,
         };
-        let hello = b.ensure().map_err(|msg| BackendError::Setup { backend: name.to_string(), msg })?;
+        let hello = b.ensure().map_err(|msg| BackendError::Setup {
+            backend: name.to_string(),
+            msg,
+        })?;
         if let Some(h) = hello {
             b.caps = h.capabilities;
             b.wants_expect = h.wants_expect;
@@ -269,7 +306,10 @@ impl ExecBackend {
                 Ok(None) => return Ok(None),
                 _ => {
                     let how = self.kill_proc();
-                    self.push_diag(format!("{}: the implementation exited between groups ({how}); restarting", self.name));
+                    self.push_diag(format!(
+                        "{}: the implementation exited between groups ({how}); restarting",
+                        self.name
+                    ));
                 }
             }
         }
@@ -284,7 +324,10 @@ impl ExecBackend {
             Ok(l) => l,
             Err(RecvTimeoutError::Timeout) => {
                 let how = p.kill();
-                return Err(format!("no hello within {:?} ({how})", self.timeout.max(HANDSHAKE_MIN)));
+                return Err(format!(
+                    "no hello within {:?} ({how})",
+                    self.timeout.max(HANDSHAKE_MIN)
+                ));
             }
             Err(RecvTimeoutError::Disconnected) => {
                 let how = p.kill();
@@ -306,7 +349,9 @@ impl ExecBackend {
     /// One attempt at a group in the current process: the answers received, and why it stopped
     /// early if it did.
     fn attempt(&mut self, group: &[&Case]) -> (Vec<CaseOutcome>, Option<Failure>) {
-        let Some(p) = self.proc.as_mut() else { return (vec![], Some(Failure::Died)) };
+        let Some(p) = self.proc.as_mut() else {
+            return (vec![], Some(Failure::Died));
+        };
         // The whole group in one buffer, then `flush`: one hand-over to the writer thread.
         let mut buf = Vec::with_capacity(group.len() * 1024);
         for c in group {
@@ -334,14 +379,25 @@ impl ExecBackend {
                     let msg = format!("answer for `{}` where `{}` was expected", a.case_id(), c.id);
                     return (out, Some(Failure::Protocol(msg)));
                 }
-                Err(e) => return (out, Some(Failure::Protocol(format!("bad answer line: {e}: {}", clip(&line))))),
+                Err(e) => {
+                    return (
+                        out,
+                        Some(Failure::Protocol(format!(
+                            "bad answer line: {e}: {}",
+                            clip(&line)
+                        ))),
+                    )
+                }
             }
         }
         (out, None)
     }
 
     fn kill_proc(&mut self) -> String {
-        self.proc.take().map(|p| p.kill()).unwrap_or_else(|| "not running".to_string())
+        self.proc
+            .take()
+            .map(|p| p.kill())
+            .unwrap_or_else(|| "not running".to_string())
     }
 
     /// Runs a group, bisecting whatever a dying or stalling process leaves unanswered.
@@ -363,7 +419,10 @@ impl ExecBackend {
             match failure {
                 Failure::Protocol(msg) => {
                     let how = self.kill_proc();
-                    self.push_diag(format!("{}: protocol error on `{}`: {msg}; restarting ({how})", self.name, rest[0].id));
+                    self.push_diag(format!(
+                        "{}: protocol error on `{}`: {msg}; restarting ({how})",
+                        self.name, rest[0].id
+                    ));
                     results.push(CaseOutcome::Crash(format!("protocol error: {msg}")));
                 }
                 Failure::Died | Failure::Stalled => {
@@ -375,7 +434,12 @@ impl ExecBackend {
                         } else {
                             CaseOutcome::Crash(format!("the process died on this case: {how}"))
                         };
-                        self.push_diag(format!("{}: `{}`: {}", self.name, rest[0].id, if stalled { "timeout" } else { "crash" }));
+                        self.push_diag(format!(
+                            "{}: `{}`: {}",
+                            self.name,
+                            rest[0].id,
+                            if stalled { "timeout" } else { "crash" }
+                        ));
                         results.push(what);
                     } else if streamed {
                         // It answered case by case up to here: the first unanswered case is the
@@ -412,12 +476,27 @@ fn to_outcome(case: &Case, a: Answer) -> CaseOutcome {
     match a {
         Answer::Skip { reason, .. } => CaseOutcome::Skip(reason),
         Answer::Error { message, .. } => CaseOutcome::Error(message),
-        Answer::Observation { results, skipped, .. } => {
+        Answer::Observation {
+            results, skipped, ..
+        } => {
             let mut v = Vec::with_capacity(results.len() + skipped.len());
-            for ApiResultMsg { api, rgba, stored, .. } in results {
+            for ApiResultMsg {
+                api, rgba, stored, ..
+            } in results
+            {
                 match ApiPath::from_key(&api) {
-                    Some(a) if case.api.contains(&a) => v.push((a, ApiOutcome::Rgba { rgba: rgba.0, stored })),
-                    _ => return CaseOutcome::Error(format!("result for API path `{api}`, which the case does not have")),
+                    Some(a) if case.api.contains(&a) => v.push((
+                        a,
+                        ApiOutcome::Rgba {
+                            rgba: rgba.0,
+                            stored,
+                        },
+                    )),
+                    _ => {
+                        return CaseOutcome::Error(format!(
+                            "result for API path `{api}`, which the case does not have"
+                        ))
+                    }
                 }
             }
             // A path both answered and listed as skipped keeps its result (judged, never hidden).
@@ -428,7 +507,11 @@ fn to_outcome(case: &Case, a: Answer) -> CaseOutcome {
                             v.push((a, ApiOutcome::Skip(reason)));
                         }
                     }
-                    _ => return CaseOutcome::Error(format!("skipped API path `{api}`, which the case does not have")),
+                    _ => {
+                        return CaseOutcome::Error(format!(
+                            "skipped API path `{api}`, which the case does not have"
+                        ))
+                    }
                 }
             }
             CaseOutcome::Observed(v)
@@ -450,7 +533,10 @@ impl Backend for ExecBackend {
         self.run_group(cases)
     }
     fn take_diagnostics(&mut self) -> Vec<String> {
-        self.diags.lock().map(|mut d| std::mem::take(&mut *d)).unwrap_or_default()
+        self.diags
+            .lock()
+            .map(|mut d| std::mem::take(&mut *d))
+            .unwrap_or_default()
     }
 }
 
@@ -468,8 +554,14 @@ mod tests {
 
     #[test]
     fn split_command_quotes_like_a_shell() {
-        assert_eq!(split_command("python3 a.py --x").unwrap(), ["python3", "a.py", "--x"]);
-        assert_eq!(split_command(" 'a b' \"c \\\" d\" e\\ f ").unwrap(), ["a b", "c \" d", "e f"]);
+        assert_eq!(
+            split_command("python3 a.py --x").unwrap(),
+            ["python3", "a.py", "--x"]
+        );
+        assert_eq!(
+            split_command(" 'a b' \"c \\\" d\" e\\ f ").unwrap(),
+            ["a b", "c \" d", "e f"]
+        );
         assert_eq!(split_command("''").unwrap(), [""]);
         assert!(split_command("'open").is_err());
     }
@@ -485,18 +577,29 @@ mod tests {
         let case = compat_case();
         let line = r#"{"type":"observation","case_id":"x","results":[{"api":"glsl120","rgba":[1,1,1,1],"note":"shadow2D"}],"skipped":[{"api":"ff","reason":"fixed-function has no cube arrays"}]}"#;
         let out = to_outcome(&case, protocol::parse_answer(line).unwrap());
-        let CaseOutcome::Observed(v) = out else { panic!("{out:?}") };
-        assert!(matches!(v.iter().find(|(a, _)| *a == ApiPath::Glsl120), Some((_, ApiOutcome::Rgba { .. }))));
+        let CaseOutcome::Observed(v) = out else {
+            panic!("{out:?}")
+        };
+        assert!(matches!(
+            v.iter().find(|(a, _)| *a == ApiPath::Glsl120),
+            Some((_, ApiOutcome::Rgba { .. }))
+        ));
         match v.iter().find(|(a, _)| *a == ApiPath::FixedFunction) {
             Some((_, ApiOutcome::Skip(m))) => assert_eq!(m, "fixed-function has no cube arrays"),
             other => panic!("{other:?}"),
         }
         // A skipped path the case does not have is the implementation's error, as a stray result is.
         let bad = r#"{"type":"observation","case_id":"x","results":[],"skipped":[{"api":"core","reason":"no"}]}"#;
-        assert!(matches!(to_outcome(&case, protocol::parse_answer(bad).unwrap()), CaseOutcome::Error(_)));
+        assert!(matches!(
+            to_outcome(&case, protocol::parse_answer(bad).unwrap()),
+            CaseOutcome::Error(_)
+        ));
         // An answered path that is also listed keeps its result.
         let both = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}],"skipped":[{"api":"ff","reason":"no"}]}"#;
-        let CaseOutcome::Observed(v) = to_outcome(&case, protocol::parse_answer(both).unwrap()) else { panic!() };
+        let CaseOutcome::Observed(v) = to_outcome(&case, protocol::parse_answer(both).unwrap())
+        else {
+            panic!()
+        };
         assert_eq!(v.len(), 1);
         assert!(matches!(v[0].1, ApiOutcome::Rgba { .. }));
     }

@@ -48,7 +48,11 @@ pub struct Script {
 
 impl Script {
     pub fn parse(s: &str) -> Result<Script, String> {
-        let mut script = Script { rules: vec![], buffer: false, slow_ms: 0 };
+        let mut script = Script {
+            rules: vec![],
+            buffer: false,
+            slow_ms: 0,
+        };
         for item in s.split(',').map(str::trim).filter(|i| !i.is_empty()) {
             let (key, val) = match item.split_once('=') {
                 Some((k, v)) => (k, Some(v)),
@@ -60,7 +64,9 @@ impl Script {
                     continue;
                 }
                 "slow" => {
-                    script.slow_ms = val.and_then(|v| v.parse().ok()).ok_or("slow=MS needs a number of milliseconds")?;
+                    script.slow_ms = val
+                        .and_then(|v| v.parse().ok())
+                        .ok_or("slow=MS needs a number of milliseconds")?;
                     continue;
                 }
                 "pass" => Action::Pass,
@@ -74,20 +80,31 @@ impl Script {
                 "flaky" => Action::Flaky,
                 other => return Err(format!("unknown mock action `{other}`")),
             };
-            let re = val.map(|v| Regex::new(v).map_err(|e| format!("mock `{item}`: {e}"))).transpose()?;
+            let re = val
+                .map(|v| Regex::new(v).map_err(|e| format!("mock `{item}`: {e}")))
+                .transpose()?;
             script.rules.push((action, re));
         }
         Ok(script)
     }
 
     pub fn action(&self, id: &str) -> Action {
-        self.rules.iter().find(|(_, re)| re.as_ref().is_none_or(|r| r.is_match(id))).map(|(a, _)| *a).unwrap_or(Action::Pass)
+        self.rules
+            .iter()
+            .find(|(_, re)| re.as_ref().is_none_or(|r| r.is_match(id)))
+            .map(|(a, _)| *a)
+            .unwrap_or(Action::Pass)
     }
 }
 
 /// The RGBA a path shows for r, per the expectation's layout (unused channels 0).
 fn laid_out(case: &Case, api: shadowcheck_model::ApiPath, r: f64) -> [f64; 4] {
-    let layout = case.expect.as_ref().and_then(|e| e.layout.get(&api)).copied().unwrap_or([Channel::R; 4]);
+    let layout = case
+        .expect
+        .as_ref()
+        .and_then(|e| e.layout.get(&api))
+        .copied()
+        .unwrap_or([Channel::R; 4]);
     layout.map(|c| match c {
         Channel::R => r,
         Channel::One => 1.0,
@@ -106,37 +123,73 @@ fn strict_value(case: &Case) -> Option<f64> {
 
 fn warn_value(case: &Case) -> Option<f64> {
     let e = case.expect.as_ref()?;
-    let (strict, lenient) = (e.accept.get(&Profile::Strict)?, e.accept.get(&Profile::Lenient)?);
-    lenient.0.iter().flat_map(|i| [i.lo, i.hi, (i.lo + i.hi) / 2.0]).find(|v| !strict.contains(*v))
+    let (strict, lenient) = (
+        e.accept.get(&Profile::Strict)?,
+        e.accept.get(&Profile::Lenient)?,
+    );
+    lenient
+        .0
+        .iter()
+        .flat_map(|i| [i.lo, i.hi, (i.lo + i.hi) / 2.0])
+        .find(|v| !strict.contains(*v))
 }
 
 fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Answer {
     let id = case.id.clone();
     let value = match action {
-        Action::Skip => return Answer::Skip { case_id: id, reason: "mock: scripted skip".into() },
-        Action::Error => return Answer::Error { case_id: id, message: "mock: scripted error".into() },
+        Action::Skip => {
+            return Answer::Skip {
+                case_id: id,
+                reason: "mock: scripted skip".into(),
+            }
+        }
+        Action::Error => {
+            return Answer::Error {
+                case_id: id,
+                message: "mock: scripted error".into(),
+            }
+        }
         Action::Fail => Some(-1.0),
         Action::Warn => warn_value(case).or(Some(-1.0)),
         Action::Flaky if seen.insert(case.id.clone()) => Some(-1.0),
         _ => strict_value(case),
     };
     let Some(r) = value else {
-        return Answer::Skip { case_id: id, reason: "mock: the case carries no expectation to answer from".into() };
+        return Answer::Skip {
+            case_id: id,
+            reason: "mock: the case carries no expectation to answer from".into(),
+        };
     };
-    let results =
-        case.api.iter().map(|&a| ApiResultMsg { api: a.key().to_string(), rgba: Rgba(laid_out(case, a, r)), stored: None, note: None }).collect();
-    Answer::Observation { case_id: id, results, skipped: Vec::new() }
+    let results = case
+        .api
+        .iter()
+        .map(|&a| ApiResultMsg {
+            api: a.key().to_string(),
+            rgba: Rgba(laid_out(case, a, r)),
+            stored: None,
+            note: None,
+        })
+        .collect();
+    Answer::Observation {
+        case_id: id,
+        results,
+        skipped: Vec::new(),
+    }
 }
 
 fn kill_parent() {
     let ppid = std::os::unix::process::parent_id();
     // The shell's builtin `kill` (no procps needed).
-    let _ = std::process::Command::new("sh").args(["-c", &format!("kill -KILL {ppid}")]).status();
+    let _ = std::process::Command::new("sh")
+        .args(["-c", &format!("kill -KILL {ppid}")])
+        .status();
 }
 
 /// The worker loop: reads requests from `input`, answers on `output`. Returns the exit status.
 pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> std::io::Result<i32> {
-    let kill_runner = std::env::var("SHADOWCHECK_MOCK_KILL_RUNNER").ok().and_then(|r| Regex::new(&r).ok());
+    let kill_runner = std::env::var("SHADOWCHECK_MOCK_KILL_RUNNER")
+        .ok()
+        .and_then(|r| Regex::new(&r).ok());
     let mut seen = HashSet::new();
     let mut pending: Vec<String> = vec![];
     for line in input.lines() {
@@ -216,6 +269,9 @@ mod tests {
         assert_eq!(s.slow_ms, 5);
         assert!(Script::parse("explode").is_err());
         assert!(Script::parse("fail=(").is_err());
-        assert_eq!(Script::parse("fail").unwrap().action("anything"), Action::Fail);
+        assert_eq!(
+            Script::parse("fail").unwrap().action("anything"),
+            Action::Fail
+        );
     }
 }

@@ -55,19 +55,36 @@ impl Capabilities {
 
     pub fn support(&self, case: &Case) -> Support {
         if !listed(&self.specs, case.spec.key()) {
-            return Support::Skip(format!("spec `{}` not supported by this backend", case.spec));
+            return Support::Skip(format!(
+                "spec `{}` not supported by this backend",
+                case.spec
+            ));
         }
         if !listed(&self.targets, case.texture.target.key()) {
-            return Support::Skip(format!("target `{}` not supported by this backend", case.texture.target));
+            return Support::Skip(format!(
+                "target `{}` not supported by this backend",
+                case.texture.target
+            ));
         }
         if !listed(&self.formats, case.texture.format.key()) {
-            return Support::Skip(format!("format `{}` not supported by this backend", case.texture.format));
+            return Support::Skip(format!(
+                "format `{}` not supported by this backend",
+                case.texture.format
+            ));
         }
-        let apis: Vec<ApiPath> = case.api.iter().copied().filter(|a| listed(&self.api, a.key())).collect();
+        let apis: Vec<ApiPath> = case
+            .api
+            .iter()
+            .copied()
+            .filter(|a| listed(&self.api, a.key()))
+            .collect();
         if apis.is_empty() {
-            return Support::Skip("none of the case's API paths is supported by this backend".to_string());
+            return Support::Skip(
+                "none of the case's API paths is supported by this backend".to_string(),
+            );
         }
-        let others = (apis.len() < case.api.len()).then(|| "API path not supported by this backend".to_string());
+        let others = (apis.len() < case.api.len())
+            .then(|| "API path not supported by this backend".to_string());
         Support::Run { apis, others }
     }
 }
@@ -75,7 +92,10 @@ impl Capabilities {
 /// What a backend returned for one API path of a case.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ApiOutcome {
-    Rgba { rgba: [f64; 4], stored: Option<Texels> },
+    Rgba {
+        rgba: [f64; 4],
+        stored: Option<Texels>,
+    },
     Skip(String),
 }
 
@@ -127,7 +147,10 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Options { timeout: Duration::from_secs(10), group: 64 }
+        Options {
+            timeout: Duration::from_secs(10),
+            group: 64,
+        }
     }
 }
 
@@ -149,22 +172,49 @@ pub fn open(name: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError
     match kind {
         "soft" => Ok(Box::new(soft::SoftBackend::new(name, rest)?)),
         "exec" => {
-            let argv = exec::split_command(rest).map_err(|msg| BackendError::Setup { backend: name.into(), msg })?;
+            let argv = exec::split_command(rest).map_err(|msg| BackendError::Setup {
+                backend: name.into(),
+                msg,
+            })?;
             let Some((program, args)) = argv.split_first() else {
-                return Err(BackendError::Setup { backend: name.into(), msg: "empty command".into() });
+                return Err(BackendError::Setup {
+                    backend: name.into(),
+                    msg: "empty command".into(),
+                });
             };
-            let cmd = exec::ProcessCommand { program: program.into(), args: args.to_vec(), env: vec![] };
+            let cmd = exec::ProcessCommand {
+                program: program.into(),
+                args: args.to_vec(),
+                env: vec![],
+            };
             Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
         }
         "egl" | "osmesa" => {
-            let wc = crate::gl::worker_command(name).map_err(|e| BackendError::Setup { backend: name.into(), msg: e.to_string() })?;
-            let cmd = exec::ProcessCommand { program: wc.program, args: wc.args, env: wc.env };
+            let wc = crate::gl::worker_command(name).map_err(|e| BackendError::Setup {
+                backend: name.into(),
+                msg: e.to_string(),
+            })?;
+            let cmd = exec::ProcessCommand {
+                program: wc.program,
+                args: wc.args,
+                env: wc.env,
+            };
             Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
         }
         "mock" => {
-            let exe = std::env::current_exe().map_err(|e| BackendError::Setup { backend: name.into(), msg: e.to_string() })?;
-            mock::Script::parse(rest).map_err(|msg| BackendError::Setup { backend: name.into(), msg })?;
-            let cmd = exec::ProcessCommand { program: exe, args: vec!["mock-worker".into(), rest.to_string()], env: vec![] };
+            let exe = std::env::current_exe().map_err(|e| BackendError::Setup {
+                backend: name.into(),
+                msg: e.to_string(),
+            })?;
+            mock::Script::parse(rest).map_err(|msg| BackendError::Setup {
+                backend: name.into(),
+                msg,
+            })?;
+            let cmd = exec::ProcessCommand {
+                program: exe,
+                args: vec!["mock-worker".into(), rest.to_string()],
+                env: vec![],
+            };
             Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
         }
         _ => Err(BackendError::Unknown(name.to_string())),

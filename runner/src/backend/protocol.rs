@@ -34,7 +34,10 @@ pub fn parse_hello(line: &str) -> Result<Hello, String> {
         return Err(format!("expected a hello message, got type `{}`", h.kind));
     }
     if h.protocol != PROTOCOL_VERSION {
-        return Err(format!("protocol {} (this runner speaks {PROTOCOL_VERSION})", h.protocol));
+        return Err(format!(
+            "protocol {} (this runner speaks {PROTOCOL_VERSION})",
+            h.protocol
+        ));
     }
     Ok(h)
 }
@@ -108,14 +111,22 @@ pub enum Answer {
         #[serde(default)]
         skipped: Vec<SkippedMsg>,
     },
-    Skip { case_id: String, reason: String },
-    Error { case_id: String, message: String },
+    Skip {
+        case_id: String,
+        reason: String,
+    },
+    Error {
+        case_id: String,
+        message: String,
+    },
 }
 
 impl Answer {
     pub fn case_id(&self) -> &str {
         match self {
-            Answer::Observation { case_id, .. } | Answer::Skip { case_id, .. } | Answer::Error { case_id, .. } => case_id,
+            Answer::Observation { case_id, .. }
+            | Answer::Skip { case_id, .. }
+            | Answer::Error { case_id, .. } => case_id,
         }
     }
 }
@@ -148,7 +159,9 @@ mod tests {
         let a =
             parse_answer(r#"{"type":"observation","case_id":"x","extra":1,"results":[{"api":"core","rgba":["nan",0,"inf",1]}]}"#).unwrap();
         match a {
-            Answer::Observation { case_id, results, .. } => {
+            Answer::Observation {
+                case_id, results, ..
+            } => {
                 assert_eq!(case_id, "x");
                 assert!(results[0].rgba.0[0].is_nan());
                 assert_eq!(results[0].rgba.0[2], f64::INFINITY);
@@ -156,7 +169,8 @@ mod tests {
             other => panic!("{other:?}"),
         }
         assert!(parse_answer(r#"{"type":"bogus","case_id":"x"}"#).is_err());
-        let h = parse_hello(r#"{"type":"hello","protocol":1,"capabilities":{"specs":["gl46"]}}"#).unwrap();
+        let h = parse_hello(r#"{"type":"hello","protocol":1,"capabilities":{"specs":["gl46"]}}"#)
+            .unwrap();
         assert_eq!(h.capabilities.specs, Some(vec!["gl46".to_string()]));
         assert!(h.capabilities.formats.is_none());
         assert!(parse_hello(r#"{"type":"hello","protocol":2}"#).is_err());

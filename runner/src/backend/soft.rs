@@ -31,7 +31,12 @@ impl SoftBackend {
                 ),
             })?)
         };
-        Ok(SoftBackend { name: name.to_string(), only, units: Spec::ALL.iter().map(|_| None).collect(), caps: Capabilities::all() })
+        Ok(SoftBackend {
+            name: name.to_string(),
+            only,
+            units: Spec::ALL.iter().map(|_| None).collect(),
+            caps: Capabilities::all(),
+        })
     }
 
     fn unit(&mut self, spec: Spec) -> &SoftUnit {
@@ -51,7 +56,10 @@ impl SoftBackend {
             .iter()
             .map(|&api| {
                 let out = match unit.sample(case, api) {
-                    Ok(v) => ApiOutcome::Rgba { rgba: v.map(f64::from), stored: None },
+                    Ok(v) => ApiOutcome::Rgba {
+                        rgba: v.map(f64::from),
+                        stored: None,
+                    },
                     Err(e) => ApiOutcome::Skip(e.to_string()),
                 };
                 (api, out)

@@ -168,13 +168,20 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
         coord[i] = *c;
     }
     if a.offset.len() > 3 {
-        anyhow::bail!("--offset takes at most three components (du,dv,dw), got {}", a.offset.len());
+        anyhow::bail!(
+            "--offset takes at most three components (du,dv,dw), got {}",
+            a.offset.len()
+        );
     }
     let mut offset = [0; 3];
     offset[..a.offset.len()].copy_from_slice(&a.offset);
     let api: Vec<ApiPath> = if a.api.is_empty() && offset != [0; 3] {
         // Only GLSL >= 1.30 and GLSL ES 3.00 have offset lookups.
-        vec![if spec == Spec::Gles32 { ApiPath::Es300 } else { ApiPath::GlslCore }]
+        vec![if spec == Spec::Gles32 {
+            ApiPath::Es300
+        } else {
+            ApiPath::GlslCore
+        }]
     } else if a.api.is_empty() {
         vec![default_api(spec, target)]
     } else {

@@ -34,12 +34,19 @@ pub struct Args {
 
 pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     if !grids::names().contains(&args.grid.as_str()) {
-        anyhow::bail!("unknown grid `{}` (known: {})", args.grid, grids::names().join(", "));
+        anyhow::bail!(
+            "unknown grid `{}` (known: {})",
+            args.grid,
+            grids::names().join(", ")
+        );
     }
-    let out = args.out.clone().unwrap_or_else(|| match args.grid.as_str() {
-        "default" => PathBuf::from("cases/fixtures"),
-        g => PathBuf::from("target/fixtures").join(g),
-    });
+    let out = args
+        .out
+        .clone()
+        .unwrap_or_else(|| match args.grid.as_str() {
+            "default" => PathBuf::from("cases/fixtures"),
+            g => PathBuf::from("target/fixtures").join(g),
+        });
     let start = Instant::now();
     let mut bytes = 0usize;
     let mut nfiles = 0usize;
@@ -80,7 +87,8 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     .with_context(|| format!("generating grid `{}`", args.grid))?;
     let gen_time = start.elapsed();
     if streaming && !args.check {
-        fixtures::remove_stale(&out, &streamed).with_context(|| format!("cleaning {}", out.display()))?;
+        fixtures::remove_stale(&out, &streamed)
+            .with_context(|| format!("cleaning {}", out.display()))?;
     }
     if !streaming {
         coverage = Coverage::of(&all_cases);
@@ -88,14 +96,19 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
             if let Ok(existing) = fixtures::fixture_paths(&out) {
                 let wanted = grids::paths(&written);
                 for p in existing {
-                    let rel = p.strip_prefix(&out).unwrap_or(&p).to_string_lossy().replace('\\', "/");
+                    let rel = p
+                        .strip_prefix(&out)
+                        .unwrap_or(&p)
+                        .to_string_lossy()
+                        .replace('\\', "/");
                     if !wanted.contains(rel.as_str()) {
                         differ.push(format!("{rel} (stale)"));
                     }
                 }
             }
         } else {
-            fixtures::write_dir(&out, &written).with_context(|| format!("writing {}", out.display()))?;
+            fixtures::write_dir(&out, &written)
+                .with_context(|| format!("writing {}", out.display()))?;
         }
     }
     // The report is assembled first and written once; a closed pipe (`| head`) is not an error
@@ -119,7 +132,8 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
         ));
     }
     if let Some(readme) = &args.update_readme {
-        let text = std::fs::read_to_string(readme).with_context(|| format!("reading {}", readme.display()))?;
+        let text = std::fs::read_to_string(readme)
+            .with_context(|| format!("reading {}", readme.display()))?;
         let new = shadowcheck_cases::coverage::replace_section(&text, &coverage.markdown())
             .with_context(|| format!("{}: no coverage markers", readme.display()))?;
         std::fs::write(readme, new).with_context(|| format!("writing {}", readme.display()))?;
@@ -138,7 +152,9 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     {
         use std::io::Write;
         let mut stdout = std::io::stdout().lock();
-        let _ = stdout.write_all(report.as_bytes()).and_then(|_| stdout.flush());
+        let _ = stdout
+            .write_all(report.as_bytes())
+            .and_then(|_| stdout.flush());
     }
     if args.check && !differ.is_empty() {
         for d in &differ {

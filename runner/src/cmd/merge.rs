@@ -3,7 +3,9 @@
 
 use anyhow::{bail, Context};
 use shadowcheck_runner::events::{Fanout, RunMeta};
-use shadowcheck_runner::report::{self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports};
+use shadowcheck_runner::report::{
+    self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports,
+};
 use shadowcheck_runner::resume::{Prior, RESULTS_FILE};
 use shadowcheck_runner::run;
 use std::path::PathBuf;
@@ -23,7 +25,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let mut backends: Vec<String> = vec![];
     let mut meta: Option<RunMeta> = None;
     for input in &a.inputs {
-        let path = if input.is_dir() { input.join(RESULTS_FILE) } else { input.clone() };
+        let path = if input.is_dir() {
+            input.join(RESULTS_FILE)
+        } else {
+            input.clone()
+        };
         let p = Prior::read(&path).with_context(|| format!("reading {}", path.display()))?;
         if let Some(m) = &p.meta {
             for b in &m.backends {
@@ -31,12 +37,20 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
                     backends.push(b.clone());
                 }
             }
-            meta.get_or_insert_with(|| RunMeta { shard: None, ..m.clone() });
+            meta.get_or_insert_with(|| RunMeta {
+                shard: None,
+                ..m.clone()
+            });
         }
         for r in p.results {
             if let Some(prev) = merged.get(&r.backend, &r.test) {
                 if prev != &r {
-                    bail!("{}: test `{}` on `{}` is also in an earlier input, with another result", path.display(), r.test, r.backend);
+                    bail!(
+                        "{}: test `{}` on `{}` is also in an earlier input, with another result",
+                        path.display(),
+                        r.test,
+                        r.backend
+                    );
                 }
             }
             merged.insert(r);
@@ -44,9 +58,14 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         merged.load_errors.extend(p.load_errors);
     }
     std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
-    let meta = RunMeta { backends: backends.clone(), ..meta.unwrap_or_default() };
+    let meta = RunMeta {
+        backends: backends.clone(),
+        ..meta.unwrap_or_default()
+    };
     let mut fanout = Fanout::default();
-    fanout.reporters.push(Box::new(TerminalReporter::new(false, false)));
+    fanout
+        .reporters
+        .push(Box::new(TerminalReporter::new(false, false)));
     let mut jsonl = JsonlReporter::create(&a.out.join(RESULTS_FILE), &meta)?;
     let errors: Vec<_> = merged.load_errors.iter().cloned().collect();
     let mut results = merged.results;
@@ -57,10 +76,15 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
         run::sort_results(&mut results);
         for r in &results {
-            jsonl.event(&Event::CaseFinished { result: r, replayed: false })?;
+            jsonl.event(&Event::CaseFinished {
+                result: r,
+                replayed: false,
+            })?;
         }
     }
-    fanout.reporters.extend(report::file_reporters(&a.out, &FileReports::default()));
+    fanout
+        .reporters
+        .extend(report::file_reporters(&a.out, &FileReports::default()));
     let summary = run::finish(backends, &mut results, &errors, &mut fanout);
     if let Some((_, e)) = fanout.error {
         bail!("writing reports in {}: {e}", a.out.display());

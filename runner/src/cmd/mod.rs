@@ -4,7 +4,7 @@ pub mod explain;
 pub mod gen;
 pub mod gl_worker;
 pub mod merge;
-pub mod mutants;
 pub mod mock_worker;
+pub mod mutants;
 pub mod report;
 pub mod run;

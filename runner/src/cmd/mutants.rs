@@ -76,21 +76,31 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let faults = mutants::select(&a.mutant)?;
     let (source, cases) = match &a.grid {
         Some(g) => {
-            let files = shadowcheck_cases::grids::generate(g, 0).with_context(|| format!("generating grid `{g}`"))?;
+            let files = shadowcheck_cases::grids::generate(g, 0)
+                .with_context(|| format!("generating grid `{g}`"))?;
             (
                 format!("grid {g}"),
-                files.into_iter().flat_map(|(_, f)| f.cases).collect::<Vec<_>>(),
+                files
+                    .into_iter()
+                    .flat_map(|(_, f)| f.cases)
+                    .collect::<Vec<_>>(),
             )
         }
         None => {
-            let path = a.fixtures.clone().unwrap_or_else(|| PathBuf::from(super::run::DEFAULT_FIXTURES));
+            let path = a
+                .fixtures
+                .clone()
+                .unwrap_or_else(|| PathBuf::from(super::run::DEFAULT_FIXTURES));
             let files = shadowcheck_cases::fixtures::load_path(&path).with_context(|| {
                 format!(
                     "loading fixtures (generate them with `shadowcheck gen --grid default -o {}`)",
                     path.display()
                 )
             })?;
-            (path.display().to_string(), files.into_iter().flat_map(|(_, f)| f.cases).collect())
+            (
+                path.display().to_string(),
+                files.into_iter().flat_map(|(_, f)| f.cases).collect(),
+            )
         }
     };
     if !a.quiet {
@@ -101,9 +111,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         );
     }
     let suite = Suite::new(cases)?;
-    let threads = a
-        .jobs
-        .unwrap_or_else(|| std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1));
+    let threads = a.jobs.unwrap_or_else(|| {
+        std::thread::available_parallelism()
+            .map(|n| n.get())
+            .unwrap_or(1)
+    });
     let total = faults.len();
     let quiet = a.quiet;
     let mut report = mutants::run(&suite, &source, &faults, threads, |done, m| {
@@ -130,13 +142,15 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         print!("{}", render::table(&report));
     }
     if let Some(path) = &a.output {
-        std::fs::write(path, render::markdown(&report, &command_line(&a))).with_context(|| format!("writing {}", path.display()))?;
+        std::fs::write(path, render::markdown(&report, &command_line(&a)))
+            .with_context(|| format!("writing {}", path.display()))?;
         if !a.quiet {
             eprintln!("mutants: wrote {}", path.display());
         }
     }
     if let Some(path) = &a.update_readme {
-        let text = std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+        let text =
+            std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
         let new = shadowcheck_cases::markers::replace(
             &text,
             render::README_BEGIN,

@@ -4,7 +4,9 @@ use anyhow::{bail, Context};
 use shadowcheck_runner::backend::{self, Backend, Options};
 use shadowcheck_runner::baseline::{Baseline, Lists, RegexList};
 use shadowcheck_runner::events::{exit, Fanout, RunMeta};
-use shadowcheck_runner::report::{self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports};
+use shadowcheck_runner::report::{
+    self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports,
+};
 use shadowcheck_runner::resume::{self, Prior, RESULTS_FILE};
 use shadowcheck_runner::run::{self, Settings};
 use shadowcheck_runner::shard::Shard;
@@ -16,7 +18,8 @@ use std::time::Duration;
 pub const DEFAULT_FIXTURES: &str = "cases/fixtures";
 
 /// The Debian packages that provide the GL drivers the GL backends use.
-pub const MESA_INSTALL: &str = "apt-get install -y libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers";
+pub const MESA_INSTALL: &str =
+    "apt-get install -y libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers";
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -71,26 +74,64 @@ pub struct Args {
 
 /// `out/<backends>` with characters unfit for a file name replaced.
 fn default_out(backends: &[String]) -> PathBuf {
-    let name = if backends.is_empty() { "all".to_string() } else { backends.join("+") };
-    let slug: String = name.chars().map(|c| if c.is_ascii_alphanumeric() || "-_+.=".contains(c) { c } else { '_' }).take(80).collect();
+    let name = if backends.is_empty() {
+        "all".to_string()
+    } else {
+        backends.join("+")
+    };
+    let slug: String = name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || "-_+.=".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .take(80)
+        .collect();
     Path::new("out").join(slug)
 }
 
 fn lists(a: &Args) -> anyhow::Result<Lists> {
     Ok(Lists {
-        baseline: a.baseline.as_deref().map(Baseline::load).transpose()?.unwrap_or_default(),
-        skips: a.skips.as_deref().map(RegexList::load).transpose()?.unwrap_or_default(),
-        flakes: a.flakes.as_deref().map(RegexList::load).transpose()?.unwrap_or_default(),
+        baseline: a
+            .baseline
+            .as_deref()
+            .map(Baseline::load)
+            .transpose()?
+            .unwrap_or_default(),
+        skips: a
+            .skips
+            .as_deref()
+            .map(RegexList::load)
+            .transpose()?
+            .unwrap_or_default(),
+        flakes: a
+            .flakes
+            .as_deref()
+            .map(RegexList::load)
+            .transpose()?
+            .unwrap_or_default(),
     })
 }
 
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
-    let pattern = a.cases.as_deref().map(regex::Regex::new).transpose().context("--cases")?;
+    let pattern = a
+        .cases
+        .as_deref()
+        .map(regex::Regex::new)
+        .transpose()
+        .context("--cases")?;
     if !(a.timeout > 0.0 && a.timeout.is_finite()) {
         bail!("--timeout must be a positive number of seconds");
     }
     let lists = lists(&a)?;
-    let fixtures = if a.fixtures.is_empty() { vec![PathBuf::from(DEFAULT_FIXTURES)] } else { a.fixtures.clone() };
+    let fixtures = if a.fixtures.is_empty() {
+        vec![PathBuf::from(DEFAULT_FIXTURES)]
+    } else {
+        a.fixtures.clone()
+    };
 
     let names = if a.backends.is_empty() {
         let names = backend::default_backends();
@@ -120,7 +161,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     if a.group == 0 {
         bail!("--group must be at least 1");
     }
-    let opts = Options { timeout: Duration::from_secs_f64(a.timeout), group: a.group };
+    let opts = Options {
+        timeout: Duration::from_secs_f64(a.timeout),
+        group: a.group,
+    };
     let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(names.len());
     for n in &names {
         backends.push(backend::open(n, &opts)?);
@@ -133,7 +177,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         for e in &set.errors {
             eprintln!("shadowcheck: error: {}: {}", e.file, e.message);
         }
-        bail!("no fixture could be loaded from {}", meta.fixtures.join(", "));
+        bail!(
+            "no fixture could be loaded from {}",
+            meta.fixtures.join(", ")
+        );
     }
 
     let results_path = out_dir.join(RESULTS_FILE);
@@ -151,7 +198,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
         (prior, JsonlReporter::append(&results_path)?)
     } else {
-        (Prior::default(), JsonlReporter::create(&results_path, &meta)?)
+        (
+            Prior::default(),
+            JsonlReporter::create(&results_path, &meta)?,
+        )
     };
 
     // Final reports of an earlier run in this folder would be stale until this run ends.
@@ -160,15 +210,37 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     }
 
     let mut fanout = Fanout::default();
-    fanout.reporters.push(Box::new(TerminalReporter::new(a.profile, a.verbose)));
+    fanout
+        .reporters
+        .push(Box::new(TerminalReporter::new(a.profile, a.verbose)));
     fanout.reporters.push(Box::new(jsonl));
-    fanout.reporters.extend(report::file_reporters(&out_dir, &FileReports::default()));
-    let settings = Settings { lists, rerun_regressions: !a.no_rerun, explicit_fixtures: !a.fixtures.is_empty() };
-    let jobs = a.jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())).max(1);
-    let (_, summary, _) = run::run_all(&mut backends, &set, &prior, &settings, &mut fanout, &out_dir, jobs);
+    fanout
+        .reporters
+        .extend(report::file_reporters(&out_dir, &FileReports::default()));
+    let settings = Settings {
+        lists,
+        rerun_regressions: !a.no_rerun,
+        explicit_fixtures: !a.fixtures.is_empty(),
+    };
+    let jobs = a
+        .jobs
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        .max(1);
+    let (_, summary, _) = run::run_all(
+        &mut backends,
+        &set,
+        &prior,
+        &settings,
+        &mut fanout,
+        &out_dir,
+        jobs,
+    );
     drop(backends);
     if let Some((_, e)) = fanout.error {
-        eprintln!("shadowcheck: error: writing reports in {}: {e}", out_dir.display());
+        eprintln!(
+            "shadowcheck: error: writing reports in {}: {e}",
+            out_dir.display()
+        );
         return Ok(ExitCode::from(exit::SETUP));
     }
     Ok(ExitCode::from(summary.exit_code))

@@ -223,7 +223,9 @@ impl std::str::FromStr for BackendName {
             Some(k) => LookupForm::NAMED
                 .into_iter()
                 .find(|f| f.key() == *k)
-                .ok_or_else(|| bad("the lookup form (fourth part) must be lod, grad or implicit"))?,
+                .ok_or_else(|| {
+                    bad("the lookup form (fourth part) must be lod, grad or implicit")
+                })?,
         };
         let platform = match parts[0] {
             "egl" => Platform::Egl,
@@ -256,8 +258,14 @@ mod tests {
         let b: BackendName = "egl:llvmpipe:core:grad".parse().unwrap();
         assert_eq!((b.api, b.form), (ContextApi::Core, LookupForm::Grad));
         assert_eq!(b.to_string(), "egl:llvmpipe:core:grad");
-        assert_eq!("egl:llvmpipe:core".parse::<BackendName>().unwrap().form, LookupForm::Auto);
-        let e = "egl:llvmpipe:core:fast".parse::<BackendName>().unwrap_err().to_string();
+        assert_eq!(
+            "egl:llvmpipe:core".parse::<BackendName>().unwrap().form,
+            LookupForm::Auto
+        );
+        let e = "egl:llvmpipe:core:fast"
+            .parse::<BackendName>()
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("lod, grad or implicit"), "{e}");
         assert!("egl:llvmpipe:core:grad:x".parse::<BackendName>().is_err());
     }

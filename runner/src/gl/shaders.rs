@@ -60,7 +60,9 @@ fn modern_call(key: &ShaderKey) -> String {
     // gradients) and precedes the bias.
     let (o, oa) = match key.offset {
         [0, 0] => ("", String::new()),
-        [a, _] if matches!(key.target, Target::T1d | Target::T1dArray) => ("Offset", format!(", {a}")),
+        [a, _] if matches!(key.target, Target::T1d | Target::T1dArray) => {
+            ("Offset", format!(", {a}"))
+        }
         [a, b] => ("Offset", format!(", ivec2({a}, {b})")),
     };
     match key.form {
@@ -279,12 +281,18 @@ mod tests {
             proj: false,
             ..k
         };
-        assert_eq!(modern_call(&k), "textureLodOffset(u_tex, p.xyz, u_x, ivec2(-8, 7))");
+        assert_eq!(
+            modern_call(&k),
+            "textureLodOffset(u_tex, p.xyz, u_x, ivec2(-8, 7))"
+        );
         let k = ShaderKey {
             form: LodForm::Implicit(true),
             ..k
         };
-        assert_eq!(modern_call(&k), "textureOffset(u_tex, p.xyz, ivec2(-8, 7), u_x)");
+        assert_eq!(
+            modern_call(&k),
+            "textureOffset(u_tex, p.xyz, ivec2(-8, 7), u_x)"
+        );
     }
 
     #[test]

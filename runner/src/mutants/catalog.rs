@@ -25,9 +25,13 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
 pub fn about(f: Fault) -> &'static str {
     use Fault as F;
     match f {
-        F::RefClampedForFloat => "Dref clamped to [0,1] for a D32F texture (pre-GL 3.0 rule kept for float depth)",
+        F::RefClampedForFloat => {
+            "Dref clamped to [0,1] for a D32F texture (pre-GL 3.0 rule kept for float depth)"
+        }
         F::RefNotClamped => "Dref not clamped for fixed-point formats",
-        F::DtClampedForFloat => "Dt clamped to [0,1] at sample time for float depth (border > 1 visible)",
+        F::DtClampedForFloat => {
+            "Dt clamped to [0,1] at sample time for float depth (border > 1 visible)"
+        }
         F::DtNotClamped => "Dt (border) not clamped for fixed-point formats",
         F::FilterThenCompare => "filter the depths, then compare once (no PCF)",
         F::PcfHalfTexelOff => "PCF footprint and weights off by half a texel",
@@ -41,25 +45,33 @@ pub fn about(f: Fault) -> &'static str {
         F::SgixOperatorsReversed => "SGIX operators read as ARB issue 2 describes them",
         F::AmbientAppliedToPass => "ambient / fail value applied to passing texels",
         F::AmbientIgnored => "ambient / fail value ignored",
-        F::FailValueNotClamped => "TEXTURE_COMPARE_FAIL_VALUE_ARB / SHADOW_AMBIENT_SGIX not clamped to [0,1]",
+        F::FailValueNotClamped => {
+            "TEXTURE_COMPARE_FAIL_VALUE_ARB / SHADOW_AMBIENT_SGIX not clamped to [0,1]"
+        }
         F::RedModeAsLuminance => "DEPTH_TEXTURE_MODE RED returned as LUMINANCE",
         F::IntensityAsLuminance => "DEPTH_TEXTURE_MODE INTENSITY returned as LUMINANCE",
         F::WrongDefaultDepthMode => "wrong default DEPTH_TEXTURE_MODE in the compatibility profile",
-        F::AlphaModeZeroOnGlsl130 => "GLSL 1.30 shadow lookup with DEPTH_TEXTURE_MODE ALPHA returns 0 (Cs[0] of (0,0,0,r))",
+        F::AlphaModeZeroOnGlsl130 => {
+            "GLSL 1.30 shadow lookup with DEPTH_TEXTURE_MODE ALPHA returns 0 (Cs[0] of (0,0,0,r))"
+        }
         F::Glsl120IgnoresDepthMode => "vec4 shadow2D (GLSL 1.20) ignoring DEPTH_TEXTURE_MODE",
         F::CompareAppliedToColour => "comparison applied to a colour (R8) texture",
         F::StencilModeIgnored => "DEPTH_STENCIL_TEXTURE_MODE STENCIL_INDEX ignored (depth sampled)",
         F::StencilCompared => "stencil index sampled with the comparison on under STENCIL_INDEX",
         F::IncompleteNotZero => "incomplete texture sampled instead of returning 0",
         F::MipmapCompletenessIgnored => "missing mip levels not detected",
-        F::EsDepthFilterCompletenessIgnored => "ES rule: sized depth + compare NONE + LINEAR not incomplete",
+        F::EsDepthFilterCompletenessIgnored => {
+            "ES rule: sized depth + compare NONE + LINEAR not incomplete"
+        }
         F::ProjectiveDivideMissing => "projective divide missing",
         F::RefNotDividedByQ => "projective divide of the coordinates but not of Dref",
         F::LayerTruncated => "array layer truncated instead of rounded",
         F::CubeNegYFlipped => "cube -Y face t coordinate flipped",
         F::OffsetIgnored => "texel offset of textureOffset & co. dropped",
         F::OffsetInBaseLevelTexels => "texel offset in base-level texels at every mip level",
-        F::OffsetAfterWrap => "texel offset added after wrapping (REPEAT does not wrap the offset texel)",
+        F::OffsetAfterWrap => {
+            "texel offset added after wrapping (REPEAT does not wrap the offset texel)"
+        }
         F::MipLevelOffByOne => "NEAREST-mipmap level off by one",
         F::TrilinearNoBlend => "trilinear filtering without the level blend",
         F::LodBiasIgnored => "TEXTURE_LOD_BIAS ignored",

@@ -262,7 +262,11 @@ impl Suite {
         let mut cases = Vec::with_capacity(indexed.len());
         for (i, mut c) in indexed {
             if c.expect.is_none() {
-                let ev = verdict::oracle_evaluate(&c).map_err(|msg| MutantsError::NoExpectation { id: c.id.clone(), msg })?;
+                let ev =
+                    verdict::oracle_evaluate(&c).map_err(|msg| MutantsError::NoExpectation {
+                        id: c.id.clone(),
+                        msg,
+                    })?;
                 c.expect = Some(ev.expect);
             }
             order.push(i);
@@ -316,9 +320,19 @@ impl Suite {
     }
 
     /// Judges one observation (see the module docs for errors).
-    fn judge(&self, case: &Case, api: ApiPath, rgba: &Result<[f32; 4], SoftError>, correct: &Result<[f32; 4], SoftError>) -> Outcome {
+    fn judge(
+        &self,
+        case: &Case,
+        api: ApiPath,
+        rgba: &Result<[f32; 4], SoftError>,
+        correct: &Result<[f32; 4], SoftError>,
+    ) -> Outcome {
         match rgba {
-            Ok(v) => match case.expect.as_ref().and_then(|e| e.judge(api, v.map(f64::from))) {
+            Ok(v) => match case
+                .expect
+                .as_ref()
+                .and_then(|e| e.judge(api, v.map(f64::from)))
+            {
                 Some(Judgement::Strict) => Outcome::Pass,
                 Some(Judgement::LenientOnly) => Outcome::Warn,
                 Some(Judgement::Outside) => Outcome::Fail,
@@ -333,7 +347,10 @@ impl Suite {
     fn kill(&self, results: &[BatchResult], t: usize, outcome: Outcome) -> Kill {
         let b = &results[t];
         let case = &self.cases[b.case];
-        let correct = self.baseline.get(t).and_then(|c| c.rgba.as_ref().ok().copied());
+        let correct = self
+            .baseline
+            .get(t)
+            .and_then(|c| c.rgba.as_ref().ok().copied());
         let reason = match &b.rgba {
             Ok(v) => verdict::judge(case, b.api, v.map(f64::from), None).reason,
             Err(e) => Some(format!("refused a lookup the correct unit answers: {e}")),
@@ -354,7 +371,12 @@ impl Suite {
         let t0 = Instant::now();
         let mut r = BaselineResult::default();
         for (t, b) in self.baseline.iter().enumerate() {
-            let o = self.judge(&self.cases[b.case], b.api, &b.rgba, &Err(SoftError::UndefinedResult("baseline")));
+            let o = self.judge(
+                &self.cases[b.case],
+                b.api,
+                &b.rgba,
+                &Err(SoftError::UndefinedResult("baseline")),
+            );
             match o {
                 Outcome::Pass => r.pass += 1,
                 Outcome::Warn => r.warn += 1,
@@ -393,7 +415,12 @@ impl Suite {
             let case = &self.cases[b.case];
             let o = self.judge(case, b.api, &b.rgba, &c.rgba);
             // A test the correct unit also misses is not evidence against the mutant.
-            let base = self.judge(case, c.api, &c.rgba, &Err(SoftError::UndefinedResult("baseline")));
+            let base = self.judge(
+                case,
+                c.api,
+                &c.rgba,
+                &Err(SoftError::UndefinedResult("baseline")),
+            );
             let slot = match o {
                 Outcome::Fail if base != Outcome::Fail => 0,
                 Outcome::Warn if base == Outcome::Pass => 1,
@@ -426,7 +453,11 @@ impl Suite {
         } else {
             (KillStatus::Survived, 1)
         };
-        let outcome = if slot == 0 { Outcome::Fail } else { Outcome::Warn };
+        let outcome = if slot == 0 {
+            Outcome::Fail
+        } else {
+            Outcome::Warn
+        };
         MutantResult {
             key: fault.key().to_string(),
             about: about(fault).to_string(),
@@ -456,11 +487,10 @@ impl MutantResult {
                 self.unobservable = unobservable(fault).map(str::to_string);
             }
             if self.unobservable.is_none() {
-                self.grid_change = Some(
-                    grid_change(fault)
-                        .map(str::to_string)
-                        .unwrap_or_else(|| "add the witness case below (or its family) to the grid".to_string()),
-                );
+                self.grid_change =
+                    Some(grid_change(fault).map(str::to_string).unwrap_or_else(|| {
+                        "add the witness case below (or its family) to the grid".to_string()
+                    }));
             }
             self.witness = Some(w);
         }
@@ -522,9 +552,18 @@ pub fn run(
             });
         }
     });
-    let mutants: Vec<MutantResult> = slots.into_inner().unwrap_or_default().into_iter().flatten().collect();
+    let mutants: Vec<MutantResult> = slots
+        .into_inner()
+        .unwrap_or_default()
+        .into_iter()
+        .flatten()
+        .collect();
     let count = |s: KillStatus| mutants.iter().filter(|m| m.status == s).count();
-    let (killed, warn_only, survived) = (count(KillStatus::Killed), count(KillStatus::WarnOnly), count(KillStatus::Survived));
+    let (killed, warn_only, survived) = (
+        count(KillStatus::Killed),
+        count(KillStatus::WarnOnly),
+        count(KillStatus::Survived),
+    );
     let unobservable = mutants.iter().filter(|m| m.unobservable.is_some()).count();
     let pct = |n: usize| {
         if mutants.is_empty() {

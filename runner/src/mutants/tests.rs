@@ -35,7 +35,11 @@ fn every_fault_is_described_and_only_the_nan_fault_is_called_unobservable() {
     for f in Fault::ALL {
         assert!(!about(*f).is_empty(), "{f}");
     }
-    let un: Vec<Fault> = Fault::ALL.iter().copied().filter(|f| unobservable(*f).is_some()).collect();
+    let un: Vec<Fault> = Fault::ALL
+        .iter()
+        .copied()
+        .filter(|f| unobservable(*f).is_some())
+        .collect();
     assert_eq!(un, vec![Fault::NanOrderedNotequal]);
 }
 

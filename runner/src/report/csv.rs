@@ -17,7 +17,9 @@ pub struct CsvReporter {
 
 impl CsvReporter {
     pub fn new(dir: &Path) -> CsvReporter {
-        CsvReporter { dir: dir.to_path_buf() }
+        CsvReporter {
+            dir: dir.to_path_buf(),
+        }
     }
 }
 
@@ -58,7 +60,13 @@ pub fn failures_csv(results: &[TestResult]) -> String {
 pub fn results_csv(results: &[TestResult]) -> String {
     let mut s = String::with_capacity(results.len() * 80);
     for r in results {
-        s.push_str(&format!("{},{},{:.6},{}\n", field(&r.test), r.status, r.duration, field(&r.backend)));
+        s.push_str(&format!(
+            "{},{},{:.6},{}\n",
+            field(&r.test),
+            r.status,
+            r.duration,
+            field(&r.backend)
+        ));
     }
     s
 }
@@ -66,8 +74,10 @@ pub fn results_csv(results: &[TestResult]) -> String {
 impl Reporter for CsvReporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
         if let Event::RunFinished { results, .. } = ev {
-            std::fs::File::create(self.dir.join("results.csv"))?.write_all(results_csv(results).as_bytes())?;
-            std::fs::File::create(self.dir.join("failures.csv"))?.write_all(failures_csv(results).as_bytes())?;
+            std::fs::File::create(self.dir.join("results.csv"))?
+                .write_all(results_csv(results).as_bytes())?;
+            std::fs::File::create(self.dir.join("failures.csv"))?
+                .write_all(failures_csv(results).as_bytes())?;
         }
         Ok(())
     }

@@ -19,13 +19,20 @@ pub struct JsonReporter {
 
 impl JsonReporter {
     pub fn new(dir: &Path) -> JsonReporter {
-        JsonReporter { dir: dir.to_path_buf() }
+        JsonReporter {
+            dir: dir.to_path_buf(),
+        }
     }
 }
 
 impl Reporter for JsonReporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
-        if let Event::RunFinished { results, load_errors, summary } = ev {
+        if let Event::RunFinished {
+            results,
+            load_errors,
+            summary,
+        } = ev
+        {
             let doc = JsonReport {
                 schema_version: shadowcheck_model::SCHEMA_VERSION,
                 summary: (*summary).clone(),

@@ -13,7 +13,9 @@ pub struct JsonlReporter {
 impl JsonlReporter {
     /// Starts `path` afresh with `meta` as its first line.
     pub fn create(path: &Path, meta: &RunMeta) -> std::io::Result<JsonlReporter> {
-        let mut r = JsonlReporter { out: BufWriter::with_capacity(1 << 16, File::create(path)?) };
+        let mut r = JsonlReporter {
+            out: BufWriter::with_capacity(1 << 16, File::create(path)?),
+        };
         r.write(&Line::Meta(meta.clone()))?;
         r.out.flush()?;
         Ok(r)
@@ -21,7 +23,9 @@ impl JsonlReporter {
 
     /// Appends to an existing file (`--resume`; cut any partial last line first).
     pub fn append(path: &Path) -> std::io::Result<JsonlReporter> {
-        Ok(JsonlReporter { out: BufWriter::with_capacity(1 << 16, OpenOptions::new().append(true).open(path)?) })
+        Ok(JsonlReporter {
+            out: BufWriter::with_capacity(1 << 16, OpenOptions::new().append(true).open(path)?),
+        })
     }
 
     fn write(&mut self, line: &Line) -> std::io::Result<()> {
@@ -33,11 +37,15 @@ impl JsonlReporter {
 impl Reporter for JsonlReporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
         match ev {
-            Event::CaseFinished { result, replayed: false } => self.write(&Line::Result(Box::new((*result).clone()))),
+            Event::CaseFinished {
+                result,
+                replayed: false,
+            } => self.write(&Line::Result(Box::new((*result).clone()))),
             Event::LoadError(e) => self.write(&Line::LoadError((*e).clone())),
-            Event::BatchFinished { .. } | Event::BackendStarted { .. } | Event::BackendFinished { .. } | Event::RunFinished { .. } => {
-                self.out.flush()
-            }
+            Event::BatchFinished { .. }
+            | Event::BackendStarted { .. }
+            | Event::BackendFinished { .. }
+            | Event::RunFinished { .. } => self.out.flush(),
             _ => Ok(()),
         }
     }

@@ -16,7 +16,9 @@ pub struct JunitReporter {
 
 impl JunitReporter {
     pub fn new(dir: &Path) -> JunitReporter {
-        JunitReporter { dir: dir.to_path_buf() }
+        JunitReporter {
+            dir: dir.to_path_buf(),
+        }
     }
 }
 
@@ -26,12 +28,16 @@ fn case(r: &TestResult) -> TestCase {
     let status = match r.status {
         Status::Plain(Outcome::Fail) | Status::UnexpectedImprovement(_) => {
             let mut s = TestCaseStatus::non_success(NonSuccessKind::Failure);
-            s.set_message(message).set_type(r.status.to_string()).set_description(dump.clone());
+            s.set_message(message)
+                .set_type(r.status.to_string())
+                .set_description(dump.clone());
             s
         }
         Status::Plain(Outcome::Crash | Outcome::Timeout) => {
             let mut s = TestCaseStatus::non_success(NonSuccessKind::Error);
-            s.set_message(message).set_type(r.status.to_string()).set_description(dump.clone());
+            s.set_message(message)
+                .set_type(r.status.to_string())
+                .set_description(dump.clone());
             s
         }
         Status::Plain(Outcome::Skip) => {
@@ -44,8 +50,12 @@ fn case(r: &TestResult) -> TestCase {
     let mut tc = TestCase::new(r.test.clone(), status);
     tc.set_classname(format!("{}.{}", r.tags.spec, r.tags.target));
     tc.set_time(Duration::from_secs_f64(r.duration.max(0.0)));
-    if !matches!(r.status, Status::Plain(Outcome::Pass | Outcome::Skip | Outcome::Fail | Outcome::Crash | Outcome::Timeout))
-        && !r.status.is_improvement()
+    if !matches!(
+        r.status,
+        Status::Plain(
+            Outcome::Pass | Outcome::Skip | Outcome::Fail | Outcome::Crash | Outcome::Timeout
+        )
+    ) && !r.status.is_improvement()
     {
         tc.set_system_out(format!("{}\n{dump}", r.status));
     }
@@ -60,7 +70,9 @@ pub fn to_xml(results: &[TestResult]) -> Result<String, quick_junit::SerializeEr
         if let Some(done) = suite.take_if(|s| s.name.as_str() != r.backend) {
             report.add_test_suite(done);
         }
-        suite.get_or_insert_with(|| TestSuite::new(r.backend.clone())).add_test_case(case(r));
+        suite
+            .get_or_insert_with(|| TestSuite::new(r.backend.clone()))
+            .add_test_case(case(r));
     }
     if let Some(s) = suite {
         report.add_test_suite(s);

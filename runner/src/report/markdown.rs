@@ -14,7 +14,9 @@ pub struct MarkdownReporter {
 
 impl MarkdownReporter {
     pub fn new(dir: &Path) -> MarkdownReporter {
-        MarkdownReporter { dir: dir.to_path_buf() }
+        MarkdownReporter {
+            dir: dir.to_path_buf(),
+        }
     }
 }
 
@@ -22,7 +24,16 @@ pub fn render(results: &[TestResult], errors: &[LoadError], summary: &Summary) -
     let mut s = String::new();
     let c = &summary.counts;
     let _ = writeln!(s, "# shadowcheck report\n");
-    let _ = writeln!(s, "Backends: {}\n", summary.backends.iter().map(|b| format!("`{b}`")).collect::<Vec<_>>().join(", "));
+    let _ = writeln!(
+        s,
+        "Backends: {}\n",
+        summary
+            .backends
+            .iter()
+            .map(|b| format!("`{b}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
     let _ = writeln!(s, "| status | tests |\n|---|---:|");
     for (name, n) in [
         ("Pass", c.pass),
@@ -41,18 +52,35 @@ pub fn render(results: &[TestResult], errors: &[LoadError], summary: &Summary) -
         }
     }
     let _ = writeln!(s, "| **total** | **{}** |\n", c.total());
-    let _ = writeln!(s, "Load errors: {}. Exit code: {}.\n", summary.load_errors, summary.exit_code);
+    let _ = writeln!(
+        s,
+        "Load errors: {}. Exit code: {}.\n",
+        summary.load_errors, summary.exit_code
+    );
     for (dim, rows) in breakdown(results) {
         let _ = writeln!(s, "## By {dim}\n\n| {dim} | tests | pass | warn | fail | skip | other |\n|---|---:|---:|---:|---:|---:|---:|");
         for (k, r) in rows {
-            let _ = writeln!(s, "| `{k}` | {} | {} | {} | {} | {} | {} |", r.tests, r.pass, r.warn, r.fail, r.skip, r.other);
+            let _ = writeln!(
+                s,
+                "| `{k}` | {} | {} | {} | {} | {} | {} |",
+                r.tests, r.pass, r.warn, r.fail, r.skip, r.other
+            );
         }
         s.push('\n');
     }
     if !errors.is_empty() {
         let _ = writeln!(s, "## Load errors\n");
         for e in errors {
-            let _ = writeln!(s, "- `{}` {}: {}", e.file, e.case.as_deref().map(|c| format!("case `{c}`")).unwrap_or_default(), e.message);
+            let _ = writeln!(
+                s,
+                "- `{}` {}: {}",
+                e.file,
+                e.case
+                    .as_deref()
+                    .map(|c| format!("case `{c}`"))
+                    .unwrap_or_default(),
+                e.message
+            );
         }
         s.push('\n');
     }
@@ -63,7 +91,11 @@ pub fn render(results: &[TestResult], errors: &[LoadError], summary: &Summary) -
             let _ = writeln!(s, "```text\n{}```\n", dump(r, ""));
         }
         if dumps.len() > MAX_DUMPS {
-            let _ = writeln!(s, "... and {} more (see report.json).", dumps.len() - MAX_DUMPS);
+            let _ = writeln!(
+                s,
+                "... and {} more (see report.json).",
+                dumps.len() - MAX_DUMPS
+            );
         }
     }
     s
@@ -71,8 +103,16 @@ pub fn render(results: &[TestResult], errors: &[LoadError], summary: &Summary) -
 
 impl Reporter for MarkdownReporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
-        if let Event::RunFinished { results, load_errors, summary } = ev {
-            std::fs::write(self.dir.join("report.md"), render(results, load_errors, summary))?;
+        if let Event::RunFinished {
+            results,
+            load_errors,
+            summary,
+        } = ev
+        {
+            std::fs::write(
+                self.dir.join("report.md"),
+                render(results, load_errors, summary),
+            )?;
         }
         Ok(())
     }

@@ -42,7 +42,10 @@ pub fn num(v: f64) -> String {
 
 /// Tests whose outcome deserves a dump: anything that did not plainly pass or skip.
 pub fn wants_dump(r: &TestResult) -> bool {
-    matches!(r.outcome, Outcome::Fail | Outcome::Warn | Outcome::Crash | Outcome::Timeout) || r.status.is_improvement()
+    matches!(
+        r.outcome,
+        Outcome::Fail | Outcome::Warn | Outcome::Crash | Outcome::Timeout
+    ) || r.status.is_improvement()
 }
 
 /// The failure dump of one test: id, expected (spec value and acceptance per profile), observed
@@ -70,17 +73,33 @@ pub fn dump(r: &TestResult, indent: &str) -> String {
         let _ = writeln!(s, "{indent}  observed:  rgba ({})", ch.join(", "));
     }
     if let Some(f) = &r.footprint {
-        let _ = writeln!(s, "{indent}  footprint: Dref {} ({} texels)", num(f.dref), f.texels.len());
+        let _ = writeln!(
+            s,
+            "{indent}  footprint: Dref {} ({} texels)",
+            num(f.dref),
+            f.texels.len()
+        );
         let _ = writeln!(s, "{indent}    level texel x,y,layer  stored         Dt                   compare  weight");
         for t in &f.texels {
-            let xyz = t.xyz.map(|[x, y, z]| format!("{x},{y},{z}")).unwrap_or_else(|| "border".into());
+            let xyz = t
+                .xyz
+                .map(|[x, y, z]| format!("{x},{y},{z}"))
+                .unwrap_or_else(|| "border".into());
             let pass = match t.pass {
                 Some(true) => "pass",
                 Some(false) => "fail",
                 None => "either",
             };
-            let _ =
-                writeln!(s, "{indent}    {:<5} {:<16} {:<14} {:<20} {:<8} {}", t.level, xyz, num(t.stored), num(t.dt), pass, num(t.weight));
+            let _ = writeln!(
+                s,
+                "{indent}    {:<5} {:<16} {:<14} {:<20} {:<8} {}",
+                t.level,
+                xyz,
+                num(t.stored),
+                num(t.dt),
+                pass,
+                num(t.weight)
+            );
         }
     }
     let _ = writeln!(s, "{indent}  re-run:    {}", r.rerun_command());
@@ -101,8 +120,12 @@ pub struct Row {
 /// Counts by spec, compare func, filter and format (the dimensions of the summary tables).
 pub fn breakdown(results: &[TestResult]) -> Vec<(&'static str, BTreeMap<String, Row>)> {
     type Key = fn(&TestResult) -> &str;
-    let dims: [(&'static str, Key); 4] =
-        [("spec", |r| &r.tags.spec), ("func", |r| &r.tags.func), ("filter", |r| &r.tags.filter), ("format", |r| &r.tags.format)];
+    let dims: [(&'static str, Key); 4] = [
+        ("spec", |r| &r.tags.spec),
+        ("func", |r| &r.tags.func),
+        ("filter", |r| &r.tags.filter),
+        ("format", |r| &r.tags.format),
+    ];
     dims.iter()
         .map(|(name, key)| {
             let mut m: BTreeMap<String, Row> = BTreeMap::new();
@@ -123,7 +146,13 @@ pub fn breakdown(results: &[TestResult]) -> Vec<(&'static str, BTreeMap<String, 
 }
 
 /// The files written when a run ends (removed when a run starts, so a killed run leaves none stale).
-pub const FINAL_FILES: [&str; 5] = ["results.csv", "failures.csv", "junit.xml", "report.json", "report.md"];
+pub const FINAL_FILES: [&str; 5] = [
+    "results.csv",
+    "failures.csv",
+    "junit.xml",
+    "report.json",
+    "report.md",
+];
 
 /// Which file reporters to attach.
 #[derive(Debug, Clone)]
@@ -136,7 +165,12 @@ pub struct FileReports {
 
 impl Default for FileReports {
     fn default() -> Self {
-        FileReports { csv: true, junit: true, json: true, markdown: true }
+        FileReports {
+            csv: true,
+            junit: true,
+            json: true,
+            markdown: true,
+        }
     }
 }
 

@@ -22,7 +22,11 @@ pub struct TerminalReporter {
 
 impl TerminalReporter {
     pub fn new(profile: bool, verbose: bool) -> TerminalReporter {
-        TerminalReporter { bar: None, profile, verbose }
+        TerminalReporter {
+            bar: None,
+            profile,
+            verbose,
+        }
     }
 
     fn err_line(&self, msg: &str) {
@@ -36,11 +40,24 @@ impl TerminalReporter {
 impl Reporter for TerminalReporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
         match ev {
-            Event::RunStarted { backends, tests, out_dir } => {
-                eprintln!("shadowcheck: {tests} tests on {} -> {}", backends.join(", "), out_dir.display());
+            Event::RunStarted {
+                backends,
+                tests,
+                out_dir,
+            } => {
+                eprintln!(
+                    "shadowcheck: {tests} tests on {} -> {}",
+                    backends.join(", "),
+                    out_dir.display()
+                );
                 if *tests >= BAR_MIN_TESTS && std::io::stderr().is_terminal() {
-                    let bar = ProgressBar::with_draw_target(Some(*tests as u64), ProgressDrawTarget::stderr());
-                    if let Ok(style) = ProgressStyle::with_template("{spinner} [{elapsed_precise}] {bar:40} {pos}/{len} {msg}") {
+                    let bar = ProgressBar::with_draw_target(
+                        Some(*tests as u64),
+                        ProgressDrawTarget::stderr(),
+                    );
+                    if let Ok(style) = ProgressStyle::with_template(
+                        "{spinner} [{elapsed_precise}] {bar:40} {pos}/{len} {msg}",
+                    ) {
                         bar.set_style(style);
                     }
                     self.bar = Some(bar);
@@ -51,7 +68,11 @@ impl Reporter for TerminalReporter {
                 if e.message.starts_with(&e.file) {
                     self.err_line(&format!("error: {}", e.message));
                 } else {
-                    let case = e.case.as_deref().map(|c| format!(" case `{c}`")).unwrap_or_default();
+                    let case = e
+                        .case
+                        .as_deref()
+                        .map(|c| format!(" case `{c}`"))
+                        .unwrap_or_default();
                     self.err_line(&format!("error: {}{case}: {}", e.file, e.message));
                 }
             }
@@ -73,7 +94,11 @@ impl Reporter for TerminalReporter {
                     }
                 }
             }
-            Event::BackendFinished { backend, counts, timing } => {
+            Event::BackendFinished {
+                backend,
+                counts,
+                timing,
+            } => {
                 let line = format!(
                     "{backend}: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} improvement, {} flake",
                     counts.pass,
@@ -88,30 +113,51 @@ impl Reporter for TerminalReporter {
                 );
                 self.err_line(&line);
                 if self.profile {
-                    let rate = if timing.backend_s > 0.0 { timing.cases_sent as f64 / timing.backend_s } else { 0.0 };
+                    let rate = if timing.backend_s > 0.0 {
+                        timing.cases_sent as f64 / timing.backend_s
+                    } else {
+                        0.0
+                    };
                     self.err_line(&format!(
                         "profile {backend}: {} cases sent, {:.3} s in the backend ({rate:.0} cases/s), {:.3} s judging and reporting",
                         timing.cases_sent, timing.backend_s, timing.verdict_s
                     ));
                 }
             }
-            Event::RunFinished { results, summary, .. } => {
+            Event::RunFinished {
+                results, summary, ..
+            } => {
                 if let Some(b) = self.bar.take() {
                     b.finish_and_clear();
                 }
                 let mut out = std::io::stdout().lock();
                 for (dim, rows) in breakdown(results) {
-                    writeln!(out, "{dim:<24} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}", "tests", "pass", "warn", "fail", "skip", "other")?;
+                    writeln!(
+                        out,
+                        "{dim:<24} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}",
+                        "tests", "pass", "warn", "fail", "skip", "other"
+                    )?;
                     for (k, r) in rows {
-                        writeln!(out, "  {k:<22} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}", r.tests, r.pass, r.warn, r.fail, r.skip, r.other)?;
+                        writeln!(
+                            out,
+                            "  {k:<22} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}",
+                            r.tests, r.pass, r.warn, r.fail, r.skip, r.other
+                        )?;
                     }
                 }
-                let regressions: Vec<_> = results.iter().filter(|r| r.status.is_regression() || r.status.is_improvement()).collect();
+                let regressions: Vec<_> = results
+                    .iter()
+                    .filter(|r| r.status.is_regression() || r.status.is_improvement())
+                    .collect();
                 for r in regressions.iter().take(MAX_DUMPS) {
                     write!(out, "\n{}", dump(r, ""))?;
                 }
                 if regressions.len() > MAX_DUMPS {
-                    writeln!(out, "\n... {} more in report.md", regressions.len() - MAX_DUMPS)?;
+                    writeln!(
+                        out,
+                        "\n... {} more in report.md",
+                        regressions.len() - MAX_DUMPS
+                    )?;
                 }
                 let c = &summary.counts;
                 writeln!(

@@ -15,7 +15,10 @@ pub fn bin() -> Command {
 
 /// A fresh, empty directory for one test.
 pub fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("shadowcheck-runner-test-{}-{name}", std::process::id()));
+    let d = std::env::temp_dir().join(format!(
+        "shadowcheck-runner-test-{}-{name}",
+        std::process::id()
+    ));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
@@ -54,9 +57,20 @@ pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
     accept.insert(Profile::Strict, Acceptance(vec![Interval::point(r)]));
     accept.insert(Profile::Lenient, Acceptance(vec![Interval::point(r)]));
     let mut layout = BTreeMap::new();
-    layout.insert(ApiPath::GlslCore, [Channel::R, Channel::Unused, Channel::Unused, Channel::Unused]);
+    layout.insert(
+        ApiPath::GlslCore,
+        [
+            Channel::R,
+            Channel::Unused,
+            Channel::Unused,
+            Channel::Unused,
+        ],
+    );
     Case {
-        id: format!("gl46/2d/d16/nearest/{}/ref={dref}/texel={x},{y}", func.key()),
+        id: format!(
+            "gl46/2d/d16/nearest/{}/ref={dref}/texel={x},{y}",
+            func.key()
+        ),
         spec: Spec::Gl46,
         api: vec![ApiPath::GlslCore],
         texture: Texture {
@@ -93,7 +107,12 @@ pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
 
 /// `n` distinct cases cycling through funcs, texels and references.
 pub fn many_cases(n: usize) -> Vec<Case> {
-    let funcs = [CompareFunc::Lequal, CompareFunc::Gequal, CompareFunc::Less, CompareFunc::Greater];
+    let funcs = [
+        CompareFunc::Lequal,
+        CompareFunc::Gequal,
+        CompareFunc::Less,
+        CompareFunc::Greater,
+    ];
     (0..n)
         .map(|i| {
             let mut c = nearest_case(funcs[i % 4], (i / 4 % 2) as u32, (i / 8 % 2) as u32, 0.5);
@@ -170,7 +189,8 @@ pub fn results(dir: &Path) -> Vec<(String, String, String)> {
 
 /// report.json without the durations (which differ from run to run).
 pub fn report_without_durations(dir: &Path) -> serde_json::Value {
-    let mut v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
     for r in v["results"].as_array_mut().unwrap() {
         r.as_object_mut().unwrap().remove("duration");
     }
@@ -178,5 +198,8 @@ pub fn report_without_durations(dir: &Path) -> serde_json::Value {
 }
 
 pub fn status_of<'a>(rows: &'a [(String, String, String)], test_contains: &str) -> Vec<&'a str> {
-    rows.iter().filter(|r| r.0.contains(test_contains)).map(|r| r.1.as_str()).collect()
+    rows.iter()
+        .filter(|r| r.0.contains(test_contains))
+        .map(|r| r.1.as_str())
+        .collect()
 }

@@ -4,7 +4,15 @@ use super::*;
 
 fn mip_case(filter: Filter, values: [u32; 3]) -> Case {
     // 4x4 -> 2x2 -> 1x1 with every texel of level i equal to values[i].
-    let mut c = case2d(Spec::Gl46, Format::D16, 4, 4, vec![values[0]; 16], CompareFunc::Lequal, filter);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        4,
+        4,
+        vec![values[0]; 16],
+        CompareFunc::Lequal,
+        filter,
+    );
     c.texture.levels.push(Level {
         width: 2,
         height: 2,
@@ -58,7 +66,15 @@ fn cube_case(spec: Spec, n: u32, faces: [u32; 6]) -> Case {
     for f in faces {
         texels.extend(std::iter::repeat_n(f, (n * n) as usize));
     }
-    let mut c = case2d(spec, Format::D16, n, n, vec![], CompareFunc::Lequal, Filter::Nearest);
+    let mut c = case2d(
+        spec,
+        Format::D16,
+        n,
+        n,
+        vec![],
+        CompareFunc::Lequal,
+        Filter::Nearest,
+    );
     c.texture.target = Target::Cube;
     c.texture.levels[0] = Level {
         width: n,
@@ -110,7 +126,15 @@ fn seamless_cube_edge_in_es() {
 #[test]
 fn array_layer_rounding() {
     // 2D array, 3 layers of 1x1; only layer 2 passes. layer = clamp(⌊r + ½⌋, 0, 2).
-    let mut c = case2d(Spec::Gl46, Format::D16, 1, 1, vec![], CompareFunc::Lequal, Filter::Nearest);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        1,
+        1,
+        vec![],
+        CompareFunc::Lequal,
+        Filter::Nearest,
+    );
     c.texture.target = Target::T2dArray;
     c.texture.levels[0] = Level {
         width: 1,
@@ -145,7 +169,15 @@ fn rectangle_uses_unnormalized_coordinates() {
 fn one_d_array_and_cube_array_layers() {
     // 1D array: layer from t (§8.14.2), LINEAR along s only: 2 texels [fail, pass] per layer,
     // layer 1 = [pass, pass]. s = ½ -> α = ½.
-    let mut c = case2d(Spec::Gl46, Format::D16, 2, 1, vec![], CompareFunc::Lequal, Filter::Linear);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        2,
+        1,
+        vec![],
+        CompareFunc::Lequal,
+        Filter::Linear,
+    );
     c.texture.target = Target::T1dArray;
     c.texture.levels[0] = Level {
         width: 2,
@@ -161,7 +193,15 @@ fn one_d_array_and_cube_array_layers() {
     // Cube array with 2 cubes; only cube 1's +Z face passes. Cube index from lookup.layer.
     let mut texels = vec![0u32; 12];
     texels[6 + 4] = 65535;
-    let mut c = case2d(Spec::Gl46, Format::D16, 1, 1, vec![], CompareFunc::Lequal, Filter::Nearest);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        1,
+        1,
+        vec![],
+        CompareFunc::Lequal,
+        Filter::Nearest,
+    );
     c.texture.target = Target::CubeArray;
     c.texture.levels[0] = Level {
         width: 1,
@@ -218,7 +258,12 @@ fn wrap_modes_end_to_end() {
         SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::GlslCore),
         Err(SoftError::Wrap { .. })
     ));
-    assert_eq!(SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::FixedFunction).unwrap(), [1.0; 4]);
+    assert_eq!(
+        SoftUnit::new(Spec::Gl46)
+            .sample(&c, ApiPath::FixedFunction)
+            .unwrap(),
+        [1.0; 4]
+    );
 }
 
 #[test]
@@ -231,7 +276,9 @@ fn footprint_weights_sum_to_one() {
     assert_eq!(fp.texels.len(), 8);
     let sum: f64 = fp.texels.iter().map(|t| t.weight).sum();
     assert!((sum - 1.0).abs() < 1e-6, "{sum}");
-    assert!(fp.texels[..4].iter().all(|t| t.level == 0) && fp.texels[4..].iter().all(|t| t.level == 1));
+    assert!(
+        fp.texels[..4].iter().all(|t| t.level == 0) && fp.texels[4..].iter().all(|t| t.level == 1)
+    );
     let mut c = cube_case(Spec::Gles32, 2, [0, 0, 0, 0, 65535, 0]);
     c.sampler.min_filter = Filter::Linear;
     c.sampler.mag_filter = Filter::Linear;

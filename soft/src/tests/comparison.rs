@@ -46,7 +46,9 @@ fn linear_pcf_weights() {
     c.api = vec![ApiPath::FixedFunction];
     c.sampler.compare_func = CompareFunc::LequalRSgix;
     assert_eq!(
-        SoftUnit::new(Spec::Sgix).sample(&c, ApiPath::FixedFunction).unwrap(),
+        SoftUnit::new(Spec::Sgix)
+            .sample(&c, ApiPath::FixedFunction)
+            .unwrap(),
         [0.625, 0.625, 0.625, 1.0]
     );
 }
@@ -74,7 +76,15 @@ fn clamping_differs_by_spec_and_format() {
     let mut c = float_case(Spec::Gl46, vec![0.0], CompareFunc::Gequal);
     c.lookup.dref = -0.5;
     assert_eq!(r(&c), 0.0);
-    let mut c = case2d(Spec::Gl46, Format::D16, 1, 1, vec![0], CompareFunc::Gequal, Filter::Nearest);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        1,
+        1,
+        vec![0],
+        CompareFunc::Gequal,
+        Filter::Nearest,
+    );
     c.lookup.dref = -0.5;
     assert_eq!(r(&c), 1.0);
     // EXT_shadow_samplers always clamps: same as the fixed-point case.
@@ -94,14 +104,30 @@ fn border_depth_and_its_clamp() {
     c.lookup.dref = 1.2;
     assert_eq!(r(&c), 1.0);
     // D16: Dt and Dref both clamp to 1.0, and 1 < 1 fails.
-    let mut c = case2d(Spec::Gl46, Format::D16, 2, 1, vec![0, 0], CompareFunc::Less, Filter::Nearest);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        2,
+        1,
+        vec![0, 0],
+        CompareFunc::Less,
+        Filter::Nearest,
+    );
     c.sampler.wrap_s = Wrap::ClampToBorder;
     c.sampler.border = [1.5, 0.0, 0.0, 0.0];
     c.lookup.coord = [1.5, 0.5, 0.0, 1.0];
     c.lookup.dref = 1.2;
     assert_eq!(r(&c), 0.0);
     // Half-border LINEAR footprint: s = 1.0 on 2 texels: u − ½ = 1.5 -> i0 = 1, i1 = 2 (border), α = 0.5.
-    let mut c = case2d(Spec::Gl46, Format::D16, 2, 1, vec![0, 0], CompareFunc::Lequal, Filter::Linear);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        2,
+        1,
+        vec![0, 0],
+        CompareFunc::Lequal,
+        Filter::Linear,
+    );
     c.sampler.wrap_s = Wrap::ClampToBorder;
     c.sampler.border = [1.0, 0.0, 0.0, 0.0];
     c.lookup.coord = [1.0, 0.5, 0.0, 1.0];
@@ -123,7 +149,9 @@ fn ambient_and_fail_values() {
     );
     c.sampler.fail_value = Some(0.25);
     assert_eq!(
-        SoftUnit::new(Spec::ArbAmbient).sample(&c, ApiPath::FixedFunction).unwrap(),
+        SoftUnit::new(Spec::ArbAmbient)
+            .sample(&c, ApiPath::FixedFunction)
+            .unwrap(),
         [0.625, 0.625, 0.625, 1.0]
     );
     // SGIX_shadow_ambient: SHADOW_AMBIENT_SGIX replaces 0.0 for a texel in shadow (test failed).
@@ -144,7 +172,15 @@ fn ambient_and_fail_values() {
 
 #[test]
 fn layouts_per_api_path() {
-    let mut c = case2d(Spec::Gl46, Format::D16, 1, 1, vec![65535], CompareFunc::Lequal, Filter::Nearest);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        1,
+        1,
+        vec![65535],
+        CompareFunc::Lequal,
+        Filter::Nearest,
+    );
     c.api = vec![
         ApiPath::FixedFunction,
         ApiPath::ArbFp,
@@ -180,26 +216,45 @@ fn incomplete_textures_return_zero() {
         Filter::LinearMipmapLinear,
     );
     assert_eq!(
-        SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::GlslCore).unwrap(),
+        SoftUnit::new(Spec::Gl46)
+            .sample(&c, ApiPath::GlslCore)
+            .unwrap(),
         [0.0, 0.0, 0.0, 1.0]
     );
     assert_eq!(
-        SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::FixedFunction).unwrap(),
+        SoftUnit::new(Spec::Gl46)
+            .sample(&c, ApiPath::FixedFunction)
+            .unwrap(),
         [0.0, 0.0, 0.0, 1.0]
     );
     let u = SoftUnit::new(Spec::Gl46).with_fault(Fault::IncompleteNotZero);
-    assert_eq!(u.sample(&c, ApiPath::GlslCore).unwrap(), [1.0, 0.0, 0.0, 1.0]);
+    assert_eq!(
+        u.sample(&c, ApiPath::GlslCore).unwrap(),
+        [1.0, 0.0, 0.0, 1.0]
+    );
     // ES 3.2 §8.17: sized depth, compare NONE, LINEAR -> incomplete.
-    let mut c = case2d(Spec::Gles32, Format::D16, 1, 1, vec![65535], CompareFunc::Lequal, Filter::Linear);
+    let mut c = case2d(
+        Spec::Gles32,
+        Format::D16,
+        1,
+        1,
+        vec![65535],
+        CompareFunc::Lequal,
+        Filter::Linear,
+    );
     c.sampler.compare_mode = CompareMode::None;
     assert_eq!(
-        SoftUnit::new(Spec::Gles32).sample(&c, ApiPath::Es300).unwrap(),
+        SoftUnit::new(Spec::Gles32)
+            .sample(&c, ApiPath::Es300)
+            .unwrap(),
         [0.0, 0.0, 0.0, 1.0]
     );
     c.sampler.min_filter = Filter::Nearest;
     c.sampler.mag_filter = Filter::Nearest;
     assert_eq!(
-        SoftUnit::new(Spec::Gles32).sample(&c, ApiPath::Es300).unwrap(),
+        SoftUnit::new(Spec::Gles32)
+            .sample(&c, ApiPath::Es300)
+            .unwrap(),
         [1.0, 0.0, 0.0, 1.0]
     );
 }
@@ -207,15 +262,33 @@ fn incomplete_textures_return_zero() {
 #[test]
 fn colour_and_stencil_bypass_comparison() {
     // §8.23.1: a colour texture bypasses the comparison: r = 51/255 = 0.2.
-    let mut c = case2d(Spec::Gl46, Format::R8, 1, 1, vec![51], CompareFunc::Never, Filter::Nearest);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::R8,
+        1,
+        1,
+        vec![51],
+        CompareFunc::Never,
+        Filter::Nearest,
+    );
     assert_eq!(r(&c), 0.2);
     c.api = vec![ApiPath::FixedFunction];
     assert_eq!(
-        SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::FixedFunction).unwrap(),
+        SoftUnit::new(Spec::Gl46)
+            .sample(&c, ApiPath::FixedFunction)
+            .unwrap(),
         [0.2, 0.0, 0.0, 1.0]
     );
     // DEPTH_STENCIL with STENCIL_INDEX mode: r = St.
-    let mut c = case2d(Spec::Gl46, Format::D24S8, 1, 1, vec![0], CompareFunc::Never, Filter::Nearest);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D24S8,
+        1,
+        1,
+        vec![0],
+        CompareFunc::Never,
+        Filter::Nearest,
+    );
     c.texture.levels[0].stencil = Some(vec![7]);
     c.sampler.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
     assert_eq!(r(&c), 7.0);
@@ -261,12 +334,28 @@ fn nan_reference() {
 
 #[test]
 fn errors_name_what_the_spec_lacks() {
-    let c = case2d(Spec::Arb, Format::D16, 1, 1, vec![0], CompareFunc::Less, Filter::Nearest);
+    let c = case2d(
+        Spec::Arb,
+        Format::D16,
+        1,
+        1,
+        vec![0],
+        CompareFunc::Less,
+        Filter::Nearest,
+    );
     assert!(matches!(
         SoftUnit::new(Spec::Arb).sample(&c, ApiPath::FixedFunction),
         Err(SoftError::CompareFunc { .. })
     ));
-    let c = case2d(Spec::Gl46, Format::D16, 1, 1, vec![0], CompareFunc::Less, Filter::Nearest);
+    let c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        1,
+        1,
+        vec![0],
+        CompareFunc::Less,
+        Filter::Nearest,
+    );
     assert!(matches!(
         SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::Es300),
         Err(SoftError::ApiPath { .. })
@@ -279,9 +368,25 @@ fn errors_name_what_the_spec_lacks() {
 
 #[test]
 fn batch_matches_single_samples() {
-    let mut a = case2d(Spec::Gl46, Format::D16, 1, 1, vec![65535], CompareFunc::Lequal, Filter::Nearest);
+    let mut a = case2d(
+        Spec::Gl46,
+        Format::D16,
+        1,
+        1,
+        vec![65535],
+        CompareFunc::Lequal,
+        Filter::Nearest,
+    );
     a.api = vec![ApiPath::GlslCore, ApiPath::FixedFunction];
-    let b = case2d(Spec::Gles32, Format::D16, 1, 1, vec![0], CompareFunc::Lequal, Filter::Nearest);
+    let b = case2d(
+        Spec::Gles32,
+        Format::D16,
+        1,
+        1,
+        vec![0],
+        CompareFunc::Lequal,
+        Filter::Nearest,
+    );
     let mut out = Vec::new();
     SoftUnit::new(Spec::Gl46).sample_batch(&[a.clone(), b], &mut out);
     assert_eq!(out.len(), 3);
@@ -291,12 +396,23 @@ fn batch_matches_single_samples() {
     );
     assert_eq!(out[1].rgba, Ok([1.0, 1.0, 1.0, 1.0]));
     assert!(matches!(out[2].rgba, Err(SoftError::SpecMismatch { .. })));
-    assert_eq!(out[1].rgba, SoftUnit::new(Spec::Gl46).sample(&a, ApiPath::FixedFunction));
+    assert_eq!(
+        out[1].rgba,
+        SoftUnit::new(Spec::Gl46).sample(&a, ApiPath::FixedFunction)
+    );
 }
 
 #[test]
 fn raw_lookup_api() {
-    let c = case2d(Spec::Gl46, Format::D16, 2, 1, vec![0, 65535], CompareFunc::Lequal, Filter::Linear);
+    let c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        2,
+        1,
+        vec![0, 65535],
+        CompareFunc::Lequal,
+        Filter::Linear,
+    );
     let u = SoftUnit::new(Spec::Gl46);
     let tex = u.prepare_texture(&c).unwrap();
     let st = u.sampler_state(&c, &tex).unwrap();
@@ -311,10 +427,23 @@ fn raw_lookup_api() {
 fn filter_faults_change_results() {
     // 2x1 [fail, pass] (Dt 0, 1), s = 0.5: PCF gives ½; filter-then-compare compares Dt = ½ with
     // Dref ½ under LEQUAL -> 1; half-texel-off reads u = 1 -> i0 = 1, α = 0 -> 1.
-    let mut c = case2d(Spec::Gl46, Format::D16, 2, 1, vec![0, 65535], CompareFunc::Lequal, Filter::Linear);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        2,
+        1,
+        vec![0, 65535],
+        CompareFunc::Lequal,
+        Filter::Linear,
+    );
     c.lookup.dref = 0.5;
     assert_eq!(r(&c), 0.5);
-    let f = |fault| SoftUnit::new(Spec::Gl46).with_fault(fault).sample(&c, ApiPath::GlslCore).unwrap()[0];
+    let f = |fault| {
+        SoftUnit::new(Spec::Gl46)
+            .with_fault(fault)
+            .sample(&c, ApiPath::GlslCore)
+            .unwrap()[0]
+    };
     assert_eq!(f(Fault::FilterThenCompare), 1.0);
     assert_eq!(f(Fault::PcfHalfTexelOff), 1.0);
     assert_eq!(f(Fault::LequalGequalSwapped), 0.5);
@@ -338,7 +467,10 @@ fn every_function_of_every_spec_end_to_end() {
         (C::Always, [true, true, true]),
         (C::Never, [false, false, false]),
     ];
-    let sgix: [(C, [bool; 3]); 2] = [(C::LequalRSgix, [false, true, true]), (C::GequalRSgix, [true, true, false])];
+    let sgix: [(C, [bool; 3]); 2] = [
+        (C::LequalRSgix, [false, true, true]),
+        (C::GequalRSgix, [true, true, false]),
+    ];
     for spec in Spec::ALL.iter().copied() {
         let rows: Vec<(C, [bool; 3])> = match spec {
             Spec::Sgix | Spec::SgixAmbient => sgix.to_vec(),
@@ -352,10 +484,22 @@ fn every_function_of_every_spec_end_to_end() {
         };
         for (func, want) in rows {
             for (dref, pass) in refs.iter().zip(want) {
-                let mut c = case2d(spec, Format::D16, 1, 1, vec![d16(0.6)], func, Filter::Nearest);
+                let mut c = case2d(
+                    spec,
+                    Format::D16,
+                    1,
+                    1,
+                    vec![d16(0.6)],
+                    func,
+                    Filter::Nearest,
+                );
                 c.sampler.fail_value = Some(0.25);
                 c.lookup.dref = *dref;
-                assert_eq!(r(&c), if pass { 1.0 } else { fail }, "{spec} {func} Dref {dref}");
+                assert_eq!(
+                    r(&c),
+                    if pass { 1.0 } else { fail },
+                    "{spec} {func} Dref {dref}"
+                );
             }
         }
     }
@@ -376,7 +520,9 @@ fn compare_none_returns_filtered_depth() {
     );
     c.sampler.compare_mode = CompareMode::None;
     c.sampler.depth_texture_mode = Some(DepthTextureMode::Intensity);
-    let got = SoftUnit::new(Spec::Gl46).sample(&c, ApiPath::FixedFunction).unwrap();
+    let got = SoftUnit::new(Spec::Gl46)
+        .sample(&c, ApiPath::FixedFunction)
+        .unwrap();
     assert!(got.iter().all(|v| (v - 0.4).abs() < 1e-6), "{got:?}");
 }
 
@@ -396,7 +542,11 @@ fn footprint_reports_texels_weights_and_outcomes() {
     let fp = SoftUnit::new(Spec::Gl46).footprint(&c).unwrap();
     assert_eq!(fp.dref, 0.5f32 as f64);
     type Row = (Option<[u32; 3]>, f64, Option<bool>, f64);
-    let got: Vec<Row> = fp.texels.iter().map(|t| (t.xyz, t.stored, t.pass, t.weight)).collect();
+    let got: Vec<Row> = fp
+        .texels
+        .iter()
+        .map(|t| (t.xyz, t.stored, t.pass, t.weight))
+        .collect();
     assert_eq!(
         got,
         vec![
@@ -407,11 +557,22 @@ fn footprint_reports_texels_weights_and_outcomes() {
         ]
     );
     // Border texels have no location; trilinear weights include the level blend.
-    let mut c = case2d(Spec::Gl46, Format::D16, 2, 1, vec![0, 0], CompareFunc::Lequal, Filter::Nearest);
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        2,
+        1,
+        vec![0, 0],
+        CompareFunc::Lequal,
+        Filter::Nearest,
+    );
     c.sampler.wrap_s = Wrap::ClampToBorder;
     c.sampler.border = [1.0, 0.0, 0.0, 0.0];
     c.lookup.coord[0] = 1.5;
     let fp = SoftUnit::new(Spec::Gl46).footprint(&c).unwrap();
     assert_eq!(fp.texels.len(), 1);
-    assert_eq!((fp.texels[0].xyz, fp.texels[0].dt, fp.texels[0].pass), (None, 1.0, Some(true)));
+    assert_eq!(
+        (fp.texels[0].xyz, fp.texels[0].dt, fp.texels[0].pass),
+        (None, 1.0, Some(true))
+    );
 }

@@ -8,7 +8,15 @@ mod addressing;
 mod comparison;
 
 /// A 2D case on `spec` with one level of `w`×`h` unorm texels.
-pub(super) fn case2d(spec: Spec, format: Format, w: u32, h: u32, texels: Vec<u32>, func: CompareFunc, filter: Filter) -> Case {
+pub(super) fn case2d(
+    spec: Spec,
+    format: Format,
+    w: u32,
+    h: u32,
+    texels: Vec<u32>,
+    func: CompareFunc,
+    filter: Filter,
+) -> Case {
     let api = match spec {
         Spec::Es2Ext => ApiPath::Es100Ext,
         Spec::Gles32 => ApiPath::Es300,

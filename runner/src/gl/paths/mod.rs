@@ -347,7 +347,10 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
     forms.sort_by_key(|(f, _)| !preferred(f));
     let (form, how) = forms
         .into_iter()
-        .find(|(f, _)| available(path, kind, t, *f, proj) && (offset == [0, 0] || offset_available(path, kind, t, *f)))
+        .find(|(f, _)| {
+            available(path, kind, t, *f, proj)
+                && (offset == [0, 0] || offset_available(path, kind, t, *f))
+        })
         .ok_or_else(|| {
             format!(
                 "{} has no {}{:?} lookup on a {} texture{}",

@@ -131,12 +131,30 @@ fn a_preferred_lookup_form_goes_first_where_it_exists() {
     assert_eq!(form(LookupForm::Grad), LodForm::Grad);
     assert_eq!(form(LookupForm::Implicit), LodForm::Implicit(false));
     // GLSL 1.20 has only the implicit form: the preference cannot change it.
-    assert_eq!(plan_with(ApiPath::Glsl120, &c, LookupForm::Grad).unwrap().key.form, LodForm::Implicit(false));
+    assert_eq!(
+        plan_with(ApiPath::Glsl120, &c, LookupForm::Grad)
+            .unwrap()
+            .key
+            .form,
+        LodForm::Implicit(false)
+    );
     // A shader bias: the bias form by default, the folded LOD when textureLod is preferred.
     let mut b = c.clone();
     b.lookup.bias = 1.0;
-    assert_eq!(plan_with(ApiPath::GlslCore, &b, LookupForm::Auto).unwrap().key.form, LodForm::Implicit(true));
-    assert_eq!(plan_with(ApiPath::GlslCore, &b, LookupForm::Lod).unwrap().key.form, LodForm::Lod);
+    assert_eq!(
+        plan_with(ApiPath::GlslCore, &b, LookupForm::Auto)
+            .unwrap()
+            .key
+            .form,
+        LodForm::Implicit(true)
+    );
+    assert_eq!(
+        plan_with(ApiPath::GlslCore, &b, LookupForm::Lod)
+            .unwrap()
+            .key
+            .form,
+        LodForm::Lod
+    );
 }
 
 #[test]
@@ -178,18 +196,69 @@ fn fixed_function_keeps_exact_coordinates_unless_lambda_matters() {
 fn offset_lookups_exist_per_glsl_4_60_8_9_2() {
     use SamplerKind::Shadow;
     // 2D: every form; rectangles: no LOD form, no bias; 2D-array shadow: gradients only; ES: no 1D.
-    assert!(offset_available(ApiPath::GlslCore, Shadow, Target::T2d, LodForm::Implicit(true)));
-    assert!(offset_available(ApiPath::GlslCore, Shadow, Target::T1dArray, LodForm::Lod));
-    assert!(!offset_available(ApiPath::GlslCore, Shadow, Target::Rect, LodForm::Lod));
-    assert!(!offset_available(ApiPath::GlslCore, Shadow, Target::Rect, LodForm::Implicit(true)));
-    assert!(offset_available(ApiPath::GlslCore, Shadow, Target::Rect, LodForm::Grad));
-    assert!(!offset_available(ApiPath::GlslCore, Shadow, Target::T2dArray, LodForm::Implicit(false)));
-    assert!(offset_available(ApiPath::Es300, Shadow, Target::T2dArray, LodForm::Grad));
-    assert!(!offset_available(ApiPath::Es300, Shadow, Target::T1d, LodForm::Lod));
-    assert!(!offset_available(ApiPath::GlslCore, Shadow, Target::Cube, LodForm::Grad));
+    assert!(offset_available(
+        ApiPath::GlslCore,
+        Shadow,
+        Target::T2d,
+        LodForm::Implicit(true)
+    ));
+    assert!(offset_available(
+        ApiPath::GlslCore,
+        Shadow,
+        Target::T1dArray,
+        LodForm::Lod
+    ));
+    assert!(!offset_available(
+        ApiPath::GlslCore,
+        Shadow,
+        Target::Rect,
+        LodForm::Lod
+    ));
+    assert!(!offset_available(
+        ApiPath::GlslCore,
+        Shadow,
+        Target::Rect,
+        LodForm::Implicit(true)
+    ));
+    assert!(offset_available(
+        ApiPath::GlslCore,
+        Shadow,
+        Target::Rect,
+        LodForm::Grad
+    ));
+    assert!(!offset_available(
+        ApiPath::GlslCore,
+        Shadow,
+        Target::T2dArray,
+        LodForm::Implicit(false)
+    ));
+    assert!(offset_available(
+        ApiPath::Es300,
+        Shadow,
+        Target::T2dArray,
+        LodForm::Grad
+    ));
+    assert!(!offset_available(
+        ApiPath::Es300,
+        Shadow,
+        Target::T1d,
+        LodForm::Lod
+    ));
+    assert!(!offset_available(
+        ApiPath::GlslCore,
+        Shadow,
+        Target::Cube,
+        LodForm::Grad
+    ));
     // The plan falls back to the form that has an offset variant.
     let mut c = case(Target::T2dArray, 4, 4, 2);
     c.lookup.offset = [1, 0, 0];
     assert_eq!(plan(ApiPath::GlslCore, &c).unwrap().key.form, LodForm::Grad);
-    assert_eq!(plan_with(ApiPath::GlslCore, &c, LookupForm::Implicit).unwrap().key.form, LodForm::Grad);
+    assert_eq!(
+        plan_with(ApiPath::GlslCore, &c, LookupForm::Implicit)
+            .unwrap()
+            .key
+            .form,
+        LodForm::Grad
+    );
 }
