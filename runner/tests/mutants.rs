@@ -22,7 +22,7 @@ fn smoke() -> Vec<Case> {
 fn correct_unit_has_no_kill_and_the_lequal_gequal_swap_is_killed() {
     let cases = smoke();
     let suite = Suite::new(cases.clone()).unwrap();
-    let base = suite.baseline();
+    let base = suite.unmutated();
     assert_eq!(base.fail, 0, "the correct unit fails: {:?}", base.failures);
     assert_eq!(base.warn, 0);
     assert!(base.pass > 0);
@@ -160,7 +160,7 @@ fn run_reports_score_matrix_and_markdown() {
     );
     assert_eq!(r.killed + r.warn_only + r.survived, 3);
     assert_eq!(r.score, 100.0 * r.killed as f64 / 3.0);
-    assert!(r.baseline.ok());
+    assert!(r.unmutated.ok());
     let md = render::markdown(&r, "shadowcheck mutants --grid smoke");
     assert!(md.contains("| 1 | `lequal-gequal-swapped` |"), "{md}");
     let min = r.mutants[0].minimal.as_ref().unwrap();
@@ -209,7 +209,7 @@ fn cli_runs_one_mutant_on_the_smoke_grid_and_writes_markdown() {
             "lequal-gequal-swapped",
             "--json",
             "-q",
-            "-o",
+            "--markdown",
         ])
         .arg(&md)
         .output()
@@ -223,7 +223,7 @@ fn cli_runs_one_mutant_on_the_smoke_grid_and_writes_markdown() {
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["killed"], 1);
     assert_eq!(v["score"], 100.0);
-    assert_eq!(v["baseline"]["fail"], 0);
+    assert_eq!(v["unmutated"]["fail"], 0);
     assert_eq!(v["mutants"][0]["status"], "killed");
     assert!(v["mutants"][0]["minimal"]["case"].as_str().is_some());
     let text = std::fs::read_to_string(&md).unwrap();
@@ -292,8 +292,8 @@ fn the_committed_default_fixtures_kill_every_observable_mutant() {
         String::from_utf8_lossy(&o.stderr)
     );
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert_eq!(v["baseline"]["fail"], 0);
-    assert_eq!(v["baseline"]["warn"], 0);
+    assert_eq!(v["unmutated"]["fail"], 0);
+    assert_eq!(v["unmutated"]["warn"], 0);
     let ms = v["mutants"].as_array().unwrap();
     assert_eq!(ms.len(), Fault::ALL.len());
     for m in ms {
@@ -309,6 +309,6 @@ fn the_committed_default_fixtures_kill_every_observable_mutant() {
     assert_eq!(v["score_observable"], 100.0);
     assert!(
         std::fs::read_to_string(&copy).unwrap() == std::fs::read_to_string(&readme).unwrap(),
-        "the kill matrix in README.md is stale: run `cargo run --release -- mutants -o reports/MUTANTS.md --update-readme README.md`"
+        "the kill matrix in README.md is stale: run `cargo run --release -- mutants --markdown reports/MUTANTS.md --update-readme README.md`"
     );
 }

@@ -175,7 +175,7 @@ pub fn document(rep: &Report, old: Option<&str>) -> String {
         }
     }
     format!(
-        "# shadowcheck bench\n\nWritten by `shadowcheck bench -o reports/BENCH.md`.\n\n{}",
+        "# shadowcheck bench\n\nWritten by `shadowcheck bench --markdown reports/BENCH.md`.\n\n{}",
         block(rep)
     )
 }

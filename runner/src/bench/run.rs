@@ -17,8 +17,8 @@ pub struct Options {
     pub quick: bool,
     /// Keep GL backends whose name contains one of these (`llvmpipe`, `egl:zink:core`); empty = all.
     pub backends: Vec<String>,
-    /// The default fixtures (a directory, or one file).
-    pub fixtures: PathBuf,
+    /// The fixtures (directories or files; `--fixtures` repeated).
+    pub fixtures: Vec<PathBuf>,
     /// The `shadowcheck` executable (suite children).
     pub exe: PathBuf,
 }
@@ -76,7 +76,7 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
     let load_avg = Machine::describe(None).load_average;
 
     progress("oracle: loading the default fixtures");
-    let set = crate::run::load_cases(std::slice::from_ref(&o.fixtures));
+    let set = crate::run::load_cases(&o.fixtures);
     let mut cases: Vec<_> = set.cases.into_iter().map(|l| l.case).collect();
     if o.quick {
         cases = cases.into_iter().step_by(10).collect();
@@ -85,7 +85,7 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
         unavailable.push(Unavailable {
             what: "oracle".into(),
             backend: None,
-            reason: format!("no case loaded from {}", o.fixtures.display()),
+            reason: format!("no case loaded from {}", display_paths(&o.fixtures)),
         });
     } else {
         progress(&format!("oracle: {} cases, one thread", cases.len()));
@@ -108,15 +108,19 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
     } else {
         Duration::from_secs(1)
     };
-    let e2e_fixtures = if o.quick {
-        let one = o.fixtures.join("gl46/2d/nearest.json");
-        if one.is_file() {
-            vec![one]
-        } else {
-            nearest_2d_fixtures(&o.fixtures)
-        }
-    } else {
-        nearest_2d_fixtures(&o.fixtures)
+    let all_2d: Vec<PathBuf> = o
+        .fixtures
+        .iter()
+        .flat_map(|f| nearest_2d_fixtures(f))
+        .collect();
+    let e2e_fixtures = match o
+        .fixtures
+        .iter()
+        .map(|f| f.join("gl46/2d/nearest.json"))
+        .find(|p| p.is_file())
+    {
+        Some(one) if o.quick => vec![one],
+        _ => all_2d,
     };
     let mut available: Vec<String> = Vec::new();
     for name in candidates(o) {
@@ -241,7 +245,7 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
     let suite_fixtures = if o.quick {
         e2e_fixtures.clone()
     } else {
-        vec![o.fixtures.clone()]
+        o.fixtures.clone()
     };
     let what = if o.quick {
         "2D NEAREST fixtures (quick)"
@@ -374,4 +378,10 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
         rows,
         unavailable,
     }
+}
+
+/// `a, b` for messages naming several fixture paths.
+fn display_paths(paths: &[PathBuf]) -> String {
+    let v: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    v.join(", ")
 }

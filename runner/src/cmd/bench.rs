@@ -20,21 +20,23 @@ pub struct Args {
     /// Only GL backends whose name contains this (repeatable): `llvmpipe`, `egl:zink:core`.
     #[arg(long = "backend", short = 'b', value_name = "B")]
     backends: Vec<String>,
-    /// The default fixtures. Default: cases/fixtures.
+    /// Fixture file or directory (repeatable). Default: cases/fixtures.
     #[arg(long, value_name = "PATH", default_value = super::run::DEFAULT_FIXTURES)]
-    fixtures: PathBuf,
+    fixtures: Vec<PathBuf>,
     /// Also write the Markdown report (table + machine) to FILE, e.g. reports/BENCH.md; only the
     /// generated block of an existing file is replaced.
-    #[arg(short = 'o', long = "output", value_name = "FILE")]
-    output: Option<PathBuf>,
-    /// Render a report written earlier by `--json` (table, `-o`) instead of measuring.
+    #[arg(long, value_name = "FILE")]
+    markdown: Option<PathBuf>,
+    /// Render a report written earlier by `--json` (table, `--markdown`) instead of measuring.
     #[arg(long, value_name = "FILE")]
     from_json: Option<PathBuf>,
     /// (internal) Measure the bare-draw floor of this GL backend in this process and print JSON.
     #[arg(long, hide = true, value_name = "NAME")]
     floor_child: Option<String>,
+    /// (internal) Side of the floor child's square target, in pixels.
     #[arg(long, hide = true, default_value_t = 1024)]
     floor_size: i32,
+    /// (internal) Seconds the floor child measures for.
     #[arg(long, hide = true, default_value_t = 1.0)]
     floor_seconds: f64,
 }
@@ -68,7 +70,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
         None => bench::run::run(&opts, &mut progress),
     };
-    if let Some(path) = &a.output {
+    if let Some(path) = &a.markdown {
         let old = std::fs::read_to_string(path).ok();
         std::fs::write(path, markdown::document(&report, old.as_deref()))
             .with_context(|| format!("writing {}", path.display()))?;

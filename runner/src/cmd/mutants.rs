@@ -14,9 +14,9 @@ use std::time::Instant;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Fixture file or directory. Default: cases/fixtures.
+    /// Fixture file or directory (repeatable). Default: cases/fixtures.
     #[arg(long, value_name = "PATH")]
-    fixtures: Option<PathBuf>,
+    fixtures: Vec<PathBuf>,
     /// Use a named grid generated in memory (smoke, default, exhaustive) instead of fixture files.
     #[arg(long, value_name = "NAME", conflicts_with = "fixtures")]
     grid: Option<String>,
@@ -30,8 +30,8 @@ pub struct Args {
     #[arg(long)]
     json: bool,
     /// Also write the Markdown report (kill matrix, score, survivors) to FILE.
-    #[arg(short = 'o', long = "output", value_name = "FILE")]
-    output: Option<PathBuf>,
+    #[arg(long, value_name = "FILE")]
+    markdown: Option<PathBuf>,
     /// Rewrite the kill-matrix section of FILE (between the `mutants:begin` / `mutants:end`
     /// markers, e.g. README.md); the rest of the file is kept.
     #[arg(long, value_name = "FILE")]
@@ -47,7 +47,7 @@ pub struct Args {
 /// The command line as it would be typed to reproduce the run (for the report header).
 fn command_line(a: &Args) -> String {
     let mut s = String::from("shadowcheck mutants");
-    if let Some(f) = &a.fixtures {
+    for f in &a.fixtures {
         s += &format!(" --fixtures {}", f.display());
     }
     if let Some(g) = &a.grid {
@@ -56,8 +56,8 @@ fn command_line(a: &Args) -> String {
     for m in &a.mutant {
         s += &format!(" --mutant {m}");
     }
-    if let Some(o) = &a.output {
-        s += &format!(" -o {}", o.display());
+    if let Some(o) = &a.markdown {
+        s += &format!(" --markdown {}", o.display());
     }
     if let Some(r) = &a.update_readme {
         s += &format!(" --update-readme {}", r.display());
@@ -87,20 +87,23 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             )
         }
         None => {
-            let path = a
-                .fixtures
-                .clone()
-                .unwrap_or_else(|| PathBuf::from(super::run::DEFAULT_FIXTURES));
-            let files = shadowcheck_cases::fixtures::load_path(&path).with_context(|| {
-                format!(
-                    "loading fixtures (generate them with `shadowcheck gen --grid default -o {}`)",
-                    path.display()
-                )
-            })?;
-            (
-                path.display().to_string(),
-                files.into_iter().flat_map(|(_, f)| f.cases).collect(),
-            )
+            let paths = if a.fixtures.is_empty() {
+                vec![PathBuf::from(super::run::DEFAULT_FIXTURES)]
+            } else {
+                a.fixtures.clone()
+            };
+            let mut cases = Vec::new();
+            for path in &paths {
+                let files = shadowcheck_cases::fixtures::load_path(path).with_context(|| {
+                    format!(
+                        "loading fixtures (generate them with `shadowcheck gen --grid default -o {}`)",
+                        path.display()
+                    )
+                })?;
+                cases.extend(files.into_iter().flat_map(|(_, f)| f.cases));
+            }
+            let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+            (names.join(", "), cases)
         }
     };
     if !a.quiet {
@@ -141,7 +144,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     } else {
         print!("{}", render::table(&report));
     }
-    if let Some(path) = &a.output {
+    if let Some(path) = &a.markdown {
         std::fs::write(path, render::markdown(&report, &command_line(&a)))
             .with_context(|| format!("writing {}", path.display()))?;
         if !a.quiet {
@@ -170,10 +173,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             eprintln!("mutants: updated the kill matrix in {}", path.display());
         }
     }
-    Ok(if !report.baseline.ok() {
+    Ok(if !report.unmutated.ok() {
         eprintln!(
             "mutants: the correct unit fails {} test(s); fix the unit or the fixtures first",
-            report.baseline.fail
+            report.unmutated.fail
         );
         ExitCode::from(2)
     } else if report.killed + report.unobservable < report.mutants.len() {

@@ -13,7 +13,7 @@
 //!
 //! A mutant is **killed** when at least one test is Fail; **warn-only** when none fails but at least
 //! one is Warn (a weaker kill: a CI gating on Fail would not notice); otherwise it **survived**.
-//! The mutation score is killed / mutants. Before the mutants, the correct unit (the *baseline*)
+//! The mutation score is killed / mutants. Before the mutants, the correct unit (the *unmutated* unit)
 //! must have no Fail at all: otherwise the suite or the unit is wrong and the score means nothing.
 //!
 //! The **minimal killing case** of a mutant is, among its killing cases, the one with the smallest
@@ -28,8 +28,8 @@
 //! (the witness case, or its family, belongs in the grid); a witness inside the acceptance set means
 //! the fault is not observable through the API on that case either.
 //!
-//! Speed: each mutant samples every test once; observations bit-identical to the baseline's are not
-//! judged again (they have the baseline's verdict, Pass or Skip). Mutants run in parallel.
+//! Speed: each mutant samples every test once; observations bit-identical to the unmutated unit's are not
+//! judged again (they have the unmutated unit's verdict, Pass or Skip). Mutants run in parallel.
 
 pub mod catalog;
 pub mod render;
@@ -187,7 +187,7 @@ pub struct MutantResult {
 
 /// What the correct unit did over the suite.
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
-pub struct BaselineResult {
+pub struct UnmutatedResult {
     pub pass: usize,
     pub warn: usize,
     pub fail: usize,
@@ -199,7 +199,7 @@ pub struct BaselineResult {
     pub seconds: f64,
 }
 
-impl BaselineResult {
+impl UnmutatedResult {
     pub fn ok(&self) -> bool {
         self.fail == 0
     }
@@ -214,7 +214,7 @@ pub struct MutantsReport {
     pub cases: usize,
     pub tests: usize,
     pub threads: usize,
-    pub baseline: BaselineResult,
+    pub unmutated: UnmutatedResult,
     pub mutants: Vec<MutantResult>,
     pub killed: usize,
     pub warn_only: usize,
@@ -227,7 +227,7 @@ pub struct MutantsReport {
     pub score_with_warn: f64,
     /// killed / (mutants - unobservable), in percent: the score over the faults an application can see.
     pub score_observable: f64,
-    /// Seconds for sampling and judging (baseline + mutants).
+    /// Seconds for sampling and judging (unmutated unit + mutants).
     pub run_seconds: f64,
     /// Seconds for the whole command, loading included (set by the command).
     pub wall_seconds: f64,
@@ -245,7 +245,7 @@ pub struct Suite {
     /// Case index of each test, in sampling order.
     test_case: Vec<usize>,
     /// Correct observations, in sampling order.
-    baseline: Vec<BatchResult>,
+    unmutated: Vec<BatchResult>,
     complexity: Vec<Complexity>,
 }
 
@@ -285,12 +285,12 @@ impl Suite {
             order,
             spans,
             test_case: vec![],
-            baseline: vec![],
+            unmutated: vec![],
             complexity,
         };
-        let baseline = suite.sample(None);
-        suite.test_case = baseline.iter().map(|b| b.case).collect();
-        suite.baseline = baseline;
+        let unmutated = suite.sample(None);
+        suite.test_case = unmutated.iter().map(|b| b.case).collect();
+        suite.unmutated = unmutated;
         Ok(suite)
     }
 
@@ -298,13 +298,13 @@ impl Suite {
         self.cases.len()
     }
     pub fn tests(&self) -> usize {
-        self.baseline.len()
+        self.unmutated.len()
     }
 
     /// Every test sampled by the unit with `fault` (or the correct unit), in sampling order, with
     /// `case` indices into `self.cases`.
     fn sample(&self, fault: Option<Fault>) -> Vec<BatchResult> {
-        let mut out = Vec::with_capacity(self.baseline.len().max(self.cases.len()));
+        let mut out = Vec::with_capacity(self.unmutated.len().max(self.cases.len()));
         for (spec, range) in &self.spans {
             let mut unit = SoftUnit::new(*spec);
             if let Some(f) = fault {
@@ -348,7 +348,7 @@ impl Suite {
         let b = &results[t];
         let case = &self.cases[b.case];
         let correct = self
-            .baseline
+            .unmutated
             .get(t)
             .and_then(|c| c.rgba.as_ref().ok().copied());
         let reason = match &b.rgba {
@@ -367,15 +367,15 @@ impl Suite {
     }
 
     /// Judges the correct unit over every test.
-    pub fn baseline(&self) -> BaselineResult {
+    pub fn unmutated(&self) -> UnmutatedResult {
         let t0 = Instant::now();
-        let mut r = BaselineResult::default();
-        for (t, b) in self.baseline.iter().enumerate() {
+        let mut r = UnmutatedResult::default();
+        for (t, b) in self.unmutated.iter().enumerate() {
             let o = self.judge(
                 &self.cases[b.case],
                 b.api,
                 &b.rgba,
-                &Err(SoftError::UndefinedResult("baseline")),
+                &Err(SoftError::UndefinedResult("unmutated")),
             );
             match o {
                 Outcome::Pass => r.pass += 1,
@@ -383,7 +383,7 @@ impl Suite {
                 Outcome::Fail => {
                     r.fail += 1;
                     if r.failures.len() < 20 {
-                        r.failures.push(self.kill(&self.baseline, t, o));
+                        r.failures.push(self.kill(&self.unmutated, t, o));
                     }
                 }
                 _ => r.skip += 1,
@@ -402,7 +402,7 @@ impl Suite {
         let (mut failing_tests, mut changed_tests) = (0, 0);
         let mut first: [Option<(usize, usize)>; 2] = [None, None]; // (fixture position, test) for Fail, Warn
         let mut minimal: [Option<usize>; 2] = [None, None];
-        for (t, (b, c)) in results.iter().zip(&self.baseline).enumerate() {
+        for (t, (b, c)) in results.iter().zip(&self.unmutated).enumerate() {
             let same = match (&b.rgba, &c.rgba) {
                 (Ok(x), Ok(y)) => x.map(f32::to_bits) == y.map(f32::to_bits),
                 (Err(_), Err(_)) => true,
@@ -419,7 +419,7 @@ impl Suite {
                 case,
                 c.api,
                 &c.rgba,
-                &Err(SoftError::UndefinedResult("baseline")),
+                &Err(SoftError::UndefinedResult("unmutated")),
             );
             let slot = match o {
                 Outcome::Fail if base != Outcome::Fail => 0,
@@ -524,7 +524,7 @@ pub fn check_witness(fault: Fault) -> WitnessCheck {
     }
 }
 
-/// Runs the baseline and then `faults` over `suite` on `threads` threads, calling `progress` after
+/// Runs the unmutated unit and then `faults` over `suite` on `threads` threads, calling `progress` after
 /// each mutant (from the worker threads, with the count done so far).
 pub fn run(
     suite: &Suite,
@@ -534,7 +534,7 @@ pub fn run(
     progress: impl Fn(usize, &MutantResult) + Sync,
 ) -> MutantsReport {
     let t0 = Instant::now();
-    let baseline = suite.baseline();
+    let unmutated = suite.unmutated();
     let threads = threads.clamp(1, faults.len().max(1));
     let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
@@ -578,7 +578,7 @@ pub fn run(
         cases: suite.cases(),
         tests: suite.tests(),
         threads,
-        baseline,
+        unmutated,
         killed,
         warn_only,
         survived,

@@ -29,10 +29,10 @@ pub fn headline(r: &MutantsReport) -> String {
     )
 }
 
-fn baseline_line(r: &MutantsReport) -> String {
-    let b = &r.baseline;
+fn unmutated_line(r: &MutantsReport) -> String {
+    let b = &r.unmutated;
     format!(
-        "baseline (correct unit): {} Pass, {} Warn, {} Fail, {} Skip{}",
+        "unmutated (correct unit): {} Pass, {} Warn, {} Fail, {} Skip{}",
         b.pass,
         b.warn,
         b.fail,
@@ -49,8 +49,8 @@ fn baseline_line(r: &MutantsReport) -> String {
 /// first killing case.
 pub fn table(r: &MutantsReport) -> String {
     let mut out = String::new();
-    let _ = writeln!(out, "{}", baseline_line(r));
-    for f in &r.baseline.failures {
+    let _ = writeln!(out, "{}", unmutated_line(r));
+    for f in &r.unmutated.failures {
         let _ = writeln!(
             out,
             "  FAIL {} @ {}: {}",
@@ -268,8 +268,8 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
         "{} cases, {} tests (case × API path). Wall time {:.2} s for the whole command (fixture loading included), {:.2} s sampling and judging on {} threads.\n",
         r.cases, r.tests, r.wall_seconds, r.run_seconds, r.threads
     );
-    let _ = writeln!(out, "{}.\n", baseline_line(r));
-    for f in &r.baseline.failures {
+    let _ = writeln!(out, "{}.\n", unmutated_line(r));
+    for f in &r.unmutated.failures {
         let _ = writeln!(
             out,
             "- FAIL `{}` on `{}`: {}",
@@ -371,7 +371,7 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
     );
     let _ = writeln!(
         out,
-        "- **Baseline**: the correct unit over the same tests; it must have no Fail, or the command exits non-zero."
+        "- **Unmutated unit**: the correct unit over the same tests; it must have no Fail, or the command exits non-zero."
     );
     out
 }
