@@ -42,7 +42,16 @@ enum Command {
 }
 
 fn main() -> std::process::ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        // --help and --version are not errors: clap prints them and exits 0. Bad arguments exit
+        // with the documented setup-error code (96), not clap's 2.
+        Err(e) if !e.use_stderr() => e.exit(),
+        Err(e) => {
+            let _ = e.print();
+            return std::process::ExitCode::from(96);
+        }
+    };
     let result = match cli.command {
         Command::Explain(a) => cmd::explain::main(a),
         Command::Gen(a) => cmd::gen::main(a),

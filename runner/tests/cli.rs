@@ -1,0 +1,58 @@
+//! The command line behaves the same in every subcommand: bad arguments are a setup error (96,
+//! runner/README.md "Exit codes"), never clap's 2; --help and --version exit 0; a Markdown file
+//! output is `--markdown FILE`, never `-o` (which names a directory wherever it exists).
+
+mod common;
+use common::bin;
+
+fn code(args: &[&str]) -> (Option<i32>, String) {
+    let o = bin().args(args).output().unwrap();
+    (
+        o.status.code(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn bad_arguments_exit_with_the_setup_error_code() {
+    for args in [
+        &["run", "--no-such-flag"][..],
+        &["gen", "--seed", "not-a-number"],
+        &["explain", "--ref"],
+        &["bench", "-o", "x.md"],
+        &["mutants", "-o", "x.md"],
+        &["no-such-subcommand"],
+        &[],
+    ] {
+        let (c, err) = code(args);
+        assert_eq!(c, Some(96), "shadowcheck {args:?}: {err}");
+        assert!(
+            !err.is_empty(),
+            "shadowcheck {args:?} said nothing on stderr"
+        );
+    }
+}
+
+#[test]
+fn help_and_version_exit_zero() {
+    for args in [
+        &["--help"][..],
+        &["--version"],
+        &["run", "--help"],
+        &["bench", "--help"],
+    ] {
+        let o = bin().args(args).output().unwrap();
+        assert_eq!(o.status.code(), Some(0), "shadowcheck {args:?}");
+        assert!(!o.stdout.is_empty(), "shadowcheck {args:?} printed nothing");
+    }
+}
+
+#[test]
+fn markdown_outputs_have_their_own_flag() {
+    for sub in ["bench", "mutants"] {
+        let o = bin().args([sub, "--help"]).output().unwrap();
+        let help = String::from_utf8_lossy(&o.stdout);
+        assert!(help.contains("--markdown <FILE>"), "{sub} --help:\n{help}");
+        assert!(!help.contains("-o,"), "{sub} --help still has -o:\n{help}");
+    }
+}
