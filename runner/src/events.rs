@@ -334,7 +334,7 @@ impl Fanout {
     }
 }
 
-/// Wall time spent per backend, for `--profile`.
+/// Wall time spent per backend, for `run --timings`.
 #[derive(Debug, Clone, Default)]
 pub struct Timing {
     pub cases_sent: usize,

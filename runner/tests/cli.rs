@@ -56,3 +56,46 @@ fn markdown_outputs_have_their_own_flag() {
         assert!(!help.contains("-o,"), "{sub} --help still has -o:\n{help}");
     }
 }
+
+/// Runs `shadowcheck args` with stdout going to a pipe whose reader is closed before anything is
+/// written, as `shadowcheck ... | head -0` does; returns the exit code and stderr.
+fn with_closed_stdout(args: &[&str]) -> (Option<i32>, String) {
+    use std::process::Stdio;
+    let mut child = bin()
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take()); // the reader goes away
+    let o = child.wait_with_output().unwrap();
+    (
+        o.status.code(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn a_closed_stdout_is_not_a_crash_and_keeps_the_exit_code() {
+    let (c, err) = with_closed_stdout(&["explain", "--func", "lequal"]);
+    assert_eq!(c, Some(0), "explain | head: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+    let (c, err) = with_closed_stdout(&["mutants", "--list"]);
+    assert_eq!(c, Some(0), "mutants --list | head: {err}");
+    // A run with a regression keeps its exit code (100) when nobody reads the summary table.
+    let out = common::tmpdir("closed-stdout");
+    let (c, err) = with_closed_stdout(&[
+        "run",
+        "-b",
+        "mock:fail",
+        "--fixtures",
+        "../cases/fixtures/gl46/2d/nearest.json",
+        "--cases",
+        "^gl46/2d/d16/nearest/lequal/",
+        "--no-rerun",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(c, Some(100), "run | head with regressions: {err}");
+    assert!(!err.contains("panicked"), "{err}");
+}

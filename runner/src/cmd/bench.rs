@@ -77,9 +77,9 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         eprintln!("bench: wrote {}", path.display());
     }
     if a.json {
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        super::print_out(&format!("{}\n", serde_json::to_string_pretty(&report)?))?;
     } else {
-        print!("{}", markdown::text(&report));
+        super::print_out(&markdown::text(&report))?;
     }
     Ok(ExitCode::SUCCESS)
 }

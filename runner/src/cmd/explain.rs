@@ -275,16 +275,15 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
                 &serde_json::json!({ "case": case.id, "error": e.to_string() }),
             )?,
         };
-        println!("{out}");
+        super::print_out(&format!("{out}\n"))?;
     } else {
-        print!("{}", shadowcheck_oracle::explain::render(&case, &result));
-        if let Some(expect) = &case.expect {
-            if let Ok(ev) = &result {
-                if expect != &ev.expect {
-                    println!("note: the expectation stored in the file differs from the oracle's (regenerate the fixtures)");
-                }
+        let mut text = shadowcheck_oracle::explain::render(&case, &result);
+        if let (Some(expect), Ok(ev)) = (&case.expect, &result) {
+            if expect != &ev.expect {
+                text += "note: the expectation stored in the file differs from the oracle's (regenerate the fixtures)\n";
             }
         }
+        super::print_out(&text)?;
     }
     Ok(match result {
         Ok(_) => ExitCode::SUCCESS,

@@ -8,3 +8,14 @@ pub mod mock_worker;
 pub mod mutants;
 pub mod report;
 pub mod run;
+
+/// Writes `text` to stdout. A reader that went away (`shadowcheck explain ... | head`) is not an
+/// error: the output was for it, and nothing else depends on it. Other write errors are.
+pub fn print_out(text: &str) -> std::io::Result<()> {
+    use std::io::Write as _;
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        r => r,
+    }
+}

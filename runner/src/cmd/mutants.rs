@@ -7,7 +7,6 @@
 
 use anyhow::Context;
 use shadowcheck_runner::mutants::{self, render, KillStatus, Suite};
-use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -69,7 +68,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let t0 = Instant::now();
     if a.list {
         for f in shadowcheck_soft::Fault::ALL {
-            println!("{:<40} {}", f.key(), mutants::about(*f));
+            super::print_out(&format!("{:<40} {}\n", f.key(), mutants::about(*f)))?;
         }
         return Ok(ExitCode::SUCCESS);
     }
@@ -138,11 +137,9 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     });
     report.wall_seconds = t0.elapsed().as_secs_f64();
     if a.json {
-        let mut out = std::io::stdout().lock();
-        serde_json::to_writer_pretty(&mut out, &report)?;
-        writeln!(out)?;
+        super::print_out(&format!("{}\n", serde_json::to_string_pretty(&report)?))?;
     } else {
-        print!("{}", render::table(&report));
+        super::print_out(&render::table(&report))?;
     }
     if let Some(path) = &a.markdown {
         std::fs::write(path, render::markdown(&report, &command_line(&a)))

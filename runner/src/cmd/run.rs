@@ -63,7 +63,7 @@ pub struct Args {
     jobs: Option<usize>,
     /// Print the time spent per backend (lookups vs. verdicts and reporting).
     #[arg(long)]
-    profile: bool,
+    timings: bool,
     /// Do not re-run regressions to detect flakes.
     #[arg(long)]
     no_rerun: bool,
@@ -212,7 +212,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let mut fanout = Fanout::default();
     fanout
         .reporters
-        .push(Box::new(TerminalReporter::new(a.profile, a.verbose)));
+        .push(Box::new(TerminalReporter::new(a.timings, a.verbose)));
     fanout.reporters.push(Box::new(jsonl));
     fanout
         .reporters

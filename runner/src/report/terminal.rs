@@ -14,18 +14,22 @@ const BAR_MIN_TESTS: usize = 2000;
 
 pub struct TerminalReporter {
     bar: Option<ProgressBar>,
-    /// Print per-backend timings (`--profile`).
-    pub profile: bool,
+    /// Print per-backend timings (`--timings`).
+    pub timings: bool,
     /// Show diagnostics of implementations (stderr lines, restarts).
     pub verbose: bool,
+    /// stdout's reader went away (`shadowcheck run | head`): the summary is not printed, and the
+    /// run goes on (its exit code must not change because nobody reads the table).
+    stdout_closed: bool,
 }
 
 impl TerminalReporter {
-    pub fn new(profile: bool, verbose: bool) -> TerminalReporter {
+    pub fn new(timings: bool, verbose: bool) -> TerminalReporter {
         TerminalReporter {
             bar: None,
-            profile,
+            timings,
             verbose,
+            stdout_closed: false,
         }
     }
 
@@ -39,6 +43,18 @@ impl TerminalReporter {
 
 impl Reporter for TerminalReporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
+        match self.write_event(ev) {
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
+                self.stdout_closed = true;
+                Ok(())
+            }
+            r => r,
+        }
+    }
+}
+
+impl TerminalReporter {
+    fn write_event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
         match ev {
             Event::RunStarted {
                 backends,
@@ -112,14 +128,14 @@ impl Reporter for TerminalReporter {
                     counts.flake + counts.known_flake
                 );
                 self.err_line(&line);
-                if self.profile {
+                if self.timings {
                     let rate = if timing.backend_s > 0.0 {
                         timing.cases_sent as f64 / timing.backend_s
                     } else {
                         0.0
                     };
                     self.err_line(&format!(
-                        "profile {backend}: {} cases sent, {:.3} s in the backend ({rate:.0} cases/s), {:.3} s judging and reporting",
+                        "timings {backend}: {} cases sent, {:.3} s in the backend ({rate:.0} cases/s), {:.3} s judging and reporting",
                         timing.cases_sent, timing.backend_s, timing.verdict_s
                     ));
                 }
@@ -129,6 +145,9 @@ impl Reporter for TerminalReporter {
             } => {
                 if let Some(b) = self.bar.take() {
                     b.finish_and_clear();
+                }
+                if self.stdout_closed {
+                    return Ok(());
                 }
                 let mut out = std::io::stdout().lock();
                 for (dim, rows) in breakdown(results) {
