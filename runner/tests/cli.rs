@@ -99,3 +99,13 @@ fn a_closed_stdout_is_not_a_crash_and_keeps_the_exit_code() {
     assert_eq!(c, Some(100), "run | head with regressions: {err}");
     assert!(!err.contains("panicked"), "{err}");
 }
+
+#[test]
+fn absurd_timeouts_are_bad_input_not_a_panic() {
+    for t in ["1e19", "1e20", "inf", "nan", "0", "-1"] {
+        let (c, err) = code(&["run", "-b", "soft", "--timeout", t, "--cases", "^$"]);
+        assert_eq!(c, Some(96), "--timeout {t}: {err}");
+        assert!(err.contains("--timeout"), "--timeout {t}: {err}");
+        assert!(!err.contains("panicked"), "--timeout {t}: {err}");
+    }
+}

@@ -52,7 +52,12 @@ pub struct Args {
     #[arg(long)]
     resume: bool,
     /// Seconds an external implementation may take for one group of cases.
-    #[arg(long, value_name = "SECS", default_value_t = 10.0)]
+    #[arg(
+        long,
+        value_name = "SECS",
+        default_value_t = 10.0,
+        allow_negative_numbers = true
+    )]
     timeout: f64,
     /// Cases written to an implementation process before each flush (a GPU implementation draws
     /// one batch per group; the timeout applies per group).
@@ -123,8 +128,9 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .map(regex::Regex::new)
         .transpose()
         .context("--cases")?;
-    if !(a.timeout > 0.0 && a.timeout.is_finite()) {
-        bail!("--timeout must be a positive number of seconds");
+    // At most a year: Duration cannot hold 1e20 s, and no run waits that long on purpose.
+    if !(a.timeout > 0.0 && a.timeout <= 365.0 * 86400.0) {
+        bail!("--timeout must be a positive number of seconds, at most 31536000 (a year)");
     }
     let lists = lists(&a)?;
     let fixtures = if a.fixtures.is_empty() {
