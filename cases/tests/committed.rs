@@ -350,3 +350,59 @@ fn unknown_grid_is_an_error() {
     let e = grids::generate("nope", 0).unwrap_err().to_string();
     assert!(e.contains("nope") && e.contains("default"), "{e}");
 }
+
+/// The first number in `text` after `marker` (digits with `,` separators, or a decimal).
+fn figure_after(text: &str, marker: &str) -> f64 {
+    let at = text
+        .find(marker)
+        .unwrap_or_else(|| panic!("`{marker}` not in cases/README.md"))
+        + marker.len();
+    let num: String = text[at..]
+        .chars()
+        .skip_while(|c| !c.is_ascii_digit())
+        .take_while(|c| c.is_ascii_digit() || *c == ',' || *c == '.')
+        .filter(|c| *c != ',')
+        .collect();
+    num.trim_end_matches('.')
+        .parse()
+        .unwrap_or_else(|_| panic!("no number after `{marker}`"))
+}
+
+#[test]
+fn readme_hand_written_counts_are_current() {
+    let readme = std::fs::read_to_string(crate_dir().join("README.md")).unwrap();
+    let stale = "cases/README.md quotes stale figures; update them from `cargo run --release -- gen --grid default -o /tmp/x` and `gen --grid smoke`";
+    let default = grids::unfilled("default", 0).unwrap();
+    let cases: usize = default.iter().map(|(_, f)| f.cases.len()).sum();
+    assert_eq!(
+        figure_after(&readme, "holds the `default` grid: **"),
+        cases as f64,
+        "{stale}"
+    );
+    assert_eq!(
+        figure_after(&readme, "cases in "),
+        default.len() as f64,
+        "{stale}"
+    );
+    let bytes: u64 = fixtures::fixture_paths(&fixtures_dir())
+        .unwrap()
+        .iter()
+        .map(|p| std::fs::metadata(p).unwrap().len())
+        .sum();
+    let mib = figure_after(&readme, "files, about ");
+    let have = bytes as f64 / (1024.0 * 1024.0);
+    assert!(
+        (mib - have).abs() <= 0.1 * have,
+        "README says about {mib} MiB, the fixtures are {have:.1} MiB: {stale}"
+    );
+    let smoke: usize = grids::unfilled("smoke", 0)
+        .unwrap()
+        .iter()
+        .map(|(_, f)| f.cases.len())
+        .sum();
+    assert_eq!(
+        figure_after(&readme, "### `smoke`"),
+        smoke as f64,
+        "{stale}"
+    );
+}
