@@ -144,7 +144,10 @@ fn report_is_self_contained_and_renders_its_matrix_in_headless_chromium() {
         if std::env::var("CI").is_ok_and(|v| v == "true") {
             panic!("CI=true but no `chromium` on PATH: .ci/run must `apt-get install -y chromium`");
         }
-        eprintln!(
+        // Straight to the stderr handle: libtest captures eprintln!, which would hide the skip.
+        use std::io::Write as _;
+        let _ = writeln!(
+            std::io::stderr(),
             "\n*** SKIPPED the headless-Chromium half of {}: `chromium` is not installed (apt-get install -y chromium). ***\n",
             module_path!()
         );

@@ -28,7 +28,9 @@ pub fn unavailable(backend: &str, why: &str) {
     if in_ci() {
         panic!("{msg} (CI=true: a missing driver is a failure)");
     }
-    eprintln!("SKIPPED (not a pass): {msg}");
+    // Straight to the stderr handle: libtest captures eprintln!, which would hide the skip.
+    use std::io::Write as _;
+    let _ = writeln!(std::io::stderr(), "SKIPPED (not a pass): {msg}");
 }
 
 impl Session {
