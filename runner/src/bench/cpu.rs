@@ -1,6 +1,6 @@
 //! Single-thread CPU measurements: the oracle's verdicts and the `soft` unit's raw lookups.
 
-use super::{ids, targets, Goal, Row, Target};
+use super::{ids, targets, Goal, Measurement, Target};
 use shadowcheck_model::{ApiPath, Case, Channel, Expectation, Filter, Spec};
 use shadowcheck_soft::bench::Workload;
 use std::hint::black_box;
@@ -46,7 +46,7 @@ pub fn exact_rgba(e: &Expectation, api: ApiPath) -> Option<[f64; 4]> {
 /// exact answer once per API path (a verdict = one judged (case, path)); then `judge` alone
 /// against the stored expectations, which is what a run does per observation. Cases the oracle
 /// rejects (GL errors, not applicable) count as evaluated, with no verdict.
-pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Row> {
+pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Measurement> {
     let mut verdicts_per_pass = 0u64;
     let (passes, secs) = repeat_for(min, || {
         let mut v = 0u64;
@@ -63,7 +63,7 @@ pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Row> {
         verdicts_per_pass = v;
     });
     let verdicts = verdicts_per_pass * passes;
-    let mut rows = vec![Row::new(
+    let mut rows = vec![Measurement::new(
         ids::ORACLE_VERDICTS,
         None,
         verdicts as f64 / secs,
@@ -88,7 +88,7 @@ pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Row> {
                 black_box(black_box(*e).judge(black_box(*api), black_box(*rgba)));
             }
         });
-        rows.push(Row::new(
+        rows.push(Measurement::new(
             ids::ORACLE_JUDGE,
             None,
             (judged.len() as u64 * passes) as f64 / secs,
@@ -104,7 +104,7 @@ pub const BENCH_TEXTURE: u32 = 64;
 
 /// The `soft` unit's raw lookups per second, one thread, on `soft::bench::Workload` (D24 2D,
 /// LEQUAL, REPEAT) with NEAREST (the figure compared with llvmpipe) and LINEAR (PCF, 4 texels).
-pub fn soft_rows(lookups: usize, min: Duration) -> Result<Vec<Row>, String> {
+pub fn soft_rows(lookups: usize, min: Duration) -> Result<Vec<Measurement>, String> {
     let mut rows = Vec::new();
     for (id, filter) in [
         (ids::SOFT_LOOKUPS, Filter::Nearest),
@@ -115,7 +115,7 @@ pub fn soft_rows(lookups: usize, min: Duration) -> Result<Vec<Row>, String> {
         let mut sum = 0.0;
         let (passes, secs) = repeat_for(min, || sum += black_box(&w).run());
         black_box(sum);
-        rows.push(Row::new(
+        rows.push(Measurement::new(
             id,
             None,
             (lookups as u64 * passes) as f64 / secs,

@@ -1,9 +1,9 @@
-//! Rendering a [`Report`]: an aligned text table for the terminal and Markdown for reports/BENCH.md.
+//! Rendering a [`BenchReport`]: an aligned text table for the terminal and Markdown for reports/BENCH.md.
 //!
 //! `-o FILE` rewrites only the part of FILE between [`BEGIN`] and [`END`] when both markers are
 //! there, so hand-written analysis around the generated table (profiles of missed targets) stays.
 
-use super::{fmt_num, Report, Row};
+use super::{fmt_num, BenchReport, Measurement};
 
 pub const BEGIN: &str =
     "<!-- shadowcheck bench: begin (generated; text outside the markers is kept) -->";
@@ -32,7 +32,7 @@ fn label(id: &str) -> &'static str {
     }
 }
 
-fn cells(r: &Row) -> [String; 6] {
+fn cells(r: &Measurement) -> [String; 6] {
     let name = match label(&r.id) {
         "" => r.id.clone(),
         l => l.to_string(),
@@ -60,7 +60,7 @@ fn cells(r: &Row) -> [String; 6] {
 const HEADERS: [&str; 6] = ["measure", "backend", "value", "unit", "target", ""];
 
 /// Aligned plain-text table with the machine line and what could not be measured.
-pub fn text(rep: &Report) -> String {
+pub fn text(rep: &BenchReport) -> String {
     let rows: Vec<[String; 6]> = rep.rows.iter().map(cells).collect();
     let mut w = HEADERS.map(|h| h.chars().count());
     for r in &rows {
@@ -99,7 +99,7 @@ pub fn text(rep: &Report) -> String {
     s
 }
 
-fn machine_line(rep: &Report) -> String {
+fn machine_line(rep: &BenchReport) -> String {
     let m = &rep.machine;
     format!(
         "{} logical CPUs ({}), {} MiB, {}, Linux {}, load average {:.2} at start, finished {}{}",
@@ -115,7 +115,7 @@ fn machine_line(rep: &Report) -> String {
 }
 
 /// The generated Markdown block (between the markers).
-pub fn block(rep: &Report) -> String {
+pub fn block(rep: &BenchReport) -> String {
     let mut s = format!("{BEGIN}\n\n**Machine:** {}\n\n", machine_line(rep));
     s += "| measure | backend | value | unit | target | |\n|---|---|--:|---|---|---|\n";
     for r in &rep.rows {
@@ -164,7 +164,7 @@ pub fn block(rep: &Report) -> String {
 }
 
 /// The file's new text: `old` with the block between the markers replaced, or a new document.
-pub fn document(rep: &Report, old: Option<&str>) -> String {
+pub fn document(rep: &BenchReport, old: Option<&str>) -> String {
     if let Some(old) = old {
         if let (Some(b), Some(e)) = (old.find(BEGIN), old.find(END)) {
             if b < e {
@@ -185,8 +185,8 @@ mod tests {
     use super::super::{machine::Machine, Goal, Target};
     use super::*;
 
-    fn report() -> Report {
-        Report {
+    fn report() -> BenchReport {
+        BenchReport {
             schema: 1,
             quick: true,
             machine: Machine {
@@ -198,7 +198,7 @@ mod tests {
                 kernel: "6".into(),
                 date: "d".into(),
             },
-            rows: vec![Row::new(
+            rows: vec![Measurement::new(
                 super::super::ids::ORACLE_VERDICTS,
                 None,
                 2.0e6,

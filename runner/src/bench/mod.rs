@@ -1,11 +1,11 @@
 //! Throughput measurements behind `shadowcheck bench` (tracker issue 6).
 //!
-//! Each measurement yields [`Row`]s: the oracle's verdicts per second on one core, the `soft`
+//! Each measurement yields [`Measurement`]s: the oracle's verdicts per second on one core, the `soft`
 //! implementation's raw lookups per second on one core, and per GL backend the bare-draw floor
 //! (full-screen draws of shadow lookups with parameters computed in the shader), the verified cases
 //! per second end to end, their ratio, and the wall time and peak RSS of the default suite per
 //! driver. A row carries its target (a goal of the benchmark, never a test assertion) and whether
-//! this run met it. Nothing here prints: `cmd/bench.rs` renders the [`Report`].
+//! this run met it. Nothing here prints: `cmd/bench.rs` renders the [`BenchReport`].
 
 pub mod cpu;
 pub mod floor;
@@ -68,7 +68,7 @@ impl Target {
 
 /// One measured figure.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Row {
+pub struct Measurement {
     /// Stable key, e.g. `oracle_verdicts_per_s`, `gl_floor_lookups_per_s`.
     pub id: String,
     /// The backend (GL rows, suite rows), or `None`.
@@ -82,9 +82,15 @@ pub struct Row {
     pub detail: String,
 }
 
-impl Row {
-    pub fn new(id: &str, backend: Option<&str>, value: f64, unit: &str, detail: String) -> Row {
-        Row {
+impl Measurement {
+    pub fn new(
+        id: &str,
+        backend: Option<&str>,
+        value: f64,
+        unit: &str,
+        detail: String,
+    ) -> Measurement {
+        Measurement {
             id: id.to_string(),
             backend: backend.map(str::to_string),
             value,
@@ -94,7 +100,7 @@ impl Row {
             detail,
         }
     }
-    pub fn with_target(mut self, t: Target) -> Row {
+    pub fn with_target(mut self, t: Target) -> Measurement {
         self.met = Some(t.met(self.value));
         self.target = Some(t);
         self
@@ -111,23 +117,23 @@ pub struct Unavailable {
 
 /// Everything one `shadowcheck bench` run measured.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Report {
+pub struct BenchReport {
     pub schema: u32,
     pub quick: bool,
     pub machine: machine::Machine,
-    pub rows: Vec<Row>,
+    pub rows: Vec<Measurement>,
     pub unavailable: Vec<Unavailable>,
 }
 
-impl Report {
-    pub fn row(&self, id: &str, backend: Option<&str>) -> Option<&Row> {
+impl BenchReport {
+    pub fn row(&self, id: &str, backend: Option<&str>) -> Option<&Measurement> {
         self.rows
             .iter()
             .find(|r| r.id == id && r.backend.as_deref() == backend)
     }
 }
 
-/// Row ids (the JSON keys tests and scripts read).
+/// Measurement ids (the JSON keys tests and scripts read).
 pub mod ids {
     pub const ORACLE_VERDICTS: &str = "oracle_verdicts_per_s";
     pub const ORACLE_JUDGE: &str = "oracle_judge_only_per_s";
@@ -201,7 +207,7 @@ mod tests {
         assert!(Target::new(Goal::AtLeast, 2.0, "x").met(2.0));
         assert!(!Target::new(Goal::Below, 2.0, "x").met(2.0));
         assert!(Target::new(Goal::AtMost, 2.0, "x").met(2.0));
-        let r = Row::new("a", None, 1.0, "u", String::new()).with_target(Target::new(
+        let r = Measurement::new("a", None, 1.0, "u", String::new()).with_target(Target::new(
             Goal::AtLeast,
             2.0,
             "x",

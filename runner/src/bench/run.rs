@@ -3,7 +3,8 @@
 use super::floor::{self, FloorResult};
 use super::suite::{self, nearest_2d_fixtures};
 use super::{
-    cpu, ids, machine::Machine, targets, Goal, Report, Row, Target, Unavailable, SCHEMA_VERSION,
+    cpu, ids, machine::Machine, targets, BenchReport, Goal, Measurement, Target, Unavailable,
+    SCHEMA_VERSION,
 };
 use crate::gl::names::{BackendName, Driver};
 use std::path::PathBuf;
@@ -11,7 +12,7 @@ use std::time::Duration;
 
 /// What to measure.
 #[derive(Debug, Clone)]
-pub struct Options {
+pub struct BenchOptions {
     /// Seconds instead of minutes: fewer cases, shorter timings, only `egl:llvmpipe:core` unless
     /// backends are named, the suite rows over the 2D NEAREST fixtures only.
     pub quick: bool,
@@ -24,7 +25,7 @@ pub struct Options {
 }
 
 /// GL backends to measure, before asking the drivers (names that can never work are left out).
-pub fn candidates(o: &Options) -> Vec<String> {
+pub fn candidates(o: &BenchOptions) -> Vec<String> {
     BackendName::all()
         .into_iter()
         .filter(|b| b.static_unavailability().is_none())
@@ -47,8 +48,8 @@ fn floor_size(quick: bool) -> i32 {
     }
 }
 
-fn floor_row(id: &str, backend: &str, f: &FloorResult, extra: &str) -> Row {
-    Row::new(
+fn floor_row(id: &str, backend: &str, f: &FloorResult, extra: &str) -> Measurement {
+    Measurement::new(
         id,
         Some(backend),
         f.per_s(),
@@ -64,7 +65,7 @@ fn floor_row(id: &str, backend: &str, f: &FloorResult, extra: &str) -> Row {
 }
 
 /// Runs every measurement. `progress` gets a line before each step (the library never prints).
-pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
+pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
     let min = if o.quick {
         Duration::from_millis(150)
     } else {
@@ -145,7 +146,8 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
                     "{} verified tests ({} skipped) of {} cases in {:.2} s: load {:.2} s, worker start {:.2} s, run {:.2} s (backend {:.2} s, verdicts {:.2} s)",
                     e.verified, e.skipped, e.cases_loaded, e.total_s(), e.load_s, e.open_s, e.run_s, e.backend_s, e.verdict_s
                 );
-                let mut r = Row::new(ids::GL_E2E, Some(&name), e.per_s(), "cases/s", detail);
+                let mut r =
+                    Measurement::new(ids::GL_E2E, Some(&name), e.per_s(), "cases/s", detail);
                 if name.contains(":llvmpipe:") {
                     r = r.with_target(Target::new(
                         Goal::AtLeast,
@@ -154,21 +156,21 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
                     ));
                 }
                 rows.push(r);
-                rows.push(Row::new(
+                rows.push(Measurement::new(
                     ids::GL_E2E_STEADY,
                     Some(&name),
                     e.steady_per_s(),
                     "cases/s",
                     "verified tests / run time (no fixture load, no worker start)".into(),
                 ));
-                rows.push(Row::new(
+                rows.push(Measurement::new(
                     ids::GL_E2E_WARM,
                     Some(&name),
                     e.warm_per_s(),
                     "cases/s",
                     format!("the same cases again on the same worker ({:.2} s): shader variants already compiled", e.warm_run_s),
                 ));
-                rows.push(Row::new(
+                rows.push(Measurement::new(
                     ids::GL_E2E_CACHED,
                     Some(&name),
                     e.cached_per_s(),
@@ -176,7 +178,7 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
                     format!("a new worker with the on-disk shader cache the cold pass filled ({:.2} s incl. worker start; the cold pass starts from an empty cache)", e.cached_s),
                 ));
                 rows.push(
-                    Row::new(
+                    Measurement::new(
                         ids::GL_RATIO,
                         Some(&name),
                         e.per_s() / floor_per_s,
@@ -300,14 +302,14 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
                     bs.join(" "),
                     s.exit_code
                 );
-                rows.push(Row::new(
+                rows.push(Measurement::new(
                     ids::SUITE_WALL,
                     Some(&label),
                     s.wall_s,
                     "s",
                     format!("{detail}; empty Mesa shader cache"),
                 ));
-                rows.push(Row::new(
+                rows.push(Measurement::new(
                     ids::SUITE_WALL_CACHED,
                     Some(&label),
                     c.wall_s,
@@ -315,7 +317,7 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
                     format!("{detail}; again with the shader cache the first run filled"),
                 ));
                 rows.push(
-                    Row::new(ids::SUITE_RSS, Some(&label), s.peak_rss_mib.max(c.peak_rss_mib), "MiB", format!("largest process (runner or worker) of either run, wait4 ru_maxrss; {detail}"))
+                    Measurement::new(ids::SUITE_RSS, Some(&label), s.peak_rss_mib.max(c.peak_rss_mib), "MiB", format!("largest process (runner or worker) of either run, wait4 ru_maxrss; {detail}"))
                         .with_target(Target::new(Goal::AtMost, targets::PEAK_RSS_MIB, "issue 6")),
                 );
                 if label != "soft" {
@@ -343,7 +345,7 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
                 "shader cache filled by the first run",
             ),
         ] {
-            let mut r = Row::new(
+            let mut r = Measurement::new(
                 id,
                 None,
                 v,
@@ -371,7 +373,7 @@ pub fn run(o: &Options, progress: &mut dyn FnMut(&str)) -> Report {
 
     let mut machine = Machine::describe(gl_version.as_deref());
     machine.load_average = load_avg;
-    Report {
+    BenchReport {
         schema: SCHEMA_VERSION,
         quick: o.quick,
         machine,

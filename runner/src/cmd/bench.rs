@@ -2,7 +2,7 @@
 //! to end against the bare-draw floor), and wall time / peak memory of the default suite per driver.
 //! Targets are goals reported against, never assertions. See reports/BENCH.md.
 use anyhow::Context;
-use shadowcheck_runner::bench::{self, markdown, run::Options};
+use shadowcheck_runner::bench::{self, markdown, run::BenchOptions};
 use shadowcheck_runner::gl::BackendName;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -53,7 +53,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let exe = std::env::current_exe().context("locating the shadowcheck executable")?;
-    let opts = Options {
+    let opts = BenchOptions {
         quick: a.quick,
         backends: a.backends.clone(),
         fixtures: a.fixtures.clone(),
