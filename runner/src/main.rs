@@ -58,8 +58,7 @@ fn main() -> std::process::ExitCode {
         Ok(code) => code,
         Err(e) => {
             eprintln!("shadowcheck: error: {e:#}");
-            // Documented in README.md: 96 = setup error / bad input.
-            std::process::ExitCode::from(96)
+            std::process::ExitCode::from(shadowcheck_runner::records::exit::SETUP)
         }
     }
 }
