@@ -8,3 +8,4 @@ pub mod mock_worker;
 pub mod mutants;
 pub mod report;
 pub mod run;
+pub mod summarize;
