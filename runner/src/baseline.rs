@@ -5,7 +5,7 @@
 //! - Skips and flakes: one regular expression per line (matched anywhere in the test name, anchor
 //!   with `^...$` for exact names), `#` comments.
 
-use crate::verdict::{Outcome, Status};
+use crate::records::{Outcome, Status};
 use regex::RegexSet;
 use std::collections::HashMap;
 use std::path::Path;

@@ -2,7 +2,8 @@
 //!
 //! Data flows one way: fixtures → [`run`] (cases to a [`backend::Backend`]) → [`verdict`] (oracle
 //! expectation and acceptance) → [`baseline`] (final status) → [`events`] → [`report`]ers.
-//! The library never prints; reporters own every byte of output.
+//! The library never prints; reporters own every byte of output. What a run leaves on disk (the
+//! result records, statuses, exit codes) and the one reader of results.jsonl are in [`records`].
 
 pub mod backend;
 pub mod baseline;
@@ -11,8 +12,8 @@ pub mod events;
 pub mod gl;
 pub mod mutants;
 pub mod parallel;
+pub mod records;
 pub mod report;
-pub mod resume;
 pub mod run;
 pub mod shard;
 pub mod verdict;

@@ -33,6 +33,15 @@ enum Command {
     Mutants(cmd::mutants::Args),
     /// Write a self-contained HTML report (matrix, heatmaps, plots) from result files.
     Report(cmd::report::Args),
+    /// Condense `shadowcheck run --out` directories into reference-results files (as reports/mesa-22.3.6/).
+    ///
+    /// Each RUN_DIR holds one backend's run and is named r-<backend with ':' as '-'>. Writes, per
+    /// run, OUTROOT/<backend>/: failures.csv (copied: the baseline), warnings.csv (`test,Warn`),
+    /// summary.md (status counts per API path, skip reasons, non-pass groups with an example test)
+    /// and report.md (the run's, capped at 150000 characters); and OUTROOT/SUMMARY.md, one table
+    /// over every backend x API path. Reads results.jsonl (the last record of a test wins),
+    /// failures.csv and report.md of each run. Exit 0 when written, 96 on bad input.
+    Summarize(cmd::summarize::Args),
     /// (internal) A GL worker process speaking runner/PROTOCOL.md on stdin/stdout.
     #[command(hide = true)]
     GlWorker(cmd::gl_worker::Args),
@@ -60,6 +69,7 @@ fn main() -> std::process::ExitCode {
         Command::Bench(a) => cmd::bench::main(a),
         Command::Mutants(a) => cmd::mutants::main(a),
         Command::Report(a) => cmd::report::main(a),
+        Command::Summarize(a) => cmd::summarize::main(a),
         Command::GlWorker(a) => cmd::gl_worker::main(a),
         Command::MockWorker(a) => cmd::mock_worker::main(a),
     };
@@ -67,8 +77,7 @@ fn main() -> std::process::ExitCode {
         Ok(code) => code,
         Err(e) => {
             eprintln!("shadowcheck: error: {e:#}");
-            // Documented in README.md: 96 = setup error / bad input.
-            std::process::ExitCode::from(96)
+            std::process::ExitCode::from(shadowcheck_runner::records::exit::SETUP)
         }
     }
 }

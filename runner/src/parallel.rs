@@ -4,8 +4,8 @@
 //! test, so the interleaving of its lines does not matter).
 
 use crate::backend::Backend;
-use crate::events::{Counts, Event, Fanout, Sink, TestResult, Timing};
-use crate::resume::Prior;
+use crate::events::{Event, Fanout, Sink, Timing};
+use crate::records::{Counts, Results, TestResult};
 use crate::run::{run_backend, CaseSet, Settings};
 use std::collections::VecDeque;
 use std::sync::mpsc::{self, Sender};
@@ -102,7 +102,7 @@ fn forward(fanout: &mut Fanout, m: &Owned) {
 pub fn run_backends(
     backends: &mut [Box<dyn Backend>],
     set: &CaseSet,
-    prior: &Prior,
+    prior: &Results,
     settings: &Settings,
     fanout: &mut Fanout,
     jobs: usize,

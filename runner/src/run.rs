@@ -8,12 +8,10 @@
 
 use crate::backend::{ApiOutcome, Backend, CaseOutcome, Support};
 use crate::baseline::Lists;
-use crate::events::{
-    Counts, Event, Fanout, LoadError, Rgba, Sink, Summary, Tags, TestResult, Timing,
-};
-use crate::resume::Prior;
+use crate::events::{Event, Fanout, Rgba, Sink, Timing};
+use crate::records::{Counts, LoadError, Outcome, Results, Status, Summary, Tags, TestResult};
 use crate::shard::Shard;
-use crate::verdict::{self, Outcome, Status};
+use crate::verdict;
 use shadowcheck_model::{ApiPath, Case};
 use std::borrow::Cow;
 use std::collections::HashMap;
@@ -198,7 +196,7 @@ fn judge_outcome(
 pub fn run_backend(
     backend: &mut dyn Backend,
     set: &CaseSet,
-    prior: &Prior,
+    prior: &Results,
     settings: &Settings,
     fanout: &mut dyn Sink,
 ) -> (Vec<TestResult>, Timing) {
@@ -418,7 +416,7 @@ pub fn sort_results(results: &mut [TestResult]) {
 pub fn run_all(
     backends: &mut [Box<dyn Backend>],
     set: &CaseSet,
-    prior: &Prior,
+    prior: &Results,
     settings: &Settings,
     fanout: &mut Fanout,
     out_dir: &Path,
@@ -617,7 +615,7 @@ mod tests {
         let mut fanout = Fanout::default();
         fanout.reporters.push(Box::new(Count(n.clone())));
         let (results, timing) =
-            run_backend(&mut fake, &set, &Prior::default(), &settings, &mut fanout);
+            run_backend(&mut fake, &set, &Results::default(), &settings, &mut fanout);
         assert_eq!(fake.sent, [("gl46/a".to_string(), vec![ApiPath::GlslCore])]);
         assert_eq!(timing.cases_sent, 1);
         assert_eq!(n.get(), 4);
@@ -667,11 +665,11 @@ mod tests {
         let (first, _) = run_backend(
             &mut fake,
             &set,
-            &Prior::default(),
+            &Results::default(),
             &Settings::default(),
             &mut fanout,
         );
-        let mut prior = Prior::default();
+        let mut prior = Results::default();
         prior.insert(first[0].clone());
         let mut fake = Fake {
             caps: Capabilities::all(),

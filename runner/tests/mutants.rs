@@ -7,7 +7,8 @@ mod common;
 use common::*;
 use shadowcheck_model::{Case, CompareFunc, Wrap};
 use shadowcheck_runner::mutants::{self, render, Complexity, KillStatus, Suite};
-use shadowcheck_runner::verdict::{self, Outcome};
+use shadowcheck_runner::records::Outcome;
+use shadowcheck_runner::verdict;
 use shadowcheck_soft::{Fault, SoftUnit};
 
 fn smoke() -> Vec<Case> {

@@ -4,9 +4,8 @@
 
 use crate::backend::{self, Options};
 use crate::events::Fanout;
-use crate::resume::Prior;
+use crate::records::{exit, Outcome, Results};
 use crate::run::{self, Settings};
-use crate::verdict::Outcome;
 use std::path::{Path, PathBuf};
 use std::process::Stdio;
 use std::time::Instant;
@@ -131,7 +130,7 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
     let (results, timing) = run::run_backend(
         b.as_mut(),
         &set,
-        &Prior::default(),
+        &Results::default(),
         &Settings::default(),
         &mut Fanout::default(),
     );
@@ -140,7 +139,7 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
     let _ = run::run_backend(
         b.as_mut(),
         &set,
-        &Prior::default(),
+        &Results::default(),
         &Settings::default(),
         &mut Fanout::default(),
     );
@@ -151,7 +150,7 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
     let _ = run::run_backend(
         b.as_mut(),
         &set,
-        &Prior::default(),
+        &Results::default(),
         &Settings::default(),
         &mut Fanout::default(),
     );
@@ -241,7 +240,7 @@ pub fn suite(
     } else {
         -libc::WTERMSIG(status)
     };
-    if exit_code != 0 && exit_code != 100 {
+    if exit_code != i32::from(exit::SUCCESS) && exit_code != i32::from(exit::REGRESSIONS) {
         return Err(format!(
             "`shadowcheck run` ended with {exit_code} (see {})",
             out.display()

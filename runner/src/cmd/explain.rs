@@ -9,6 +9,10 @@ use shadowcheck_model::*;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+/// Exit code when the case is valid but not a lookup: the implementation may raise a GL error or
+/// the result is undefined.
+const NOT_A_LOOKUP: u8 = 1;
+
 #[derive(clap::Args)]
 pub struct Args {
     /// A JSON case file: one case, or a fixture file (`{"schema_version":1, ..., "cases":[...]}`) with --id.
@@ -288,7 +292,7 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     Ok(match result {
         Ok(_) => ExitCode::SUCCESS,
         // A GL error or an undefined lookup is a valid answer, but not a lookup: exit 1.
-        Err(_) => ExitCode::from(1),
+        Err(_) => ExitCode::from(NOT_A_LOOKUP),
     })
 }
 

@@ -9,6 +9,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
+/// Exit code of `--check` when a generated file differs from the one in the output folder.
+const DIFFERS: u8 = 1;
+
 #[derive(clap::Args)]
 pub struct Args {
     /// The grid: smoke (one of everything, < 1000 cases), default (committed under cases/fixtures),
@@ -166,7 +169,7 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
             args.grid,
             out.display()
         );
-        return Ok(ExitCode::from(1));
+        return Ok(ExitCode::from(DIFFERS));
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -1,12 +1,15 @@
 //! `shadowcheck merge OUT IN...`: combines the results.jsonl of shards (or of separate runs) into
 //! one set of reports in OUT, the same as an unsharded run would write. Exit codes as `run`.
+//!
+//! Each input is read by the shared reader (`records::read_results`: within one file the last
+//! record of a test wins); across inputs a test may appear twice only with the same record.
 
 use anyhow::{bail, Context};
-use shadowcheck_runner::events::{Fanout, RunMeta};
+use shadowcheck_runner::events::{Event, Fanout, Reporter};
+use shadowcheck_runner::records::{self, RunMeta, RESULTS_FILE};
 use shadowcheck_runner::report::{
     self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports,
 };
-use shadowcheck_runner::resume::{Prior, RESULTS_FILE};
 use shadowcheck_runner::run;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -21,7 +24,7 @@ pub struct Args {
 }
 
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
-    let mut merged = Prior::default();
+    let mut merged = records::Results::default();
     let mut backends: Vec<String> = vec![];
     let mut meta: Option<RunMeta> = None;
     for input in &a.inputs {
@@ -30,7 +33,8 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         } else {
             input.clone()
         };
-        let p = Prior::read(&path).with_context(|| format!("reading {}", path.display()))?;
+        let p =
+            records::read_results(&path).with_context(|| format!("reading {}", path.display()))?;
         if let Some(m) = &p.meta {
             for b in &m.backends {
                 if !backends.contains(b) {
@@ -69,18 +73,15 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let mut jsonl = JsonlReporter::create(&a.out.join(RESULTS_FILE), &meta)?;
     let errors: Vec<_> = merged.load_errors.iter().cloned().collect();
     let mut results = merged.results;
-    {
-        use shadowcheck_runner::events::{Event, Reporter};
-        for e in &errors {
-            jsonl.event(&Event::LoadError(e))?;
-        }
-        run::sort_results(&mut results);
-        for r in &results {
-            jsonl.event(&Event::CaseFinished {
-                result: r,
-                replayed: false,
-            })?;
-        }
+    for e in &errors {
+        jsonl.event(&Event::LoadError(e))?;
+    }
+    run::sort_results(&mut results);
+    for r in &results {
+        jsonl.event(&Event::CaseFinished {
+            result: r,
+            replayed: false,
+        })?;
     }
     fanout
         .reporters

@@ -8,6 +8,7 @@ pub mod mock_worker;
 pub mod mutants;
 pub mod report;
 pub mod run;
+pub mod summarize;
 
 /// Writes `text` to stdout. A reader that went away (`shadowcheck explain ... | head`) is not an
 /// error: the output was for it, and nothing else depends on it. Other write errors are.

@@ -9,6 +9,11 @@ use anyhow::Context;
 use shadowcheck_runner::mutants::{self, render, KillStatus, Suite};
 use std::path::PathBuf;
 use std::process::ExitCode;
+
+/// Exit code when some observable mutant is not killed (warn-only or survived).
+const SURVIVORS: u8 = 1;
+/// Exit code when the correct unit fails a case: the score is meaningless.
+const UNIT_FAILS: u8 = 2;
 use std::time::Instant;
 
 #[derive(clap::Args)]
@@ -175,9 +180,9 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             "mutants: the correct unit fails {} test(s); fix the unit or the fixtures first",
             report.unmutated.fail
         );
-        ExitCode::from(2)
+        ExitCode::from(UNIT_FAILS)
     } else if report.killed + report.unobservable < report.mutants.len() {
-        ExitCode::from(1)
+        ExitCode::from(SURVIVORS)
     } else {
         ExitCode::SUCCESS
     })

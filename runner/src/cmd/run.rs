@@ -3,11 +3,11 @@
 use anyhow::{bail, Context};
 use shadowcheck_runner::backend::{self, Backend, Options};
 use shadowcheck_runner::baseline::{Baseline, Lists, RegexList};
-use shadowcheck_runner::events::{exit, Fanout, RunMeta};
+use shadowcheck_runner::events::Fanout;
+use shadowcheck_runner::records::{self, exit, RunMeta, RESULTS_FILE};
 use shadowcheck_runner::report::{
     self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports,
 };
-use shadowcheck_runner::resume::{self, Prior, RESULTS_FILE};
 use shadowcheck_runner::run::{self, Settings};
 use shadowcheck_runner::shard::Shard;
 use std::path::{Path, PathBuf};
@@ -191,8 +191,8 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
 
     let results_path = out_dir.join(RESULTS_FILE);
     let (prior, jsonl) = if a.resume && results_path.exists() {
-        resume::truncate_partial_line(&results_path)?;
-        let prior = Prior::read(&results_path)?;
+        records::truncate_partial_line(&results_path)?;
+        let prior = records::read_results(&results_path)?;
         if let Some(m) = &prior.meta {
             if *m != meta {
                 bail!(
@@ -205,7 +205,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         (prior, JsonlReporter::append(&results_path)?)
     } else {
         (
-            Prior::default(),
+            records::Results::default(),
             JsonlReporter::create(&results_path, &meta)?,
         )
     };

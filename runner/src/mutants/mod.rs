@@ -8,7 +8,7 @@
 //!
 //! - a test is **Fail** when the observation is outside the `lenient` acceptance set, or when the
 //!   mutant refuses (errors on) a lookup the correct unit answers (the soft backend claims every
-//!   capability, and an error on a supported lookup is a Fail, see [`crate::verdict::Outcome`]);
+//!   capability, and an error on a supported lookup is a Fail, see [`crate::records::Outcome`]);
 //! - **Warn** when it is inside `lenient` but outside `strict`.
 //!
 //! A mutant is **killed** when at least one test is Fail; **warn-only** when none fails but at least
@@ -36,7 +36,8 @@ pub mod render;
 
 pub use catalog::{about, grid_change, unobservable, witness};
 
-use crate::verdict::{self, Outcome};
+use crate::records::Outcome;
+use crate::verdict;
 use serde::Serialize;
 use shadowcheck_model::{ApiPath, Case, Judgement, Spec};
 use shadowcheck_soft::{BatchResult, Fault, SoftError, SoftUnit};

@@ -2,7 +2,7 @@
 //! (reports/MUTANTS.md).
 
 use super::{KillStatus, MutantResult, MutantsReport};
-use crate::verdict::Outcome;
+use crate::records::Outcome;
 use std::fmt::Write as _;
 
 /// `12.3 %` with one decimal.

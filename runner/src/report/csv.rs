@@ -5,8 +5,8 @@
 //! (`"..."`, inner quotes doubled). The baseline reader takes the status after the last comma, so
 //! it reads both quoted and unquoted names.
 
-use crate::events::{Event, Reporter, TestResult};
-use crate::verdict::Status;
+use crate::events::{Event, Reporter};
+use crate::records::{Status, TestResult};
 use std::collections::BTreeSet;
 use std::io::Write;
 use std::path::{Path, PathBuf};

@@ -1,6 +1,7 @@
 //! report.json: the summary, the load errors and every result, with `schema_version`.
 
-use crate::events::{Event, LoadError, Reporter, Summary, TestResult};
+use crate::events::{Event, Reporter};
+use crate::records::{LoadError, Summary, TestResult};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 

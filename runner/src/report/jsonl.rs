@@ -1,7 +1,8 @@
 //! results.jsonl: one [`Line`] per record, appended as each test finishes and flushed after each
 //! batch, so a killed run leaves everything finished so far on disk (and `--resume` can continue it).
 
-use crate::events::{Event, Line, Reporter, RunMeta};
+use crate::events::{Event, Reporter};
+use crate::records::{Line, RunMeta};
 use std::fs::{File, OpenOptions};
 use std::io::{BufWriter, Write};
 use std::path::Path;

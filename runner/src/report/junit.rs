@@ -4,8 +4,8 @@
 //! Timeout are `<error>`, Skip is `<skipped>`; Pass, Warn, ExpectedFail, Flake and KnownFlake are
 //! successes (with the status in system-out where it is not Pass).
 
-use crate::events::{Event, Reporter, TestResult};
-use crate::verdict::{Outcome, Status};
+use crate::events::{Event, Reporter};
+use crate::records::{Outcome, Status, TestResult};
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 use std::path::{Path, PathBuf};
 use std::time::Duration;

@@ -1,7 +1,8 @@
 //! report.md: totals, tables by spec / func / filter / format, load errors and failure dumps.
 
 use super::{breakdown, dump, wants_dump};
-use crate::events::{Event, LoadError, Reporter, Summary, TestResult};
+use crate::events::{Event, Reporter};
+use crate::records::{LoadError, Summary, TestResult};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 

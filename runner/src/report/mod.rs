@@ -19,8 +19,8 @@ pub mod junit;
 pub mod markdown;
 pub mod terminal;
 
-use crate::events::{Reporter, TestResult};
-use crate::verdict::Outcome;
+use crate::events::Reporter;
+use crate::records::{Outcome, TestResult};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;

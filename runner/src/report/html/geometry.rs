@@ -10,7 +10,7 @@
 //! acceptance plots instead. Without fixtures, the footprints in the records are used (so only
 //! the Warn/Fail tests are placed, and the page says so).
 
-use crate::events::TestResult;
+use crate::records::TestResult;
 use crate::run::load_cases;
 use crate::verdict::oracle_evaluate;
 use shadowcheck_model::{Expectation, Footprint};

@@ -2,15 +2,15 @@
 //! run), `report.json` documents, or `shadowcheck run --out` directories holding either; several
 //! inputs are merged into one [`ReportInput`].
 //!
-//! The records are the runner's own serde types ([`TestResult`], [`LoadError`], [`RunMeta`],
+//! A results.jsonl is read by the shared reader ([`crate::records::reader`]: a truncated last line
+//! dropped, the last record of a (backend, test) winning, a footprint that does not read back
+//! dropped); the records are the runner's own serde types ([`TestResult`], [`LoadError`],
 //! [`JsonReport`]); nothing is redefined here. For one (backend, test) seen in several inputs the
 //! last input wins (the same rule `results.jsonl` itself uses for a flake re-run), and the number
 //! of records replaced by a different one is kept so the page can say so.
 
-use crate::events::{Line, LoadError, TestResult};
+use crate::records::{self, LoadError, TestResult, RESULTS_FILE};
 use crate::report::json::JsonReport;
-use crate::resume::RESULTS_FILE;
-use std::collections::{BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
 
 /// Why an input could not be read.
@@ -25,12 +25,8 @@ pub enum InputError {
     },
     #[error("{file}: neither a results.jsonl nor a report.json: {msg}")]
     Format { file: String, msg: String },
-    #[error("{file}:{line}: {msg}")]
-    Jsonl {
-        file: String,
-        line: usize,
-        msg: String,
-    },
+    #[error(transparent)]
+    Jsonl(#[from] records::ReadError),
 }
 
 /// Everything the report is made from.
@@ -74,58 +70,6 @@ pub fn resolve(path: &Path) -> Result<PathBuf, InputError> {
 /// One input file's records: (backends named by its metadata, fixtures, results, load errors).
 type FileRecords = (Vec<String>, Vec<String>, Vec<TestResult>, Vec<LoadError>);
 
-/// One line of results.jsonl. A record whose footprint does not read back (serde_json writes a
-/// non-finite footprint number as `null`) keeps everything else: the footprint is dropped.
-fn parse_line(line: &str) -> Result<Line, serde_json::Error> {
-    serde_json::from_str(line).or_else(|e| {
-        let mut v: serde_json::Value = serde_json::from_str(line)?;
-        match v.as_object_mut().and_then(|o| o.remove("footprint")) {
-            Some(_) => serde_json::from_value(v),
-            None => Err(e),
-        }
-    })
-}
-
-/// Reads a results.jsonl: the metadata line, load errors and results, the last record of a
-/// (backend, test) winning as in `--resume`; a last line cut short by a kill is ignored.
-fn read_jsonl(path: &Path, text: &str) -> Result<FileRecords, InputError> {
-    let (mut backends, mut fixtures, mut results, mut errors) =
-        (vec![], vec![], Vec::<TestResult>::new(), vec![]);
-    let mut index: HashMap<(String, String), usize> = HashMap::new();
-    let lines: Vec<&str> = text.lines().collect();
-    for (i, line) in lines.iter().enumerate() {
-        if line.trim().is_empty() {
-            continue;
-        }
-        match parse_line(line) {
-            Ok(Line::Meta(m)) => {
-                backends = m.backends;
-                fixtures = m.fixtures;
-            }
-            Ok(Line::LoadError(e)) => errors.push(e),
-            Ok(Line::Result(r)) => {
-                let key = (r.backend.clone(), r.test.clone());
-                match index.get(&key) {
-                    Some(&k) => results[k] = *r,
-                    None => {
-                        index.insert(key, results.len());
-                        results.push(*r);
-                    }
-                }
-            }
-            Err(_) if i + 1 == lines.len() && !text.ends_with('\n') => {}
-            Err(e) => {
-                return Err(InputError::Jsonl {
-                    file: path.display().to_string(),
-                    line: i + 1,
-                    msg: e.to_string(),
-                })
-            }
-        }
-    }
-    Ok((backends, fixtures, results, errors))
-}
-
 /// Reads one results file: JSON lines (`.jsonl`, or a first line with a `"kind"` key), else a
 /// report.json document.
 fn read_file(path: &Path) -> Result<FileRecords, InputError> {
@@ -138,7 +82,17 @@ fn read_file(path: &Path) -> Result<FileRecords, InputError> {
     let is_jsonl = path.extension().is_some_and(|e| e == "jsonl")
         || serde_json::from_str::<serde_json::Value>(first).is_ok_and(|v| v.get("kind").is_some());
     if is_jsonl {
-        return read_jsonl(path, &text);
+        let read = records::Results::parse(&file, &text)?;
+        let (backends, fixtures) = read
+            .meta
+            .map(|m| (m.backends, m.fixtures))
+            .unwrap_or_default();
+        return Ok((
+            backends,
+            fixtures,
+            read.results,
+            read.load_errors.into_iter().collect(),
+        ));
     }
     // As for JSON lines: results whose footprint does not read back lose only the footprint.
     let doc: JsonReport = serde_json::from_str(&text)
@@ -164,8 +118,7 @@ fn read_file(path: &Path) -> Result<FileRecords, InputError> {
 /// Reads and merges `paths` (files or run directories), in order.
 pub fn read_inputs(paths: &[PathBuf]) -> Result<ReportInput, InputError> {
     let mut input = ReportInput::default();
-    let mut index: HashMap<(String, String), usize> = HashMap::new();
-    let mut errors: BTreeSet<LoadError> = BTreeSet::new();
+    let mut merged = records::Results::default();
     for p in paths {
         let file = resolve(p)?;
         let (backends, fixtures, results, load_errors) = read_file(&file)?;
@@ -180,50 +133,21 @@ pub fn read_inputs(paths: &[PathBuf]) -> Result<ReportInput, InputError> {
         }
         for r in results {
             input.add_backend(&r.backend);
-            let key = (r.backend.clone(), r.test.clone());
-            match index.get(&key) {
-                Some(&i) => {
-                    if input.results[i] != r {
-                        input.replaced += 1;
-                    }
-                    input.results[i] = r;
-                }
-                None => {
-                    index.insert(key, input.results.len());
-                    input.results.push(r);
-                }
+            if merged.get(&r.backend, &r.test).is_some_and(|old| old != &r) {
+                input.replaced += 1;
             }
+            merged.insert(r);
         }
-        errors.extend(load_errors);
+        merged.load_errors.extend(load_errors);
     }
-    input.load_errors = errors.into_iter().collect();
+    input.results = merged.results;
+    input.load_errors = merged.load_errors.into_iter().collect();
     Ok(input)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_record_whose_footprint_does_not_read_back_keeps_the_rest() {
-        let meta = r#"{"kind":"meta","schema_version":1,"backends":["b"],"fixtures":["f"]}"#;
-        let rec = r#"{"kind":"result","backend":"b","test":"c@core","case_id":"c","api":"core","status":"Fail","outcome":"Fail","duration":0.0,"tags":{"spec":"gl46","target":"2d","format":"d24","func":"lequal","filter":"nearest/nearest"},"observed":[-1.0,0.0,0.0,1.0],"footprint":{"dref":null,"texels":[]}}"#;
-        let later = rec.replace("\"Fail\"", "\"Pass\"");
-        let text = format!("{meta}\n{rec}\n{later}\n{{\"kind\":\"res");
-        let (backends, fixtures, results, _) = read_jsonl(Path::new("x.jsonl"), &text).unwrap();
-        assert_eq!(
-            (backends, fixtures),
-            (vec!["b".to_string()], vec!["f".to_string()])
-        );
-        assert_eq!(
-            results.len(),
-            1,
-            "the later record of the same test replaces the first"
-        );
-        assert_eq!(results[0].outcome, crate::verdict::Outcome::Pass);
-        assert!(results[0].footprint.is_none());
-        assert!(read_jsonl(Path::new("x.jsonl"), &format!("{meta}\nnot json\n{rec}\n")).is_err());
-    }
 
     #[test]
     fn report_json_documents_and_directories_are_read_and_merged() {

@@ -6,9 +6,9 @@
 //! which a baseline does not change. The final statuses are in the summary and in each dump.
 
 use super::page::esc;
-use crate::events::TestResult;
+use crate::records::Outcome;
+use crate::records::TestResult;
 use crate::report::{dump, wants_dump};
-use crate::verdict::Outcome;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 

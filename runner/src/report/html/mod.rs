@@ -18,7 +18,7 @@ pub mod matrix;
 pub mod page;
 pub mod pictures;
 
-use crate::events::TestResult;
+use crate::records::TestResult;
 use geometry::Geometry;
 use load::ReportInput;
 use matrix::{DetailCaps, Kind, Matrix};
@@ -157,7 +157,7 @@ fn render_pictures(input: &ReportInput, geo: &Geometry, opts: &Options, out: &mu
                 .filter(|r| {
                     r.backend == *b
                         && r.tags.func == func
-                        && r.outcome != crate::verdict::Outcome::Skip
+                        && r.outcome != crate::records::Outcome::Skip
                 })
                 .collect();
             let points: Vec<HeatPoint> = mine
@@ -306,8 +306,8 @@ pub fn render(input: &ReportInput, geo: &Geometry, opts: &Options) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::events::{Rgba, Tags};
-    use crate::verdict::{ExpectedSummary, Outcome, Status};
+    use crate::events::Rgba;
+    use crate::records::{ExpectedSummary, Outcome, Status, Tags};
     use shadowcheck_model::ApiPath;
 
     fn result(backend: &str, id: &str, outcome: Outcome, r: f64) -> TestResult {

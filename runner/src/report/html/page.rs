@@ -1,7 +1,7 @@
 //! The page around the parts: HTML escaping, the inline style sheet and script (the report
 //! loads nothing from anywhere), and the summary per backend.
 
-use crate::events::{Counts, TestResult};
+use crate::records::{Counts, TestResult};
 use std::fmt::Write as _;
 
 /// Escapes text for HTML element content and double-quoted attributes.

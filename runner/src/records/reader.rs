@@ -1,0 +1,220 @@
+//! The one reader of `results.jsonl`, shared by `run --resume` (skip what is done), `merge`,
+//! `report` and `summarize`.
+//!
+//! The rules:
+//! - a run killed mid-write may leave a truncated last line (no newline at its end): it is dropped
+//!   when read, and cut off before `--resume` appends ([`truncate_partial_line`]); any other line
+//!   that does not parse is an error naming the file and line;
+//! - for each (backend, test) the last record wins (a flake re-run appends the final record of a
+//!   test after its first one), kept at the place of the first;
+//! - load errors are de-duplicated;
+//! - the last metadata line is the run's [`RunMeta`];
+//! - a record whose footprint does not read back (serde_json writes a non-finite footprint number
+//!   as `null`) keeps everything else: only the footprint is dropped.
+//!
+//! Readers that combine several files ([`Results::insert`]) choose their own rule for a
+//! (backend, test) seen in more than one: `merge` refuses a different record, `report` takes the
+//! later one and counts it.
+
+use super::{Line, LoadError, RunMeta, TestResult};
+use std::collections::{BTreeSet, HashMap};
+use std::io::{BufRead, BufReader, Seek, SeekFrom};
+use std::path::Path;
+
+/// The name of the file in a `--out` directory.
+pub const RESULTS_FILE: &str = "results.jsonl";
+
+/// Why a results.jsonl could not be read.
+#[derive(Debug, thiserror::Error)]
+pub enum ReadError {
+    #[error("{file}: {source}")]
+    Io {
+        file: String,
+        source: std::io::Error,
+    },
+    #[error("{file}:{line}: {msg}")]
+    Bad {
+        file: String,
+        line: usize,
+        msg: String,
+    },
+}
+
+/// What a results.jsonl holds, after the rules above.
+#[derive(Debug, Default, Clone)]
+pub struct Results {
+    /// The last metadata line, if any.
+    pub meta: Option<RunMeta>,
+    /// Final record per (backend, test), in first-seen order.
+    pub results: Vec<TestResult>,
+    index: HashMap<(String, String), usize>,
+    pub load_errors: BTreeSet<LoadError>,
+}
+
+impl Results {
+    pub fn get(&self, backend: &str, test: &str) -> Option<&TestResult> {
+        self.index
+            .get(&(backend.to_string(), test.to_string()))
+            .map(|&i| &self.results[i])
+    }
+
+    /// Adds `r`, replacing the record of the same (backend, test) in place; returns the replaced
+    /// record.
+    pub fn insert(&mut self, r: TestResult) -> Option<TestResult> {
+        let key = (r.backend.clone(), r.test.clone());
+        match self.index.get(&key) {
+            Some(&i) => Some(std::mem::replace(&mut self.results[i], r)),
+            None => {
+                self.index.insert(key, self.results.len());
+                self.results.push(r);
+                None
+            }
+        }
+    }
+
+    /// Parses the text of a results.jsonl; `file` names it in errors.
+    pub fn parse(file: &str, text: &str) -> Result<Results, ReadError> {
+        let mut out = Results::default();
+        let complete = text.ends_with('\n');
+        let lines: Vec<&str> = text.lines().collect();
+        for (i, line) in lines.iter().enumerate() {
+            if line.trim().is_empty() {
+                continue;
+            }
+            match parse_line(line) {
+                Ok(Line::Meta(m)) => out.meta = Some(m),
+                Ok(Line::LoadError(e)) => {
+                    out.load_errors.insert(e);
+                }
+                Ok(Line::Result(r)) => {
+                    out.insert(*r);
+                }
+                Err(_) if i + 1 == lines.len() && !complete => {}
+                Err(e) => {
+                    return Err(ReadError::Bad {
+                        file: file.to_string(),
+                        line: i + 1,
+                        msg: e.to_string(),
+                    })
+                }
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// Reads `path` (a results.jsonl).
+pub fn read_results(path: &Path) -> Result<Results, ReadError> {
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|source| ReadError::Io {
+        file: file.clone(),
+        source,
+    })?;
+    Results::parse(&file, &text)
+}
+
+/// One line of results.jsonl; a record whose footprint does not read back loses the footprint.
+fn parse_line(line: &str) -> Result<Line, serde_json::Error> {
+    serde_json::from_str(line).or_else(|e| {
+        let mut v: serde_json::Value = serde_json::from_str(line)?;
+        match v.as_object_mut().and_then(|o| o.remove("footprint")) {
+            Some(_) => serde_json::from_value(v),
+            None => Err(e),
+        }
+    })
+}
+
+/// Cuts a results file after its last complete line, so appending continues on a fresh line.
+pub fn truncate_partial_line(path: &Path) -> Result<(), ReadError> {
+    let io = |source| ReadError::Io {
+        file: path.display().to_string(),
+        source,
+    };
+    let f = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .open(path)
+        .map_err(io)?;
+    let mut keep = 0u64;
+    let mut pos = 0u64;
+    let mut r = BufReader::new(&f);
+    let mut buf = Vec::new();
+    loop {
+        buf.clear();
+        let n = r.read_until(b'\n', &mut buf).map_err(io)?;
+        if n == 0 {
+            break;
+        }
+        pos += n as u64;
+        if buf.ends_with(b"\n") {
+            keep = pos;
+        }
+    }
+    if keep < pos {
+        f.set_len(keep).map_err(io)?;
+        let mut f = f;
+        f.seek(SeekFrom::End(0)).map_err(io)?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::records::Outcome;
+
+    #[test]
+    fn a_truncated_last_line_is_dropped_and_cut_before_appending() {
+        let dir =
+            std::env::temp_dir().join(format!("shadowcheck-resume-unit-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let p = dir.join(RESULTS_FILE);
+        let meta = serde_json::to_string(&Line::Meta(RunMeta::new())).unwrap();
+        let err = serde_json::to_string(&Line::LoadError(LoadError {
+            file: "f".into(),
+            case: None,
+            message: "m".into(),
+        }))
+        .unwrap();
+        std::fs::write(
+            &p,
+            format!("{meta}\n{err}\n{err}\n{{\"kind\":\"result\",\"back"),
+        )
+        .unwrap();
+        let prior = read_results(&p).unwrap();
+        assert_eq!(prior.meta, Some(RunMeta::new()));
+        assert_eq!(prior.load_errors.len(), 1, "duplicates collapse");
+        truncate_partial_line(&p).unwrap();
+        assert_eq!(
+            std::fs::read_to_string(&p).unwrap(),
+            format!("{meta}\n{err}\n{err}\n")
+        );
+        // A bad line in the middle is an error naming the line.
+        std::fs::write(&p, format!("{meta}\nnot json\n{err}\n")).unwrap();
+        let e = read_results(&p).unwrap_err().to_string();
+        assert!(e.starts_with(&format!("{}:2: ", p.display())), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_record_whose_footprint_does_not_read_back_keeps_the_rest() {
+        let meta = r#"{"kind":"meta","schema_version":1,"backends":["b"],"fixtures":["f"]}"#;
+        let rec = r#"{"kind":"result","backend":"b","test":"c@core","case_id":"c","api":"core","status":"Fail","outcome":"Fail","duration":0.0,"tags":{"spec":"gl46","target":"2d","format":"d24","func":"lequal","filter":"nearest/nearest"},"observed":[-1.0,0.0,0.0,1.0],"footprint":{"dref":null,"texels":[]}}"#;
+        let later = rec.replace("\"Fail\"", "\"Pass\"");
+        let text = format!("{meta}\n{rec}\n{later}\n{{\"kind\":\"res");
+        let read = Results::parse("x.jsonl", &text).unwrap();
+        let m = read.meta.unwrap();
+        assert_eq!(
+            (m.backends, m.fixtures),
+            (vec!["b".to_string()], vec!["f".to_string()])
+        );
+        assert_eq!(
+            read.results.len(),
+            1,
+            "the later record of the same test replaces the first"
+        );
+        assert_eq!(read.results[0].outcome, Outcome::Pass);
+        assert!(read.results[0].footprint.is_none());
+        assert!(Results::parse("x.jsonl", &format!("{meta}\nnot json\n{rec}\n")).is_err());
+    }
+}
