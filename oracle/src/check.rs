@@ -1,6 +1,7 @@
 //! Does the case's state exist under its spec? Illegal TexParameter values become the GL error the
 //! spec names (`OracleError::GlError`); targets, formats and API paths the spec does not define become
-//! `OracleError::NotApplicable`. The per-pname data lives in `state`.
+//! `OracleError::NotApplicable`. What is legal comes from the spec's `Rules` (its pname tables through
+//! `state`).
 
 use crate::rules::Rules;
 use crate::state::{self, Ctx, GlErrorKind, Value};

@@ -1,6 +1,8 @@
 //! TexParameter / GetTexParameter state of the depth-comparison pnames, per spec and context, as data a
 //! GL backend can test against: which pnames exist, their legal values, the error an illegal value
 //! raises, the value stored after conversion (GL 4.6 §2.2.1) and clamping, and the initial value.
+//! Each spec's table lives in its module (`Rules::params`, e.g. `gl46::params`); this module holds
+//! the tokens, the types and the TexParameter / GetTexParameter logic over the tables.
 
 use shadowcheck_model::Spec;
 

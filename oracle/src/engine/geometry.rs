@@ -17,6 +17,16 @@ pub(super) fn geometries(
     co: &Coords,
     choices: &mut Vec<&'static str>,
 ) -> Vec<Geo> {
+    let geos = faces_and_layers(e, case, co);
+    if geos.len() > 1 {
+        choices.push("the major axis or the layer is tied: the implementation's rounding/tie rule decides (GL 4.6 §8.13, §8.14.2 footnote 4)");
+    }
+    layer_and_offset_steps(e, case, &geos);
+    geos
+}
+
+/// One geometry per cube face and layer the implementation may choose.
+fn faces_and_layers(e: &mut Eval, case: &Case, co: &Coords) -> Vec<Geo> {
     let tex = &case.texture;
     let c = co.c;
     let q = co.q;
@@ -77,9 +87,12 @@ pub(super) fn geometries(
             }
         }
     }
-    if geos.len() > 1 {
-        choices.push("the major axis or the layer is tied: the implementation's rounding/tie rule decides (GL 4.6 §8.13, §8.14.2 footnote 4)");
-    }
+    geos
+}
+
+/// The steps for the spec's layer and the texel offset.
+fn layer_and_offset_steps(e: &mut Eval, case: &Case, geos: &[Geo]) {
+    let tex = &case.texture;
     if tex.target.is_array() {
         if let Some(g) = geos.first() {
             let l = if tex.target == Target::CubeArray {
@@ -103,5 +116,4 @@ pub(super) fn geometries(
             "GL 4.6 §8.14.2 (8.10), §8.14.3; GLSL 4.60 §8.9.2 textureOffset",
         );
     }
-    geos
 }
