@@ -343,10 +343,24 @@ impl Wrap {
 }
 
 keyed_enum! {
-    /// A named precision profile for acceptance sets (see the oracle's `profile` module).
+    /// A named precision profile (tier) for acceptance sets; the oracle's `profile::PROFILES` holds
+    /// each one's tolerances. Declared strictest first: the declaration order is the tiering of
+    /// [`crate::Expectation::judge`] (inside the strictest profile's set a pass, inside only a later
+    /// one's a warning). Adding a tier is a variant here, in its place, and its entry in `PROFILES`.
     Profile {
         Strict = "strict",
         Lenient = "lenient",
+    }
+}
+
+impl Profile {
+    /// The strictest profile: an observation inside its set passes.
+    pub fn strictest() -> Profile {
+        Profile::ALL[0]
+    }
+    /// The loosest profile: an observation outside its set fails.
+    pub fn loosest() -> Profile {
+        Profile::ALL[Profile::ALL.len() - 1]
     }
 }
 

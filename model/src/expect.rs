@@ -84,14 +84,15 @@ pub struct Expectation {
     pub citations: Vec<String>,
 }
 
-/// The outcome of checking one observation against an expectation.
+/// The outcome of checking one observation against an expectation: the strictest profile (in
+/// [`Profile::ALL`] order) whose acceptance set holds it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Judgement {
-    /// Inside the strict acceptance set.
-    Strict,
-    /// Inside lenient, outside strict.
-    LenientOnly,
-    /// Outside lenient.
+    /// Inside the strictest profile's acceptance set (a pass).
+    Strictest,
+    /// Inside this looser profile's set, outside every stricter one's (a warning).
+    Looser(Profile),
+    /// Outside every profile's set.
     Outside,
 }
 
@@ -110,15 +111,19 @@ impl Expectation {
         }))
     }
 
-    /// Strict / lenient-only / outside, for one observation.
+    /// The strictest profile accepting one observation, trying the profiles strictest first.
+    /// `None` when the layout or a profile tried is missing.
     pub fn judge(&self, api: ApiPath, rgba: [f64; 4]) -> Option<Judgement> {
-        if self.accepts(Profile::Strict, api, rgba)? {
-            Some(Judgement::Strict)
-        } else if self.accepts(Profile::Lenient, api, rgba)? {
-            Some(Judgement::LenientOnly)
-        } else {
-            Some(Judgement::Outside)
+        for &p in Profile::ALL {
+            if self.accepts(p, api, rgba)? {
+                return Some(if p == Profile::strictest() {
+                    Judgement::Strictest
+                } else {
+                    Judgement::Looser(p)
+                });
+            }
         }
+        Some(Judgement::Outside)
     }
 }
 

@@ -409,11 +409,11 @@ mod tests {
         };
         assert_eq!(
             e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 1.0]),
-            Some(Judgement::Strict)
+            Some(Judgement::Strictest)
         );
         assert_eq!(
             e.judge(ApiPath::FixedFunction, [0.95, 1.0, 1.0, 1.0]),
-            Some(Judgement::LenientOnly)
+            Some(Judgement::Looser(Profile::Lenient))
         );
         assert_eq!(
             e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 0.0]),

@@ -122,7 +122,7 @@ fn blend(s: &Scen, tol: f64, r1: (f64, f64), r2: Option<(f64, f64)>) -> Interval
 /// Largest number of ambiguous texels enumerated one assignment at a time (2^8 for trilinear).
 const MAX_ENUMERATED: usize = 10;
 
-/// Appends the intervals `prof` accepts for one scenario. `fraction`: the spec leaves filtered r
+/// Appends the intervals `prof` (the `pi`-th entry of `PROFILES`) accepts for one scenario. `fraction`: the spec leaves filtered r
 /// "implementation-dependent ... proportional to the number of passes", so the lenient hull also takes
 /// in the unweighted pass fraction.
 pub fn scen_intervals(
@@ -236,19 +236,20 @@ pub fn merge(mut v: Vec<Interval>) -> Vec<Interval> {
     out
 }
 
-/// The last steps from per-scenario intervals to the acceptance sets [strict, lenient]:
+/// The last steps from per-scenario intervals to the acceptance sets, one per profile in `PROFILES`
+/// order:
 /// - `colour_bits`: a filtered colour value may be returned at the format's precision (either
 ///   neighbour, §2.3.5.2): ends widen to the neighbouring multiples of 1/(2^b − 1);
 /// - the result reaches the observer as an f32: ends widen outward to the nearest f32;
 /// - sets stay inside `range` (r ∈ [fail, 1] for a comparison), and rounding noise of weighted sums
 ///   (an ulp) is absorbed so that the sets hold the spec value;
-/// - a looser profile never accepts less: lenient is united with strict.
+/// - a looser profile never accepts less: each set is united with the (final) one before it.
 pub fn finalize(
-    mut sets: [Vec<Interval>; 2],
+    mut sets: Vec<Vec<Interval>>,
     colour_bits: Option<u32>,
     range: (f64, f64),
     spec_value: Option<f64>,
-) -> [Acceptance; 2] {
+) -> Vec<Acceptance> {
     for set in sets.iter_mut() {
         for iv in set.iter_mut() {
             if let Some(bits) = colour_bits {
@@ -272,9 +273,12 @@ pub fn finalize(
             }
         }
     }
-    let [s, l] = sets;
-    let strict = Acceptance(merge(s));
-    let mut len = l;
-    len.extend(strict.0.iter().copied());
-    [strict, Acceptance(merge(len))]
+    let mut out: Vec<Acceptance> = Vec::with_capacity(sets.len());
+    for mut set in sets {
+        if let Some(stricter) = out.last() {
+            set.extend(stricter.0.iter().copied());
+        }
+        out.push(Acceptance(merge(set)));
+    }
+    out
 }

@@ -4,7 +4,8 @@
 use crate::rules::{
     passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
 };
-use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Spec, Target, Wrap};
+use crate::state::{self, Ctx, GlErrorKind::*, Param, ParamKind, Stored};
+use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Format, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
 /// ARB_shadow §3.8.13.1 (as inserted):
@@ -53,7 +54,11 @@ pub fn rules(spec: Spec) -> Rules {
         seamless_cube: false,
         lod_bias: true,
         ambient_on_pass: false,
-        has_fail_value: ambient,
+        fail_value_cite: if ambient {
+            Some("ARB_shadow_ambient §3.8.13.1")
+        } else {
+            None
+        },
         targets: LEGACY_TARGETS,
         wraps: LEGACY_WRAPS,
         apis: LEGACY_APIS,
@@ -62,7 +67,81 @@ pub fn rules(spec: Spec) -> Rules {
         depth_stencil_mode: false,
         // Revision history, 21 January 2002: "Fixed error to be INVALID_ENUM instead of INVALID_OPERATION."
         bad_func_error: "INVALID_ENUM",
+        formats: LEGACY_FORMATS,
+        mode_pname: state::TEXTURE_COMPARE_MODE,
+        func_pname: state::TEXTURE_COMPARE_FUNC,
+        params,
+        no_lod_state: None,
+        no_lookup_bias: None,
+        fixed_depth_mode: None,
+        // A colour texture "operates in the normal manner": GL 2.1 knows it as LUMINANCE8 (Table 3.20).
+        colour_luminance: true,
+        colour_note: None,
+        readings: &[],
     }
+}
+
+/// Floating-point depth arrives with ARB_depth_buffer_float (GL 3.0); before it every depth texture
+/// is fixed-point. DEPTH_STENCIL comes from EXT_packed_depth_stencil.
+pub const LEGACY_FORMATS: &[Format] = &[
+    Format::D16,
+    Format::D24,
+    Format::D32,
+    Format::D24S8,
+    Format::DepthUnsized,
+    Format::R8,
+];
+
+/// The TexParameter state of ARB_shadow (with ARB_depth_texture's DEPTH_TEXTURE_MODE, and
+/// ARB_shadow_ambient's fail value for `Spec::ArbAmbient`); compatibility contexts only.
+pub fn params(spec: Spec, ctx: Ctx) -> Vec<Param> {
+    let mut v = Vec::new();
+    if ctx != Ctx::Compat {
+        return v;
+    }
+    // ARB_shadow Errors: "INVALID_ENUM is generated if ... TEXTURE_COMPARE_MODE_ARB and
+    // parameter <param> is not NONE or COMPARE_R_TO_TEXTURE"; New State: initial NONE.
+    v.push(Param::new(
+        state::TEXTURE_COMPARE_MODE,
+        "TEXTURE_COMPARE_MODE",
+        ParamKind::Enum(&[state::NONE, state::COMPARE_REF_TO_TEXTURE], InvalidEnum),
+        Stored::Enum(state::NONE),
+        "ARB_shadow Errors, New State",
+    ));
+    // ARB_shadow Errors: "... TEXTURE_COMPARE_FUNC_ARB and parameter <param> is not LEQUAL
+    // or GEQUAL"; initial LEQUAL.
+    v.push(Param::new(
+        state::TEXTURE_COMPARE_FUNC,
+        "TEXTURE_COMPARE_FUNC",
+        ParamKind::Enum(&[state::LEQUAL, state::GEQUAL], InvalidEnum),
+        Stored::Enum(state::LEQUAL),
+        "ARB_shadow Errors, New State",
+    ));
+    // ARB_depth_texture: "INVALID_ENUM is generated if TexParameter[if] parameter <pname> is
+    // DEPTH_TEXTURE_MODE_ARB and parameter <param> is not ALPHA, LUMINANCE, or INTENSITY";
+    // "Initially, depth textures are interpreted as LUMINANCE."
+    v.push(Param::new(
+        state::DEPTH_TEXTURE_MODE,
+        "DEPTH_TEXTURE_MODE",
+        ParamKind::Enum(
+            &[state::LUMINANCE, state::INTENSITY, state::ALPHA],
+            InvalidEnum,
+        ),
+        Stored::Enum(state::LUMINANCE),
+        "ARB_depth_texture Errors, §3.8.4",
+    ));
+    if spec == Spec::ArbAmbient {
+        // "The value set by TEXTURE_COMPARE_FAIL_VALUE_ARB is clamped to lie in [0, 1]";
+        // Errors: "None."; initial 0.0.
+        v.push(Param::new(
+            state::TEXTURE_COMPARE_FAIL_VALUE_ARB,
+            "TEXTURE_COMPARE_FAIL_VALUE_ARB",
+            ParamKind::Unit,
+            Stored::Float(0.0),
+            "ARB_shadow_ambient §3.8.4, New State",
+        ));
+    }
+    v
 }
 
 /// Depth textures of the GL 1.4 - 2.1 era: 1D, 2D (ARB_depth_texture) and rectangle

@@ -1,11 +1,12 @@
 //! Does the case's state exist under its spec? Illegal TexParameter values become the GL error the
 //! spec names (`OracleError::GlError`); targets, formats and API paths the spec does not define become
-//! `OracleError::NotApplicable`. The per-pname data lives in `state`.
+//! `OracleError::NotApplicable`. What is legal comes from the spec's `Rules` (its pname tables through
+//! `state`).
 
 use crate::rules::Rules;
 use crate::state::{self, Ctx, GlErrorKind, Value};
 use crate::OracleError;
-use shadowcheck_model::{ApiPath, Case, Filter, Format, Spec, Target, Wrap};
+use shadowcheck_model::{ApiPath, Case, Filter, Target, Wrap};
 
 /// The context an API path runs in.
 pub fn ctx_of(api: ApiPath) -> Ctx {
@@ -54,29 +55,6 @@ fn not_applicable(case: &Case, rules: &Rules, why: String) -> OracleError {
     }
 }
 
-/// Formats each spec defines depth textures for.
-fn format_defined(spec: Spec, f: Format) -> bool {
-    match spec {
-        // Floating-point depth arrives with ARB_depth_buffer_float (GL 3.0); before it every depth
-        // texture is fixed-point. DEPTH_STENCIL comes from EXT_packed_depth_stencil / OES_packed_depth_stencil.
-        Spec::Sgix | Spec::SgixAmbient => matches!(
-            f,
-            Format::D16 | Format::D24 | Format::D32 | Format::DepthUnsized | Format::R8
-        ),
-        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs => {
-            !matches!(f, Format::D32f | Format::D32fS8)
-        }
-        // OES_depth_texture: UNSIGNED_SHORT / UNSIGNED_INT data into DEPTH_COMPONENT; DEPTH_STENCIL_OES.
-        Spec::Es2Ext => matches!(
-            f,
-            Format::D16 | Format::D24 | Format::D24S8 | Format::DepthUnsized | Format::R8
-        ),
-        // ES 3.2 Table 8.11 has no DEPTH_COMPONENT32 (unorm).
-        Spec::Gles32 => f != Format::D32,
-        Spec::Gl46 => true,
-    }
-}
-
 /// Checks state legality and applicability; Ok when the lookup is defined.
 pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     let s = &case.sampler;
@@ -111,7 +89,7 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
             ),
         ));
     }
-    if !format_defined(rules.spec, t.format) {
+    if !rules.formats.contains(&t.format) {
         return Err(not_applicable(
             case,
             rules,
@@ -131,19 +109,9 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     // Every piece of sampler state is set through TexParameter in every context the case runs in.
     for &ctx in &ctxs {
         let set = |pname: u32, v: Value| state::set_param(rules.spec, ctx, pname, v);
-        let mode_pname = if matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) {
-            state::TEXTURE_COMPARE_SGIX
-        } else {
-            state::TEXTURE_COMPARE_MODE
-        };
-        set(mode_pname, Value::Int(s.compare_mode.gl() as i64))
+        set(rules.mode_pname, Value::Int(s.compare_mode.gl() as i64))
             .map_err(|e| gl_error(case, rules, e, format!("compare mode `{}`", s.compare_mode)))?;
-        let func_pname = if matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) {
-            state::TEXTURE_COMPARE_OPERATOR_SGIX
-        } else {
-            state::TEXTURE_COMPARE_FUNC
-        };
-        set(func_pname, Value::Int(s.compare_func.gl() as i64)).map_err(|e| {
+        set(rules.func_pname, Value::Int(s.compare_func.gl() as i64)).map_err(|e| {
             gl_error(
                 case,
                 rules,
@@ -210,29 +178,18 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
             "TEXTURE_LOD_BIAS does not exist in ES (ES 3.2 §8.14.1)".into(),
         ));
     }
-    if rules.spec == Spec::Es2Ext {
-        // ES 2.0 Table 3.10 has no TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD or
-        // TEXTURE_MAX_LOD: setting them is an INVALID_ENUM.
+    if let Some(why) = rules.no_lod_state {
         let lod_state = t.base_level != 0
             || s.max_level.is_some()
             || s.min_lod != -1000.0
             || s.max_lod != 1000.0;
         if lod_state {
-            return Err(gl_error(
-                case,
-                rules,
-                GlErrorKind::InvalidEnum,
-                "TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL / TEXTURE_MIN_LOD / TEXTURE_MAX_LOD are not ES 2.0 state".into(),
-            ));
+            return Err(gl_error(case, rules, GlErrorKind::InvalidEnum, why.into()));
         }
-        // EXT_shadow_samplers: "float shadow2DEXT(sampler2DShadow sampler, vec3 coord); float
-        // shadow2DProjEXT(sampler2DShadow sampler, vec4 coord);" — no bias argument.
+    }
+    if let Some(why) = rules.no_lookup_bias {
         if case.lookup.bias != 0.0 {
-            return Err(not_applicable(
-                case,
-                rules,
-                "shadow2DEXT / shadow2DProjEXT take no bias argument".into(),
-            ));
+            return Err(not_applicable(case, rules, why.into()));
         }
     }
     if t.target == Target::Rect {

@@ -3,7 +3,7 @@
 //! and `alternative_rules` gives the other reading as rules, so `explain` can show both values.
 
 use crate::rules::{RefClamp, Rules};
-use shadowcheck_model::{Case, CompareFunc, CompareMode, Filter, Spec, Wrap};
+use shadowcheck_model::{Case, CompareFunc, CompareMode, Filter, Wrap};
 
 /// One disagreement between the documents.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -95,10 +95,6 @@ pub fn get(id: &str) -> Option<&'static Contradiction> {
     ALL.iter().find(|c| c.id == id)
 }
 
-fn is_sgix(s: Spec) -> bool {
-    matches!(s, Spec::Sgix | Spec::SgixAmbient)
-}
-
 /// The contradictions a case touches.
 pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
     let s = &case.sampler;
@@ -106,11 +102,14 @@ pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
     let filtered = s.mag_filter != Filter::Nearest
         || !matches!(s.min_filter, Filter::Nearest | Filter::NearestMipmapNearest);
     let d = case.lookup.dref;
+    // The spec-specific contradictions concern a case only under a spec whose rules list them.
+    let readings = crate::rules::rules_for(case.spec).readings;
+    let concerns = |id: &str| readings.iter().any(|r| r.id == id);
     let mut out = Vec::new();
     for c in ALL {
         let hit = match c.id {
-            "sgix-lequal-direction" => is_sgix(case.spec) && compare,
-            "sgix-ambient" => case.spec == Spec::SgixAmbient && compare,
+            "sgix-lequal-direction" => concerns(c.id) && compare,
+            "sgix-ambient" => concerns(c.id) && compare,
             "ref-clamp" => compare && !(0.0..=1.0).contains(&d),
             "filtering" => compare && filtered,
             "result-layout" => true,
@@ -122,11 +121,10 @@ pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
             }
             "bad-operator-error" => false,
             "es2-greater-row" => {
-                case.spec == Spec::Es2Ext && compare && s.compare_func == CompareFunc::Greater
+                concerns(c.id) && compare && s.compare_func == CompareFunc::Greater
             }
             "mirror-parens" => {
-                case.spec == Spec::Gl46
-                    && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::MirroredRepeat)
+                concerns(c.id) && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::MirroredRepeat)
             }
             _ => false,
         };
@@ -137,25 +135,22 @@ pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
     out
 }
 
-/// The rules under the other reading of `id` for this case, where the other reading changes a rule.
+/// The rules under the other reading of `id` for this case, where the other reading changes a rule:
+/// the spec's own other reading (`Rules::readings`), else for `ref-clamp` the neighbouring
+/// documents' clamp.
 pub fn alternative_rules(case: &Case, id: &str) -> Option<Rules> {
-    let mut r = crate::rules::rules_for(case.spec);
+    let r = crate::rules::rules_for(case.spec);
+    if let Some(reading) = r.readings.iter().find(|x| x.id == id) {
+        return reading.other.map(|other| other(r));
+    }
     match id {
-        "sgix-lequal-direction" if is_sgix(case.spec) => r.table = crate::sgix::table_arb_issue2,
-        "sgix-ambient" if case.spec == Spec::SgixAmbient => r.ambient_on_pass = true,
-        "ref-clamp" => {
-            r.ref_clamp = match r.ref_clamp {
+        "ref-clamp" => Some(Rules {
+            ref_clamp: match r.ref_clamp {
                 RefClamp::Always | RefClamp::Unstated => RefClamp::FixedPointOnly,
                 RefClamp::FixedPointOnly => RefClamp::Always,
-            };
-            if case.spec == Spec::Sgix || case.spec == Spec::SgixAmbient {
-                r.ref_clamp = RefClamp::Always;
-            }
-        }
-        "es2-greater-row" if case.spec == Spec::Es2Ext => {
-            r.table = crate::es2_ext::table_greater_row_literal
-        }
-        _ => return None,
+            },
+            ..r
+        }),
+        _ => None,
     }
-    Some(r)
 }

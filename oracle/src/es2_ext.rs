@@ -2,9 +2,11 @@
 //! Source: specs/registry/EXT_shadow_samplers.txt, OES_depth_texture.txt.
 
 use crate::rules::{
-    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
+    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, Reading, RefClamp,
+    Rules,
 };
-use shadowcheck_model::{ApiPath, CompareFunc, Spec, Target, Wrap};
+use crate::state::{self, Ctx, GlErrorKind::*, Param, ParamKind, Stored};
+use shadowcheck_model::{ApiPath, CompareFunc, Format, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
 /// §3.7.14.1, Table 3.X "Depth texture comparison functions":
@@ -66,7 +68,7 @@ pub fn rules() -> Rules {
         seamless_cube: true,
         lod_bias: false,
         ambient_on_pass: false,
-        has_fail_value: false,
+        fail_value_cite: None,
         // GLSL additions: "sampler2DShadow  a handle for accessing a 2D depth texture with comparison";
         // OES_depth_texture allows TEXTURE_2D only.
         targets: &[Target::T2d],
@@ -75,5 +77,65 @@ pub fn rules() -> Rules {
         depth_modes: &[],
         depth_stencil_mode: false,
         bad_func_error: "INVALID_ENUM",
+        // OES_depth_texture: UNSIGNED_SHORT / UNSIGNED_INT data into DEPTH_COMPONENT; DEPTH_STENCIL_OES.
+        formats: &[
+            Format::D16,
+            Format::D24,
+            Format::D24S8,
+            Format::DepthUnsized,
+            Format::R8,
+        ],
+        mode_pname: state::TEXTURE_COMPARE_MODE,
+        func_pname: state::TEXTURE_COMPARE_FUNC,
+        params,
+        // ES 2.0 Table 3.10 has no TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD or
+        // TEXTURE_MAX_LOD: setting them is an INVALID_ENUM.
+        no_lod_state: Some("TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL / TEXTURE_MIN_LOD / TEXTURE_MAX_LOD are not ES 2.0 state"),
+        // EXT_shadow_samplers: "float shadow2DEXT(sampler2DShadow sampler, vec3 coord); float
+        // shadow2DProjEXT(sampler2DShadow sampler, vec4 coord);" — no bias argument.
+        no_lookup_bias: Some("shadow2DEXT / shadow2DProjEXT take no bias argument"),
+        fixed_depth_mode: None,
+        // A colour texture is R8 / LUMINANCE8 read as (r,0,0,1), as in ES 3.x.
+        colour_luminance: false,
+        colour_note: None,
+        readings: &[Reading {
+            id: "es2-greater-row",
+            other: Some(greater_row_literal),
+        }],
     }
+}
+
+/// Contradiction `es2-greater-row`: the printed rows taken literally.
+fn greater_row_literal(r: Rules) -> Rules {
+    Rules {
+        table: table_greater_row_literal,
+        ..r
+    }
+}
+
+/// The TexParameter state of EXT_shadow_samplers; ES contexts only.
+pub fn params(_: Spec, ctx: Ctx) -> Vec<Param> {
+    if ctx != Ctx::Es {
+        return Vec::new();
+    }
+    // Table 3.10 as appended: "TEXTURE_COMPARE_MODE_EXT enum NONE, COMPARE_REF_TO_TEXTURE_EXT",
+    // "TEXTURE_COMPARE_FUNC_EXT enum LEQUAL, GEQUAL, LESS, GREATER, EQUAL, NOTEQUAL, ALWAYS,
+    // NEVER". The extension has no Errors or New State section: ES 2.0 §2.5 reports an
+    // unaccepted enum value with INVALID_ENUM, and the initial values are those of ARB_shadow.
+    vec![
+        Param::new(
+            state::TEXTURE_COMPARE_MODE,
+            "TEXTURE_COMPARE_MODE_EXT",
+            ParamKind::Enum(&[state::NONE, state::COMPARE_REF_TO_TEXTURE], InvalidEnum),
+            Stored::Enum(state::NONE),
+            "EXT_shadow_samplers §3.7.4 (table 3.10)",
+        ),
+        Param::new(
+            state::TEXTURE_COMPARE_FUNC,
+            "TEXTURE_COMPARE_FUNC_EXT",
+            ParamKind::Enum(state::FUNCS8, InvalidEnum),
+            Stored::Enum(state::LEQUAL),
+            "EXT_shadow_samplers §3.7.4 (table 3.10)",
+        ),
+    ]
 }

@@ -69,7 +69,7 @@ pub fn render(case: &Case, result: &Result<Evaluation, OracleError>) -> String {
                     "  {:<8} {}    [{}]",
                     p.key(),
                     acc,
-                    spec_of(*p).describe()
+                    spec_of(*p).map(|s| s.describe()).unwrap_or_default()
                 );
             }
             if let Some(why) = &x.implementation_defined {

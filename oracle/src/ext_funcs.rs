@@ -2,6 +2,7 @@
 //! Source: specs/registry/EXT_shadow_funcs.txt.
 
 use crate::rules::{passes_if, CompareTable, NotInTable, Rules};
+use crate::state::{self, Ctx, GlErrorKind::*, Param, ParamKind, Stored};
 use shadowcheck_model::{CompareFunc, Spec};
 use std::cmp::Ordering::{self, *};
 
@@ -37,6 +38,26 @@ pub fn rules() -> Rules {
         doc: "ARB_shadow + EXT_shadow_funcs",
         table: table as CompareTable,
         table_cite: "EXT_shadow_funcs (ARB_shadow §3.8.13.1 pseudo-code, updated)",
+        params,
         ..crate::arb::rules(Spec::Arb)
     }
+}
+
+/// ARB_shadow's state with EXT_shadow_funcs' TEXTURE_COMPARE_FUNC in place of ARB_shadow's.
+pub fn params(_: Spec, ctx: Ctx) -> Vec<Param> {
+    let mut v = crate::arb::params(Spec::Arb, ctx);
+    for p in v.iter_mut() {
+        if p.pname == state::TEXTURE_COMPARE_FUNC {
+            // EXT_shadow_funcs Errors: "... is not one of LEQUAL, GEQUAL, LESS, GREATER, EQUAL,
+            // NOTEQUAL, ALWAYS, or NEVER"; initial LEQUAL.
+            *p = Param::new(
+                state::TEXTURE_COMPARE_FUNC,
+                "TEXTURE_COMPARE_FUNC",
+                ParamKind::Enum(state::FUNCS8, InvalidEnum),
+                Stored::Enum(state::LEQUAL),
+                "EXT_shadow_funcs Errors, New State",
+            );
+        }
+    }
+    v
 }

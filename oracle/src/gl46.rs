@@ -2,9 +2,11 @@
 //! the legacy API paths). Source: specs/gl46-core-excerpts.txt, glsl-excerpts.txt part F.
 
 use crate::rules::{
-    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
+    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, Reading, RefClamp,
+    Rules,
 };
-use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Spec, Target, Wrap};
+use crate::state::{self, Ctx, GlErrorKind::*, Param, ParamKind, Stored};
+use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Format, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
 /// §8.23.1, Table 8.23 "Depth texture comparison functions":
@@ -58,7 +60,7 @@ pub fn rules() -> Rules {
         seamless_cube: false,
         lod_bias: true,
         ambient_on_pass: false,
-        has_fail_value: false,
+        fail_value_cite: None,
         targets: &[
             Target::T1d,
             Target::T2d,
@@ -94,5 +96,67 @@ pub fn rules() -> Rules {
         // Table 8.17: "DEPTH_STENCIL_TEXTURE_MODE enum DEPTH_COMPONENT, STENCIL_INDEX".
         depth_stencil_mode: true,
         bad_func_error: "INVALID_ENUM",
+        formats: Format::ALL,
+        mode_pname: state::TEXTURE_COMPARE_MODE,
+        func_pname: state::TEXTURE_COMPARE_FUNC,
+        params,
+        no_lod_state: None,
+        no_lookup_bias: None,
+        fixed_depth_mode: None,
+        // A colour texture is R8: Table 15.1, (Rt,0,0),1.
+        colour_luminance: false,
+        colour_note: None,
+        readings: &[Reading {
+            id: "mirror-parens",
+            other: None,
+        }],
     }
+}
+
+/// The TexParameter state of GL 4.6 (core and compatibility contexts).
+pub fn params(_: Spec, ctx: Ctx) -> Vec<Param> {
+    if ctx == Ctx::Es {
+        return Vec::new();
+    }
+    // Table 8.17, §8.10 Errors ("INVALID_ENUM ... not among the legal values"), §8.22 / Table
+    // 23.15 initial values NONE, LEQUAL, DEPTH_COMPONENT.
+    let mut v = vec![
+        Param::new(
+            state::TEXTURE_COMPARE_MODE,
+            "TEXTURE_COMPARE_MODE",
+            ParamKind::Enum(&[state::NONE, state::COMPARE_REF_TO_TEXTURE], InvalidEnum),
+            Stored::Enum(state::NONE),
+            "GL 4.6 Table 8.17, §8.10, Table 23.15",
+        ),
+        Param::new(
+            state::TEXTURE_COMPARE_FUNC,
+            "TEXTURE_COMPARE_FUNC",
+            ParamKind::Enum(state::FUNCS8, InvalidEnum),
+            Stored::Enum(state::LEQUAL),
+            "GL 4.6 Table 8.17, §8.10, Table 23.15",
+        ),
+        Param::new(
+            state::DEPTH_STENCIL_TEXTURE_MODE,
+            "DEPTH_STENCIL_TEXTURE_MODE",
+            ParamKind::Enum(&[state::DEPTH_COMPONENT, state::STENCIL_INDEX], InvalidEnum),
+            Stored::Enum(state::DEPTH_COMPONENT),
+            "GL 4.6 Table 8.17, §8.10, Table 23.15",
+        ),
+    ];
+    if ctx == Ctx::Compat {
+        // Compatibility Table 8.25: "DEPTH_TEXTURE_MODE enum RED, LUMINANCE, INTENSITY, ALPHA";
+        // §8.22: initial LUMINANCE (§8.12: RED in a forward-compatible context). Removed from
+        // the core profile (E.2.2), where the pname is an INVALID_ENUM.
+        v.push(Param::new(
+            state::DEPTH_TEXTURE_MODE,
+            "DEPTH_TEXTURE_MODE",
+            ParamKind::Enum(
+                &[state::RED, state::LUMINANCE, state::INTENSITY, state::ALPHA],
+                InvalidEnum,
+            ),
+            Stored::Enum(state::LUMINANCE),
+            "GL 4.6 compatibility Table 8.25, §8.12, §8.22",
+        ));
+    }
+    v
 }

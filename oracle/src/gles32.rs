@@ -6,7 +6,8 @@
 use crate::rules::{
     passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
 };
-use shadowcheck_model::{ApiPath, CompareFunc, Spec, Target, Wrap};
+use crate::state::{self, Ctx, GlErrorKind::*, Param, ParamKind, Stored};
+use shadowcheck_model::{ApiPath, CompareFunc, Format, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
 /// §8.20.1, Table 8.22 "Depth texture comparison functions":
@@ -58,7 +59,7 @@ pub fn rules() -> Rules {
         seamless_cube: true,
         lod_bias: false,
         ambient_on_pass: false,
-        has_fail_value: false,
+        fail_value_cite: None,
         // §8.10: "target ... must be one of TEXTURE_2D, TEXTURE_3D, TEXTURE_2D_ARRAY,
         // TEXTURE_CUBE_MAP, TEXTURE_CUBE_MAP_ARRAY, ..."
         targets: &[
@@ -78,5 +79,56 @@ pub fn rules() -> Rules {
         depth_modes: &[],
         depth_stencil_mode: true,
         bad_func_error: "INVALID_ENUM",
+        // ES 3.2 Table 8.11 has no DEPTH_COMPONENT32 (unorm).
+        formats: &[
+            Format::D16,
+            Format::D24,
+            Format::D32f,
+            Format::D24S8,
+            Format::D32fS8,
+            Format::DepthUnsized,
+            Format::R8,
+        ],
+        mode_pname: state::TEXTURE_COMPARE_MODE,
+        func_pname: state::TEXTURE_COMPARE_FUNC,
+        params,
+        no_lod_state: None,
+        no_lookup_bias: None,
+        fixed_depth_mode: None,
+        // A colour texture is R8: (Rt,0,0),1.
+        colour_luminance: false,
+        colour_note: None,
+        readings: &[],
     }
+}
+
+/// The TexParameter state of ES 3.2; ES contexts only.
+pub fn params(_: Spec, ctx: Ctx) -> Vec<Param> {
+    if ctx != Ctx::Es {
+        return Vec::new();
+    }
+    // ES 3.2 Table 8.19, §8.10 Errors, §8.19 initial values.
+    vec![
+        Param::new(
+            state::TEXTURE_COMPARE_MODE,
+            "TEXTURE_COMPARE_MODE",
+            ParamKind::Enum(&[state::NONE, state::COMPARE_REF_TO_TEXTURE], InvalidEnum),
+            Stored::Enum(state::NONE),
+            "ES 3.2 Table 8.19, §8.10, §8.19",
+        ),
+        Param::new(
+            state::TEXTURE_COMPARE_FUNC,
+            "TEXTURE_COMPARE_FUNC",
+            ParamKind::Enum(state::FUNCS8, InvalidEnum),
+            Stored::Enum(state::LEQUAL),
+            "ES 3.2 Table 8.19, §8.10, §8.19",
+        ),
+        Param::new(
+            state::DEPTH_STENCIL_TEXTURE_MODE,
+            "DEPTH_STENCIL_TEXTURE_MODE",
+            ParamKind::Enum(&[state::DEPTH_COMPONENT, state::STENCIL_INDEX], InvalidEnum),
+            Stored::Enum(state::DEPTH_COMPONENT),
+            "ES 3.2 Table 8.19, §8.10, §8.19",
+        ),
+    ]
 }

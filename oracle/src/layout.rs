@@ -1,18 +1,18 @@
 //! Where r appears in the RGBA an API path returns.
 
-use crate::rules::Rules;
+use crate::rules::{Incomplete, Rules};
 use crate::sample::Kind;
-use shadowcheck_model::{ApiPath, Channel, DepthTextureMode, Spec};
+use shadowcheck_model::{ApiPath, Channel, DepthTextureMode};
 use Channel::{One, Unused, Zero, R};
 
 /// The DEPTH_TEXTURE_MODE in effect: the sampler's, or the initial value (LUMINANCE: ARB_depth_texture
 /// "Initially, depth textures are interpreted as LUMINANCE"; GL 4.6 compatibility §8.22).
+/// A spec may fix the mode whatever the sampler says (`Rules::fixed_depth_mode`).
 pub fn depth_mode(rules: &Rules, m: Option<DepthTextureMode>) -> DepthTextureMode {
-    match rules.spec {
-        // SGIX_shadow: "treated as if the texture internal format were LUMINANCE".
-        Spec::Sgix | Spec::SgixAmbient => DepthTextureMode::Luminance,
-        _ => m.unwrap_or(DepthTextureMode::Luminance),
-    }
+    rules
+        .fixed_depth_mode
+        .or(m)
+        .unwrap_or(DepthTextureMode::Luminance)
 }
 
 /// The layout of r for `api`, with a citation. `incomplete`: the texture is incomplete (r = 0).
@@ -28,7 +28,6 @@ pub fn layout(
         ApiPath::FixedFunction | ApiPath::ArbFp | ApiPath::Glsl120
     );
     let ff = api == ApiPath::FixedFunction;
-    let legacy_spec = !matches!(rules.spec, Spec::Gl46 | Spec::Gles32);
     if incomplete {
         if ff {
             // GL 2.1 §3.8.10 / compatibility §8.17: texturing with an incomplete texture is "as if texture
@@ -38,7 +37,9 @@ pub fn layout(
                 "GL 2.1 §3.8.10 (incomplete: texturing disabled)",
             );
         }
-        if legacy || rules.spec == Spec::Es2Ext && kind != Kind::Compare {
+        // A vec4 (non-shadow) result under a spec whose incomplete texture reads (0,0,0,1) (ES 2.0).
+        let vec4_0001 = rules.incomplete == Incomplete::Legacy0001 && kind != Kind::Compare;
+        if legacy || vec4_0001 {
             return (
                 [R, Zero, Zero, One],
                 "GL 2.1 §3.11.2 / ARB_fragment_program_shadow: incomplete → (0,0,0,1)",
@@ -56,8 +57,8 @@ pub fn layout(
         ),
         Kind::Colour => {
             // A colour texture "operates in the normal manner": legacy specs know it as LUMINANCE8 (Table
-            // 3.20: (Lt,Lt,Lt),1), GL 3.0+ / ES as R8 (Table 15.1: (Rt,0,0),1).
-            let base = if legacy_spec && rules.spec != Spec::Es2Ext {
+            // 3.20: (Lt,Lt,Lt),1), GL 3.0+ / ES as R8 (Table 15.1: (Rt,0,0),1): `Rules::colour_luminance`.
+            let base = if rules.colour_luminance {
                 [R, R, R, One]
             } else {
                 [R, Zero, Zero, One]

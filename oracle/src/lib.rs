@@ -6,10 +6,24 @@
 //! - [`OracleError`]: the case is not something the spec defines (e.g. LESS under ARB_shadow,
 //!   which is an INVALID_ENUM), or is malformed.
 //!
-//! Layout: one module per specification (`sgix`, `arb`, `ext_funcs`, `es2_ext`, `gl46`, `gles32`), each
-//! filling a [`rules::Rules`] beside the sentences it encodes; shared machinery (`unorm`, `wrap`, `cube`,
-//! `lod`, `sample`, `accept`, `engine`); precision profiles as data (`profile`); TexParameter state
-//! (`state`); the documents' disagreements (`contradictions`).
+//! Layout:
+//! - one module per specification (`sgix`, `arb`, `ext_funcs`, `es2_ext`, `gl46`, `gles32`), each filling a
+//!   [`rules::Rules`] beside the sentences it encodes: comparison table, clamps, border, filtering,
+//!   completeness, targets, formats, API paths, its TexParameter table (`params`, served by `state`) and
+//!   its readings of the documents' disagreements; [`rules::rules_for`] is the registry;
+//! - shared machinery that asks the `Rules` and never matches on the spec: `check` (GL errors,
+//!   not-applicable), `unorm`, `wrap`, `cube`, `lod`, `select`, `sample`, `accept`, `layout`, and `engine`,
+//!   whose `run` is the list of phases (inputs, completeness and layout, geometry, levels and per-profile
+//!   intervals, footprint, acceptance);
+//! - precision profiles as data (`profile::PROFILES`, strictest first); TexParameter state (`state`); the
+//!   documents' disagreements (`contradictions`); `explain`.
+//!
+//! Adding a spec rule: a rule of an existing spec is changed in its module only; a new kind of
+//! difference is a `Rules` field (`rules.rs`) plus its value in each spec module. A new spec is one
+//! module plus one line in `rules::rules_for` (and its `Spec` variant in the model).
+//!
+//! Adding a precision tier: a `shadowcheck_model::Profile` variant (in strictness order) and its entry in
+//! `profile::PROFILES`; everything else iterates the table (see `profile`).
 
 use shadowcheck_model::{Case, Expectation, Footprint};
 

@@ -1,8 +1,19 @@
-//! Precision profiles: how much a conforming implementation may deviate from the exact pseudocode.
+//! Precision profiles (tiers): how much a conforming implementation may deviate from the exact
+//! pseudocode, as data.
 //!
-//! The spec value is exact; the acceptance set of a profile widens it by the tolerances below.
-//! Every tolerance of `lenient` is at least that of `strict`, and `lenient` additionally takes the
-//! hull of filtered results, so a looser profile never accepts less (checked by property tests).
+//! The spec value is exact; the acceptance set of a profile widens it by the tolerances of its entry
+//! in [`PROFILES`]. Everything in the oracle iterates that table; nothing assumes how many tiers there
+//! are. The table lists the profiles strictest first, in the declaration order of
+//! [`shadowcheck_model::Profile`], which is also what an observation earns
+//! ([`shadowcheck_model::Expectation::judge`]): inside the first tier's set a Pass, inside a later
+//! one's only a Warn, outside every set a Fail.
+//!
+//! Every tolerance of a tier is at least that of the tier before it, and each tier's set is finally
+//! united with the one before (`accept::finalize`), so a looser profile never accepts less (checked
+//! below and by property tests).
+//!
+//! Adding a tier: a variant of `shadowcheck_model::Profile` (its key is the fixtures' key, its
+//! position its strictness) and its entry here, at the same position, with its tolerances.
 
 use shadowcheck_model::Profile;
 
@@ -46,15 +57,12 @@ pub const LENIENT: ProfileSpec = ProfileSpec {
     hull_filtered: true,
 };
 
-/// Every profile, strictest first.
-pub const PROFILES: [ProfileSpec; 2] = [STRICT, LENIENT];
+/// Every profile, strictest first (the declaration order of [`Profile`]).
+pub const PROFILES: &[ProfileSpec] = &[STRICT, LENIENT];
 
-/// The data of a named profile.
-pub fn spec_of(p: Profile) -> ProfileSpec {
-    match p {
-        Profile::Strict => STRICT,
-        Profile::Lenient => LENIENT,
-    }
+/// The data of a named profile (`None` only if the table missed a variant, which a test rules out).
+pub fn spec_of(p: Profile) -> Option<&'static ProfileSpec> {
+    PROFILES.iter().find(|s| s.profile == p)
 }
 
 impl ProfileSpec {
@@ -84,13 +92,32 @@ mod tests {
     use super::*;
 
     #[test]
-    fn lenient_is_looser_in_every_tolerance() {
-        let [s, l] = std::hint::black_box(PROFILES);
-        assert!(l.weight_tol >= s.weight_tol);
-        assert!(l.lod_tol >= s.lod_tol);
-        assert!(l.coord_tol >= s.coord_tol);
-        assert!(s.ref_bits.is_none() && l.ref_bits.is_some());
-        assert!(l.hull_filtered && !s.hull_filtered);
-        assert_eq!(spec_of(Profile::Lenient), LENIENT);
+    fn the_table_lists_every_profile_strictest_first() {
+        let names: Vec<Profile> = PROFILES.iter().map(|p| p.profile).collect();
+        assert_eq!(names, Profile::ALL);
+        for p in Profile::ALL {
+            assert_eq!(spec_of(*p).map(|s| s.profile), Some(*p));
+        }
+        assert!(PROFILES[0].ref_bits.is_none() && !PROFILES[0].hull_filtered);
+    }
+
+    #[test]
+    fn each_tier_is_at_least_as_loose_as_the_one_before() {
+        for w in std::hint::black_box(PROFILES).windows(2) {
+            let (s, l) = (&w[0], &w[1]);
+            assert!(l.weight_tol >= s.weight_tol, "{}", l.profile);
+            assert!(l.lod_tol >= s.lod_tol, "{}", l.profile);
+            assert!(l.coord_tol >= s.coord_tol, "{}", l.profile);
+            // A reference precision of 2^-b: fewer bits are looser; `None` (f32 rounding only) is the
+            // tightest.
+            match (s.ref_bits, l.ref_bits) {
+                (Some(sb), Some(lb)) => assert!(lb <= sb, "{}", l.profile),
+                (Some(_), None) => {
+                    panic!("{} drops {}'s reference precision", l.profile, s.profile)
+                }
+                (None, _) => {}
+            }
+            assert!(l.hull_filtered || !s.hull_filtered, "{}", l.profile);
+        }
     }
 }

@@ -1,8 +1,11 @@
 //! What distinguishes one specification from another, as data. Each spec module (`sgix`, `arb`,
 //! `ext_funcs`, `es2_ext`, `gl46`, `gles32`) fills a [`Rules`] beside the sentences it encodes; the
-//! shared machinery (`engine`, `texel`, `lod`, `cube`) reads only this struct.
+//! shared machinery (`engine`, `sample`, `select`, `lod`, `layout`, `check`, `state`,
+//! `contradictions`) reads only this struct and never matches on the spec itself. [`rules_for`] is
+//! the registry: adding a spec is one module and one line there.
 
-use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Spec, Target, Wrap};
+use crate::state::{Ctx, Param};
+use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Format, Spec, Target, Wrap};
 use std::cmp::Ordering;
 
 /// How the reference value Dref / R is clamped before the comparison.
@@ -58,6 +61,14 @@ pub struct NotInTable;
 /// depends on an unordered (NaN) operand. `Err` when the function is not in this spec's table.
 pub type CompareTable = fn(CompareFunc, Option<Ordering>) -> Result<Option<bool>, NotInTable>;
 
+/// A contradiction (see `contradictions`) that concerns this spec in particular, and the rules under
+/// its other reading (`None`: the other reading changes no rule).
+#[derive(Debug, Clone, Copy)]
+pub struct Reading {
+    pub id: &'static str,
+    pub other: Option<fn(Rules) -> Rules>,
+}
+
 /// Everything the shared machinery needs to know about one specification.
 #[derive(Debug, Clone, Copy)]
 pub struct Rules {
@@ -80,8 +91,9 @@ pub struct Rules {
     pub seamless_cube: bool,
     /// TEXTURE_LOD_BIAS exists (not in ES).
     pub lod_bias: bool,
-    /// The fail/ambient value replaces 0.0 (ARB_shadow_ambient, SGIX_shadow_ambient).
-    pub has_fail_value: bool,
+    /// The fail/ambient value replaces 0.0 (ARB_shadow_ambient, SGIX_shadow_ambient): the citation of
+    /// that sentence; `None` when the spec has no fail value.
+    pub fail_value_cite: Option<&'static str>,
     /// The fail value replaces the *passing* 1.0 instead (the overview reading of SGIX_shadow_ambient,
     /// contradiction `sgix-ambient`; never the defended reading).
     pub ambient_on_pass: bool,
@@ -97,9 +109,29 @@ pub struct Rules {
     pub depth_stencil_mode: bool,
     /// The error a compare function outside the table raises (SGIX: INVALID_OPERATION).
     pub bad_func_error: &'static str,
+    /// Texture formats this spec defines depth textures (or the colour bypass) for.
+    pub formats: &'static [Format],
+    /// The pnames that set the compare mode and the compare function (SGIX: its own tokens).
+    pub mode_pname: u32,
+    pub func_pname: u32,
+    /// The depth-comparison TexParameter pnames this spec defines in a context (its table in `state`
+    /// terms); `Spec` tells a module's variants apart.
+    pub params: fn(Spec, Ctx) -> Vec<Param>,
+    /// TEXTURE_BASE_LEVEL / MAX_LEVEL / MIN_LOD / MAX_LOD do not exist: why (setting them is an error).
+    pub no_lod_state: Option<&'static str>,
+    /// The lookup functions take no bias argument: why (a biased lookup is not applicable).
+    pub no_lookup_bias: Option<&'static str>,
+    /// The DEPTH_TEXTURE_MODE in effect whatever the sampler says (SGIX: LUMINANCE).
+    pub fixed_depth_mode: Option<DepthTextureMode>,
+    /// A colour texture reads as LUMINANCE8, (r,r,r,1) (the legacy desktop specs); otherwise as R8.
+    pub colour_luminance: bool,
+    /// Said when a colour texture is looked up (SGIX defines its operators for depth textures only).
+    pub colour_note: Option<&'static str>,
+    /// The contradictions that concern this spec in particular and their other readings.
+    pub readings: &'static [Reading],
 }
 
-/// The rules of a spec variant.
+/// The rules of a spec variant: the registry of spec modules.
 pub fn rules_for(spec: Spec) -> Rules {
     match spec {
         Spec::Sgix | Spec::SgixAmbient => crate::sgix::rules(spec),

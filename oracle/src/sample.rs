@@ -86,9 +86,16 @@ pub struct TexelEval {
     /// The exact comparison outcome (compare kind only).
     pub pass: Option<bool>,
     /// The allowed values per profile, in `PROFILES` order.
-    pub poss: [Poss; 2],
+    pub poss: Vec<Poss>,
     /// Why this texel's value is left open, if it is.
     pub undefined: Option<&'static str>,
+}
+
+impl TexelEval {
+    /// The values the strictest profile allows.
+    pub fn strictest(&self) -> Poss {
+        self.poss.first().copied().unwrap_or(Poss::point(self.dt))
+    }
 }
 
 /// Everything a texel evaluation needs that does not depend on the texel.
@@ -345,7 +352,7 @@ impl TexelCtx<'_> {
                 if strict == (false, false) {
                     add_to(&mut strict, self.table(exact_ord));
                 }
-                let mut poss = [self.two(strict); 2];
+                let mut poss = vec![self.two(strict); PROFILES.len()];
                 for (i, p) in PROFILES.iter().enumerate() {
                     if let Some(bits) = p.ref_bits {
                         let mut o = strict;
@@ -378,18 +385,21 @@ impl TexelCtx<'_> {
                     lo = lo.min(*c);
                     hi = hi.max(*c);
                 }
-                let mut poss = [Poss { lo, hi, two: false }; 2];
+                let mut poss = vec![Poss { lo, hi, two: false }; PROFILES.len()];
                 if src.undefined.is_some() {
                     let top = if self.kind == Kind::Stencil {
                         255.0
                     } else {
                         1.0f64.max(hi)
                     };
-                    poss = [Poss {
-                        lo: lo.min(0.0),
-                        hi: top,
-                        two: false,
-                    }; 2];
+                    poss = vec![
+                        Poss {
+                            lo: lo.min(0.0),
+                            hi: top,
+                            two: false,
+                        };
+                        PROFILES.len()
+                    ];
                 }
                 for (i, p) in PROFILES.iter().enumerate() {
                     if let (Some(bits), false) = (p.ref_bits, self.kind == Kind::Stencil) {

@@ -2,9 +2,11 @@
 //! Source: specs/registry/SGIX_shadow.txt, specs/registry/SGIX_shadow_ambient.txt (and seeds/SGIX_shadow.txt).
 
 use crate::rules::{
-    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
+    passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, Reading, RefClamp,
+    Rules,
 };
-use shadowcheck_model::{ApiPath, CompareFunc, Spec, Target, Wrap};
+use crate::state::{self, Ctx, GlErrorKind::*, Param, ParamKind, Stored};
+use shadowcheck_model::{ApiPath, CompareFunc, DepthTextureMode, Format, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
 /// SGIX_shadow, Additions to Chapter 3, Notes:
@@ -64,7 +66,11 @@ pub fn rules(spec: Spec) -> Rules {
         // SGIX_shadow_ambient Notes: "the value of the SHADOW_AMBIENT_SGIX parameter is returned,
         // instead of 0.0".
         ambient_on_pass: false,
-        has_fail_value: ambient,
+        fail_value_cite: if ambient {
+            Some("SGIX_shadow_ambient Notes")
+        } else {
+            None
+        },
         // "These operators are defined only for textures with internal format DEPTH_COMPONENT"; the
         // depth textures of the time (SGIX_depth_texture) are 1D and 2D.
         targets: &[Target::T1d, Target::T2d],
@@ -75,5 +81,115 @@ pub fn rules(spec: Spec) -> Rules {
         depth_modes: &[],
         depth_stencil_mode: false,
         bad_func_error: "INVALID_OPERATION",
+        // Floating-point depth arrives with ARB_depth_buffer_float (GL 3.0); before it every depth
+        // texture is fixed-point. DEPTH_STENCIL comes from EXT_packed_depth_stencil.
+        formats: &[
+            Format::D16,
+            Format::D24,
+            Format::D32,
+            Format::DepthUnsized,
+            Format::R8,
+        ],
+        mode_pname: state::TEXTURE_COMPARE_SGIX,
+        func_pname: state::TEXTURE_COMPARE_OPERATOR_SGIX,
+        params,
+        no_lod_state: None,
+        no_lookup_bias: None,
+        // "treated as if the texture internal format were LUMINANCE".
+        fixed_depth_mode: Some(DepthTextureMode::Luminance),
+        colour_luminance: true,
+        colour_note: Some("SGIX_shadow defines its operators \"only for textures with internal format DEPTH_COMPONENT\"; the bypass is ARB_shadow's (issue 5)"),
+        readings: if ambient { READINGS_AMBIENT } else { READINGS },
     }
+}
+
+/// Contradiction `sgix-lequal-direction`: the other reading is ARB_shadow issue 2's table.
+fn lequal_direction(r: Rules) -> Rules {
+    Rules {
+        table: table_arb_issue2,
+        ..r
+    }
+}
+
+/// Contradiction `ref-clamp`: the other reading of SGIX is NVIDIA's clamp.
+fn nvidia_clamp(r: Rules) -> Rules {
+    Rules {
+        ref_clamp: RefClamp::Always,
+        ..r
+    }
+}
+
+/// Contradiction `sgix-ambient`: the overview's reading, the ambient value on a pass.
+fn ambient_on_pass(r: Rules) -> Rules {
+    Rules {
+        ambient_on_pass: true,
+        ..r
+    }
+}
+
+const READINGS: &[Reading] = &[
+    Reading {
+        id: "sgix-lequal-direction",
+        other: Some(lequal_direction),
+    },
+    Reading {
+        id: "ref-clamp",
+        other: Some(nvidia_clamp),
+    },
+];
+
+const READINGS_AMBIENT: &[Reading] = &[
+    Reading {
+        id: "sgix-lequal-direction",
+        other: Some(lequal_direction),
+    },
+    Reading {
+        id: "sgix-ambient",
+        other: Some(ambient_on_pass),
+    },
+    Reading {
+        id: "ref-clamp",
+        other: Some(nvidia_clamp),
+    },
+];
+
+/// The TexParameter state of SGIX_shadow (and SGIX_shadow_ambient); compatibility contexts only.
+pub fn params(spec: Spec, ctx: Ctx) -> Vec<Param> {
+    let mut v = Vec::new();
+    if ctx != Ctx::Compat {
+        return v;
+    }
+    // Table 3.8: "TEXTURE_COMPARE_SGIX boolean TRUE or FALSE"; New State: initial "False".
+    v.push(Param::new(
+        state::TEXTURE_COMPARE_SGIX,
+        "TEXTURE_COMPARE_SGIX",
+        ParamKind::Bool,
+        Stored::Bool(false),
+        "SGIX_shadow Table 3.8, New State",
+    ));
+    // "TEXTURE_COMPARE_OPERATOR_SGIX integer TEXTURE_LEQUAL_R_SGIX, TEXTURE_GEQUAL_R_SGIX";
+    // Errors: "INVALID_OPERATION is generated if ... <param> is not TEXTURE_LEQUAL_R_SGIX, or
+    // TEXTURE_GEQUAL_R_SGIX"; initial "TEXTURE_LEQUAL_R_SGIX".
+    v.push(Param::new(
+        state::TEXTURE_COMPARE_OPERATOR_SGIX,
+        "TEXTURE_COMPARE_OPERATOR_SGIX",
+        ParamKind::Enum(
+            &[state::TEXTURE_LEQUAL_R_SGIX, state::TEXTURE_GEQUAL_R_SGIX],
+            InvalidOperation,
+        ),
+        Stored::Enum(state::TEXTURE_LEQUAL_R_SGIX),
+        "SGIX_shadow Table 3.8, Errors, New State",
+    ));
+    if spec == Spec::SgixAmbient {
+        // "When SHADOW_AMBIENT_SGIX is set, the <param> value is clamped to the range [0.0, 1.0]";
+        // Errors: "None"; initial 0.0.
+        v.push(Param::new(
+            state::SHADOW_AMBIENT_SGIX,
+            "SHADOW_AMBIENT_SGIX",
+            ParamKind::Unit,
+            Stored::Float(0.0),
+            "SGIX_shadow_ambient Notes, New State",
+        ));
+    }
+    v
 }

@@ -1,6 +1,8 @@
 //! TexParameter / GetTexParameter state of the depth-comparison pnames, per spec and context, as data a
 //! GL backend can test against: which pnames exist, their legal values, the error an illegal value
 //! raises, the value stored after conversion (GL 4.6 §2.2.1) and clamping, and the initial value.
+//! Each spec's table lives in its module (`Rules::params`, e.g. `gl46::params`); this module holds
+//! the tokens, the types and the TexParameter / GetTexParameter logic over the tables.
 
 use shadowcheck_model::Spec;
 
@@ -18,17 +20,18 @@ pub const TEXTURE_COMPARE_FUNC: u32 = 0x884D;
 pub const COMPARE_REF_TO_TEXTURE: u32 = 0x884E;
 pub const DEPTH_STENCIL_TEXTURE_MODE: u32 = 0x90EA;
 pub const NONE: u32 = 0;
-const LEQUAL: u32 = 0x0203;
-const GEQUAL: u32 = 0x0206;
-const FUNCS8: &[u32] = &[
+pub(crate) const LEQUAL: u32 = 0x0203;
+pub(crate) const GEQUAL: u32 = 0x0206;
+/// The eight compare functions NEVER ... ALWAYS.
+pub(crate) const FUNCS8: &[u32] = &[
     0x0200, 0x0201, 0x0202, 0x0203, 0x0204, 0x0205, 0x0206, 0x0207,
 ];
-const LUMINANCE: u32 = 0x1909;
-const INTENSITY: u32 = 0x8049;
-const ALPHA: u32 = 0x1906;
-const RED: u32 = 0x1903;
-const DEPTH_COMPONENT: u32 = 0x1902;
-const STENCIL_INDEX: u32 = 0x1901;
+pub(crate) const LUMINANCE: u32 = 0x1909;
+pub(crate) const INTENSITY: u32 = 0x8049;
+pub(crate) const ALPHA: u32 = 0x1906;
+pub(crate) const RED: u32 = 0x1903;
+pub(crate) const DEPTH_COMPONENT: u32 = 0x1902;
+pub(crate) const STENCIL_INDEX: u32 = 0x1901;
 
 /// Every depth-comparison pname any spec here defines (SHADOW_AMBIENT_SGIX is
 /// TEXTURE_COMPARE_FAIL_VALUE_ARB's token).
@@ -113,198 +116,28 @@ pub struct Param {
     pub cite: &'static str,
 }
 
-const fn p(
-    pname: u32,
-    name: &'static str,
-    kind: ParamKind,
-    default: Stored,
-    cite: &'static str,
-) -> Param {
-    Param {
-        pname,
-        name,
-        kind,
-        default,
-        cite,
+impl Param {
+    pub(crate) const fn new(
+        pname: u32,
+        name: &'static str,
+        kind: ParamKind,
+        default: Stored,
+        cite: &'static str,
+    ) -> Param {
+        Param {
+            pname,
+            name,
+            kind,
+            default,
+            cite,
+        }
     }
 }
 
-/// The depth-comparison pnames that exist under `spec` in a context of kind `ctx`.
+/// The depth-comparison pnames that exist under `spec` in a context of kind `ctx` (each spec module
+/// holds its own table, `Rules::params`).
 pub fn params(spec: Spec, ctx: Ctx) -> Vec<Param> {
-    use GlErrorKind::*;
-    let mut v = Vec::new();
-    match spec {
-        Spec::Sgix | Spec::SgixAmbient if ctx == Ctx::Compat => {
-            // Table 3.8: "TEXTURE_COMPARE_SGIX boolean TRUE or FALSE"; New State: initial "False".
-            v.push(p(
-                TEXTURE_COMPARE_SGIX,
-                "TEXTURE_COMPARE_SGIX",
-                ParamKind::Bool,
-                Stored::Bool(false),
-                "SGIX_shadow Table 3.8, New State",
-            ));
-            // "TEXTURE_COMPARE_OPERATOR_SGIX integer TEXTURE_LEQUAL_R_SGIX, TEXTURE_GEQUAL_R_SGIX";
-            // Errors: "INVALID_OPERATION is generated if ... <param> is not TEXTURE_LEQUAL_R_SGIX, or
-            // TEXTURE_GEQUAL_R_SGIX"; initial "TEXTURE_LEQUAL_R_SGIX".
-            v.push(p(
-                TEXTURE_COMPARE_OPERATOR_SGIX,
-                "TEXTURE_COMPARE_OPERATOR_SGIX",
-                ParamKind::Enum(
-                    &[TEXTURE_LEQUAL_R_SGIX, TEXTURE_GEQUAL_R_SGIX],
-                    InvalidOperation,
-                ),
-                Stored::Enum(TEXTURE_LEQUAL_R_SGIX),
-                "SGIX_shadow Table 3.8, Errors, New State",
-            ));
-            if spec == Spec::SgixAmbient {
-                // "When SHADOW_AMBIENT_SGIX is set, the <param> value is clamped to the range [0.0, 1.0]";
-                // Errors: "None"; initial 0.0.
-                v.push(p(
-                    SHADOW_AMBIENT_SGIX,
-                    "SHADOW_AMBIENT_SGIX",
-                    ParamKind::Unit,
-                    Stored::Float(0.0),
-                    "SGIX_shadow_ambient Notes, New State",
-                ));
-            }
-        }
-        Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs if ctx == Ctx::Compat => {
-            // ARB_shadow Errors: "INVALID_ENUM is generated if ... TEXTURE_COMPARE_MODE_ARB and
-            // parameter <param> is not NONE or COMPARE_R_TO_TEXTURE"; New State: initial NONE.
-            v.push(p(
-                TEXTURE_COMPARE_MODE,
-                "TEXTURE_COMPARE_MODE",
-                ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum),
-                Stored::Enum(NONE),
-                "ARB_shadow Errors, New State",
-            ));
-            if spec == Spec::ExtFuncs {
-                // EXT_shadow_funcs Errors: "... is not one of LEQUAL, GEQUAL, LESS, GREATER, EQUAL,
-                // NOTEQUAL, ALWAYS, or NEVER"; initial LEQUAL.
-                v.push(p(
-                    TEXTURE_COMPARE_FUNC,
-                    "TEXTURE_COMPARE_FUNC",
-                    ParamKind::Enum(FUNCS8, InvalidEnum),
-                    Stored::Enum(LEQUAL),
-                    "EXT_shadow_funcs Errors, New State",
-                ));
-            } else {
-                // ARB_shadow Errors: "... TEXTURE_COMPARE_FUNC_ARB and parameter <param> is not LEQUAL
-                // or GEQUAL"; initial LEQUAL.
-                v.push(p(
-                    TEXTURE_COMPARE_FUNC,
-                    "TEXTURE_COMPARE_FUNC",
-                    ParamKind::Enum(&[LEQUAL, GEQUAL], InvalidEnum),
-                    Stored::Enum(LEQUAL),
-                    "ARB_shadow Errors, New State",
-                ));
-            }
-            // ARB_depth_texture: "INVALID_ENUM is generated if TexParameter[if] parameter <pname> is
-            // DEPTH_TEXTURE_MODE_ARB and parameter <param> is not ALPHA, LUMINANCE, or INTENSITY";
-            // "Initially, depth textures are interpreted as LUMINANCE."
-            v.push(p(
-                DEPTH_TEXTURE_MODE,
-                "DEPTH_TEXTURE_MODE",
-                ParamKind::Enum(&[LUMINANCE, INTENSITY, ALPHA], InvalidEnum),
-                Stored::Enum(LUMINANCE),
-                "ARB_depth_texture Errors, §3.8.4",
-            ));
-            if spec == Spec::ArbAmbient {
-                // "The value set by TEXTURE_COMPARE_FAIL_VALUE_ARB is clamped to lie in [0, 1]";
-                // Errors: "None."; initial 0.0.
-                v.push(p(
-                    TEXTURE_COMPARE_FAIL_VALUE_ARB,
-                    "TEXTURE_COMPARE_FAIL_VALUE_ARB",
-                    ParamKind::Unit,
-                    Stored::Float(0.0),
-                    "ARB_shadow_ambient §3.8.4, New State",
-                ));
-            }
-        }
-        Spec::Es2Ext if ctx == Ctx::Es => {
-            // Table 3.10 as appended: "TEXTURE_COMPARE_MODE_EXT enum NONE, COMPARE_REF_TO_TEXTURE_EXT",
-            // "TEXTURE_COMPARE_FUNC_EXT enum LEQUAL, GEQUAL, LESS, GREATER, EQUAL, NOTEQUAL, ALWAYS,
-            // NEVER". The extension has no Errors or New State section: ES 2.0 §2.5 reports an
-            // unaccepted enum value with INVALID_ENUM, and the initial values are those of ARB_shadow.
-            v.push(p(
-                TEXTURE_COMPARE_MODE,
-                "TEXTURE_COMPARE_MODE_EXT",
-                ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum),
-                Stored::Enum(NONE),
-                "EXT_shadow_samplers §3.7.4 (table 3.10)",
-            ));
-            v.push(p(
-                TEXTURE_COMPARE_FUNC,
-                "TEXTURE_COMPARE_FUNC_EXT",
-                ParamKind::Enum(FUNCS8, InvalidEnum),
-                Stored::Enum(LEQUAL),
-                "EXT_shadow_samplers §3.7.4 (table 3.10)",
-            ));
-        }
-        Spec::Gl46 if ctx != Ctx::Es => {
-            // Table 8.17, §8.10 Errors ("INVALID_ENUM ... not among the legal values"), §8.22 / Table
-            // 23.15 initial values NONE, LEQUAL, DEPTH_COMPONENT.
-            v.push(p(
-                TEXTURE_COMPARE_MODE,
-                "TEXTURE_COMPARE_MODE",
-                ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum),
-                Stored::Enum(NONE),
-                "GL 4.6 Table 8.17, §8.10, Table 23.15",
-            ));
-            v.push(p(
-                TEXTURE_COMPARE_FUNC,
-                "TEXTURE_COMPARE_FUNC",
-                ParamKind::Enum(FUNCS8, InvalidEnum),
-                Stored::Enum(LEQUAL),
-                "GL 4.6 Table 8.17, §8.10, Table 23.15",
-            ));
-            v.push(p(
-                DEPTH_STENCIL_TEXTURE_MODE,
-                "DEPTH_STENCIL_TEXTURE_MODE",
-                ParamKind::Enum(&[DEPTH_COMPONENT, STENCIL_INDEX], InvalidEnum),
-                Stored::Enum(DEPTH_COMPONENT),
-                "GL 4.6 Table 8.17, §8.10, Table 23.15",
-            ));
-            if ctx == Ctx::Compat {
-                // Compatibility Table 8.25: "DEPTH_TEXTURE_MODE enum RED, LUMINANCE, INTENSITY, ALPHA";
-                // §8.22: initial LUMINANCE (§8.12: RED in a forward-compatible context). Removed from
-                // the core profile (E.2.2), where the pname is an INVALID_ENUM.
-                v.push(p(
-                    DEPTH_TEXTURE_MODE,
-                    "DEPTH_TEXTURE_MODE",
-                    ParamKind::Enum(&[RED, LUMINANCE, INTENSITY, ALPHA], InvalidEnum),
-                    Stored::Enum(LUMINANCE),
-                    "GL 4.6 compatibility Table 8.25, §8.12, §8.22",
-                ));
-            }
-        }
-        Spec::Gles32 if ctx == Ctx::Es => {
-            // ES 3.2 Table 8.19, §8.10 Errors, §8.19 initial values.
-            v.push(p(
-                TEXTURE_COMPARE_MODE,
-                "TEXTURE_COMPARE_MODE",
-                ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], InvalidEnum),
-                Stored::Enum(NONE),
-                "ES 3.2 Table 8.19, §8.10, §8.19",
-            ));
-            v.push(p(
-                TEXTURE_COMPARE_FUNC,
-                "TEXTURE_COMPARE_FUNC",
-                ParamKind::Enum(FUNCS8, InvalidEnum),
-                Stored::Enum(LEQUAL),
-                "ES 3.2 Table 8.19, §8.10, §8.19",
-            ));
-            v.push(p(
-                DEPTH_STENCIL_TEXTURE_MODE,
-                "DEPTH_STENCIL_TEXTURE_MODE",
-                ParamKind::Enum(&[DEPTH_COMPONENT, STENCIL_INDEX], InvalidEnum),
-                Stored::Enum(DEPTH_COMPONENT),
-                "ES 3.2 Table 8.19, §8.10, §8.19",
-            ));
-        }
-        _ => {}
-    }
-    v
+    (crate::rules::rules_for(spec).params)(spec, ctx)
 }
 
 /// The pname as defined under `spec` in `ctx`; INVALID_ENUM when it does not exist there (GL 4.6 §8.10:

@@ -5,6 +5,7 @@ use common::*;
 use proptest::prelude::*;
 use shadowcheck_model::*;
 use shadowcheck_oracle::evaluate;
+use shadowcheck_oracle::profile::PROFILES;
 
 fn spec_with_eight() -> impl Strategy<Value = Spec> {
     prop_oneof![
@@ -145,9 +146,11 @@ proptest! {
                 prop_assert!(acc.contains(v), "{p:?} {acc} lacks spec value {v}");
             }
         }
-        let strict = &e.expect.accept[&Profile::Strict];
-        let lenient = &e.expect.accept[&Profile::Lenient];
-        prop_assert!(strict.is_subset_of(lenient), "strict {strict} ⊄ lenient {lenient}");
+        // Each tier accepts at least what the one before it accepts.
+        for w in PROFILES.windows(2) {
+            let (a, b) = (&e.expect.accept[&w[0].profile], &e.expect.accept[&w[1].profile]);
+            prop_assert!(a.is_subset_of(b), "{} {a} ⊄ {} {b}", w[0].profile, w[1].profile);
+        }
         prop_assert_eq!(e.expect.layout.len(), c.api.len());
     }
 }
@@ -255,10 +258,12 @@ proptest! {
     fn any_valid_case_is_answered(c in wide_case()) {
         if shadowcheck_model::validate::validate(&c).is_ok() {
             if let Ok(e) = evaluate(&c) {
-                let strict = &e.expect.accept[&Profile::Strict];
-                let lenient = &e.expect.accept[&Profile::Lenient];
+                let strict = &e.expect.accept[&Profile::strictest()];
                 prop_assert!(!strict.0.is_empty());
-                prop_assert!(strict.is_subset_of(lenient), "strict {strict} ⊄ lenient {lenient}");
+                for w in PROFILES.windows(2) {
+                    let (a, b) = (&e.expect.accept[&w[0].profile], &e.expect.accept[&w[1].profile]);
+                    prop_assert!(a.is_subset_of(b), "{} {a} ⊄ {} {b}", w[0].profile, w[1].profile);
+                }
                 if let Some(v) = e.expect.spec_value {
                     prop_assert!(strict.contains(v), "{strict} lacks {v}");
                 }

@@ -524,8 +524,9 @@ mod tests {
 
     fn case(id: &str, spec: Spec, api: Vec<ApiPath>) -> Case {
         let mut accept = BTreeMap::new();
-        accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
-        accept.insert(Profile::Lenient, Acceptance(vec![Interval::point(1.0)]));
+        for &p in Profile::ALL {
+            accept.insert(p, Acceptance(vec![Interval::point(1.0)]));
+        }
         let layout = api
             .iter()
             .map(|&a| {

@@ -138,23 +138,24 @@ pub fn judge(
     };
     let judgement = expect.judge(api, rgba).unwrap_or(Judgement::Outside);
     let (outcome, profile) = match judgement {
-        Judgement::Strict => (Outcome::Pass, Profile::Strict),
-        Judgement::LenientOnly => (Outcome::Warn, Profile::Lenient),
-        Judgement::Outside => (Outcome::Fail, Profile::Lenient),
+        Judgement::Strictest => (Outcome::Pass, Profile::strictest()),
+        Judgement::Looser(p) => (Outcome::Warn, p),
+        Judgement::Outside => (Outcome::Fail, Profile::loosest()),
     };
     let mut footprint = None;
     let mut reason = None;
     if outcome != Outcome::Pass {
         reason = Some(match judgement {
-            Judgement::LenientOnly => {
+            Judgement::Looser(p) => {
+                let strictest = Profile::strictest();
                 format!(
-                    "inside the lenient acceptance set, outside strict: {}",
-                    channel_misses(&expect, &layout, Profile::Strict, rgba)
+                    "inside the {p} acceptance set, outside {strictest}: {}",
+                    channel_misses(&expect, &layout, strictest, rgba)
                 )
             }
             _ => format!(
-                "outside the lenient acceptance set: {}",
-                channel_misses(&expect, &layout, Profile::Lenient, rgba)
+                "outside the {profile} acceptance set: {}",
+                channel_misses(&expect, &layout, profile, rgba)
             ),
         });
         let ev = match evaluation {

@@ -114,7 +114,7 @@ fn laid_out(case: &Case, api: shadowcheck_model::ApiPath, r: f64) -> [f64; 4] {
 
 fn strict_value(case: &Case) -> Option<f64> {
     let e = case.expect.as_ref()?;
-    let acc = e.accept.get(&Profile::Strict)?;
+    let acc = e.accept.get(&Profile::strictest())?;
     match e.spec_value {
         Some(v) if acc.contains(v) => Some(v),
         _ => acc.0.first().map(|i| i.lo),
@@ -124,8 +124,8 @@ fn strict_value(case: &Case) -> Option<f64> {
 fn warn_value(case: &Case) -> Option<f64> {
     let e = case.expect.as_ref()?;
     let (strict, lenient) = (
-        e.accept.get(&Profile::Strict)?,
-        e.accept.get(&Profile::Lenient)?,
+        e.accept.get(&Profile::strictest())?,
+        e.accept.get(&Profile::loosest())?,
     );
     lenient
         .0

@@ -138,8 +138,9 @@ mod tests {
     #[test]
     fn exact_rgba_follows_the_layout_and_is_judged_strict() {
         let mut accept = BTreeMap::new();
-        accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
-        accept.insert(Profile::Lenient, Acceptance(vec![Interval::point(1.0)]));
+        for &p in Profile::ALL {
+            accept.insert(p, Acceptance(vec![Interval::point(1.0)]));
+        }
         let mut layout = BTreeMap::new();
         layout.insert(
             ApiPath::GlslCore,
@@ -156,7 +157,7 @@ mod tests {
         assert_eq!(rgba, [1.0, 0.0, 0.0, 1.0]);
         assert_eq!(
             e.judge(ApiPath::GlslCore, rgba),
-            Some(shadowcheck_model::Judgement::Strict)
+            Some(shadowcheck_model::Judgement::Strictest)
         );
         assert!(exact_rgba(&e, ApiPath::Es300).is_none());
     }

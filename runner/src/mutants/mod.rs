@@ -334,8 +334,8 @@ impl Suite {
                 .as_ref()
                 .and_then(|e| e.judge(api, v.map(f64::from)))
             {
-                Some(Judgement::Strict) => Outcome::Pass,
-                Some(Judgement::LenientOnly) => Outcome::Warn,
+                Some(Judgement::Strictest) => Outcome::Pass,
+                Some(Judgement::Looser(_)) => Outcome::Warn,
                 Some(Judgement::Outside) => Outcome::Fail,
                 None => Outcome::Skip,
             },

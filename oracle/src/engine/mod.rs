@@ -1,0 +1,203 @@
+//! The evaluation of one case, as a list of phases (see [`run`]):
+//! - `inputs`: which computation (compare, r = Dt, colour, stencil), coordinates, Dref (projective
+//!   divide, the spec's clamp, the values an implementation may compare with), pass / fail values;
+//! - completeness (`lod::incomplete`) and the layout of r per API path (`layout`);
+//! - `geometry`: the cube faces and array layers an implementation may choose, the texel offset;
+//! - `levels`: λ and the level picks, then per profile every way the lookup may be carried out
+//!   (texel selection in `select`, comparison per texel in `sample`, filtering in `accept`);
+//! - `footprint`: the spec's own texels, weights and outcomes;
+//! - acceptance: `accept::finalize` turns the per-profile intervals into the acceptance sets.
+
+mod footprint;
+mod geometry;
+mod inputs;
+mod levels;
+
+use crate::accept;
+use crate::profile::PROFILES;
+use crate::rules::{Incomplete, Rules};
+use crate::sample::{Kind, TexelCtx};
+use crate::select::build;
+use crate::{check, layout, lod, Evaluation, OracleError, Step};
+use shadowcheck_model::{
+    Acceptance, ApiPath, Case, Channel, Expectation, Footprint, Interval, Profile,
+};
+use std::collections::BTreeMap;
+
+/// The derivation so far: steps, citations and notes (implementation-defined choices), in order.
+struct Eval {
+    steps: Vec<Step>,
+    cites: Vec<String>,
+    notes: Vec<String>,
+}
+
+impl Eval {
+    fn step(&mut self, what: String, cite: &str) {
+        self.steps.push(Step {
+            what,
+            cite: cite.to_string(),
+        });
+        self.cite(cite);
+    }
+    fn cite(&mut self, cite: &str) {
+        if !self.cites.iter().any(|c| c == cite) {
+            self.cites.push(cite.to_string());
+        }
+    }
+    fn note(&mut self, n: impl Into<String>) {
+        let n = n.into();
+        if !self.notes.contains(&n) {
+            self.notes.push(n);
+        }
+    }
+}
+
+type Layouts = BTreeMap<ApiPath, [Channel; 4]>;
+
+/// Evaluates `case` under `rules` (the spec's own, or an alternative reading from `contradictions`).
+pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
+    check::check(case, &rules)?;
+    let mut e = Eval {
+        steps: Vec::new(),
+        cites: Vec::new(),
+        notes: Vec::new(),
+    };
+    let kind = inputs::kind(&mut e, &rules, case);
+    // Completeness (§8.17).
+    let incomplete = lod::incomplete(&rules, &case.texture, &case.sampler, kind == Kind::Stencil);
+    let layouts = layouts(&mut e, &rules, case, kind, incomplete.is_some());
+    if let Some(why) = incomplete {
+        return Ok(incomplete_texture(e, &rules, &why, layouts));
+    }
+    let coords = inputs::coords(case);
+    let tcx = inputs::texel_ctx(&mut e, &rules, case, kind, &coords);
+    // Choices the spec leaves to the implementation; labelled only where they change the result.
+    let mut choices: Vec<&'static str> = Vec::new();
+    let geos = geometry::geometries(&mut e, case, &coords, &mut choices);
+    let finite = geos.iter().all(|g| g.s.is_finite() && g.t.is_finite());
+    let Some(&spec_geo) = geos.first().filter(|_| finite) else {
+        return Ok(undefined(
+            e,
+            &tcx,
+            layouts,
+            "the texture coordinates are not finite or the cube direction is zero: the texel selection is undefined",
+        ));
+    };
+    let lod = levels::lod(&mut e, &rules, case);
+    let mut texels = Vec::new();
+    let spec_scen = build(&rules, case, &tcx, &mut texels, spec_geo, lod.spec_pick);
+    let sets = levels::profile_intervals(&rules, &tcx, &geos, &lod, &mut texels, &mut choices);
+    let spec_value = if lod.lam.spec.is_nan() {
+        None
+    } else {
+        accept::spec_value(&spec_scen, &texels)
+    };
+    let fp = footprint::footprint(&mut e, &rules, &tcx, &spec_scen, &texels);
+    let colour_bits = if kind == Kind::Colour {
+        case.texture.format.unorm_bits()
+    } else {
+        None
+    };
+    let range = match kind {
+        Kind::Compare => (tcx.pass_v.min(tcx.fail_v), tcx.pass_v.max(tcx.fail_v)),
+        _ => (f64::NEG_INFINITY, f64::INFINITY),
+    };
+    let acc = accept::finalize(sets, colour_bits, range, spec_value);
+    if !matches!((spec_value, acc.first()), (Some(v), Some(s)) if s.0 == [Interval::point(v)]) {
+        choices.into_iter().for_each(|n| e.note(n));
+    }
+    Ok(finish(e, spec_value, acc, layouts, fp))
+}
+
+/// The layout of r on each of the case's API paths, with a step each.
+fn layouts(e: &mut Eval, rules: &Rules, case: &Case, kind: Kind, incomplete: bool) -> Layouts {
+    let mut layouts = BTreeMap::new();
+    for &api in &case.api {
+        let (l, cite) = layout::layout(
+            rules,
+            api,
+            kind,
+            case.sampler.depth_texture_mode,
+            incomplete,
+        );
+        e.step(
+            format!(
+                "layout on `{api}`: ({})",
+                l.iter().map(|c| c.key()).collect::<Vec<_>>().join(",")
+            ),
+            cite,
+        );
+        layouts.insert(api, l);
+    }
+    layouts
+}
+
+/// An incomplete texture: r = 0 under every profile.
+fn incomplete_texture(mut e: Eval, rules: &Rules, why: &str, layouts: Layouts) -> Evaluation {
+    let cite = match rules.incomplete {
+        Incomplete::Legacy0001 => {
+            "GL 2.1 §3.11.2 / ARB_fragment_program_shadow / ES 2.0 §3.8.2: (0,0,0,1)"
+        }
+        Incomplete::ShadowZero => "GL 4.6 / ES 3.2 §11.1.3.5: 0 for a shadow sampler",
+    };
+    e.step(format!("texture incomplete: {why}; r = 0"), cite);
+    e.cite(if rules.es_depth_completeness {
+        "ES 3.2 §8.17"
+    } else {
+        "GL 4.6 §8.17"
+    });
+    let acc = Acceptance(vec![Interval::point(0.0)]);
+    finish(
+        e,
+        Some(0.0),
+        vec![acc; PROFILES.len()],
+        layouts,
+        Footprint::default(),
+    )
+}
+
+/// A lookup whose texel selection the spec leaves undefined: every value r can take is accepted.
+fn undefined(mut e: Eval, tcx: &TexelCtx, layouts: Layouts, why: &str) -> Evaluation {
+    e.note(why);
+    let iv = match tcx.kind {
+        Kind::Compare => Interval::new(tcx.pass_v.min(tcx.fail_v), tcx.pass_v.max(tcx.fail_v)),
+        Kind::Stencil => Interval::new(0.0, 255.0),
+        _ => Interval::new(0.0, 1.0),
+    };
+    let acc = Acceptance(vec![iv]);
+    finish(
+        e,
+        None,
+        vec![acc; PROFILES.len()],
+        layouts,
+        Footprint::default(),
+    )
+}
+
+/// The evaluation; `acc` holds one acceptance set per profile, in `PROFILES` order.
+fn finish(
+    e: Eval,
+    spec_value: Option<f64>,
+    acc: Vec<Acceptance>,
+    layout: Layouts,
+    footprint: Footprint,
+) -> Evaluation {
+    let accept: BTreeMap<Profile, Acceptance> =
+        PROFILES.iter().map(|p| p.profile).zip(acc).collect();
+    let implementation_defined = if e.notes.is_empty() {
+        None
+    } else {
+        Some(e.notes.join("; "))
+    };
+    Evaluation {
+        expect: Expectation {
+            spec_value,
+            accept,
+            layout,
+            implementation_defined,
+            citations: e.cites,
+        },
+        footprint,
+        steps: e.steps,
+    }
+}
