@@ -37,10 +37,9 @@ impl Tags {
     }
 }
 
-/// Four channels that may be non-finite (written as "nan", "inf", "-inf").
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(transparent)]
-pub struct Rgba(#[serde(with = "shadowcheck_model::real::array4")] pub [f64; 4]);
+/// Four channels that may be non-finite (written as "nan", "inf", "-inf"); the wire type of the
+/// protocol, recorded as observed.
+pub use shadowcheck_protocol::Rgba;
 
 /// The result of one test (`<case id>@<api>`) on one backend.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -10,84 +10,11 @@
 
 pub mod exec;
 pub mod mock;
-pub mod protocol;
 pub mod soft;
 
-use serde::{Deserialize, Serialize};
 use shadowcheck_model::{ApiPath, Case, Texels};
+pub use shadowcheck_protocol::{Capabilities, Support};
 use std::time::Duration;
-
-/// What an implementation can run. `None` for a list means "no restriction declared".
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-pub struct Capabilities {
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub specs: Option<Vec<String>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub api: Option<Vec<String>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub targets: Option<Vec<String>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub formats: Option<Vec<String>>,
-    /// Extensions the implementation exposes (informational: reports show them).
-    #[serde(default)]
-    pub extensions: Vec<String>,
-}
-
-fn listed(list: &Option<Vec<String>>, key: &str) -> bool {
-    list.as_ref().is_none_or(|l| l.iter().any(|k| k == key))
-}
-
-/// Which API paths of a case a backend will run, or why it runs none.
-pub enum Support {
-    /// Run these paths (a subset of the case's); the others are Skip with the reason.
-    Run {
-        apis: Vec<ApiPath>,
-        others: Option<String>,
-    },
-    Skip(String),
-}
-
-impl Capabilities {
-    /// Everything allowed.
-    pub fn all() -> Capabilities {
-        Capabilities::default()
-    }
-
-    pub fn support(&self, case: &Case) -> Support {
-        if !listed(&self.specs, case.spec.key()) {
-            return Support::Skip(format!(
-                "spec `{}` not supported by this backend",
-                case.spec
-            ));
-        }
-        if !listed(&self.targets, case.texture.target.key()) {
-            return Support::Skip(format!(
-                "target `{}` not supported by this backend",
-                case.texture.target
-            ));
-        }
-        if !listed(&self.formats, case.texture.format.key()) {
-            return Support::Skip(format!(
-                "format `{}` not supported by this backend",
-                case.texture.format
-            ));
-        }
-        let apis: Vec<ApiPath> = case
-            .api
-            .iter()
-            .copied()
-            .filter(|a| listed(&self.api, a.key()))
-            .collect();
-        if apis.is_empty() {
-            return Support::Skip(
-                "none of the case's API paths is supported by this backend".to_string(),
-            );
-        }
-        let others = (apis.len() < case.api.len())
-            .then(|| "API path not supported by this backend".to_string());
-        Support::Run { apis, others }
-    }
-}
 
 /// What a backend returned for one API path of a case.
 #[derive(Debug, Clone, PartialEq)]

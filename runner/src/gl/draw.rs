@@ -10,12 +10,12 @@
 use super::legacy::{self, Legacy};
 use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
 use super::programs::Compiled;
-use super::protocol::{PathResult, PathSkip};
 use super::shaders;
 use super::texture;
 use super::GlError;
 use glow::HasContext;
 use shadowcheck_model::{ApiPath, Case, Target, Texels};
+use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
 use std::collections::HashMap;
 
 /// Width and height of the result framebuffer: one pixel per (case, path).
@@ -321,14 +321,17 @@ impl Renderer {
             for &path in &case.api {
                 if !paths.contains(&path) {
                     skipped.push(PathSkip {
-                        api: path,
+                        api: path.key().to_string(),
                         reason: format!("{path}: not run by this context"),
                     });
                     continue;
                 }
                 match paths::plan_with(path, case, self.info.form) {
                     Ok(p) => plans.push(p),
-                    Err(reason) => skipped.push(PathSkip { api: path, reason }),
+                    Err(reason) => skipped.push(PathSkip {
+                        api: path.key().to_string(),
+                        reason,
+                    }),
                 }
             }
             if plans.is_empty() {
@@ -371,7 +374,7 @@ impl Renderer {
             .zip(cases)
             .map(|((((a, mut r), stored), skipped), case)| {
                 a.unwrap_or_else(|| {
-                    r.sort_by_key(|e| case.api.iter().position(|p| *p == e.api));
+                    r.sort_by_key(|e| case.api.iter().position(|p| p.key() == e.api));
                     for e in &mut r {
                         e.stored = stored.clone();
                     }
@@ -486,8 +489,8 @@ impl Renderer {
         for p in pending.drain(..) {
             let v = px.get(p.slot).copied().unwrap_or([f32::NAN; 4]);
             results[p.case].push(PathResult {
-                api: p.path,
-                rgba: v.map(|c| c as f64),
+                api: p.path.key().to_string(),
+                rgba: Rgba(v.map(|c| c as f64)),
                 stored: None,
                 note: Some(p.note),
             });

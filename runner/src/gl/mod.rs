@@ -15,7 +15,6 @@ pub mod legacy;
 pub mod names;
 pub mod paths;
 mod programs;
-pub mod protocol;
 pub mod shaders;
 pub mod state;
 pub mod texture;

@@ -6,9 +6,9 @@ use super::draw::{Answer, Renderer};
 use super::legacy::Legacy;
 use super::names::{BackendName, ContextApi};
 use super::paths::GlInfo;
-use super::protocol::{Capabilities, Incoming, Outgoing, PROTOCOL_VERSION};
 use super::GlError;
 use shadowcheck_model::{Case, Format, Spec};
+use shadowcheck_protocol::{Capabilities, Hello, Reply, Request, PROTOCOL_VERSION};
 use std::ffi::c_void;
 use std::io::{BufRead, Write};
 
@@ -178,10 +178,10 @@ impl Worker {
     pub fn capabilities(&self) -> Capabilities {
         let i = self.info();
         Capabilities {
-            specs: self.specs().iter().map(|s| s.key().to_string()).collect(),
-            api: i.paths().iter().map(|p| p.key().to_string()).collect(),
-            targets: i.targets().iter().map(|t| t.key().to_string()).collect(),
-            formats: self.formats().iter().map(|f| f.key().to_string()).collect(),
+            specs: Some(self.specs().iter().map(|s| s.key().to_string()).collect()),
+            api: Some(i.paths().iter().map(|p| p.key().to_string()).collect()),
+            targets: Some(i.targets().iter().map(|t| t.key().to_string()).collect()),
+            formats: Some(self.formats().iter().map(|f| f.key().to_string()).collect()),
             extensions: RELEVANT_EXTENSIONS
                 .iter()
                 .filter(|e| i.has_ext(e))
@@ -246,15 +246,15 @@ impl Worker {
     }
 }
 
-fn answer_message(case_id: String, a: Answer) -> Outgoing {
+fn answer_message(case_id: String, a: Answer) -> Reply {
     match a {
-        Answer::Observation(results, skipped) => Outgoing::Observation {
+        Answer::Observation(results, skipped) => Reply::Observation {
             case_id,
             results,
             skipped,
         },
-        Answer::Skip(reason) => Outgoing::Skip { case_id, reason },
-        Answer::Error(message) => Outgoing::Error { case_id, message },
+        Answer::Skip(reason) => Reply::Skip { case_id, reason },
+        Answer::Error(message) => Reply::Error { case_id, message },
     }
 }
 
@@ -264,7 +264,7 @@ enum Entry {
     Bad { id: String, message: String },
 }
 
-fn write_line(out: &mut impl Write, msg: &Outgoing) -> std::io::Result<()> {
+fn write_line(out: &mut impl Write, msg: &Reply) -> std::io::Result<()> {
     let s = serde_json::to_string(msg).map_err(std::io::Error::other)?;
     out.write_all(s.as_bytes())?;
     out.write_all(b"\n")
@@ -296,7 +296,7 @@ fn flush_batch(
                     .next()
                     .unwrap_or(Answer::Error("internal: missing answer".into())),
             ),
-            Err((id, message)) => Outgoing::Error {
+            Err((id, message)) => Reply::Error {
                 case_id: id,
                 message,
             },
@@ -318,22 +318,23 @@ pub fn serve(
         if line.trim().is_empty() {
             continue;
         }
-        match Incoming::parse(&line) {
-            Ok(Incoming::Hello { protocol }) => {
+        match Request::parse(&line) {
+            Ok(Request::Hello { protocol }) => {
                 if protocol != 0 && protocol != PROTOCOL_VERSION {
                     eprintln!("gl-worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}");
                 }
-                let hello = Outgoing::Hello {
+                let hello = Reply::Hello(Hello {
                     protocol: PROTOCOL_VERSION,
-                    name: worker.display_name(),
+                    name: Some(worker.display_name()),
                     capabilities: worker.capabilities(),
-                };
+                    wants_expect: false,
+                });
                 write_line(&mut output, &hello)?;
                 output.flush()?;
             }
-            Ok(Incoming::Case { case }) => batch.push(Entry::Case(case)),
-            Ok(Incoming::Flush) => flush_batch(worker, &mut batch, &mut output)?,
-            Ok(Incoming::Bye) => break,
+            Ok(Request::Case { case }) => batch.push(Entry::Case(case)),
+            Ok(Request::Flush) => flush_batch(worker, &mut batch, &mut output)?,
+            Ok(Request::Bye) => break,
             Err(e) => {
                 // A case line we cannot parse still gets its one answer, in order.
                 let v: Option<serde_json::Value> = serde_json::from_str(&line).ok();
