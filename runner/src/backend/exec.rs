@@ -19,12 +19,25 @@ use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-/// The program to start, with its arguments and extra environment.
-#[derive(Debug, Clone)]
+/// The program to start, with its arguments and extra environment (for a GL worker: the driver
+/// selection, set before the driver loads).
+#[derive(Debug, Clone, PartialEq)]
 pub struct ProcessCommand {
     pub program: PathBuf,
     pub args: Vec<String>,
     pub env: Vec<(String, String)>,
+}
+
+impl ProcessCommand {
+    /// A `std::process::Command` ready to spawn (stdio not configured).
+    pub fn to_command(&self) -> Command {
+        let mut c = Command::new(&self.program);
+        c.args(&self.args);
+        for (k, v) in &self.env {
+            c.env(k, v);
+        }
+        c
+    }
 }
 
 /// Splits a command line on whitespace, honouring '...' and "..." quoting and backslash escapes.
@@ -128,15 +141,11 @@ struct Proc {
 
 impl Proc {
     fn spawn(cmd: &ProcessCommand, diags: &Arc<Mutex<Vec<String>>>) -> Result<Proc, String> {
-        let mut c = Command::new(&cmd.program);
-        c.args(&cmd.args)
+        let mut child = cmd
+            .to_command()
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
-            .stderr(Stdio::piped());
-        for (k, v) in &cmd.env {
-            c.env(k, v);
-        }
-        let mut child = c
+            .stderr(Stdio::piped())
             .spawn()
             .map_err(|e| format!("cannot start `{}`: {e}", cmd.program.display()))?;
         let (Some(stdin), Some(stdout), Some(stderr)) =

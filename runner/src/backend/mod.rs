@@ -9,6 +9,8 @@
 //! - `mock:<script>`: a scripted implementation for testing the runner itself.
 
 pub mod exec;
+pub mod gl;
+pub mod kinds;
 pub mod mock;
 pub mod soft;
 
@@ -40,7 +42,7 @@ pub enum CaseOutcome {
 
 #[derive(Debug, thiserror::Error)]
 pub enum BackendError {
-    #[error("unknown backend `{0}` (expected soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, mock:<script>)")]
+    #[error("unknown backend `{0}` (expected {patterns})", patterns = kinds::patterns())]
     Unknown(String),
     #[error("backend `{backend}`: {msg}")]
     Setup { backend: String, msg: String },
@@ -83,7 +85,7 @@ impl Default for Options {
 
 /// The GL backends this machine offers (`egl:...`, `osmesa:...`), from the GL helper's probe.
 pub fn gl_backends() -> Vec<String> {
-    crate::gl::probe()
+    gl::probe()
 }
 
 /// Backends run when none is named: `soft` plus every GL driver found.
@@ -93,57 +95,10 @@ pub fn default_backends() -> Vec<String> {
     v
 }
 
-/// Opens the backend called `name` (starting and greeting its process, if any).
+/// Opens the backend called `name` (starting and greeting its process, if any); the kind comes
+/// from [`kinds::KINDS`].
 pub fn open(name: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
-    let (kind, rest) = name.split_once(':').unwrap_or((name, ""));
-    match kind {
-        "soft" => Ok(Box::new(soft::SoftBackend::new(name, rest)?)),
-        "exec" => {
-            let argv = exec::split_command(rest).map_err(|msg| BackendError::Setup {
-                backend: name.into(),
-                msg,
-            })?;
-            let Some((program, args)) = argv.split_first() else {
-                return Err(BackendError::Setup {
-                    backend: name.into(),
-                    msg: "empty command".into(),
-                });
-            };
-            let cmd = exec::ProcessCommand {
-                program: program.into(),
-                args: args.to_vec(),
-                env: vec![],
-            };
-            Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
-        }
-        "egl" | "osmesa" => {
-            let wc = crate::gl::worker_command(name).map_err(|e| BackendError::Setup {
-                backend: name.into(),
-                msg: e.to_string(),
-            })?;
-            let cmd = exec::ProcessCommand {
-                program: wc.program,
-                args: wc.args,
-                env: wc.env,
-            };
-            Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
-        }
-        "mock" => {
-            let exe = std::env::current_exe().map_err(|e| BackendError::Setup {
-                backend: name.into(),
-                msg: e.to_string(),
-            })?;
-            mock::Script::parse(rest).map_err(|msg| BackendError::Setup {
-                backend: name.into(),
-                msg,
-            })?;
-            let cmd = exec::ProcessCommand {
-                program: exe,
-                args: vec!["mock-worker".into(), rest.to_string()],
-                env: vec![],
-            };
-            Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
-        }
-        _ => Err(BackendError::Unknown(name.to_string())),
-    }
+    let kind = kinds::kind_of(name).ok_or_else(|| BackendError::Unknown(name.to_string()))?;
+    let rest = name.split_once(':').map_or("", |(_, r)| r);
+    (kind.open)(name, rest, opts)
 }

@@ -1,0 +1,153 @@
+//! The runner's side of the GL backends (`egl:*`, `osmesa:*`): how to start a backend's
+//! `shadowcheck gl-worker` child (the driver is chosen by environment variables read when Mesa
+//! loads, so each backend gets its own process, and a driver crash only takes down its worker), and
+//! probing which backends this machine can run. The worker itself is the GL crate's.
+
+use super::exec::ProcessCommand;
+use crate::gl::{BackendName, GlError};
+use std::path::PathBuf;
+use std::process::Stdio;
+use std::time::{Duration, Instant};
+
+/// Environment variable naming the `shadowcheck` executable to run workers with (tests, wrappers).
+pub const WORKER_EXE_ENV: &str = "SHADOWCHECK_EXE";
+
+/// The `shadowcheck` binary: `$SHADOWCHECK_EXE`, the current executable when it is shadowcheck, or
+/// `shadowcheck` beside the current executable or its parent (a test binary in target/*/deps).
+fn shadowcheck_exe() -> Result<PathBuf, GlError> {
+    if let Some(p) = std::env::var_os(WORKER_EXE_ENV) {
+        return Ok(PathBuf::from(p));
+    }
+    let me = std::env::current_exe().map_err(|e| GlError::NoExecutable(e.to_string()))?;
+    if me.file_stem().is_some_and(|s| s == "shadowcheck") {
+        return Ok(me);
+    }
+    let mut dir = me.parent();
+    for _ in 0..2 {
+        if let Some(d) = dir {
+            let cand = d.join(format!("shadowcheck{}", std::env::consts::EXE_SUFFIX));
+            if cand.is_file() {
+                return Ok(cand);
+            }
+            dir = d.parent();
+        }
+    }
+    Err(GlError::NoExecutable(format!(
+        "{} is not shadowcheck and none was found beside it; set {WORKER_EXE_ENV}",
+        me.display()
+    )))
+}
+
+/// How to start the worker for one backend name.
+pub fn worker_command(backend: &str) -> Result<ProcessCommand, GlError> {
+    let name: BackendName = backend.parse()?;
+    if let Some(why) = name.static_unavailability() {
+        return Err(GlError::Unavailable(why));
+    }
+    Ok(ProcessCommand {
+        program: shadowcheck_exe()?,
+        args: vec!["gl-worker".into(), "--backend".into(), name.to_string()],
+        env: name.env(),
+    })
+}
+
+/// Backend names that can run here (each probed in a child process).
+pub fn probe() -> Vec<String> {
+    probe_report()
+        .into_iter()
+        .filter(|(_, r)| r.is_ok())
+        .map(|(n, _)| n)
+        .collect()
+}
+
+/// Longest a probe child may take (context creation on zink starts a Vulkan device).
+const PROBE_TIMEOUT: Duration = Duration::from_secs(60);
+
+/// Every backend name with `Ok` or the reason it cannot run here. Probes run in parallel, one child
+/// each (`gl-worker --probe`): the child creates the context, checks GL_RENDERER names the driver,
+/// and prints one line; a crash is reported with its signal.
+pub fn probe_report() -> Vec<(String, Result<(), String>)> {
+    let mut running = Vec::new();
+    let mut out: Vec<(String, Result<(), String>)> = Vec::new();
+    for name in BackendName::all() {
+        let key = name.to_string();
+        if let Some(why) = name.static_unavailability() {
+            out.push((key, Err(why)));
+            continue;
+        }
+        match worker_command(&key) {
+            Err(e) => out.push((key, Err(e.to_string()))),
+            Ok(wc) => {
+                let mut c = wc.to_command();
+                c.arg("--probe")
+                    .stdin(Stdio::null())
+                    .stdout(Stdio::piped())
+                    .stderr(Stdio::piped());
+                match c.spawn() {
+                    Ok(child) => running.push((key, child)),
+                    Err(e) => out.push((
+                        key,
+                        Err(format!("cannot start {}: {e}", wc.program.display())),
+                    )),
+                }
+            }
+        }
+    }
+    let start = Instant::now();
+    for (key, mut child) in running {
+        let res = loop {
+            match child.try_wait() {
+                Ok(Some(_)) => break probe_result(child),
+                Ok(None) if start.elapsed() > PROBE_TIMEOUT => {
+                    let _ = child.kill();
+                    let _ = child.wait();
+                    break Err(format!(
+                        "probe timed out after {}s",
+                        PROBE_TIMEOUT.as_secs()
+                    ));
+                }
+                Ok(None) => std::thread::sleep(Duration::from_millis(20)),
+                Err(e) => break Err(e.to_string()),
+            }
+        };
+        out.push((key, res));
+    }
+    let order: Vec<String> = BackendName::all().iter().map(|b| b.to_string()).collect();
+    out.sort_by_key(|(k, _)| order.iter().position(|o| o == k));
+    out
+}
+
+fn probe_result(child: std::process::Child) -> Result<(), String> {
+    let o = child.wait_with_output().map_err(|e| e.to_string())?;
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let line = stdout
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .unwrap_or("")
+        .to_string();
+    if o.status.success() && line.starts_with("ok") {
+        return Ok(());
+    }
+    if let Some(msg) = line.strip_prefix("unavailable: ") {
+        return Err(msg.to_string());
+    }
+    use std::os::unix::process::ExitStatusExt;
+    let how = match o.status.signal() {
+        Some(sig) => format!("worker killed by signal {sig} while creating the context"),
+        None => format!("worker exited with {}", o.status),
+    };
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    let tail: Vec<&str> = stderr.lines().rev().take(3).collect();
+    Err(format!(
+        "{how}{}",
+        if tail.is_empty() {
+            String::new()
+        } else {
+            format!(
+                ": {}",
+                tail.into_iter().rev().collect::<Vec<_>>().join(" | ")
+            )
+        }
+    ))
+}
