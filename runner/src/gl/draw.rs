@@ -9,14 +9,13 @@
 
 use super::legacy::{self, Legacy};
 use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
-use super::programs::Compiled;
+use super::programs::{Compiled, ProgramCache};
 use super::shaders;
 use super::texture;
 use super::GlError;
 use glow::HasContext;
 use shadowcheck_model::{ApiPath, Case, Target, Texels};
 use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
-use std::collections::HashMap;
 
 /// Width and height of the result framebuffer: one pixel per (case, path).
 pub(super) const FB_SIZE: i32 = 256;
@@ -43,8 +42,7 @@ pub struct Renderer {
     vao: glow::VertexArray,
     /// RGBA32F case values for batched draws (unit 1).
     pub(super) params: glow::Texture,
-    /// Programs by (key, batched).
-    pub(super) programs: HashMap<(ShaderKey, bool), Result<Compiled, String>>,
+    programs: ProgramCache,
 }
 
 /// A drawn path waiting for read-back.
@@ -128,7 +126,7 @@ impl Renderer {
             fbo,
             vao,
             params,
-            programs: HashMap::new(),
+            programs: ProgramCache::default(),
         })
     }
 
@@ -139,8 +137,14 @@ impl Renderer {
         slot0: usize,
         n: usize,
     ) -> Result<(), String> {
-        self.program(key, true)?;
-        let Some(Ok(Compiled::Glsl(p))) = self.programs.get(&(*key, true)) else {
+        let compiled = self.programs.get(
+            &self.gl,
+            &self.info,
+            self.legacy.as_ref(),
+            key,
+            Some(FB_SIZE),
+        )?;
+        let Compiled::Glsl(p) = compiled else {
             return Err("batched program is not GLSL".into());
         };
         let gl = &self.gl;
@@ -161,13 +165,15 @@ impl Renderer {
         target: Target,
         slot: usize,
     ) -> Result<(), String> {
-        self.program(&plan.key, false)?;
+        let compiled =
+            self.programs
+                .get(&self.gl, &self.info, self.legacy.as_ref(), &plan.key, None)?;
         let (x, y) = ((slot as i32) % FB_SIZE, (slot as i32) / FB_SIZE);
         let gl = &self.gl;
         gl.viewport(x, y, 1, 1);
         let centre = [x as f32 + 0.5, y as f32 + 0.5];
-        match self.programs.get(&(plan.key, false)) {
-            Some(Ok(Compiled::Glsl(p))) => {
+        match compiled {
+            Compiled::Glsl(p) => {
                 gl.use_program(Some(p.program));
                 gl.uniform_4_f32_slice(p.u_p.as_ref(), &plan.p);
                 gl.uniform_1_f32(p.u_x.as_ref(), plan.x);
@@ -177,7 +183,7 @@ impl Renderer {
                 gl.bind_vertex_array(Some(self.vao));
                 gl.draw_arrays(glow::TRIANGLES, 0, 3);
             }
-            Some(Ok(Compiled::Arb(id))) => {
+            Compiled::Arb(id) => {
                 let l = self
                     .legacy
                     .as_ref()
@@ -192,7 +198,7 @@ impl Renderer {
                 l.fullscreen_triangle();
                 gl.disable(legacy::GL_FRAGMENT_PROGRAM_ARB);
             }
-            Some(Ok(Compiled::Fixed)) => {
+            Compiled::Fixed => {
                 let l = self
                     .legacy
                     .as_ref()
@@ -240,8 +246,6 @@ impl Renderer {
                 }
                 gl.disable(enable);
             }
-            Some(Err(e)) => return Err(e.clone()),
-            None => return Err("program cache miss".into()),
         }
         Ok(())
     }
