@@ -1,7 +1,7 @@
 //! Backend probing: every name is reported, the impossible combinations say why, and (under CI=true)
 //! every other backend must be available.
+use shadowcheck_gl::BackendName;
 use shadowcheck_runner::backend::gl;
-use shadowcheck_runner::gl::BackendName;
 
 #[test]
 fn probe_reports_every_backend_with_reasons() {

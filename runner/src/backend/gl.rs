@@ -4,7 +4,7 @@
 //! probing which backends this machine can run. The worker itself is the GL crate's.
 
 use super::exec::ProcessCommand;
-use crate::gl::{BackendName, GlError};
+use shadowcheck_gl::{BackendName, GlError};
 use std::path::PathBuf;
 use std::process::Stdio;
 use std::time::{Duration, Instant};

@@ -9,10 +9,10 @@
 //! read-back beyond `glFinish` and one pixel. It prints one JSON line ([`FloorResult`]).
 
 use super::cpu::BENCH_TEXTURE;
-use crate::gl::context::GlContext;
-use crate::gl::names::{BackendName, ContextApi};
 use glow::HasContext;
 use serde::{Deserialize, Serialize};
+use shadowcheck_gl::context::GlContext;
+use shadowcheck_gl::names::{BackendName, ContextApi};
 use std::process::Stdio;
 use std::time::{Duration, Instant};
 
@@ -133,7 +133,7 @@ unsafe fn draw_loop(
         return Err(format!("wrong driver: GL_RENDERER is `{renderer}`"));
     }
     // Framebuffer: RGBA32F like the worker's result buffer.
-    let color = crate::gl::texture::rgba32f(gl, size, size)?;
+    let color = shadowcheck_gl::texture::rgba32f(gl, size, size)?;
     let fbo = gl.create_framebuffer()?;
     gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
     gl.framebuffer_texture_2d(

@@ -5,7 +5,7 @@ use super::suite::{self, nearest_2d_fixtures};
 use super::{
     cpu, ids, machine::Machine, targets, Goal, Report, Row, Target, Unavailable, SCHEMA_VERSION,
 };
-use crate::gl::names::{BackendName, Driver};
+use shadowcheck_gl::names::{BackendName, Driver};
 use std::path::PathBuf;
 use std::time::Duration;
 

@@ -1,9 +1,13 @@
-//! GL driver backends: Mesa llvmpipe, softpipe and zink through EGL (surfaceless) and OSMesa.
+//! shadowcheck-gl: the GL worker. Mesa llvmpipe, softpipe and zink through EGL (surfaceless) and
+//! OSMesa: context creation, textures, shaders and programs, the lookup paths, legacy (fixed
+//! function, ARB fragment programs), the TexParameter state check, batched drawing, and the
+//! [`worker`] serve loop speaking runner/PROTOCOL.md (messages from shadowcheck-protocol).
 //!
-//! Each backend runs in a `shadowcheck gl-worker --backend NAME` child process that speaks
-//! runner/PROTOCOL.md: the driver is chosen by environment variables read when Mesa loads, EGL and
-//! OSMesa share libglapi, and a driver crash must only take down its worker. This module is the
-//! runner-side API (names, probing, how to start a worker); [`worker`] is the child side.
+//! Each backend runs in a `shadowcheck gl-worker --backend NAME` child process: the driver is chosen
+//! by environment variables read when Mesa loads, EGL and OSMesa share libglapi, and a driver crash
+//! must only take down its worker. The runner side (how to start a worker, probing which backends
+//! run here) is shadowcheck-runner's `backend::gl`; this crate is the child side plus the backend
+//! names ([`BackendName`]) both sides share.
 //!
 //! Every library (libEGL, libOSMesa, the GL entry points) is loaded at run time, so a machine without
 //! Mesa builds fine and reports the backend unavailable with the apt-get command that fixes it.
