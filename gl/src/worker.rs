@@ -8,7 +8,9 @@ use super::names::{BackendName, ContextApi};
 use super::paths::GlInfo;
 use super::GlError;
 use shadowcheck_model::{Case, Format, Spec};
-use shadowcheck_protocol::{Capabilities, Hello, Reply, Request, PROTOCOL_VERSION};
+use shadowcheck_protocol::{
+    Capabilities, Hello, PathSkip, Reply, Request, Support, PROTOCOL_VERSION,
+};
 use std::ffi::c_void;
 use std::io::{BufRead, Write};
 
@@ -41,6 +43,8 @@ const RELEVANT_EXTENSIONS: &[&str] = &[
 pub struct Worker {
     pub name: BackendName,
     renderer: Renderer,
+    /// What this context runs, declared in the hello and applied to every case received.
+    caps: Capabilities,
     _ctx: GlContext,
 }
 
@@ -121,11 +125,14 @@ impl Worker {
         };
         // SAFETY: context current for the worker's life (it owns the context).
         let renderer = unsafe { Renderer::new(gl, info, legacy)? };
-        Ok(Worker {
+        let mut w = Worker {
             name,
             renderer,
+            caps: Capabilities::default(),
             _ctx: ctx,
-        })
+        };
+        w.caps = w.declared_capabilities();
+        Ok(w)
     }
 
     /// TexParameter state self-check against the oracle's tables (see `state.rs`).
@@ -175,7 +182,12 @@ impl Worker {
             .collect()
     }
 
-    pub fn capabilities(&self) -> Capabilities {
+    /// What this context can run (declared in the hello).
+    pub fn capabilities(&self) -> &Capabilities {
+        &self.caps
+    }
+
+    fn declared_capabilities(&self) -> Capabilities {
         let i = self.info();
         Capabilities {
             specs: Some(self.specs().iter().map(|s| s.key().to_string()).collect()),
@@ -200,43 +212,60 @@ impl Worker {
         )
     }
 
-    /// Why a case is not for this worker (spec, format, API paths), or None.
-    fn precheck(&self, case: &Case) -> Option<String> {
-        if !self.specs().contains(&case.spec) {
-            return Some(format!(
-                "spec {} not checkable on {} (needed extensions not exposed)",
-                case.spec, self.name
-            ));
-        }
-        if !self.formats().contains(&case.texture.format) {
-            return Some(format!(
-                "format {} not available on {}",
-                case.texture.format, self.name
-            ));
-        }
+    /// Whether a case runs here: the declared capabilities decide, by the same
+    /// [`Capabilities::support`] the runner applies before sending (so a case the runner sends is
+    /// never refused here), and the case must be valid. `Ok` holds the case as drawn (only the
+    /// supported API paths) and the paths left out, each with the reason.
+    fn admit(&self, case: &Case) -> Result<(Case, Vec<PathSkip>), String> {
+        let (apis, others) = match self.caps.support(case) {
+            Support::Skip(reason) => return Err(reason),
+            Support::Run { apis, others } => (apis, others),
+        };
         if let Err(e) = shadowcheck_model::validate::validate(case) {
-            return Some(format!("invalid case: {e}"));
+            return Err(format!("invalid case: {e}"));
         }
-        None
+        let left_out = case
+            .api
+            .iter()
+            .filter(|a| !apis.contains(a))
+            .map(|a| PathSkip {
+                api: a.key().to_string(),
+                reason: others.clone().unwrap_or_default(),
+            })
+            .collect();
+        let mut drawn = case.clone();
+        drawn.api = apis;
+        Ok((drawn, left_out))
     }
 
     /// Answers a batch in order.
     pub fn run_batch(&mut self, cases: &[Case]) -> Vec<Answer> {
-        let mut answers: Vec<Option<Answer>> = cases
-            .iter()
-            .map(|c| self.precheck(c).map(Answer::Skip))
-            .collect();
-        let runnable: Vec<Case> = cases
-            .iter()
-            .zip(&answers)
-            .filter(|(_, a)| a.is_none())
-            .map(|(c, _)| c.clone())
-            .collect();
+        let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
+        let mut runnable: Vec<Case> = Vec::with_capacity(cases.len());
+        let mut left_out: Vec<Vec<PathSkip>> = Vec::with_capacity(cases.len());
+        for c in cases {
+            match self.admit(c) {
+                Ok((case, skips)) => {
+                    runnable.push(case);
+                    left_out.push(skips);
+                    answers.push(None);
+                }
+                Err(reason) => answers.push(Some(Answer::Skip(reason))),
+            }
+        }
         // SAFETY: the worker's context is current on this thread.
-        let mut drawn = unsafe { self.renderer.run_batch(&runnable) }.into_iter();
+        let mut drawn = unsafe { self.renderer.run_batch(&runnable) }
+            .into_iter()
+            .zip(left_out);
         for a in answers.iter_mut() {
             if a.is_none() {
-                *a = drawn.next();
+                *a = drawn.next().map(|(answer, skips)| match answer {
+                    Answer::Observation(results, mut skipped) => {
+                        skipped.extend(skips);
+                        Answer::Observation(results, skipped)
+                    }
+                    other => other,
+                });
             }
         }
         answers
@@ -326,7 +355,7 @@ pub fn serve(
                 let hello = Reply::Hello(Hello {
                     protocol: PROTOCOL_VERSION,
                     name: Some(worker.display_name()),
-                    capabilities: worker.capabilities(),
+                    capabilities: worker.capabilities().clone(),
                     wants_expect: false,
                 });
                 write_line(&mut output, &hello)?;
