@@ -7,98 +7,17 @@
 //! run goes on. When the process was answering case by case, the first unanswered case is tried
 //! alone first (one restart instead of log2(group) when it is the culprit). The GL backends and the mock use the same machinery.
 
+pub use super::command::{split_command, ProcessCommand};
 use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome, Options};
 use shadowcheck_model::{ApiPath, Case};
 use shadowcheck_protocol::{Hello, PathResult, PathSkip, Reply, Request};
 use std::collections::VecDeque;
 use std::io::{BufRead, BufReader, BufWriter, Write};
-use std::path::PathBuf;
-use std::process::{Child, ChildStdin, Command, Stdio};
+use std::process::{Child, ChildStdin, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
-
-/// The program to start, with its arguments and extra environment (for a GL worker: the driver
-/// selection, set before the driver loads).
-#[derive(Debug, Clone, PartialEq)]
-pub struct ProcessCommand {
-    pub program: PathBuf,
-    pub args: Vec<String>,
-    pub env: Vec<(String, String)>,
-}
-
-impl ProcessCommand {
-    /// A `std::process::Command` ready to spawn (stdio not configured).
-    pub fn to_command(&self) -> Command {
-        let mut c = Command::new(&self.program);
-        c.args(&self.args);
-        for (k, v) in &self.env {
-            c.env(k, v);
-        }
-        c
-    }
-}
-
-/// Splits a command line on whitespace, honouring '...' and "..." quoting and backslash escapes.
-/// No shell is involved (so killing the process kills the implementation itself).
-pub fn split_command(s: &str) -> Result<Vec<String>, String> {
-    let mut out = vec![];
-    let mut cur = String::new();
-    let mut in_word = false;
-    let mut chars = s.chars();
-    while let Some(c) = chars.next() {
-        match c {
-            '\'' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('\'') => break,
-                        Some(ch) => cur.push(ch),
-                        None => return Err(format!("unclosed ' in `{s}`")),
-                    }
-                }
-            }
-            '"' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('"') => break,
-                        Some('\\') => cur.push(
-                            chars
-                                .next()
-                                .ok_or_else(|| format!("trailing \\ in `{s}`"))?,
-                        ),
-                        Some(ch) => cur.push(ch),
-                        None => return Err(format!("unclosed \" in `{s}`")),
-                    }
-                }
-            }
-            '\\' => {
-                in_word = true;
-                cur.push(
-                    chars
-                        .next()
-                        .ok_or_else(|| format!("trailing \\ in `{s}`"))?,
-                );
-            }
-            c if c.is_whitespace() => {
-                if in_word {
-                    out.push(std::mem::take(&mut cur));
-                    in_word = false;
-                }
-            }
-            c => {
-                in_word = true;
-                cur.push(c);
-            }
-        }
-    }
-    if in_word {
-        out.push(cur);
-    }
-    Ok(out)
-}
 
 /// The writer thread: writes queued messages to the child's stdin, flushing whenever the queue is
 /// empty; ends when the queue is closed (stdin is then closed) or the child stops reading.
@@ -566,20 +485,6 @@ impl Drop for ExecBackend {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn split_command_quotes_like_a_shell() {
-        assert_eq!(
-            split_command("python3 a.py --x").unwrap(),
-            ["python3", "a.py", "--x"]
-        );
-        assert_eq!(
-            split_command(" 'a b' \"c \\\" d\" e\\ f ").unwrap(),
-            ["a b", "c \" d", "e f"]
-        );
-        assert_eq!(split_command("''").unwrap(), [""]);
-        assert!(split_command("'open").is_err());
-    }
 
     /// A case with the compat paths (ff, glsl120) of a GL 4.6 2D lookup; only `api` matters here.
     fn compat_case() -> Case {
