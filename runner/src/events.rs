@@ -5,12 +5,6 @@
 //! records the events carry, and that go to disk, are in [`crate::records`].
 
 use crate::records::{Counts, LoadError, Summary, TestResult};
-use serde::{Deserialize, Serialize};
-
-/// Four channels that may be non-finite (written as "nan", "inf", "-inf").
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(transparent)]
-pub struct Rgba(#[serde(with = "shadowcheck_model::real::array4")] pub [f64; 4]);
 
 /// What the runner tells its reporters.
 #[derive(Debug)]

@@ -9,7 +9,6 @@ pub mod backend;
 pub mod baseline;
 pub mod bench;
 pub mod events;
-pub mod gl;
 pub mod mutants;
 pub mod parallel;
 pub mod records;

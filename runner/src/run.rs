@@ -8,11 +8,12 @@
 
 use crate::backend::{ApiOutcome, Backend, CaseOutcome, Support};
 use crate::baseline::Lists;
-use crate::events::{Event, Fanout, Rgba, Sink, Timing};
+use crate::events::{Event, Fanout, Sink, Timing};
 use crate::records::{Counts, LoadError, Outcome, Results, Status, Summary, Tags, TestResult};
 use crate::shard::Shard;
 use crate::verdict;
 use shadowcheck_model::{ApiPath, Case};
+use shadowcheck_protocol::Rgba;
 use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};

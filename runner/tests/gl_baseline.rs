@@ -14,7 +14,7 @@ fn root() -> PathBuf {
 /// Runs `backend` over `cases` (a --cases regex) of the default fixtures with the committed
 /// baseline; `None` when the driver is not there (already reported by `unavailable`).
 fn run_with_baseline(backend: &str, cases: &str, name: &str) -> Option<common::Run> {
-    if let Err(e) = shadowcheck_runner::gl::worker_command(backend) {
+    if let Err(e) = shadowcheck_runner::backend::gl::worker_command(backend) {
         gl_support::unavailable(backend, &e.to_string());
         return None;
     }

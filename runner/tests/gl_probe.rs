@@ -1,6 +1,7 @@
 //! Backend probing: every name is reported, the impossible combinations say why, and (under CI=true)
 //! every other backend must be available.
-use shadowcheck_runner::gl;
+use shadowcheck_gl::BackendName;
+use shadowcheck_runner::backend::gl;
 
 #[test]
 fn probe_reports_every_backend_with_reasons() {
@@ -9,7 +10,7 @@ fn probe_reports_every_backend_with_reasons() {
     assert_eq!(report.len(), 24);
     let ci = std::env::var("CI").is_ok_and(|v| v == "true");
     for (name, res) in &report {
-        let b: gl::BackendName = name.parse().unwrap();
+        let b: BackendName = name.parse().unwrap();
         match (b.static_unavailability(), res) {
             (Some(_), Ok(())) => panic!("{name} cannot work, yet probed available"),
             (Some(why), Err(e)) => assert_eq!(&why, e),

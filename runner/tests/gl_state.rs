@@ -13,7 +13,7 @@ fn state_defaults_and_errors_match_the_oracle() {
         names.extend(backends(api, api != "es3"));
     }
     for b in names {
-        let mut wc = shadowcheck_runner::gl::worker_command(&b).expect("worker command");
+        let mut wc = shadowcheck_runner::backend::gl::worker_command(&b).expect("worker command");
         wc.program = PathBuf::from(env!("CARGO_BIN_EXE_shadowcheck"));
         let out = wc
             .to_command()

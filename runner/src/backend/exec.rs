@@ -7,85 +7,17 @@
 //! run goes on. When the process was answering case by case, the first unanswered case is tried
 //! alone first (one restart instead of log2(group) when it is the culprit). The GL backends and the mock use the same machinery.
 
-use super::protocol::{self, Answer, ApiResultMsg, SkippedMsg};
+pub use super::command::{split_command, ProcessCommand};
 use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome, Options};
 use shadowcheck_model::{ApiPath, Case};
+use shadowcheck_protocol::{Hello, PathResult, PathSkip, Reply, Request};
 use std::collections::VecDeque;
 use std::io::{BufRead, BufReader, BufWriter, Write};
-use std::path::PathBuf;
-use std::process::{Child, ChildStdin, Command, Stdio};
+use std::process::{Child, ChildStdin, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
-
-/// The program to start, with its arguments and extra environment.
-#[derive(Debug, Clone)]
-pub struct ProcessCommand {
-    pub program: PathBuf,
-    pub args: Vec<String>,
-    pub env: Vec<(String, String)>,
-}
-
-/// Splits a command line on whitespace, honouring '...' and "..." quoting and backslash escapes.
-/// No shell is involved (so killing the process kills the implementation itself).
-pub fn split_command(s: &str) -> Result<Vec<String>, String> {
-    let mut out = vec![];
-    let mut cur = String::new();
-    let mut in_word = false;
-    let mut chars = s.chars();
-    while let Some(c) = chars.next() {
-        match c {
-            '\'' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('\'') => break,
-                        Some(ch) => cur.push(ch),
-                        None => return Err(format!("unclosed ' in `{s}`")),
-                    }
-                }
-            }
-            '"' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('"') => break,
-                        Some('\\') => cur.push(
-                            chars
-                                .next()
-                                .ok_or_else(|| format!("trailing \\ in `{s}`"))?,
-                        ),
-                        Some(ch) => cur.push(ch),
-                        None => return Err(format!("unclosed \" in `{s}`")),
-                    }
-                }
-            }
-            '\\' => {
-                in_word = true;
-                cur.push(
-                    chars
-                        .next()
-                        .ok_or_else(|| format!("trailing \\ in `{s}`"))?,
-                );
-            }
-            c if c.is_whitespace() => {
-                if in_word {
-                    out.push(std::mem::take(&mut cur));
-                    in_word = false;
-                }
-            }
-            c => {
-                in_word = true;
-                cur.push(c);
-            }
-        }
-    }
-    if in_word {
-        out.push(cur);
-    }
-    Ok(out)
-}
 
 /// The writer thread: writes queued messages to the child's stdin, flushing whenever the queue is
 /// empty; ends when the queue is closed (stdin is then closed) or the child stops reading.
@@ -128,15 +60,11 @@ struct Proc {
 
 impl Proc {
     fn spawn(cmd: &ProcessCommand, diags: &Arc<Mutex<Vec<String>>>) -> Result<Proc, String> {
-        let mut c = Command::new(&cmd.program);
-        c.args(&cmd.args)
+        let mut child = cmd
+            .to_command()
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
-            .stderr(Stdio::piped());
-        for (k, v) in &cmd.env {
-            c.env(k, v);
-        }
-        let mut child = c
+            .stderr(Stdio::piped())
             .spawn()
             .map_err(|e| format!("cannot start `{}`: {e}", cmd.program.display()))?;
         let (Some(stdin), Some(stdout), Some(stderr)) =
@@ -223,7 +151,7 @@ impl Proc {
 
     /// Ends the process politely (`bye`, stdin closed), killing it if it lingers.
     fn finish(mut self) {
-        let _ = self.send(b"{\"type\":\"bye\"}\n".to_vec());
+        let _ = self.send(Request::BYE_LINE.to_vec());
         drop(self.input.take());
         let t0 = Instant::now();
         while t0.elapsed() < Duration::from_secs(1) {
@@ -298,7 +226,7 @@ impl ExecBackend {
     }
 
     /// Makes sure a greeted process is running; returns its hello when it had to start one.
-    fn ensure(&mut self) -> Result<Option<protocol::Hello>, String> {
+    fn ensure(&mut self) -> Result<Option<Hello>, String> {
         if let Some(p) = self.proc.as_mut() {
             // A process that exited between groups (after answering everything) is replaced before
             // any case is sent, so its exit is not blamed on the next group.
@@ -315,7 +243,7 @@ impl ExecBackend {
         }
         let mut p = Proc::spawn(&self.cmd, &self.diags)?;
         self.spawns += 1;
-        let hello = protocol::hello_line();
+        let hello = Request::hello_line();
         if let Err(e) = p.send(format!("{hello}\n").into_bytes()) {
             let how = p.kill();
             return Err(format!("handshake failed: {e} ({how})"));
@@ -334,7 +262,7 @@ impl ExecBackend {
                 return Err(format!("exited before its hello ({how})"));
             }
         };
-        match protocol::parse_hello(&line) {
+        match Reply::parse_hello(&line) {
             Ok(h) => {
                 self.proc = Some(p);
                 Ok(Some(h))
@@ -355,10 +283,10 @@ impl ExecBackend {
         // The whole group in one buffer, then `flush`: one hand-over to the writer thread.
         let mut buf = Vec::with_capacity(group.len() * 1024);
         for c in group {
-            protocol::write_case(&mut buf, c, self.wants_expect);
+            Request::write_case(&mut buf, c, self.wants_expect);
             buf.push(b'\n');
         }
-        buf.extend_from_slice(b"{\"type\":\"flush\"}\n");
+        buf.extend_from_slice(Request::FLUSH_LINE);
         // A failed hand-over means the process is gone: reading says so (Died).
         let _ = p.send(buf);
         let deadline = Instant::now() + self.timeout;
@@ -373,10 +301,14 @@ impl ExecBackend {
                     Err(RecvTimeoutError::Disconnected) => return (out, Some(Failure::Died)),
                 }
             };
-            match protocol::parse_answer(&line) {
-                Ok(a) if a.case_id() == c.id => out.push(to_outcome(c, a)),
+            match Reply::parse_answer(&line) {
+                Ok(a) if a.case_id() == Some(c.id.as_str()) => out.push(to_outcome(c, a)),
                 Ok(a) => {
-                    let msg = format!("answer for `{}` where `{}` was expected", a.case_id(), c.id);
+                    let msg = format!(
+                        "answer for `{}` where `{}` was expected",
+                        a.case_id().unwrap_or_default(),
+                        c.id
+                    );
                     return (out, Some(Failure::Protocol(msg)));
                 }
                 Err(e) => {
@@ -472,15 +404,17 @@ fn clip(s: &str) -> String {
     }
 }
 
-fn to_outcome(case: &Case, a: Answer) -> CaseOutcome {
+fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
     match a {
-        Answer::Skip { reason, .. } => CaseOutcome::Skip(reason),
-        Answer::Error { message, .. } => CaseOutcome::Error(message),
-        Answer::Observation {
+        // parse_answer never returns a hello.
+        Reply::Hello(_) => CaseOutcome::Error("a hello where an answer was expected".into()),
+        Reply::Skip { reason, .. } => CaseOutcome::Skip(reason),
+        Reply::Error { message, .. } => CaseOutcome::Error(message),
+        Reply::Observation {
             results, skipped, ..
         } => {
             let mut v = Vec::with_capacity(results.len() + skipped.len());
-            for ApiResultMsg {
+            for PathResult {
                 api, rgba, stored, ..
             } in results
             {
@@ -500,7 +434,7 @@ fn to_outcome(case: &Case, a: Answer) -> CaseOutcome {
                 }
             }
             // A path both answered and listed as skipped keeps its result (judged, never hidden).
-            for SkippedMsg { api, reason } in skipped {
+            for PathSkip { api, reason } in skipped {
                 match ApiPath::from_key(&api) {
                     Some(a) if case.api.contains(&a) => {
                         if !v.iter().any(|(p, _)| *p == a) {
@@ -552,20 +486,6 @@ impl Drop for ExecBackend {
 mod tests {
     use super::*;
 
-    #[test]
-    fn split_command_quotes_like_a_shell() {
-        assert_eq!(
-            split_command("python3 a.py --x").unwrap(),
-            ["python3", "a.py", "--x"]
-        );
-        assert_eq!(
-            split_command(" 'a b' \"c \\\" d\" e\\ f ").unwrap(),
-            ["a b", "c \" d", "e f"]
-        );
-        assert_eq!(split_command("''").unwrap(), [""]);
-        assert!(split_command("'open").is_err());
-    }
-
     /// A case with the compat paths (ff, glsl120) of a GL 4.6 2D lookup; only `api` matters here.
     fn compat_case() -> Case {
         let json = r#"{"id":"x","spec":"gl46","api":["ff","glsl120"],"texture":{"target":"2d","format":"d16","levels":[{"width":1,"height":1,"layers":1,"depth":{"unorm":[7]}}]},"sampler":{"compare_mode":"compare","compare_func":"lequal","min_filter":"nearest","mag_filter":"nearest","wrap_s":"edge","wrap_t":"edge","wrap_r":"edge","border":[0,0,0,0]},"lookup":{"coord":[0.5,0.5,0,1],"dref":0.5}}"#;
@@ -576,7 +496,7 @@ mod tests {
     fn skipped_paths_become_skip_with_the_implementations_reason() {
         let case = compat_case();
         let line = r#"{"type":"observation","case_id":"x","results":[{"api":"glsl120","rgba":[1,1,1,1],"note":"shadow2D"}],"skipped":[{"api":"ff","reason":"fixed-function has no cube arrays"}]}"#;
-        let out = to_outcome(&case, protocol::parse_answer(line).unwrap());
+        let out = to_outcome(&case, Reply::parse_answer(line).unwrap());
         let CaseOutcome::Observed(v) = out else {
             panic!("{out:?}")
         };
@@ -591,13 +511,12 @@ mod tests {
         // A skipped path the case does not have is the implementation's error, as a stray result is.
         let bad = r#"{"type":"observation","case_id":"x","results":[],"skipped":[{"api":"core","reason":"no"}]}"#;
         assert!(matches!(
-            to_outcome(&case, protocol::parse_answer(bad).unwrap()),
+            to_outcome(&case, Reply::parse_answer(bad).unwrap()),
             CaseOutcome::Error(_)
         ));
         // An answered path that is also listed keeps its result.
         let both = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}],"skipped":[{"api":"ff","reason":"no"}]}"#;
-        let CaseOutcome::Observed(v) = to_outcome(&case, protocol::parse_answer(both).unwrap())
-        else {
+        let CaseOutcome::Observed(v) = to_outcome(&case, Reply::parse_answer(both).unwrap()) else {
             panic!()
         };
         assert_eq!(v.len(), 1);

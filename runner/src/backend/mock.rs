@@ -17,11 +17,11 @@
 //! Environment: `SHADOWCHECK_MOCK_KILL_RUNNER=REGEX` makes the worker SIGKILL its parent (the
 //! runner) on the first case whose id matches, to test that a killed run can be resumed.
 
-use super::protocol::{self, Answer, ApiResultMsg, Hello, Request};
-use super::Capabilities;
-use crate::events::Rgba;
 use regex::Regex;
 use shadowcheck_model::{Case, Channel, Profile};
+use shadowcheck_protocol::{
+    Capabilities, Hello, PathResult, Reply, Request, Rgba, PROTOCOL_VERSION,
+};
 use std::collections::HashSet;
 use std::io::{BufRead, Write};
 
@@ -134,17 +134,17 @@ fn warn_value(case: &Case) -> Option<f64> {
         .find(|v| !strict.contains(*v))
 }
 
-fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Answer {
+fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Reply {
     let id = case.id.clone();
     let value = match action {
         Action::Skip => {
-            return Answer::Skip {
+            return Reply::Skip {
                 case_id: id,
                 reason: "mock: scripted skip".into(),
             }
         }
         Action::Error => {
-            return Answer::Error {
+            return Reply::Error {
                 case_id: id,
                 message: "mock: scripted error".into(),
             }
@@ -155,7 +155,7 @@ fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Answer {
         _ => strict_value(case),
     };
     let Some(r) = value else {
-        return Answer::Skip {
+        return Reply::Skip {
             case_id: id,
             reason: "mock: the case carries no expectation to answer from".into(),
         };
@@ -163,14 +163,14 @@ fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Answer {
     let results = case
         .api
         .iter()
-        .map(|&a| ApiResultMsg {
+        .map(|&a| PathResult {
             api: a.key().to_string(),
             rgba: Rgba(laid_out(case, a, r)),
             stored: None,
             note: None,
         })
         .collect();
-    Answer::Observation {
+    Reply::Observation {
         case_id: id,
         results,
         skipped: Vec::new(),
@@ -197,7 +197,7 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
         if line.trim().is_empty() {
             continue;
         }
-        let req: Request = match serde_json::from_str(&line) {
+        let req = match Request::parse(&line) {
             Ok(r) => r,
             Err(e) => {
                 eprintln!("mock: cannot read `{line}`: {e}");
@@ -206,13 +206,12 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
         };
         match req {
             Request::Hello { .. } => {
-                let hello = Hello {
-                    kind: "hello".into(),
-                    protocol: protocol::PROTOCOL_VERSION,
+                let hello = Reply::Hello(Hello {
+                    protocol: PROTOCOL_VERSION,
                     name: Some("shadowcheck mock".into()),
                     capabilities: Capabilities::all(),
                     wants_expect: true,
-                };
+                });
                 serde_json::to_writer(&mut output, &hello)?;
                 output.write_all(b"\n")?;
                 output.flush()?;

@@ -8,86 +8,16 @@
 //! - `egl:*`, `osmesa:*`: GL drivers, each in a `shadowcheck gl-worker` child speaking the protocol;
 //! - `mock:<script>`: a scripted implementation for testing the runner itself.
 
+pub mod command;
 pub mod exec;
+pub mod gl;
+pub mod kinds;
 pub mod mock;
-pub mod protocol;
 pub mod soft;
 
-use serde::{Deserialize, Serialize};
 use shadowcheck_model::{ApiPath, Case, Texels};
+pub use shadowcheck_protocol::{Capabilities, Support};
 use std::time::Duration;
-
-/// What an implementation can run. `None` for a list means "no restriction declared".
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-pub struct Capabilities {
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub specs: Option<Vec<String>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub api: Option<Vec<String>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub targets: Option<Vec<String>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub formats: Option<Vec<String>>,
-    /// Extensions the implementation exposes (informational: reports show them).
-    #[serde(default)]
-    pub extensions: Vec<String>,
-}
-
-fn listed(list: &Option<Vec<String>>, key: &str) -> bool {
-    list.as_ref().is_none_or(|l| l.iter().any(|k| k == key))
-}
-
-/// Which API paths of a case a backend will run, or why it runs none.
-pub enum Support {
-    /// Run these paths (a subset of the case's); the others are Skip with the reason.
-    Run {
-        apis: Vec<ApiPath>,
-        others: Option<String>,
-    },
-    Skip(String),
-}
-
-impl Capabilities {
-    /// Everything allowed.
-    pub fn all() -> Capabilities {
-        Capabilities::default()
-    }
-
-    pub fn support(&self, case: &Case) -> Support {
-        if !listed(&self.specs, case.spec.key()) {
-            return Support::Skip(format!(
-                "spec `{}` not supported by this backend",
-                case.spec
-            ));
-        }
-        if !listed(&self.targets, case.texture.target.key()) {
-            return Support::Skip(format!(
-                "target `{}` not supported by this backend",
-                case.texture.target
-            ));
-        }
-        if !listed(&self.formats, case.texture.format.key()) {
-            return Support::Skip(format!(
-                "format `{}` not supported by this backend",
-                case.texture.format
-            ));
-        }
-        let apis: Vec<ApiPath> = case
-            .api
-            .iter()
-            .copied()
-            .filter(|a| listed(&self.api, a.key()))
-            .collect();
-        if apis.is_empty() {
-            return Support::Skip(
-                "none of the case's API paths is supported by this backend".to_string(),
-            );
-        }
-        let others = (apis.len() < case.api.len())
-            .then(|| "API path not supported by this backend".to_string());
-        Support::Run { apis, others }
-    }
-}
 
 /// What a backend returned for one API path of a case.
 #[derive(Debug, Clone, PartialEq)]
@@ -113,7 +43,7 @@ pub enum CaseOutcome {
 
 #[derive(Debug, thiserror::Error)]
 pub enum BackendError {
-    #[error("unknown backend `{0}` (expected soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, mock:<script>)")]
+    #[error("unknown backend `{0}` (expected {patterns})", patterns = kinds::patterns())]
     Unknown(String),
     #[error("backend `{backend}`: {msg}")]
     Setup { backend: String, msg: String },
@@ -156,7 +86,7 @@ impl Default for Options {
 
 /// The GL backends this machine offers (`egl:...`, `osmesa:...`), from the GL helper's probe.
 pub fn gl_backends() -> Vec<String> {
-    crate::gl::probe()
+    gl::probe()
 }
 
 /// Backends run when none is named: `soft` plus every GL driver found.
@@ -166,57 +96,10 @@ pub fn default_backends() -> Vec<String> {
     v
 }
 
-/// Opens the backend called `name` (starting and greeting its process, if any).
+/// Opens the backend called `name` (starting and greeting its process, if any); the kind comes
+/// from [`kinds::KINDS`].
 pub fn open(name: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
-    let (kind, rest) = name.split_once(':').unwrap_or((name, ""));
-    match kind {
-        "soft" => Ok(Box::new(soft::SoftBackend::new(name, rest)?)),
-        "exec" => {
-            let argv = exec::split_command(rest).map_err(|msg| BackendError::Setup {
-                backend: name.into(),
-                msg,
-            })?;
-            let Some((program, args)) = argv.split_first() else {
-                return Err(BackendError::Setup {
-                    backend: name.into(),
-                    msg: "empty command".into(),
-                });
-            };
-            let cmd = exec::ProcessCommand {
-                program: program.into(),
-                args: args.to_vec(),
-                env: vec![],
-            };
-            Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
-        }
-        "egl" | "osmesa" => {
-            let wc = crate::gl::worker_command(name).map_err(|e| BackendError::Setup {
-                backend: name.into(),
-                msg: e.to_string(),
-            })?;
-            let cmd = exec::ProcessCommand {
-                program: wc.program,
-                args: wc.args,
-                env: wc.env,
-            };
-            Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
-        }
-        "mock" => {
-            let exe = std::env::current_exe().map_err(|e| BackendError::Setup {
-                backend: name.into(),
-                msg: e.to_string(),
-            })?;
-            mock::Script::parse(rest).map_err(|msg| BackendError::Setup {
-                backend: name.into(),
-                msg,
-            })?;
-            let cmd = exec::ProcessCommand {
-                program: exe,
-                args: vec!["mock-worker".into(), rest.to_string()],
-                env: vec![],
-            };
-            Ok(Box::new(exec::ExecBackend::start(name, cmd, opts)?))
-        }
-        _ => Err(BackendError::Unknown(name.to_string())),
-    }
+    let kind = kinds::kind_of(name).ok_or_else(|| BackendError::Unknown(name.to_string()))?;
+    let rest = name.split_once(':').map_or("", |(_, r)| r);
+    (kind.open)(name, rest, opts)
 }

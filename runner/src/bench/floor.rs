@@ -1,7 +1,7 @@
 //! The GL bare-draw floor: what a driver costs per shadow lookup when nothing but the lookups runs.
 //!
 //! A child process (`shadowcheck bench --floor-child NAME`, started with the backend's driver
-//! environment, see [`crate::gl::worker_command`]) creates the backend's context, a 64x64
+//! environment, see [`crate::backend::gl::worker_command`]) creates the backend's context, a 64x64
 //! DEPTH_COMPONENT24 texture sampled NEAREST with LEQUAL comparison (like the 2D NEAREST cases),
 //! an RGBA32F framebuffer of `size`x`size` pixels (the format the GL worker reads results from),
 //! and draws one full-screen triangle per repetition whose fragments each do one `textureLod`
@@ -9,10 +9,10 @@
 //! read-back beyond `glFinish` and one pixel. It prints one JSON line ([`FloorResult`]).
 
 use super::cpu::BENCH_TEXTURE;
-use crate::gl::context::GlContext;
-use crate::gl::names::{BackendName, ContextApi};
 use glow::HasContext;
 use serde::{Deserialize, Serialize};
+use shadowcheck_gl::context::GlContext;
+use shadowcheck_gl::names::{BackendName, ContextApi};
 use std::process::Stdio;
 use std::time::{Duration, Instant};
 
@@ -133,7 +133,7 @@ unsafe fn draw_loop(
         return Err(format!("wrong driver: GL_RENDERER is `{renderer}`"));
     }
     // Framebuffer: RGBA32F like the worker's result buffer.
-    let color = crate::gl::texture::rgba32f(gl, size, size)?;
+    let color = shadowcheck_gl::texture::rgba32f(gl, size, size)?;
     let fbo = gl.create_framebuffer()?;
     gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
     gl.framebuffer_texture_2d(
@@ -248,7 +248,7 @@ pub fn run_child(
     min: Duration,
     extra_env: &[(&str, &str)],
 ) -> FloorResult {
-    let wc = match crate::gl::worker_command(backend) {
+    let wc = match crate::backend::gl::worker_command(backend) {
         Ok(w) => w,
         Err(e) => return FloorResult::err(e),
     };

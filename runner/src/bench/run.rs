@@ -6,7 +6,7 @@ use super::{
     cpu, ids, machine::Machine, targets, BenchReport, Goal, Measurement, Target, Unavailable,
     SCHEMA_VERSION,
 };
-use crate::gl::names::{BackendName, Driver};
+use shadowcheck_gl::names::{BackendName, Driver};
 use std::path::PathBuf;
 use std::time::Duration;
 

@@ -2,8 +2,8 @@
 //! to end against the bare-draw floor), and wall time / peak memory of the default suite per driver.
 //! Targets are goals reported against, never assertions. See reports/BENCH.md.
 use anyhow::Context;
+use shadowcheck_gl::BackendName;
 use shadowcheck_runner::bench::{self, markdown, run::BenchOptions};
-use shadowcheck_runner::gl::BackendName;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;

@@ -1,6 +1,6 @@
 //! `shadowcheck gl-worker --backend egl:llvmpipe:core`: one GL context speaking runner/PROTOCOL.md on
-//! stdin/stdout. Started by the runner with the driver env vars already set (`gl::worker_command`).
-use shadowcheck_runner::gl::{worker, BackendName};
+//! stdin/stdout. Started by the runner with the driver env vars already set (`backend::gl::worker_command`).
+use shadowcheck_gl::{worker, BackendName};
 use std::process::ExitCode;
 
 #[derive(clap::Args)]

@@ -23,9 +23,8 @@ pub const MESA_INSTALL: &str =
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Backend to run (repeatable): soft, soft:<spec>, exec:<command>, egl:<driver>..., osmesa:<driver>...,
-    /// mock:<script>. Default: soft plus every GL driver found on this machine.
-    #[arg(long = "backend", short = 'b', value_name = "B")]
+    /// Backend to run (repeatable); the text comes from the table of backend kinds.
+    #[arg(long = "backend", short = 'b', value_name = "B", help = backend::kinds::help())]
     backends: Vec<String>,
     /// Fixture file or directory (repeatable). Default: cases/fixtures.
     #[arg(long, value_name = "PATH")]

@@ -24,9 +24,9 @@ pub use reader::{read_results, truncate_partial_line, ReadError, Results, RESULT
 pub use status::{Outcome, Status};
 pub use summary::{Counts, Summary};
 
-use crate::events::Rgba;
 use serde::{Deserialize, Serialize};
 use shadowcheck_model::{ApiPath, Case, Footprint, Profile, SCHEMA_VERSION};
+use shadowcheck_protocol::Rgba;
 
 /// The case's coordinates in the grid, for summary tables.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]

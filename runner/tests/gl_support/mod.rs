@@ -36,7 +36,7 @@ pub fn unavailable(backend: &str, why: &str) {
 impl Session {
     /// Starts the worker; `None` when the backend is unavailable (after `unavailable`).
     pub fn start(backend: &str) -> Option<Session> {
-        let mut wc = match shadowcheck_runner::gl::worker_command(backend) {
+        let mut wc = match shadowcheck_runner::backend::gl::worker_command(backend) {
             Ok(wc) => wc,
             Err(e) => {
                 unavailable(backend, &e.to_string());

@@ -306,9 +306,9 @@ pub fn render(input: &ReportInput, geo: &Geometry, opts: &Options) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::events::Rgba;
     use crate::records::{ExpectedSummary, Outcome, Status, Tags};
     use shadowcheck_model::ApiPath;
+    use shadowcheck_protocol::Rgba;
 
     fn result(backend: &str, id: &str, outcome: Outcome, r: f64) -> TestResult {
         TestResult {

@@ -7,7 +7,7 @@
 //! A name says which window-system layer creates the context (EGL surfaceless or OSMesa), which Mesa
 //! Gallium driver runs it, and which kind of context is asked for. The driver is chosen by
 //! environment variables that must be set before Mesa loads, which is why every backend runs in its
-//! own worker process (see [`super::worker_command`]).
+//! own worker process (see shadowcheck-runner's `backend::gl::worker_command`).
 
 use super::GlError;
 use shadowcheck_model::ApiPath;

@@ -9,14 +9,13 @@
 
 use super::legacy::{self, Legacy};
 use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
-use super::programs::Compiled;
-use super::protocol::{PathResult, PathSkip};
+use super::programs::{Compiled, ProgramCache};
 use super::shaders;
 use super::texture;
 use super::GlError;
 use glow::HasContext;
 use shadowcheck_model::{ApiPath, Case, Target, Texels};
-use std::collections::HashMap;
+use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
 
 /// Width and height of the result framebuffer: one pixel per (case, path).
 pub(super) const FB_SIZE: i32 = 256;
@@ -43,8 +42,7 @@ pub struct Renderer {
     vao: glow::VertexArray,
     /// RGBA32F case values for batched draws (unit 1).
     pub(super) params: glow::Texture,
-    /// Programs by (key, batched).
-    pub(super) programs: HashMap<(ShaderKey, bool), Result<Compiled, String>>,
+    programs: ProgramCache,
 }
 
 /// A drawn path waiting for read-back.
@@ -128,7 +126,7 @@ impl Renderer {
             fbo,
             vao,
             params,
-            programs: HashMap::new(),
+            programs: ProgramCache::default(),
         })
     }
 
@@ -139,8 +137,14 @@ impl Renderer {
         slot0: usize,
         n: usize,
     ) -> Result<(), String> {
-        self.program(key, true)?;
-        let Some(Ok(Compiled::Glsl(p))) = self.programs.get(&(*key, true)) else {
+        let compiled = self.programs.get(
+            &self.gl,
+            &self.info,
+            self.legacy.as_ref(),
+            key,
+            Some(FB_SIZE),
+        )?;
+        let Compiled::Glsl(p) = compiled else {
             return Err("batched program is not GLSL".into());
         };
         let gl = &self.gl;
@@ -161,13 +165,15 @@ impl Renderer {
         target: Target,
         slot: usize,
     ) -> Result<(), String> {
-        self.program(&plan.key, false)?;
+        let compiled =
+            self.programs
+                .get(&self.gl, &self.info, self.legacy.as_ref(), &plan.key, None)?;
         let (x, y) = ((slot as i32) % FB_SIZE, (slot as i32) / FB_SIZE);
         let gl = &self.gl;
         gl.viewport(x, y, 1, 1);
         let centre = [x as f32 + 0.5, y as f32 + 0.5];
-        match self.programs.get(&(plan.key, false)) {
-            Some(Ok(Compiled::Glsl(p))) => {
+        match compiled {
+            Compiled::Glsl(p) => {
                 gl.use_program(Some(p.program));
                 gl.uniform_4_f32_slice(p.u_p.as_ref(), &plan.p);
                 gl.uniform_1_f32(p.u_x.as_ref(), plan.x);
@@ -177,7 +183,7 @@ impl Renderer {
                 gl.bind_vertex_array(Some(self.vao));
                 gl.draw_arrays(glow::TRIANGLES, 0, 3);
             }
-            Some(Ok(Compiled::Arb(id))) => {
+            Compiled::Arb(id) => {
                 let l = self
                     .legacy
                     .as_ref()
@@ -192,7 +198,7 @@ impl Renderer {
                 l.fullscreen_triangle();
                 gl.disable(legacy::GL_FRAGMENT_PROGRAM_ARB);
             }
-            Some(Ok(Compiled::Fixed)) => {
+            Compiled::Fixed => {
                 let l = self
                     .legacy
                     .as_ref()
@@ -240,8 +246,6 @@ impl Renderer {
                 }
                 gl.disable(enable);
             }
-            Some(Err(e)) => return Err(e.clone()),
-            None => return Err("program cache miss".into()),
         }
         Ok(())
     }
@@ -276,7 +280,9 @@ impl Renderer {
         self.gl.clear(glow::COLOR_BUFFER_BIT);
     }
 
-    /// Why a case cannot run on this context at all (before planning paths).
+    /// Why a case the capabilities admit still cannot run on this context: sampler state the
+    /// context lacks (before planning paths; targets and API paths were decided by the worker's
+    /// capabilities).
     fn case_skip(&self, case: &Case) -> Option<String> {
         if self.info.es && case.sampler.lod_bias != 0.0 {
             return Some("OpenGL ES has no TEXTURE_LOD_BIAS".into());
@@ -285,12 +291,6 @@ impl Renderer {
             return Some(
                 "GL_ARB_shadow_ambient not exposed (TEXTURE_COMPARE_FAIL_VALUE_ARB)".into(),
             );
-        }
-        if !self.info.targets().contains(&case.texture.target) {
-            return Some(format!(
-                "target {} not supported by this context",
-                case.texture.target
-            ));
         }
         None
     }
@@ -308,7 +308,6 @@ impl Renderer {
             readbacks: Vec::new(),
             skipped: vec![Vec::new(); cases.len()],
         };
-        let paths = self.info.paths();
         self.clear();
         let mut planned: Vec<(usize, Vec<Plan>)> = Vec::new();
         for (ci, case) in cases.iter().enumerate() {
@@ -319,16 +318,12 @@ impl Renderer {
             let mut plans = Vec::new();
             let mut skipped = Vec::new();
             for &path in &case.api {
-                if !paths.contains(&path) {
-                    skipped.push(PathSkip {
-                        api: path,
-                        reason: format!("{path}: not run by this context"),
-                    });
-                    continue;
-                }
                 match paths::plan_with(path, case, self.info.form) {
                     Ok(p) => plans.push(p),
-                    Err(reason) => skipped.push(PathSkip { api: path, reason }),
+                    Err(reason) => skipped.push(PathSkip {
+                        api: path.key().to_string(),
+                        reason,
+                    }),
                 }
             }
             if plans.is_empty() {
@@ -371,7 +366,7 @@ impl Renderer {
             .zip(cases)
             .map(|((((a, mut r), stored), skipped), case)| {
                 a.unwrap_or_else(|| {
-                    r.sort_by_key(|e| case.api.iter().position(|p| *p == e.api));
+                    r.sort_by_key(|e| case.api.iter().position(|p| p.key() == e.api));
                     for e in &mut r {
                         e.stored = stored.clone();
                     }
@@ -486,8 +481,8 @@ impl Renderer {
         for p in pending.drain(..) {
             let v = px.get(p.slot).copied().unwrap_or([f32::NAN; 4]);
             results[p.case].push(PathResult {
-                api: p.path,
-                rgba: v.map(|c| c as f64),
+                api: p.path.key().to_string(),
+                rgba: Rgba(v.map(|c| c as f64)),
                 stored: None,
                 note: Some(p.note),
             });

@@ -1,76 +1,13 @@
-//! GL driver backends: Mesa llvmpipe, softpipe and zink through EGL (surfaceless) and OSMesa.
-//!
-//! Each backend runs in a `shadowcheck gl-worker --backend NAME` child process that speaks
-//! runner/PROTOCOL.md: the driver is chosen by environment variables read when Mesa loads, EGL and
-//! OSMesa share libglapi, and a driver crash must only take down its worker. This module is the
-//! runner-side API (names, probing, how to start a worker); [`worker`] is the child side.
-//!
-//! Every library (libEGL, libOSMesa, the GL entry points) is loaded at run time, so a machine without
-//! Mesa builds fine and reports the backend unavailable with the apt-get command that fixes it.
+//! The runner's side of the GL backends (`egl:*`, `osmesa:*`): how to start a backend's
+//! `shadowcheck gl-worker` child (the driver is chosen by environment variables read when Mesa
+//! loads, so each backend gets its own process, and a driver crash only takes down its worker), and
+//! probing which backends this machine can run. The worker itself is the GL crate's.
 
-mod batch;
-pub mod context;
-pub mod draw;
-pub mod legacy;
-pub mod names;
-pub mod paths;
-mod programs;
-pub mod protocol;
-pub mod shaders;
-pub mod state;
-pub mod texture;
-pub mod worker;
-
-pub use names::{BackendName, ContextApi, Driver, Platform};
-
+use super::exec::ProcessCommand;
+use shadowcheck_gl::{BackendName, GlError};
 use std::path::PathBuf;
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::time::{Duration, Instant};
-
-/// How to start the worker process of one backend.
-#[derive(Debug, Clone, PartialEq)]
-pub struct WorkerCommand {
-    pub program: PathBuf,
-    pub args: Vec<String>,
-    /// Set in the child's environment before the driver loads (driver selection).
-    pub env: Vec<(String, String)>,
-}
-
-impl WorkerCommand {
-    /// A `std::process::Command` ready to spawn (stdio not configured).
-    pub fn to_command(&self) -> Command {
-        let mut c = Command::new(&self.program);
-        c.args(&self.args);
-        for (k, v) in &self.env {
-            c.env(k, v);
-        }
-        c
-    }
-}
-
-#[derive(Debug, thiserror::Error)]
-pub enum GlError {
-    #[error("bad backend name `{name}`: {why}")]
-    BadName { name: String, why: String },
-    #[error("backend unavailable: {0}")]
-    Unavailable(String),
-    #[error("{lib} could not be loaded ({detail}); install it with `{install}`")]
-    MissingLibrary {
-        lib: String,
-        detail: String,
-        install: String,
-    },
-    #[error("context creation failed: {0}")]
-    ContextFailed(String),
-    #[error("wrong driver: asked for {wanted}, GL_RENDERER is `{renderer}`")]
-    WrongDriver { wanted: String, renderer: String },
-    #[error("GL entry point {0} is missing")]
-    MissingEntryPoint(String),
-    #[error("cannot find the shadowcheck executable to run the GL worker: {0}")]
-    NoExecutable(String),
-    #[error("{0}")]
-    Gl(String),
-}
 
 /// Environment variable naming the `shadowcheck` executable to run workers with (tests, wrappers).
 pub const WORKER_EXE_ENV: &str = "SHADOWCHECK_EXE";
@@ -102,12 +39,12 @@ fn shadowcheck_exe() -> Result<PathBuf, GlError> {
 }
 
 /// How to start the worker for one backend name.
-pub fn worker_command(backend: &str) -> Result<WorkerCommand, GlError> {
+pub fn worker_command(backend: &str) -> Result<ProcessCommand, GlError> {
     let name: BackendName = backend.parse()?;
     if let Some(why) = name.static_unavailability() {
         return Err(GlError::Unavailable(why));
     }
-    Ok(WorkerCommand {
+    Ok(ProcessCommand {
         program: shadowcheck_exe()?,
         args: vec!["gl-worker".into(), "--backend".into(), name.to_string()],
         env: name.env(),

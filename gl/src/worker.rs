@@ -6,9 +6,11 @@ use super::draw::{Answer, Renderer};
 use super::legacy::Legacy;
 use super::names::{BackendName, ContextApi};
 use super::paths::GlInfo;
-use super::protocol::{Capabilities, Incoming, Outgoing, PROTOCOL_VERSION};
 use super::GlError;
 use shadowcheck_model::{Case, Format, Spec};
+use shadowcheck_protocol::{
+    Capabilities, Hello, PathSkip, Reply, Request, Support, PROTOCOL_VERSION,
+};
 use std::ffi::c_void;
 use std::io::{BufRead, Write};
 
@@ -41,6 +43,8 @@ const RELEVANT_EXTENSIONS: &[&str] = &[
 pub struct Worker {
     pub name: BackendName,
     renderer: Renderer,
+    /// What this context runs, declared in the hello and applied to every case received.
+    caps: Capabilities,
     _ctx: GlContext,
 }
 
@@ -121,11 +125,14 @@ impl Worker {
         };
         // SAFETY: context current for the worker's life (it owns the context).
         let renderer = unsafe { Renderer::new(gl, info, legacy)? };
-        Ok(Worker {
+        let mut w = Worker {
             name,
             renderer,
+            caps: Capabilities::default(),
             _ctx: ctx,
-        })
+        };
+        w.caps = w.declared_capabilities();
+        Ok(w)
     }
 
     /// TexParameter state self-check against the oracle's tables (see `state.rs`).
@@ -175,13 +182,18 @@ impl Worker {
             .collect()
     }
 
-    pub fn capabilities(&self) -> Capabilities {
+    /// What this context can run (declared in the hello).
+    pub fn capabilities(&self) -> &Capabilities {
+        &self.caps
+    }
+
+    fn declared_capabilities(&self) -> Capabilities {
         let i = self.info();
         Capabilities {
-            specs: self.specs().iter().map(|s| s.key().to_string()).collect(),
-            api: i.paths().iter().map(|p| p.key().to_string()).collect(),
-            targets: i.targets().iter().map(|t| t.key().to_string()).collect(),
-            formats: self.formats().iter().map(|f| f.key().to_string()).collect(),
+            specs: Some(self.specs().iter().map(|s| s.key().to_string()).collect()),
+            api: Some(i.paths().iter().map(|p| p.key().to_string()).collect()),
+            targets: Some(i.targets().iter().map(|t| t.key().to_string()).collect()),
+            formats: Some(self.formats().iter().map(|f| f.key().to_string()).collect()),
             extensions: RELEVANT_EXTENSIONS
                 .iter()
                 .filter(|e| i.has_ext(e))
@@ -200,43 +212,60 @@ impl Worker {
         )
     }
 
-    /// Why a case is not for this worker (spec, format, API paths), or None.
-    fn precheck(&self, case: &Case) -> Option<String> {
-        if !self.specs().contains(&case.spec) {
-            return Some(format!(
-                "spec {} not checkable on {} (needed extensions not exposed)",
-                case.spec, self.name
-            ));
-        }
-        if !self.formats().contains(&case.texture.format) {
-            return Some(format!(
-                "format {} not available on {}",
-                case.texture.format, self.name
-            ));
-        }
+    /// Whether a case runs here: the declared capabilities decide, by the same
+    /// [`Capabilities::support`] the runner applies before sending (so a case the runner sends is
+    /// never refused here), and the case must be valid. `Ok` holds the case as drawn (only the
+    /// supported API paths) and the paths left out, each with the reason.
+    fn admit(&self, case: &Case) -> Result<(Case, Vec<PathSkip>), String> {
+        let (apis, others) = match self.caps.support(case) {
+            Support::Skip(reason) => return Err(reason),
+            Support::Run { apis, others } => (apis, others),
+        };
         if let Err(e) = shadowcheck_model::validate::validate(case) {
-            return Some(format!("invalid case: {e}"));
+            return Err(format!("invalid case: {e}"));
         }
-        None
+        let left_out = case
+            .api
+            .iter()
+            .filter(|a| !apis.contains(a))
+            .map(|a| PathSkip {
+                api: a.key().to_string(),
+                reason: others.clone().unwrap_or_default(),
+            })
+            .collect();
+        let mut drawn = case.clone();
+        drawn.api = apis;
+        Ok((drawn, left_out))
     }
 
     /// Answers a batch in order.
     pub fn run_batch(&mut self, cases: &[Case]) -> Vec<Answer> {
-        let mut answers: Vec<Option<Answer>> = cases
-            .iter()
-            .map(|c| self.precheck(c).map(Answer::Skip))
-            .collect();
-        let runnable: Vec<Case> = cases
-            .iter()
-            .zip(&answers)
-            .filter(|(_, a)| a.is_none())
-            .map(|(c, _)| c.clone())
-            .collect();
+        let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
+        let mut runnable: Vec<Case> = Vec::with_capacity(cases.len());
+        let mut left_out: Vec<Vec<PathSkip>> = Vec::with_capacity(cases.len());
+        for c in cases {
+            match self.admit(c) {
+                Ok((case, skips)) => {
+                    runnable.push(case);
+                    left_out.push(skips);
+                    answers.push(None);
+                }
+                Err(reason) => answers.push(Some(Answer::Skip(reason))),
+            }
+        }
         // SAFETY: the worker's context is current on this thread.
-        let mut drawn = unsafe { self.renderer.run_batch(&runnable) }.into_iter();
+        let mut drawn = unsafe { self.renderer.run_batch(&runnable) }
+            .into_iter()
+            .zip(left_out);
         for a in answers.iter_mut() {
             if a.is_none() {
-                *a = drawn.next();
+                *a = drawn.next().map(|(answer, skips)| match answer {
+                    Answer::Observation(results, mut skipped) => {
+                        skipped.extend(skips);
+                        Answer::Observation(results, skipped)
+                    }
+                    other => other,
+                });
             }
         }
         answers
@@ -246,15 +275,15 @@ impl Worker {
     }
 }
 
-fn answer_message(case_id: String, a: Answer) -> Outgoing {
+fn answer_message(case_id: String, a: Answer) -> Reply {
     match a {
-        Answer::Observation(results, skipped) => Outgoing::Observation {
+        Answer::Observation(results, skipped) => Reply::Observation {
             case_id,
             results,
             skipped,
         },
-        Answer::Skip(reason) => Outgoing::Skip { case_id, reason },
-        Answer::Error(message) => Outgoing::Error { case_id, message },
+        Answer::Skip(reason) => Reply::Skip { case_id, reason },
+        Answer::Error(message) => Reply::Error { case_id, message },
     }
 }
 
@@ -264,7 +293,7 @@ enum Entry {
     Bad { id: String, message: String },
 }
 
-fn write_line(out: &mut impl Write, msg: &Outgoing) -> std::io::Result<()> {
+fn write_line(out: &mut impl Write, msg: &Reply) -> std::io::Result<()> {
     let s = serde_json::to_string(msg).map_err(std::io::Error::other)?;
     out.write_all(s.as_bytes())?;
     out.write_all(b"\n")
@@ -296,7 +325,7 @@ fn flush_batch(
                     .next()
                     .unwrap_or(Answer::Error("internal: missing answer".into())),
             ),
-            Err((id, message)) => Outgoing::Error {
+            Err((id, message)) => Reply::Error {
                 case_id: id,
                 message,
             },
@@ -318,22 +347,23 @@ pub fn serve(
         if line.trim().is_empty() {
             continue;
         }
-        match Incoming::parse(&line) {
-            Ok(Incoming::Hello { protocol }) => {
+        match Request::parse(&line) {
+            Ok(Request::Hello { protocol }) => {
                 if protocol != 0 && protocol != PROTOCOL_VERSION {
                     eprintln!("gl-worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}");
                 }
-                let hello = Outgoing::Hello {
+                let hello = Reply::Hello(Hello {
                     protocol: PROTOCOL_VERSION,
-                    name: worker.display_name(),
-                    capabilities: worker.capabilities(),
-                };
+                    name: Some(worker.display_name()),
+                    capabilities: worker.capabilities().clone(),
+                    wants_expect: false,
+                });
                 write_line(&mut output, &hello)?;
                 output.flush()?;
             }
-            Ok(Incoming::Case { case }) => batch.push(Entry::Case(case)),
-            Ok(Incoming::Flush) => flush_batch(worker, &mut batch, &mut output)?,
-            Ok(Incoming::Bye) => break,
+            Ok(Request::Case { case }) => batch.push(Entry::Case(case)),
+            Ok(Request::Flush) => flush_batch(worker, &mut batch, &mut output)?,
+            Ok(Request::Bye) => break,
             Err(e) => {
                 // A case line we cannot parse still gets its one answer, in order.
                 let v: Option<serde_json::Value> = serde_json::from_str(&line).ok();
