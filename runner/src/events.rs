@@ -54,7 +54,7 @@ pub trait Reporter {
 }
 
 /// Where events go: the reporters directly ([`Fanout`]) or, from a backend's thread, a channel to
-/// the thread that owns the reporters ([`crate::parallel`]).
+/// the thread that owns the reporters ([`crate::schedule`]).
 pub trait Sink {
     fn emit(&mut self, ev: &Event<'_>);
 }

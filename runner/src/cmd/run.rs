@@ -9,6 +9,7 @@ use shadowcheck_runner::report::{
     self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports,
 };
 use shadowcheck_runner::run::{self, Settings};
+use shadowcheck_runner::schedule;
 use shadowcheck_runner::shard::Shard;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -231,7 +232,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .jobs
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
-    let (_, summary, _) = run::run_all(
+    let (_, summary, _) = schedule::run_all(
         &mut backends,
         &set,
         &prior,

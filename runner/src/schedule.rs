@@ -1,15 +1,56 @@
-//! Several backends at once (`shadowcheck run --jobs N`): each runs on its own thread, its events
-//! travel over a channel to the calling thread, which alone owns the reporters. Results are the
+//! Scheduling the backends of a run: one after another, or several at once (`shadowcheck run
+//! --jobs N`), each on its own thread, its events travelling over a channel to the calling thread,
+//! which alone owns the reporters. Results are the
 //! same as a sequential run (the final report is sorted; results.jsonl is keyed by backend and
 //! test, so the interleaving of its lines does not matter).
 
 use crate::backend::Backend;
 use crate::events::{Event, Fanout, Sink, Timing};
+use crate::records::Summary;
 use crate::records::{Counts, Results, TestResult};
-use crate::run::{run_backend, CaseSet, Settings};
+use crate::run::{finish, run_backend, CaseSet, Settings};
 use std::collections::VecDeque;
+use std::path::Path;
 use std::sync::mpsc::{self, Sender};
 use std::sync::Mutex;
+
+/// Runs every backend over `set` (up to `jobs` backends at once, each in its own thread; the
+/// reporters stay on this thread) and finishes the run (sorted results, summary, `RunFinished`).
+pub fn run_all(
+    backends: &mut [Box<dyn Backend>],
+    set: &CaseSet,
+    prior: &Results,
+    settings: &Settings,
+    fanout: &mut Fanout,
+    out_dir: &Path,
+    jobs: usize,
+) -> (Vec<TestResult>, Summary, Vec<Timing>) {
+    let names: Vec<String> = backends.iter().map(|b| b.name().to_string()).collect();
+    fanout.emit(&Event::RunStarted {
+        backends: &names,
+        tests: set.tests() * names.len(),
+        out_dir,
+    });
+    for e in &set.errors {
+        fanout.emit(&Event::LoadError(e));
+    }
+    let per_backend = if jobs <= 1 || backends.len() <= 1 {
+        backends
+            .iter_mut()
+            .map(|b| run_backend(b.as_mut(), set, prior, settings, fanout))
+            .collect()
+    } else {
+        run_backends(backends, set, prior, settings, fanout, jobs)
+    };
+    let mut all = Vec::new();
+    let mut timings = Vec::new();
+    for (r, t) in per_backend {
+        all.extend(r);
+        timings.push(t);
+    }
+    let summary = finish(names, &mut all, &set.errors, fanout);
+    (all, summary, timings)
+}
 
 /// An event with owned data, as sent between threads (the events a backend run emits).
 enum Owned {
