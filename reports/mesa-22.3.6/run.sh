@@ -28,7 +28,7 @@ for b in egl:llvmpipe:core egl:llvmpipe:compat egl:llvmpipe:es3 \
 done
 # Condense into this folder: failures.csv (baseline), warnings.csv, summary.md, report.md (capped),
 # and SUMMARY.md over all backends x API paths (`shadowcheck summarize --help`).
-target/release/shadowcheck summarize reports/mesa-22.3.6 "$OUT"/r-* --platform "Mesa 22.3.6"
+target/release/shadowcheck summarize -o reports/mesa-22.3.6 "$OUT"/r-* --platform "Mesa 22.3.6"
 # The ARB fp DEPTH_TEXTURE_MODE=ALPHA results flip between runs on llvmpipe/softpipe: those tests
 # are kept out of the baselines and listed in flakes.txt (committed by hand, see ../README.md).
 for b in egl-llvmpipe-compat osmesa-llvmpipe-compat egl-softpipe-compat osmesa-softpipe-compat; do

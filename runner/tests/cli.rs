@@ -109,3 +109,65 @@ fn absurd_timeouts_are_bad_input_not_a_panic() {
         assert!(!err.contains("panicked"), "--timeout {t}: {err}");
     }
 }
+
+#[test]
+fn every_subcommand_that_writes_a_directory_takes_dash_o() {
+    for sub in ["run", "gen", "report", "merge", "summarize"] {
+        let o = bin().args([sub, "--help"]).output().unwrap();
+        let help = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            help.contains("-o, --out <DIR>"),
+            "{sub} --help has no `-o, --out <DIR>`:\n{help}"
+        );
+    }
+    for sub in ["run", "bench"] {
+        let o = bin().args([sub, "--help"]).output().unwrap();
+        let help = String::from_utf8_lossy(&o.stdout);
+        assert!(help.contains("-b, --backend <B>"), "{sub}:\n{help}");
+    }
+    for sub in ["run", "bench", "mutants", "report"] {
+        let o = bin().args([sub, "--help"]).output().unwrap();
+        let help = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            help.contains("--fixtures <PATH>") && help.contains("(repeatable)"),
+            "{sub}:\n{help}"
+        );
+    }
+}
+
+#[test]
+fn bench_backends_are_named_as_in_run() {
+    let (c, err) = code(&["bench", "--quick", "-b", "llvmpipe"]);
+    assert_eq!(c, Some(96), "{err}");
+    assert!(err.contains("named as in `run --backend`"), "{err}");
+}
+
+#[test]
+fn every_flag_has_help() {
+    // clap prints a flag without a doc comment as a bare `--name <VALUE>` line: every option
+    // line must be followed by text on the same or the next line.
+    for sub in [
+        "run",
+        "gen",
+        "report",
+        "merge",
+        "summarize",
+        "bench",
+        "mutants",
+        "explain",
+    ] {
+        let o = bin().args([sub, "--help"]).output().unwrap();
+        let help = String::from_utf8_lossy(&o.stdout);
+        let lines: Vec<&str> = help.lines().collect();
+        for (i, l) in lines.iter().enumerate() {
+            let t = l.trim_start();
+            if !t.starts_with('-') {
+                continue;
+            }
+            let same_line = t.split("  ").skip(1).any(|s| !s.trim().is_empty());
+            let next = lines.get(i + 1).map(|n| n.trim()).unwrap_or("");
+            let next_is_text = !next.is_empty() && !next.starts_with('-');
+            assert!(same_line || next_is_text, "{sub}: `{t}` has no help");
+        }
+    }
+}

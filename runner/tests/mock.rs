@@ -264,7 +264,7 @@ fn shards_merge_into_the_unsharded_report() {
     assert_eq!(total, 60, "each case in exactly one shard");
     let merged = dir.join("merged");
     let mut cmd = bin();
-    cmd.arg("merge").arg(&merged).args(&parts);
+    cmd.arg("merge").arg("-o").arg(&merged).args(&parts);
     let m = Run::of(cmd.output().unwrap());
     assert_eq!(m.code, 100, "{}", m.stderr);
     assert_eq!(results(&merged), results(&full));

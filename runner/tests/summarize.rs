@@ -103,7 +103,7 @@ fn summarize_writes_what_summarize_py_wrote() {
     );
     let out = dir.join("out");
     let o = bin()
-        .args(["summarize", out.to_str().unwrap()])
+        .args(["summarize", "-o", out.to_str().unwrap()])
         .arg(dir.join("r-soft-gl46"))
         .arg(dir.join("r-egl-llvmpipe-es3"))
         .args(["--platform", "Mesa 22.3.6"])
@@ -135,7 +135,7 @@ fn summarize_writes_what_summarize_py_wrote() {
 
     // A run directory without results is bad input: 96.
     let o = bin()
-        .args(["summarize", out.to_str().unwrap()])
+        .args(["summarize", "-o", out.to_str().unwrap()])
         .arg(dir.join("missing"))
         .args(["--platform", "x"])
         .output()

@@ -16,7 +16,7 @@ pub struct BenchOptions {
     /// Seconds instead of minutes: fewer cases, shorter timings, only `egl:llvmpipe:core` unless
     /// backends are named, the suite rows over the 2D NEAREST fixtures only.
     pub quick: bool,
-    /// Keep GL backends whose name contains one of these (`llvmpipe`, `egl:zink:core`); empty = all.
+    /// The GL backends to measure, named as in `run --backend` (`egl:zink:core`); empty = all.
     pub backends: Vec<String>,
     /// The fixtures (directories or files; `--fixtures` repeated).
     pub fixtures: Vec<PathBuf>,
@@ -34,7 +34,7 @@ pub fn candidates(o: &BenchOptions) -> Vec<String> {
             if o.backends.is_empty() {
                 !o.quick || n == "egl:llvmpipe:core"
             } else {
-                o.backends.iter().any(|f| n.contains(f.as_str()))
+                o.backends.iter().any(|b| b == n)
             }
         })
         .collect()

@@ -17,7 +17,8 @@ pub struct Args {
     /// Print the report as JSON on stdout instead of the table.
     #[arg(long)]
     json: bool,
-    /// Only GL backends whose name contains this (repeatable): `llvmpipe`, `egl:zink:core`.
+    /// GL backend to measure (repeatable), named as in `run --backend`: `egl:llvmpipe:core`.
+    /// Default: every GL backend found (with --quick: egl:llvmpipe:core).
     #[arg(long = "backend", short = 'b', value_name = "B")]
     backends: Vec<String>,
     /// Fixture file or directory (repeatable). Default: cases/fixtures.
@@ -51,6 +52,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         );
         println!("{}", serde_json::to_string(&r)?);
         return Ok(ExitCode::SUCCESS);
+    }
+    for b in &a.backends {
+        b.parse::<BackendName>().with_context(|| {
+            format!("--backend {b}: bench measures GL backends, named as in `run --backend` (egl:llvmpipe:core, osmesa:softpipe:compat, ...)")
+        })?;
     }
     let exe = std::env::current_exe().context("locating the shadowcheck executable")?;
     let opts = BenchOptions {

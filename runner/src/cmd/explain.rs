@@ -43,6 +43,7 @@ pub struct Args {
     /// unless --mag is given.
     #[arg(long, default_value = "nearest")]
     filter: String,
+    /// Magnification filter (nearest, linear). Default: the class of --filter.
     #[arg(long)]
     mag: Option<String>,
     /// Wrap mode for s, t and r: edge, repeat, mirror, border, mirror_edge, clamp.

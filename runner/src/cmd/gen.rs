@@ -22,7 +22,7 @@ pub struct Args {
     #[arg(long, default_value_t = grids::DEFAULT_SEED)]
     seed: u64,
     /// Output folder. Default: cases/fixtures for `default`, target/fixtures/<grid> otherwise.
-    #[arg(short = 'o', long)]
+    #[arg(short = 'o', long, value_name = "DIR")]
     out: Option<PathBuf>,
     /// Compare the generated files with those in the output folder instead of writing them.
     #[arg(long)]

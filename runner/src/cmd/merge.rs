@@ -1,4 +1,4 @@
-//! `shadowcheck merge OUT IN...`: combines the results.jsonl of shards (or of separate runs) into
+//! `shadowcheck merge -o OUT IN...`: combines the results.jsonl of shards (or of separate runs) into
 //! one set of reports in OUT, the same as an unsharded run would write. Exit codes as `run`.
 //!
 //! Each input is read by the shared reader (`records::read_results`: within one file the last
@@ -17,6 +17,7 @@ use std::process::ExitCode;
 #[derive(clap::Args)]
 pub struct Args {
     /// Output directory for the merged reports.
+    #[arg(short = 'o', long, value_name = "DIR")]
     out: PathBuf,
     /// Output directories (or results.jsonl files) of the runs to merge.
     #[arg(required = true)]

@@ -4,7 +4,7 @@
 
 use anyhow::Context;
 use shadowcheck_runner::report::html::{
-    self, geometry::Geometry, load, matrix::DetailCaps, Options,
+    self, geometry::Geometry, load, matrix::DetailCaps, PageOptions,
 };
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -57,7 +57,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
     };
     let geo = Geometry::from_fixtures(&fixtures, &input.results);
-    let opts = Options {
+    let opts = PageOptions {
         title: a.title.clone(),
         details: DetailCaps {
             per_cell: a.max_details,

@@ -46,7 +46,7 @@ pub struct Args {
     #[arg(long, value_name = "FILE")]
     flakes: Option<PathBuf>,
     /// Output directory. Default: out/<backend names>.
-    #[arg(long, value_name = "DIR")]
+    #[arg(short = 'o', long, value_name = "DIR")]
     out: Option<PathBuf>,
     /// Finish an interrupted run in --out: tests already in results.jsonl are not run again.
     #[arg(long)]

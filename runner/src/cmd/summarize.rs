@@ -1,15 +1,15 @@
-//! `shadowcheck summarize OUTROOT RUN_DIR... --platform NAME`: condenses `shadowcheck run --out`
+//! `shadowcheck summarize -o DIR RUN_DIR... --platform NAME`: condenses `shadowcheck run --out`
 //! directories into a reference-results folder (what reports/mesa-22.3.6/run.sh commits).
 //!
 //! Each RUN_DIR holds one backend's run and is named `r-<backend with ':' as '-'>`; the part after
-//! `r-` names the folder OUTROOT/<backend>/, which gets:
+//! `r-` names the folder DIR/<backend>/, which gets:
 //! - `failures.csv`: copied as the run wrote it (the baseline);
 //! - `warnings.csv`: `test,Warn` for every test whose final status is Warn, sorted;
 //! - `summary.md`: status counts per API path, the most frequent skip reasons, and the non-pass
 //!   groups (spec/target/format/filter/func) with one example test each;
 //! - `report.md`: the run's report.md, cut at the last line break before [`REPORT_CAP`] characters.
 //!
-//! OUTROOT/SUMMARY.md gets one table over every backend x API path (rows where everything was
+//! DIR/SUMMARY.md gets one table over every backend x API path (rows where everything was
 //! skipped are left out). Only results.jsonl (read by the shared reader, `records::read_results`:
 //! the last record of a test wins), failures.csv and report.md of each run are read.
 
@@ -40,8 +40,8 @@ const SKIP_REASONS: usize = 12;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Folder to write: OUTROOT/<backend>/ per run directory, and OUTROOT/SUMMARY.md.
-    #[arg(value_name = "OUTROOT")]
+    /// Folder to write: DIR/<backend>/ per run directory, and DIR/SUMMARY.md.
+    #[arg(short = 'o', long = "out", value_name = "DIR")]
     outroot: PathBuf,
     /// `shadowcheck run --out` directories, one backend each, named r-<backend with ':' as '-'>.
     #[arg(required = true, value_name = "RUN_DIR")]
@@ -104,7 +104,7 @@ fn backend_of(run: &Path) -> String {
     }
 }
 
-/// Writes OUTROOT/<backend>/ for one run; returns the backend, its counts and its status columns.
+/// Writes DIR/<backend>/ for one run; returns the backend, its counts and its status columns.
 fn summarize(
     outroot: &Path,
     run: &Path,

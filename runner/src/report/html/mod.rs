@@ -33,16 +33,16 @@ pub const INDEX: &str = "index.html";
 
 /// What to show and how much.
 #[derive(Debug, Clone)]
-pub struct Options {
+pub struct PageOptions {
     pub title: String,
     pub details: DetailCaps,
     /// Tests drawn per acceptance plot (every warning / failure first, then an even sample).
     pub plot_points: usize,
 }
 
-impl Default for Options {
+impl Default for PageOptions {
     fn default() -> Self {
-        Options {
+        PageOptions {
             title: "shadowcheck report".into(),
             details: DetailCaps {
                 per_cell: 50,
@@ -144,7 +144,7 @@ fn plot_item(r: &TestResult, geo: &Geometry) -> Option<PlotItem> {
 }
 
 /// The pictures section: per compare func, the heatmaps of every backend, then their plots.
-fn render_pictures(input: &ReportInput, geo: &Geometry, opts: &Options, out: &mut String) {
+fn render_pictures(input: &ReportInput, geo: &Geometry, opts: &PageOptions, out: &mut String) {
     let funcs: BTreeSet<&str> = input.results.iter().map(|r| r.tags.func.as_str()).collect();
     let mut drew = 0;
     for func in funcs {
@@ -220,7 +220,7 @@ fn render_pictures(input: &ReportInput, geo: &Geometry, opts: &Options, out: &mu
 }
 
 /// The whole page.
-pub fn render(input: &ReportInput, geo: &Geometry, opts: &Options) -> String {
+pub fn render(input: &ReportInput, geo: &Geometry, opts: &PageOptions) -> String {
     let mut o = String::with_capacity(1 << 20);
     let _ = write!(
         o,
@@ -353,12 +353,12 @@ mod tests {
             results,
             ..ReportInput::default()
         };
-        let opts = Options {
+        let opts = PageOptions {
             details: DetailCaps {
                 per_cell: 2,
                 total: 100,
             },
-            ..Options::default()
+            ..PageOptions::default()
         };
         let html = render(&input, &Geometry::default(), &opts);
         assert!(html.contains("<table id=\"matrix\""));
