@@ -11,7 +11,7 @@ pub use super::command::{split_command, ProcessCommand};
 use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome, Options};
 use shadowcheck_model::{ApiPath, Case};
 use shadowcheck_protocol::{Hello, PathResult, PathSkip, Reply, Request};
-use std::collections::VecDeque;
+use std::collections::{HashSet, VecDeque};
 use std::io::{BufRead, BufReader, BufWriter, Write};
 use std::process::{Child, ChildStdin, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
@@ -38,6 +38,9 @@ fn write_loop(stdin: ChildStdin, queue: Receiver<Vec<u8>>) {
     }
     let _ = w.flush();
 }
+
+/// How often a wait for answers checks whether the run was interrupted.
+const POLL: Duration = Duration::from_millis(200);
 
 /// Time allowed for the hello, at least (a GL worker creates its context first; zink starts a
 /// Vulkan device).
@@ -167,6 +170,9 @@ impl Proc {
 enum Failure {
     /// Unparsable or out-of-order answer: the case it should have answered is Crash.
     Protocol(String),
+    /// A second answer for a case answered before (named): that case is to blame, not the one
+    /// whose answer was expected, which is sent again to a fresh process.
+    Extra(String),
     /// The process exited or closed stdout.
     Died,
     /// No answer before the deadline.
@@ -185,6 +191,14 @@ pub struct ExecBackend {
     diags: Arc<Mutex<Vec<String>>>,
     /// How many processes were started (the first one included).
     pub spawns: usize,
+    /// Give up after this many Timeouts in a row (0: never).
+    give_up: usize,
+    /// Cases that ended in Timeout since the last answer or crash.
+    timeouts_in_a_row: usize,
+    /// Ids the current process has answered (to recognize a second answer for one of them).
+    answered: HashSet<String>,
+    /// Answered cases found misbehaving later (see [`Backend::take_faults`]).
+    faults: Vec<(String, String)>,
 }
 
 impl ExecBackend {
@@ -204,6 +218,10 @@ impl ExecBackend {
             proc: None,
             diags: Arc::new(Mutex::new(vec![])),
             spawns: 0,
+            give_up: opts.give_up,
+            timeouts_in_a_row: 0,
+            answered: HashSet::new(),
+            faults: vec![],
         };
         let hello = b.ensure().map_err(|msg| BackendError::Setup {
             backend: name.to_string(),
@@ -277,6 +295,7 @@ impl ExecBackend {
     /// One attempt at a group in the current process: the answers received, and why it stopped
     /// early if it did.
     fn attempt(&mut self, group: &[&Case]) -> (Vec<CaseOutcome>, Option<Failure>) {
+        self.check_stray_lines();
         let Some(p) = self.proc.as_mut() else {
             return (vec![], Some(Failure::Died));
         };
@@ -291,18 +310,31 @@ impl ExecBackend {
         let _ = p.send(buf);
         let deadline = Instant::now() + self.timeout;
         let mut out = Vec::with_capacity(group.len());
-        for c in group {
+        for (i, c) in group.iter().enumerate() {
             let line = loop {
-                let wait = deadline.saturating_duration_since(Instant::now());
-                match p.lines.recv_timeout(wait) {
+                let left = deadline.saturating_duration_since(Instant::now());
+                // Waits in slices, so that an interrupted run stops waiting.
+                match p.lines.recv_timeout(left.min(POLL)) {
                     Ok(l) if l.trim().is_empty() => continue,
                     Ok(l) => break l,
+                    Err(RecvTimeoutError::Timeout) if crate::interrupt::requested() => {
+                        return (out, Some(Failure::Died))
+                    }
+                    Err(RecvTimeoutError::Timeout) if left > POLL => continue,
                     Err(RecvTimeoutError::Timeout) => return (out, Some(Failure::Stalled)),
                     Err(RecvTimeoutError::Disconnected) => return (out, Some(Failure::Died)),
                 }
             };
             match Reply::parse_answer(&line) {
                 Ok(a) if a.case_id() == Some(c.id.as_str()) => out.push(to_outcome(c, a)),
+                Ok(a)
+                    if a.case_id().is_some_and(|id| {
+                        group[..i].iter().any(|g| g.id == id) || self.answered.contains(id)
+                    }) =>
+                {
+                    let id = a.case_id().unwrap_or_default().to_string();
+                    return (out, Some(Failure::Extra(id)));
+                }
                 Ok(a) => {
                     let msg = format!(
                         "answer for `{}` where `{}` was expected",
@@ -322,10 +354,51 @@ impl ExecBackend {
                 }
             }
         }
+        self.answered.extend(group.iter().map(|c| c.id.clone()));
+        self.check_stray_lines();
         (out, None)
     }
 
+    /// Reads, without waiting, lines the process wrote after its last expected answer: a second
+    /// answer for a case it answered is a fault of that case; anything else is a diagnostic.
+    fn check_stray_lines(&mut self) {
+        let Some(p) = self.proc.as_mut() else { return };
+        let mut stray = vec![];
+        while let Ok(l) = p.lines.try_recv() {
+            if !l.trim().is_empty() {
+                stray.push(l);
+            }
+        }
+        for l in stray {
+            match Reply::parse_answer(&l)
+                .ok()
+                .and_then(|a| a.case_id().map(str::to_string))
+            {
+                Some(id) if self.answered.contains(&id) => self.fault(id),
+                _ => self.push_diag(format!(
+                    "{}: ignored a line nobody asked for: {}",
+                    self.name,
+                    clip(&l)
+                )),
+            }
+        }
+    }
+
+    /// Records a second answer for `id`, a case answered before.
+    fn fault(&mut self, id: String) {
+        self.push_diag(format!(
+            "{}: protocol error: a second answer for `{id}`",
+            self.name
+        ));
+        self.faults.push((
+            id,
+            "protocol error: the implementation answered this case twice (an extra answer line)"
+                .to_string(),
+        ));
+    }
+
     fn kill_proc(&mut self) -> String {
+        self.answered.clear();
         self.proc
             .take()
             .map(|p| p.kill())
@@ -337,6 +410,22 @@ impl ExecBackend {
         let mut results = Vec::with_capacity(cases.len());
         while results.len() < cases.len() {
             let rest = &cases[results.len()..];
+            if crate::interrupt::requested() {
+                // The runner drops this batch; `--resume` sends it again.
+                results.extend(
+                    rest.iter()
+                        .map(|_| CaseOutcome::Crash("interrupted".into())),
+                );
+                break;
+            }
+            if self.give_up > 0 && self.timeouts_in_a_row >= self.give_up {
+                let msg = format!(
+                    "not sent: the implementation gave no answer to {} cases in a row, so it was given up (--give-up-after {})",
+                    self.timeouts_in_a_row, self.give_up
+                );
+                results.extend(rest.iter().map(|_| CaseOutcome::Timeout(msg.clone())));
+                break;
+            }
             if let Err(msg) = self.ensure() {
                 // The implementation cannot even start again: nothing more can run.
                 let msg = format!("cannot restart the implementation: {msg}");
@@ -345,10 +434,21 @@ impl ExecBackend {
             }
             let (answers, failure) = self.attempt(rest);
             let streamed = !answers.is_empty();
+            if streamed {
+                self.timeouts_in_a_row = 0;
+            }
             results.extend(answers);
             let Some(failure) = failure else { break };
             let rest = &cases[results.len()..];
             match failure {
+                Failure::Extra(id) => {
+                    let how = self.kill_proc();
+                    self.push_diag(format!(
+                        "{}: answer for `{}` expected; restarting ({how})",
+                        self.name, rest[0].id
+                    ));
+                    self.fault(id);
+                }
                 Failure::Protocol(msg) => {
                     let how = self.kill_proc();
                     self.push_diag(format!(
@@ -362,8 +462,10 @@ impl ExecBackend {
                     let how = self.kill_proc();
                     if rest.len() == 1 {
                         let what = if stalled {
+                            self.timeouts_in_a_row += 1;
                             CaseOutcome::Timeout(format!("no answer within {:?}", self.timeout))
                         } else {
+                            self.timeouts_in_a_row = 0;
                             CaseOutcome::Crash(format!("the process died on this case: {how}"))
                         };
                         self.push_diag(format!(
@@ -419,6 +521,9 @@ fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
             } in results
             {
                 match ApiPath::from_key(&api) {
+                    Some(a) if v.iter().any(|(p, _)| *p == a) => {
+                        return CaseOutcome::Error(format!("two results for API path `{api}`"))
+                    }
                     Some(a) if case.api.contains(&a) => v.push((
                         a,
                         ApiOutcome::Rgba {
@@ -448,6 +553,14 @@ fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
                     }
                 }
             }
+            // Every path sent is answered or skipped: a path left out is the implementation's error
+            // (never a silent Skip).
+            if let Some(a) = case.api.iter().find(|a| !v.iter().any(|(p, _)| p == *a)) {
+                return CaseOutcome::Error(format!(
+                    "neither a result nor a skip for API path `{}`",
+                    a.key()
+                ));
+            }
             CaseOutcome::Observed(v)
         }
     }
@@ -471,6 +584,10 @@ impl Backend for ExecBackend {
             .lock()
             .map(|mut d| std::mem::take(&mut *d))
             .unwrap_or_default()
+    }
+    fn take_faults(&mut self) -> Vec<(String, String)> {
+        self.check_stray_lines();
+        std::mem::take(&mut self.faults)
     }
 }
 
@@ -515,11 +632,33 @@ mod tests {
             CaseOutcome::Error(_)
         ));
         // An answered path that is also listed keeps its result.
-        let both = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}],"skipped":[{"api":"ff","reason":"no"}]}"#;
+        let both = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}],"skipped":[{"api":"ff","reason":"no"},{"api":"glsl120","reason":"no"}]}"#;
         let CaseOutcome::Observed(v) = to_outcome(&case, Reply::parse_answer(both).unwrap()) else {
             panic!()
         };
-        assert_eq!(v.len(), 1);
+        assert_eq!(v.len(), 2);
         assert!(matches!(v[0].1, ApiOutcome::Rgba { .. }));
+    }
+
+    #[test]
+    fn two_results_for_one_path_and_paths_left_out_are_the_implementations_error() {
+        let case = compat_case();
+        let error = |line: &str| match to_outcome(&case, Reply::parse_answer(line).unwrap()) {
+            CaseOutcome::Error(m) => m,
+            other => panic!("{other:?}"),
+        };
+        let dup = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]},{"api":"glsl120","rgba":[0,0,0,1]},{"api":"ff","rgba":[1,1,1,1]}]}"#;
+        assert_eq!(error(dup), "two results for API path `ff`");
+        let empty = r#"{"type":"observation","case_id":"x","results":[]}"#;
+        assert_eq!(
+            error(empty),
+            "neither a result nor a skip for API path `ff`"
+        );
+        let partial =
+            r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}]}"#;
+        assert_eq!(
+            error(partial),
+            "neither a result nor a skip for API path `glsl120`"
+        );
     }
 }

@@ -110,9 +110,9 @@ impl Reporter for MarkdownReporter {
             summary,
         } = ev
         {
-            std::fs::write(
-                self.dir.join("report.md"),
-                render(results, load_errors, summary),
+            super::atomic::write(
+                &self.dir.join("report.md"),
+                render(results, load_errors, summary).as_bytes(),
             )?;
         }
         Ok(())
