@@ -8,6 +8,7 @@
 //! - `egl:*`, `osmesa:*`: GL drivers, each in a `shadowcheck gl-worker` child speaking the protocol;
 //! - `mock:<script>`: a scripted implementation for testing the runner itself.
 
+mod answer;
 pub mod command;
 pub mod exec;
 pub mod gl;

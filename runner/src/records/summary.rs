@@ -60,8 +60,8 @@ pub struct Summary {
     pub backends: Vec<String>,
     pub counts: Counts,
     pub load_errors: usize,
-    /// Backends on which no test ran (every test skipped, or none selected): the run exits 4
-    /// ([`exit::NOTHING`]) unless something weightier happened.
+    /// Backends that had tests and skipped every one: the run exits 4 ([`exit::NOTHING`]) unless
+    /// something weightier happened.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub idle_backends: Vec<String>,
     pub exit_code: u8,
@@ -75,12 +75,13 @@ impl Summary {
         for r in results {
             counts.add(r.status);
         }
+        // A backend that had tests and skipped every one of them (a skips list `.*`, an
+        // implementation that skips everything) tested nothing.
         let idle_backends: Vec<String> = backends
             .iter()
             .filter(|b| {
-                !results
-                    .iter()
-                    .any(|r| &r.backend == *b && r.outcome != Outcome::Skip)
+                let mut own = results.iter().filter(|r| &r.backend == *b).peekable();
+                own.peek().is_some() && own.all(|r| r.outcome == Outcome::Skip)
             })
             .cloned()
             .collect();

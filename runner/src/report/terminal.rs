@@ -180,11 +180,14 @@ impl TerminalReporter {
                         regressions.len() - MAX_DUMPS
                     )?;
                 }
-                for b in &summary.idle_backends {
-                    writeln!(
-                        out,
-                        "\nshadowcheck: backend `{b}` ran no test (every test was skipped)"
-                    )?;
+                if summary.counts.total() > 0 && !summary.idle_backends.is_empty() {
+                    writeln!(out)?;
+                    for b in &summary.idle_backends {
+                        writeln!(
+                            out,
+                            "shadowcheck: backend `{b}` ran no test (every test was skipped)"
+                        )?;
+                    }
                 }
                 // The totals and the exit code come last, from the command, once every report is
                 // written ([`final_line`]).
