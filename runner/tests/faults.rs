@@ -417,3 +417,51 @@ fn an_interrupted_run_writes_its_reports_says_how_to_resume_and_exits_130() {
     assert_eq!(resumed.code, 100, "{}{}", resumed.stdout, resumed.stderr);
     assert_eq!(results(&out).len(), 60);
 }
+
+#[test]
+fn ctrl_c_on_the_whole_process_group_keeps_no_crash_of_the_signalled_worker() {
+    // As from a terminal: SIGINT reaches the runner and its implementation process at once. The
+    // worker's death is the interruption, not a Crash of the case it was on.
+    use std::os::unix::process::CommandExt;
+    let (dir, fx) = setup("ctrlc", 400);
+    let out = dir.join("out");
+    let args = [
+        "run",
+        "-b",
+        "mock:slow=5",
+        "--group",
+        "16",
+        "--fixtures",
+        &fx,
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    let child = bin()
+        .args(args)
+        .process_group(0)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let pid = child.id() as i32;
+    // Wait for a few batches on disk, then Ctrl-C the group.
+    let t0 = std::time::Instant::now();
+    while std::fs::read_to_string(out.join("results.jsonl"))
+        .map(|s| s.lines().count())
+        .unwrap_or(0)
+        < 40
+    {
+        assert!(t0.elapsed().as_secs() < 60, "the run did not start");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    // SAFETY: kill(2) on the process group this test created; no memory is involved.
+    assert_eq!(unsafe { libc::kill(-pid, libc::SIGINT) }, 0);
+    let r = Run::of(child.wait_with_output().unwrap());
+    assert_eq!(r.code, 130, "{}{}", r.stdout, r.stderr);
+    let kept = results(&out);
+    assert!(!kept.is_empty() && kept.len() < 400, "{}", kept.len());
+    assert!(kept.iter().all(|r| r.1 == "Pass"), "{kept:?}");
+    let resumed = run(&[&args[1..], &["--resume"]].concat());
+    assert_eq!(resumed.code, 0, "{}{}", resumed.stdout, resumed.stderr);
+    assert_eq!(results(&out).len(), 400);
+}

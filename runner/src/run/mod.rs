@@ -4,7 +4,10 @@
 //! backend's capabilities turn the rest into Skip (with the reason) or a case to send; cases go to
 //! the backend in batches, each answer is judged ([`crate::verdict`]), given its final status by
 //! the lists ([`crate::baseline`]) and sent as a `CaseFinished` event (results.jsonl is written by a
-//! reporter, flushed per record). Regressions are then re-run once: a different outcome is a Flake.
+//! reporter, written per batch). Regressions are then re-run once: a different outcome is a Flake,
+//! unless a Crash or Timeout recurred during the re-run. Faults a backend finds later (a second
+//! answer for a case) make that case Crash, re-sent as a new record. Once the run is interrupted
+//! ([`crate::interrupt`]) no batch is sent, the batch in flight is dropped and no re-run is made.
 
 use crate::backend::{ApiOutcome, Backend, CaseOutcome, Support};
 use crate::baseline::Lists;
