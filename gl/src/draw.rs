@@ -280,21 +280,6 @@ impl Renderer {
         self.gl.clear(glow::COLOR_BUFFER_BIT);
     }
 
-    /// Why a case the capabilities admit still cannot run on this context: sampler state the
-    /// context lacks (before planning paths; targets and API paths were decided by the worker's
-    /// capabilities).
-    fn case_skip(&self, case: &Case) -> Option<String> {
-        if self.info.es && case.sampler.lod_bias != 0.0 {
-            return Some("OpenGL ES has no TEXTURE_LOD_BIAS".into());
-        }
-        if case.sampler.fail_value.is_some() && !self.info.has_ext("GL_ARB_shadow_ambient") {
-            return Some(
-                "GL_ARB_shadow_ambient not exposed (TEXTURE_COMPARE_FAIL_VALUE_ARB)".into(),
-            );
-        }
-        None
-    }
-
     /// Runs a batch and answers every case, in order.
     ///
     /// # Safety
@@ -311,10 +296,6 @@ impl Renderer {
         self.clear();
         let mut planned: Vec<(usize, Vec<Plan>)> = Vec::new();
         for (ci, case) in cases.iter().enumerate() {
-            if let Some(why) = self.case_skip(case) {
-                st.answers[ci] = Some(Answer::Skip(why));
-                continue;
-            }
             let mut plans = Vec::new();
             let mut skipped = Vec::new();
             for &path in &case.api {

@@ -9,7 +9,7 @@ use super::paths::GlInfo;
 use super::GlError;
 use shadowcheck_model::{Case, Format, Spec};
 use shadowcheck_protocol::{
-    Capabilities, Hello, PathSkip, Reply, Request, Support, PROTOCOL_VERSION,
+    Capabilities, Hello, PathSkip, Reply, Request, Support, FEATURES, PROTOCOL_VERSION,
 };
 use std::ffi::c_void;
 use std::io::{BufRead, Write};
@@ -194,6 +194,18 @@ impl Worker {
             api: Some(i.paths().iter().map(|p| p.key().to_string()).collect()),
             targets: Some(i.targets().iter().map(|t| t.key().to_string()).collect()),
             formats: Some(self.formats().iter().map(|f| f.key().to_string()).collect()),
+            features: Some(
+                FEATURES
+                    .iter()
+                    .filter(|f| match f.key {
+                        // ES 3.2 §8.10: no TEXTURE_LOD_BIAS texture parameter.
+                        "lod_bias" => !i.es,
+                        "fail_value" => i.has_ext("GL_ARB_shadow_ambient"),
+                        _ => false,
+                    })
+                    .map(|f| f.key.to_string())
+                    .collect(),
+            ),
             extensions: RELEVANT_EXTENSIONS
                 .iter()
                 .filter(|e| i.has_ext(e))

@@ -238,8 +238,9 @@ pub fn merge(mut v: Vec<Interval>) -> Vec<Interval> {
 
 /// The last steps from per-scenario intervals to the acceptance sets, one per profile in `PROFILES`
 /// order:
-/// - `colour_bits`: a filtered colour value may be returned at the format's precision (either
-///   neighbour, §2.3.5.2): ends widen to the neighbouring multiples of 1/(2^b − 1);
+/// - `colour_bits` (filtered colour lookups only): a filtered colour value may be returned at the
+///   format's precision (either neighbour, §2.3.5.2): ends between two multiples of 1/(2^b − 1) widen
+///   to them; an end on a multiple stays (a single texel is exactly c/(2^b − 1), (2.1));
 /// - the result reaches the observer as an f32: ends widen outward to the nearest f32;
 /// - sets stay inside `range` (r ∈ [fail, 1] for a comparison), and rounding noise of weighted sums
 ///   (an ulp) is absorbed so that the sets hold the spec value;
@@ -253,8 +254,20 @@ pub fn finalize(
     for set in sets.iter_mut() {
         for iv in set.iter_mut() {
             if let Some(bits) = colour_bits {
+                // An end already on a multiple of 1/(2^b − 1) (up to f64 noise) stays there: (2.1)
+                // f = c/(2^b − 1) is exact, only a value between two multiples may go to either.
                 let m = unorm_max(bits) as f64;
-                (iv.lo, iv.hi) = ((iv.lo * m).floor() / m, (iv.hi * m).ceil() / m);
+                let snap = |x: f64, up: bool| {
+                    let k = x * m;
+                    if (k - k.round()).abs() < 1e-6 {
+                        k.round() / m
+                    } else if up {
+                        k.ceil() / m
+                    } else {
+                        k.floor() / m
+                    }
+                };
+                (iv.lo, iv.hi) = (snap(iv.lo, false), snap(iv.hi, true));
             }
             (iv.lo, iv.hi) = (
                 f32_candidates(Exact::F(iv.lo))[0],

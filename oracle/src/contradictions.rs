@@ -77,8 +77,8 @@ pub const ALL: &[Contradiction] = &[
     Contradiction {
         id: "es2-greater-row",
         title: "EXT_shadow_samplers GREATER at D_ref == Dt",
-        defended: "r = 0.0: equality does not satisfy the 1.0 row \"D_ref > Dt\"; EXT_shadow_funcs, which the extension is based on, has \"0.0, if R <= Dt\".",
-        other: "The printed 0.0 row, \"0.0 if D_ref < Dt\", assigns nothing at equality: either value.",
+        defended: "The printed rows, \"1.0, if D_ref > Dt\" and \"0.0, if D_ref < Dt\", assign nothing at equality: the result is left open, either value is accepted and labelled implementation-defined.",
+        other: "r = 0.0 as in EXT_shadow_funcs, which the extension is based on (\"0.0, if R <= Dt\").",
         sources: "EXT_shadow_samplers Table 3.X; EXT_shadow_funcs",
     },
     Contradiction {

@@ -19,9 +19,11 @@ pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, N
         // "LESS r = { 1.0, if D_ref < Dt  { 0.0, if D_ref >= Dt"
         CompareFunc::Less => passes_if(ord, &[Less]),
         // "GREATER r = { 1.0, if D_ref > Dt  { 0.0, if D_ref < Dt"
-        // The printed 0.0 row leaves D_ref == Dt unstated (contradiction `es2-greater-row`). We read
-        // the 1.0 row: equality does not satisfy "D_ref > Dt", so r = 0.0, as in EXT_shadow_funcs
-        // ("0.0, if R <= Dt"), on which the extension is based.
+        // The printed rows assign nothing at D_ref == Dt (contradiction `es2-greater-row`): the text
+        // leaves the result open there, so either value is accepted and labelled
+        // implementation-defined. (EXT_shadow_funcs, on which the extension is based, has "0.0, if
+        // R <= Dt": the other reading.)
+        CompareFunc::Greater if ord == Some(Equal) => None,
         CompareFunc::Greater => passes_if(ord, &[Greater]),
         // "EQUAL r = { 1.0, if D_ref == Dt  { 0.0, if D_ref != Dt"
         CompareFunc::Equal => passes_if(ord, &[Equal]),
@@ -36,13 +38,13 @@ pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, N
     })
 }
 
-/// The other reading of the GREATER row: at D_ref == Dt the table assigns nothing, so either value.
-pub fn table_greater_row_literal(
+/// The other reading of the GREATER row: EXT_shadow_funcs' "0.0, if R <= Dt", so r = 0 at equality.
+pub fn table_greater_row_funcs(
     func: CompareFunc,
     ord: Option<Ordering>,
 ) -> Result<Option<bool>, NotInTable> {
     match (func, ord) {
-        (CompareFunc::Greater, Some(Equal)) => Ok(None),
+        (CompareFunc::Greater, Some(Equal)) => Ok(Some(false)),
         _ => table(func, ord),
     }
 }
@@ -100,15 +102,15 @@ pub fn rules() -> Rules {
         colour_note: None,
         readings: &[Reading {
             id: "es2-greater-row",
-            other: Some(greater_row_literal),
+            other: Some(greater_row_funcs),
         }],
     }
 }
 
-/// Contradiction `es2-greater-row`: the printed rows taken literally.
-fn greater_row_literal(r: Rules) -> Rules {
+/// Contradiction `es2-greater-row`: EXT_shadow_funcs' GREATER row (0.0 at equality).
+fn greater_row_funcs(r: Rules) -> Rules {
     Rules {
-        table: table_greater_row_literal,
+        table: table_greater_row_funcs,
         ..r
     }
 }

@@ -98,6 +98,25 @@ impl TexelEval {
     }
 }
 
+/// The wider fixed-point storages a `bits`-bit unorm texel of `format` may be held in.
+///
+/// GL 4.6 §8.5.1 and ES 3.2 §8.5.1 (the same sentence): "Requesting one of these sized internal
+/// formats for any texture type will allocate at least the internal component sizes, and exactly the
+/// component types shown for that format" (DEPTH_COMPONENT16/24, DEPTH24_STENCIL8 are ticked "Req.
+/// format"; ES 3.2 Table 8.11 gives "minimum component resolutions"). So a D16 may be stored with 24 or
+/// 32 bits, a D24 with 32, always fixed-point. The unsized format's precision is the implementation's,
+/// and DEPTH_COMPONENT32 is not a required format (GL 4.6 Table 8.13: "desired component resolutions",
+/// allocated "as closely as possible", §8.5): it may be held at 24 bits. Widths at which c/(2^b−1) is
+/// exact (16 → 32: 2^32−1 = 65535·65537) add nothing new but cost nothing either.
+pub fn wider_storage(format: Format, bits: u32) -> &'static [u32] {
+    match (format, bits) {
+        (Format::DepthUnsized | Format::D32, _) => &[24],
+        (Format::D16, _) => &[24, 32],
+        (Format::D24 | Format::D24S8, _) => &[32],
+        _ => &[],
+    }
+}
+
 /// Everything a texel evaluation needs that does not depend on the texel.
 pub struct TexelCtx<'a> {
     pub case: &'a Case,
@@ -168,16 +187,14 @@ impl TexelCtx<'_> {
                     m: unorm_max(bits),
                 };
                 let mut cands = vec![value];
-                if matches!(tex.format, Format::DepthUnsized | Format::D32) {
-                    // The unsized format's precision is the implementation's, and DEPTH_COMPONENT32 is not
-                    // a required format (Table 8.13: "desired component resolutions", no "Req. format"
-                    // mark): a 24-bit store holds either neighbour of c·(2^24−1)/(2^b−1) (§2.3.5.2).
-                    let m24 = unorm_max(24);
+                for &w in wider_storage(tex.format, bits) {
+                    // A wider store holds either neighbour of c·(2^w−1)/(2^b−1) (§2.3.5.2 (2.3)).
+                    let mw = unorm_max(w);
                     let mb = unorm_max(bits);
-                    let num = c * m24;
+                    let num = c * mw;
                     let (lo, hi) = (num / mb, num.div_ceil(mb));
-                    cands.push(Exact::Q { c: lo, m: m24 });
-                    cands.push(Exact::Q { c: hi, m: m24 });
+                    cands.push(Exact::Q { c: lo, m: mw });
+                    cands.push(Exact::Q { c: hi, m: mw });
                 }
                 Source {
                     value,
@@ -299,6 +316,12 @@ impl TexelCtx<'_> {
         }
     }
 
+    /// The values r may take when Dt is unknown: the comparison table over every ordering (ALWAYS
+    /// and NEVER stay exact).
+    pub fn open_outcome(&self) -> Poss {
+        self.two(self.table(None))
+    }
+
     fn two(&self, (p, f): (bool, bool)) -> Poss {
         match (p, f) {
             (true, true) => Poss {
@@ -339,7 +362,10 @@ impl TexelCtx<'_> {
                     s.1 |= o.1;
                 }
                 if src.undefined.is_some() {
-                    add_to(&mut strict, (true, true));
+                    // The texel's value is open, the comparison table is not: Tables 8.22/8.23 give
+                    // "ALWAYS | 1.0" and "NEVER | 0.0" whatever Dt is, so evaluate the table over every
+                    // ordering of Dref and the unknown Dt (as for a NaN operand).
+                    add_to(&mut strict, self.table(None));
                 }
                 for &d in &self.dref_cands {
                     for e in &exact_cands {
@@ -369,6 +395,9 @@ impl TexelCtx<'_> {
                         poss[i] = self.two(o);
                     }
                 }
+                // An ordered pair the table assigns no value to (EXT_shadow_samplers GREATER at
+                // D_ref = Dt): the result is open, labelled like an undefined texel.
+                let open_row = exact.is_none() && exact_ord.is_some() && src.undefined.is_none();
                 TexelEval {
                     key,
                     stored: src.stored,
@@ -376,7 +405,11 @@ impl TexelCtx<'_> {
                     exact: exact.map(|p| if p { self.pass_v } else { self.fail_v }),
                     pass: exact,
                     poss,
-                    undefined: src.undefined,
+                    undefined: if open_row {
+                        Some("the comparison table assigns no value at this ordering of Dref and Dt (EXT_shadow_samplers Table 3.X: GREATER \"1.0, if D_ref > Dt\", \"0.0, if D_ref < Dt\"): either value")
+                    } else {
+                        src.undefined
+                    },
                 }
             }
             Kind::Depth | Kind::Colour | Kind::Stencil => {

@@ -73,13 +73,22 @@ pub fn linear(mode: Wrap, u: f64, size: i64) -> (i64, i64, f64) {
     )
 }
 
-/// Array layer, §8.14.2: "l = clamp(RNE(r), 0, d_s − 1)" with footnote 4: "Implementations may
-/// instead round the texture layer using the nearly equivalent computation ⌊value + 1/2⌋."
-/// Returns (RNE, floor) choices; they differ only at odd halves (e.g. 2.5 → 2 or 3).
+/// Array layer under NEAREST, §8.14.2: "l = clamp(RNE(r), 0, d_s − 1)" with footnote 4:
+/// "Implementations may instead round the texture layer using the nearly equivalent computation
+/// ⌊value + 1/2⌋." Returns (RNE, floor) choices; they differ only at halves of even numbers (e.g.
+/// 2.5 → 2 or 3). Under LINEAR the layer is [`layer_linear`].
 pub fn layer(x: f64, n: i64) -> (i64, i64) {
     let rne = to_i(x.round_ties_even()).clamp(0, n - 1);
     let fl = to_i((x + 0.5).floor()).clamp(0, n - 1);
     (rne, fl)
+}
+
+/// Array layer under LINEAR, GL 4.6 §8.14.2: "For two-dimensional array textures, all texels are
+/// obtained from layer l, where l = clamp(⌊r + 1/2⌋, 0, d_s − 1)" (1D arrays: "both texels are
+/// obtained from layer l, where l = clamp(⌊t + 1/2⌋, 0, h_s − 1)"; ES 3.2: ⌊r + 0.5⌋). No RNE and no
+/// footnote here: footnote 4 belongs to the NEAREST formula.
+pub fn layer_linear(x: f64, n: i64) -> i64 {
+    to_i((x + 0.5).floor()).clamp(0, n - 1)
 }
 
 #[cfg(test)]

@@ -16,10 +16,38 @@ pub struct Capabilities {
     pub targets: Option<Vec<String>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub formats: Option<Vec<String>>,
+    /// Sampler features beyond the spec's tokens that a case may need ([`FEATURES`]); a case that
+    /// needs one not listed is Skip. `None`: every feature.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub features: Option<Vec<String>>,
     /// Extensions the implementation exposes (informational: reports show them).
     #[serde(default)]
     pub extensions: Vec<String>,
 }
+
+/// A piece of sampler state that not every implementation of a spec's API paths can set, with
+/// the key an implementation lists in `capabilities.features` and what it is.
+pub struct Feature {
+    pub key: &'static str,
+    pub what: &'static str,
+    /// Whether the case sets it (to a value other than its default).
+    pub used_by: fn(&Case) -> bool,
+}
+
+/// Every feature a case may need. OpenGL ES has no TEXTURE_LOD_BIAS (ES 3.2 §8.10 lists no such
+/// parameter); TEXTURE_COMPARE_FAIL_VALUE_ARB exists only with GL_ARB_shadow_ambient.
+pub const FEATURES: &[Feature] = &[
+    Feature {
+        key: "lod_bias",
+        what: "TEXTURE_LOD_BIAS",
+        used_by: |c| c.sampler.lod_bias != 0.0,
+    },
+    Feature {
+        key: "fail_value",
+        what: "TEXTURE_COMPARE_FAIL_VALUE_ARB (GL_ARB_shadow_ambient)",
+        used_by: |c| c.sampler.fail_value.is_some(),
+    },
+];
 
 fn listed(list: &Option<Vec<String>>, key: &str) -> bool {
     list.as_ref().is_none_or(|l| l.iter().any(|k| k == key))
@@ -63,6 +91,14 @@ impl Capabilities {
                 case.texture.format
             ));
         }
+        for f in FEATURES {
+            if (f.used_by)(case) && !listed(&self.features, f.key) {
+                return Support::Skip(format!(
+                    "{} (feature `{}`) not supported by this backend",
+                    f.what, f.key
+                ));
+            }
+        }
         let apis: Vec<ApiPath> = case
             .api
             .iter()
@@ -77,5 +113,41 @@ impl Capabilities {
         let others = (apis.len() < case.api.len())
             .then(|| "API path not supported by this backend".to_string());
         Support::Run { apis, others }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn case(json: &str) -> Case {
+        serde_json::from_str(json).unwrap_or_else(|e| panic!("{e}: {json}"))
+    }
+
+    const CASE: &str = r#"{"id":"x","spec":"arb_ambient","api":["ff"],"texture":{"target":"2d","format":"d16","levels":[{"width":1,"height":1,"layers":1,"depth":{"unorm":[7]}}]},"sampler":{"compare_mode":"compare","compare_func":"lequal","min_filter":"nearest","mag_filter":"nearest","wrap_s":"edge","wrap_t":"edge","wrap_r":"edge","border":[0,0,0,0]FAIL},"lookup":{"coord":[0.5,0.5,0,1],"dref":0.5}}"#;
+
+    #[test]
+    fn a_case_needing_an_unlisted_feature_is_skip_with_the_reason() {
+        let plain = case(&CASE.replace("FAIL", ""));
+        let ambient = case(&CASE.replace("FAIL", r#","fail_value":0.25"#));
+        let none = Capabilities {
+            features: Some(vec![]),
+            ..Capabilities::all()
+        };
+        assert!(matches!(none.support(&plain), Support::Run { .. }));
+        match none.support(&ambient) {
+            Support::Skip(why) => assert!(why.contains("fail_value"), "{why}"),
+            other => panic!("{other:?}"),
+        }
+        let listed = Capabilities {
+            features: Some(vec!["fail_value".into()]),
+            ..Capabilities::all()
+        };
+        assert!(matches!(listed.support(&ambient), Support::Run { .. }));
+        // Not declared at all: no restriction (soft, exec implementations that say nothing).
+        assert!(matches!(
+            Capabilities::all().support(&ambient),
+            Support::Run { .. }
+        ));
     }
 }

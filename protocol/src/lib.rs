@@ -8,7 +8,7 @@
 
 mod capabilities;
 
-pub use capabilities::{Capabilities, Support};
+pub use capabilities::{Capabilities, Feature, Support, FEATURES};
 
 use serde::{Deserialize, Serialize};
 use shadowcheck_model::{ApiPath, Case, Expectation, Lookup, Sampler, Spec, Texels, Texture};

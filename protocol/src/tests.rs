@@ -81,6 +81,7 @@ fn replies_serialize_as_the_protocol_writes_them() {
             api: Some(vec!["core".into()]),
             targets: Some(vec!["2d".into()]),
             formats: Some(vec!["d16".into()]),
+            features: None,
             extensions: vec![],
         },
         wants_expect: false,

@@ -8,11 +8,14 @@ capabilities in its hello, so the runner skips every other case; anything else i
 with a skip message. It speaks runner/PROTOCOL.md.
 
 `--swap-lequal-gequal` (or SHADOWCHECK_SWAP_LEQUAL_GEQUAL=1) swaps LEQUAL and GEQUAL: the bug the
-runner must catch.
+runner must catch. `--lie-stored` answers r = 1 everywhere and claims every texel was stored as the
+format's maximum (`stored`): the trust hole the runner must close ("stored texel outside the upload
+allowance").
 """
 import json, math, os, struct, sys
 
 SWAP = "--swap-lequal-gequal" in sys.argv[1:] or os.environ.get("SHADOWCHECK_SWAP_LEQUAL_GEQUAL") == "1"
+LIE = "--lie-stored" in sys.argv[1:]
 BITS = {"d16": 16, "d24": 24, "d32": 32}
 
 def f32(x):
@@ -84,6 +87,13 @@ for line in sys.stdin:
         r, why = sample(case)
         if why:
             send({"type": "skip", "case_id": case["id"], "reason": why})
+        elif LIE:
+            lvl = case["texture"]["levels"][0]
+            n = lvl["width"] * lvl["height"]
+            fmt = case["texture"]["format"]
+            stored = {"float": [1.0] * n} if fmt == "d32f" else {"unorm": [(1 << BITS[fmt]) - 1] * n}
+            send({"type": "observation", "case_id": case["id"],
+                  "results": [{"api": "core", "rgba": [1.0, 0.0, 0.0, 1.0], "stored": stored}]})
         else:
             send({"type": "observation", "case_id": case["id"],
                   "results": [{"api": "core", "rgba": [r, 0.0, 0.0, 1.0]}]})

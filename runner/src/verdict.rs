@@ -1,7 +1,8 @@
 //! Verdicts: from what a backend observed to an [`Outcome`].
 //!
 //! An observation is judged against the case's expectation (the oracle's, stored in the fixture),
-//! re-evaluated by the oracle when the backend read back the stored texels: Pass inside the
+//! re-evaluated by the oracle when the backend read back the stored texels (only within the upload
+//! allowance, [`outside_upload_allowance`]; outside it a Fail of its own): Pass inside the
 //! `strict` acceptance set, Warn inside `lenient` only, Fail outside `lenient`. The baseline then
 //! turns the outcome into a [`Status`](crate::records::Status) ([`crate::baseline`]); both types,
 //! and the [`ExpectedSummary`] kept in the record, are in [`crate::records`].
@@ -86,8 +87,55 @@ fn summary(e: &Expectation, layout: &[Channel; 4], profile: Profile) -> Expected
     }
 }
 
+/// The first stored texel outside the upload allowance, as "texel i: fixture X, stored Y".
+///
+/// An implementation may store a texel only as the upload defines it: a unorm value as the fixture's
+/// integer or either neighbouring integer (§2.3.5.2 (2.3): "one of the two unsigned binary integer
+/// values ... closest"), a float depth as the fixture's value clamped to [0,1] (§8.5: "For depth
+/// component groups, the depth value is clamped to [0, 1]"; a subnormal may be flushed to 0). Anything
+/// else (another value, another type, another count) is not a storage choice but an upload bug, or a
+/// backend that lies about `stored` to turn its Fails into Passes.
+pub fn outside_upload_allowance(fixture: &Texels, stored: &Texels) -> Option<String> {
+    match (fixture, stored) {
+        (Texels::Unorm(f), Texels::Unorm(s)) => {
+            if f.len() != s.len() {
+                return Some(format!(
+                    "{} texels in the fixture, {} stored",
+                    f.len(),
+                    s.len()
+                ));
+            }
+            f.iter()
+                .zip(s)
+                .enumerate()
+                .find(|(_, (a, b))| a.abs_diff(**b) > 1)
+                .map(|(i, (a, b))| format!("texel {i}: fixture {a}, stored {b}"))
+        }
+        (Texels::Float(f), Texels::Float(s)) => {
+            if f.len() != s.len() {
+                return Some(format!(
+                    "{} texels in the fixture, {} stored",
+                    f.len(),
+                    s.len()
+                ));
+            }
+            let ok = |a: f32, b: f32| {
+                let c = a.clamp(0.0, 1.0);
+                b == c || (b == 0.0 && c.abs() < f32::MIN_POSITIVE)
+            };
+            f.iter()
+                .zip(s)
+                .enumerate()
+                .find(|(_, (a, b))| !ok(**a, **b))
+                .map(|(i, (a, b))| format!("texel {i}: fixture {a}, stored {b}"))
+        }
+        _ => Some("the stored texels are of another type than the fixture's".to_string()),
+    }
+}
+
 /// Judges `rgba` observed through `api` for `case`. `stored`: the level-0 texels the backend read
-/// back; the oracle then re-evaluates the case with those texels (PROTOCOL.md §2).
+/// back; within the upload allowance ([`outside_upload_allowance`]) the oracle re-evaluates the case
+/// with those texels (PROTOCOL.md §2), outside it the observation is a Fail of its own.
 pub fn judge(
     case: &Case,
     api: shadowcheck_model::ApiPath,
@@ -95,6 +143,22 @@ pub fn judge(
     stored: Option<&Texels>,
 ) -> Judged {
     // The case the verdict is about: with the texels the implementation really stored, if known.
+    let fixture_texels = case.texture.levels.first().map(|l| &l.depth);
+    if let (Some(f), Some(s)) = (fixture_texels, stored) {
+        if let Some(what) = outside_upload_allowance(f, s) {
+            let expected = case.expect.as_ref().and_then(|e| {
+                e.layout
+                    .get(&api)
+                    .map(|l| summary(e, l, Profile::loosest()))
+            });
+            return Judged {
+                outcome: Outcome::Fail,
+                reason: Some(format!("stored texel outside the upload allowance: {what}")),
+                expected,
+                footprint: None,
+            };
+        }
+    }
     let restored;
     let (subject, mut evaluation) = match stored {
         Some(t) if case.texture.levels.first().map(|l| &l.depth) != Some(t) => {
@@ -266,13 +330,42 @@ mod tests {
     }
 
     #[test]
-    fn stored_texels_read_back_are_re_evaluated_by_the_oracle() {
-        // The implementation says it stored 65535 in texel 0: then LEQUAL 0.5 <= 1 passes, r = 1.
+    fn stored_texels_outside_the_upload_allowance_are_a_fail_of_their_own() {
+        // The implementation claims it stored 65535 in texel 0 (the fixture holds 0): no storage
+        // choice gives that, so r = 1 is not re-judged as a Pass.
         let c = case(true);
         let stored = Texels::Unorm(vec![65535, 65535]);
+        let j = judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], Some(&stored));
+        assert_eq!(j.outcome, Outcome::Fail);
+        let why = j.reason.unwrap_or_default();
+        assert!(
+            why.contains("stored texel outside the upload allowance")
+                && why.contains("fixture 0, stored 65535"),
+            "{why}"
+        );
+        // Float depth: the [0,1] clamp is the only change allowed.
+        let f = Texels::Float(vec![1.5, 0.25]);
+        assert_eq!(
+            outside_upload_allowance(&f, &Texels::Float(vec![1.0, 0.25])),
+            None
+        );
+        assert!(outside_upload_allowance(&f, &Texels::Float(vec![1.5, 0.25])).is_some());
+        assert!(outside_upload_allowance(&f, &Texels::Unorm(vec![1, 0])).is_some());
+    }
+
+    #[test]
+    fn stored_texels_read_back_are_re_evaluated_by_the_oracle() {
+        // Stored one integer off (texel 0 = 1, inside the upload allowance): re-evaluated, Dt = 1/65535
+        // and LEQUAL 0.5 still fails: r = 0 passes, r = 1 fails.
+        let c = case(true);
+        let stored = Texels::Unorm(vec![1, 65535]);
+        assert_eq!(
+            judge(&c, ApiPath::GlslCore, [0.0, 0.0, 0.0, 1.0], Some(&stored)).outcome,
+            Outcome::Pass
+        );
         assert_eq!(
             judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], Some(&stored)).outcome,
-            Outcome::Pass
+            Outcome::Fail
         );
         assert_eq!(
             judge(&c, ApiPath::GlslCore, [1.0, 0.0, 0.0, 1.0], None).outcome,

@@ -220,3 +220,32 @@ fn the_example_passes_every_default_fixture_it_claims() {
         "{failed:?}"
     );
 }
+
+#[test]
+fn an_implementation_lying_about_stored_texels_fails() {
+    // `--lie-stored` answers r = 1 and claims every texel holds 65535: re-judged with those texels
+    // the LEQUAL/GEQUAL cases would pass; outside the upload allowance they are Fails of their own.
+    let dir = tmpdir("exec-lie-stored");
+    let fx = fixture(&dir);
+    let liar = format!("exec:python3 {} --lie-stored", example());
+    let out = dir.join("liar");
+    let r = run(&[
+        "-b",
+        &liar,
+        "--fixtures",
+        &fx,
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
+    let rows = results(&out);
+    let fails = rows.iter().filter(|r| r.1 == "Fail").count();
+    assert_eq!(fails, 16, "{rows:?}");
+    let report = std::fs::read_to_string(out.join("report.json")).unwrap();
+    assert!(
+        report.contains(
+            "stored texel outside the upload allowance: texel 0: fixture 0, stored 65535"
+        ),
+        "reason with both values missing"
+    );
+}

@@ -97,6 +97,9 @@ faults! {
     RefNotDividedByQ = "ref-not-divided-by-q",
     /// Array layer truncated (floor) instead of rounded.
     LayerTruncated = "layer-truncated",
+    /// Array layer rounded to nearest even (the NEAREST formula of §8.14.2) also under LINEAR, where
+    /// the text gives ⌊r + 1/2⌋ (layer 0.5 → 0 instead of 1).
+    LayerRneUnderLinear = "layer-rne-under-linear",
     /// Cube map -Y face: t_c taken as +r_z instead of -r_z.
     CubeNegYFlipped = "cube-neg-y-flipped",
     /// The texel offset of `textureOffset` & co. dropped.
@@ -130,6 +133,8 @@ faults! {
     UnormDividedByPowerOfTwo = "unorm-divided-by-power-of-two",
     /// Floating-point depth not clamped to [0, 1] at upload (§8.5).
     UploadNotClamped = "upload-not-clamped",
+    /// Colour (R8) conversion c/256 instead of c/255 (eq. (2.1)); depth formats converted correctly.
+    ColourDividedBy256 = "colour-divided-by-256",
 }
 
 impl fmt::Display for Fault {

@@ -53,6 +53,9 @@ struct Address {
 fn round_layer(x: f32, st: &SamplerState) -> i64 {
     if st.faults.has(Fault::LayerTruncated) {
         wrap::floor_i64(x)
+    } else if st.faults.has(Fault::LayerRneUnderLinear) {
+        // RNE everywhere: correct under NEAREST (the spec's formula), wrong under LINEAR.
+        x.round_ties_even() as i64
     } else {
         wrap::floor_i64(x + 0.5)
     }

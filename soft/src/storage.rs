@@ -91,7 +91,9 @@ impl PreparedTexture {
             match (&lvl.depth, bits) {
                 (Texels::Unorm(v), Some(b)) => {
                     let max = ((1u64 << b) - 1) as f64;
-                    let div = if faults.has(Fault::UnormDividedByPowerOfTwo) {
+                    let div = if faults.has(Fault::UnormDividedByPowerOfTwo)
+                        || (faults.has(Fault::ColourDividedBy256) && tex.format == Format::R8)
+                    {
                         max + 1.0
                     } else {
                         max

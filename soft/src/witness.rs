@@ -295,6 +295,23 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
             c.lookup.offset = [1, 0, 0];
             c
         }
+        Fault::LayerRneUnderLinear => {
+            // LINEAR, layer coordinate 0.5: ⌊0.5 + 1/2⌋ = layer 1 (passes); RNE gives layer 0.
+            let mut c = gl(vec![0, 0, 65535, 65535, 0, 0], 2, C::Lequal);
+            c.texture.target = Target::T2dArray;
+            c.texture.levels[0].layers = 3;
+            c.sampler.min_filter = Filter::Linear;
+            c.sampler.mag_filter = Filter::Linear;
+            c.lookup.coord[2] = 0.5;
+            c
+        }
+        Fault::ColourDividedBy256 => {
+            // R8 102: exactly 102/255 (eq. (2.1)); the fault reads 102/256.
+            let mut c = gl(vec![102], 1, C::Lequal);
+            c.texture.format = Format::R8;
+            c.sampler.compare_mode = CompareMode::None;
+            c
+        }
         Fault::UnormDividedByPowerOfTwo => {
             let mut c = gl(vec![65535], 1, C::Lequal);
             c.lookup.dref = 1.0;

@@ -471,35 +471,78 @@ pub fn layer(d: &SpecDims) -> Vec<Draft> {
     let fmt = fixed_fmt(d);
     let func = main_func(d);
     const VALS: [f64; 3] = [0.2, 0.8, 0.4];
+    // NEAREST: RNE(r) or ⌊r + 1/2⌋ (footnote 4); LINEAR: ⌊r + 1/2⌋ only, so its ties are covered too.
+    let runs: [(Filter, &[f64]); 2] = [
+        (
+            Filter::Nearest,
+            &[-1.0, -0.5, -0.49, 0.49, 0.5, 1.4999, 1.5, 2.5, 3.7],
+        ),
+        (Filter::Linear, &[-0.5, 0.49, 0.5, 1.5, 2.5]),
+    ];
     for &target in d.targets.iter().filter(|t| t.is_array()) {
-        let c = cell(d, target, fmt, Filter::Nearest, func);
-        let (w, h, layers) = build::dims(target, 2, 3);
-        let per = (w * h) as usize * if target.is_cube() { 6 } else { 1 };
-        let vals: Vec<f64> = (0..layers as usize * (w * h) as usize)
-            .map(|i| VALS[i / per])
-            .collect();
-        let tex = texture(&c, vec![build::level(fmt, w, h, layers, &vals)]);
-        for l in [-1.0, -0.5, -0.49, 0.49, 0.5, 1.4999, 1.5, 2.5, 3.7] {
-            for r in [0.3, 0.6] {
-                let lk = lookup(
-                    target,
-                    At {
-                        s: 0.25,
-                        t: 0.25,
-                        layer: l,
-                        face: 0,
-                    },
-                    w,
-                    h,
-                    r,
-                );
-                out.push(Draft::new(
-                    "layer",
+        for (filter, ls) in runs {
+            let c = cell(d, target, fmt, filter, func);
+            let (w, h, layers) = build::dims(target, 2, 3);
+            let per = (w * h) as usize * if target.is_cube() { 6 } else { 1 };
+            let vals: Vec<f64> = (0..layers as usize * (w * h) as usize)
+                .map(|i| VALS[i / per])
+                .collect();
+            let tex = texture(&c, vec![build::level(fmt, w, h, layers, &vals)]);
+            for &l in ls {
+                for r in [0.3, 0.6] {
+                    let lk = lookup(
+                        target,
+                        At {
+                            s: 0.25,
+                            t: 0.25,
+                            layer: l,
+                            face: 0,
+                        },
+                        w,
+                        h,
+                        r,
+                    );
+                    out.push(Draft::new(
+                        "layer",
+                        c,
+                        tex.clone(),
+                        lk,
+                        format!("layer={l}/ref={r}/layers={}", nums(&VALS)),
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Mixed filter classes (GL 4.6 §8.23.1, ES 3.2 §8.20.1: with MAG_FILTER not NEAREST or MIN_FILTER
+/// not NEAREST / NEAREST_MIPMAP_NEAREST, "r may be computed by comparing more than one depth texture
+/// value", whichever filter the lookup ends up using): min NEAREST + mag LINEAR and min LINEAR + mag
+/// NEAREST, each magnified (λ = -1) and minified (λ = 1), on the 2x2 PCF pattern.
+pub fn mixfilter(d: &SpecDims) -> Vec<Draft> {
+    let mut out = Vec::new();
+    let fmt = fixed_fmt(d);
+    let func = main_func(d);
+    for (min, mag) in [
+        (Filter::Nearest, Filter::Linear),
+        (Filter::Linear, Filter::Nearest),
+    ] {
+        let c = cell(d, Target::T2d, fmt, min, func);
+        let (tex, w, h, _) = pattern_texture(&c);
+        for lod in [-1.0, 1.0] {
+            for r in [0.3, 0.5, 0.7] {
+                let mut lk = lookup(Target::T2d, At::st(0.375, 0.375), w, h, r);
+                lk.lod = lod;
+                let mut dr = Draft::new(
+                    "mixfilter",
                     c,
                     tex.clone(),
                     lk,
-                    format!("layer={l}/ref={r}/layers={}", nums(&VALS)),
-                ));
+                    format!("mag={}/lod={lod}/ref={r}/dt={}", mag.key(), nums(&PATTERN)),
+                );
+                dr.sampler.mag_filter = mag;
+                out.push(dr);
             }
         }
     }

@@ -87,6 +87,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             .extend(families::mip(d))
             .extend(families::cube(d))
             .extend(families::layer(d))
+            .extend(families::mixfilter(d))
             .extend(families::incomplete(d))
             .extend(families::proj(d))
             .extend(offset::offset(d));

@@ -11,28 +11,34 @@ use shadowcheck_model::{Case, Target};
 
 /// The geometries of the lookup, the spec's own first; a choice left to the implementation (a tied
 /// major axis or layer) is recorded in `choices` (a label only where it changes the result).
+/// `linear`: the lookup filters LINEAR within a level (the spec's pick), so the layer is §8.14.2's
+/// LINEAR formula ⌊r + 1/2⌋ alone; under NEAREST it is RNE(r) or, by footnote 4, ⌊r + 1/2⌋.
 pub(super) fn geometries(
     e: &mut Eval,
     case: &Case,
     co: &Coords,
+    linear: bool,
     choices: &mut Vec<&'static str>,
 ) -> Vec<Geo> {
-    let geos = faces_and_layers(e, case, co);
+    let geos = faces_and_layers(e, case, co, linear);
     if geos.len() > 1 {
         choices.push("the major axis or the layer is tied: the implementation's rounding/tie rule decides (GL 4.6 §8.13, §8.14.2 footnote 4)");
     }
-    layer_and_offset_steps(e, case, &geos);
+    layer_and_offset_steps(e, case, &geos, linear);
     geos
 }
 
 /// One geometry per cube face and layer the implementation may choose.
-fn faces_and_layers(e: &mut Eval, case: &Case, co: &Coords) -> Vec<Geo> {
+fn faces_and_layers(e: &mut Eval, case: &Case, co: &Coords, linear: bool) -> Vec<Geo> {
     let tex = &case.texture;
     let c = co.c;
     let q = co.q;
     let mut geos: Vec<Geo> = Vec::new();
     let (s0, t0) = (c[0] / q, c[1] / q);
     let layers_of = |n: i64, x: f64| {
+        if linear {
+            return vec![wrap::layer_linear(x, n)];
+        }
         let (a, b) = wrap::layer(x, n);
         if a == b {
             vec![a]
@@ -91,7 +97,7 @@ fn faces_and_layers(e: &mut Eval, case: &Case, co: &Coords) -> Vec<Geo> {
 }
 
 /// The steps for the spec's layer and the texel offset.
-fn layer_and_offset_steps(e: &mut Eval, case: &Case, geos: &[Geo]) {
+fn layer_and_offset_steps(e: &mut Eval, case: &Case, geos: &[Geo], linear: bool) {
     let tex = &case.texture;
     if tex.target.is_array() {
         if let Some(g) = geos.first() {
@@ -100,10 +106,17 @@ fn layer_and_offset_steps(e: &mut Eval, case: &Case, geos: &[Geo]) {
             } else {
                 g.layer
             };
-            e.step(
-                format!("layer = clamp(RNE(layer coordinate), 0, d − 1) = {l}"),
-                "GL 4.6 §8.14.2 (l = clamp(RNE(r), 0, d_s − 1))",
-            );
+            if linear {
+                e.step(
+                    format!("layer = clamp(⌊layer coordinate + 1/2⌋, 0, d − 1) = {l} (LINEAR)"),
+                    "GL 4.6 §8.14.2 LINEAR (l = clamp(⌊r + 1/2⌋, 0, d_s − 1))",
+                );
+            } else {
+                e.step(
+                    format!("layer = clamp(RNE(layer coordinate), 0, d − 1) = {l}"),
+                    "GL 4.6 §8.14.2 (l = clamp(RNE(r), 0, d_s − 1))",
+                );
+            }
         }
     }
     let o = case.lookup.offset;

@@ -92,6 +92,46 @@ fn describe_pick(p: Pick, l: f64) -> String {
     }
 }
 
+/// GL 4.6 §8.23.1 (ES 3.2 §8.20.1, ARB_shadow, EXT_shadow_samplers): "If the value of
+/// TEXTURE_MAG_FILTER is not NEAREST, or the value of TEXTURE_MIN_FILTER is not NEAREST or
+/// NEAREST_MIPMAP_NEAREST, then r may be computed by comparing more than one depth texture value to the
+/// texture reference value." The condition is on the filter *state*, not on the filter the lookup
+/// ends up using (min NEAREST + mag LINEAR while minified may still return a PCF value).
+pub(crate) fn multi_texel_state(s: &shadowcheck_model::Sampler) -> bool {
+    use shadowcheck_model::Filter;
+    s.mag_filter != Filter::Nearest
+        || !matches!(s.min_filter, Filter::Nearest | Filter::NearestMipmapNearest)
+}
+
+/// The same levels filtered LINEAR within each level, for a NEAREST pick (`None` if already LINEAR).
+fn as_linear(p: Pick) -> Option<Pick> {
+    match p {
+        Pick::One {
+            level,
+            linear: false,
+        } => Some(Pick::One {
+            level,
+            linear: true,
+        }),
+        Pick::Two {
+            d1,
+            d2,
+            linear: false,
+            f,
+            f_lo,
+            f_hi,
+        } => Some(Pick::Two {
+            d1,
+            d2,
+            linear: true,
+            f,
+            f_lo,
+            f_hi,
+        }),
+        _ => None,
+    }
+}
+
 /// The intervals each profile accepts (in `PROFILES` order), before `accept::finalize`. Texels are
 /// evaluated once and cached in `texels`. A level-selection boundary under the strictest profile is
 /// recorded in `choices`.
@@ -114,6 +154,7 @@ pub(super) fn profile_intervals(
         _ => (1.0, 1.0),
     };
     let mut many_picks = false;
+    let mut multi_texel = false;
     let mut sets = Vec::with_capacity(PROFILES.len());
     for (pi, prof) in PROFILES.iter().enumerate() {
         let mut out = Vec::new();
@@ -127,6 +168,13 @@ pub(super) fn profile_intervals(
         );
         if pi == 0 && picks.len() > 1 {
             many_picks = true;
+        }
+        if fraction && multi_texel_state(s) {
+            let nearest: Vec<Pick> = picks.iter().filter_map(|p| as_linear(*p)).collect();
+            if !nearest.is_empty() {
+                multi_texel = true;
+                picks.extend(nearest);
+            }
         }
         let shifts: &[f64] = if prof.coord_tol > 0.0 {
             &[-1.0, 0.0, 1.0]
@@ -149,6 +197,9 @@ pub(super) fn profile_intervals(
             }
         }
         sets.push(out);
+    }
+    if multi_texel {
+        choices.push("the filter state is not all NEAREST, so \"r may be computed by comparing more than one depth texture value\" even where this lookup filters NEAREST: the LINEAR footprint's results are accepted too (GL 4.6 §8.23.1, ES 3.2 §8.20.1)");
     }
     if many_picks {
         choices.push("the level of detail sits on a level-selection boundary: nearest(λ) preferred/alternative or the bias clamp lets either level be used (GL 4.6 §8.14.3)");

@@ -73,7 +73,11 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     let tcx = inputs::texel_ctx(&mut e, &rules, case, kind, &coords);
     // Choices the spec leaves to the implementation; labelled only where they change the result.
     let mut choices: Vec<&'static str> = Vec::new();
-    let geos = geometry::geometries(&mut e, case, &coords, &mut choices);
+    let lod = levels::lod(&mut e, &rules, case);
+    let linear = match lod.spec_pick {
+        lod::Pick::One { linear, .. } | lod::Pick::Two { linear, .. } => linear,
+    };
+    let geos = geometry::geometries(&mut e, case, &coords, linear, &mut choices);
     let finite = geos.iter().all(|g| g.s.is_finite() && g.t.is_finite());
     let Some(&spec_geo) = geos.first().filter(|_| finite) else {
         return Ok(undefined(
@@ -83,7 +87,6 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
             "the texture coordinates are not finite or the cube direction is zero: the texel selection is undefined",
         ));
     };
-    let lod = levels::lod(&mut e, &rules, case);
     let mut texels = Vec::new();
     let spec_scen = build(&rules, case, &tcx, &mut texels, spec_geo, lod.spec_pick);
     let sets = levels::profile_intervals(&rules, &tcx, &geos, &lod, &mut texels, &mut choices);
@@ -93,7 +96,9 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
         accept::spec_value(&spec_scen, &texels)
     };
     let fp = footprint::footprint(&mut e, &rules, &tcx, &spec_scen, &texels);
-    let colour_bits = if kind == Kind::Colour {
+    // Only a filtered colour value may come back at the format's precision; one texel is exactly
+    // c/(2^b − 1) (eq. (2.1)).
+    let colour_bits = if kind == Kind::Colour && spec_scen.filtered() {
         case.texture.format.unorm_bits()
     } else {
         None
@@ -160,7 +165,11 @@ fn incomplete_texture(mut e: Eval, rules: &Rules, why: &str, layouts: Layouts) -
 fn undefined(mut e: Eval, tcx: &TexelCtx, layouts: Layouts, why: &str) -> Evaluation {
     e.note(why);
     let iv = match tcx.kind {
-        Kind::Compare => Interval::new(tcx.pass_v.min(tcx.fail_v), tcx.pass_v.max(tcx.fail_v)),
+        // ALWAYS / NEVER: 1.0 / 0.0 whatever the texel (Tables 8.22/8.23).
+        Kind::Compare => {
+            let p = tcx.open_outcome();
+            Interval::new(p.lo, p.hi)
+        }
         Kind::Stencil => Interval::new(0.0, 255.0),
         _ => Interval::new(0.0, 1.0),
     };

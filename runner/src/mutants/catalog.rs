@@ -82,6 +82,10 @@ pub fn about(f: Fault) -> &'static str {
         F::MirroredRepeatOffByOne => "MIRRORED_REPEAT off by one texel",
         F::UnormDividedByPowerOfTwo => "unorm conversion c/2^b instead of c/(2^b-1)",
         F::UploadNotClamped => "floating-point depth upload not clamped to [0,1]",
+        F::LayerRneUnderLinear => {
+            "array layer rounded to nearest even under LINEAR (GL 4.6 §8.14.2 LINEAR: ⌊r + 1/2⌋)"
+        }
+        F::ColourDividedBy256 => "colour (R8) conversion c/256 instead of c/255 (eq. (2.1))",
         #[allow(unreachable_patterns)]
         _ => "",
     }

@@ -189,10 +189,9 @@ pub struct ExpectedSummary {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn result(test: &str, status: Status) -> TestResult {
+impl TestResult {
+    /// A Pass-outcome record of `test` on backend `b` (gl46 2D D16 LEQUAL NEAREST), for unit tests.
+    pub(crate) fn sample(test: &str, status: Status) -> TestResult {
         TestResult {
             backend: "b".into(),
             test: test.into(),
@@ -215,6 +214,15 @@ mod tests {
             rerun: None,
             fixtures: None,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn result(test: &str, status: Status) -> TestResult {
+        TestResult::sample(test, status)
     }
 
     #[test]

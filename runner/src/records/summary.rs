@@ -110,32 +110,9 @@ impl Summary {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::records::Tags;
-    use shadowcheck_model::ApiPath;
 
     fn result(test: &str, status: Status) -> TestResult {
-        TestResult {
-            backend: "b".into(),
-            test: test.into(),
-            case_id: test.into(),
-            api: ApiPath::GlslCore,
-            status,
-            outcome: Outcome::Pass,
-            reason: None,
-            duration: 0.0,
-            tags: Tags {
-                spec: "gl46".into(),
-                target: "2d".into(),
-                format: "d16".into(),
-                func: "lequal".into(),
-                filter: "nearest/nearest".into(),
-            },
-            observed: None,
-            expected: None,
-            footprint: None,
-            rerun: None,
-            fixtures: None,
-        }
+        TestResult::sample(test, status)
     }
 
     #[test]
