@@ -28,6 +28,9 @@ impl Store for File {
     }
 }
 
+/// Pending bytes (whole lines) written out before the batch ends.
+const PENDING_MAX: usize = 1 << 20;
+
 pub struct JsonlReporter<S: Store = File> {
     store: S,
     /// Complete lines not yet written.
@@ -78,6 +81,10 @@ impl<S: Store> JsonlReporter<S> {
         }
         serde_json::to_writer(&mut self.pending, line)?;
         self.pending.push(b'\n');
+        // A long batch (or `merge`, which writes everything at once) does not pile up in memory.
+        if self.pending.len() >= PENDING_MAX {
+            return self.flush();
+        }
         Ok(())
     }
 
