@@ -458,18 +458,43 @@ fn parallel_backends_give_the_sequential_report() {
 }
 
 #[test]
-fn without_gl_drivers_the_default_run_says_how_to_install_them_and_runs_soft() {
+fn without_gl_drivers_the_default_run_says_how_to_install_them_runs_soft_and_exits_96() {
     // SHADOWCHECK_EXE pointing nowhere makes every GL probe fail, as on a machine without Mesa.
     let (dir, fx) = setup("nogl", 16);
     let out = dir.join("out");
-    let r = Run::of(
-        bin()
-            .args(["run", "--fixtures", &fx, "--out", out.to_str().unwrap()])
-            .env("SHADOWCHECK_EXE", "/nonexistent/shadowcheck")
-            .output()
-            .unwrap(),
+    let default_run = |extra: &[&str]| {
+        Run::of(
+            bin()
+                .args(["run", "--fixtures", &fx, "--out", out.to_str().unwrap()])
+                .args(extra)
+                .env("SHADOWCHECK_EXE", "/nonexistent/shadowcheck")
+                .output()
+                .unwrap(),
+        )
+    };
+    let r = default_run(&[]);
+    // The missing backends are named, and the run is not "all good".
+    assert_eq!(r.code, 96, "{}{}", r.stdout, r.stderr);
+    assert!(
+        r.stderr
+            .contains("error: backend `egl:llvmpipe:core` cannot start here"),
+        "{}",
+        r.stderr
     );
+    assert!(
+        r.stdout
+            .contains("exit code 96 (backends that could not start: egl:llvmpipe:core"),
+        "{}",
+        r.stdout
+    );
+    let r = default_run(&["--skip-missing"]);
     assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    assert!(
+        r.stderr
+            .contains("warning: left out (--skip-missing): backend `egl:llvmpipe:core`"),
+        "{}",
+        r.stderr
+    );
     assert!(
         r.stderr.contains(
             "apt-get install -y libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers"

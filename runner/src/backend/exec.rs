@@ -6,12 +6,18 @@
 //! bisected in fresh processes until the case that does it is alone (Crash or Timeout), and the
 //! run goes on. When the process was answering case by case, the first unanswered case is tried
 //! alone first (one restart instead of log2(group) when it is the culprit). The GL backends and the mock use the same machinery.
+//!
+//! Misbehaviour is blamed on the case that misbehaved: a second answer for a case answered before
+//! makes that case Crash ([`Backend::take_faults`]) and the case whose answer was expected is sent
+//! again; after `--give-up-after` K cases in a row end in Timeout the rest are Timeout unsent; an
+//! interrupted run stops waiting within [`POLL`]. Answers become outcomes in `answer.rs`.
 
+use super::answer::to_outcome;
 pub use super::command::{split_command, ProcessCommand};
-use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome, Options};
-use shadowcheck_model::{ApiPath, Case};
-use shadowcheck_protocol::{Hello, PathResult, PathSkip, Reply, Request};
-use std::collections::VecDeque;
+use super::{Backend, BackendError, Capabilities, CaseOutcome, Options};
+use shadowcheck_model::Case;
+use shadowcheck_protocol::{Hello, Reply, Request};
+use std::collections::{HashSet, VecDeque};
 use std::io::{BufRead, BufReader, BufWriter, Write};
 use std::process::{Child, ChildStdin, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
@@ -38,6 +44,9 @@ fn write_loop(stdin: ChildStdin, queue: Receiver<Vec<u8>>) {
     }
     let _ = w.flush();
 }
+
+/// How often a wait for answers checks whether the run was interrupted.
+const POLL: Duration = Duration::from_millis(200);
 
 /// Time allowed for the hello, at least (a GL worker creates its context first; zink starts a
 /// Vulkan device).
@@ -167,6 +176,9 @@ impl Proc {
 enum Failure {
     /// Unparsable or out-of-order answer: the case it should have answered is Crash.
     Protocol(String),
+    /// A second answer for a case answered before (named): that case is to blame, not the one
+    /// whose answer was expected, which is sent again to a fresh process.
+    Extra(String),
     /// The process exited or closed stdout.
     Died,
     /// No answer before the deadline.
@@ -185,6 +197,14 @@ pub struct ExecBackend {
     diags: Arc<Mutex<Vec<String>>>,
     /// How many processes were started (the first one included).
     pub spawns: usize,
+    /// Give up after this many Timeouts in a row (0: never).
+    give_up: usize,
+    /// Cases that ended in Timeout since the last answer or crash.
+    timeouts_in_a_row: usize,
+    /// Ids the current process has answered (to recognize a second answer for one of them).
+    answered: HashSet<String>,
+    /// Answered cases found misbehaving later (see [`Backend::take_faults`]).
+    faults: Vec<(String, String)>,
 }
 
 impl ExecBackend {
@@ -204,6 +224,10 @@ impl ExecBackend {
             proc: None,
             diags: Arc::new(Mutex::new(vec![])),
             spawns: 0,
+            give_up: opts.give_up,
+            timeouts_in_a_row: 0,
+            answered: HashSet::new(),
+            faults: vec![],
         };
         let hello = b.ensure().map_err(|msg| BackendError::Setup {
             backend: name.to_string(),
@@ -277,6 +301,7 @@ impl ExecBackend {
     /// One attempt at a group in the current process: the answers received, and why it stopped
     /// early if it did.
     fn attempt(&mut self, group: &[&Case]) -> (Vec<CaseOutcome>, Option<Failure>) {
+        self.check_stray_lines();
         let Some(p) = self.proc.as_mut() else {
             return (vec![], Some(Failure::Died));
         };
@@ -291,18 +316,31 @@ impl ExecBackend {
         let _ = p.send(buf);
         let deadline = Instant::now() + self.timeout;
         let mut out = Vec::with_capacity(group.len());
-        for c in group {
+        for (i, c) in group.iter().enumerate() {
             let line = loop {
-                let wait = deadline.saturating_duration_since(Instant::now());
-                match p.lines.recv_timeout(wait) {
+                let left = deadline.saturating_duration_since(Instant::now());
+                // Waits in slices, so that an interrupted run stops waiting.
+                match p.lines.recv_timeout(left.min(POLL)) {
                     Ok(l) if l.trim().is_empty() => continue,
                     Ok(l) => break l,
+                    Err(RecvTimeoutError::Timeout) if crate::interrupt::requested() => {
+                        return (out, Some(Failure::Died))
+                    }
+                    Err(RecvTimeoutError::Timeout) if left > POLL => continue,
                     Err(RecvTimeoutError::Timeout) => return (out, Some(Failure::Stalled)),
                     Err(RecvTimeoutError::Disconnected) => return (out, Some(Failure::Died)),
                 }
             };
             match Reply::parse_answer(&line) {
                 Ok(a) if a.case_id() == Some(c.id.as_str()) => out.push(to_outcome(c, a)),
+                Ok(a)
+                    if a.case_id().is_some_and(|id| {
+                        group[..i].iter().any(|g| g.id == id) || self.answered.contains(id)
+                    }) =>
+                {
+                    let id = a.case_id().unwrap_or_default().to_string();
+                    return (out, Some(Failure::Extra(id)));
+                }
                 Ok(a) => {
                     let msg = format!(
                         "answer for `{}` where `{}` was expected",
@@ -322,10 +360,51 @@ impl ExecBackend {
                 }
             }
         }
+        self.answered.extend(group.iter().map(|c| c.id.clone()));
+        self.check_stray_lines();
         (out, None)
     }
 
+    /// Reads, without waiting, lines the process wrote after its last expected answer: a second
+    /// answer for a case it answered is a fault of that case; anything else is a diagnostic.
+    fn check_stray_lines(&mut self) {
+        let Some(p) = self.proc.as_mut() else { return };
+        let mut stray = vec![];
+        while let Ok(l) = p.lines.try_recv() {
+            if !l.trim().is_empty() {
+                stray.push(l);
+            }
+        }
+        for l in stray {
+            match Reply::parse_answer(&l)
+                .ok()
+                .and_then(|a| a.case_id().map(str::to_string))
+            {
+                Some(id) if self.answered.contains(&id) => self.fault(id),
+                _ => self.push_diag(format!(
+                    "{}: ignored a line nobody asked for: {}",
+                    self.name,
+                    clip(&l)
+                )),
+            }
+        }
+    }
+
+    /// Records a second answer for `id`, a case answered before.
+    fn fault(&mut self, id: String) {
+        self.push_diag(format!(
+            "{}: protocol error: a second answer for `{id}`",
+            self.name
+        ));
+        self.faults.push((
+            id,
+            "protocol error: the implementation answered this case twice (an extra answer line)"
+                .to_string(),
+        ));
+    }
+
     fn kill_proc(&mut self) -> String {
+        self.answered.clear();
         self.proc
             .take()
             .map(|p| p.kill())
@@ -337,6 +416,22 @@ impl ExecBackend {
         let mut results = Vec::with_capacity(cases.len());
         while results.len() < cases.len() {
             let rest = &cases[results.len()..];
+            if crate::interrupt::requested() {
+                // The runner drops this batch; `--resume` sends it again.
+                results.extend(
+                    rest.iter()
+                        .map(|_| CaseOutcome::Crash("interrupted".into())),
+                );
+                break;
+            }
+            if self.give_up > 0 && self.timeouts_in_a_row >= self.give_up {
+                let msg = format!(
+                    "not sent: the implementation gave no answer to {} cases in a row, so it was given up (--give-up-after {})",
+                    self.timeouts_in_a_row, self.give_up
+                );
+                results.extend(rest.iter().map(|_| CaseOutcome::Timeout(msg.clone())));
+                break;
+            }
             if let Err(msg) = self.ensure() {
                 // The implementation cannot even start again: nothing more can run.
                 let msg = format!("cannot restart the implementation: {msg}");
@@ -345,10 +440,21 @@ impl ExecBackend {
             }
             let (answers, failure) = self.attempt(rest);
             let streamed = !answers.is_empty();
+            if streamed {
+                self.timeouts_in_a_row = 0;
+            }
             results.extend(answers);
             let Some(failure) = failure else { break };
             let rest = &cases[results.len()..];
             match failure {
+                Failure::Extra(id) => {
+                    let how = self.kill_proc();
+                    self.push_diag(format!(
+                        "{}: answer for `{}` expected; restarting ({how})",
+                        self.name, rest[0].id
+                    ));
+                    self.fault(id);
+                }
                 Failure::Protocol(msg) => {
                     let how = self.kill_proc();
                     self.push_diag(format!(
@@ -362,8 +468,10 @@ impl ExecBackend {
                     let how = self.kill_proc();
                     if rest.len() == 1 {
                         let what = if stalled {
+                            self.timeouts_in_a_row += 1;
                             CaseOutcome::Timeout(format!("no answer within {:?}", self.timeout))
                         } else {
+                            self.timeouts_in_a_row = 0;
                             CaseOutcome::Crash(format!("the process died on this case: {how}"))
                         };
                         self.push_diag(format!(
@@ -404,55 +512,6 @@ fn clip(s: &str) -> String {
     }
 }
 
-fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
-    match a {
-        // parse_answer never returns a hello.
-        Reply::Hello(_) => CaseOutcome::Error("a hello where an answer was expected".into()),
-        Reply::Skip { reason, .. } => CaseOutcome::Skip(reason),
-        Reply::Error { message, .. } => CaseOutcome::Error(message),
-        Reply::Observation {
-            results, skipped, ..
-        } => {
-            let mut v = Vec::with_capacity(results.len() + skipped.len());
-            for PathResult {
-                api, rgba, stored, ..
-            } in results
-            {
-                match ApiPath::from_key(&api) {
-                    Some(a) if case.api.contains(&a) => v.push((
-                        a,
-                        ApiOutcome::Rgba {
-                            rgba: rgba.0,
-                            stored,
-                        },
-                    )),
-                    _ => {
-                        return CaseOutcome::Error(format!(
-                            "result for API path `{api}`, which the case does not have"
-                        ))
-                    }
-                }
-            }
-            // A path both answered and listed as skipped keeps its result (judged, never hidden).
-            for PathSkip { api, reason } in skipped {
-                match ApiPath::from_key(&api) {
-                    Some(a) if case.api.contains(&a) => {
-                        if !v.iter().any(|(p, _)| *p == a) {
-                            v.push((a, ApiOutcome::Skip(reason)));
-                        }
-                    }
-                    _ => {
-                        return CaseOutcome::Error(format!(
-                            "skipped API path `{api}`, which the case does not have"
-                        ))
-                    }
-                }
-            }
-            CaseOutcome::Observed(v)
-        }
-    }
-}
-
 impl Backend for ExecBackend {
     fn name(&self) -> &str {
         &self.name
@@ -472,6 +531,10 @@ impl Backend for ExecBackend {
             .map(|mut d| std::mem::take(&mut *d))
             .unwrap_or_default()
     }
+    fn take_faults(&mut self) -> Vec<(String, String)> {
+        self.check_stray_lines();
+        std::mem::take(&mut self.faults)
+    }
 }
 
 impl Drop for ExecBackend {
@@ -479,47 +542,5 @@ impl Drop for ExecBackend {
         if let Some(p) = self.proc.take() {
             p.finish();
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A case with the compat paths (ff, glsl120) of a GL 4.6 2D lookup; only `api` matters here.
-    fn compat_case() -> Case {
-        let json = r#"{"id":"x","spec":"gl46","api":["ff","glsl120"],"texture":{"target":"2d","format":"d16","levels":[{"width":1,"height":1,"layers":1,"depth":{"unorm":[7]}}]},"sampler":{"compare_mode":"compare","compare_func":"lequal","min_filter":"nearest","mag_filter":"nearest","wrap_s":"edge","wrap_t":"edge","wrap_r":"edge","border":[0,0,0,0]},"lookup":{"coord":[0.5,0.5,0,1],"dref":0.5}}"#;
-        serde_json::from_str(json).unwrap()
-    }
-
-    #[test]
-    fn skipped_paths_become_skip_with_the_implementations_reason() {
-        let case = compat_case();
-        let line = r#"{"type":"observation","case_id":"x","results":[{"api":"glsl120","rgba":[1,1,1,1],"note":"shadow2D"}],"skipped":[{"api":"ff","reason":"fixed-function has no cube arrays"}]}"#;
-        let out = to_outcome(&case, Reply::parse_answer(line).unwrap());
-        let CaseOutcome::Observed(v) = out else {
-            panic!("{out:?}")
-        };
-        assert!(matches!(
-            v.iter().find(|(a, _)| *a == ApiPath::Glsl120),
-            Some((_, ApiOutcome::Rgba { .. }))
-        ));
-        match v.iter().find(|(a, _)| *a == ApiPath::FixedFunction) {
-            Some((_, ApiOutcome::Skip(m))) => assert_eq!(m, "fixed-function has no cube arrays"),
-            other => panic!("{other:?}"),
-        }
-        // A skipped path the case does not have is the implementation's error, as a stray result is.
-        let bad = r#"{"type":"observation","case_id":"x","results":[],"skipped":[{"api":"core","reason":"no"}]}"#;
-        assert!(matches!(
-            to_outcome(&case, Reply::parse_answer(bad).unwrap()),
-            CaseOutcome::Error(_)
-        ));
-        // An answered path that is also listed keeps its result.
-        let both = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}],"skipped":[{"api":"ff","reason":"no"}]}"#;
-        let CaseOutcome::Observed(v) = to_outcome(&case, Reply::parse_answer(both).unwrap()) else {
-            panic!()
-        };
-        assert_eq!(v.len(), 1);
-        assert!(matches!(v[0].1, ApiOutcome::Rgba { .. }));
     }
 }

@@ -10,12 +10,19 @@
 //! - `skip`: answers skip; `error`: answers an error message;
 //! - `crash`: exits with status 3 on reading the case; `hang`: stops answering;
 //! - `garbage`: answers a line that is not JSON;
-//! - `flaky`: fails the first time it sees the case in this process, passes afterwards.
+//! - `flaky`: fails the first time it sees the case in this process, passes afterwards;
+//! - `extra`: answers the case (as `pass`) twice;
+//! - `dup`: one observation with two results for each API path;
+//! - `empty`: an observation with `results: []` (and nothing skipped).
 //!
 //! Options (same list): `buffer` answers only at `flush` (like a GPU implementation; default is to
-//! answer each case as it is read); `slow=MS` sleeps MS milliseconds per case.
+//! answer each case as it is read); `slow=MS` sleeps MS milliseconds per case; `crashevery=N`
+//! exits on every N-th case it reads, counting across the worker's restarts when
+//! `SHADOWCHECK_MOCK_COUNTER=FILE` names a file to keep the count in (else per process).
 //! Environment: `SHADOWCHECK_MOCK_KILL_RUNNER=REGEX` makes the worker SIGKILL its parent (the
-//! runner) on the first case whose id matches, to test that a killed run can be resumed.
+//! runner) on the first case whose id matches, to test that a killed run can be resumed;
+//! `SHADOWCHECK_MOCK_INTERRUPT_RUNNER=REGEX` sends it SIGINT instead (each time a matching case
+//! arrives), as Ctrl-C or a CI job's SIGTERM would.
 
 use regex::Regex;
 use shadowcheck_model::{Case, Channel, Profile};
@@ -36,6 +43,9 @@ pub enum Action {
     Hang,
     Garbage,
     Flaky,
+    Extra,
+    Dup,
+    Empty,
 }
 
 /// A parsed mock script.
@@ -44,6 +54,8 @@ pub struct Script {
     rules: Vec<(Action, Option<Regex>)>,
     pub buffer: bool,
     pub slow_ms: u64,
+    /// Exit on every N-th case read (0: never).
+    pub crash_every: u64,
 }
 
 impl Script {
@@ -52,6 +64,7 @@ impl Script {
             rules: vec![],
             buffer: false,
             slow_ms: 0,
+            crash_every: 0,
         };
         for item in s.split(',').map(str::trim).filter(|i| !i.is_empty()) {
             let (key, val) = match item.split_once('=') {
@@ -69,6 +82,13 @@ impl Script {
                         .ok_or("slow=MS needs a number of milliseconds")?;
                     continue;
                 }
+                "crashevery" => {
+                    script.crash_every = val
+                        .and_then(|v| v.parse().ok())
+                        .filter(|&n| n > 0)
+                        .ok_or("crashevery=N needs a positive number of cases")?;
+                    continue;
+                }
                 "pass" => Action::Pass,
                 "warn" => Action::Warn,
                 "fail" => Action::Fail,
@@ -78,6 +98,9 @@ impl Script {
                 "hang" => Action::Hang,
                 "garbage" => Action::Garbage,
                 "flaky" => Action::Flaky,
+                "extra" => Action::Extra,
+                "dup" => Action::Dup,
+                "empty" => Action::Empty,
                 other => return Err(format!("unknown mock action `{other}`")),
             };
             let re = val
@@ -160,10 +183,16 @@ fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Reply {
             reason: "mock: the case carries no expectation to answer from".into(),
         };
     };
+    let copies = match action {
+        Action::Empty => 0,
+        Action::Dup => 2,
+        _ => 1,
+    };
     let results = case
         .api
         .iter()
-        .map(|&a| PathResult {
+        .flat_map(|&a| std::iter::repeat_n(a, copies))
+        .map(|a| PathResult {
             api: a.key().to_string(),
             rgba: Rgba(laid_out(case, a, r)),
             stored: None,
@@ -177,21 +206,23 @@ fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Reply {
     }
 }
 
-fn kill_parent() {
+fn signal_parent(signal: &str) {
     let ppid = std::os::unix::process::parent_id();
     // The shell's builtin `kill` (no procps needed).
     let _ = std::process::Command::new("sh")
-        .args(["-c", &format!("kill -KILL {ppid}")])
+        .args(["-c", &format!("kill -{signal} {ppid}")])
         .status();
 }
 
 /// The worker loop: reads requests from `input`, answers on `output`. Returns the exit status.
 pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> std::io::Result<i32> {
-    let kill_runner = std::env::var("SHADOWCHECK_MOCK_KILL_RUNNER")
-        .ok()
-        .and_then(|r| Regex::new(&r).ok());
+    let env_regex = |name| std::env::var(name).ok().and_then(|r| Regex::new(&r).ok());
+    let kill_runner = env_regex("SHADOWCHECK_MOCK_KILL_RUNNER");
+    let interrupt_runner = env_regex("SHADOWCHECK_MOCK_INTERRUPT_RUNNER");
     let mut seen = HashSet::new();
     let mut pending: Vec<String> = vec![];
+    let counter = std::env::var_os("SHADOWCHECK_MOCK_COUNTER").map(std::path::PathBuf::from);
+    let mut read: u64 = 0;
     for line in input.lines() {
         let line = line?;
         if line.trim().is_empty() {
@@ -218,10 +249,32 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
             }
             Request::Case { case } => {
                 if kill_runner.as_ref().is_some_and(|r| r.is_match(&case.id)) {
-                    kill_parent();
+                    signal_parent("KILL");
+                }
+                if interrupt_runner
+                    .as_ref()
+                    .is_some_and(|r| r.is_match(&case.id))
+                {
+                    signal_parent("INT");
                 }
                 if script.slow_ms > 0 {
                     std::thread::sleep(std::time::Duration::from_millis(script.slow_ms));
+                }
+                read = match &counter {
+                    Some(f) => {
+                        let n = std::fs::read_to_string(f)
+                            .ok()
+                            .and_then(|s| s.trim().parse::<u64>().ok())
+                            .unwrap_or(0)
+                            + 1;
+                        std::fs::write(f, n.to_string())?;
+                        n
+                    }
+                    None => read + 1,
+                };
+                if script.crash_every > 0 && read.is_multiple_of(script.crash_every) {
+                    eprintln!("mock: crashing on case number {read} ({})", case.id);
+                    return Ok(3);
                 }
                 let action = script.action(&case.id);
                 match action {
@@ -233,6 +286,11 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
                         std::thread::sleep(std::time::Duration::from_secs(3600));
                     },
                     Action::Garbage => pending.push("this is not json".to_string()),
+                    Action::Extra => {
+                        let line = serde_json::to_string(&answer(&case, action, &mut seen))?;
+                        pending.push(line.clone());
+                        pending.push(line);
+                    }
                     _ => pending.push(serde_json::to_string(&answer(&case, action, &mut seen))?),
                 }
                 if !script.buffer {
@@ -260,7 +318,9 @@ mod tests {
 
     #[test]
     fn script_first_matching_rule_wins() {
-        let s = Script::parse("crash=boom,fail=lequal,buffer,slow=5").unwrap();
+        let s = Script::parse("crash=boom,fail=lequal,buffer,slow=5,crashevery=3").unwrap();
+        assert_eq!(s.crash_every, 3);
+        assert!(Script::parse("crashevery=0").is_err());
         assert_eq!(s.action("x/boom/lequal"), Action::Crash);
         assert_eq!(s.action("x/lequal"), Action::Fail);
         assert_eq!(s.action("x/gequal"), Action::Pass);

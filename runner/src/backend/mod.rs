@@ -8,6 +8,7 @@
 //! - `egl:*`, `osmesa:*`: GL drivers, each in a `shadowcheck gl-worker` child speaking the protocol;
 //! - `mock:<script>`: a scripted implementation for testing the runner itself.
 
+mod answer;
 pub mod command;
 pub mod exec;
 pub mod gl;
@@ -64,6 +65,12 @@ pub trait Backend: Send {
     fn take_diagnostics(&mut self) -> Vec<String> {
         vec![]
     }
+    /// Cases already answered whose implementation misbehaved afterwards (an extra answer line for
+    /// the case, read after its answer was taken), with what happened, since the last call. The
+    /// runner makes those cases Crash, also when they were answered in an earlier batch.
+    fn take_faults(&mut self) -> Vec<(String, String)> {
+        vec![]
+    }
 }
 
 /// Options shared by the backends that run child processes.
@@ -73,13 +80,20 @@ pub struct Options {
     pub timeout: Duration,
     /// Cases written to a process before each `flush` (PROTOCOL.md §2).
     pub group: usize,
+    /// After this many cases in a row ended in Timeout, the rest of the implementation's cases are
+    /// Timeout without being sent (0: never give up).
+    pub give_up: usize,
 }
+
+/// Consecutive timeouts after which an implementation is given up (`run --give-up-after`).
+pub const GIVE_UP_AFTER: usize = 3;
 
 impl Default for Options {
     fn default() -> Self {
         Options {
             timeout: Duration::from_secs(10),
             group: 64,
+            give_up: GIVE_UP_AFTER,
         }
     }
 }
@@ -89,11 +103,25 @@ pub fn gl_backends() -> Vec<String> {
     gl::probe()
 }
 
-/// Backends run when none is named: `soft` plus every GL driver found.
-pub fn default_backends() -> Vec<String> {
-    let mut v = vec!["soft".to_string()];
-    v.extend(gl_backends());
-    v
+/// Backends run when none is named: `soft` plus every GL backend a machine with Mesa offers. The
+/// second list holds those that cannot start here, each with the reason (a driver not installed or
+/// hidden); combinations that can never work (OSMesa with ES, OSMesa with zink) are in neither.
+pub fn default_backends() -> (Vec<String>, Vec<(String, String)>) {
+    let mut run = vec!["soft".to_string()];
+    let mut missing = vec![];
+    for (name, probed) in gl::probe_report() {
+        let impossible = name
+            .parse::<shadowcheck_gl::BackendName>()
+            .ok()
+            .and_then(|b| b.static_unavailability())
+            .is_some();
+        match probed {
+            _ if impossible => {}
+            Ok(()) => run.push(name),
+            Err(why) => missing.push((name, why)),
+        }
+    }
+    (run, missing)
 }
 
 /// Opens the backend called `name` (starting and greeting its process, if any); the kind comes

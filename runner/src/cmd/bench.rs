@@ -78,8 +78,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     };
     if let Some(path) = &a.markdown {
         let old = std::fs::read_to_string(path).ok();
-        std::fs::write(path, markdown::document(&report, old.as_deref()))
-            .with_context(|| format!("writing {}", path.display()))?;
+        shadowcheck_runner::report::atomic::write(
+            path,
+            markdown::document(&report, old.as_deref()).as_bytes(),
+        )
+        .with_context(|| format!("writing {}", path.display()))?;
         eprintln!("bench: wrote {}", path.display());
     }
     if a.json {

@@ -6,9 +6,9 @@
 
 use anyhow::{bail, Context};
 use shadowcheck_runner::events::{Event, Fanout, Reporter};
-use shadowcheck_runner::records::{self, RunMeta, RESULTS_FILE};
+use shadowcheck_runner::records::{self, exit, exit::Ending, RunMeta, RESULTS_FILE};
 use shadowcheck_runner::report::{
-    self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports,
+    self, jsonl::JsonlReporter, terminal, terminal::TerminalReporter, FileReports,
 };
 use shadowcheck_runner::run;
 use std::path::PathBuf;
@@ -63,6 +63,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         merged.load_errors.extend(p.load_errors);
     }
     std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
+    let _lock = shadowcheck_runner::outdir::OutLock::acquire(&a.out)?;
     let meta = RunMeta {
         backends: backends.clone(),
         ..meta.unwrap_or_default()
@@ -88,8 +89,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .reporters
         .extend(report::file_reporters(&a.out, &FileReports::default()));
     let summary = run::finish(backends, &mut results, &errors, &mut fanout);
-    if let Some((_, e)) = fanout.error {
-        bail!("writing reports in {}: {e}", a.out.display());
+    let mut ending = Ending::new(summary.exit_code);
+    if let Some((_, e)) = &fanout.error {
+        eprintln!("shadowcheck: error: {e} (in {})", a.out.display());
+        ending.add(exit::SETUP, e.to_string());
     }
-    Ok(ExitCode::from(summary.exit_code))
+    terminal::print_final_line(&summary, &ending);
+    Ok(ExitCode::from(ending.code))
 }

@@ -147,8 +147,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         super::print_out(&render::table(&report))?;
     }
     if let Some(path) = &a.markdown {
-        std::fs::write(path, render::markdown(&report, &command_line(&a)))
-            .with_context(|| format!("writing {}", path.display()))?;
+        shadowcheck_runner::report::atomic::write(
+            path,
+            render::markdown(&report, &command_line(&a)).as_bytes(),
+        )
+        .with_context(|| format!("writing {}", path.display()))?;
         if !a.quiet {
             eprintln!("mutants: wrote {}", path.display());
         }
@@ -170,7 +173,8 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
                 render::README_END
             )
         })?;
-        std::fs::write(path, new).with_context(|| format!("writing {}", path.display()))?;
+        shadowcheck_runner::report::atomic::write(path, new.as_bytes())
+            .with_context(|| format!("writing {}", path.display()))?;
         if !a.quiet {
             eprintln!("mutants: updated the kill matrix in {}", path.display());
         }

@@ -68,7 +68,8 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let page = html::render(&input, &geo, &opts);
     std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
     let path = a.out.join(html::INDEX);
-    std::fs::write(&path, &page).with_context(|| format!("writing {}", path.display()))?;
+    shadowcheck_runner::report::atomic::write(&path, page.as_bytes())
+        .with_context(|| format!("writing {}", path.display()))?;
     println!(
         "wrote {} ({} KiB): {} tests on {} backends ({}) from {} input(s); heatmap geometry from {}",
         path.display(),

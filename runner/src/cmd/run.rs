@@ -1,12 +1,14 @@
 //! `shadowcheck run`: fixtures → backends → verdicts → reports. Exit codes: runner/README.md.
 
 use anyhow::{bail, Context};
-use shadowcheck_runner::backend::{self, Backend, Options};
+use shadowcheck_runner::backend::{self, Backend, BackendError, Options};
 use shadowcheck_runner::baseline::{Baseline, Lists, RegexList};
 use shadowcheck_runner::events::Fanout;
-use shadowcheck_runner::records::{self, exit, RunMeta, RESULTS_FILE};
+use shadowcheck_runner::interrupt;
+use shadowcheck_runner::outdir::OutLock;
+use shadowcheck_runner::records::{self, exit, exit::Ending, RunMeta, RESULTS_FILE};
 use shadowcheck_runner::report::{
-    self, jsonl::JsonlReporter, terminal::TerminalReporter, FileReports,
+    self, jsonl::JsonlReporter, terminal, terminal::TerminalReporter, FileReports,
 };
 use shadowcheck_runner::run::{self, Settings};
 use shadowcheck_runner::schedule;
@@ -72,6 +74,14 @@ pub struct Args {
     /// Do not re-run regressions to detect flakes.
     #[arg(long)]
     no_rerun: bool,
+    /// Run without the backends that cannot start here (a driver not installed), saying which,
+    /// instead of exiting 96 at the end.
+    #[arg(long)]
+    skip_missing: bool,
+    /// After this many cases in a row end in Timeout, the rest of that implementation's cases are
+    /// Timeout without being sent (0: never give up).
+    #[arg(long, value_name = "K", default_value_t = backend::GIVE_UP_AFTER)]
+    give_up_after: usize,
     /// Show implementations' stderr lines and restarts.
     #[arg(long, short = 'v')]
     verbose: bool,
@@ -139,22 +149,59 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         a.fixtures.clone()
     };
 
-    let names = if a.backends.is_empty() {
-        let names = backend::default_backends();
-        if names.len() == 1 {
-            eprintln!("shadowcheck: no GL driver found on this machine; running the soft backend only. Install Mesa for the GL backends: {MESA_INSTALL}");
-        }
-        names
+    // Backends that cannot start here: named with the reason and the install hint; the run goes on
+    // without them and exits 96 unless --skip-missing.
+    let (requested, mut missing) = if a.backends.is_empty() {
+        backend::default_backends()
     } else {
-        a.backends.clone()
+        (a.backends.clone(), vec![])
     };
-    for (i, n) in names.iter().enumerate() {
-        if names[..i].contains(n) {
+    for (i, n) in requested.iter().enumerate() {
+        if requested[..i].contains(n) {
             bail!("backend `{n}` is named twice");
         }
     }
+    if a.group == 0 {
+        bail!("--group must be at least 1");
+    }
+    let opts = Options {
+        timeout: Duration::from_secs_f64(a.timeout),
+        group: a.group,
+        give_up: a.give_up_after,
+    };
+    let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(requested.len());
+    for n in &requested {
+        match backend::open(n, &opts) {
+            Ok(b) => backends.push(b),
+            Err(e @ BackendError::Unknown(_)) => return Err(e.into()),
+            Err(BackendError::Setup { msg, .. }) => missing.push((n.clone(), msg)),
+        }
+    }
+    let what = if a.skip_missing {
+        "warning: left out (--skip-missing)"
+    } else {
+        "error"
+    };
+    for (n, why) in &missing {
+        eprintln!("shadowcheck: {what}: backend `{n}` cannot start here: {why}");
+    }
+    if missing
+        .iter()
+        .any(|(n, _)| n.starts_with("egl:") || n.starts_with("osmesa:"))
+    {
+        eprintln!("shadowcheck: the GL backends need Mesa's drivers: {MESA_INSTALL}");
+    }
+    if !missing.is_empty() && !a.skip_missing {
+        eprintln!("shadowcheck: the run goes on without {} backend(s) and will exit {}; pass --skip-missing to run without them", missing.len(), exit::SETUP);
+    }
+    if backends.is_empty() {
+        bail!("no backend could start");
+    }
+    let names: Vec<String> = backends.iter().map(|b| b.name().to_string()).collect();
     let out_dir = a.out.clone().unwrap_or_else(|| default_out(&a.backends));
     std::fs::create_dir_all(&out_dir).with_context(|| format!("creating {}", out_dir.display()))?;
+    // Held until the process ends: a second run into this directory stops here (exit 96).
+    let _lock = OutLock::acquire(&out_dir)?;
 
     let meta = RunMeta {
         backends: names.clone(),
@@ -164,17 +211,6 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         baseline: a.baseline.as_ref().map(|p| p.display().to_string()),
         ..RunMeta::new()
     };
-    if a.group == 0 {
-        bail!("--group must be at least 1");
-    }
-    let opts = Options {
-        timeout: Duration::from_secs_f64(a.timeout),
-        group: a.group,
-    };
-    let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(names.len());
-    for n in &names {
-        backends.push(backend::open(n, &opts)?);
-    }
 
     let mut set = run::load_cases(&fixtures);
     let loaded_any = !set.files.is_empty();
@@ -232,7 +268,8 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .jobs
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
-    let (_, summary, _) = schedule::run_all(
+    install_interrupt_handler();
+    let (results, summary, _) = schedule::run_all(
         &mut backends,
         &set,
         &prior,
@@ -242,12 +279,62 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         jobs,
     );
     drop(backends);
-    if let Some((_, e)) = fanout.error {
-        eprintln!(
-            "shadowcheck: error: writing reports in {}: {e}",
-            out_dir.display()
+    // The exit code, decided once, printed as it is returned.
+    let mut ending = Ending::new(summary.exit_code);
+    if !missing.is_empty() && !a.skip_missing {
+        let list: Vec<&str> = missing.iter().map(|(n, _)| n.as_str()).collect();
+        ending.add(
+            exit::SETUP,
+            format!("backends that could not start: {}", list.join(", ")),
         );
-        return Ok(ExitCode::from(exit::SETUP));
     }
-    Ok(ExitCode::from(summary.exit_code))
+    if let Some((_, e)) = &fanout.error {
+        eprintln!("shadowcheck: error: {e} (in {})", out_dir.display());
+        ending.add(exit::SETUP, e.to_string());
+    }
+    if interrupt::requested() {
+        let total = set.tests() * names.len();
+        eprintln!(
+            "shadowcheck: interrupted: {} of {total} tests finished; they are kept in {} and the reports in {} cover them. Resume with:\n  {}",
+            results.len(),
+            out_dir.join(RESULTS_FILE).display(),
+            out_dir.display(),
+            resume_command(&out_dir)
+        );
+        ending.add(exit::INTERRUPTED, "interrupted");
+    }
+    terminal::print_final_line(&summary, &ending);
+    Ok(ExitCode::from(ending.code))
+}
+
+/// SIGINT/SIGTERM: the first asks the run to stop after the batch in flight and write its reports;
+/// a second exits at once (results.jsonl keeps every finished test).
+fn install_interrupt_handler() {
+    // Only fails when a handler is already installed (a second run in one process): keep it.
+    let _ = ctrlc::set_handler(|| {
+        if interrupt::request() {
+            eprintln!("shadowcheck: interrupted again; stopping now (results.jsonl keeps every finished test; resume with --resume)");
+            std::process::exit(i32::from(exit::INTERRUPTED));
+        }
+        eprintln!("shadowcheck: interrupted; finishing the batch in flight and writing the reports of the finished tests (Ctrl-C again stops at once)");
+    });
+}
+
+/// This command line with `--out` and `--resume`, to finish an interrupted run.
+fn resume_command(out_dir: &Path) -> String {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut words = vec!["shadowcheck".to_string()];
+    words.extend(args.iter().map(|w| records::shell_quote(w)));
+    let has = |f: &[&str]| {
+        args.iter()
+            .any(|w| f.iter().any(|f| w == f || w.starts_with(&format!("{f}="))))
+    };
+    if !has(&["--out", "-o"]) {
+        words.push("--out".into());
+        words.push(records::shell_quote(&out_dir.display().to_string()));
+    }
+    if !has(&["--resume"]) {
+        words.push("--resume".into());
+    }
+    words.join(" ")
 }

@@ -87,7 +87,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
     }
     let path = a.outroot.join("SUMMARY.md");
-    std::fs::write(&path, out.join("\n") + "\n")
+    shadowcheck_runner::report::atomic::write(&path, (out.join("\n") + "\n").as_bytes())
         .with_context(|| format!("writing {}", path.display()))?;
     Ok(ExitCode::from(exit::SUCCESS))
 }
@@ -247,7 +247,8 @@ pub fn cap_report(text: &str) -> String {
 }
 
 fn write(path: &Path, text: &str) -> anyhow::Result<()> {
-    std::fs::write(path, text).with_context(|| format!("writing {}", path.display()))
+    shadowcheck_runner::report::atomic::write(path, text.as_bytes())
+        .with_context(|| format!("writing {}", path.display()))
 }
 
 #[cfg(test)]

@@ -60,23 +60,38 @@ pub struct Summary {
     pub backends: Vec<String>,
     pub counts: Counts,
     pub load_errors: usize,
+    /// Backends that had tests and skipped every one: the run exits 4 ([`exit::NOTHING`]) unless
+    /// something weightier happened.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub idle_backends: Vec<String>,
     pub exit_code: u8,
 }
 
 impl Summary {
-    /// Regressions (100) first, then bad input (96), improvements (101), nothing selected (4).
+    /// Regressions (100) first, then bad input (96), improvements (101), nothing ran (4: no test
+    /// selected, or a backend on which every test was skipped).
     pub fn new(backends: Vec<String>, results: &[TestResult], load_errors: usize) -> Summary {
         let mut counts = Counts::default();
         for r in results {
             counts.add(r.status);
         }
+        // A backend that had tests and skipped every one of them (a skips list `.*`, an
+        // implementation that skips everything) tested nothing.
+        let idle_backends: Vec<String> = backends
+            .iter()
+            .filter(|b| {
+                let mut own = results.iter().filter(|r| &r.backend == *b).peekable();
+                own.peek().is_some() && own.all(|r| r.outcome == Outcome::Skip)
+            })
+            .cloned()
+            .collect();
         let exit_code = if counts.regressions() > 0 {
             exit::REGRESSIONS
         } else if load_errors > 0 {
             exit::SETUP
         } else if counts.unexpected_improvement > 0 {
             exit::IMPROVEMENTS
-        } else if counts.total() == 0 {
+        } else if counts.total() == 0 || !idle_backends.is_empty() {
             exit::NOTHING
         } else {
             exit::SUCCESS
@@ -86,6 +101,7 @@ impl Summary {
             backends,
             counts,
             load_errors,
+            idle_backends,
             exit_code,
         }
     }
@@ -113,6 +129,24 @@ mod tests {
         assert_eq!(code(&[pass.clone(), better.clone()], 1), exit::SETUP);
         assert_eq!(code(&[pass.clone(), better.clone()], 0), exit::IMPROVEMENTS);
         assert_eq!(code(&[], 0), exit::NOTHING);
+        // A backend that skipped everything did not test anything: not "all good".
+        let skipped = result("s", Status::Plain(Outcome::Skip));
+        let mut skipped = TestResult {
+            outcome: Outcome::Skip,
+            backend: "idle".into(),
+            ..skipped
+        };
+        let both = |s: &TestResult| {
+            Summary::new(
+                vec!["b".into(), "idle".into()],
+                &[pass.clone(), s.clone()],
+                0,
+            )
+        };
+        assert_eq!(both(&skipped).exit_code, exit::NOTHING);
+        assert_eq!(both(&skipped).idle_backends, ["idle"]);
+        skipped.outcome = Outcome::Pass;
+        assert_eq!(both(&skipped).exit_code, exit::SUCCESS);
         assert_eq!(
             code(
                 &[

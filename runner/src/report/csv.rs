@@ -8,7 +8,6 @@
 use crate::events::{Event, Reporter};
 use crate::records::{Status, TestResult};
 use std::collections::BTreeSet;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 pub struct CsvReporter {
@@ -74,10 +73,14 @@ pub fn results_csv(results: &[TestResult]) -> String {
 impl Reporter for CsvReporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
         if let Event::RunFinished { results, .. } = ev {
-            std::fs::File::create(self.dir.join("results.csv"))?
-                .write_all(results_csv(results).as_bytes())?;
-            std::fs::File::create(self.dir.join("failures.csv"))?
-                .write_all(failures_csv(results).as_bytes())?;
+            super::atomic::write(
+                &self.dir.join("results.csv"),
+                results_csv(results).as_bytes(),
+            )?;
+            super::atomic::write(
+                &self.dir.join("failures.csv"),
+                failures_csv(results).as_bytes(),
+            )?;
         }
         Ok(())
     }

@@ -40,8 +40,9 @@ impl Reporter for JsonReporter {
                 load_errors: load_errors.to_vec(),
                 results: results.to_vec(),
             };
-            let f = std::io::BufWriter::new(std::fs::File::create(self.dir.join("report.json"))?);
-            serde_json::to_writer_pretty(f, &doc)?;
+            super::atomic::write_with(&self.dir.join("report.json"), |w| {
+                serde_json::to_writer_pretty(w, &doc).map_err(std::io::Error::from)
+            })?;
         }
         Ok(())
     }

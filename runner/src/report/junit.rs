@@ -84,7 +84,7 @@ impl Reporter for JunitReporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
         if let Event::RunFinished { results, .. } = ev {
             let xml = to_xml(results).map_err(std::io::Error::other)?;
-            std::fs::write(self.dir.join("junit.xml"), xml)?;
+            super::atomic::write(&self.dir.join("junit.xml"), xml.as_bytes())?;
         }
         Ok(())
     }

@@ -55,9 +55,14 @@ pub fn render(results: &[TestResult], errors: &[LoadError], summary: &Summary) -
     let _ = writeln!(s, "| **total** | **{}** |\n", c.total());
     let _ = writeln!(
         s,
-        "Load errors: {}. Exit code: {}.\n",
-        summary.load_errors, summary.exit_code
+        "Load errors: {}. Exit code from these results: {} ({}); the run's own exit code also counts backends that could not start, reports that could not be written and an interruption (the last line the run printed).\n",
+        summary.load_errors,
+        summary.exit_code,
+        crate::records::exit::meaning(summary.exit_code)
     );
+    for b in &summary.idle_backends {
+        let _ = writeln!(s, "Backend `{b}` ran no test: every test was skipped.\n");
+    }
     for (dim, rows) in breakdown(results) {
         let _ = writeln!(s, "## By {dim}\n\n| {dim} | tests | pass | warn | fail | skip | other |\n|---|---:|---:|---:|---:|---:|---:|");
         for (k, r) in rows {
@@ -110,9 +115,9 @@ impl Reporter for MarkdownReporter {
             summary,
         } = ev
         {
-            std::fs::write(
-                self.dir.join("report.md"),
-                render(results, load_errors, summary),
+            super::atomic::write(
+                &self.dir.join("report.md"),
+                render(results, load_errors, summary).as_bytes(),
             )?;
         }
         Ok(())

@@ -11,6 +11,7 @@
 //!
 //! The terminal reporter shows progress on stderr and the summary on stdout.
 
+pub mod atomic;
 pub mod csv;
 pub mod html;
 pub mod json;

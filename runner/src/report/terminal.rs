@@ -4,6 +4,8 @@
 
 use super::{breakdown, dump};
 use crate::events::{Event, Reporter};
+use crate::records::exit::Ending;
+use crate::records::Summary;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::{IsTerminal, Write};
 
@@ -178,26 +180,49 @@ impl TerminalReporter {
                         regressions.len() - MAX_DUMPS
                     )?;
                 }
-                let c = &summary.counts;
-                writeln!(
-                    out,
-                    "\nshadowcheck: {} tests: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} unexpected improvement, {} flake, {} known flake; {} load errors; exit code {}",
-                    c.total(),
-                    c.pass,
-                    c.warn,
-                    c.fail,
-                    c.crash,
-                    c.timeout,
-                    c.skip,
-                    c.expected_fail,
-                    c.unexpected_improvement,
-                    c.flake,
-                    c.known_flake,
-                    summary.load_errors,
-                    summary.exit_code
-                )?;
+                if summary.counts.total() > 0 && !summary.idle_backends.is_empty() {
+                    writeln!(out)?;
+                    for b in &summary.idle_backends {
+                        writeln!(
+                            out,
+                            "shadowcheck: backend `{b}` ran no test (every test was skipped)"
+                        )?;
+                    }
+                }
+                // The totals and the exit code come last, from the command, once every report is
+                // written ([`final_line`]).
             }
         }
         Ok(())
     }
+}
+
+/// The run's last line on stdout: the totals and the exit code the process returns, with every
+/// reason for it (printed by the command after the reports are written, so it is the real one).
+pub fn final_line(summary: &Summary, ending: &Ending) -> String {
+    let c = &summary.counts;
+    format!(
+        "shadowcheck: {} tests: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} unexpected improvement, {} flake, {} known flake; {} load errors; {}",
+        c.total(),
+        c.pass,
+        c.warn,
+        c.fail,
+        c.crash,
+        c.timeout,
+        c.skip,
+        c.expected_fail,
+        c.unexpected_improvement,
+        c.flake,
+        c.known_flake,
+        summary.load_errors,
+        ending.describe()
+    )
+}
+
+/// Prints [`final_line`] on stdout, after a blank line; a closed stdout is not an error (the exit
+/// code says it all).
+pub fn print_final_line(summary: &Summary, ending: &Ending) {
+    let mut out = std::io::stdout().lock();
+    let _ = writeln!(out, "\n{}", final_line(summary, ending));
+    let _ = out.flush();
 }

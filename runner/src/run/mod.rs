@@ -4,11 +4,15 @@
 //! backend's capabilities turn the rest into Skip (with the reason) or a case to send; cases go to
 //! the backend in batches, each answer is judged ([`crate::verdict`]), given its final status by
 //! the lists ([`crate::baseline`]) and sent as a `CaseFinished` event (results.jsonl is written by a
-//! reporter, flushed per record). Regressions are then re-run once: a different outcome is a Flake.
+//! reporter, written per batch). Regressions are then re-run once: a different outcome is a Flake,
+//! unless a Crash or Timeout recurred during the re-run. Faults a backend finds later (a second
+//! answer for a case) make that case Crash, re-sent as a new record. Once the run is interrupted
+//! ([`crate::interrupt`]) no batch is sent, the batch in flight is dropped and no re-run is made.
 
 use crate::backend::{ApiOutcome, Backend, CaseOutcome, Support};
 use crate::baseline::Lists;
 use crate::events::{Event, Fanout, Sink, Timing};
+use crate::interrupt;
 use crate::records::{Counts, LoadError, Outcome, Results, Status, Summary, Tags, TestResult};
 use crate::shard::Shard;
 use crate::verdict;
@@ -173,7 +177,7 @@ fn judge_outcome(
                 CaseOutcome::Observed(v) => match v.iter().find(|(a, _)| *a == api).map(|(_, o)| o)
                 {
                     None => (
-                        Outcome::Skip,
+                        Outcome::Fail,
                         Some("the backend returned no result for this API path".to_string()),
                     ),
                     Some(ApiOutcome::Skip(m)) => (Outcome::Skip, Some(m.clone())),
@@ -289,9 +293,20 @@ pub fn run_backend(
     }
     let batch = backend.batch_size().max(1);
     for chunk in to_send.chunks(batch) {
+        if interrupt::requested() {
+            break;
+        }
         let refs: Vec<&Case> = chunk.iter().map(|(c, _)| c.as_ref()).collect();
         let t0 = Instant::now();
-        let outcomes = backend.run_batch(&refs);
+        let mut outcomes = backend.run_batch(&refs);
+        if interrupt::requested() {
+            // Its processes may have been signalled too: these answers are not kept (`--resume`
+            // sends the batch again).
+            break;
+        }
+        let faults = backend.take_faults();
+        blame_in_batch(&refs, &mut outcomes, &faults);
+        blame_earlier(&mut ctx, &name, &refs, &faults);
         let dt = t0.elapsed().as_secs_f64();
         timing.backend_s += dt;
         timing.cases_sent += refs.len();
@@ -323,7 +338,7 @@ pub fn run_backend(
         ctx.fanout.emit(&Event::BatchFinished { backend: &name });
         timing.verdict_s += t1.elapsed().as_secs_f64();
     }
-    if settings.rerun_regressions {
+    if settings.rerun_regressions && !interrupt::requested() {
         rerun_regressions(backend, set, &mut ctx);
     }
     let mut counts = Counts::default();
@@ -338,7 +353,46 @@ pub fn run_backend(
     (ctx.results, timing)
 }
 
-/// Re-runs the cases of regressions not yet re-run; a test whose outcome changes is a Flake.
+/// Makes the cases of `refs` that a fault names Crash, with the fault's message.
+fn blame_in_batch(refs: &[&Case], outcomes: &mut [CaseOutcome], faults: &[(String, String)]) {
+    for (case, outcome) in refs.iter().zip(outcomes.iter_mut()) {
+        if let Some((_, msg)) = faults.iter().find(|(id, _)| *id == case.id) {
+            *outcome = CaseOutcome::Crash(msg.clone());
+        }
+    }
+}
+
+/// Makes the tests of earlier batches that a fault names Crash (a later answer line showed their
+/// implementation misbehaving), and sends them again with that status (the last record of a test in
+/// results.jsonl wins).
+fn blame_earlier(ctx: &mut Ctx<'_>, backend: &str, refs: &[&Case], faults: &[(String, String)]) {
+    for (id, msg) in faults {
+        if refs.iter().any(|c| c.id == *id) {
+            continue;
+        }
+        for i in 0..ctx.results.len() {
+            let r = &mut ctx.results[i];
+            if r.backend != backend || r.case_id != *id || r.outcome == Outcome::Crash {
+                continue;
+            }
+            r.outcome = Outcome::Crash;
+            r.status = ctx.settings.lists.status(&r.test, Outcome::Crash).0;
+            r.reason = Some(msg.clone());
+            r.observed = None;
+            r.expected = None;
+            r.footprint = None;
+            let r = r.clone();
+            ctx.fanout.emit(&Event::CaseFinished {
+                result: &r,
+                replayed: false,
+            });
+        }
+    }
+}
+
+/// Re-runs the cases of regressions not yet re-run; a test whose outcome changes is a Flake
+/// (deqp-runner's and nextest's rule). A Crash or Timeout is not a flake when the implementation
+/// crashed or hung again during the re-run, on any case: the failure recurred.
 fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>) {
     let name = backend.name().to_string();
     let mut by_case: HashMap<&str, Vec<usize>> = HashMap::new();
@@ -374,8 +428,16 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
     let refs: Vec<&Case> = cases.iter().map(|(c, _, _)| c).collect();
     let mut outcomes = Vec::with_capacity(refs.len());
     for chunk in refs.chunks(backend.batch_size().max(1)) {
-        outcomes.extend(backend.run_batch(chunk));
+        let mut got = backend.run_batch(chunk);
+        blame_in_batch(chunk, &mut got, &backend.take_faults());
+        outcomes.extend(got);
     }
+    if interrupt::requested() {
+        return;
+    }
+    let recurred = refs.iter().zip(&outcomes).find_map(|(c, o)| {
+        matches!(o, CaseOutcome::Crash(_) | CaseOutcome::Timeout(_)).then_some(c.id.as_str())
+    });
     for d in backend.take_diagnostics() {
         ctx.fanout.emit(&Event::Diagnostic {
             backend: &name,
@@ -387,7 +449,14 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
         for (&i, second) in idx.iter().zip(again) {
             let r = &mut ctx.results[i];
             r.rerun = Some(second.outcome);
-            if second.outcome != r.outcome {
+            let died = matches!(r.outcome, Outcome::Crash | Outcome::Timeout);
+            if let (true, Some(on)) = (died && second.outcome != r.outcome, recurred) {
+                r.reason = Some(format!(
+                    "{}; re-run gave {}, but the implementation crashed or hung again in the re-run (on `{on}`): not a flake",
+                    r.reason.clone().unwrap_or_default(),
+                    second.outcome
+                ));
+            } else if second.outcome != r.outcome {
                 r.status = Status::Flake;
                 r.reason = Some(format!(
                     "{}; re-run gave {}",

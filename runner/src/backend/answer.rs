@@ -1,0 +1,131 @@
+//! From an implementation's answer line ([`Reply`]) to the [`CaseOutcome`] of the case it answers
+//! (PROTOCOL.md "Answers"): every API path of the case gets exactly one result or skip; a path
+//! left out, given two results, or not in the case makes the case the implementation's error.
+
+use super::{ApiOutcome, CaseOutcome};
+use shadowcheck_model::{ApiPath, Case};
+use shadowcheck_protocol::{PathResult, PathSkip, Reply};
+
+pub fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
+    match a {
+        // parse_answer never returns a hello.
+        Reply::Hello(_) => CaseOutcome::Error("a hello where an answer was expected".into()),
+        Reply::Skip { reason, .. } => CaseOutcome::Skip(reason),
+        Reply::Error { message, .. } => CaseOutcome::Error(message),
+        Reply::Observation {
+            results, skipped, ..
+        } => {
+            let mut v = Vec::with_capacity(results.len() + skipped.len());
+            for PathResult {
+                api, rgba, stored, ..
+            } in results
+            {
+                match ApiPath::from_key(&api) {
+                    Some(a) if v.iter().any(|(p, _)| *p == a) => {
+                        return CaseOutcome::Error(format!("two results for API path `{api}`"))
+                    }
+                    Some(a) if case.api.contains(&a) => v.push((
+                        a,
+                        ApiOutcome::Rgba {
+                            rgba: rgba.0,
+                            stored,
+                        },
+                    )),
+                    _ => {
+                        return CaseOutcome::Error(format!(
+                            "result for API path `{api}`, which the case does not have"
+                        ))
+                    }
+                }
+            }
+            // A path both answered and listed as skipped keeps its result (judged, never hidden).
+            for PathSkip { api, reason } in skipped {
+                match ApiPath::from_key(&api) {
+                    Some(a) if case.api.contains(&a) => {
+                        if !v.iter().any(|(p, _)| *p == a) {
+                            v.push((a, ApiOutcome::Skip(reason)));
+                        }
+                    }
+                    _ => {
+                        return CaseOutcome::Error(format!(
+                            "skipped API path `{api}`, which the case does not have"
+                        ))
+                    }
+                }
+            }
+            // Every path sent is answered or skipped: a path left out is the implementation's error
+            // (never a silent Skip).
+            if let Some(a) = case.api.iter().find(|a| !v.iter().any(|(p, _)| p == *a)) {
+                return CaseOutcome::Error(format!(
+                    "neither a result nor a skip for API path `{}`",
+                    a.key()
+                ));
+            }
+            CaseOutcome::Observed(v)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A case with the compat paths (ff, glsl120) of a GL 4.6 2D lookup; only `api` matters here.
+    fn compat_case() -> Case {
+        let json = r#"{"id":"x","spec":"gl46","api":["ff","glsl120"],"texture":{"target":"2d","format":"d16","levels":[{"width":1,"height":1,"layers":1,"depth":{"unorm":[7]}}]},"sampler":{"compare_mode":"compare","compare_func":"lequal","min_filter":"nearest","mag_filter":"nearest","wrap_s":"edge","wrap_t":"edge","wrap_r":"edge","border":[0,0,0,0]},"lookup":{"coord":[0.5,0.5,0,1],"dref":0.5}}"#;
+        serde_json::from_str(json).unwrap()
+    }
+
+    #[test]
+    fn skipped_paths_become_skip_with_the_implementations_reason() {
+        let case = compat_case();
+        let line = r#"{"type":"observation","case_id":"x","results":[{"api":"glsl120","rgba":[1,1,1,1],"note":"shadow2D"}],"skipped":[{"api":"ff","reason":"fixed-function has no cube arrays"}]}"#;
+        let out = to_outcome(&case, Reply::parse_answer(line).unwrap());
+        let CaseOutcome::Observed(v) = out else {
+            panic!("{out:?}")
+        };
+        assert!(matches!(
+            v.iter().find(|(a, _)| *a == ApiPath::Glsl120),
+            Some((_, ApiOutcome::Rgba { .. }))
+        ));
+        match v.iter().find(|(a, _)| *a == ApiPath::FixedFunction) {
+            Some((_, ApiOutcome::Skip(m))) => assert_eq!(m, "fixed-function has no cube arrays"),
+            other => panic!("{other:?}"),
+        }
+        // A skipped path the case does not have is the implementation's error, as a stray result is.
+        let bad = r#"{"type":"observation","case_id":"x","results":[],"skipped":[{"api":"core","reason":"no"}]}"#;
+        assert!(matches!(
+            to_outcome(&case, Reply::parse_answer(bad).unwrap()),
+            CaseOutcome::Error(_)
+        ));
+        // An answered path that is also listed keeps its result.
+        let both = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}],"skipped":[{"api":"ff","reason":"no"},{"api":"glsl120","reason":"no"}]}"#;
+        let CaseOutcome::Observed(v) = to_outcome(&case, Reply::parse_answer(both).unwrap()) else {
+            panic!()
+        };
+        assert_eq!(v.len(), 2);
+        assert!(matches!(v[0].1, ApiOutcome::Rgba { .. }));
+    }
+
+    #[test]
+    fn two_results_for_one_path_and_paths_left_out_are_the_implementations_error() {
+        let case = compat_case();
+        let error = |line: &str| match to_outcome(&case, Reply::parse_answer(line).unwrap()) {
+            CaseOutcome::Error(m) => m,
+            other => panic!("{other:?}"),
+        };
+        let dup = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]},{"api":"glsl120","rgba":[0,0,0,1]},{"api":"ff","rgba":[1,1,1,1]}]}"#;
+        assert_eq!(error(dup), "two results for API path `ff`");
+        let empty = r#"{"type":"observation","case_id":"x","results":[]}"#;
+        assert_eq!(
+            error(empty),
+            "neither a result nor a skip for API path `ff`"
+        );
+        let partial =
+            r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}]}"#;
+        assert_eq!(
+            error(partial),
+            "neither a result nor a skip for API path `glsl120`"
+        );
+    }
+}
