@@ -69,7 +69,7 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
     let md = std::fs::read_to_string(out1.join("report.md")).unwrap();
     let dump = md
         .split("```text")
-        .find(|d| d.contains("/lequal/ref=0.5/texel=1,1@core"))
+        .find(|d| d.contains("/lequal/ref=0.5/texel=1_1@core"))
         .expect("dump of texel 1,1");
     assert!(
         dump.contains("expected:  spec value 1; strict {1}; lenient {1}"),
@@ -92,7 +92,7 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
         "{dump}"
     );
     assert!(
-        dump.contains("--cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/texel=1,1$'"),
+        dump.contains("--cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/texel=1_1$'"),
         "{dump}"
     );
     let skip = std::fs::read_to_string(out1.join("report.json")).unwrap();

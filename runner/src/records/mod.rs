@@ -220,10 +220,10 @@ mod tests {
     #[test]
     fn records_round_trip_and_rerun_commands_quote() {
         let mut r = result(
-            "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25,1@core",
+            "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25_1@core",
             Status::Plain(Outcome::Fail),
         );
-        r.case_id = "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25,1".into();
+        r.case_id = "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25_1".into();
         r.observed = Some(Rgba([f64::NAN, 0.0, f64::INFINITY, 1.0]));
         let line = serde_json::to_string(&Line::Result(Box::new(r.clone()))).unwrap();
         let back: Line = serde_json::from_str(&line).unwrap();
@@ -232,7 +232,7 @@ mod tests {
         };
         assert!(back.observed.unwrap().0[0].is_nan());
         assert_eq!(back.status, r.status);
-        assert_eq!(r.rerun_command(), "shadowcheck run --backend b --cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/dt=0\\.25,1$'");
+        assert_eq!(r.rerun_command(), "shadowcheck run --backend b --cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/dt=0\\.25_1$'");
         r.backend = "exec:python3 it's.py".into();
         assert!(r
             .rerun_command()

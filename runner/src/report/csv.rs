@@ -1,9 +1,10 @@
 //! results.csv (`test,status,duration,backend`, deqp-runner's columns plus the backend) and
 //! failures.csv (`test,Status`, a valid `--baseline`).
 //!
-//! Case ids may contain commas (`dt=0.25,0.75,0.75,1`): such fields are quoted as RFC 4180 says
-//! (`"..."`, inner quotes doubled). The baseline reader takes the status after the last comma, so
-//! it reads both quoted and unquoted names.
+//! Test names need no quoting: case ids hold no comma, quote or whitespace (the fixture loader
+//! rejects them, see `shadowcheck_model::validate::id_char_ok`). A field with such a character
+//! (a backend name) is still quoted as RFC 4180 says (`"..."`, inner quotes doubled); the baseline
+//! reader takes the status after the last comma, so it reads both quoted and unquoted names.
 
 use crate::events::{Event, Reporter};
 use crate::records::{Status, TestResult};
