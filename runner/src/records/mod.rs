@@ -106,6 +106,25 @@ impl TestResult {
     }
 }
 
+/// A test's name in a file that holds the results of several backends (results.csv and
+/// failures.csv of a multi-backend run, a baseline meant for one backend of such a run):
+/// `<backend>/<test>`, the backend as a prefix as deqp-runner's per-suite `prefix` does, so that
+/// each name appears once. Characters a test name may not hold (commas, quotes, whitespace: see
+/// `shadowcheck_model::validate::id_char_ok`) become `_` in the backend part.
+pub fn qualified_name(backend: &str, test: &str) -> String {
+    let b: String = backend
+        .chars()
+        .map(|c| {
+            if shadowcheck_model::validate::id_char_ok(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    format!("{b}/{test}")
+}
+
 /// Quotes for a POSIX shell when needed.
 pub fn shell_quote(s: &str) -> String {
     if !s.is_empty()

@@ -303,7 +303,7 @@ pub fn run_backend(
             .zip(outcomes.iter().chain(std::iter::repeat(&missing)))
         {
             for mut r in judge_outcome(&name, case, outcome, per_case, *fixtures) {
-                let (status, note) = lists.status(&r.test, r.outcome);
+                let (status, note) = lists.status(&name, &r.test, r.outcome);
                 r.status = status;
                 if let Some(n) = note {
                     r.reason = Some(match r.reason.take() {
