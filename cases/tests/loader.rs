@@ -262,7 +262,11 @@ fn ids_needing_csv_quoting_are_rejected_naming_file_and_case() {
     ] {
         let f = sample();
         let id = f.cases[1].id.clone();
-        let (text, _) = edited(1, &format!("\"id\":\"{id}\""), &format!("\"id\":\"{id}{bad}\""));
+        let (text, _) = edited(
+            1,
+            &format!("\"id\":\"{id}\""),
+            &format!("\"id\":\"{id}{bad}\""),
+        );
         let e = err(&text);
         let msg = e.to_string();
         assert_eq!(e.field(), Some("id"), "{msg}");
@@ -280,7 +284,10 @@ fn duplicate_api_paths_in_a_case_are_rejected() {
     let e = err(&text);
     let msg = e.to_string();
     assert_eq!(e.case_id(), Some(id.as_str()), "{msg}");
-    assert!(msg.contains("dir/bad.json") && msg.contains("duplicate API path"), "{msg}");
+    assert!(
+        msg.contains("dir/bad.json") && msg.contains("duplicate API path"),
+        "{msg}"
+    );
 }
 
 #[test]

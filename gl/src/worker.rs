@@ -218,7 +218,7 @@ impl Worker {
     /// supported API paths) and the paths left out, each with the reason.
     fn admit(&self, case: &Case) -> Result<(Case, Vec<PathSkip>), String> {
         let (apis, others) = match self.caps.support(case) {
-            Support::Skip(reason) => return Err(reason),
+            Support::Skip(reason) | Support::NotApplicable(reason) => return Err(reason),
             Support::Run { apis, others } => (apis, others),
         };
         if let Err(e) = shadowcheck_model::validate::validate(case) {

@@ -399,7 +399,15 @@ mod tests {
 
     #[test]
     fn ids_that_would_need_csv_quoting_are_rejected() {
-        for bad in ["a/dt=0.2,0.4", "a/\"q\"", "a/it's", "a b", "a\nb", "a\tb", "a\u{7f}"] {
+        for bad in [
+            "a/dt=0.2,0.4",
+            "a/\"q\"",
+            "a/it's",
+            "a b",
+            "a\nb",
+            "a\tb",
+            "a\u{7f}",
+        ] {
             let mut c = case();
             c.id = bad.into();
             let e = validate(&c).unwrap_err().to_string();

@@ -87,7 +87,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     fanout
         .reporters
         .extend(report::file_reporters(&a.out, &FileReports::default()));
-    let summary = run::finish(backends, &mut results, &errors, &mut fanout);
+    let summary = run::finish(backends, &mut results, &errors, 0, &mut fanout);
     if let Some((_, e)) = fanout.error {
         bail!("writing reports in {}: {e}", a.out.display());
     }

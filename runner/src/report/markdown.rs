@@ -53,6 +53,13 @@ pub fn render(results: &[TestResult], errors: &[LoadError], summary: &Summary) -
         }
     }
     let _ = writeln!(s, "| **total** | **{}** |\n", c.total());
+    if c.not_applicable > 0 {
+        let _ = writeln!(
+            s,
+            "Not applicable (not tests, outside the total): {} (spec or API path the backend does not implement).\n",
+            c.not_applicable
+        );
+    }
     let _ = writeln!(
         s,
         "Load errors: {}. Exit code: {}.\n",

@@ -126,7 +126,7 @@ impl TerminalReporter {
                     counts.expected_fail,
                     counts.unexpected_improvement,
                     counts.flake + counts.known_flake
-                );
+                ) + &not_applicable_note(counts.not_applicable);
                 self.err_line(&line);
                 if self.timings {
                     let rate = if timing.backend_s > 0.0 {
@@ -181,7 +181,7 @@ impl TerminalReporter {
                 let c = &summary.counts;
                 writeln!(
                     out,
-                    "\nshadowcheck: {} tests: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} unexpected improvement, {} flake, {} known flake; {} load errors; exit code {}",
+                    "\nshadowcheck: {} tests: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} unexpected improvement, {} flake, {} known flake; {} load errors{}; exit code {}",
                     c.total(),
                     c.pass,
                     c.warn,
@@ -194,10 +194,20 @@ impl TerminalReporter {
                     c.flake,
                     c.known_flake,
                     summary.load_errors,
+                    not_applicable_note(c.not_applicable),
                     summary.exit_code
                 )?;
             }
         }
         Ok(())
+    }
+}
+
+/// `; N not applicable (...)` for the summary line, empty when there are none.
+pub fn not_applicable_note(n: usize) -> String {
+    if n == 0 {
+        String::new()
+    } else {
+        format!("; {n} not applicable (spec or API path the backend does not implement: not tests)")
     }
 }
