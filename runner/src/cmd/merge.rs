@@ -22,6 +22,9 @@ pub struct Args {
     /// Output directories (or results.jsonl files) of the runs to merge.
     #[arg(required = true)]
     inputs: Vec<PathBuf>,
+    /// Keep passing tests in report.json and junit.xml too (as `run --full-report`).
+    #[arg(long)]
+    full_report: bool,
 }
 
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
@@ -84,9 +87,13 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             replayed: false,
         })?;
     }
-    fanout
-        .reporters
-        .extend(report::file_reporters(&a.out, &FileReports::default()));
+    fanout.reporters.extend(report::file_reporters(
+        &a.out,
+        &FileReports {
+            full: a.full_report,
+            ..FileReports::default()
+        },
+    ));
     let summary = run::finish(backends, &mut results, &errors, 0, &mut fanout);
     if let Some((_, e)) = fanout.error {
         bail!("writing reports in {}: {e}", a.out.display());

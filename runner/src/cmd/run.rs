@@ -51,6 +51,10 @@ pub struct Args {
     /// Finish an interrupted run in --out: tests already in results.jsonl are not run again.
     #[arg(long)]
     resume: bool,
+    /// Keep passing tests in report.json and junit.xml too (by default they hold what did not
+    /// pass; results.csv and results.jsonl list every test either way).
+    #[arg(long)]
+    full_report: bool,
     /// Seconds an external implementation may take for one group of cases.
     #[arg(
         long,
@@ -220,9 +224,13 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .reporters
         .push(Box::new(TerminalReporter::new(a.timings, a.verbose)));
     fanout.reporters.push(Box::new(jsonl));
-    fanout
-        .reporters
-        .extend(report::file_reporters(&out_dir, &FileReports::default()));
+    fanout.reporters.extend(report::file_reporters(
+        &out_dir,
+        &FileReports {
+            full: a.full_report,
+            ..FileReports::default()
+        },
+    ));
     let settings = Settings {
         lists,
         rerun_regressions: !a.no_rerun,
