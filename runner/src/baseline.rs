@@ -8,7 +8,7 @@
 //! - Skips and flakes: one regular expression per line (matched anywhere in the test name, anchor
 //!   with `^...$` for exact names), `#` comments.
 
-use crate::records::{qualified_name, Outcome, Status};
+use crate::records::{qualified_name, Outcome, Status, TestResult};
 use regex::RegexSet;
 use std::collections::HashMap;
 use std::path::Path;
@@ -90,6 +90,41 @@ impl Baseline {
     pub fn get_for(&self, backend: &str, test: &str) -> Option<Status> {
         self.get(&qualified_name(backend, test))
             .or_else(|| self.get(test))
+    }
+
+    /// Entries that excuse nothing, one line each (for stderr and report.md), at most `max` lines
+    /// per kind plus a count of the rest: entries whose status is not a failure (a baseline lists
+    /// Fail, Crash or Timeout; `Pass`, `Warn`, `Skip` there have no effect) and entries that name
+    /// no test of `results` (bare, or `<backend>/` prefixed with a backend of the run).
+    pub fn notes(&self, results: &[TestResult], max: usize) -> Vec<String> {
+        let mut names = std::collections::HashSet::new();
+        for r in results {
+            names.insert(r.test.clone());
+            names.insert(qualified_name(&r.backend, &r.test));
+        }
+        let mut not_failures = vec![];
+        let mut unmatched = vec![];
+        for (name, st) in self.entries() {
+            if !matches!(st, Status::Plain(o) if o.is_failure()) {
+                not_failures.push(format!(
+                    "baseline entry `{name},{st}` has no effect: a baseline lists failures (Fail, Crash, Timeout)"
+                ));
+            }
+            if !names.contains(name) {
+                unmatched.push(format!(
+                    "baseline entry `{name}` matches no test of this run"
+                ));
+            }
+        }
+        let mut out = vec![];
+        for list in [not_failures, unmatched] {
+            let n = list.len();
+            out.extend(list.into_iter().take(max));
+            if n > max {
+                out.push(format!("... and {} more like it", n - max));
+            }
+        }
+        out
     }
 
     /// Every entry, sorted by name.
@@ -251,6 +286,42 @@ mod tests {
             Some(Status::Plain(Outcome::Fail))
         );
         assert_eq!(b.get("y/dt=1_0@ff"), Some(Status::Plain(Outcome::Timeout)));
+    }
+
+    #[test]
+    fn entries_that_excuse_nothing_are_noted() {
+        let b = Baseline::parse(
+            "t@core,Fail\nsoft/u@core,Crash\np@core,Pass\ngone@ff,Fail\n",
+            "b",
+        )
+        .unwrap();
+        let result = |backend: &str, test: &str| -> TestResult {
+            serde_json::from_value(serde_json::json!({
+                "backend": backend, "test": test, "case_id": "c", "api": "core",
+                "status": "Pass", "outcome": "Pass", "duration": 0.0,
+                "tags": {"spec": "gl46", "target": "2d", "format": "d16", "func": "lequal",
+                         "filter": "nearest/nearest"}
+            }))
+            .unwrap()
+        };
+        let rs = [
+            result("egl:llvmpipe:core", "t@core"),
+            result("soft", "u@core"),
+            result("soft", "p@core"),
+        ];
+        let notes = b.notes(&rs, 10);
+        assert_eq!(
+            notes,
+            [
+                "baseline entry `p@core,Pass` has no effect: a baseline lists failures (Fail, Crash, Timeout)",
+                "baseline entry `gone@ff` matches no test of this run",
+            ],
+            "{notes:?}"
+        );
+        assert_eq!(
+            b.notes(&[], 1).last().map(String::as_str),
+            Some("... and 3 more like it")
+        );
     }
 
     #[test]

@@ -228,9 +228,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         &out_dir,
         &FileReports {
             full: a.full_report,
+            baseline: a.baseline.is_some().then(|| lists.baseline.clone()),
             ..FileReports::default()
         },
     ));
+    let baseline = a.baseline.is_some().then(|| lists.baseline.clone());
     let settings = Settings {
         lists,
         rerun_regressions: !a.no_rerun,
@@ -240,7 +242,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .jobs
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
-    let (_, summary, _) = schedule::run_all(
+    let (results, summary, _) = schedule::run_all(
         &mut backends,
         &set,
         &prior,
@@ -250,6 +252,12 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         jobs,
     );
     drop(backends);
+    // Baseline entries that excuse nothing: said on stderr (and in report.md), not ignored.
+    if let Some(b) = &baseline {
+        for n in b.notes(&results, 10) {
+            eprintln!("shadowcheck: warning: {n}");
+        }
+    }
     if let Some((_, e)) = fanout.error {
         eprintln!(
             "shadowcheck: error: writing reports in {}: {e}",

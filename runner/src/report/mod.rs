@@ -164,6 +164,8 @@ pub struct FileReports {
     /// Passing tests in report.json and junit.xml too (`--full-report`); by default those files
     /// hold only what did not pass ([`in_detail`]).
     pub full: bool,
+    /// The run's baseline: report.md lists its entries that excuse nothing.
+    pub baseline: Option<crate::baseline::Baseline>,
 }
 
 /// Whether `r` goes into report.json and junit.xml: everything with `full`, otherwise every test
@@ -181,6 +183,7 @@ impl Default for FileReports {
             json: true,
             markdown: true,
             full: false,
+            baseline: None,
         }
     }
 }
@@ -199,7 +202,10 @@ pub fn file_reporters(dir: &Path, which: &FileReports) -> Vec<Box<dyn Reporter>>
         v.push(Box::new(json::JsonReporter::new(dir, which.full)));
     }
     if which.markdown {
-        v.push(Box::new(markdown::MarkdownReporter::new(dir)));
+        v.push(Box::new(markdown::MarkdownReporter::new(
+            dir,
+            which.baseline.clone(),
+        )));
     }
     v
 }
