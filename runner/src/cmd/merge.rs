@@ -38,6 +38,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let mut backends: Vec<String> = vec![];
     let mut meta: Option<RunMeta> = None;
     let mut metas: Vec<(String, RunMeta)> = vec![];
+    let mut read = vec![];
     for input in &a.inputs {
         let path = if input.is_dir() {
             input.join(RESULTS_FILE)
@@ -53,6 +54,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
                 path.display()
             ),
         }
+        read.push((path, p));
+    }
+    // Before anything is combined: unrelated runs and missing shards are refused.
+    check_related(&metas)?;
+    for (path, p) in read {
         if let Some(m) = &p.meta {
             for b in &m.backends {
                 if !backends.contains(b) {
@@ -79,7 +85,6 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
         merged.load_errors.extend(p.load_errors);
     }
-    check_related(&metas)?;
     std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
     let meta = RunMeta {
         backends: backends.clone(),
