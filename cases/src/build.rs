@@ -226,9 +226,9 @@ pub fn num(v: f64) -> String {
     }
 }
 
-/// A comma-separated list of reals for an id.
+/// An underscore-separated list (ids need no CSV quoting) of reals for an id.
 pub fn nums(vs: &[f64]) -> String {
-    vs.iter().map(|v| num(*v)).collect::<Vec<_>>().join(",")
+    vs.iter().map(|v| num(*v)).collect::<Vec<_>>().join("_")
 }
 
 #[cfg(test)]

@@ -41,8 +41,8 @@ pub struct CaseRef {
 impl std::fmt::Display for CaseRef {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match (&self.index, &self.id) {
-            (Some(i), Some(id)) => write!(f, "case #{i} `{id}`"),
-            (None, Some(id)) => write!(f, "case `{id}`"),
+            (Some(i), Some(id)) => write!(f, "case #{i} `{}`", id.escape_debug()),
+            (None, Some(id)) => write!(f, "case `{}`", id.escape_debug()),
             (Some(i), None) => write!(f, "case #{i} (id unknown)"),
             (None, None) => f.write_str("file header"),
         }

@@ -251,3 +251,56 @@ fn lenient_loading_recovers_the_intact_cases_of_a_truncated_file() {
     // Text without the writer's layout still fails as a whole.
     assert!(fixtures::parse_str_lenient(Path::new("t.json"), "{\"schema_version\":1,").is_err());
 }
+
+#[test]
+fn ids_needing_csv_quoting_are_rejected_naming_file_and_case() {
+    for (bad, shown) in [
+        ("/dt=0.2,0.4", "/dt=0.2,0.4`"),
+        ("/q=\\\"x\\\"", "/q=\\\"x\\\"`"),
+        ("/a b", "/a b`"),
+        ("/a\\nb", "/a\\nb`"),
+    ] {
+        let f = sample();
+        let id = f.cases[1].id.clone();
+        let (text, _) = edited(
+            1,
+            &format!("\"id\":\"{id}\""),
+            &format!("\"id\":\"{id}{bad}\""),
+        );
+        let e = err(&text);
+        let msg = e.to_string();
+        assert_eq!(e.field(), Some("id"), "{msg}");
+        assert!(msg.contains("dir/bad.json"), "{msg}");
+        assert!(msg.contains(&format!("case #1 `{id}{shown}")), "{msg}");
+        assert!(!msg.contains('\n'), "the id is shown escaped: {msg}");
+    }
+}
+
+#[test]
+fn duplicate_api_paths_in_a_case_are_rejected() {
+    let f = sample();
+    let api = f.cases[0].api[0].key();
+    let (text, id) = edited(0, "\"api\":[", &format!("\"api\":[\"{api}\","));
+    let e = err(&text);
+    let msg = e.to_string();
+    assert_eq!(e.case_id(), Some(id.as_str()), "{msg}");
+    assert!(
+        msg.contains("dir/bad.json") && msg.contains("duplicate API path"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn generated_ids_need_no_csv_quoting() {
+    for grid in ["smoke", "default"] {
+        for (_, f) in grids::unfilled(grid, 0).unwrap() {
+            for c in &f.cases {
+                assert!(
+                    c.id.chars().all(shadowcheck_model::validate::id_char_ok),
+                    "{grid}: {}",
+                    c.id
+                );
+            }
+        }
+    }
+}

@@ -7,7 +7,7 @@ use super::legacy::Legacy;
 use super::names::{BackendName, ContextApi};
 use super::paths::GlInfo;
 use super::GlError;
-use shadowcheck_model::{Case, Format, Spec};
+use shadowcheck_model::{ApiPath, Case, Format, Spec};
 use shadowcheck_protocol::{
     Capabilities, Hello, PathSkip, Reply, Request, Support, FEATURES, PROTOCOL_VERSION,
 };
@@ -182,6 +182,55 @@ impl Worker {
             .collect()
     }
 
+    /// The specs this kind of context implements, exposed or not: a case of another spec is no
+    /// test of it (not applicable); one of these whose extension the driver lacks is Skip with
+    /// the extension named ([`Self::unexposed`]).
+    fn implemented_specs(&self) -> Vec<Spec> {
+        match self.info().api {
+            ContextApi::Core => vec![Spec::Gl46],
+            ContextApi::Compat => vec![Spec::Gl46, Spec::Arb, Spec::ArbAmbient, Spec::ExtFuncs],
+            ContextApi::Es3 => vec![Spec::Gles32],
+            ContextApi::Es2 => vec![Spec::Es2Ext],
+        }
+    }
+
+    /// Why a case of `spec` cannot run on this context although it implements the spec (the
+    /// driver does not expose what it needs); `None` when it can.
+    fn unexposed(&self, spec: Spec) -> Option<String> {
+        if self.specs().contains(&spec) {
+            return None;
+        }
+        Some(
+            match spec {
+                Spec::Arb => "GL_ARB_shadow not exposed",
+                Spec::ArbAmbient => "GL_ARB_shadow or GL_ARB_shadow_ambient not exposed",
+                Spec::ExtFuncs => "GL_ARB_shadow or GL_EXT_shadow_funcs not exposed",
+                Spec::Es2Ext => "GL_EXT_shadow_samplers not exposed",
+                _ => "not available on this context",
+            }
+            .to_string(),
+        )
+    }
+
+    /// Why API path `api` of this context cannot run here (an extension or GLSL version the
+    /// driver lacks); `None` when it can.
+    fn unavailable(&self, api: ApiPath) -> Option<String> {
+        if self.info().paths().contains(&api) {
+            return None;
+        }
+        Some(
+            match api {
+                ApiPath::ArbFp => {
+                    "GL_ARB_fragment_program or GL_ARB_fragment_program_shadow not exposed"
+                }
+                ApiPath::Glsl130 => "GLSL 1.30 not supported",
+                ApiPath::Es100Ext => "GL_EXT_shadow_samplers not exposed",
+                _ => "not available on this context",
+            }
+            .to_string(),
+        )
+    }
+
     /// What this context can run (declared in the hello).
     pub fn capabilities(&self) -> &Capabilities {
         &self.caps
@@ -190,8 +239,15 @@ impl Worker {
     fn declared_capabilities(&self) -> Capabilities {
         let i = self.info();
         Capabilities {
-            specs: Some(self.specs().iter().map(|s| s.key().to_string()).collect()),
-            api: Some(i.paths().iter().map(|p| p.key().to_string()).collect()),
+            // What the context type implements: the runner counts other specs and paths as not
+            // applicable; what the driver does not expose is Skip with its reason (`admit`).
+            specs: Some(
+                self.implemented_specs()
+                    .iter()
+                    .map(|s| s.key().to_string())
+                    .collect(),
+            ),
+            api: Some(i.api.paths().iter().map(|p| p.key().to_string()).collect()),
             targets: Some(i.targets().iter().map(|t| t.key().to_string()).collect()),
             formats: Some(self.formats().iter().map(|f| f.key().to_string()).collect()),
             features: Some(
@@ -230,20 +286,46 @@ impl Worker {
     /// supported API paths) and the paths left out, each with the reason.
     fn admit(&self, case: &Case) -> Result<(Case, Vec<PathSkip>), String> {
         let (apis, others) = match self.caps.support(case) {
-            Support::Skip(reason) => return Err(reason),
+            Support::Skip(reason) | Support::NotApplicable(reason) => return Err(reason),
             Support::Run { apis, others } => (apis, others),
         };
+        if let Some(reason) = self.unexposed(case.spec) {
+            return Err(reason);
+        }
+        let mut missing: Vec<PathSkip> = vec![];
+        let apis: Vec<ApiPath> = apis
+            .into_iter()
+            .filter(|a| match self.unavailable(*a) {
+                Some(reason) => {
+                    missing.push(PathSkip {
+                        api: a.key().to_string(),
+                        reason,
+                    });
+                    false
+                }
+                None => true,
+            })
+            .collect();
+        if apis.is_empty() {
+            let why: Vec<String> = missing
+                .iter()
+                .map(|m| format!("{}: {}", m.api, m.reason))
+                .collect();
+            return Err(why.join("; "));
+        }
         if let Err(e) = shadowcheck_model::validate::validate(case) {
             return Err(format!("invalid case: {e}"));
         }
+        let unavailable: Vec<String> = missing.iter().map(|m| m.api.clone()).collect();
         let left_out = case
             .api
             .iter()
-            .filter(|a| !apis.contains(a))
+            .filter(|a| !apis.contains(a) && !unavailable.iter().any(|m| m == a.key()))
             .map(|a| PathSkip {
                 api: a.key().to_string(),
                 reason: others.clone().unwrap_or_default(),
             })
+            .chain(missing)
             .collect();
         let mut drawn = case.clone();
         drawn.api = apis;

@@ -17,13 +17,40 @@ fn invalid(case: &Case, field: impl Into<String>, msg: impl Into<String>) -> Mod
     }
 }
 
+/// Whether `c` may appear in a case id. A test name (`<id>@<api>`) is a field of results.csv,
+/// failures.csv and baselines, which deqp-runner splits on every comma without unquoting, so ids
+/// hold no comma, quote, whitespace or control character (as dEQP and piglit names never do).
+pub fn id_char_ok(c: char) -> bool {
+    !(c == ',' || c == '"' || c == '\'' || c.is_whitespace() || c.is_control())
+}
+
 /// Checks the structure of `case`.
 pub fn validate(case: &Case) -> Result<(), ModelError> {
     if case.id.is_empty() {
         return Err(invalid(case, "id", "empty id"));
     }
+    if let Some(c) = case.id.chars().find(|c| !id_char_ok(*c)) {
+        return Err(invalid(
+            case,
+            "id",
+            format!(
+                "{:?} in the id: test names are CSV fields that need no quoting \
+                 (no commas, quotes, whitespace or control characters)",
+                c
+            ),
+        ));
+    }
     if case.api.is_empty() {
         return Err(invalid(case, "api", "no API path"));
+    }
+    for (i, a) in case.api.iter().enumerate() {
+        if case.api[..i].contains(a) {
+            return Err(invalid(
+                case,
+                format!("api[{i}]"),
+                format!("duplicate API path `{}`", a.key()),
+            ));
+        }
     }
     let tex = &case.texture;
     if tex.levels.is_empty() {
@@ -368,6 +395,38 @@ mod tests {
         }];
         let e = validate(&c).unwrap_err().to_string();
         assert!(e.contains("cube map lookups take no texel offset"), "{e}");
+    }
+
+    #[test]
+    fn ids_that_would_need_csv_quoting_are_rejected() {
+        for bad in [
+            "a/dt=0.2,0.4",
+            "a/\"q\"",
+            "a/it's",
+            "a b",
+            "a\nb",
+            "a\tb",
+            "a\u{7f}",
+        ] {
+            let mut c = case();
+            c.id = bad.into();
+            let e = validate(&c).unwrap_err().to_string();
+            assert!(e.contains("field `id`"), "{bad:?}: {e}");
+            assert!(e.contains("need no quoting"), "{bad:?}: {e}");
+        }
+        let mut c = case();
+        c.id = "gl46/2d/d16/nearest/lequal/a=0.25_0.5/offset=-1_0/ref=0.5".into();
+        validate(&c).unwrap();
+    }
+
+    #[test]
+    fn duplicate_api_paths_are_rejected() {
+        let mut c = case();
+        let first = c.api[0];
+        c.api.push(first);
+        let e = validate(&c).unwrap_err().to_string();
+        assert!(e.contains("duplicate API path"), "{e}");
+        assert!(e.contains(&format!("api[{}]", c.api.len() - 1)), "{e}");
     }
 
     #[test]

@@ -1,11 +1,14 @@
 //! Baselines, skips and flakes lists, in deqp-runner's formats.
 //!
-//! - Baseline: CSV lines `test,Status` (e.g. `gl46/2d/d16/...@core,Fail`); `#` starts a comment, blank
-//!   lines are ignored, a test listed twice is an error. `failures.csv` of a run is a valid baseline.
+//! - Baseline: CSV lines `test,Status[,...]` (e.g. `gl46/2d/d16/...@core,Fail`; further fields are
+//!   ignored, as deqp-runner does); `#` starts a comment, blank lines are ignored, a test listed
+//!   twice is an error. `failures.csv` of a run is a valid baseline. A name may carry a backend
+//!   prefix (`egl:llvmpipe:core/gl46/...@core`, as a multi-backend run's failures.csv writes it):
+//!   it then applies to that backend only; a bare name applies to every backend.
 //! - Skips and flakes: one regular expression per line (matched anywhere in the test name, anchor
 //!   with `^...$` for exact names), `#` comments.
 
-use crate::records::{Outcome, Status};
+use crate::records::{qualified_name, Outcome, Status, TestResult};
 use regex::RegexSet;
 use std::collections::HashMap;
 use std::path::Path;
@@ -55,17 +58,12 @@ impl Baseline {
                 line: i + 1,
                 msg,
             };
-            // The status is the last field; test names may not contain commas (ids never do).
-            let (test, status) = line
-                .rsplit_once(',')
-                .ok_or_else(|| bad("expected `test,Status`".into()))?;
+            // As deqp-runner reads it: the name, then the status; further fields (results.csv's
+            // duration and backend) are ignored. A quoted name (RFC 4180) is unquoted.
+            let (test, rest) =
+                split_name(line).ok_or_else(|| bad("expected `test,Status`".into()))?;
+            let status = rest.split(',').next().unwrap_or_default();
             let status: Status = status.trim().parse().map_err(bad)?;
-            let test = test.trim();
-            // A quoted name (RFC 4180, as failures.csv writes names with commas).
-            let test = match test.strip_prefix('"').and_then(|t| t.strip_suffix('"')) {
-                Some(inner) => inner.replace("\"\"", "\""),
-                None => test.to_string(),
-            };
             let status = match status {
                 Status::Plain(o) => Status::Plain(o),
                 // deqp-runner writes the raw status; accept a final status only where it is one.
@@ -86,6 +84,57 @@ impl Baseline {
         self.entries.get(test).copied()
     }
 
+    /// The entry for `test` on `backend`: `<backend>/<test>` (a multi-backend run's failures.csv,
+    /// [`qualified_name`]) before the bare `<test>` (a single-backend run's, which applies to
+    /// every backend of the run).
+    pub fn get_for(&self, backend: &str, test: &str) -> Option<Status> {
+        self.get(&qualified_name(backend, test))
+            .or_else(|| self.get(test))
+    }
+
+    /// Entries that excuse nothing, one line each (for stderr and report.md), at most `max` lines
+    /// per kind plus a count of the rest: entries whose status is not a failure (a baseline lists
+    /// Fail, Crash or Timeout; `Pass`, `Warn`, `Skip` there have no effect) and entries that name
+    /// no test of `results` (bare, or `<backend>/` prefixed with a backend of the run).
+    pub fn notes(&self, results: &[TestResult], max: usize) -> Vec<String> {
+        let mut names = std::collections::HashSet::new();
+        for r in results {
+            names.insert(r.test.clone());
+            names.insert(qualified_name(&r.backend, &r.test));
+        }
+        let mut not_failures = vec![];
+        let mut unmatched = vec![];
+        for (name, st) in self.entries() {
+            if !matches!(st, Status::Plain(o) if o.is_failure()) {
+                not_failures.push(format!(
+                    "baseline entry `{name},{st}` has no effect: a baseline lists failures (Fail, Crash, Timeout)"
+                ));
+            }
+            if !names.contains(name) {
+                unmatched.push(format!(
+                    "baseline entry `{name}` matches no test of this run"
+                ));
+            }
+        }
+        let mut out = vec![];
+        for list in [not_failures, unmatched] {
+            let n = list.len();
+            out.extend(list.into_iter().take(max));
+            if n > max {
+                out.push(format!("... and {} more like it", n - max));
+            }
+        }
+        out
+    }
+
+    /// Every entry, sorted by name.
+    pub fn entries(&self) -> Vec<(&str, Status)> {
+        let mut v: Vec<(&str, Status)> =
+            self.entries.iter().map(|(k, s)| (k.as_str(), *s)).collect();
+        v.sort_by(|a, b| a.0.cmp(b.0));
+        v
+    }
+
     pub fn len(&self) -> usize {
         self.entries.len()
     }
@@ -93,6 +142,29 @@ impl Baseline {
     pub fn is_empty(&self) -> bool {
         self.entries.is_empty()
     }
+}
+
+/// The first CSV field of `line` (unquoted when quoted) and the rest after its comma.
+fn split_name(line: &str) -> Option<(String, &str)> {
+    if let Some(q) = line.strip_prefix('"') {
+        // The closing quote is the first `"` not doubled.
+        let mut i = 0;
+        let b = q.as_bytes();
+        while i < b.len() {
+            if b[i] == b'"' {
+                if b.get(i + 1) == Some(&b'"') {
+                    i += 2;
+                    continue;
+                }
+                let rest = q[i + 1..].strip_prefix(',')?;
+                return Some((q[..i].replace("\"\"", "\""), rest));
+            }
+            i += 1;
+        }
+        return None;
+    }
+    let (name, rest) = line.split_once(',')?;
+    Some((name.trim().to_string(), rest))
 }
 
 /// A list of regular expressions (skips, flakes).
@@ -161,8 +233,9 @@ impl Lists {
     /// a failure matching the flakes list is KnownFlake; a failure listed in the baseline with the
     /// same status is ExpectedFail (with another failure status it stays a regression); a test
     /// listed as failing that passes, warns or is skipped is UnexpectedImprovement.
-    pub fn status(&self, test: &str, outcome: Outcome) -> (Status, Option<String>) {
-        let listed = self.baseline.get(test);
+    /// The baseline entry is looked up per backend ([`Baseline::get_for`]).
+    pub fn status(&self, backend: &str, test: &str, outcome: Outcome) -> (Status, Option<String>) {
+        let listed = self.baseline.get_for(backend, test);
         if outcome.is_failure() {
             if self.flakes.matching(test).is_some() {
                 return (Status::KnownFlake, None);
@@ -202,9 +275,9 @@ mod tests {
         assert!(e.contains("b.csv:2") && e.contains("twice"), "{e}");
         assert!(Baseline::parse("a@core,Broken\n", "b.csv").is_err());
         assert!(Baseline::parse("just-a-name\n", "b.csv").is_err());
-        // Names with commas, quoted or not.
+        // As deqp-runner: name and status, further fields ignored; a quoted name is unquoted.
         let b = Baseline::parse(
-            "\"x/dt=0.25,0.75@core\",Fail\ny/dt=1,0@ff,Timeout\n",
+            "\"x/dt=0.25,0.75@core\",Fail\ny/dt=1_0@ff,Timeout,0.5,egl:llvmpipe:core\n",
             "b.csv",
         )
         .unwrap();
@@ -212,7 +285,59 @@ mod tests {
             b.get("x/dt=0.25,0.75@core"),
             Some(Status::Plain(Outcome::Fail))
         );
-        assert_eq!(b.get("y/dt=1,0@ff"), Some(Status::Plain(Outcome::Timeout)));
+        assert_eq!(b.get("y/dt=1_0@ff"), Some(Status::Plain(Outcome::Timeout)));
+    }
+
+    #[test]
+    fn entries_that_excuse_nothing_are_noted() {
+        let b = Baseline::parse(
+            "t@core,Fail\nsoft/u@core,Crash\np@core,Pass\ngone@ff,Fail\n",
+            "b",
+        )
+        .unwrap();
+        let result = |backend: &str, test: &str| -> TestResult {
+            serde_json::from_value(serde_json::json!({
+                "backend": backend, "test": test, "case_id": "c", "api": "core",
+                "status": "Pass", "outcome": "Pass", "duration": 0.0,
+                "tags": {"spec": "gl46", "target": "2d", "format": "d16", "func": "lequal",
+                         "filter": "nearest/nearest"}
+            }))
+            .unwrap()
+        };
+        let rs = [
+            result("egl:llvmpipe:core", "t@core"),
+            result("soft", "u@core"),
+            result("soft", "p@core"),
+        ];
+        let notes = b.notes(&rs, 10);
+        assert_eq!(
+            notes,
+            [
+                "baseline entry `p@core,Pass` has no effect: a baseline lists failures (Fail, Crash, Timeout)",
+                "baseline entry `gone@ff` matches no test of this run",
+            ],
+            "{notes:?}"
+        );
+        assert_eq!(
+            b.notes(&[], 1).last().map(String::as_str),
+            Some("... and 3 more like it")
+        );
+    }
+
+    #[test]
+    fn a_qualified_entry_applies_to_its_backend_only() {
+        let b = Baseline::parse("egl:llvmpipe:core/t@core,Fail\nu@core,Crash\n", "b").unwrap();
+        let fail = Some(Status::Plain(Outcome::Fail));
+        assert_eq!(b.get_for("egl:llvmpipe:core", "t@core"), fail);
+        assert_eq!(b.get_for("egl:zink:core", "t@core"), None);
+        let crash = Some(Status::Plain(Outcome::Crash));
+        assert_eq!(b.get_for("egl:zink:core", "u@core"), crash);
+        assert_eq!(b.get_for("soft", "u@core"), crash);
+        // Backend names with characters a test name may not hold are written with `_`.
+        assert_eq!(
+            qualified_name("exec:./impl --fast", "t@ff"),
+            "exec:./impl_--fast/t@ff"
+        );
     }
 
     #[test]
@@ -223,31 +348,31 @@ mod tests {
             flakes: RegexList::parse("# flaky\n^flaky/\n", "f").unwrap(),
         };
         assert_eq!(
-            lists.status("f@core", Outcome::Fail).0,
+            lists.status("b", "f@core", Outcome::Fail).0,
             Status::ExpectedFail
         );
         assert_eq!(
-            lists.status("f@core", Outcome::Pass).0,
+            lists.status("b", "f@core", Outcome::Pass).0,
             Status::UnexpectedImprovement(Outcome::Pass)
         );
         assert_eq!(
-            lists.status("f@core", Outcome::Skip).0,
+            lists.status("b", "f@core", Outcome::Skip).0,
             Status::UnexpectedImprovement(Outcome::Skip)
         );
         assert_eq!(
-            lists.status("c@core", Outcome::Fail).0,
+            lists.status("b", "c@core", Outcome::Fail).0,
             Status::Plain(Outcome::Fail)
         );
         assert_eq!(
-            lists.status("new@core", Outcome::Timeout).0,
+            lists.status("b", "new@core", Outcome::Timeout).0,
             Status::Plain(Outcome::Timeout)
         );
         assert_eq!(
-            lists.status("flaky/x@core", Outcome::Crash).0,
+            lists.status("b", "flaky/x@core", Outcome::Crash).0,
             Status::KnownFlake
         );
         assert_eq!(
-            lists.status("flaky/x@core", Outcome::Pass).0,
+            lists.status("b", "flaky/x@core", Outcome::Pass).0,
             Status::Plain(Outcome::Pass)
         );
     }

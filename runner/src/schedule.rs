@@ -26,9 +26,14 @@ pub fn run_all(
     jobs: usize,
 ) -> (Vec<TestResult>, Summary, Vec<Timing>) {
     let names: Vec<String> = backends.iter().map(|b| b.name().to_string()).collect();
+    // Not-applicable tests are outside the test count and the progress bar.
+    let (tests, not_applicable) = backends
+        .iter()
+        .map(|b| set.tests_on(b.capabilities()))
+        .fold((0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     fanout.emit(&Event::RunStarted {
         backends: &names,
-        tests: set.tests() * names.len(),
+        tests,
         out_dir,
     });
     for e in &set.errors {
@@ -48,7 +53,7 @@ pub fn run_all(
         all.extend(r);
         timings.push(t);
     }
-    let summary = finish(names, &mut all, &set.errors, fanout);
+    let summary = finish(names, &mut all, &set.errors, not_applicable, fanout);
     (all, summary, timings)
 }
 

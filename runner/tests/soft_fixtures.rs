@@ -44,7 +44,7 @@ fn every_soft_variant_passes_its_own_specs_fixtures_under_strict() {
                 &format!("^{}/", spec.key()),
             ])
             .args(["--fixtures", from.to_str().unwrap()])
-            .args(["--out", out.to_str().unwrap()])
+            .args(["--out", out.to_str().unwrap(), "--full-report"])
             .output()
             .unwrap();
         let r = Run::of(o);

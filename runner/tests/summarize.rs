@@ -49,7 +49,7 @@ fn summarize_writes_what_summarize_py_wrote() {
         &[
             rec(
                 b,
-                "gl46/a/ref=0.5/dt=0.25,1@core",
+                "gl46/a/ref=0.5/dt=0.25_1@core",
                 "Fail",
                 Some("out"),
                 "lequal",
@@ -75,7 +75,7 @@ fn summarize_writes_what_summarize_py_wrote() {
             // The flake re-run's record of the first test: the last record wins.
             rec(
                 b,
-                "gl46/a/ref=0.5/dt=0.25,1@core",
+                "gl46/a/ref=0.5/dt=0.25_1@core",
                 "Flake",
                 Some("out"),
                 "lequal",
@@ -174,7 +174,7 @@ Status per API path (tests = case x API path):
 |---|---|---|---:|---|
 | core | Fail | `gl46/2d/d16/nearest/nearest/less` | 2 | `gl46/j@core` |
 | core | Fail | `gl46/2d/d16/nearest/nearest/lequal` | 1 | `gl46/l@core` |
-| core | Flake | `gl46/2d/d16/nearest/nearest/lequal` | 1 | `gl46/a/ref=0.5/dt=0.25,1@core` |
+| core | Flake | `gl46/2d/d16/nearest/nearest/lequal` | 1 | `gl46/a/ref=0.5/dt=0.25_1@core` |
 | core | UnexpectedImprovement(Pass) | `gl46/2d/d16/nearest/nearest/less` | 1 | `gl46/i@core` |
 | core | Warn | `gl46/2d/d16/nearest/nearest/gequal` | 1 | `gl46/a0@core` |
 | core | Warn | `gl46/2d/d16/nearest/nearest/lequal` | 1 | `gl46/b,2@core` |

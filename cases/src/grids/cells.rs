@@ -213,7 +213,7 @@ pub fn drafts(cell: &Cell) -> Vec<Draft> {
                     *cell,
                     tex.clone(),
                     lk,
-                    format!("a=0.25,0.5/{tag}/dt={nominal}"),
+                    format!("a=0.25_0.5/{tag}/dt={nominal}"),
                 ));
             }
         }

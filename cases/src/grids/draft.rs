@@ -55,7 +55,7 @@ pub struct Draft {
     pub texture: Texture,
     pub sampler: Sampler,
     pub lookup: Lookup,
-    /// The distinguishing tail of the id, e.g. `ref=0.5/dt=0.25,0.75`.
+    /// The distinguishing tail of the id, e.g. `ref=0.5/dt=0.25_0.75`.
     pub tags: String,
 }
 

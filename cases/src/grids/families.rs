@@ -198,7 +198,7 @@ pub fn pcf(d: &SpecDims) -> Vec<Draft> {
                         c,
                         tex.clone(),
                         lk,
-                        format!("a={a},{b}/ref={r}/dt={}", nums(&PATTERN)),
+                        format!("a={a}_{b}/ref={r}/dt={}", nums(&PATTERN)),
                     ));
                 }
             }
@@ -312,7 +312,7 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
                     c,
                     tex.clone(),
                     lookup(Target::T2d, At::st(s, t), w, h, 0.5),
-                    format!("wrap={wrap}/st={s},{t}/border=1/ref=0.5"),
+                    format!("wrap={wrap}/st={s}_{t}/border=1/ref=0.5"),
                 );
                 x.sampler.wrap_s = wrap;
                 x.sampler.wrap_t = wrap;
@@ -332,7 +332,7 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
                 tex.clone(),
                 lookup(Target::T2d, At::st(-0.25, 0.25), w, h, r),
                 format!(
-                    "wrap=border/st=-0.25,0.25/border={}/ref={}",
+                    "wrap=border/st=-0.25_0.25/border={}/ref={}",
                     num(border),
                     num(r)
                 ),
@@ -361,7 +361,7 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
                 tex.clone(),
                 lookup(Target::T2d, At::st(-0.25, 0.25), w, h, r),
                 format!(
-                    "wrap=border/st=-0.25,0.25/border={}/ref={}",
+                    "wrap=border/st=-0.25_0.25/border={}/ref={}",
                     num(border),
                     num(r)
                 ),
@@ -738,7 +738,7 @@ pub fn ambient(d: &SpecDims) -> Vec<Draft> {
                             (At::st(0.75, 0.25), 0.5, "texel1"),
                         ]
                     } else {
-                        vec![(At::st(0.375, 0.5), 0.5, "a=0.25,0.5")]
+                        vec![(At::st(0.375, 0.5), 0.5, "a=0.25_0.5")]
                     };
                     for (at, r, tag) in lks {
                         let mut x = Draft::new(

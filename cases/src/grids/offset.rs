@@ -100,7 +100,7 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
                     tex,
                     lk,
                     wrap,
-                    format!("wrap={wrap}/texel={i},{j}/offset={},{}/ref=0.5", o[0], o[1]),
+                    format!("wrap={wrap}/texel={i}_{j}/offset={}_{}/ref=0.5", o[0], o[1]),
                 ));
             }
         }
@@ -123,7 +123,7 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
                 lk,
                 wrap,
                 format!(
-                    "wrap={wrap}/texel={i}.25,{j}/offset={},{}/ref=0.5",
+                    "wrap={wrap}/texel={i}.25_{j}/offset={}_{}/ref=0.5",
                     o[0], o[1]
                 ),
             ));
@@ -162,7 +162,7 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
                     c,
                     tex.clone(),
                     lk,
-                    format!("level=1/st=0.1,0.1/offset={},{}/{name}/ref=0.5", o[0], o[1]),
+                    format!("level=1/st=0.1_0.1/offset={}_{}/{name}/ref=0.5", o[0], o[1]),
                 ));
             }
         }
@@ -186,7 +186,7 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
             c,
             tex,
             lk,
-            format!("proj/q=2/texel={i},{j}/offset={},{}/ref=0.5", o[0], o[1]),
+            format!("proj/q=2/texel={i}_{j}/offset={}_{}/ref=0.5", o[0], o[1]),
         ));
     }
     out.extend(other_targets(d));
@@ -246,12 +246,12 @@ fn other_targets(d: &SpecDims) -> Vec<Draft> {
                 let pos = if one_d {
                     format!("{i}")
                 } else {
-                    format!("{i},{j}")
+                    format!("{i}_{j}")
                 };
                 let off = if one_d {
                     format!("{}", o[0])
                 } else {
-                    format!("{},{}", o[0], o[1])
+                    format!("{}_{}", o[0], o[1])
                 };
                 out.push(wrap_draft(
                     c,

@@ -1,6 +1,7 @@
 //! `soft` and `soft:<spec>`: the project's own texture unit (shadowcheck-soft), in process.
 //!
-//! `soft:<spec>` runs one specification variant and skips cases written for another spec;
+//! `soft:<spec>` runs one specification variant; cases written for another spec are not
+//! applicable to it (its capabilities list that one spec);
 //! `soft` runs each case under its own spec's variant. In-process and allocation-light: one
 //! `SoftUnit` per spec, built once; each lookup returns four f32 channels.
 
@@ -35,7 +36,10 @@ impl SoftBackend {
             name: name.to_string(),
             only,
             units: Spec::ALL.iter().map(|_| None).collect(),
-            caps: Capabilities::all(),
+            caps: Capabilities {
+                specs: only.map(|s| vec![s.key().to_string()]),
+                ..Capabilities::all()
+            },
         })
     }
 

@@ -206,10 +206,10 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
         a.dt.iter()
             .map(|v| v.to_string())
             .collect::<Vec<_>>()
-            .join(",")
+            .join("_")
     );
     if offset != [0; 3] {
-        id += &format!("/offset={},{},{}", offset[0], offset[1], offset[2]);
+        id += &format!("/offset={}_{}_{}", offset[0], offset[1], offset[2]);
     }
     Ok(Case {
         id,

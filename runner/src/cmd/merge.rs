@@ -3,6 +3,11 @@
 //!
 //! Each input is read by the shared reader (`records::read_results`: within one file the last
 //! record of a test wins); across inputs a test may appear twice only with the same record.
+//!
+//! Refused (exit 96, saying why), as nextest refuses to merge archives of other builds: inputs
+//! whose selection differs (fixtures, `--cases`, baseline: unrelated runs), an input without
+//! its meta line, and shards that do not make a whole (`K/N` with some K missing, or with
+//! different N, among the inputs of the same backends).
 
 use anyhow::{bail, Context};
 use shadowcheck_runner::events::{Event, Fanout, Reporter};
@@ -11,6 +16,7 @@ use shadowcheck_runner::report::{
     self, jsonl::JsonlReporter, terminal, terminal::TerminalReporter, FileReports,
 };
 use shadowcheck_runner::run;
+use shadowcheck_runner::shard::Shard;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -22,12 +28,17 @@ pub struct Args {
     /// Output directories (or results.jsonl files) of the runs to merge.
     #[arg(required = true)]
     inputs: Vec<PathBuf>,
+    /// Keep passing tests in report.json and junit.xml too (as `run --full-report`).
+    #[arg(long)]
+    full_report: bool,
 }
 
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let mut merged = records::Results::default();
     let mut backends: Vec<String> = vec![];
     let mut meta: Option<RunMeta> = None;
+    let mut metas: Vec<(String, RunMeta)> = vec![];
+    let mut read = vec![];
     for input in &a.inputs {
         let path = if input.is_dir() {
             input.join(RESULTS_FILE)
@@ -36,6 +47,18 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         };
         let p =
             records::read_results(&path).with_context(|| format!("reading {}", path.display()))?;
+        match &p.meta {
+            Some(m) => metas.push((path.display().to_string(), m.clone())),
+            None => bail!(
+                "{}: no meta line (not a results.jsonl written by shadowcheck run)",
+                path.display()
+            ),
+        }
+        read.push((path, p));
+    }
+    // Before anything is combined: unrelated runs and missing shards are refused.
+    check_related(&metas)?;
+    for (path, p) in read {
         if let Some(m) = &p.meta {
             for b in &m.backends {
                 if !backends.contains(b) {
@@ -85,10 +108,14 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             replayed: false,
         })?;
     }
-    fanout
-        .reporters
-        .extend(report::file_reporters(&a.out, &FileReports::default()));
-    let summary = run::finish(backends, &mut results, &errors, &mut fanout);
+    fanout.reporters.extend(report::file_reporters(
+        &a.out,
+        &FileReports {
+            full: a.full_report,
+            ..FileReports::default()
+        },
+    ));
+    let summary = run::finish(backends, &mut results, &errors, 0, &mut fanout);
     let mut ending = Ending::new(summary.exit_code);
     if let Some((_, e)) = &fanout.error {
         eprintln!("shadowcheck: error: {e} (in {})", a.out.display());
@@ -96,4 +123,59 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     }
     terminal::print_final_line(&summary, &ending);
     Ok(ExitCode::from(ending.code))
+}
+
+/// The inputs come from one run: the same selection, and for each set of backends either one
+/// unsharded run or every shard `1..=N` of one `N`.
+fn check_related(metas: &[(String, RunMeta)]) -> anyhow::Result<()> {
+    let Some((first_path, first)) = metas.first() else {
+        return Ok(());
+    };
+    let selection = |m: &RunMeta| (m.fixtures.clone(), m.cases.clone(), m.baseline.clone());
+    for (path, m) in &metas[1..] {
+        if selection(m) != selection(first) {
+            bail!(
+                "{path} and {first_path} are unrelated runs (fixtures {:?} / {:?}, --cases {:?} / {:?}, baseline {:?} / {:?}); merge combines shards or backends of one selection",
+                m.fixtures, first.fixtures, m.cases, first.cases, m.baseline, first.baseline
+            );
+        }
+    }
+    let mut groups: std::collections::BTreeMap<Vec<String>, Vec<(&str, Option<&str>)>> =
+        Default::default();
+    for (path, m) in metas {
+        let mut b = m.backends.clone();
+        b.sort();
+        groups
+            .entry(b)
+            .or_default()
+            .push((path.as_str(), m.shard.as_deref()));
+    }
+    for (backends, inputs) in groups {
+        let shards: Vec<(&str, Shard)> = inputs
+            .iter()
+            .filter_map(|(p, s)| s.and_then(|s| s.parse::<Shard>().ok()).map(|s| (*p, s)))
+            .collect();
+        if shards.is_empty() {
+            continue;
+        }
+        let who = backends.join(", ");
+        if shards.len() != inputs.len() {
+            bail!("runs of {who}: sharded and unsharded inputs mixed");
+        }
+        let n = shards[0].1.n;
+        if let Some((p, s)) = shards.iter().find(|(_, s)| s.n != n) {
+            bail!("runs of {who}: {p} is shard {s}, another input is a shard of {n}");
+        }
+        let missing: Vec<String> = (1..=n)
+            .filter(|k| !shards.iter().any(|(_, s)| s.k == *k))
+            .map(|k| format!("{k}/{n}"))
+            .collect();
+        if !missing.is_empty() {
+            bail!(
+                "runs of {who}: shard(s) {} missing (merge needs all {n} shards)",
+                missing.join(", ")
+            );
+        }
+    }
+    Ok(())
 }

@@ -40,7 +40,27 @@ pub struct Args {
 }
 
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
-    let input = load::read_inputs(&a.inputs)?;
+    // `report out/* -o out/html` a second time: out/html is among the inputs; it is skipped.
+    let out = std::fs::canonicalize(&a.out).ok();
+    let inputs: Vec<PathBuf> = a
+        .inputs
+        .iter()
+        .filter(|p| {
+            let same = out.is_some() && std::fs::canonicalize(p).ok() == out;
+            if same {
+                eprintln!(
+                    "shadowcheck report: skipping input {}: it is the output directory",
+                    p.display()
+                );
+            }
+            !same
+        })
+        .cloned()
+        .collect();
+    if inputs.is_empty() {
+        anyhow::bail!("no inputs left once the output directory is left out");
+    }
+    let input = load::read_inputs(&inputs)?;
     let fixtures: Vec<PathBuf> = if !a.fixtures.is_empty() {
         a.fixtures.clone()
     } else {

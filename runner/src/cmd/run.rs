@@ -53,6 +53,10 @@ pub struct Args {
     /// Finish an interrupted run in --out: tests already in results.jsonl are not run again.
     #[arg(long)]
     resume: bool,
+    /// Keep passing tests in report.json and junit.xml too (by default they hold what did not
+    /// pass; results.csv and results.jsonl list every test either way).
+    #[arg(long)]
+    full_report: bool,
     /// Seconds an external implementation may take for one group of cases.
     #[arg(
         long,
@@ -256,9 +260,15 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .reporters
         .push(Box::new(TerminalReporter::new(a.timings, a.verbose)));
     fanout.reporters.push(Box::new(jsonl));
-    fanout
-        .reporters
-        .extend(report::file_reporters(&out_dir, &FileReports::default()));
+    fanout.reporters.extend(report::file_reporters(
+        &out_dir,
+        &FileReports {
+            full: a.full_report,
+            baseline: a.baseline.is_some().then(|| lists.baseline.clone()),
+            ..FileReports::default()
+        },
+    ));
+    let baseline = a.baseline.is_some().then(|| lists.baseline.clone());
     let settings = Settings {
         lists,
         rerun_regressions: !a.no_rerun,
@@ -279,6 +289,12 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         jobs,
     );
     drop(backends);
+    // Baseline entries that excuse nothing: said on stderr (and in report.md), not ignored.
+    if let Some(b) = &baseline {
+        for n in b.notes(&results, 10) {
+            eprintln!("shadowcheck: warning: {n}");
+        }
+    }
     // The exit code, decided once, printed as it is returned.
     let mut ending = Ending::new(summary.exit_code);
     if !missing.is_empty() && !a.skip_missing {

@@ -106,6 +106,25 @@ impl TestResult {
     }
 }
 
+/// A test's name in a file that holds the results of several backends (results.csv and
+/// failures.csv of a multi-backend run, a baseline meant for one backend of such a run):
+/// `<backend>/<test>`, the backend as a prefix as deqp-runner's per-suite `prefix` does, so that
+/// each name appears once. Characters a test name may not hold (commas, quotes, whitespace: see
+/// `shadowcheck_model::validate::id_char_ok`) become `_` in the backend part.
+pub fn qualified_name(backend: &str, test: &str) -> String {
+    let b: String = backend
+        .chars()
+        .map(|c| {
+            if shadowcheck_model::validate::id_char_ok(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    format!("{b}/{test}")
+}
+
 /// Quotes for a POSIX shell when needed.
 pub fn shell_quote(s: &str) -> String {
     if !s.is_empty()
@@ -228,10 +247,10 @@ mod tests {
     #[test]
     fn records_round_trip_and_rerun_commands_quote() {
         let mut r = result(
-            "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25,1@core",
+            "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25_1@core",
             Status::Plain(Outcome::Fail),
         );
-        r.case_id = "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25,1".into();
+        r.case_id = "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25_1".into();
         r.observed = Some(Rgba([f64::NAN, 0.0, f64::INFINITY, 1.0]));
         let line = serde_json::to_string(&Line::Result(Box::new(r.clone()))).unwrap();
         let back: Line = serde_json::from_str(&line).unwrap();
@@ -240,7 +259,7 @@ mod tests {
         };
         assert!(back.observed.unwrap().0[0].is_nan());
         assert_eq!(back.status, r.status);
-        assert_eq!(r.rerun_command(), "shadowcheck run --backend b --cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/dt=0\\.25,1$'");
+        assert_eq!(r.rerun_command(), "shadowcheck run --backend b --cases '^gl46/2d/d16/nearest/lequal/ref=0\\.5/dt=0\\.25_1$'");
         r.backend = "exec:python3 it's.py".into();
         assert!(r
             .rerun_command()

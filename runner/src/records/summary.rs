@@ -19,6 +19,14 @@ pub struct Counts {
     pub unexpected_improvement: usize,
     pub flake: usize,
     pub known_flake: usize,
+    /// Not tests: API paths (or cases) whose spec or path the backend does not implement, as a
+    /// dEQP caselist would not list them. Outside [`Counts::total`]; no record in any file.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub not_applicable: usize,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 impl Counts {

@@ -1,4 +1,5 @@
-//! junit.xml: one test suite per backend, one test case per test (quick-junit).
+//! junit.xml: one test suite per backend, one test case per test that did not pass (every test
+//! with `run --full-report`; as deqp-runner's junit.xml, which lists failures) (quick-junit).
 //!
 //! Fail and UnexpectedImprovement are `<failure>` (both make the run exit non-zero), Crash and
 //! Timeout are `<error>`, Skip is `<skipped>`; Pass, Warn, ExpectedFail, Flake and KnownFlake are
@@ -12,12 +13,14 @@ use std::time::Duration;
 
 pub struct JunitReporter {
     dir: PathBuf,
+    full: bool,
 }
 
 impl JunitReporter {
-    pub fn new(dir: &Path) -> JunitReporter {
+    pub fn new(dir: &Path, full: bool) -> JunitReporter {
         JunitReporter {
             dir: dir.to_path_buf(),
+            full,
         }
     }
 }
@@ -62,17 +65,19 @@ fn case(r: &TestResult) -> TestCase {
     tc
 }
 
-/// The JUnit document for `results` (in report order, so one suite per backend).
-pub fn to_xml(results: &[TestResult]) -> Result<String, quick_junit::SerializeError> {
+/// The JUnit document for `results` (in report order, so one suite per backend, also for a
+/// backend whose every test passed); passing tests are test cases only with `full`.
+pub fn to_xml(results: &[TestResult], full: bool) -> Result<String, quick_junit::SerializeError> {
     let mut report = Report::new("shadowcheck");
     let mut suite: Option<TestSuite> = None;
     for r in results {
         if let Some(done) = suite.take_if(|s| s.name.as_str() != r.backend) {
             report.add_test_suite(done);
         }
-        suite
-            .get_or_insert_with(|| TestSuite::new(r.backend.clone()))
-            .add_test_case(case(r));
+        let s = suite.get_or_insert_with(|| TestSuite::new(r.backend.clone()));
+        if super::in_detail(r, full) {
+            s.add_test_case(case(r));
+        }
     }
     if let Some(s) = suite {
         report.add_test_suite(s);
@@ -83,7 +88,7 @@ pub fn to_xml(results: &[TestResult]) -> Result<String, quick_junit::SerializeEr
 impl Reporter for JunitReporter {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
         if let Event::RunFinished { results, .. } = ev {
-            let xml = to_xml(results).map_err(std::io::Error::other)?;
+            let xml = to_xml(results, self.full).map_err(std::io::Error::other)?;
             super::atomic::write(&self.dir.join("junit.xml"), xml.as_bytes())?;
         }
         Ok(())

@@ -1,6 +1,7 @@
 //! report.md: totals, tables by spec / func / filter / format, load errors and failure dumps.
 
 use super::{breakdown, dump, wants_dump};
+use crate::baseline::Baseline;
 use crate::events::{Event, Reporter};
 use crate::records::{LoadError, Summary, TestResult};
 use std::fmt::Write as _;
@@ -11,15 +12,21 @@ const MAX_DUMPS: usize = 500;
 
 pub struct MarkdownReporter {
     dir: PathBuf,
+    baseline: Option<Baseline>,
 }
 
 impl MarkdownReporter {
-    pub fn new(dir: &Path) -> MarkdownReporter {
+    /// `baseline`: the run's baseline, whose entries that excuse nothing get a section.
+    pub fn new(dir: &Path, baseline: Option<Baseline>) -> MarkdownReporter {
         MarkdownReporter {
             dir: dir.to_path_buf(),
+            baseline,
         }
     }
 }
+
+/// Baseline entries shown in report.md per kind (the rest are counted).
+pub const MAX_BASELINE_NOTES: usize = 50;
 
 pub fn render(results: &[TestResult], errors: &[LoadError], summary: &Summary) -> String {
     let mut s = String::new();
@@ -53,6 +60,13 @@ pub fn render(results: &[TestResult], errors: &[LoadError], summary: &Summary) -
         }
     }
     let _ = writeln!(s, "| **total** | **{}** |\n", c.total());
+    if c.not_applicable > 0 {
+        let _ = writeln!(
+            s,
+            "Not applicable (not tests, outside the total): {} (spec or API path the backend does not implement).\n",
+            c.not_applicable
+        );
+    }
     let _ = writeln!(
         s,
         "Load errors: {}. Exit code from these results: {} ({}); the run's own exit code also counts backends that could not start, reports that could not be written and an interruption (the last line the run printed).\n",
@@ -115,10 +129,17 @@ impl Reporter for MarkdownReporter {
             summary,
         } = ev
         {
-            super::atomic::write(
-                &self.dir.join("report.md"),
-                render(results, load_errors, summary).as_bytes(),
-            )?;
+            let mut text = render(results, load_errors, summary);
+            if let Some(b) = &self.baseline {
+                let notes = b.notes(results, MAX_BASELINE_NOTES);
+                if !notes.is_empty() {
+                    let _ = writeln!(text, "\n## Baseline entries that excuse nothing\n");
+                    for n in notes {
+                        let _ = writeln!(text, "- {n}");
+                    }
+                }
+            }
+            super::atomic::write(&self.dir.join("report.md"), text.as_bytes())?;
         }
         Ok(())
     }

@@ -21,7 +21,7 @@ pub mod markdown;
 pub mod terminal;
 
 use crate::events::Reporter;
-use crate::records::{Outcome, TestResult};
+use crate::records::{Outcome, Status, TestResult};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -162,6 +162,18 @@ pub struct FileReports {
     pub junit: bool,
     pub json: bool,
     pub markdown: bool,
+    /// Passing tests in report.json and junit.xml too (`--full-report`); by default those files
+    /// hold only what did not pass ([`in_detail`]).
+    pub full: bool,
+    /// The run's baseline: report.md lists its entries that excuse nothing.
+    pub baseline: Option<crate::baseline::Baseline>,
+}
+
+/// Whether `r` goes into report.json and junit.xml: everything with `full`, otherwise every test
+/// that did not pass (deqp-runner's habit: results.csv for everything, details for what failed).
+/// Pass results are counted in the summary and listed in results.csv and results.jsonl.
+pub fn in_detail(r: &TestResult, full: bool) -> bool {
+    full || r.status != Status::Plain(Outcome::Pass)
 }
 
 impl Default for FileReports {
@@ -171,6 +183,8 @@ impl Default for FileReports {
             junit: true,
             json: true,
             markdown: true,
+            full: false,
+            baseline: None,
         }
     }
 }
@@ -183,13 +197,16 @@ pub fn file_reporters(dir: &Path, which: &FileReports) -> Vec<Box<dyn Reporter>>
         v.push(Box::new(csv::CsvReporter::new(dir)));
     }
     if which.junit {
-        v.push(Box::new(junit::JunitReporter::new(dir)));
+        v.push(Box::new(junit::JunitReporter::new(dir, which.full)));
     }
     if which.json {
-        v.push(Box::new(json::JsonReporter::new(dir)));
+        v.push(Box::new(json::JsonReporter::new(dir, which.full)));
     }
     if which.markdown {
-        v.push(Box::new(markdown::MarkdownReporter::new(dir)));
+        v.push(Box::new(markdown::MarkdownReporter::new(
+            dir,
+            which.baseline.clone(),
+        )));
     }
     v
 }

@@ -128,7 +128,7 @@ impl TerminalReporter {
                     counts.expected_fail,
                     counts.unexpected_improvement,
                     counts.flake + counts.known_flake
-                );
+                ) + &not_applicable_note(counts.not_applicable);
                 self.err_line(&line);
                 if self.timings {
                     let rate = if timing.backend_s > 0.0 {
@@ -202,7 +202,7 @@ impl TerminalReporter {
 pub fn final_line(summary: &Summary, ending: &Ending) -> String {
     let c = &summary.counts;
     format!(
-        "shadowcheck: {} tests: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} unexpected improvement, {} flake, {} known flake; {} load errors; {}",
+        "shadowcheck: {} tests: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} unexpected improvement, {} flake, {} known flake; {} load errors{}; {}",
         c.total(),
         c.pass,
         c.warn,
@@ -215,6 +215,7 @@ pub fn final_line(summary: &Summary, ending: &Ending) -> String {
         c.flake,
         c.known_flake,
         summary.load_errors,
+        not_applicable_note(c.not_applicable),
         ending.describe()
     )
 }
@@ -225,4 +226,13 @@ pub fn print_final_line(summary: &Summary, ending: &Ending) {
     let mut out = std::io::stdout().lock();
     let _ = writeln!(out, "\n{}", final_line(summary, ending));
     let _ = out.flush();
+}
+
+/// `; N not applicable (...)` for the summary line, empty when there are none.
+pub fn not_applicable_note(n: usize) -> String {
+    if n == 0 {
+        String::new()
+    } else {
+        format!("; {n} not applicable (spec or API path the backend does not implement: not tests)")
+    }
 }

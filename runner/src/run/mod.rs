@@ -1,7 +1,9 @@
 //! The run: cases in, events out.
 //!
-//! For each backend: cases already finished in a resumed run are replayed; the skips list and the
-//! backend's capabilities turn the rest into Skip (with the reason) or a case to send; cases go to
+//! For each backend: API paths (or whole cases) whose spec or path the backend does not implement
+//! are no tests of it (not applicable: counted apart, no record); cases already finished in a
+//! resumed run are replayed; the skips list and the backend's capabilities turn the rest into Skip
+//! (with the reason) or a case to send; cases go to
 //! the backend in batches, each answer is judged ([`crate::verdict`]), given its final status by
 //! the lists ([`crate::baseline`]) and sent as a `CaseFinished` event (results.jsonl is written by a
 //! reporter, written per batch). Regressions are then re-run once: a different outcome is a Flake,
@@ -17,7 +19,7 @@ use crate::records::{Counts, LoadError, Outcome, Results, Status, Summary, Tags,
 use crate::shard::Shard;
 use crate::verdict;
 use shadowcheck_model::{ApiPath, Case};
-use shadowcheck_protocol::Rgba;
+use shadowcheck_protocol::{Capabilities, Rgba};
 use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -106,6 +108,32 @@ impl CaseSet {
     }
     pub fn tests(&self) -> usize {
         self.cases.iter().map(|l| l.case.api.len()).sum()
+    }
+    /// The tests of this set on a backend with `caps`: `(tests, not applicable)`. A case's API
+    /// paths, or the whole case, whose spec or path the backend does not implement are no tests
+    /// of it ([`Support::NotApplicable`]); they are counted apart, outside the test count and the
+    /// progress bar.
+    pub fn tests_on(&self, caps: &Capabilities) -> (usize, usize) {
+        let mut n = (0, 0);
+        for l in &self.cases {
+            let applicable = applicable_apis(caps, &l.case).map_or(0, |(a, _)| a.len());
+            n.0 += applicable;
+            n.1 += l.case.api.len() - applicable;
+        }
+        n
+    }
+}
+
+/// The API paths of `case` that are tests of a backend with `caps`, and the reason to Skip them
+/// all when the backend lacks the case's target or format; `None` when none is applicable.
+fn applicable_apis(caps: &Capabilities, case: &Case) -> Option<(Vec<ApiPath>, Option<String>)> {
+    match caps.support(case) {
+        Support::NotApplicable(_) => None,
+        Support::Skip(reason) => {
+            let apis = case.api.iter().copied().filter(|a| caps.implements_api(*a));
+            Some((apis.collect(), Some(reason)))
+        }
+        Support::Run { apis, .. } => Some((apis, None)),
     }
 }
 
@@ -212,9 +240,10 @@ pub fn run_backend(
         results: Vec::with_capacity(set.tests()),
     };
     let mut timing = Timing::default();
+    let (tests, not_applicable) = set.tests_on(backend.capabilities());
     ctx.fanout.emit(&Event::BackendStarted {
         backend: &name,
-        tests: set.tests(),
+        tests,
     });
     let lists = &settings.lists;
     let file_of = |l: &Loaded| {
@@ -226,20 +255,23 @@ pub fn run_backend(
     for l in &set.cases {
         let case = &l.case;
         let fixtures = file_of(l);
+        // Only the API paths this backend implements are tests of it.
+        let Some((applicable, skip_reason)) = applicable_apis(backend.capabilities(), case) else {
+            continue;
+        };
         // Resumed: every test of the case already on disk.
-        let done: Vec<&TestResult> = case
-            .api
+        let done: Vec<&TestResult> = applicable
             .iter()
             .filter_map(|&a| prior.get(&name, &TestResult::name(&case.id, a)))
             .collect();
-        if done.len() == case.api.len() {
+        if done.len() == applicable.len() {
             for r in done {
                 ctx.finish(r.clone(), true);
             }
             continue;
         }
-        let mut apis = Vec::with_capacity(case.api.len());
-        for &api in &case.api {
+        let mut apis = Vec::with_capacity(applicable.len());
+        for &api in &applicable {
             let test = TestResult::name(&case.id, api);
             match lists.skips.matching(&test) {
                 Some(re) => {
@@ -250,45 +282,27 @@ pub fn run_backend(
                 None => apis.push(api),
             }
         }
+        if let Some(reason) = skip_reason {
+            for &api in &apis {
+                let mut r = base_result(&name, case, api, fixtures);
+                r.reason = Some(reason.clone());
+                ctx.finish(r, false);
+            }
+            continue;
+        }
         if apis.is_empty() {
             continue;
         }
-        let narrowed = if apis.len() == case.api.len() {
-            Cow::Borrowed(case)
+        if apis.len() == case.api.len() {
+            to_send.push((Cow::Borrowed(case), fixtures));
         } else {
-            Cow::Owned(Case {
-                api: apis,
-                ..case.clone()
-            })
-        };
-        match backend.capabilities().support(&narrowed) {
-            Support::Skip(reason) => {
-                for &api in &narrowed.api {
-                    let mut r = base_result(&name, case, api, fixtures);
-                    r.reason = Some(reason.clone());
-                    ctx.finish(r, false);
-                }
-            }
-            Support::Run { apis, others } => {
-                if let Some(reason) = others {
-                    for &api in narrowed.api.iter().filter(|a| !apis.contains(a)) {
-                        let mut r = base_result(&name, case, api, fixtures);
-                        r.reason = Some(reason.clone());
-                        ctx.finish(r, false);
-                    }
-                }
-                if apis.len() == narrowed.api.len() {
-                    to_send.push((narrowed, fixtures));
-                } else {
-                    to_send.push((
-                        Cow::Owned(Case {
-                            api: apis,
-                            ..narrowed.into_owned()
-                        }),
-                        fixtures,
-                    ));
-                }
-            }
+            to_send.push((
+                Cow::Owned(Case {
+                    api: apis,
+                    ..case.clone()
+                }),
+                fixtures,
+            ));
         }
     }
     let batch = backend.batch_size().max(1);
@@ -318,7 +332,7 @@ pub fn run_backend(
             .zip(outcomes.iter().chain(std::iter::repeat(&missing)))
         {
             for mut r in judge_outcome(&name, case, outcome, per_case, *fixtures) {
-                let (status, note) = lists.status(&r.test, r.outcome);
+                let (status, note) = lists.status(&name, &r.test, r.outcome);
                 r.status = status;
                 if let Some(n) = note {
                     r.reason = Some(match r.reason.take() {
@@ -345,6 +359,7 @@ pub fn run_backend(
     for r in &ctx.results {
         counts.add(r.status);
     }
+    counts.not_applicable = not_applicable;
     ctx.fanout.emit(&Event::BackendFinished {
         backend: &name,
         counts: &counts,
@@ -376,7 +391,11 @@ fn blame_earlier(ctx: &mut Ctx<'_>, backend: &str, refs: &[&Case], faults: &[(St
                 continue;
             }
             r.outcome = Outcome::Crash;
-            r.status = ctx.settings.lists.status(&r.test, Outcome::Crash).0;
+            r.status = ctx
+                .settings
+                .lists
+                .status(&r.backend, &r.test, Outcome::Crash)
+                .0;
             r.reason = Some(msg.clone());
             r.observed = None;
             r.expected = None;
@@ -481,15 +500,18 @@ pub fn sort_results(results: &mut [TestResult]) {
     });
 }
 
-/// Sorts, totals and announces the end of a run (shared with `merge`).
+/// Sorts, totals and announces the end of a run (shared with `merge`). `not_applicable`: the
+/// count of not-applicable tests ([`CaseSet::tests_on`]; `merge` does not know it and passes 0).
 pub fn finish(
     backends: Vec<String>,
     results: &mut [TestResult],
     errors: &[LoadError],
+    not_applicable: usize,
     fanout: &mut Fanout,
 ) -> Summary {
     sort_results(results);
-    let summary = Summary::new(backends, results, errors.len());
+    let mut summary = Summary::new(backends, results, errors.len());
+    summary.counts.not_applicable = not_applicable;
     fanout.emit(&Event::RunFinished {
         results,
         load_errors: errors,

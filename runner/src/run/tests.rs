@@ -43,12 +43,23 @@ impl Backend for Fake {
     }
 }
 
-/// Counts CaseFinished events.
-struct Count(std::rc::Rc<std::cell::Cell<usize>>);
+/// Counts CaseFinished events; keeps the test count of BackendStarted and the not-applicable
+/// count of BackendFinished.
+#[derive(Default)]
+struct Seen {
+    finished: usize,
+    started_tests: usize,
+    not_applicable: usize,
+}
+struct Count(std::rc::Rc<std::cell::RefCell<Seen>>);
 impl Reporter for Count {
     fn event(&mut self, ev: &Event<'_>) -> std::io::Result<()> {
-        if let Event::CaseFinished { .. } = ev {
-            self.0.set(self.0.get() + 1);
+        let mut seen = self.0.borrow_mut();
+        match ev {
+            Event::CaseFinished { .. } => seen.finished += 1,
+            Event::BackendStarted { tests, .. } => seen.started_tests = *tests,
+            Event::BackendFinished { counts, .. } => seen.not_applicable = counts.not_applicable,
+            _ => {}
         }
         Ok(())
     }
@@ -110,7 +121,7 @@ fn case(id: &str, spec: Spec, api: Vec<ApiPath>) -> Case {
 }
 
 #[test]
-fn capabilities_and_skips_narrow_what_is_sent_and_every_path_gets_a_result() {
+fn capabilities_and_skips_narrow_what_is_sent_and_not_applicable_paths_are_no_tests() {
     let set = CaseSet {
         files: vec!["f.json".into()],
         cases: vec![
@@ -126,6 +137,20 @@ fn capabilities_and_skips_narrow_what_is_sent_and_every_path_gets_a_result() {
                 case: case("gles32/b", Spec::Gles32, vec![ApiPath::Es300]),
                 file: 0,
             },
+            Loaded {
+                case: Case {
+                    texture: Texture {
+                        target: Target::T1d,
+                        ..case("x", Spec::Gl46, vec![]).texture
+                    },
+                    ..case(
+                        "gl46/c",
+                        Spec::Gl46,
+                        vec![ApiPath::GlslCore, ApiPath::FixedFunction],
+                    )
+                },
+                file: 0,
+            },
         ],
         errors: vec![],
     };
@@ -133,6 +158,7 @@ fn capabilities_and_skips_narrow_what_is_sent_and_every_path_gets_a_result() {
         caps: Capabilities {
             specs: Some(vec!["gl46".into()]),
             api: Some(vec!["core".into(), "glsl130".into()]),
+            targets: Some(vec!["2d".into()]),
             ..Capabilities::default()
         },
         sent: vec![],
@@ -144,18 +170,25 @@ fn capabilities_and_skips_narrow_what_is_sent_and_every_path_gets_a_result() {
         },
         ..Settings::default()
     };
-    let n = std::rc::Rc::new(std::cell::Cell::new(0));
+    let seen = std::rc::Rc::new(std::cell::RefCell::new(Seen::default()));
     let mut fanout = Fanout::default();
-    fanout.reporters.push(Box::new(Count(n.clone())));
+    fanout.reporters.push(Box::new(Count(seen.clone())));
     let (results, timing) =
         run_backend(&mut fake, &set, &Results::default(), &settings, &mut fanout);
     assert_eq!(fake.sent, [("gl46/a".to_string(), vec![ApiPath::GlslCore])]);
     assert_eq!(timing.cases_sent, 1);
-    assert_eq!(n.get(), 4);
+    // 6 API paths: gl46/a@ff, gles32/b@es300 and gl46/c@ff are no tests of this backend (spec or
+    // path not implemented): no record, outside the count. The other 3 are tests.
+    let seen = seen.borrow();
+    assert_eq!(seen.finished, 3);
+    assert_eq!(seen.started_tests, 3);
+    assert_eq!(seen.not_applicable, 3);
+    assert_eq!(set.tests_on(&fake.caps), (3, 3));
     let by: HashMap<&str, (&Status, Option<&str>)> = results
         .iter()
         .map(|r| (r.test.as_str(), (&r.status, r.reason.as_deref())))
         .collect();
+    assert_eq!(by.len(), 3, "{by:?}");
     assert_eq!(by["gl46/a@core"].0, &Status::Plain(Outcome::Pass));
     assert_eq!(
         by["gl46/a@glsl130"],
@@ -164,18 +197,12 @@ fn capabilities_and_skips_narrow_what_is_sent_and_every_path_gets_a_result() {
             Some("skips list: `@glsl130$`")
         )
     );
+    // A target the backend lacks is a real Skip, with its reason.
     assert_eq!(
-        by["gl46/a@ff"],
+        by["gl46/c@core"],
         (
             &Status::Plain(Outcome::Skip),
-            Some("API path not supported by this backend")
-        )
-    );
-    assert_eq!(
-        by["gles32/b@es300"],
-        (
-            &Status::Plain(Outcome::Skip),
-            Some("spec `gles32` not supported by this backend")
+            Some("target `1d` not supported by this backend")
         )
     );
 }

@@ -69,7 +69,7 @@ pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
     );
     Case {
         id: format!(
-            "gl46/2d/d16/nearest/{}/ref={dref}/texel={x},{y}",
+            "gl46/2d/d16/nearest/{}/ref={dref}/texel={x}_{y}",
             func.key()
         ),
         spec: Spec::Gl46,

@@ -1,0 +1,192 @@
+#!/bin/bash
+# The attacks of issue 14 ("the run's contract with CI") against a release build, one line each:
+#   attack | what was seen | exit code | OK (contract kept) or BROKEN
+# Usage, from the repository root:  bash runner/tests/chaos.sh [path/to/shadowcheck]
+# Needs python3; the GL attacks need Mesa (as installed by .ci/run) and are SKIPPED without it; the
+# full-disk attack needs a tmpfs mount (root) and is SKIPPED without one. Takes a few minutes.
+# It only reports: its exit status is the number of BROKEN lines.
+set -u
+SC=${1:-target/release/shadowcheck}
+[ -x "$SC" ] || { echo "no binary at $SC (cargo build --release -p shadowcheck-runner)"; exit 2; }
+SC=$(cd "$(dirname "$SC")" && pwd)/$(basename "$SC")
+T=$(mktemp -d /tmp/shadowcheck-chaos.XXXXXX)
+BROKEN=0
+line() { # attack seen code verdict
+  printf '%-44s | %-62s | %4s | %s\n' "$1" "$2" "$3" "$4"
+  [ "$4" = BROKEN ] && BROKEN=$((BROKEN + 1))
+}
+ok_if() { if eval "$1"; then echo OK; else echo BROKEN; fi; }
+panicked() { grep -q 'panicked' "$1" && echo "panic" || echo "no panic"; }
+
+"$SC" gen --grid smoke -o "$T/fx" >/dev/null 2>&1
+FX="$T/fx"
+HAVE_GL=no
+"$SC" run -b egl:llvmpipe:core --fixtures "$FX" --cases '^gl46/' -o "$T/glprobe" >/dev/null 2>&1
+[ -f "$T/glprobe/results.csv" ] && grep -q ',Pass,' "$T/glprobe/results.csv" && HAVE_GL=yes
+
+# An external implementation (PROTOCOL.md) that answers correctly (it asks for the expectation)
+# and misbehaves as told: extra (one extra answer line after its 3rd case), dup (two results for
+# one API path of its 3rd case), empty (`results: []` for every case).
+cat >"$T/impl.py" <<'EOF'
+import json, sys
+mode = sys.argv[1]
+n = 0
+def value(case, api):
+    e = case.get("expect") or {}
+    r = e.get("spec_value")
+    r = 0.0 if r is None else r
+    out = []
+    for ch in (e.get("layout") or {}).get(api, ["r", "r", "r", "r"]):
+        out.append(r if ch == "r" else 1.0 if ch == "1" else 0.0)
+    return out
+for raw in sys.stdin:
+    m = json.loads(raw) if raw.strip() else {}
+    t = m.get("type")
+    if t == "hello":
+        print(json.dumps({"type": "hello", "protocol": 1, "name": "chaos-" + mode, "wants_expect": True,
+                          "capabilities": {"specs": ["gl46"], "api": ["core"]}}))
+    elif t == "case":
+        c = m["case"]; n += 1
+        res = [{"api": a, "rgba": value(c, a)} for a in c["api"]]
+        if mode == "empty":
+            res = []
+        if mode == "dup" and n == 3:
+            res = res + [{"api": res[0]["api"], "rgba": [0.5, 0.5, 0.5, 0.5]}]
+        print(json.dumps({"type": "observation", "case_id": c["id"], "results": res}))
+        if mode == "extra" and n == 3:
+            print(json.dumps({"type": "observation", "case_id": c["id"], "results": res}))
+    elif t == "flush":
+        sys.stdout.flush()
+    elif t == "bye":
+        break
+    sys.stdout.flush()
+EOF
+EXEC() { echo "exec:python3 $T/impl.py $1"; }
+status_of() { grep -F "$2" "$1/results.csv" | cut -d, -f2 | sort | uniq -c | tr -s ' ' | tr '\n' ' '; }
+count_status() { cut -d, -f2 "$1/results.csv" 2>/dev/null | grep -cx "$2"; }
+
+# --- Panics and wrong exit codes ---------------------------------------------------------------
+"$SC" run -b soft --fixtures "$FX" --timeout 1e19 -o "$T/a1" >"$T/a1.out" 2>&1; c=$?
+line "run --timeout 1e19" "$(panicked "$T/a1.out")" $c "$(ok_if "[ $c = 96 ] && ! grep -q panicked $T/a1.out")"
+
+bash -c "'$SC' explain --spec gl46 --filter linear --dt 0.2,0.4,0.6,0.8 2>'$T/a2.err' | head -1 >/dev/null; exit \${PIPESTATUS[0]}"; c=$?
+line "explain ... | head" "$(panicked "$T/a2.err")" $c "$(ok_if "[ $c != 101 ] && ! grep -q panicked $T/a2.err")"
+
+bash -c "'$SC' run -b 'mock:fail=lequal' --fixtures '$FX' -o '$T/a3' 2>'$T/a3.err' | head -1 >/dev/null; exit \${PIPESTATUS[0]}"; c=$?
+line "run ... | head, with regressions" "exit $c (100 documented)" $c "$(ok_if "[ $c = 100 ]")"
+
+mkdir -p "$T/full"
+if mount -t tmpfs -o size=200k tmpfs "$T/full" 2>/dev/null; then
+  "$SC" run -b 'mock:fail=lequal' --fixtures "$FX" -o "$T/full/o" >"$T/a4.out" 2>&1; c=$?
+  said=$(grep -o 'exit code [0-9]*' "$T/a4.out" | tail -1 | grep -o '[0-9]*$')
+  empty=$(find "$T/full/o" -type f -size 0 2>/dev/null | wc -l)
+  line "full disk (tmpfs 200k), with regressions" "printed ${said:-none}, ${empty} empty files" $c "$(ok_if "[ $c = 100 ] && [ '${said:-x}' = $c ] && [ $empty = 0 ]")"
+  umount "$T/full"
+else
+  line "full disk" "SKIPPED (cannot mount a tmpfs here)" - SKIPPED
+fi
+
+echo '.*' >"$T/skipall.txt"
+"$SC" run -b soft --fixtures "$FX" --skips "$T/skipall.txt" -o "$T/a5" >"$T/a5.out" 2>&1; c=$?
+line "skips file .* (everything skipped)" "$(grep -o '[0-9]* skip' "$T/a5.out" | tail -1)" $c "$(ok_if "[ $c != 0 ]")"
+
+if [ $HAVE_GL = yes ]; then
+  "$SC" run -b egl:llvmpipe:es2 --fixtures "$FX" -o "$T/a6" >"$T/a6.out" 2>&1; c=$?
+  line "backend that skips everything (egl es2)" "$(grep -o '[0-9]* tests: [0-9]* pass' "$T/a6.out" | tail -1)" $c "$(ok_if "[ $c != 0 ]")"
+  VK_ICD_FILENAMES=/nonexistent "$SC" run --fixtures "$FX" --cases '^gl46/2d/d16/nearest/lequal/' -o "$T/a7" >"$T/a7.out" 2>&1; c=$?
+  zink=$(grep -c 'zink' "$T/a7.out")
+  line "zink hidden (VK_ICD_FILENAMES), default run" "zink named $zink times; hint: $(grep -c 'apt-get' "$T/a7.out")" $c "$(ok_if "[ $c != 0 ]")"
+else
+  line "backend that skips everything (egl es2)" "SKIPPED (no Mesa)" - SKIPPED
+  line "missing driver, default run" "SKIPPED (no Mesa)" - SKIPPED
+fi
+
+"$SC" run -b 'mock:crash=/texel=1_' --fixtures "$FX" --cases '^gl46/' -o "$T/a8" >"$T/a8.out" 2>&1; c=$?
+cr=$(count_status "$T/a8" Crash); fl=$(count_status "$T/a8" Flake)
+line "crash that recurs on re-run" "$cr Crash, $fl Flake" $c "$(ok_if "[ $c = 100 ] && [ $cr -gt 0 ] && [ $fl = 0 ]")"
+
+s=$(date +%s)
+timeout 300 "$SC" run -b 'mock:hang=.' --fixtures "$FX" --cases '^gl46/2d/' --timeout 0.2 -o "$T/a9" >"$T/a9.out" 2>&1; c=$?
+w=$(( $(date +%s) - s )); n=$(count_status "$T/a9" Timeout)
+line "hangs on every case (timeout 0.2 s, 10 s max)" "$n Timeout in ${w} s" $c "$(ok_if "[ $c = 100 ] && [ $w -le 10 ]")"
+
+"$SC" run -b "$(EXEC extra)" --fixtures "$FX" --cases '^gl46/' --no-rerun -o "$T/a10" >"$T/a10.out" 2>&1; c=$?
+bad=$(( $(count_status "$T/a10" Crash) + $(count_status "$T/a10" Flake) ))
+line "one extra answer line" "$bad Crash/Flake; $(count_status "$T/a10" Pass) Pass" $c "$(ok_if "[ $c != 0 ] && [ $bad -le 1 ]")"
+
+"$SC" run -b "$(EXEC dup)" --fixtures "$FX" --cases '^gl46/' -o "$T/a11" >"$T/a11.out" 2>&1; c=$?
+line "two results for one API path" "$(count_status "$T/a11" Pass) Pass, $(count_status "$T/a11" Fail) Fail, $(count_status "$T/a11" Crash) Crash" $c "$(ok_if "[ $c != 0 ]")"
+
+"$SC" run -b "$(EXEC empty)" --fixtures "$FX" --cases '^gl46/' -o "$T/a12" >"$T/a12.out" 2>&1; c=$?
+line "results: [] for every case" "$(count_status "$T/a12" Skip) Skip" $c "$(ok_if "[ $c != 0 ]")"
+
+# --- Data loss ---------------------------------------------------------------------------------
+"$SC" run -b 'mock:slow=5' --fixtures "$FX" -o "$T/a13" >"$T/a13a.out" 2>&1 & p1=$!
+sleep 0.5
+"$SC" run -b 'mock:slow=5' --fixtures "$FX" -o "$T/a13" >"$T/a13b.out" 2>&1; c2=$?
+wait $p1; c1=$?
+"$SC" run -b 'mock:slow=5' --fixtures "$FX" -o "$T/a13" --resume >"$T/a13c.out" 2>&1; c3=$?
+line "two runs into one --out" "exits $c1 and $c2; resume after: $c3" "$c2" "$(ok_if "[ $c2 = 96 ] && [ $c1 = 0 ] && [ $c3 = 0 ]")"
+
+zero=0
+for d in 0.3 0.5 0.7 0.9 1.1 1.3; do
+  rm -rf "$T/a14"
+  "$SC" run -b 'mock:fail=.' --fixtures "$FX" --no-rerun -o "$T/a14" >/dev/null 2>&1 & p=$!
+  sleep $d; kill -9 $p 2>/dev/null; wait $p 2>/dev/null
+  for f in failures.csv results.csv junit.xml report.json report.md; do
+    [ -f "$T/a14/$f" ] && [ ! -s "$T/a14/$f" ] && zero=$((zero + 1))
+  done
+done
+line "kill -9 at 6 moments (reports half-written?)" "$zero empty report files" - "$(ok_if "[ $zero = 0 ]")"
+
+"$SC" run -b 'mock:slow=20' --fixtures "$FX" -o "$T/a15" >"$T/a15.out" 2>&1 & p=$!
+sleep 2; kill -INT $p; wait $p; c=$?
+line "Ctrl-C mid-run" "resume hint: $(grep -c -- '--resume' "$T/a15.out"); report.md: $([ -f "$T/a15/report.md" ] && echo yes || echo no)" $c "$(ok_if "grep -q -- --resume $T/a15.out && [ -f $T/a15/report.md ]")"
+
+# --- Noise a CI user trips over ----------------------------------------------------------------
+"$SC" run -b soft:gl46 --fixtures "$FX" -o "$T/a16" >"$T/a16.out" 2>&1; c=$?
+na=$(grep -o '[0-9]* not applicable' "$T/a16.out" | tail -1); sk=$(count_status "$T/a16" Skip)
+line "cases a backend cannot run (soft:gl46)" "${na:-no not-applicable count}; $sk Skip in results.csv" $c "$(ok_if "[ -n '$na' ] && [ $sk = 0 ]")"
+
+"$SC" run -b soft -o "$T/a17" >/dev/null 2>&1; c=$?
+tests=$(wc -l <"$T/a17/results.csv"); bytes=$(du -sb "$T/a17" | cut -f1)
+line "output size, run -b soft (default fixtures)" "$bytes bytes for $tests tests: $((bytes / tests)) B/test" $c "$(ok_if "[ $((bytes / tests)) -le 150 ]")"
+
+"$SC" run -b 'mock:fail=lequal' -b 'mock:fail=gequal' --fixtures "$FX" -o "$T/a18" >/dev/null 2>&1; c=$?
+quoted=$(grep -c '^"' "$T/a18/results.csv"); dups=$(cut -d, -f1 "$T/a18/results.csv" | sort | uniq -d | wc -l)
+fails=$(( $(count_status "$T/a18" Fail) )); flines=$(wc -l <"$T/a18/failures.csv")
+fdups=$(cut -d, -f1 "$T/a18/failures.csv" | sort | uniq -d | wc -l)
+line "deqp-runner CSV: 2 backends" "$quoted quoted, $dups repeated names; $fails Fail, failures.csv $flines lines" $c "$(ok_if "[ $quoted = 0 ] && [ $dups = 0 ] && [ $fails = $flines ] && [ $fdups = 0 ]")"
+
+for k in 1 2 3; do "$SC" run -b mock: --fixtures "$FX" --shard $k/4 -o "$T/a19/s$k" >/dev/null 2>&1; done
+"$SC" merge -o "$T/a19/m" "$T"/a19/s* >"$T/a19.out" 2>&1; c=$?
+line "merge 3 of 4 shards" "$(grep -o 'shard(s) [^ ]* missing' "$T/a19.out" || echo 'no word')" $c "$(ok_if "[ $c != 0 ]")"
+"$SC" run -b mock: --fixtures "$FX" --cases lequal -o "$T/a19/other" >/dev/null 2>&1
+"$SC" merge -o "$T/a19/m2" "$T/a19/s1" "$T/a19/other" >"$T/a19b.out" 2>&1; c=$?
+line "merge of unrelated runs" "$(grep -o 'unrelated runs' "$T/a19b.out" || echo 'no word')" $c "$(ok_if "[ $c != 0 ]")"
+
+mkdir -p "$T/a20"; cp -r "$T/a18" "$T/a20/r1"
+"$SC" report "$T"/a20/* -o "$T/a20/html" --fixtures "$FX" >/dev/null 2>&1
+"$SC" report "$T"/a20/* -o "$T/a20/html" --fixtures "$FX" >"$T/a20.out" 2>&1; c=$?
+line "report out/* -o out/html, second time" "$(tail -1 "$T/a20.out" | cut -c1-60)" $c "$(ok_if "[ $c = 0 ]")"
+
+printf '%s\n' "gl46/no/such/test@core,Fail" "$(head -1 "$T/a18/results.csv" | cut -d, -f1 | sed 's|^[^/]*/||'),Pass" >"$T/base.csv"
+"$SC" run -b mock: --fixtures "$FX" --baseline "$T/base.csv" -o "$T/a21" >"$T/a21.out" 2>&1; c=$?
+line "baseline: Pass entry + entry matching nothing" "$(grep -c 'warning: baseline entry' "$T/a21.out") warnings" $c "$(ok_if "[ \$(grep -c 'warning: baseline entry' $T/a21.out) = 2 ]")"
+
+mkdir -p "$T/badfx"
+sed -n '1p;2p' "$FX/gl46.json" >"$T/badfx/x.json"
+python3 - "$T/badfx/x.json" <<'EOF'
+import json, sys
+p = sys.argv[1]
+head, case = open(p).read().splitlines()[:2]
+c = json.loads(case.rstrip(','))
+c1 = dict(c, id=c["id"] + "/dt=0.2,0.4")
+c2 = dict(c, id=c["id"] + "/dup", api=c["api"] + c["api"][:1])
+open(p, "w").write(head + "\n" + json.dumps(c1) + ",\n" + json.dumps(c2) + "\n]}\n")
+EOF
+"$SC" run -b soft --fixtures "$T/badfx" -o "$T/a22" >"$T/a22.out" 2>&1; c=$?
+line "fixture: id with a comma, API path twice" "$(grep -c "in the id" "$T/a22.out") comma error, $(grep -c 'duplicate API path' "$T/a22.out") duplicate error" $c "$(ok_if "[ $c = 96 ] && grep -q 'in the id' $T/a22.out && grep -q 'duplicate API path' $T/a22.out")"
+
+echo "($T kept; $BROKEN BROKEN)"
+exit $BROKEN
