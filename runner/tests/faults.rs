@@ -17,19 +17,22 @@ fn report(out: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap()
 }
 
-/// (status, reason) of the one test whose name contains `needle`, from report.json.
+/// (status, reason) of the one test whose name contains `needle`, from results.jsonl (every test;
+/// report.json holds only the tests that did not pass); the last record of a test is its final one.
 fn result_of(out: &Path, needle: &str) -> (String, String) {
-    let rep = report(out);
-    let hits: Vec<_> = rep["results"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|r| r["test"].as_str().unwrap().contains(needle))
-        .collect();
-    assert_eq!(hits.len(), 1, "{needle}: {hits:?}");
+    let text = std::fs::read_to_string(out.join("results.jsonl")).unwrap();
+    let mut last = std::collections::BTreeMap::new();
+    for line in text.lines() {
+        let r: serde_json::Value = serde_json::from_str(line).unwrap();
+        if r["kind"] == "result" && r["test"].as_str().unwrap().contains(needle) {
+            last.insert(r["test"].as_str().unwrap().to_string(), r);
+        }
+    }
+    assert_eq!(last.len(), 1, "{needle}: {last:?}");
+    let r = last.into_values().next().unwrap();
     (
-        hits[0]["status"].as_str().unwrap().to_string(),
-        hits[0]["reason"].as_str().unwrap_or("").to_string(),
+        r["status"].as_str().unwrap_or("").to_string(),
+        r["reason"].as_str().unwrap_or("").to_string(),
     )
 }
 
