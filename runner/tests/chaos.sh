@@ -121,11 +121,11 @@ line "two results for one API path" "$(count_status "$T/a11" Pass) Pass, $(count
 line "results: [] for every case" "$(count_status "$T/a12" Skip) Skip" $c "$(ok_if "[ $c != 0 ]")"
 
 # --- Data loss ---------------------------------------------------------------------------------
-"$SC" run -b 'mock:slow=5' --fixtures "$FX" -o "$T/a13" >"$T/a13a.out" 2>&1 & p1=$!
+"$SC" run -b 'mock:slow=50' --fixtures "$FX" -o "$T/a13" >"$T/a13a.out" 2>&1 & p1=$!
 sleep 0.5
-"$SC" run -b 'mock:slow=5' --fixtures "$FX" -o "$T/a13" >"$T/a13b.out" 2>&1; c2=$?
+"$SC" run -b 'mock:slow=50' --fixtures "$FX" -o "$T/a13" >"$T/a13b.out" 2>&1; c2=$?
 wait $p1; c1=$?
-"$SC" run -b 'mock:slow=5' --fixtures "$FX" -o "$T/a13" --resume >"$T/a13c.out" 2>&1; c3=$?
+"$SC" run -b 'mock:slow=50' --fixtures "$FX" -o "$T/a13" --resume >"$T/a13c.out" 2>&1; c3=$?
 line "two runs into one --out" "exits $c1 and $c2; resume after: $c3" "$c2" "$(ok_if "[ $c2 = 96 ] && [ $c1 = 0 ] && [ $c3 = 0 ]")"
 
 zero=0
@@ -139,7 +139,9 @@ for d in 0.3 0.5 0.7 0.9 1.1 1.3; do
 done
 line "kill -9 at 6 moments (reports half-written?)" "$zero empty report files" - "$(ok_if "[ $zero = 0 ]")"
 
-"$SC" run -b 'mock:slow=20' --fixtures "$FX" -o "$T/a15" >"$T/a15.out" 2>&1 & p=$!
+# A background job of a script ignores SIGINT; python puts the default action back before exec.
+python3 -c 'import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); os.execv(sys.argv[1], sys.argv[1:])' \
+  "$SC" run -b 'mock:slow=200' --fixtures "$FX" -o "$T/a15" >"$T/a15.out" 2>&1 & p=$!
 sleep 2; kill -INT $p; wait $p; c=$?
 line "Ctrl-C mid-run" "resume hint: $(grep -c -- '--resume' "$T/a15.out"); report.md: $([ -f "$T/a15/report.md" ] && echo yes || echo no)" $c "$(ok_if "grep -q -- --resume $T/a15.out && [ -f $T/a15/report.md ]")"
 
