@@ -349,7 +349,7 @@ keyed_enum! {
     /// one's a warning). Adding a tier is a variant here, in its place, and its entry in `PROFILES`.
     Profile {
         Strict = "strict",
-        Lenient = "lenient",
+        Quality = "quality",
     }
 }
 

@@ -42,8 +42,8 @@ pub const ALL: &[Contradiction] = &[
     Contradiction {
         id: "filtering",
         title: "Filtering of comparison results",
-        defended: "SGIX: compare before filtering, r is exactly the weighted average of 0/1. Later specs: implementation-dependent, \"proportional to the number of comparison passes\" — accepted as the PCF range (strict) or the pass-fraction hull (lenient), labelled implementation_defined.",
-        other: "Any other filtering of a later spec (e.g. an unweighted pass fraction) — accepted by lenient only.",
+        defended: "SGIX: compare before filtering, r is exactly the weighted average of 0/1. Later specs: implementation-dependent, \"proportional to the number of comparison passes\" — accepted as the PCF range (strict) or, for a footprint with both passes and fails, any value in [fail value, 1] (quality: the \"should\" leaves the proportion open), labelled implementation_defined.",
+        other: "Any other filtering of a later spec (e.g. an unweighted pass fraction, or filtering Dt before one compare) — accepted by quality only (Warn).",
         sources: "SGIX_shadow Overview; ARB_shadow §3.8.13.1 and issue 7; GL 4.6 §8.23.1",
     },
     Contradiction {

@@ -72,7 +72,7 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
         .find(|d| d.contains("/lequal/ref=0.5/texel=1,1@core"))
         .expect("dump of texel 1,1");
     assert!(
-        dump.contains("expected:  spec value 1; strict {1}; lenient {1}"),
+        dump.contains("expected:  spec value 1; strict {1}; quality {1}"),
         "{dump}"
     );
     assert!(dump.contains("observed:  rgba (0, 0, 0, 1)"), "{dump}");

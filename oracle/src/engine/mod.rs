@@ -107,7 +107,8 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
         Kind::Compare => (tcx.pass_v.min(tcx.fail_v), tcx.pass_v.max(tcx.fail_v)),
         _ => (f64::NEG_INFINITY, f64::INFINITY),
     };
-    let acc = accept::finalize(sets, colour_bits, range, spec_value);
+    let value_slack = matches!(kind, Kind::Depth | Kind::Colour);
+    let acc = accept::finalize(sets, colour_bits, value_slack, range, spec_value);
     if !matches!((spec_value, acc.first()), (Some(v), Some(s)) if s.0 == [Interval::point(v)]) {
         choices.into_iter().for_each(|n| e.note(n));
     }

@@ -111,7 +111,7 @@ pub fn unobservable(f: Fault) -> Option<&'static str> {
 pub fn grid_change(f: Fault) -> Option<&'static str> {
     Some(match f {
         Fault::EqualWithTolerance => {
-            "cases/src/grids/families.rs `exact`: for EQUAL and NOTEQUAL also R = at ± 2^-14 (outside the lenient \
+            "cases/src/grids/families.rs `exact`: for EQUAL and NOTEQUAL also R = at ± 2^-14 (outside the quality \
              16-bit reference precision, inside the 2^-12 tolerance); the present at± (adjacent f32) cases only Warn"
         }
         Fault::DtNotClamped => {
