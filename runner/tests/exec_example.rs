@@ -28,6 +28,12 @@ fn fixture(dir: &std::path::Path) -> String {
     other.id = "gl46/2d/d16/nearest/lequal/ref=0.5/as-es300".into();
     other.api = vec![shadowcheck_model::ApiPath::Es300];
     other.spec = shadowcheck_model::Spec::Gles32;
+    // Its layout on its own API path (ES 3.2 §11.1.3.5: the shadow lookup returns a float, as core).
+    if let Some(e) = other.expect.as_mut() {
+        if let Some(l) = e.layout.remove(&shadowcheck_model::ApiPath::GlslCore) {
+            e.layout.insert(shadowcheck_model::ApiPath::Es300, l);
+        }
+    }
     cases.push(other);
     let p = dir.join("fixtures/example.json");
     write_fixture(&p, cases);
