@@ -37,12 +37,20 @@ pub fn layout(
                 "GL 2.1 §3.8.10 (incomplete: texturing disabled)",
             );
         }
-        // A vec4 (non-shadow) result under a spec whose incomplete texture reads (0,0,0,1) (ES 2.0).
-        let vec4_0001 = rules.incomplete == Incomplete::Legacy0001 && kind != Kind::Compare;
+        // A vec4 (non-shadow) result: (0,0,0,1) under ES 2.0 and GL 2.1, and under GL 4.6 / ES 3.2
+        // §11.1.3.5 too: "(0.0, 0.0, 0.0, 1.0), in floating-point, will be returned for a non-shadow
+        // sampler and 0 for a shadow sampler". G, B and A are checked, not only r.
+        let vec4_0001 = matches!(kind, Kind::Depth | Kind::Colour)
+            || (rules.incomplete == Incomplete::Legacy0001 && kind != Kind::Compare);
         if legacy || vec4_0001 {
             return (
                 [R, Zero, Zero, One],
-                "GL 2.1 §3.11.2 / ARB_fragment_program_shadow: incomplete → (0,0,0,1)",
+                match (legacy, rules.incomplete) {
+                    (false, Incomplete::ShadowZero) => {
+                        "GL 4.6 / ES 3.2 §11.1.3.5: incomplete → (0,0,0,1) for a non-shadow sampler"
+                    }
+                    _ => "GL 2.1 §3.11.2 / ARB_fragment_program_shadow: incomplete → (0,0,0,1)",
+                },
             );
         }
         return (

@@ -105,7 +105,7 @@ fn any_case() -> impl Strategy<Value = Case> {
             if matches!(spec, Spec::ArbAmbient | Spec::SgixAmbient) {
                 c.sampler.fail_value = Some(fail as f32);
             }
-            if border && spec != Spec::Es2Ext {
+            if border && !matches!(spec, Spec::Es2Ext | Spec::Sgix | Spec::SgixAmbient) {
                 c.sampler.wrap_s = Wrap::ClampToBorder;
                 c.sampler.border = [vals[3] as f32, 0.0, 0.0, 0.0];
             }

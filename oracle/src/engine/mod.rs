@@ -71,6 +71,9 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     }
     let coords = inputs::coords(case);
     let tcx = inputs::texel_ctx(&mut e, &rules, case, kind, &coords);
+    if let Some(why) = inputs::undefined_request(&rules, case, kind) {
+        return Ok(undefined(e, &tcx, layouts, why));
+    }
     // Choices the spec leaves to the implementation; labelled only where they change the result.
     let mut choices: Vec<&'static str> = Vec::new();
     let lod = levels::lod(&mut e, &rules, case);

@@ -102,6 +102,13 @@ pub fn unobservable(f: Fault) -> Option<&'static str> {
              EXT_shadow_samplers) is not defined either; the oracle accepts 0 and 1 for every NaN-reference case, so treating \
              NOTEQUAL as ordered (NaN fails) is as conforming as IEEE != (NaN passes)"
         }
+        Fault::StencilCompared => {
+            "a stencil read with TEXTURE_COMPARE_MODE not NONE has undefined results: GL 4.6 §11.1.3.5 \"the results of a \
+             texture lookup are undefined if ... The sampler used in a texture lookup function is not one of the shadow \
+             sampler types, the texture object's base internal format is DEPTH_COMPONENT or DEPTH_STENCIL, and the \
+             TEXTURE_COMPARE_MODE is not NONE\" (a stencil read uses an unsigned integer sampler); the oracle accepts any \
+             index there, so comparing the index is as conforming as ignoring the comparison"
+        }
         _ => return None,
     })
 }
