@@ -115,3 +115,43 @@ fn an_incomplete_non_shadow_read_returns_0001() {
         }
     }
 }
+
+/// Projective lookups divide "s, t, r and Dref" by q (GLSL textureProj; GL 4.6 §8.14.1). The
+/// quotient is an f32 computation: Dref/q already had its f32 neighbours accepted; s/q and t/q get
+/// the same allowance. At s/q = 1/3 on a 3-texel row the exact u = 1 selects texel 1, the f32
+/// neighbour below (u = 0.99999994) texel 0.
+#[test]
+fn projective_s_and_t_over_q_may_be_either_f32_neighbour() {
+    let mut c = case2d(
+        Spec::Gl46,
+        Format::D16,
+        CompareFunc::Lequal,
+        Filter::Nearest,
+        3,
+        1,
+        &[0.2, 0.8, 0.8],
+        (1.0, 1.5),
+        1.5,
+    );
+    c.lookup.projective = true;
+    c.lookup.coord[3] = 3.0;
+    let e = eval(&c);
+    // Dref = 1.5/3 = 0.5: texel 1 (0.8) passes, texel 0 (0.2) fails.
+    assert_eq!(e.expect.spec_value, Some(1.0));
+    let strict = &e.expect.accept[&Profile::Strict];
+    assert!(strict.contains(1.0) && strict.contains(0.0), "{strict}");
+    assert!(e
+        .expect
+        .implementation_defined
+        .unwrap_or_default()
+        .contains("s/q and t/q are computed in f32"));
+    // Not projective (s = 1/3 passed as an f32 rounds up: u > 1): texel 1 only.
+    let mut p = c.clone();
+    p.lookup.projective = false;
+    p.lookup.coord = [1.0 / 3.0, 0.5, 0.0, 1.0];
+    p.lookup.dref = 0.5;
+    assert_eq!(
+        eval(&p).expect.accept[&Profile::Strict].0,
+        vec![Interval::point(1.0)]
+    );
+}
