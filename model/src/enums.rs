@@ -375,5 +375,8 @@ keyed_enum! {
         One = "1",
         /// Not produced by this path (e.g. the other three channels of a float result).
         Unused = "-",
+        /// r, or 0 under a second reading the texts leave open (a GLSL 1.30 shadow lookup in a
+        /// compatibility context with DEPTH_TEXTURE_MODE ALPHA: contradiction `compat-float-alpha`).
+        ROrZero = "r|0",
     }
 }

@@ -155,3 +155,44 @@ fn projective_s_and_t_over_q_may_be_either_f32_neighbour() {
         vec![Interval::point(1.0)]
     );
 }
+
+/// A GLSL 1.30 shadow lookup in a compatibility context with DEPTH_TEXTURE_MODE ALPHA: compatibility
+/// §11.1.3.5 expands "the resulting value Rt to a color Cb = (Rt, 0, 0, 1)" and returns Cs[0] (r),
+/// while §8.23.1 ("The resulting r is assigned to Rt, Lt, It, or At if the value of
+/// DEPTH_TEXTURE_MODE is respectively RED, LUMINANCE, INTENSITY, or ALPHA") with Table 16.1 gives
+/// Cb = (0, 0, 0, At), so Cs[0] = 0. Both readings are accepted and labelled.
+#[test]
+fn glsl130_alpha_mode_shadow_lookup_accepts_both_readings() {
+    let mut c = one(Spec::Gl46, Format::D16, CompareFunc::Lequal, 0.25, 0.5);
+    c.api = vec![ApiPath::Glsl130];
+    c.sampler.depth_texture_mode = Some(DepthTextureMode::Alpha);
+    let e = eval(&c).expect;
+    assert_eq!(e.spec_value, Some(1.0));
+    let api = ApiPath::Glsl130;
+    assert_eq!(
+        e.layout[&api],
+        [
+            Channel::ROrZero,
+            Channel::Unused,
+            Channel::Unused,
+            Channel::Unused
+        ]
+    );
+    assert_eq!(
+        e.judge(api, [1.0, 0.0, 0.0, 1.0]),
+        Some(Judgement::Strictest)
+    );
+    assert_eq!(
+        e.judge(api, [0.0, 0.0, 0.0, 1.0]),
+        Some(Judgement::Strictest)
+    );
+    assert_eq!(e.judge(api, [0.5, 0.0, 0.0, 1.0]), Some(Judgement::Outside));
+    assert!(e
+        .implementation_defined
+        .unwrap_or_default()
+        .contains("compat-float-alpha"));
+    // LUMINANCE: one reading, r.
+    c.sampler.depth_texture_mode = Some(DepthTextureMode::Luminance);
+    let e = eval(&c).expect;
+    assert_eq!(e.judge(api, [0.0, 0.0, 0.0, 1.0]), Some(Judgement::Outside));
+}

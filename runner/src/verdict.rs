@@ -54,6 +54,7 @@ fn channel_misses(
     for ((name, ch), v) in ['r', 'g', 'b', 'a'].iter().zip(layout).zip(rgba) {
         let ok = match ch {
             Channel::R => acc.is_some_and(|a| a.contains(v)),
+            Channel::ROrZero => v == 0.0 || acc.is_some_and(|a| a.contains(v)),
             Channel::Zero => v == 0.0,
             Channel::One => v == 1.0,
             Channel::Unused => true,
@@ -61,6 +62,10 @@ fn channel_misses(
         if !ok {
             let want = match ch {
                 Channel::R => format!("r in {}", acc.map(|a| a.to_string()).unwrap_or_default()),
+                Channel::ROrZero => format!(
+                    "0 or r in {}",
+                    acc.map(|a| a.to_string()).unwrap_or_default()
+                ),
                 Channel::Zero => "0".to_string(),
                 _ => "1".to_string(),
             };

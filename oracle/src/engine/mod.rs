@@ -136,6 +136,9 @@ fn layouts(e: &mut Eval, rules: &Rules, case: &Case, kind: Kind, incomplete: boo
             ),
             cite,
         );
+        if l.contains(&Channel::ROrZero) {
+            e.note(format!("on `{api}` the texts give two readings: the result is r or 0 (contradiction `compat-float-alpha`: {cite})"));
+        }
         layouts.insert(api, l);
     }
     layouts

@@ -106,7 +106,7 @@ fn laid_out(case: &Case, api: shadowcheck_model::ApiPath, r: f64) -> [f64; 4] {
         .copied()
         .unwrap_or([Channel::R; 4]);
     layout.map(|c| match c {
-        Channel::R => r,
+        Channel::R | Channel::ROrZero => r,
         Channel::One => 1.0,
         Channel::Zero | Channel::Unused => 0.0,
     })

@@ -102,6 +102,12 @@ pub fn unobservable(f: Fault) -> Option<&'static str> {
              EXT_shadow_samplers) is not defined either; the oracle accepts 0 and 1 for every NaN-reference case, so treating \
              NOTEQUAL as ordered (NaN fails) is as conforming as IEEE != (NaN passes)"
         }
+        Fault::AlphaModeZeroOnGlsl130 => {
+            "a GLSL 1.30 shadow lookup in a compatibility context with DEPTH_TEXTURE_MODE ALPHA has two readings in the \
+             texts: compatibility §11.1.3.5 returns Cs[0] of Cb = (Rt, 0, 0, 1) (r), while §8.23.1 with Table 16.1 assigns \
+             r to At for ALPHA, so Cs[0] = 0; the oracle accepts both (contradiction `compat-float-alpha`), so returning 0 \
+             is one of the two conforming readings"
+        }
         Fault::StencilCompared => {
             "a stencil read with TEXTURE_COMPARE_MODE not NONE has undefined results: GL 4.6 §11.1.3.5 \"the results of a \
              texture lookup are undefined if ... The sampler used in a texture lookup function is not one of the shadow \
