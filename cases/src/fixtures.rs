@@ -92,6 +92,15 @@ pub enum FixtureError {
         field: String,
         msg: String,
     },
+    /// The written `expect` differs from what the linked oracle derives (a stale or edited fixture);
+    /// `msg` gives both values and the command that regenerates.
+    #[error("{}: {at}: field `{field}`: {msg}", file.display())]
+    StaleExpect {
+        file: PathBuf,
+        at: CaseRef,
+        field: String,
+        msg: String,
+    },
     #[error("{}: {at}: duplicate case id (first at case #{first})", file.display())]
     DuplicateId {
         file: PathBuf,
@@ -110,6 +119,7 @@ impl FixtureError {
         match self {
             FixtureError::Syntax { at, .. }
             | FixtureError::Case { at, .. }
+            | FixtureError::StaleExpect { at, .. }
             | FixtureError::DuplicateId { at, .. } => at.id.as_deref(),
             _ => None,
         }
@@ -117,9 +127,9 @@ impl FixtureError {
     /// The field this error is about, when known.
     pub fn field(&self) -> Option<&str> {
         match self {
-            FixtureError::Case { field, .. } | FixtureError::NotFixture { field, .. } => {
-                Some(field)
-            }
+            FixtureError::Case { field, .. }
+            | FixtureError::StaleExpect { field, .. }
+            | FixtureError::NotFixture { field, .. } => Some(field),
             _ => None,
         }
     }
@@ -206,13 +216,15 @@ fn parse_by_line(file: &Path, text: &str) -> Option<(FixtureFile, Vec<FixtureErr
                     id: v.get("id").and_then(|x| x.as_str()).map(str::to_string),
                     ..at
                 };
-                case_from_value(file, &at, v).and_then(|c| match seen.insert(c.id.clone(), index) {
-                    Some(first) => Err(FixtureError::DuplicateId {
-                        file: file.to_path_buf(),
-                        at,
-                        first,
-                    }),
-                    None => Ok(c),
+                case_from_value(file, &at, &f.grid, v).and_then(|c| {
+                    match seen.insert(c.id.clone(), index) {
+                        Some(first) => Err(FixtureError::DuplicateId {
+                            file: file.to_path_buf(),
+                            at,
+                            first,
+                        }),
+                        None => Ok(c),
+                    }
                 })
             }
             Err(e) => Err(FixtureError::Syntax {
@@ -256,7 +268,7 @@ fn parse_inner(
             index: Some(index),
             id,
         };
-        let result = case_from_value(file, &at, value).and_then(|case| {
+        let result = case_from_value(file, &at, &raw.grid, value).and_then(|case| {
             if let Some(&first) = seen.get(&case.id) {
                 return Err(FixtureError::DuplicateId {
                     file: file.to_path_buf(),
@@ -328,10 +340,12 @@ fn json_error(file: &Path, text: &str, field: String, inner: serde_json::Error) 
     }
 }
 
-/// Deserializes one case from its JSON value and validates its structure.
+/// Deserializes one case from its JSON value, validates its structure and re-derives its `expect`
+/// with the linked oracle (`recheck`).
 fn case_from_value(
     file: &Path,
     at: &CaseRef,
+    grid: &str,
     value: serde_json::Value,
 ) -> Result<Case, FixtureError> {
     let case: Case = serde_path_to_error::deserialize(value).map_err(|e| FixtureError::Case {
@@ -358,6 +372,7 @@ fn case_from_value(
             msg: other.to_string(),
         },
     })?;
+    crate::recheck::check(file, at, grid, &case)?;
     Ok(case)
 }
 

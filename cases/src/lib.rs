@@ -4,7 +4,8 @@
 //! - [`dsl`]: a small typed grid DSL (cartesian product, filters that say why, derived values);
 //! - [`build`]: stored texel values per format, textures per target, lookups at known positions;
 //! - [`grids`]: the named grids (`smoke`, `default`, `exhaustive`) and [`grids::generate`];
-//! - [`fixtures`]: the versioned fixture file format, its writer and loaders;
+//! - [`fixtures`]: the versioned fixture file format, its writer and loaders (which re-derive every
+//!   case's `expect` with the linked oracle, `recheck`);
 //! - [`coverage`]: cases per spec x target x format x filter x func;
 //! - [`markers`]: generated sections of hand-written Markdown (README tables).
 //!
@@ -16,5 +17,6 @@ pub mod dsl;
 pub mod fixtures;
 pub mod grids;
 pub mod markers;
+mod recheck;
 
 pub use grids::GridError;

@@ -304,3 +304,23 @@ fn generated_ids_need_no_csv_quoting() {
         }
     }
 }
+
+/// Issue 13, section 3: the loader re-derives `expect` with the linked oracle; an edited
+/// expectation is an error naming the file, the case, the field and the regenerate command.
+#[test]
+fn an_edited_expectation_is_a_load_error_naming_file_case_and_field() {
+    let (_, mut f) = grids::generate("smoke", 0).unwrap().remove(0);
+    f.cases.truncate(3);
+    let text = fixtures::to_string(&f).unwrap();
+    assert!(fixtures::parse_str(Path::new("ok.json"), &text).is_ok());
+    let e = f.cases[1].expect.as_mut().unwrap();
+    e.spec_value = Some(e.spec_value.unwrap_or(0.0) + 0.5);
+    let id = f.cases[1].id.clone();
+    let text = fixtures::to_string(&f).unwrap();
+    let err = fixtures::parse_str(Path::new("edited.json"), &text).unwrap_err();
+    assert_eq!(err.case_id(), Some(id.as_str()));
+    assert_eq!(err.field(), Some("expect.spec_value"));
+    let msg = err.to_string();
+    assert!(msg.starts_with("edited.json: case #1"), "{msg}");
+    assert!(msg.contains("shadowcheck gen --grid smoke"), "{msg}");
+}

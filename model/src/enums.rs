@@ -349,7 +349,7 @@ keyed_enum! {
     /// one's a warning). Adding a tier is a variant here, in its place, and its entry in `PROFILES`.
     Profile {
         Strict = "strict",
-        Lenient = "lenient",
+        Quality = "quality",
     }
 }
 
@@ -375,5 +375,8 @@ keyed_enum! {
         One = "1",
         /// Not produced by this path (e.g. the other three channels of a float result).
         Unused = "-",
+        /// r, or 0 under a second reading the texts leave open (a GLSL 1.30 shadow lookup in a
+        /// compatibility context with DEPTH_TEXTURE_MODE ALPHA: contradiction `compat-float-alpha`).
+        ROrZero = "r|0",
     }
 }

@@ -105,6 +105,7 @@ impl Expectation {
         let acc = self.accept.get(&profile)?;
         Some(layout.iter().zip(rgba).all(|(ch, v)| match ch {
             Channel::R => acc.contains(v),
+            Channel::ROrZero => v == 0.0 || acc.contains(v),
             Channel::Zero => v == 0.0,
             Channel::One => v == 1.0,
             Channel::Unused => true,

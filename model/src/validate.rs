@@ -453,7 +453,7 @@ mod tests {
     fn judge_uses_layout_and_profiles() {
         let mut accept = std::collections::BTreeMap::new();
         accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
-        accept.insert(Profile::Lenient, Acceptance(vec![Interval::new(0.9, 1.0)]));
+        accept.insert(Profile::Quality, Acceptance(vec![Interval::new(0.9, 1.0)]));
         let mut layout = std::collections::BTreeMap::new();
         layout.insert(
             ApiPath::FixedFunction,
@@ -472,7 +472,7 @@ mod tests {
         );
         assert_eq!(
             e.judge(ApiPath::FixedFunction, [0.95, 1.0, 1.0, 1.0]),
-            Some(Judgement::Looser(Profile::Lenient))
+            Some(Judgement::Looser(Profile::Quality))
         );
         assert_eq!(
             e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 0.0]),

@@ -2,7 +2,7 @@
 //! (enumerate the pass/fail assignments of ambiguous texels, interpolate over weight bounds), written
 //! for this oracle's data.
 
-use crate::profile::ProfileSpec;
+use crate::profile::{ProfileSpec, PROFILES};
 use crate::sample::TexelEval;
 use crate::unorm::{f32_candidates, unorm_max, Exact};
 use shadowcheck_model::{Acceptance, Interval};
@@ -89,17 +89,6 @@ fn level_range(t: &Taps, tol: f64, val: &dyn Fn(usize) -> (f64, f64)) -> (f64, f
     (lo, hi)
 }
 
-/// "proportional to the number of comparison passes": the unweighted mean k/n of one level.
-fn level_fraction(t: &Taps, val: &dyn Fn(usize) -> (f64, f64)) -> (f64, f64) {
-    let ix = t.texels();
-    let n = ix.len() as f64;
-    let (l, h) = ix.iter().fold((0.0, 0.0), |(l, h), &i| {
-        let (a, b) = val(i);
-        (l + a, h + b)
-    });
-    (l / n, h / n)
-}
-
 fn blend(s: &Scen, tol: f64, r1: (f64, f64), r2: Option<(f64, f64)>) -> Interval {
     match r2 {
         None => Interval::new(r1.0, r1.1),
@@ -122,42 +111,47 @@ fn blend(s: &Scen, tol: f64, r1: (f64, f64), r2: Option<(f64, f64)>) -> Interval
 /// Largest number of ambiguous texels enumerated one assignment at a time (2^8 for trilinear).
 const MAX_ENUMERATED: usize = 10;
 
-/// Appends the intervals `prof` (the `pi`-th entry of `PROFILES`) accepts for one scenario. `fraction`: the spec leaves filtered r
-/// "implementation-dependent ... proportional to the number of passes", so the lenient hull also takes
-/// in the unweighted pass fraction.
+/// Appends the intervals `prof` (the `pi`-th entry of `PROFILES`) accepts for one scenario.
+/// `should_proportional`: a comparison under a spec that leaves filtered r "implementation-dependent"
+/// and says only that it "should be ... proportional to the number of comparison passes or failures"
+/// (GL 4.6 §8.23.1); a profile with `mixed_footprint_any` then takes any value between the fail
+/// value and 1 for a filtered footprint that may hold both a pass and a fail.
 pub fn scen_intervals(
     s: &Scen,
     texels: &[TexelEval],
     pi: usize,
     prof: &ProfileSpec,
-    fraction: bool,
+    should_proportional: bool,
     out: &mut Vec<Interval>,
 ) {
     let poss = |i: usize| texels[i].poss[pi];
     let hull = |i: usize| (poss(i).lo, poss(i).hi);
-    let mut amb: Vec<usize> = Vec::new();
-    for t in
+    let all = || {
         s.a.1
             .texels()
             .iter()
             .chain(s.b.iter().flat_map(|b| b.1.texels()))
-    {
+    };
+    if prof.mixed_footprint_any && should_proportional && s.filtered() {
+        // Every value the footprint's texels may take: two different ones means a pass and a fail.
+        let lo = all().map(|&i| poss(i).lo).fold(f64::INFINITY, f64::min);
+        let hi = all().map(|&i| poss(i).hi).fold(f64::NEG_INFINITY, f64::max);
+        if lo < hi {
+            out.push(Interval::new(lo, hi));
+            return;
+        }
+    }
+    let mut amb: Vec<usize> = Vec::new();
+    for t in all() {
         if poss(*t).two && !amb.contains(t) {
             amb.push(*t);
         }
     }
     let tol = prof.weight_tol;
-    if (prof.hull_filtered && s.filtered()) || amb.len() > MAX_ENUMERATED {
+    if amb.len() > MAX_ENUMERATED {
         let r1 = level_range(&s.a.1, tol, &hull);
         let r2 = s.b.as_ref().map(|b| level_range(&b.1, tol, &hull));
-        let mut iv = blend(s, tol, r1, r2);
-        if fraction && prof.hull_filtered {
-            let f1 = level_fraction(&s.a.1, &hull);
-            let f2 = s.b.as_ref().map(|b| level_fraction(&b.1, &hull));
-            let fi = blend(s, tol, f1, f2);
-            iv = Interval::new(iv.lo.min(fi.lo), iv.hi.max(fi.hi));
-        }
-        out.push(iv);
+        out.push(blend(s, tol, r1, r2));
         return;
     }
     for mask in 0u32..(1u32 << amb.len()) {
@@ -241,6 +235,9 @@ pub fn merge(mut v: Vec<Interval>) -> Vec<Interval> {
 /// - `colour_bits` (filtered colour lookups only): a filtered colour value may be returned at the
 ///   format's precision (either neighbour, §2.3.5.2): ends between two multiples of 1/(2^b − 1) widen
 ///   to them; an end on a multiple stays (a single texel is exactly c/(2^b − 1), (2.1));
+/// - `value_slack` (lookups that return a value, not a comparison): a profile with a reference
+///   precision 2^-b also takes the returned value within 2^-b (GL 4.6 §2.3.4.1: "individual results
+///   of floating-point operations are accurate to about 1 part in 10^5"), not past [0, 1];
 /// - the result reaches the observer as an f32: ends widen outward to the nearest f32;
 /// - sets stay inside `range` (r ∈ [fail, 1] for a comparison), and rounding noise of weighted sums
 ///   (an ulp) is absorbed so that the sets hold the spec value;
@@ -248,10 +245,11 @@ pub fn merge(mut v: Vec<Interval>) -> Vec<Interval> {
 pub fn finalize(
     mut sets: Vec<Vec<Interval>>,
     colour_bits: Option<u32>,
+    value_slack: bool,
     range: (f64, f64),
     spec_value: Option<f64>,
 ) -> Vec<Acceptance> {
-    for set in sets.iter_mut() {
+    for (set, prof) in sets.iter_mut().zip(PROFILES) {
         for iv in set.iter_mut() {
             if let Some(bits) = colour_bits {
                 // An end already on a multiple of 1/(2^b − 1) (up to f64 noise) stays there: (2.1)
@@ -268,6 +266,13 @@ pub fn finalize(
                     }
                 };
                 (iv.lo, iv.hi) = (snap(iv.lo, false), snap(iv.hi, true));
+            }
+            if let (true, Some(bits)) = (value_slack, prof.ref_bits) {
+                let t = (bits as f64).exp2().recip();
+                (iv.lo, iv.hi) = (
+                    (iv.lo - t).max(iv.lo.min(0.0)),
+                    (iv.hi + t).min(iv.hi.max(1.0)),
+                );
             }
             (iv.lo, iv.hi) = (
                 f32_candidates(Exact::F(iv.lo))[0],

@@ -6,7 +6,7 @@
 use crate::rules::Rules;
 use crate::state::{self, Ctx, GlErrorKind, Value};
 use crate::OracleError;
-use shadowcheck_model::{ApiPath, Case, Filter, Target, Wrap};
+use shadowcheck_model::{ApiPath, Case, Filter, Spec, Target, Wrap};
 
 /// The context an API path runs in.
 pub fn ctx_of(api: ApiPath) -> Ctx {
@@ -105,6 +105,11 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
                 t.target
             ),
         ));
+    }
+    if matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) {
+        if let Some(why) = crate::sgix::outside_table_3_8(s) {
+            return Err(not_applicable(case, rules, why));
+        }
     }
     // Every piece of sampler state is set through TexParameter in every context the case runs in.
     for &ctx in &ctxs {

@@ -42,8 +42,8 @@ pub const ALL: &[Contradiction] = &[
     Contradiction {
         id: "filtering",
         title: "Filtering of comparison results",
-        defended: "SGIX: compare before filtering, r is exactly the weighted average of 0/1. Later specs: implementation-dependent, \"proportional to the number of comparison passes\" — accepted as the PCF range (strict) or the pass-fraction hull (lenient), labelled implementation_defined.",
-        other: "Any other filtering of a later spec (e.g. an unweighted pass fraction) — accepted by lenient only.",
+        defended: "SGIX: compare before filtering, r is exactly the weighted average of 0/1. Later specs: implementation-dependent, \"proportional to the number of comparison passes\" — accepted as the PCF range (strict) or, for a footprint with both passes and fails, any value in [fail value, 1] (quality: the \"should\" leaves the proportion open), labelled implementation_defined.",
+        other: "Any other filtering of a later spec (e.g. an unweighted pass fraction, or filtering Dt before one compare) — accepted by quality only (Warn).",
         sources: "SGIX_shadow Overview; ARB_shadow §3.8.13.1 and issue 7; GL 4.6 §8.23.1",
     },
     Contradiction {
@@ -56,7 +56,7 @@ pub const ALL: &[Contradiction] = &[
     Contradiction {
         id: "compat-float-alpha",
         title: "Float shadow lookup (GLSL 1.30, compatibility) with DEPTH_TEXTURE_MODE = ALPHA",
-        defended: "Compatibility §11.1.3.5: a shadow lookup expands \"the resulting value Rt to a color Cb = (Rt, 0, 0, 1)\" and returns Cs[0] = r, for every DEPTH_TEXTURE_MODE (the pack's note: this paragraph describes the float-returning lookups; E.2.2: GLSL 1.30 returns (r, 0, 0, 1)).",
+        defended: "Compatibility §11.1.3.5: a shadow lookup expands \"the resulting value Rt to a color Cb = (Rt, 0, 0, 1)\" and returns Cs[0] = r, for every DEPTH_TEXTURE_MODE (the pack's note: this paragraph describes the float-returning lookups; E.2.2: GLSL 1.30 returns (r, 0, 0, 1)). The spec value follows it; the other reading is accepted too (layout `r|0`), labelled implementation-defined.",
         other: "Compatibility §8.23.1 with Table 16.1: for ALPHA r is assigned to At, Cb = (0,0,0), so the float Cs[0] would be 0.",
         sources: "GL 4.6 compatibility §8.23.1, §11.1.3.5, Table 16.1",
     },

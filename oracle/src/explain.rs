@@ -75,7 +75,7 @@ pub fn render(case: &Case, result: &Result<Evaluation, OracleError>) -> String {
             if let Some(why) = &x.implementation_defined {
                 let _ = writeln!(o, "implementation-defined: {why}");
             }
-            let _ = writeln!(o, "layout (channel: r / 0 / 1 / - unused):");
+            let _ = writeln!(o, "layout (channel: r / 0 / 1 / - unused / r|0 r or 0):");
             for (api, l) in &x.layout {
                 let l: Vec<&str> = l.iter().map(|c: &Channel| c.key()).collect();
                 let _ = writeln!(o, "  {:<8} ({})", api.key(), l.join(", "));

@@ -3,7 +3,7 @@
 use crate::rules::{Incomplete, Rules};
 use crate::sample::Kind;
 use shadowcheck_model::{ApiPath, Channel, DepthTextureMode};
-use Channel::{One, Unused, Zero, R};
+use Channel::{One, ROrZero, Unused, Zero, R};
 
 /// The DEPTH_TEXTURE_MODE in effect: the sampler's, or the initial value (LUMINANCE: ARB_depth_texture
 /// "Initially, depth textures are interpreted as LUMINANCE"; GL 4.6 compatibility §8.22).
@@ -37,12 +37,20 @@ pub fn layout(
                 "GL 2.1 §3.8.10 (incomplete: texturing disabled)",
             );
         }
-        // A vec4 (non-shadow) result under a spec whose incomplete texture reads (0,0,0,1) (ES 2.0).
-        let vec4_0001 = rules.incomplete == Incomplete::Legacy0001 && kind != Kind::Compare;
+        // A vec4 (non-shadow) result: (0,0,0,1) under ES 2.0 and GL 2.1, and under GL 4.6 / ES 3.2
+        // §11.1.3.5 too: "(0.0, 0.0, 0.0, 1.0), in floating-point, will be returned for a non-shadow
+        // sampler and 0 for a shadow sampler". G, B and A are checked, not only r.
+        let vec4_0001 = matches!(kind, Kind::Depth | Kind::Colour)
+            || (rules.incomplete == Incomplete::Legacy0001 && kind != Kind::Compare);
         if legacy || vec4_0001 {
             return (
                 [R, Zero, Zero, One],
-                "GL 2.1 §3.11.2 / ARB_fragment_program_shadow: incomplete → (0,0,0,1)",
+                match (legacy, rules.incomplete) {
+                    (false, Incomplete::ShadowZero) => {
+                        "GL 4.6 / ES 3.2 §11.1.3.5: incomplete → (0,0,0,1) for a non-shadow sampler"
+                    }
+                    _ => "GL 2.1 §3.11.2 / ARB_fragment_program_shadow: incomplete → (0,0,0,1)",
+                },
             );
         }
         return (
@@ -103,6 +111,18 @@ pub fn layout(
                 return (
                     cs,
                     "GL 2.1 §3.8.14, Table 3.20; GL 4.6 compatibility §8.23.1, Table 16.1",
+                );
+            }
+            if api == ApiPath::Glsl130
+                && kind == Kind::Compare
+                && depth_mode(rules, mode) == DepthTextureMode::Alpha
+            {
+                // Two readings, both accepted (contradiction `compat-float-alpha`): compatibility
+                // §11.1.3.5 returns Cs[0] of Cb = (Rt,0,0,1), i.e. r; §8.23.1 with Table 16.1 puts r
+                // in At for ALPHA, Cb = (0,0,0,At), so Cs[0] = 0.
+                return (
+                    [ROrZero, Unused, Unused, Unused],
+                    "GL 4.6 compatibility §11.1.3.5 (Cs[0] of (Rt,0,0,1)) or §8.23.1 + Table 16.1 (ALPHA: r in At, Cs[0] = 0)",
                 );
             }
             match (api, kind) {

@@ -40,6 +40,25 @@ pub fn table_arb_issue2(
     })
 }
 
+/// SGIX_shadow's Table 3.8: "TEXTURE_WRAP_S integer CLAMP, REPEAT" (likewise T and R_EXT).
+pub const TABLE_3_8_WRAPS: &[Wrap] = &[Wrap::Clamp, Wrap::Repeat];
+
+/// Why a case's state lies outside what SGIX_shadow's Table 3.8 lists (wrap modes other than CLAMP and
+/// REPEAT, a TEXTURE_LOD_BIAS), if it does: the text says nothing of such a lookup, so the case is
+/// not applicable rather than an error of the GL of the time (later GLs accept the state).
+pub fn outside_table_3_8(s: &shadowcheck_model::Sampler) -> Option<String> {
+    for (name, w) in [("S", s.wrap_s), ("T", s.wrap_t), ("R_EXT", s.wrap_r)] {
+        if !TABLE_3_8_WRAPS.contains(&w) {
+            return Some(format!(
+                "TEXTURE_WRAP_{name} `{w}`: SGIX_shadow's Table 3.8 lists only CLAMP and REPEAT"
+            ));
+        }
+    }
+    (s.lod_bias != 0.0).then(|| {
+        "TEXTURE_LOD_BIAS: SGIX_shadow's Table 3.8 has no level-of-detail bias".to_string()
+    })
+}
+
 /// Rules of SGIX_shadow; with `Spec::SgixAmbient` also SGIX_shadow_ambient.
 pub fn rules(spec: Spec) -> Rules {
     let ambient = spec == Spec::SgixAmbient;
@@ -62,7 +81,9 @@ pub fn rules(spec: Spec) -> Rules {
         incomplete: Incomplete::Legacy0001,
         es_depth_completeness: false,
         seamless_cube: false,
-        lod_bias: true,
+        // Table 3.8 as updated by SGIX_shadow lists no TEXTURE_LOD_BIAS (EXT_texture_lod_bias, GL 1.4):
+        // a case that sets it is outside this text (`outside_table_3_8`).
+        lod_bias: false,
         // SGIX_shadow_ambient Notes: "the value of the SHADOW_AMBIENT_SGIX parameter is returned,
         // instead of 0.0".
         ambient_on_pass: false,

@@ -3,7 +3,7 @@
 //! An observation is judged against the case's expectation (the oracle's, stored in the fixture),
 //! re-evaluated by the oracle when the backend read back the stored texels (only within the upload
 //! allowance, [`outside_upload_allowance`]; outside it a Fail of its own): Pass inside the
-//! `strict` acceptance set, Warn inside `lenient` only, Fail outside `lenient`. The baseline then
+//! `strict` acceptance set, Warn inside `quality` only, Fail outside `quality`. The baseline then
 //! turns the outcome into a [`Status`](crate::records::Status) ([`crate::baseline`]); both types,
 //! and the [`ExpectedSummary`] kept in the record, are in [`crate::records`].
 
@@ -54,6 +54,7 @@ fn channel_misses(
     for ((name, ch), v) in ['r', 'g', 'b', 'a'].iter().zip(layout).zip(rgba) {
         let ok = match ch {
             Channel::R => acc.is_some_and(|a| a.contains(v)),
+            Channel::ROrZero => v == 0.0 || acc.is_some_and(|a| a.contains(v)),
             Channel::Zero => v == 0.0,
             Channel::One => v == 1.0,
             Channel::Unused => true,
@@ -61,6 +62,10 @@ fn channel_misses(
         if !ok {
             let want = match ch {
                 Channel::R => format!("r in {}", acc.map(|a| a.to_string()).unwrap_or_default()),
+                Channel::ROrZero => format!(
+                    "0 or r in {}",
+                    acc.map(|a| a.to_string()).unwrap_or_default()
+                ),
                 Channel::Zero => "0".to_string(),
                 _ => "1".to_string(),
             };
@@ -80,7 +85,7 @@ fn summary(e: &Expectation, layout: &[Channel; 4], profile: Profile) -> Expected
     ExpectedSummary {
         spec_value: e.spec_value,
         strict: get(Profile::Strict),
-        lenient: get(Profile::Lenient),
+        quality: get(Profile::Quality),
         layout: layout_text(layout),
         profile,
         citations: e.citations.clone(),
@@ -272,7 +277,7 @@ mod tests {
         let expect = with_expect.then(|| {
             let mut accept = BTreeMap::new();
             accept.insert(Profile::Strict, Acceptance(vec![Interval::point(0.0)]));
-            accept.insert(Profile::Lenient, Acceptance(vec![Interval::new(0.0, 0.1)]));
+            accept.insert(Profile::Quality, Acceptance(vec![Interval::new(0.0, 0.1)]));
             let mut layout = BTreeMap::new();
             layout.insert(
                 ApiPath::GlslCore,

@@ -42,6 +42,11 @@ impl Cell {
     pub fn sampler(&self) -> Sampler {
         let mut s = Sampler::new(self.mode, self.func, self.filter);
         s.depth_texture_mode = self.dtm;
+        if matches!(self.spec, Spec::Sgix | Spec::SgixAmbient) {
+            // SGIX_shadow's Table 3.8 lists only CLAMP and REPEAT (not the harness default
+            // CLAMP_TO_EDGE, GL 1.2).
+            (s.wrap_s, s.wrap_t, s.wrap_r) = (Wrap::Clamp, Wrap::Clamp, Wrap::Clamp);
+        }
         s
     }
 }

@@ -154,7 +154,7 @@ pub fn exact(d: &SpecDims) -> Vec<Draft> {
                     ("at+", build::f32_next_up(at)),
                 ];
                 if matches!(func, CompareFunc::Equal | CompareFunc::Notequal) {
-                    // Near misses beyond the lenient 16-bit reference precision: an EQUAL with a
+                    // Near misses beyond the quality 16-bit reference precision: an EQUAL with a
                     // tolerance (mutant equal-with-tolerance) passes them.
                     refs.push(("at-2^-14", build::f32r(at - 2f64.powi(-14))));
                     refs.push(("at+2^-14", build::f32r(at + 2f64.powi(-14))));

@@ -5,7 +5,7 @@ use super::inputs::Coords;
 use super::Eval;
 use crate::cube;
 use crate::select::Geo;
-use crate::unorm::f32r;
+use crate::unorm::{f32_candidates, f32r, Exact};
 use crate::wrap;
 use shadowcheck_model::{Case, Target};
 
@@ -20,12 +20,36 @@ pub(super) fn geometries(
     linear: bool,
     choices: &mut Vec<&'static str>,
 ) -> Vec<Geo> {
-    let geos = faces_and_layers(e, case, co, linear);
+    let mut geos = faces_and_layers(e, case, co, linear);
     if geos.len() > 1 {
         choices.push("the major axis or the layer is tied: the implementation's rounding/tie rule decides (GL 4.6 §8.13, §8.14.2 footnote 4)");
     }
+    if case.lookup.projective && projective_neighbours(&mut geos) {
+        choices.push("projective lookup: s/q and t/q are computed in f32, so either f32 neighbour of the exact quotient may select the texels (as for Dref/q)");
+    }
     layer_and_offset_steps(e, case, &geos, linear);
     geos
+}
+
+/// A projective lookup (1D, 2D, rectangle: one flat geometry) divides s and t by q in f32: each
+/// quotient may be either f32 neighbour of the exact one, as Dref/q is (`inputs::texel_ctx`). Adds
+/// those geometries after the spec's own; true when any was added.
+fn projective_neighbours(geos: &mut Vec<Geo>) -> bool {
+    let Some(&g) = geos.first() else {
+        return false;
+    };
+    let n = geos.len();
+    for s in f32_candidates(Exact::F(g.s)) {
+        for t in f32_candidates(Exact::F(g.t)) {
+            if !geos
+                .iter()
+                .any(|x| x.s == s && x.t == t && x.layer == g.layer)
+            {
+                geos.push(Geo { s, t, ..g });
+            }
+        }
+    }
+    geos.len() > n
 }
 
 /// One geometry per cube face and layer the implementation may choose.

@@ -6,7 +6,7 @@ use super::Eval;
 use crate::rules::{RefClamp, Rules};
 use crate::sample::{Kind, TexelCtx};
 use crate::unorm::{f32_candidates, f32r, Exact};
-use shadowcheck_model::{Case, CompareFunc, CompareMode, DepthStencilMode};
+use shadowcheck_model::{Case, CompareFunc, CompareMode, DepthStencilMode, Spec};
 
 /// The coordinates as the API passes them (f32) and the projective divisor q (1 when not projective).
 pub(super) struct Coords {
@@ -43,6 +43,22 @@ pub(super) fn kind(e: &mut Eval, rules: &Rules, case: &Case) -> Kind {
         Kind::Depth
     } else {
         Kind::Compare
+    }
+}
+
+/// A lookup whose result the text leaves undefined as a whole (every value r can take is accepted,
+/// labelled), with the sentence.
+pub(super) fn undefined_request(rules: &Rules, case: &Case, kind: Kind) -> Option<&'static str> {
+    let compare = case.sampler.compare_mode != CompareMode::None;
+    match kind {
+        // A stencil read goes through an unsigned integer (non-shadow) sampler.
+        Kind::Stencil if compare => Some(
+            "a stencil read with TEXTURE_COMPARE_MODE not NONE: GL 4.6 §11.1.3.5 \"the results of a texture lookup are undefined if ... The sampler used in a texture lookup function is not one of the shadow sampler types, the texture object's base internal format is DEPTH_COMPONENT or DEPTH_STENCIL, and the TEXTURE_COMPARE_MODE is not NONE\"",
+        ),
+        Kind::Colour if compare && matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) => Some(
+            "SGIX_shadow's operators on a colour texture: \"These operators are defined only for textures with internal format DEPTH_COMPONENT or DEPTH_COMPONENTS*_SGI\" (SGIX_shadow, Notes); the result is left open",
+        ),
+        _ => None,
     }
 }
 

@@ -146,7 +146,7 @@ pub(super) fn profile_intervals(
     let case = tcx.case;
     let s = &case.sampler;
     let tex = &case.texture;
-    let fraction =
+    let should_proportional =
         tcx.kind == Kind::Compare && rules.filtering == Filtering::ImplementationDependent;
     // Coordinates off by up to coord_tol texels of the base level (a NEAREST boundary may go either way).
     let (w0, h0) = match tex.levels.first() {
@@ -169,7 +169,7 @@ pub(super) fn profile_intervals(
         if pi == 0 && picks.len() > 1 {
             many_picks = true;
         }
-        if fraction && multi_texel_state(s) {
+        if should_proportional && multi_texel_state(s) {
             let nearest: Vec<Pick> = picks.iter().filter_map(|p| as_linear(*p)).collect();
             if !nearest.is_empty() {
                 multi_texel = true;
@@ -191,7 +191,14 @@ pub(super) fn profile_intervals(
                     };
                     for p in &picks {
                         let sc = build(rules, case, tcx, texels, g, *p);
-                        accept::scen_intervals(&sc, texels, pi, prof, fraction, &mut out);
+                        accept::scen_intervals(
+                            &sc,
+                            texels,
+                            pi,
+                            prof,
+                            should_proportional,
+                            &mut out,
+                        );
                     }
                 }
             }

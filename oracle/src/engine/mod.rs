@@ -71,6 +71,9 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     }
     let coords = inputs::coords(case);
     let tcx = inputs::texel_ctx(&mut e, &rules, case, kind, &coords);
+    if let Some(why) = inputs::undefined_request(&rules, case, kind) {
+        return Ok(undefined(e, &tcx, layouts, why));
+    }
     // Choices the spec leaves to the implementation; labelled only where they change the result.
     let mut choices: Vec<&'static str> = Vec::new();
     let lod = levels::lod(&mut e, &rules, case);
@@ -107,7 +110,8 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
         Kind::Compare => (tcx.pass_v.min(tcx.fail_v), tcx.pass_v.max(tcx.fail_v)),
         _ => (f64::NEG_INFINITY, f64::INFINITY),
     };
-    let acc = accept::finalize(sets, colour_bits, range, spec_value);
+    let value_slack = matches!(kind, Kind::Depth | Kind::Colour);
+    let acc = accept::finalize(sets, colour_bits, value_slack, range, spec_value);
     if !matches!((spec_value, acc.first()), (Some(v), Some(s)) if s.0 == [Interval::point(v)]) {
         choices.into_iter().for_each(|n| e.note(n));
     }
@@ -132,6 +136,9 @@ fn layouts(e: &mut Eval, rules: &Rules, case: &Case, kind: Kind, incomplete: boo
             ),
             cite,
         );
+        if l.contains(&Channel::ROrZero) {
+            e.note(format!("on `{api}` the texts give two readings: the result is r or 0 (contradiction `compat-float-alpha`: {cite})"));
+        }
         layouts.insert(api, l);
     }
     layouts

@@ -69,7 +69,7 @@ pub fn case2d(
                 stencil,
             }],
         },
-        sampler: Sampler::new(CompareMode::Compare, func, filter),
+        sampler: spec_sampler(spec, func, filter),
         lookup: Lookup {
             coord: [st.0, st.1, 0.0, 1.0],
             layer: 0.0,
@@ -81,6 +81,16 @@ pub fn case2d(
         },
         expect: None,
     }
+}
+
+/// A comparing sampler with the harness defaults; SGIX_shadow's Table 3.8 lists only CLAMP and
+/// REPEAT, so its cases clamp with CLAMP.
+pub fn spec_sampler(spec: Spec, func: CompareFunc, filter: Filter) -> Sampler {
+    let mut s = Sampler::new(CompareMode::Compare, func, filter);
+    if matches!(spec, Spec::Sgix | Spec::SgixAmbient) {
+        (s.wrap_s, s.wrap_t, s.wrap_r) = (Wrap::Clamp, Wrap::Clamp, Wrap::Clamp);
+    }
+    s
 }
 
 /// A 1x1 NEAREST case: one texel `dt`, reference `dref`.

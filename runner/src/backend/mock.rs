@@ -5,7 +5,7 @@
 //! The script is a comma-separated list of `action=REGEX` (REGEX on the case id; `action` alone
 //! means every case); the first matching action wins, the default is `pass`:
 //! - `pass`: answers a value inside the strict acceptance set, laid out per API path;
-//! - `warn`: a value inside lenient but outside strict (Fail-level value when there is none);
+//! - `warn`: a value inside quality but outside strict (Fail-level value when there is none);
 //! - `fail`: r = -1 (outside every acceptance set);
 //! - `skip`: answers skip; `error`: answers an error message;
 //! - `crash`: exits with status 3 on reading the case; `hang`: stops answering;
@@ -129,7 +129,7 @@ fn laid_out(case: &Case, api: shadowcheck_model::ApiPath, r: f64) -> [f64; 4] {
         .copied()
         .unwrap_or([Channel::R; 4]);
     layout.map(|c| match c {
-        Channel::R => r,
+        Channel::R | Channel::ROrZero => r,
         Channel::One => 1.0,
         Channel::Zero | Channel::Unused => 0.0,
     })
@@ -146,11 +146,11 @@ fn strict_value(case: &Case) -> Option<f64> {
 
 fn warn_value(case: &Case) -> Option<f64> {
     let e = case.expect.as_ref()?;
-    let (strict, lenient) = (
+    let (strict, quality) = (
         e.accept.get(&Profile::strictest())?,
         e.accept.get(&Profile::loosest())?,
     );
-    lenient
+    quality
         .0
         .iter()
         .flat_map(|i| [i.lo, i.hi, (i.lo + i.hi) / 2.0])

@@ -36,7 +36,7 @@ pub fn exact_rgba(e: &Expectation, api: ApiPath) -> Option<[f64; 4]> {
         })
         .unwrap_or(0.0);
     Some(layout.map(|c| match c {
-        Channel::R => r,
+        Channel::R | Channel::ROrZero => r,
         Channel::Zero | Channel::Unused => 0.0,
         Channel::One => 1.0,
     }))

@@ -46,9 +46,10 @@ pub struct Args {
     /// Magnification filter (nearest, linear). Default: the class of --filter.
     #[arg(long)]
     mag: Option<String>,
-    /// Wrap mode for s, t and r: edge, repeat, mirror, border, mirror_edge, clamp.
-    #[arg(long, default_value = "edge")]
-    wrap: String,
+    /// Wrap mode for s, t and r: edge, repeat, mirror, border, mirror_edge, clamp. Default: edge
+    /// (clamp for sgix and sgix_ambient, whose Table 3.8 lists only CLAMP and REPEAT).
+    #[arg(long)]
+    wrap: Option<String>,
     /// Border depth (TEXTURE_BORDER_COLOR[0]).
     #[arg(long, default_value_t = 0.0)]
     border: f32,
@@ -128,7 +129,11 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
     if let Some(m) = &a.mag {
         sampler.mag_filter = key(m)?;
     }
-    let wrap: Wrap = key(&a.wrap)?;
+    let wrap: Wrap = match &a.wrap {
+        Some(w) => key(w)?,
+        None if matches!(spec, Spec::Sgix | Spec::SgixAmbient) => Wrap::Clamp,
+        None => Wrap::ClampToEdge,
+    };
     (sampler.wrap_s, sampler.wrap_t, sampler.wrap_r) = (wrap, wrap, wrap);
     sampler.border = [a.border, 0.0, 0.0, 0.0];
     sampler.fail_value = a.fail;

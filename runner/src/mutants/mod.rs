@@ -6,10 +6,10 @@
 //! case and judged against the case's stored expectation, exactly as `shadowcheck run --backend
 //! soft` judges it ([`crate::verdict`]):
 //!
-//! - a test is **Fail** when the observation is outside the `lenient` acceptance set, or when the
+//! - a test is **Fail** when the observation is outside the `quality` acceptance set, or when the
 //!   mutant refuses (errors on) a lookup the correct unit answers (the soft backend claims every
 //!   capability, and an error on a supported lookup is a Fail, see [`crate::records::Outcome`]);
-//! - **Warn** when it is inside `lenient` but outside `strict`.
+//! - **Warn** when it is inside `quality` but outside `strict`.
 //!
 //! A mutant is **killed** when at least one test is Fail; **warn-only** when none fails but at least
 //! one is Warn (a weaker kill: a CI gating on Fail would not notice); otherwise it **survived**.

@@ -353,8 +353,8 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
     );
     let _ = writeln!(
         out,
-        "- **Killed**: at least one test is Fail (outside the `lenient` acceptance set, or the mutant refuses a lookup \
-         the correct unit answers). **Warn-only**: no Fail, at least one Warn (inside `lenient`, outside `strict`); a weaker \
+        "- **Killed**: at least one test is Fail (outside the `quality` acceptance set, or the mutant refuses a lookup \
+         the correct unit answers). **Warn-only**: no Fail, at least one Warn (inside `quality`, outside `strict`); a weaker \
          kill, not counted in the score. **Survived**: every test passes. Tests the correct unit itself fails are not \
          counted against a mutant."
     );

@@ -196,11 +196,11 @@ pub struct ExpectedSummary {
     pub spec_value: Option<f64>,
     /// Acceptance set under `strict`, as text (e.g. `{1}` or `[0.25, 0.5]`).
     pub strict: String,
-    /// Acceptance set under `lenient`.
-    pub lenient: String,
+    /// Acceptance set under `quality`.
+    pub quality: String,
     /// Channel layout of the API path (`r`, `0`, `1`, `-`).
     pub layout: String,
-    /// The profile that decided the verdict (`lenient` for Warn and Fail: Warn is inside it, Fail
+    /// The profile that decided the verdict (`quality` for Warn and Fail: Warn is inside it, Fail
     /// outside; only non-passing tests carry an expected summary).
     pub profile: Profile,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]

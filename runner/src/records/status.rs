@@ -17,9 +17,9 @@ use std::str::FromStr;
 pub enum Outcome {
     /// Inside the strict acceptance set.
     Pass,
-    /// Inside lenient, outside strict.
+    /// Inside quality, outside strict.
     Warn,
-    /// Outside lenient, or the implementation reported an error for a lookup it claims to support.
+    /// Outside quality, or the implementation reported an error for a lookup it claims to support.
     Fail,
     /// Not run (with a reason).
     Skip,

@@ -62,8 +62,8 @@ pub fn dump(r: &TestResult, indent: &str) -> String {
         let sv = e.spec_value.map(num).unwrap_or_else(|| "none".into());
         let _ = writeln!(
             s,
-            "{indent}  expected:  spec value {sv}; strict {}; lenient {}; layout ({}); verdict by {}",
-            e.strict, e.lenient, e.layout, e.profile
+            "{indent}  expected:  spec value {sv}; strict {}; quality {}; layout ({}); verdict by {}",
+            e.strict, e.quality, e.layout, e.profile
         );
         if !e.citations.is_empty() {
             let _ = writeln!(s, "{indent}  cites:     {}", e.citations.join("; "));

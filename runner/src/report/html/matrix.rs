@@ -32,7 +32,7 @@ impl Kind {
             Kind::Fail => "f",
         }
     }
-    /// Fail, Crash and Timeout are failures; Warn is lenient-only; Skip is not run.
+    /// Fail, Crash and Timeout are failures; Warn is quality-only; Skip is not run.
     pub fn of(o: Outcome) -> Kind {
         match o {
             Outcome::Pass => Kind::Pass,
@@ -161,8 +161,8 @@ pub fn render(m: &Matrix, out: &mut String) {
     let _ = writeln!(
         out,
         "<p class=\"note\">{} rows (spec / compare func / min/mag filter / format) × {} backends; {} rows have a warning or failure. \
-         A cell counts its tests by raw outcome: a number alone is all pass; <span class=\"w pill\">warn</span> inside the lenient \
-         profile only; <span class=\"f pill\">fail</span> outside lenient, crash or timeout; <span class=\"s pill\">grey</span> not run (skipped). \
+         A cell counts its tests by raw outcome: a number alone is all pass; <span class=\"w pill\">warn</span> inside the quality \
+         profile only; <span class=\"f pill\">fail</span> outside quality, crash or timeout; <span class=\"s pill\">grey</span> not run (skipped). \
          Hover a cell for its counts, click it for its cases.</p>",
         m.rows.len(),
         m.backends.len(),

@@ -109,7 +109,7 @@ fn select_plot(mut items: Vec<PlotItem>, cap: usize) -> (Vec<PlotItem>, usize) {
     }
     let key = |i: &PlotItem| {
         i.spec_value
-            .or_else(|| i.lenient.first().map(|&(a, b)| (a + b) / 2.0))
+            .or_else(|| i.quality.first().map(|&(a, b)| (a + b) / 2.0))
             .unwrap_or(f64::NAN)
     };
     items.sort_by(|a, b| key(a).total_cmp(&key(b)).then_with(|| a.test.cmp(&b.test)));
@@ -117,10 +117,10 @@ fn select_plot(mut items: Vec<PlotItem>, cap: usize) -> (Vec<PlotItem>, usize) {
 }
 
 fn plot_item(r: &TestResult, geo: &Geometry) -> Option<PlotItem> {
-    let (strict, lenient, spec_value) = match (&r.expected, geo.expectation(r)) {
+    let (strict, quality, spec_value) = match (&r.expected, geo.expectation(r)) {
         (Some(e), _) => (
             pictures::parse_acceptance(&e.strict)?,
-            pictures::parse_acceptance(&e.lenient)?,
+            pictures::parse_acceptance(&e.quality)?,
             e.spec_value,
         ),
         (None, Some(e)) => {
@@ -129,7 +129,7 @@ fn plot_item(r: &TestResult, geo: &Geometry) -> Option<PlotItem> {
                     .get(&p)
                     .map(|a| a.0.iter().map(|i| (i.lo, i.hi)).collect::<Vec<_>>())
             };
-            (get(Profile::Strict)?, get(Profile::Lenient)?, e.spec_value)
+            (get(Profile::Strict)?, get(Profile::Quality)?, e.spec_value)
         }
         (None, None) => return None,
     };
@@ -138,7 +138,7 @@ fn plot_item(r: &TestResult, geo: &Geometry) -> Option<PlotItem> {
         kind: Kind::of(r.outcome),
         observed: observed_r(r, geo),
         strict,
-        lenient,
+        quality,
         spec_value,
     })
 }
@@ -280,8 +280,8 @@ pub fn render(input: &ReportInput, geo: &Geometry, opts: &PageOptions) -> String
     o.push_str(
         "<p class=\"note legend\">Heatmaps: single-texel lookups by stored texel Dt (x) and reference Dref (y), 0.05 bins; \
          matching bins shaded by observed r<span style=\"background:#e8f0fe\"></span>0<span style=\"background:#183c8c\"></span>1 \
-         <span style=\"background:#f0a020\"></span>warn (lenient only)<span style=\"background:#d62728\"></span>mismatch (outlined); \
-         dashed line: Dref = Dt. Plots: filtered / mipmapped lookups, lenient interval<span style=\"background:#c9d3e3\"></span>\
+         <span style=\"background:#f0a020\"></span>warn (quality only)<span style=\"background:#d62728\"></span>mismatch (outlined); \
+         dashed line: Dref = Dt. Plots: filtered / mipmapped lookups, quality interval<span style=\"background:#c9d3e3\"></span>\
          strict interval<span style=\"background:#6b7fa8\"></span>observed r as a diamond coloured by the test's outcome (▲▼ off the axis; a test can fail on another channel than r, see its dump). Hover for values.</p>\n",
     );
     if geo.fixtures.is_empty() {
@@ -331,7 +331,7 @@ mod tests {
             expected: Some(ExpectedSummary {
                 spec_value: Some(0.5),
                 strict: "{0.5}".into(),
-                lenient: "[0.25, 0.75]".into(),
+                quality: "[0.25, 0.75]".into(),
                 layout: "r,-,-,-".into(),
                 profile: Profile::Strict,
                 citations: vec![],

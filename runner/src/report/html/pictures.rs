@@ -3,9 +3,9 @@
 //! - [`heatmap`]: for one compare func on one backend, x = Dt (the stored texel value after the
 //!   spec's clamping), y = Dref, binned by 0.05 with one bin each side for values below 0 and
 //!   above 1. A bin's colour is the observed r where every test matched (light = 0, dark = 1, so
-//!   the compare function's step shows), orange where one only met the lenient profile, red
+//!   the compare function's step shows), orange where one only met the quality profile, red
 //!   with a black outline where one was outside every acceptance set.
-//! - [`plot`]: for filtered / mipmapped tests, each test's lenient acceptance interval (light
+//! - [`plot`]: for filtered / mipmapped tests, each test's quality acceptance interval (light
 //!   bar), strict interval (dark bar) and the observed r (diamond, coloured by outcome); values
 //!   outside the axis are drawn at its edge as triangles.
 
@@ -227,9 +227,9 @@ pub struct PlotItem {
     pub test: String,
     pub kind: Kind,
     pub observed: Option<f64>,
-    /// Acceptance intervals of r, strict and lenient (from the record's expected summary).
+    /// Acceptance intervals of r, strict and quality (from the record's expected summary).
     pub strict: Vec<(f64, f64)>,
-    pub lenient: Vec<(f64, f64)>,
+    pub quality: Vec<(f64, f64)>,
     pub spec_value: Option<f64>,
 }
 
@@ -314,7 +314,7 @@ pub fn plot(title: &str, items: &[PlotItem], caption: &str) -> String {
     for (i, it) in items.iter().enumerate() {
         let x0 = LEFT + i as f64 * step;
         let cx = x0 + step / 2.0;
-        for &iv in &it.lenient {
+        for &iv in &it.quality {
             bar(&mut len_d, x0 + step * 0.1, step * 0.8, iv);
         }
         for &iv in &it.strict {
@@ -442,7 +442,7 @@ mod tests {
                 kind: Kind::Warn,
                 observed: Some(-1.0),
                 strict: vec![(0.5, 0.5)],
-                lenient: vec![(0.25, 0.75)],
+                quality: vec![(0.25, 0.75)],
                 spec_value: Some(0.5),
             }],
             "c",

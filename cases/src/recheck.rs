@@ -1,0 +1,78 @@
+//! The trust check of the fixture loaders: a fixture's `expect` is re-derived with the linked oracle
+//! when it loads, and a case whose written expectation (spec value, acceptance sets, layout) differs stops with an error naming the file,
+//! the case, the first field that differs and the command that regenerates (issue 13, section 3).
+//! A stale or edited expectation would otherwise fail a correct implementation with a dump that
+//! contradicts itself.
+
+use crate::fixtures::{CaseRef, FixtureError};
+use shadowcheck_model::{Case, Expectation};
+use std::path::Path;
+
+/// Checks `case.expect` against the oracle's; a case without `expect` has nothing to check.
+pub(crate) fn check(
+    file: &Path,
+    at: &CaseRef,
+    grid: &str,
+    case: &Case,
+) -> Result<(), FixtureError> {
+    let Some(written) = &case.expect else {
+        return Ok(());
+    };
+    let derived = shadowcheck_oracle::evaluate(case)
+        .map_err(|e| FixtureError::Case {
+            file: file.to_path_buf(),
+            at: at.clone(),
+            field: "expect".into(),
+            msg: format!(
+                "the fixture carries an expectation, but the oracle rejects the case: {e}"
+            ),
+        })?
+        .expect;
+    match first_difference(written, &derived) {
+        None => Ok(()),
+        Some((field, fixture, oracle)) => Err(FixtureError::StaleExpect {
+            file: file.to_path_buf(),
+            at: at.clone(),
+            field,
+            msg: format!(
+                "the fixture's expectation {fixture} differs from the oracle's {oracle}: the fixture is stale or was edited; regenerate it with `shadowcheck gen --grid {grid} -o DIR` (DIR: the fixture directory it was generated into, e.g. cases/fixtures)"
+            ),
+        }),
+    }
+}
+
+/// The first field a verdict rests on (spec value, acceptance per profile, layout per API path) in
+/// which two expectations differ: (field path, written, derived). Citations and the
+/// implementation-defined note explain a verdict without deciding it; they are not compared, so a
+/// hand-written fixture may word them its own way.
+fn first_difference(a: &Expectation, b: &Expectation) -> Option<(String, String, String)> {
+    let opt = |v: Option<f64>| v.map_or("none".to_string(), |v| v.to_string());
+    if a.spec_value != b.spec_value {
+        return Some((
+            "expect.spec_value".into(),
+            opt(a.spec_value),
+            opt(b.spec_value),
+        ));
+    }
+    for p in a.accept.keys().chain(b.accept.keys()) {
+        let (x, y) = (a.accept.get(p), b.accept.get(p));
+        if x != y {
+            let show = |v: Option<&shadowcheck_model::Acceptance>| {
+                v.map_or("(missing)".to_string(), |v| v.to_string())
+            };
+            return Some((format!("expect.accept.{p}"), show(x), show(y)));
+        }
+    }
+    for api in a.layout.keys().chain(b.layout.keys()) {
+        let (x, y) = (a.layout.get(api), b.layout.get(api));
+        if x != y {
+            let show = |v: Option<&[shadowcheck_model::Channel; 4]>| {
+                v.map_or("(missing)".to_string(), |l| {
+                    l.iter().map(|c| c.key()).collect::<Vec<_>>().join(",")
+                })
+            };
+            return Some((format!("expect.layout.{api}"), show(x), show(y)));
+        }
+    }
+    None
+}
