@@ -25,12 +25,23 @@ HAVE_GL=no
 [ -f "$T/glprobe/results.csv" ] && grep -q ',Pass,' "$T/glprobe/results.csv" && HAVE_GL=yes
 
 # An external implementation (PROTOCOL.md) that answers correctly (it asks for the expectation)
-# and misbehaves as told: extra (one extra answer line after its 3rd case), dup (two results for
-# one API path of its 3rd case), empty (`results: []` for every case).
+# and misbehaves as told: extra (one extra answer line after the 3rd case it ever saw), dup (two
+# results for one API path of that case), empty (`results: []` for every case). "The 3rd case"
+# is remembered in a file, so a restarted process (the runner restarts it after a protocol error)
+# misbehaves on that same case and no other: exactly one case is at fault.
 cat >"$T/impl.py" <<'EOF'
-import json, sys
+import json, os, sys
 mode = sys.argv[1]
+mark = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bad-" + mode)
 n = 0
+def guilty(case_id):
+    if not os.path.exists(mark):
+        if n < 3:
+            return False
+        with open(mark, "w") as f:
+            f.write(case_id)
+    with open(mark) as f:
+        return f.read() == case_id
 def value(case, api):
     e = case.get("expect") or {}
     r = e.get("spec_value")
@@ -50,10 +61,10 @@ for raw in sys.stdin:
         res = [{"api": a, "rgba": value(c, a)} for a in c["api"]]
         if mode == "empty":
             res = []
-        if mode == "dup" and n == 3:
+        if mode == "dup" and guilty(c["id"]):
             res = res + [{"api": res[0]["api"], "rgba": [0.5, 0.5, 0.5, 0.5]}]
         print(json.dumps({"type": "observation", "case_id": c["id"], "results": res}))
-        if mode == "extra" and n == 3:
+        if mode == "extra" and guilty(c["id"]):
             print(json.dumps({"type": "observation", "case_id": c["id"], "results": res}))
     elif t == "flush":
         sys.stdout.flush()
