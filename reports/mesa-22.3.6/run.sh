@@ -28,7 +28,9 @@ for b in egl:llvmpipe:core egl:llvmpipe:compat egl:llvmpipe:es3 \
 done
 # Condense into this folder: failures.csv (baseline), warnings.csv, summary.md, report.md (capped),
 # and SUMMARY.md over all backends x API paths (`shadowcheck summarize --help`).
-target/release/shadowcheck summarize -o reports/mesa-22.3.6 "$OUT"/r-* --platform "Mesa 22.3.6"
+# The exact Debian package versions go into every summary (the folder name says only 22.3.6).
+PKGS=$(dpkg-query -W -f '${Package} ${Version}, ' libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers 2>/dev/null | sed 's/, $//')
+target/release/shadowcheck summarize -o reports/mesa-22.3.6 "$OUT"/r-* --platform "Mesa 22.3.6 (Debian 12: ${PKGS:-package versions unknown})"
 # The ARB fp DEPTH_TEXTURE_MODE=ALPHA results flip between runs on llvmpipe/softpipe: those tests
 # are kept out of the baselines and listed in flakes.txt (committed by hand, see ../README.md).
 for b in egl-llvmpipe-compat osmesa-llvmpipe-compat egl-softpipe-compat osmesa-softpipe-compat; do
@@ -37,6 +39,7 @@ for b in egl-llvmpipe-compat osmesa-llvmpipe-compat egl-softpipe-compat osmesa-s
 done
 # Check: every backend passes with its own baseline (exit 0).
 for d in reports/mesa-22.3.6/*/; do
+  [ -f "$d/failures.csv" ] || continue   # repro/ and other folders that are not a backend's
   b=$(basename "$d" | sed 's/-/:/g')
   fl=""; [ -f "$d/flakes.txt" ] && fl="--flakes $d/flakes.txt"
   target/release/shadowcheck run --backend "$b" --baseline "$d/failures.csv" $fl --out "$OUT/check-$(basename "$d")"
