@@ -7,14 +7,7 @@
 mod common;
 use common::*;
 use deqp_runner::{read_baseline, RunnerResults, RunnerStatus};
-use std::path::{Path, PathBuf};
-
-fn setup(name: &str, n: usize) -> (PathBuf, String) {
-    let dir = tmpdir(name);
-    let fx = dir.join("fixtures/cases.json");
-    write_fixture(&fx, many_cases(n));
-    (dir.clone(), fx.display().to_string())
-}
+use std::path::Path;
 
 fn deqp_read(path: &Path) -> RunnerResults {
     let mut f = std::fs::File::open(path).unwrap();
@@ -36,7 +29,7 @@ const TWO: &str = "mock:fail=n=0002,crash=n=0003";
 
 #[test]
 fn deqp_runner_reads_single_backend_results_and_failures() {
-    let (dir, fx) = setup("deqp-single", 8);
+    let (dir, fx) = cases_dir("deqp-single", 8);
     let out = dir.join("out");
     run_ok(
         &["-b", ONE, "--fixtures", &fx, "--out", out.to_str().unwrap()],
@@ -57,7 +50,7 @@ fn deqp_runner_reads_single_backend_results_and_failures() {
 
 #[test]
 fn multi_backend_files_name_each_test_once_keep_the_backend_and_baseline_per_backend() {
-    let (dir, fx) = setup("deqp-multi", 8);
+    let (dir, fx) = cases_dir("deqp-multi", 8);
     let out = dir.join("out");
     run_ok(
         &[

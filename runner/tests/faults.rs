@@ -6,13 +6,6 @@ mod common;
 use common::*;
 use std::path::Path;
 
-fn setup(name: &str, n: usize) -> (std::path::PathBuf, String) {
-    let dir = tmpdir(name);
-    let fx = dir.join("fixtures/cases.json");
-    write_fixture(&fx, many_cases(n));
-    (dir.clone(), fx.display().to_string())
-}
-
 fn report(out: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap()
 }
@@ -42,7 +35,7 @@ fn counts(out: &Path) -> serde_json::Value {
 
 #[test]
 fn an_extra_answer_line_blames_the_case_that_answered_twice() {
-    let (dir, fx) = setup("extra", 12);
+    let (dir, fx) = cases_dir("extra", 12);
     let out = dir.join("out");
     // n=0002 answers twice in the middle of a group; n=0003 twice at the end of its group (the
     // stray line is read when the next group starts).
@@ -76,7 +69,7 @@ fn an_extra_answer_line_blames_the_case_that_answered_twice() {
 
 #[test]
 fn two_results_for_one_path_and_empty_results_are_failures_not_skips() {
-    let (dir, fx) = setup("dup", 8);
+    let (dir, fx) = cases_dir("dup", 8);
     let out = dir.join("out");
     let r = run(&[
         "-b",
@@ -106,7 +99,7 @@ fn two_results_for_one_path_and_empty_results_are_failures_not_skips() {
 fn a_crash_that_recurs_on_the_rerun_is_crash_not_flake() {
     // The implementation dies on every 2nd case it reads, whichever it is (the count survives its
     // restarts): the re-run of the crashed cases crashes again, though not always on the same case.
-    let (dir, fx) = setup("crashevery", 30);
+    let (dir, fx) = cases_dir("crashevery", 30);
     let out = dir.join("out");
     let o = bin()
         .args([
@@ -143,7 +136,7 @@ fn a_crash_that_recurs_on_the_rerun_is_crash_not_flake() {
 
 #[test]
 fn an_implementation_that_hangs_on_everything_is_given_up_after_k_timeouts() {
-    let (dir, fx) = setup("hang", 40);
+    let (dir, fx) = cases_dir("hang", 40);
     let out = dir.join("out");
     let t0 = std::time::Instant::now();
     let r = run(&[
@@ -181,7 +174,7 @@ fn an_implementation_that_hangs_on_everything_is_given_up_after_k_timeouts() {
 
 #[test]
 fn a_backend_that_skips_everything_and_a_skips_list_of_everything_exit_4() {
-    let (dir, fx) = setup("skipall", 6);
+    let (dir, fx) = cases_dir("skipall", 6);
     let out = dir.join("out");
     let r = run(&[
         "-b",
@@ -233,7 +226,7 @@ fn a_backend_that_skips_everything_and_a_skips_list_of_everything_exit_4() {
 
 #[test]
 fn a_requested_backend_that_cannot_start_is_named_and_the_run_exits_96_unless_skip_missing() {
-    let (dir, fx) = setup("missing", 4);
+    let (dir, fx) = cases_dir("missing", 4);
     let args = |out: &str, extra: &[&str]| {
         let mut a = vec![
             "-b",
@@ -264,7 +257,7 @@ fn a_requested_backend_that_cannot_start_is_named_and_the_run_exits_96_unless_sk
 
 #[test]
 fn a_second_run_into_a_locked_out_directory_exits_96_naming_the_holder() {
-    let (dir, fx) = setup("lock", 4);
+    let (dir, fx) = cases_dir("lock", 4);
     let out = dir.join("out");
     std::fs::create_dir_all(&out).unwrap();
     let lock = shadowcheck_runner::outdir::OutLock::acquire(&out).unwrap();
@@ -312,7 +305,7 @@ fn empty_or_temporary(dir: &Path) -> Vec<String> {
 
 #[test]
 fn a_report_that_cannot_be_written_is_said_with_the_regressions_and_leaves_no_partial_file() {
-    let (dir, fx) = setup("writefail", 6);
+    let (dir, fx) = cases_dir("writefail", 6);
     let out = dir.join("out");
     // report.json cannot be written: a non-empty directory stands where it goes.
     std::fs::create_dir_all(out.join("report.json/blocker")).unwrap();
@@ -363,7 +356,7 @@ fn a_report_that_cannot_be_written_is_said_with_the_regressions_and_leaves_no_pa
 
 #[test]
 fn results_jsonl_on_a_full_device_is_an_error_before_any_test_runs() {
-    let (dir, fx) = setup("devfull", 4);
+    let (dir, fx) = cases_dir("devfull", 4);
     let out = dir.join("out");
     std::fs::create_dir_all(&out).unwrap();
     std::os::unix::fs::symlink("/dev/full", out.join("results.jsonl")).unwrap();
@@ -381,7 +374,7 @@ fn results_jsonl_on_a_full_device_is_an_error_before_any_test_runs() {
 
 #[test]
 fn an_interrupted_run_writes_its_reports_says_how_to_resume_and_exits_130() {
-    let (dir, fx) = setup("sigint", 60);
+    let (dir, fx) = cases_dir("sigint", 60);
     let out = dir.join("out");
     let args = [
         "run",
@@ -426,7 +419,7 @@ fn ctrl_c_on_the_whole_process_group_keeps_no_crash_of_the_signalled_worker() {
     // As from a terminal: SIGINT reaches the runner and its implementation process at once. The
     // worker's death is the interruption, not a Crash of the case it was on.
     use std::os::unix::process::CommandExt;
-    let (dir, fx) = setup("ctrlc", 400);
+    let (dir, fx) = cases_dir("ctrlc", 400);
     let out = dir.join("out");
     let args = [
         "run",

@@ -4,14 +4,7 @@
 
 mod common;
 use common::*;
-use std::path::{Path, PathBuf};
-
-fn setup(name: &str, n: usize) -> (PathBuf, String) {
-    let dir = tmpdir(name);
-    let fx = dir.join("fixtures/cases.json");
-    write_fixture(&fx, many_cases(n));
-    (dir.clone(), fx.display().to_string())
-}
+use std::path::Path;
 
 fn shadowcheck(args: &[&str]) -> Run {
     Run::of(bin().args(args).output().unwrap())
@@ -23,7 +16,7 @@ fn s(p: &Path) -> String {
 
 #[test]
 fn merge_refuses_missing_shards_and_unrelated_runs() {
-    let (dir, fx) = setup("merge-check", 12);
+    let (dir, fx) = cases_dir("merge-check", 12);
     let shard = |k: &str, extra: &[&str]| {
         let out = dir.join(format!("s{}{}", k.replace('/', "of"), extra.len()));
         let mut args = vec!["-b", "mock:", "--fixtures", &fx, "--shard", k];
@@ -61,7 +54,7 @@ fn merge_refuses_missing_shards_and_unrelated_runs() {
 
 #[test]
 fn report_over_out_star_works_a_second_time() {
-    let (dir, fx) = setup("report-twice", 4);
+    let (dir, fx) = cases_dir("report-twice", 4);
     let out = dir.join("out");
     let r = run(&[
         "-b",
@@ -97,7 +90,7 @@ fn report_over_out_star_works_a_second_time() {
 
 #[test]
 fn baseline_entries_that_excuse_nothing_are_reported() {
-    let (dir, fx) = setup("baseline-notes", 8);
+    let (dir, fx) = cases_dir("baseline-notes", 8);
     let base = dir.join("baseline.csv");
     std::fs::write(
         &base,

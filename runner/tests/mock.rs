@@ -5,16 +5,9 @@
 mod common;
 use common::*;
 
-fn setup(name: &str, n: usize) -> (std::path::PathBuf, String) {
-    let dir = tmpdir(name);
-    let fx = dir.join("fixtures/cases.json");
-    write_fixture(&fx, many_cases(n));
-    (dir.clone(), fx.display().to_string())
-}
-
 #[test]
 fn all_pass_writes_every_report_and_exits_0() {
-    let (dir, fx) = setup("pass", 40);
+    let (dir, fx) = cases_dir("pass", 40);
     let out = dir.join("out");
     let r = run(&[
         "--backend",
@@ -67,7 +60,7 @@ fn all_pass_writes_every_report_and_exits_0() {
 
 #[test]
 fn failures_baseline_and_improvement_give_the_documented_exit_codes() {
-    let (dir, fx) = setup("baseline", 24);
+    let (dir, fx) = cases_dir("baseline", 24);
     let out1 = dir.join("o1");
     let r = run(&[
         "-b",
@@ -162,7 +155,7 @@ fn failures_baseline_and_improvement_give_the_documented_exit_codes() {
 
 #[test]
 fn crash_hang_and_garbage_are_found_by_bisection_and_the_run_goes_on() {
-    let (dir, fx) = setup("bisect", 100);
+    let (dir, fx) = cases_dir("bisect", 100);
     for (mode, label, group) in [("", "streaming", "64"), (",buffer", "buffered", "16")] {
         let out = dir.join(format!("out-{label}"));
         let script = format!("mock:crash=n=0013,hang=n=0042,garbage=n=0077{mode}");
@@ -199,7 +192,7 @@ fn crash_hang_and_garbage_are_found_by_bisection_and_the_run_goes_on() {
 
 #[test]
 fn flakes_known_flakes_skips_and_errors() {
-    let (dir, fx) = setup("flaky", 16);
+    let (dir, fx) = cases_dir("flaky", 16);
     let out = dir.join("out");
     let skips = dir.join("skips.txt");
     std::fs::write(&skips, "# not on this driver\n/greater/\n").unwrap();
@@ -233,7 +226,7 @@ fn flakes_known_flakes_skips_and_errors() {
 
 #[test]
 fn shards_merge_into_the_unsharded_report() {
-    let (dir, fx) = setup("shard", 60);
+    let (dir, fx) = cases_dir("shard", 60);
     let full = dir.join("full");
     let r = run(&[
         "-b",
@@ -280,7 +273,7 @@ fn shards_merge_into_the_unsharded_report() {
 
 #[test]
 fn nothing_selected_exits_4_and_bad_input_96() {
-    let (dir, fx) = setup("empty", 4);
+    let (dir, fx) = cases_dir("empty", 4);
     let out = dir.join("out");
     let r = run(&[
         "-b",
@@ -424,7 +417,7 @@ fn an_implementation_that_stops_reading_cannot_block_the_runner() {
 
 #[test]
 fn parallel_backends_give_the_sequential_report() {
-    let (dir, fx) = setup("jobs", 40);
+    let (dir, fx) = cases_dir("jobs", 40);
     let args = |out: &std::path::Path, jobs: &str| {
         run(&[
             "-b",
@@ -460,7 +453,7 @@ fn parallel_backends_give_the_sequential_report() {
 #[test]
 fn without_gl_drivers_the_default_run_says_how_to_install_them_runs_soft_and_exits_96() {
     // SHADOWCHECK_EXE pointing nowhere makes every GL probe fail, as on a machine without Mesa.
-    let (dir, fx) = setup("nogl", 16);
+    let (dir, fx) = cases_dir("nogl", 16);
     let out = dir.join("out");
     let default_run = |extra: &[&str]| {
         Run::of(

@@ -204,3 +204,12 @@ pub fn status_of<'a>(rows: &'a [(String, String, String)], test_contains: &str) 
         .map(|r| r.1.as_str())
         .collect()
 }
+
+/// A fresh directory for one test holding `fixtures/cases.json` with [`many_cases`]`(n)`; returns
+/// the directory and the fixture path as a `--fixtures` argument.
+pub fn cases_dir(name: &str, n: usize) -> (PathBuf, String) {
+    let dir = tmpdir(name);
+    let fx = dir.join("fixtures/cases.json");
+    write_fixture(&fx, many_cases(n));
+    (dir.clone(), fx.display().to_string())
+}
