@@ -101,11 +101,8 @@ pub fn params(spec: Spec, ctx: Ctx) -> Vec<Param> {
     }
     // ARB_shadow Errors: "INVALID_ENUM is generated if ... TEXTURE_COMPARE_MODE_ARB and
     // parameter <param> is not NONE or COMPARE_R_TO_TEXTURE"; New State: initial NONE.
-    v.push(Param::new(
-        state::TEXTURE_COMPARE_MODE,
+    v.push(Param::compare_mode(
         "TEXTURE_COMPARE_MODE",
-        ParamKind::Enum(&[state::NONE, state::COMPARE_REF_TO_TEXTURE], InvalidEnum),
-        Stored::Enum(state::NONE),
         "ARB_shadow Errors, New State",
     ));
     // ARB_shadow Errors: "... TEXTURE_COMPARE_FUNC_ARB and parameter <param> is not LEQUAL

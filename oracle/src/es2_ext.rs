@@ -5,7 +5,7 @@ use crate::rules::{
     passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, Reading, RefClamp,
     Rules,
 };
-use crate::state::{self, Ctx, GlErrorKind::*, Param, ParamKind, Stored};
+use crate::state::{self, Ctx, Param};
 use shadowcheck_model::{ApiPath, CompareFunc, Format, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
@@ -125,18 +125,12 @@ pub fn params(_: Spec, ctx: Ctx) -> Vec<Param> {
     // NEVER". The extension has no Errors or New State section: ES 2.0 §2.5 reports an
     // unaccepted enum value with INVALID_ENUM, and the initial values are those of ARB_shadow.
     vec![
-        Param::new(
-            state::TEXTURE_COMPARE_MODE,
+        Param::compare_mode(
             "TEXTURE_COMPARE_MODE_EXT",
-            ParamKind::Enum(&[state::NONE, state::COMPARE_REF_TO_TEXTURE], InvalidEnum),
-            Stored::Enum(state::NONE),
             "EXT_shadow_samplers §3.7.4 (table 3.10)",
         ),
-        Param::new(
-            state::TEXTURE_COMPARE_FUNC,
+        Param::compare_func8(
             "TEXTURE_COMPARE_FUNC_EXT",
-            ParamKind::Enum(state::FUNCS8, InvalidEnum),
-            Stored::Enum(state::LEQUAL),
             "EXT_shadow_samplers §3.7.4 (table 3.10)",
         ),
     ]

@@ -2,7 +2,7 @@
 //! Source: specs/registry/EXT_shadow_funcs.txt.
 
 use crate::rules::{passes_if, CompareTable, NotInTable, Rules};
-use crate::state::{self, Ctx, GlErrorKind::*, Param, ParamKind, Stored};
+use crate::state::{self, Ctx, Param};
 use shadowcheck_model::{CompareFunc, Spec};
 use std::cmp::Ordering::{self, *};
 
@@ -50,13 +50,7 @@ pub fn params(_: Spec, ctx: Ctx) -> Vec<Param> {
         if p.pname == state::TEXTURE_COMPARE_FUNC {
             // EXT_shadow_funcs Errors: "... is not one of LEQUAL, GEQUAL, LESS, GREATER, EQUAL,
             // NOTEQUAL, ALWAYS, or NEVER"; initial LEQUAL.
-            *p = Param::new(
-                state::TEXTURE_COMPARE_FUNC,
-                "TEXTURE_COMPARE_FUNC",
-                ParamKind::Enum(state::FUNCS8, InvalidEnum),
-                Stored::Enum(state::LEQUAL),
-                "EXT_shadow_funcs Errors, New State",
-            );
+            *p = Param::compare_func8("TEXTURE_COMPARE_FUNC", "EXT_shadow_funcs Errors, New State");
         }
     }
     v

@@ -121,27 +121,15 @@ pub fn params(_: Spec, ctx: Ctx) -> Vec<Param> {
     // Table 8.17, §8.10 Errors ("INVALID_ENUM ... not among the legal values"), §8.22 / Table
     // 23.15 initial values NONE, LEQUAL, DEPTH_COMPONENT.
     let mut v = vec![
-        Param::new(
-            state::TEXTURE_COMPARE_MODE,
+        Param::compare_mode(
             "TEXTURE_COMPARE_MODE",
-            ParamKind::Enum(&[state::NONE, state::COMPARE_REF_TO_TEXTURE], InvalidEnum),
-            Stored::Enum(state::NONE),
             "GL 4.6 Table 8.17, §8.10, Table 23.15",
         ),
-        Param::new(
-            state::TEXTURE_COMPARE_FUNC,
+        Param::compare_func8(
             "TEXTURE_COMPARE_FUNC",
-            ParamKind::Enum(state::FUNCS8, InvalidEnum),
-            Stored::Enum(state::LEQUAL),
             "GL 4.6 Table 8.17, §8.10, Table 23.15",
         ),
-        Param::new(
-            state::DEPTH_STENCIL_TEXTURE_MODE,
-            "DEPTH_STENCIL_TEXTURE_MODE",
-            ParamKind::Enum(&[state::DEPTH_COMPONENT, state::STENCIL_INDEX], InvalidEnum),
-            Stored::Enum(state::DEPTH_COMPONENT),
-            "GL 4.6 Table 8.17, §8.10, Table 23.15",
-        ),
+        Param::depth_stencil_mode("GL 4.6 Table 8.17, §8.10, Table 23.15"),
     ];
     if ctx == Ctx::Compat {
         // Compatibility Table 8.25: "DEPTH_TEXTURE_MODE enum RED, LUMINANCE, INTENSITY, ALPHA";

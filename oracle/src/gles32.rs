@@ -6,7 +6,7 @@
 use crate::rules::{
     passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,
 };
-use crate::state::{self, Ctx, GlErrorKind::*, Param, ParamKind, Stored};
+use crate::state::{self, Ctx, Param};
 use shadowcheck_model::{ApiPath, CompareFunc, Format, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
@@ -109,26 +109,8 @@ pub fn params(_: Spec, ctx: Ctx) -> Vec<Param> {
     }
     // ES 3.2 Table 8.19, §8.10 Errors, §8.19 initial values.
     vec![
-        Param::new(
-            state::TEXTURE_COMPARE_MODE,
-            "TEXTURE_COMPARE_MODE",
-            ParamKind::Enum(&[state::NONE, state::COMPARE_REF_TO_TEXTURE], InvalidEnum),
-            Stored::Enum(state::NONE),
-            "ES 3.2 Table 8.19, §8.10, §8.19",
-        ),
-        Param::new(
-            state::TEXTURE_COMPARE_FUNC,
-            "TEXTURE_COMPARE_FUNC",
-            ParamKind::Enum(state::FUNCS8, InvalidEnum),
-            Stored::Enum(state::LEQUAL),
-            "ES 3.2 Table 8.19, §8.10, §8.19",
-        ),
-        Param::new(
-            state::DEPTH_STENCIL_TEXTURE_MODE,
-            "DEPTH_STENCIL_TEXTURE_MODE",
-            ParamKind::Enum(&[state::DEPTH_COMPONENT, state::STENCIL_INDEX], InvalidEnum),
-            Stored::Enum(state::DEPTH_COMPONENT),
-            "ES 3.2 Table 8.19, §8.10, §8.19",
-        ),
+        Param::compare_mode("TEXTURE_COMPARE_MODE", "ES 3.2 Table 8.19, §8.10, §8.19"),
+        Param::compare_func8("TEXTURE_COMPARE_FUNC", "ES 3.2 Table 8.19, §8.10, §8.19"),
+        Param::depth_stencil_mode("ES 3.2 Table 8.19, §8.10, §8.19"),
     ]
 }

@@ -117,6 +117,43 @@ pub struct Param {
 }
 
 impl Param {
+    /// TEXTURE_COMPARE_MODE (spelled `name` by the spec): NONE or COMPARE_REF_TO_TEXTURE, anything
+    /// else INVALID_ENUM, initially NONE: the same in every spec that has the pname (each cites its
+    /// own sentence).
+    pub(crate) const fn compare_mode(name: &'static str, cite: &'static str) -> Param {
+        Param::new(
+            TEXTURE_COMPARE_MODE,
+            name,
+            ParamKind::Enum(&[NONE, COMPARE_REF_TO_TEXTURE], GlErrorKind::InvalidEnum),
+            Stored::Enum(NONE),
+            cite,
+        )
+    }
+
+    /// TEXTURE_COMPARE_FUNC with the eight functions of EXT_shadow_funcs and later, anything else
+    /// INVALID_ENUM, initially LEQUAL.
+    pub(crate) const fn compare_func8(name: &'static str, cite: &'static str) -> Param {
+        Param::new(
+            TEXTURE_COMPARE_FUNC,
+            name,
+            ParamKind::Enum(FUNCS8, GlErrorKind::InvalidEnum),
+            Stored::Enum(LEQUAL),
+            cite,
+        )
+    }
+
+    /// DEPTH_STENCIL_TEXTURE_MODE: DEPTH_COMPONENT or STENCIL_INDEX, anything else INVALID_ENUM,
+    /// initially DEPTH_COMPONENT.
+    pub(crate) const fn depth_stencil_mode(cite: &'static str) -> Param {
+        Param::new(
+            DEPTH_STENCIL_TEXTURE_MODE,
+            "DEPTH_STENCIL_TEXTURE_MODE",
+            ParamKind::Enum(&[DEPTH_COMPONENT, STENCIL_INDEX], GlErrorKind::InvalidEnum),
+            Stored::Enum(DEPTH_COMPONENT),
+            cite,
+        )
+    }
+
     pub(crate) const fn new(
         pname: u32,
         name: &'static str,
