@@ -3,7 +3,7 @@
 //! or API path it does not implement: not applicable, as a dEQP caselist would not list it).
 
 use serde::{Deserialize, Serialize};
-use shadowcheck_model::{ApiPath, Case};
+use shadowcheck_model::{ApiPath, Case, Wrap};
 
 /// What an implementation can run (fixture keys). `None` for a list means "no restriction
 /// declared".
@@ -36,7 +36,9 @@ pub struct Feature {
 }
 
 /// Every feature a case may need. OpenGL ES has no TEXTURE_LOD_BIAS (ES 3.2 §8.10 lists no such
-/// parameter); TEXTURE_COMPARE_FAIL_VALUE_ARB exists only with GL_ARB_shadow_ambient.
+/// parameter); TEXTURE_COMPARE_FAIL_VALUE_ARB exists only with GL_ARB_shadow_ambient; OpenGL ES
+/// 3.0 and WebGL 2.0 have neither TEXTURE_BORDER_COLOR nor CLAMP_TO_BORDER (ES 3.2 §8.10 added
+/// them) nor DEPTH_STENCIL_TEXTURE_MODE (ES 3.1; WebGL 2.0 only with WEBGL_stencil_texturing).
 pub const FEATURES: &[Feature] = &[
     Feature {
         key: "lod_bias",
@@ -48,7 +50,29 @@ pub const FEATURES: &[Feature] = &[
         what: "TEXTURE_COMPARE_FAIL_VALUE_ARB (GL_ARB_shadow_ambient)",
         used_by: |c| c.sampler.fail_value.is_some(),
     },
+    Feature {
+        key: "border_color",
+        what: "TEXTURE_BORDER_COLOR / CLAMP_TO_BORDER",
+        used_by: uses_border,
+    },
+    Feature {
+        key: "depth_stencil_mode",
+        what: "DEPTH_STENCIL_TEXTURE_MODE",
+        used_by: |c| c.sampler.depth_stencil_mode.is_some(),
+    },
 ];
+
+/// A border colour other than the default, or CLAMP_TO_BORDER on a coordinate the target wraps.
+fn uses_border(c: &Case) -> bool {
+    let s = &c.sampler;
+    let t = c.texture.target;
+    let wraps = [
+        Some(s.wrap_s),
+        (t.dims() == 2).then_some(s.wrap_t),
+        t.is_cube().then_some(s.wrap_r),
+    ];
+    s.border != [0.0; 4] || wraps.contains(&Some(Wrap::ClampToBorder))
+}
 
 fn listed(list: &Option<Vec<String>>, key: &str) -> bool {
     list.as_ref().is_none_or(|l| l.iter().any(|k| k == key))
@@ -158,6 +182,16 @@ mod tests {
             ..Capabilities::all()
         };
         assert!(matches!(listed.support(&ambient), Support::Run { .. }));
+        // CLAMP_TO_BORDER alone (default border colour) needs border_color too.
+        let border = case(
+            &CASE
+                .replace("FAIL", "")
+                .replace(r#""wrap_s":"edge""#, r#""wrap_s":"border""#),
+        );
+        match none.support(&border) {
+            Support::Skip(why) => assert!(why.contains("border_color"), "{why}"),
+            other => panic!("{other:?}"),
+        }
         // Not declared at all: no restriction (soft, exec implementations that say nothing).
         assert!(matches!(
             Capabilities::all().support(&ambient),

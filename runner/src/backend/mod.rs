@@ -6,6 +6,7 @@
 //! - `soft` / `soft:<spec>`: the project's own texture unit (shadowcheck-soft);
 //! - `exec:<command line>`: an external process speaking runner/PROTOCOL.md;
 //! - `egl:*`, `osmesa:*`: GL drivers, each in a `shadowcheck gl-worker` child speaking the protocol;
+//! - `webgl:chromium`: WebGL 2.0 in headless Chromium, in a `shadowcheck webgl-worker` child;
 //! - `mock:<script>`: a scripted implementation for testing the runner itself.
 
 mod answer;
@@ -15,6 +16,7 @@ pub mod gl;
 pub mod kinds;
 pub mod mock;
 pub mod soft;
+pub mod webgl;
 
 use shadowcheck_model::{ApiPath, Case, Texels};
 pub use shadowcheck_protocol::{Capabilities, Support};
@@ -103,10 +105,12 @@ pub fn gl_backends() -> Vec<String> {
     gl::probe()
 }
 
-/// Backends run when none is named: `soft` plus every GL backend a machine with Mesa offers. The
-/// second list holds those that cannot start here, each with the reason (a driver not installed or
-/// hidden); combinations that can never work (OSMesa with ES, OSMesa with zink) are in neither.
-pub fn default_backends() -> (Vec<String>, Vec<(String, String)>) {
+/// Backends run when none is named: `soft`, every GL backend a machine with Mesa offers, and
+/// `webgl:chromium` when Chromium is installed. The second list holds those that cannot start
+/// here, each with the reason (a driver not installed or hidden); combinations that can never work
+/// (OSMesa with ES, OSMesa with zink) are in neither. The third is a note for a browser that is
+/// not installed (announced, not an error: most machines have none).
+pub fn default_backends() -> (Vec<String>, Vec<(String, String)>, Vec<String>) {
     let mut run = vec!["soft".to_string()];
     let mut missing = vec![];
     for (name, probed) in gl::probe_report() {
@@ -121,7 +125,12 @@ pub fn default_backends() -> (Vec<String>, Vec<(String, String)>) {
             Err(why) => missing.push((name, why)),
         }
     }
-    (run, missing)
+    let mut absent = vec![];
+    match webgl::installed() {
+        Ok(()) => run.push("webgl:chromium".to_string()),
+        Err(why) => absent.push(format!("backend `webgl:chromium` not run: {why}")),
+    }
+    (run, missing, absent)
 }
 
 /// Opens the backend called `name` (starting and greeting its process, if any); the kind comes

@@ -156,7 +156,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     // Backends that cannot start here: named with the reason and the install hint; the run goes on
     // without them and exits 96 unless --skip-missing.
     let (requested, mut missing) = if a.backends.is_empty() {
-        backend::default_backends()
+        let (run, missing, absent) = backend::default_backends();
+        for note in absent {
+            eprintln!("shadowcheck: note: {note}");
+        }
+        (run, missing)
     } else {
         (a.backends.clone(), vec![])
     };
