@@ -63,7 +63,7 @@ struct Param {
     #[serde(skip_serializing_if = "Option::is_none")]
     int: Option<u32>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    float: Option<f32>,
+    float: Option<Js>,
 }
 
 #[derive(Debug, Serialize)]
@@ -72,10 +72,36 @@ struct Draw {
     api: String,
     slot: usize,
     program: usize,
-    p: [f32; 4],
-    x: f32,
-    dx: [f32; 4],
-    dy: [f32; 4],
+    p: [Js; 4],
+    x: Js,
+    dx: [Js; 4],
+    dy: [Js; 4],
+}
+
+/// An f32 as the page reads it: a JSON number when finite (shortest round-trip text, so the
+/// page's `Number` and WebGL's conversion to float give the same f32), else `"Infinity"`,
+/// `"-Infinity"` or `"NaN"` (JSON has no such numbers; serde_json would write `null`), which
+/// JavaScript's `Number()` reads back.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Js(pub f32);
+
+impl Serialize for Js {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let v = self.0;
+        if v.is_finite() {
+            s.serialize_f32(v)
+        } else if v.is_nan() {
+            s.serialize_str("NaN")
+        } else if v > 0.0 {
+            s.serialize_str("Infinity")
+        } else {
+            s.serialize_str("-Infinity")
+        }
+    }
+}
+
+fn js4(v: [f32; 4]) -> [Js; 4] {
+    v.map(Js)
 }
 
 /// What a job's pixels mean: per slot, the case, its path and the plan's note.
@@ -116,7 +142,7 @@ fn texture_of(info: &GlInfo, case: &Case) -> Result<Texture, GlError> {
         .map(|p| {
             let (int, float) = match p.value {
                 ParamValue::Int(v) => (Some(v), None),
-                ParamValue::Float(v) => (None, Some(v)),
+                ParamValue::Float(v) => (None, Some(Js(v))),
                 ParamValue::Floats(_) => (None, None),
             };
             Param {
@@ -215,10 +241,10 @@ pub fn build(info: &GlInfo, cases: &[Case]) -> Built {
                 api: plan.key.path.key().to_string(),
                 slot,
                 program,
-                p: plan.p,
-                x: plan.x,
-                dx: plan.dx,
-                dy: plan.dy,
+                p: js4(plan.p),
+                x: Js(plan.x),
+                dx: js4(plan.dx),
+                dy: js4(plan.dy),
             });
         }
     }

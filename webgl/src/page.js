@@ -158,7 +158,7 @@ globalThis.shadowcheck = (() => {
     check("texture upload (glTexImage*)");
     for (const p of t.params) {
       if (p.int !== undefined) gl.texParameteri(t.target, p.pname, p.int);
-      else if (p.float !== undefined) gl.texParameterf(t.target, p.pname, p.float);
+      else if (p.float !== undefined) gl.texParameterf(t.target, p.pname, Number(p.float));
       else throw new Error(p.call + ": WebGL 2.0 has no vector TexParameter");
       check(p.call);
     }
@@ -171,10 +171,11 @@ globalThis.shadowcheck = (() => {
     const y = Math.floor(d.slot / FB);
     gl.viewport(x, y, 1, 1);
     gl.useProgram(p.prog);
-    gl.uniform4fv(p.u_p, d.p);
-    gl.uniform1f(p.u_x, d.x);
-    gl.uniform4fv(p.u_dx, d.dx);
-    gl.uniform4fv(p.u_dy, d.dy);
+    // Numbers, or "Infinity" / "-Infinity" / "NaN" (job.rs, Js).
+    gl.uniform4fv(p.u_p, d.p.map(Number));
+    gl.uniform1f(p.u_x, Number(d.x));
+    gl.uniform4fv(p.u_dx, d.dx.map(Number));
+    gl.uniform4fv(p.u_dy, d.dy.map(Number));
     gl.uniform2f(p.u_c, x + 0.5, y + 0.5);
     gl.bindVertexArray(vao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
