@@ -42,7 +42,14 @@ pub const FLAGS: &[&str] = &[
 /// `chromium-browser` on PATH.
 pub fn chromium_exe() -> Result<PathBuf, WebglError> {
     if let Some(p) = std::env::var_os(CHROMIUM_ENV) {
-        return Ok(PathBuf::from(p));
+        let p = PathBuf::from(p);
+        if !p.is_file() {
+            return Err(WebglError::NoBrowser(format!(
+                "{CHROMIUM_ENV}={} is not a file (unset it to use `chromium` on PATH; install that with `{INSTALL}`)",
+                p.display()
+            )));
+        }
+        return Ok(p);
     }
     let path = std::env::var_os("PATH").unwrap_or_default();
     for dir in std::env::split_paths(&path) {
