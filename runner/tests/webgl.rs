@@ -75,6 +75,16 @@ fn webgl2_in_headless_chromium_passes_the_d16_and_d32f_fixtures_and_skips_what_i
         stderr.contains("implementation: webgl:chromium (WebGL 2.0"),
         "{stderr}"
     );
+    // The run's meta line records the renderer.
+    let jsonl = std::fs::read_to_string(tmp.join("results.jsonl")).unwrap();
+    let meta: serde_json::Value = serde_json::from_str(jsonl.lines().next().unwrap()).unwrap();
+    let implementation = meta["implementations"]["webgl:chromium"]
+        .as_str()
+        .unwrap_or("");
+    assert!(
+        implementation.starts_with("webgl:chromium (WebGL 2.0") && implementation.contains("ANGLE"),
+        "{meta}"
+    );
     let r = results(&tmp);
     let count = |s: &str| r.values().filter(|(st, _)| st == s).count();
     assert_eq!(count("Fail") + count("Crash") + count("Timeout"), 0);

@@ -63,6 +63,11 @@ pub trait Backend: Send {
     fn batch_size(&self) -> usize {
         256
     }
+    /// What the implementation called itself (the protocol hello's `name`: version, renderer),
+    /// for the run's meta line; `None` when it said nothing.
+    fn implementation(&self) -> Option<String> {
+        None
+    }
     /// Lines an implementation printed on stderr, restarts and the like since the last call.
     fn take_diagnostics(&mut self) -> Vec<String> {
         vec![]
