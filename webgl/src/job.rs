@@ -263,9 +263,17 @@ pub struct PageAnswer {
 
 /// The answers of a built job from the page's answer, one per case in order.
 pub fn answers(mut built: Built, cases: &[Case], page: PageAnswer) -> Vec<Answer> {
-    let bytes = base64::engine::general_purpose::STANDARD
-        .decode(page.pixels.as_bytes())
-        .unwrap_or_default();
+    let bytes = match base64::engine::general_purpose::STANDARD.decode(page.pixels.as_bytes()) {
+        Ok(b) => b,
+        Err(e) => {
+            let msg = format!("page answer: pixels are not base64 ({e})");
+            return built
+                .answers
+                .into_iter()
+                .map(|a| a.unwrap_or_else(|| Answer::Error(msg.clone())))
+                .collect();
+        }
+    };
     let px: Vec<[f32; 4]> = bytes
         .chunks_exact(16)
         .map(|c| {
