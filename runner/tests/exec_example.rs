@@ -138,6 +138,10 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
     );
     assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
     assert_eq!(results(&merged), rows);
+    // The merged results.jsonl holds every test (it is what the next merge or report reads).
+    let again = shadowcheck_runner::records::read_results(&merged.join("results.jsonl")).unwrap();
+    assert_eq!(again.results.len(), 16);
+    assert_eq!(again.not_applicable.values().sum::<usize>(), 1);
     let report: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(merged.join("report.json")).unwrap())
             .unwrap();
