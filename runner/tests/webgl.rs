@@ -32,12 +32,23 @@ fn fixtures() -> PathBuf {
         .join("cases/fixtures")
 }
 
-/// (status, reason) of every test in `dir/results.jsonl`, by test name (the last record wins).
+/// (status, reason) of every test in `dir/results.jsonl`, by test name (the last record wins;
+/// a compact `passed` line holds plain passes of one case).
 fn results(dir: &std::path::Path) -> BTreeMap<String, (String, Option<String>)> {
     let text = std::fs::read_to_string(dir.join("results.jsonl")).unwrap();
     let mut out = BTreeMap::new();
     for line in text.lines() {
         let v: serde_json::Value = serde_json::from_str(line).unwrap();
+        if v["kind"] == "passed" {
+            for t in v["tests"].as_array().unwrap() {
+                let test = format!(
+                    "{}@{}",
+                    v["case_id"].as_str().unwrap(),
+                    t[0].as_str().unwrap()
+                );
+                out.insert(test, ("Pass".to_string(), None));
+            }
+        }
         if v["kind"] == "result" {
             out.insert(
                 v["test"].as_str().unwrap().to_string(),
