@@ -161,3 +161,33 @@ fn the_default_run_includes_webgl_chromium_when_installed_and_announces_it_when_
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_browser_that_dies_at_start_is_a_backend_that_cannot_start_with_the_reason() {
+    // /bin/false as the browser: it exits at once, closing the DevTools pipe before any answer.
+    let (dir, fx) = cases_dir("webgl-dead", 2);
+    let r = Run::of(
+        bin()
+            .args([
+                "run",
+                "--backend",
+                "webgl:chromium",
+                "--fixtures",
+                &fx,
+                "--out",
+            ])
+            .arg(dir.join("out"))
+            .env(shadowcheck_webgl::browser::CHROMIUM_ENV, "/bin/false")
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(r.code, 96, "{}{}", r.stdout, r.stderr);
+    assert!(
+        r.stderr
+            .contains("backend `webgl:chromium` cannot start here")
+            && r.stderr.contains("DevTools pipe"),
+        "{}",
+        r.stderr
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
