@@ -6,7 +6,7 @@
 #
 # Binary: the commit that last changed this folder. Fixtures: the committed default set; only the
 # GLES 3.2 cases (es300 path) are tests of this backend, the rest are not applicable.
-# Timing (2026-11-23, 2 shared CPUs): the whole backend in 4.5-7 s wall clock (flake re-runs
+# Timing (2026-11-23, 2 shared CPUs): the whole backend in 3.6-4.1 s wall clock (flake re-runs
 # included), browser start and page 1.2-1.9 s of it (`shadowcheck webgl-worker --probe`).
 set -e
 cargo build --release -p shadowcheck-runner

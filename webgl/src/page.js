@@ -156,11 +156,23 @@ globalThis.shadowcheck = (() => {
       }
     }
     check("texture upload (glTexImage*)");
-    for (const p of t.params) {
-      if (p.int !== undefined) gl.texParameteri(t.target, p.pname, p.int);
-      else if (p.float !== undefined) gl.texParameterf(t.target, p.pname, Number(p.float));
-      else throw new Error(p.call + ": WebGL 2.0 has no vector TexParameter");
-      check(p.call);
+    // getError is a synchronous round trip to the GPU process: one check for all the calls, and
+    // only when that finds an error, the calls again one by one to name the one that raised it
+    // (setting a parameter twice to the same value changes nothing).
+    const setParams = (each) => {
+      for (const p of t.params) {
+        if (p.int !== undefined) gl.texParameteri(t.target, p.pname, p.int);
+        else if (p.float !== undefined) gl.texParameterf(t.target, p.pname, Number(p.float));
+        else throw new Error(p.call + ": WebGL 2.0 has no vector TexParameter");
+        if (each) check(p.call);
+      }
+    };
+    setParams(false);
+    const e = gl.getError();
+    if (e !== gl.NO_ERROR) {
+      while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+      setParams(true);
+      throw new Error("glTexParameter* raised " + errorName(e));
     }
     return tex;
   }
