@@ -191,3 +191,65 @@ fn a_browser_that_dies_at_start_is_a_backend_that_cannot_start_with_the_reason()
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_rejected_tex_parameter_is_an_error_answer_naming_the_call() {
+    if !chromium_or_skip("the webgl:chromium TexParameter error test") {
+        return;
+    }
+    // A GLES 3.2 case from the fixtures, drawn as is and with MIRROR_CLAMP_TO_EDGE on s: WebGL
+    // accepts an extension's enums only once the page has enabled it with getExtension (the WebGL
+    // specification's extension rules; INVALID_ENUM otherwise), and the page does not enable
+    // EXT_texture_mirror_clamp_to_edge.
+    let file = fixtures().join("gles32/2d/nearest.json");
+    let fixture: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    let mut case = fixture["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["texture"]["format"] == "d16" && c["sampler"]["wrap_s"] == "edge")
+        .unwrap()
+        .clone();
+    case.as_object_mut().unwrap().remove("expect");
+    let mut bad = case.clone();
+    bad["id"] = serde_json::json!(format!("{}-mirror", case["id"].as_str().unwrap()));
+    bad["sampler"]["wrap_s"] = serde_json::json!("mirror_edge");
+    let input: Vec<String> = [
+        serde_json::json!({"type": "hello", "protocol": 1}),
+        serde_json::json!({"type": "case", "case": case}),
+        serde_json::json!({"type": "case", "case": bad}),
+        serde_json::json!({"type": "flush"}),
+        serde_json::json!({"type": "bye"}),
+    ]
+    .iter()
+    .map(|m| m.to_string())
+    .collect();
+    let mut child = bin()
+        .arg("webgl-worker")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    {
+        use std::io::Write;
+        let mut stdin = child.stdin.take().unwrap();
+        stdin
+            .write_all((input.join("\n") + "\n").as_bytes())
+            .unwrap();
+    }
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success());
+    let lines: Vec<serde_json::Value> = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(lines.len(), 3, "{lines:?}");
+    assert_eq!(lines[1]["type"], "observation", "{}", lines[1]);
+    assert_eq!(lines[2]["type"], "error", "{}", lines[2]);
+    assert_eq!(
+        lines[2]["message"],
+        "glTexParameteri(TEXTURE_WRAP_S) raised GL_INVALID_ENUM"
+    );
+}
