@@ -12,8 +12,10 @@ pub fn install_hint(b: BackendName) -> String {
         Platform::Egl => vec!["libegl1", "libegl-mesa0", "libgl1-mesa-dri"],
         Platform::Osmesa => vec!["libosmesa6", "libgl1-mesa-dri"],
     };
-    if b.driver == Driver::Zink {
-        pkgs.push("mesa-vulkan-drivers");
+    match b.driver {
+        Driver::Zink => pkgs.push("mesa-vulkan-drivers"),
+        Driver::ZinkSwiftshader => pkgs.extend(["libvulkan1", "chromium-common"]),
+        Driver::Llvmpipe | Driver::Softpipe => {}
     }
     format!("apt-get install -y {}", pkgs.join(" "))
 }
@@ -75,6 +77,7 @@ impl GlContext {
         if let Some(why) = b.static_unavailability() {
             return Err(GlError::Unavailable(why));
         }
+        check_files(b)?;
         match b.platform {
             Platform::Egl => create_egl(b),
             Platform::Osmesa => create_osmesa(b),
@@ -96,10 +99,36 @@ impl GlContext {
     }
 }
 
+/// Whether the files a backend needs beyond the system's libraries are here (SwiftShader's Vulkan
+/// ICD for zink+swiftshader); the error names the file and the install command.
+pub fn check_files(b: BackendName) -> Result<(), GlError> {
+    match b.missing_file() {
+        None => Ok(()),
+        Some((path, install)) => Err(GlError::MissingLibrary {
+            lib: path.display().to_string(),
+            detail: "no such file".into(),
+            install: install.into(),
+        }),
+    }
+}
+
 /// Versions to try, highest first: drivers refuse versions above what they support.
 fn versions(api: ContextApi) -> &'static [(i32, i32)] {
     match api {
-        ContextApi::Core | ContextApi::Compat => &[
+        // A core profile exists from GL 3.2 on.
+        ContextApi::Core => &[
+            (4, 6),
+            (4, 5),
+            (4, 3),
+            (4, 2),
+            (4, 1),
+            (4, 0),
+            (3, 3),
+            (3, 2),
+        ],
+        // Down to GL 2.1 (zink on SwiftShader offers no more): fixed function, ARB fragment
+        // programs and GLSL 1.20 need no more; what needs more is Skip by capability.
+        ContextApi::Compat => &[
             (4, 6),
             (4, 5),
             (4, 3),
@@ -110,6 +139,7 @@ fn versions(api: ContextApi) -> &'static [(i32, i32)] {
             (3, 2),
             (3, 1),
             (3, 0),
+            (2, 1),
         ],
         ContextApi::Es3 => &[(3, 2), (3, 1), (3, 0)],
         ContextApi::Es2 => &[(2, 0)],

@@ -44,6 +44,7 @@ pub fn worker_command(backend: &str) -> Result<ProcessCommand, GlError> {
     if let Some(why) = name.static_unavailability() {
         return Err(GlError::Unavailable(why));
     }
+    shadowcheck_gl::context::check_files(name)?;
     Ok(ProcessCommand {
         program: shadowcheck_exe()?,
         args: vec!["gl-worker".into(), "--backend".into(), name.to_string()],

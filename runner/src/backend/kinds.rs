@@ -37,7 +37,7 @@ pub const KINDS: &[Kind] = &[
     Kind {
         prefix: "egl",
         pattern: "egl:*",
-        help: "egl:<driver>:<api>[:<form>], a Mesa driver through EGL in a gl-worker child",
+        help: "egl:<driver>:<api>[:<form>], a Mesa driver (or zink+swiftshader) through EGL in a gl-worker child",
         open: open_gl,
     },
     Kind {
