@@ -9,6 +9,9 @@
 //! environment variables that must be set before Mesa loads, which is why every backend runs in its
 //! own worker process (see shadowcheck-runner's `backend::gl::worker_command`).
 
+use super::libdir::{
+    lib_dir_env, missing_lib, swiftshader_dir, SWIFTSHADER_FETCH, SWIFTSHADER_LIBS,
+};
 use super::GlError;
 use shadowcheck_model::ApiPath;
 
@@ -34,6 +37,14 @@ pub enum Driver {
     /// filtering and mip selection. Its native contexts are GL 2.1 and ES 2.0; see
     /// [`BackendName::env`] for the version overrides and why they are honest.
     ZinkSwiftshader,
+    /// SwiftShader's own OpenGL ES 3.0 (front end, shader compiler and sampler its own): the
+    /// `libEGL.so` / `libGLESv2.so` of the cefpython3 66.0 wheel, fetched by
+    /// `gl/fetch-swiftshader.sh` into [`swiftshader_dir`]; EGL 1.4 only (pbuffer contexts).
+    Swiftshader,
+    /// Whatever the system's (or `egl@<dir>:`'s) libEGL gives, with none of Mesa's driver
+    /// variables: a vendor's EGL driver. Never probed by the default run (on a Mesa machine it is
+    /// one of Mesa's drivers again); named explicitly.
+    Native,
 }
 
 /// The kind of context.
@@ -97,11 +108,13 @@ impl Platform {
 
 impl Driver {
     /// Every driver a backend name may give.
-    pub const ALL: [Driver; 4] = [
+    pub const ALL: [Driver; 6] = [
         Driver::Llvmpipe,
         Driver::Softpipe,
         Driver::Zink,
         Driver::ZinkSwiftshader,
+        Driver::Swiftshader,
+        Driver::Native,
     ];
     /// Mesa's own Gallium drivers (on lavapipe for zink): one GL front end and state tracker.
     pub const MESA: [Driver; 3] = [Driver::Llvmpipe, Driver::Softpipe, Driver::Zink];
@@ -111,7 +124,17 @@ impl Driver {
             Driver::Softpipe => "softpipe",
             Driver::Zink => "zink",
             Driver::ZinkSwiftshader => "zink+swiftshader",
+            Driver::Swiftshader => "swiftshader",
+            Driver::Native => "native",
         }
+    }
+    /// Whether Mesa's driver-selection variables (LIBGL_ALWAYS_SOFTWARE, GALLIUM_DRIVER,
+    /// EGL_PLATFORM) apply: the Gallium drivers.
+    fn is_gallium(self) -> bool {
+        matches!(
+            self,
+            Driver::Llvmpipe | Driver::Softpipe | Driver::Zink | Driver::ZinkSwiftshader
+        )
     }
     /// Whether GL_RENDERER names this driver (`zink (SwiftShader Device (Subzero))` for
     /// zink+swiftshader, `zink (Lavapipe ...)` for zink): a worker refuses to run on another one.
@@ -121,6 +144,9 @@ impl Driver {
             Driver::Llvmpipe | Driver::Softpipe => r.contains(self.key()),
             Driver::Zink => r.contains("zink") && !r.contains("swiftshader"),
             Driver::ZinkSwiftshader => r.contains("zink") && r.contains("swiftshader"),
+            // "Google SwiftShader" (SwiftShader 4.0's own GLES).
+            Driver::Swiftshader => r.contains("swiftshader") && !r.contains("zink"),
+            Driver::Native => true,
         }
     }
 }
@@ -172,11 +198,12 @@ impl ContextApi {
 }
 
 impl BackendName {
-    /// Every combination, in a stable order (EGL first).
+    /// Every combination the default run probes, in a stable order (EGL first): every driver but
+    /// `native`.
     pub fn all() -> Vec<BackendName> {
         let mut v = Vec::new();
         for platform in [Platform::Egl, Platform::Osmesa] {
-            for driver in Driver::ALL {
+            for driver in Driver::ALL.into_iter().filter(|d| *d != Driver::Native) {
                 for api in ContextApi::ALL {
                     v.push(BackendName {
                         platform,
@@ -199,6 +226,22 @@ impl BackendName {
                     + ":"
                     + self.api.key(),
             );
+        }
+        if self.driver == Driver::Swiftshader && !self.api.is_es() {
+            return Some(format!(
+                "SwiftShader's own GL is OpenGL ES only; use egl:swiftshader:es3 or egl:zink+swiftshader:{}",
+                self.api.key()
+            ));
+        }
+        if self.platform == Platform::Osmesa
+            && matches!(self.driver, Driver::Swiftshader | Driver::Native)
+        {
+            return Some(format!(
+                "{} is an EGL library; use egl:{}:{}",
+                self.driver.key(),
+                self.driver.key(),
+                self.api.key()
+            ));
         }
         if self.platform == Platform::Osmesa && self.driver == Driver::ZinkSwiftshader {
             return Some(format!(
@@ -230,7 +273,17 @@ impl BackendName {
     ///   the GLSL 1.30 path is Skip ("GLSL 1.30 not supported"), its lookups run on `core`;
     /// - `es3`, `es2`: MESA_GLES_VERSION_OVERRIDE=3.2 (ES 3.0 needs the RGBA32F render target
     ///   and GLSL ES 3.00; ES 3.1/3.2 sampler state is backed by the extensions above).
+    ///
+    /// swiftshader: its libEGL from [`swiftshader_dir`], with LD_LIBRARY_PATH at that directory
+    /// (otherwise it binds the system libGLESv2 and every pbuffer fails with EGL_BAD_ALLOC).
+    /// native: nothing.
     pub fn env(self) -> Vec<(String, String)> {
+        if self.driver == Driver::Swiftshader {
+            return lib_dir_env(&swiftshader_dir());
+        }
+        if !self.driver.is_gallium() {
+            return vec![];
+        }
         let gallium = match self.driver {
             Driver::ZinkSwiftshader => "zink",
             d => d.key(),
@@ -268,14 +321,19 @@ impl BackendName {
     /// A file this backend needs that is missing here (SwiftShader's Vulkan ICD), with the
     /// command that installs it.
     pub fn missing_file(self) -> Option<(std::path::PathBuf, &'static str)> {
-        if self.driver != Driver::ZinkSwiftshader {
-            return None;
+        match self.driver {
+            Driver::ZinkSwiftshader => {
+                let icd = vk_swiftshader_icd();
+                (!icd.is_file()).then_some((
+                    icd,
+                    "apt-get install -y chromium-common mesa-vulkan-drivers",
+                ))
+            }
+            Driver::Swiftshader => {
+                missing_lib(&swiftshader_dir(), &SWIFTSHADER_LIBS).map(|p| (p, SWIFTSHADER_FETCH))
+            }
+            _ => None,
         }
-        let icd = vk_swiftshader_icd();
-        (!icd.is_file()).then_some((
-            icd,
-            "apt-get install -y chromium-common mesa-vulkan-drivers",
-        ))
     }
 }
 
@@ -305,7 +363,7 @@ impl std::str::FromStr for BackendName {
         let parts: Vec<&str> = s.split(':').collect();
         if !(3..=4).contains(&parts.len()) {
             return Err(bad(
-                "expected egl|osmesa:llvmpipe|softpipe|zink|zink+swiftshader:core|compat|es3|es2[:lod|grad|implicit]",
+                "expected egl|osmesa:llvmpipe|softpipe|zink|zink+swiftshader|swiftshader|native:core|compat|es3|es2[:lod|grad|implicit] (egl@<lib-dir>: for another libEGL)",
             ));
         }
         let form = match parts.get(3) {
@@ -325,7 +383,7 @@ impl std::str::FromStr for BackendName {
         let driver = Driver::ALL
             .into_iter()
             .find(|d| d.key() == parts[1])
-            .ok_or_else(|| bad("driver must be llvmpipe, softpipe, zink or zink+swiftshader"))?;
+            .ok_or_else(|| bad("driver must be llvmpipe, softpipe, zink, zink+swiftshader, swiftshader or native"))?;
         let api = ContextApi::ALL
             .into_iter()
             .find(|a| a.key() == parts[2])
@@ -366,7 +424,7 @@ mod tests {
             let s = b.to_string();
             assert_eq!(s.parse::<BackendName>().unwrap(), b);
         }
-        assert_eq!(BackendName::all().len(), 32);
+        assert_eq!(BackendName::all().len(), 40);
     }
 
     #[test]

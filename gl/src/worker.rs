@@ -45,7 +45,7 @@ pub struct Worker {
     renderer: Renderer,
     /// What this context runs, declared in the hello and applied to every case received.
     caps: Capabilities,
-    _ctx: GlContext,
+    ctx: GlContext,
 }
 
 fn parse_version(s: &str) -> (u32, u32) {
@@ -129,7 +129,7 @@ impl Worker {
             name,
             renderer,
             caps: Capabilities::default(),
-            _ctx: ctx,
+            ctx,
         };
         w.caps = w.declared_capabilities();
         Ok(w)
@@ -225,9 +225,15 @@ impl Worker {
     }
 
     /// The implementation's name for the handshake, e.g. `egl:llvmpipe:core (4.5 (Core Profile) Mesa 22.3.6; llvmpipe ...)`.
+    /// An EGL 1.4 pbuffer context says so: `...; EGL pbuffer)`.
     pub fn display_name(&self) -> String {
+        let pbuffer = if self.ctx.egl_mode() == Some(super::egl::SurfaceMode::Pbuffer) {
+            "; EGL pbuffer"
+        } else {
+            ""
+        };
         format!(
-            "{} ({}; {})",
+            "{} ({}; {}{pbuffer})",
             self.name,
             self.info().version_string,
             self.info().renderer
