@@ -271,8 +271,11 @@ impl BackendName {
     ///   below 3.2 exists);
     /// - `compat`: no override: the context runs at GL 2.1 / GLSL 1.20 (ff, ARB fp, GLSL 1.20);
     ///   the GLSL 1.30 path is Skip ("GLSL 1.30 not supported"), its lookups run on `core`;
-    /// - `es3`, `es2`: MESA_GLES_VERSION_OVERRIDE=3.2 (ES 3.0 needs the RGBA32F render target
-    ///   and GLSL ES 3.00; ES 3.1/3.2 sampler state is backed by the extensions above).
+    /// - `es3`, `es2`: MESA_GLES_VERSION_OVERRIDE=3.1 (ES 3.0 needs the RGBA32F render target
+    ///   and GLSL ES 3.00, absent at 2.0; 3.1 adds DEPTH_STENCIL_TEXTURE_MODE, backed by
+    ///   ARB_stencil_texturing). Not 3.2: Mesa's ES context refuses TEXTURE_CUBE_MAP_ARRAY without
+    ///   OES_texture_cube_map_array, which this driver does not expose (it needs geometry
+    ///   shaders), so at 3.2 every cube-map-array upload is a GL error; at 3.1 they are Skip.
     ///
     /// swiftshader: its libEGL from [`swiftshader_dir`], with LD_LIBRARY_PATH at that directory
     /// (otherwise it binds the system libGLESv2 and every pbuffer fails with EGL_BAD_ALLOC).
@@ -307,7 +310,7 @@ impl BackendName {
                     ("MESA_GLSL_VERSION_OVERRIDE", "460"),
                 ],
                 ContextApi::Compat => &[],
-                ContextApi::Es3 | ContextApi::Es2 => &[("MESA_GLES_VERSION_OVERRIDE", "3.2")],
+                ContextApi::Es3 | ContextApi::Es2 => &[("MESA_GLES_VERSION_OVERRIDE", "3.1")],
             };
             env.extend(
                 overrides
