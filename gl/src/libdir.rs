@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 pub const SWIFTSHADER_DIR_ENV: &str = "SHADOWCHECK_SWIFTSHADER_DIR";
 /// The libraries the SwiftShader preset loads (from the cefpython3 66.0 wheel).
 pub const SWIFTSHADER_LIBS: [&str; 2] = ["libEGL.so", "libGLESv2.so"];
-/// How to fetch them (run from the shadowcheck source tree; see gl/README.md).
+/// How to fetch them (run from the shadowcheck source tree; see runner/README.md, "Backends").
 pub const SWIFTSHADER_FETCH: &str = "sh gl/fetch-swiftshader.sh";
 
 /// SwiftShader's directory: `$SHADOWCHECK_SWIFTSHADER_DIR`, else
