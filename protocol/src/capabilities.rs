@@ -3,7 +3,7 @@
 //! or API path it does not implement: not applicable, as a dEQP caselist would not list it).
 
 use serde::{Deserialize, Serialize};
-use shadowcheck_model::{ApiPath, Case, Wrap};
+use shadowcheck_model::{ApiPath, Case};
 
 /// What an implementation can run (fixture keys). `None` for a list means "no restriction
 /// declared".
@@ -36,9 +36,9 @@ pub struct Feature {
 }
 
 /// Every feature a case may need. OpenGL ES has no TEXTURE_LOD_BIAS (ES 3.2 §8.10 lists no such
-/// parameter); TEXTURE_COMPARE_FAIL_VALUE_ARB exists only with GL_ARB_shadow_ambient; OpenGL ES
-/// 3.0 and WebGL 2.0 have neither TEXTURE_BORDER_COLOR nor CLAMP_TO_BORDER (ES 3.2 §8.10 added
-/// them) nor DEPTH_STENCIL_TEXTURE_MODE (ES 3.1; WebGL 2.0 only with WEBGL_stencil_texturing).
+/// parameter); TEXTURE_COMPARE_FAIL_VALUE_ARB exists only with GL_ARB_shadow_ambient; an ES 3.0
+/// context has neither CLAMP_TO_BORDER / TEXTURE_BORDER_COLOR (ES 3.2) nor
+/// DEPTH_STENCIL_TEXTURE_MODE (ES 3.1), so a case setting them is Skip there, never a GL error.
 pub const FEATURES: &[Feature] = &[
     Feature {
         key: "lod_bias",
@@ -51,27 +51,29 @@ pub const FEATURES: &[Feature] = &[
         used_by: |c| c.sampler.fail_value.is_some(),
     },
     Feature {
-        key: "border_color",
-        what: "TEXTURE_BORDER_COLOR / CLAMP_TO_BORDER",
+        key: "border_clamp",
+        what: "CLAMP_TO_BORDER / TEXTURE_BORDER_COLOR (OpenGL ES 3.2, OES_texture_border_clamp)",
         used_by: uses_border,
     },
     Feature {
-        key: "depth_stencil_mode",
-        what: "DEPTH_STENCIL_TEXTURE_MODE",
+        key: "stencil_texturing",
+        what: "DEPTH_STENCIL_TEXTURE_MODE (OpenGL 4.3, OpenGL ES 3.1, ARB_stencil_texturing)",
         used_by: |c| c.sampler.depth_stencil_mode.is_some(),
     },
 ];
 
-/// A border colour other than the default, or CLAMP_TO_BORDER on a coordinate the target wraps.
+/// Whether a case sets TEXTURE_BORDER_COLOR or wraps a coordinate its target uses with
+/// CLAMP_TO_BORDER (neither exists in OpenGL ES 3.0: ES 3.2 §8.10 added both).
 fn uses_border(c: &Case) -> bool {
+    use shadowcheck_model::Wrap;
     let s = &c.sampler;
     let t = c.texture.target;
-    let wraps = [
-        Some(s.wrap_s),
-        (t.dims() == 2).then_some(s.wrap_t),
-        t.is_cube().then_some(s.wrap_r),
+    let used = [
+        (s.wrap_s, true),
+        (s.wrap_t, t.dims() == 2),
+        (s.wrap_r, t.is_cube()),
     ];
-    s.border != [0.0; 4] || wraps.contains(&Some(Wrap::ClampToBorder))
+    s.border != [0.0; 4] || used.iter().any(|(w, on)| *on && *w == Wrap::ClampToBorder)
 }
 
 fn listed(list: &Option<Vec<String>>, key: &str) -> bool {
@@ -182,16 +184,6 @@ mod tests {
             ..Capabilities::all()
         };
         assert!(matches!(listed.support(&ambient), Support::Run { .. }));
-        // CLAMP_TO_BORDER alone (default border colour) needs border_color too.
-        let border = case(
-            &CASE
-                .replace("FAIL", "")
-                .replace(r#""wrap_s":"edge""#, r#""wrap_s":"border""#),
-        );
-        match none.support(&border) {
-            Support::Skip(why) => assert!(why.contains("border_color"), "{why}"),
-            other => panic!("{other:?}"),
-        }
         // Not declared at all: no restriction (soft, exec implementations that say nothing).
         assert!(matches!(
             Capabilities::all().support(&ambient),

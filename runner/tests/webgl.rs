@@ -107,7 +107,7 @@ fn webgl2_in_headless_chromium_passes_the_d16_and_d32f_fixtures_and_skips_what_i
         } else if test.contains("/d32fs8/") {
             Some("format `d32fs8` not supported")
         } else if test.contains("wrap=border") || test.contains("border=") {
-            Some("feature `border_color`")
+            Some("feature `border_clamp`")
         } else {
             None
         };
@@ -142,7 +142,8 @@ fn the_default_run_includes_webgl_chromium_when_installed_and_announces_it_when_
     let r = default_run(Some("/nonexistent/chromium"));
     assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
     assert!(
-        r.stderr.contains("note: backend `webgl:chromium` not run")
+        r.stderr
+            .contains("note: optional backend `webgl:chromium` is not installed here")
             && r.stderr.contains("apt-get install -y chromium"),
         "{}",
         r.stderr

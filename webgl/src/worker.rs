@@ -76,7 +76,7 @@ pub fn capabilities(enabled: &[String], extensions: &[String]) -> Capabilities {
         // No TEXTURE_LOD_BIAS, TEXTURE_BORDER_COLOR or CLAMP_TO_BORDER in WebGL 2.0 (ES 3.0);
         // DEPTH_STENCIL_TEXTURE_MODE with WEBGL_stencil_texturing.
         features: Some(if stencil {
-            vec!["depth_stencil_mode".to_string()]
+            vec!["stencil_texturing".to_string()]
         } else {
             vec![]
         }),
