@@ -73,6 +73,8 @@ pub struct Subject {
     pub api: ApiPath,
     /// Evaluated by the oracle now (not read from the fixture).
     pub expect: Expectation,
+    /// The oracle's derivation steps, each with the section (and sentence) it comes from.
+    pub steps: Vec<shadowcheck_oracle::Step>,
     /// The oracle's derivation and footprint, as `shadowcheck explain` prints them.
     pub explain: String,
     /// The fixture file the case came from.
@@ -152,6 +154,7 @@ pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subjec
         case,
         api,
         expect: ev.expect,
+        steps: ev.steps,
         explain,
         fixture,
     })

@@ -8,7 +8,7 @@
 use super::{packages, RunOutput, Subject, BUILD_SH, OUTPUT_TXT, REPRO_C};
 use crate::records::{shell_quote, Outcome};
 use crate::verdict::Judged;
-use shadowcheck_model::Profile;
+use shadowcheck_model::{Channel, Profile};
 use std::fmt::Write;
 use std::process::Command;
 
@@ -51,18 +51,36 @@ pub fn title(s: &Subject, run: &RunOutput) -> String {
         .observed()
         .map(|o| format!("({}, {}, {}, {})", o[0], o[1], o[2], o[3]))
         .unwrap_or_else(|| "?".into());
-    let want = s
+    let accepted = s
         .expect
         .accept
         .get(&Profile::loosest())
         .map(|a| a.to_string())
         .unwrap_or_default();
+    let want = match s.expect.layout.get(&s.api) {
+        Some(l) => {
+            let ch: Vec<&str> = l
+                .iter()
+                .map(|c| match c {
+                    Channel::R => "r",
+                    Channel::Zero => "0",
+                    Channel::One => "1",
+                    Channel::Unused => "any",
+                    Channel::ROrZero => "r or 0",
+                })
+                .collect();
+            format!("({}) with r in {accepted}", ch.join(", "))
+        }
+        None => format!("r in {accepted}"),
+    };
     format!(
-        "{driver} ({api} path): {fmt} {target}, {compare}, {filter} returns {obs} where the spec allows r in {want}",
+        "{driver} ({api} path): {fmt} {target}, {compare}, {filter} returns {obs}; the spec requires {want}",
         api = s.api,
         fmt = t.format,
         target = t.target,
-        filter = sm.min_filter.key().to_uppercase(),
+        filter = super::tokens::Tokens::default()
+            .name(sm.min_filter.gl())
+            .trim_start_matches("GL_"),
     )
 }
 
@@ -99,12 +117,20 @@ pub fn render(s: &Subject, run: &RunOutput, judged: &Judged, versions: &[String]
     let _ = writeln!(o, "\n## What the specification says\n");
     let _ = writeln!(
         o,
-        "The oracle's result rests on (each rule is encoded beside the sentence it comes from; \
-         the derivation below names the section of every step):\n"
+        "The oracle's derivation (`shadowcheck explain`), each step with the section it comes from \
+         (each rule is encoded beside its sentence in `oracle/src/<spec>.rs`):\n"
     );
-    for c in &e.citations {
-        let _ = writeln!(o, "- {c}");
+    // Layout steps of the case's other API paths are about other tests.
+    let other_path = |what: &str| {
+        what.strip_prefix("layout on `")
+            .and_then(|r| r.split_once('`'))
+            .is_some_and(|(p, _)| p != s.api.key())
+    };
+    let steps = s.steps.iter().filter(|st| !other_path(&st.what));
+    for (i, st) in steps.enumerate() {
+        let _ = writeln!(o, "{}. {}  \n   *{}*", i + 1, st.what, st.cite);
     }
+    let _ = writeln!(o, "\nThe result rests on: {}.", e.citations.join("; "));
     if let Some(why) = &e.implementation_defined {
         let _ = writeln!(o, "\nImplementation-defined part: {why}");
     }
@@ -162,7 +188,7 @@ pub fn render(s: &Subject, run: &RunOutput, judged: &Judged, versions: &[String]
     );
     let _ = writeln!(
         o,
-        "\n## Derivation and footprint (`shadowcheck explain`)\n\n```\n{}```\n",
+        "\n## Footprint and acceptance (`shadowcheck explain`)\n\n```\n{}```\n",
         s.explain
     );
     let _ = writeln!(o, "## Reproduce\n");

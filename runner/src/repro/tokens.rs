@@ -1,6 +1,7 @@
-//! GL token names for the generated C program: every token it passes is written by name, and the
-//! program defines each name it uses when the system headers lack it (`#ifndef`), so one program
-//! builds against the desktop (`GL/glext.h`) and the ES (`GLES3/gl32.h`) headers alike.
+//! GL token names for the generated C program: every token it passes is written by name. Every
+//! name in the table is in Debian's desktop headers (`GL/gl.h`, `GL/glext.h`); the few that are not
+//! in the ES ones (`GLES3/gl32.h`, `GLES2/gl2ext.h`) get an `#ifndef` definition in the programs
+//! that use them, so one program builds against either header set.
 
 use std::collections::BTreeMap;
 
@@ -83,6 +84,23 @@ const NAMES: &[(u32, &str)] = &[
     (0x80BF, "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB"),
 ];
 
+/// Names of the table missing from the ES headers (checked against Debian 12's libgles-dev).
+const NOT_IN_ES_HEADERS: &[&str] = &[
+    "GL_TEXTURE_1D",
+    "GL_CLAMP",
+    "GL_LUMINANCE8",
+    "GL_INTENSITY",
+    "GL_TEXTURE_LEQUAL_R_SGIX",
+    "GL_TEXTURE_GEQUAL_R_SGIX",
+    "GL_DEPTH_COMPONENT32",
+    "GL_TEXTURE_RECTANGLE",
+    "GL_MIRROR_CLAMP_TO_EDGE",
+    "GL_TEXTURE_1D_ARRAY",
+    "GL_TEXTURE_LOD_BIAS",
+    "GL_DEPTH_TEXTURE_MODE",
+    "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB",
+];
+
 /// The tokens one program uses, for the `#ifndef` block at its top.
 #[derive(Default)]
 pub struct Tokens(BTreeMap<&'static str, u32>);
@@ -100,10 +118,11 @@ impl Tokens {
         }
     }
 
-    /// `#ifndef NAME / #define NAME 0x.... / #endif` for every name used.
+    /// `#ifndef NAME / #define NAME 0x.... / #endif` for every name used that the ES headers lack.
     pub fn defines(&self) -> String {
         self.0
             .iter()
+            .filter(|(n, _)| NOT_IN_ES_HEADERS.contains(n))
             .map(|(n, v)| format!("#ifndef {n}\n#define {n} 0x{v:04X}\n#endif\n"))
             .collect()
     }
@@ -120,12 +139,17 @@ mod tests {
             assert!(seen.insert(*v), "0x{v:04X} twice");
             assert!(n.starts_with("GL_"), "{n}");
         }
+        for n in NOT_IN_ES_HEADERS {
+            assert!(NAMES.iter().any(|(_, m)| m == n), "{n}");
+        }
         let mut t = Tokens::default();
         assert_eq!(t.name(0x884E), "GL_COMPARE_REF_TO_TEXTURE");
         assert_eq!(t.name(0x1234), "0x1234");
+        assert_eq!(t.defines(), "");
+        assert_eq!(t.name(0x884B), "GL_DEPTH_TEXTURE_MODE");
         assert_eq!(
             t.defines(),
-            "#ifndef GL_COMPARE_REF_TO_TEXTURE\n#define GL_COMPARE_REF_TO_TEXTURE 0x884E\n#endif\n"
+            "#ifndef GL_DEPTH_TEXTURE_MODE\n#define GL_DEPTH_TEXTURE_MODE 0x884B\n#endif\n"
         );
     }
 }
