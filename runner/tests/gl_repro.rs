@@ -313,3 +313,73 @@ fn bad_arguments_exit_96() {
         assert!(r.stderr.contains(says), "{args:?}: {}", r.stderr);
     }
 }
+
+/// `--all-failures`: the Fails of a run (ES 2D and cube fixtures on llvmpipe: the 84-case
+/// completeness cause shows on both targets) become fewer classes than Fails, each with a
+/// reproducer that fails alone, and index.md names every failing test once.
+#[test]
+fn all_failures_writes_one_reproducer_per_class() {
+    let backend = "egl:llvmpipe:es3";
+    if shadowcheck_runner::backend::gl::worker_command(backend).is_err() || !can_build(backend) {
+        gl_support::unavailable(backend, "driver or toolchain missing");
+        return;
+    }
+    let out = common::tmpdir("repro-all");
+    let run_dir = out.join("run");
+    let fx = root().join("cases/fixtures/gles32");
+    let r = common::run(&[
+        "--backend",
+        backend,
+        "--fixtures",
+        fx.join("2d").to_str().unwrap(),
+        "--fixtures",
+        fx.join("cube").to_str().unwrap(),
+        "--no-rerun",
+        "--out",
+        run_dir.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        r.code, 100,
+        "the ES completeness Fails make it a regression run: {}",
+        r.stderr
+    );
+    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
+    let fails: Vec<&str> = results
+        .results
+        .iter()
+        .filter(|r| r.outcome == Outcome::Fail)
+        .map(|r| r.test.as_str())
+        .collect();
+    assert!(fails.len() > 2, "{fails:?}");
+    let a = common::Run::of(
+        common::bin()
+            .args(["repro", "--all-failures"])
+            .arg(&run_dir)
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(a.code, 0, "{}{}", a.stdout, a.stderr);
+    let index = std::fs::read_to_string(run_dir.join("repro/index.md")).unwrap();
+    let rows: Vec<&str> = index.lines().filter(|l| l.starts_with("| [")).collect();
+    assert!(
+        !rows.is_empty() && rows.len() < fails.len(),
+        "{} classes for {} Fails",
+        rows.len(),
+        fails.len()
+    );
+    for row in &rows {
+        assert!(row.contains("Fail reproduced"), "{row}");
+    }
+    for t in &fails {
+        assert_eq!(
+            index.matches(&format!("- `{t}`")).count(),
+            1,
+            "{t} in\n{index}"
+        );
+    }
+    let reports = std::fs::read_dir(run_dir.join("repro"))
+        .unwrap()
+        .filter(|e| e.as_ref().unwrap().path().join("REPORT.md").is_file())
+        .count();
+    assert_eq!(reports, rows.len());
+}

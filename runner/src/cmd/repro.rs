@@ -150,7 +150,7 @@ fn all_failures(
         .filter(|r| classes::is_reproducible_fail(r))
         .count();
     let mut index = format!(
-        "# Reproducers: {} failure classes of {fails} Fails in `{}`\n\nOne reproducer per class (class key: backend | API path | target | compare or not | channels that missed | the cited rules; see `runner/src/repro/classes.rs`). Flaky failures are left out.\n\n| class | tests | representative | reproducer | result here |\n|---|--:|---|---|---|\n",
+        "# Reproducers: {} failure classes of {fails} Fails in `{}`\n\nOne reproducer per class. Class key: backend, API path, compare or not, the channels that missed and the rule broken (the expectation's citations, under \"Tests per class\"); see `runner/src/repro/classes.rs`. Flaky failures are left out.\n\n| class | backend | API path | compare | missed | targets | tests | representative | result here |\n|---|---|---|---|---|---|--:|---|---|\n",
         cs.len(),
         file.display()
     );
@@ -191,16 +191,19 @@ fn all_failures(
                     .replace('|', "/")
             ),
         };
+        let slug = classes::slug(i, c);
         let _ = writeln!(
             index,
-            "| `{}` | {} | `{}` | [{}]({}/) | {cell} |",
-            c.key.replace('|', "/"),
+            "| [{slug}]({slug}/) | `{}` | {} | {} | {} | {} | {} | `{}` | {cell} |",
+            c.parts[0],
+            c.parts[1],
+            c.parts[2],
+            c.parts[3],
+            c.targets.join(", "),
             c.tests.len(),
             r.test,
-            classes::slug(i, c),
-            classes::slug(i, c)
         );
-        let _ = writeln!(details, "\n### {}\n", classes::slug(i, c));
+        let _ = writeln!(details, "\n### {slug}\n\nRule: {}\n", c.rule);
         for t in &c.tests {
             let _ = writeln!(details, "- `{t}`");
         }

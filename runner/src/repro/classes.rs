@@ -3,14 +3,16 @@
 //!
 //! The class key is built from what every record carries:
 //! - the backend (driver, context kind, lookup form) and the API path: where it happens;
-//! - the target and whether the lookup compares (compare mode NONE vs a compare function): the
-//!   state that changes the code path in a driver;
+//! - whether the lookup compares (compare mode NONE vs a compare function): the state that
+//!   changes the code path in a driver;
 //! - the rule that was broken: the expectation's citations (the sections the oracle's result rests
-//!   on) and which channels missed (the channel letters of the verdict's reason, e.g. `r` or
-//!   `g,b,a`), so a wrong value and a wrong layout are different classes.
+//!   on; a target with rules of its own, such as cube-map face selection, cites them) and which
+//!   channels missed (the channel letters of the verdict's reason, e.g. `r` or `g,b,a`), so a
+//!   wrong value and a wrong layout are different classes.
 //!
-//! Format, filter, wrap, reference and coordinates are not in the key: the same rule failing on
-//! D16 and D24, or at several references, is one class. Flaky failures (Flake, KnownFlake) are left
+//! Target, format, filter, wrap, reference and coordinates are not in the key: the same rule failing
+//! on a 2D and an array texture, on D16 and D24, or at several references, is one class (the index
+//! lists the targets of each class). Flaky failures (Flake, KnownFlake) are left
 //! out: a reproducer of a flake may not reproduce. The representative of a class is its test with the
 //! shortest id (then the first by name): usually the plainest case.
 
@@ -21,6 +23,12 @@ use std::collections::BTreeMap;
 #[derive(Debug, Clone)]
 pub struct Class {
     pub key: String,
+    /// The parts of the key, for the index: backend, API path, compare or not, channels missed.
+    pub parts: [String; 4],
+    /// The citations of the broken rule.
+    pub rule: String,
+    /// The targets of the class's tests.
+    pub targets: Vec<String>,
     /// The test whose reproducer stands for the class.
     pub representative: TestResult,
     /// Every test of the class, sorted.
@@ -45,10 +53,9 @@ fn missed_channels(reason: Option<&str>) -> String {
     out.join(",")
 }
 
-/// The class key of a Fail record (see the module docs).
-pub fn key(r: &TestResult) -> String {
+fn parts(r: &TestResult) -> ([String; 4], String) {
     let compare = if r.tags.func == "none" {
-        "compare none"
+        "compare mode NONE"
     } else {
         "compare"
     };
@@ -57,15 +64,21 @@ pub fn key(r: &TestResult) -> String {
         .as_ref()
         .map(|e| e.citations.join("; "))
         .unwrap_or_default();
-    format!(
-        "{} | {} | {} | {} | missed {} | {}",
-        r.backend,
-        r.api.key(),
-        r.tags.target,
-        compare,
-        missed_channels(r.reason.as_deref()),
-        rule
+    (
+        [
+            r.backend.clone(),
+            r.api.key().to_string(),
+            compare.to_string(),
+            missed_channels(r.reason.as_deref()),
+        ],
+        rule,
     )
+}
+
+/// The class key of a Fail record (see the module docs).
+pub fn key(r: &TestResult) -> String {
+    let (p, rule) = parts(r);
+    format!("{} | {} | {} | missed {} | {rule}", p[0], p[1], p[2], p[3])
 }
 
 /// Is this record a failure that gets a reproducer (a Fail that is not a flake)?
@@ -85,8 +98,15 @@ pub fn classes(results: &[TestResult]) -> Vec<Class> {
             let representative = (*rs.first()?).clone();
             let mut tests: Vec<String> = rs.iter().map(|r| r.test.clone()).collect();
             tests.sort();
+            let mut targets: Vec<String> = rs.iter().map(|r| r.tags.target.clone()).collect();
+            targets.sort();
+            targets.dedup();
+            let (parts, rule) = parts(&representative);
             Some(Class {
                 key,
+                parts,
+                rule,
+                targets,
                 representative,
                 tests,
             })
@@ -94,7 +114,7 @@ pub fn classes(results: &[TestResult]) -> Vec<Class> {
         .collect()
 }
 
-/// A directory name for a class: the backend, API path and target, and its index.
+/// A directory name for a class: its index, the backend, API path and the representative's target.
 pub fn slug(i: usize, c: &Class) -> String {
     let r = &c.representative;
     let raw = format!(
@@ -170,6 +190,8 @@ mod tests {
         assert_eq!(cs.len(), 3, "{cs:#?}");
         let first = cs.iter().find(|c| c.tests.len() == 2).unwrap();
         assert_eq!(first.representative.test, "gl46/x/d24@core");
+        assert_eq!(first.targets, ["2d"]);
+        assert_eq!(first.parts[3], "r");
         assert!(cs.iter().any(|c| c.key.contains("missed a |")));
         assert_eq!(slug(0, first), "01-b-core-2d");
     }
