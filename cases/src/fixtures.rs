@@ -135,14 +135,22 @@ impl FixtureError {
     }
 }
 
-/// The header plus the still-untyped cases, so that one bad case can be reported on its own.
+/// The header plus the still-unparsed cases (each case's JSON text, checked for syntax only), so
+/// that one bad case can be reported on its own and each case is deserialized from its text once,
+/// with no intermediate `serde_json::Value` tree.
 #[derive(serde::Deserialize)]
 struct RawFile {
     schema_version: u32,
     generator: String,
     grid: String,
     seed: u64,
-    cases: Vec<serde_json::Value>,
+    cases: Vec<Box<serde_json::value::RawValue>>,
+}
+
+/// Only a case's id, read from its text when the case itself does not deserialize.
+#[derive(serde::Deserialize)]
+struct IdOnly {
+    id: String,
 }
 
 /// Serializes a fixture file: the header on the first line, then one case per line.
@@ -205,28 +213,25 @@ fn parse_by_line(file: &Path, text: &str) -> Option<(FixtureFile, Vec<FixtureErr
         if body.starts_with(']') {
             break;
         }
-        let value: Result<serde_json::Value, _> = serde_json::from_str(body);
+        let value: Result<&serde_json::value::RawValue, _> = serde_json::from_str(body);
         let at = CaseRef {
             index: Some(index),
             id: None,
         };
         let result = match value {
-            Ok(v) => {
-                let at = CaseRef {
-                    id: v.get("id").and_then(|x| x.as_str()).map(str::to_string),
-                    ..at
-                };
-                case_from_value(file, &at, &f.grid, v).and_then(|c| {
-                    match seen.insert(c.id.clone(), index) {
-                        Some(first) => Err(FixtureError::DuplicateId {
-                            file: file.to_path_buf(),
-                            at,
-                            first,
-                        }),
-                        None => Ok(c),
-                    }
-                })
-            }
+            Ok(v) => case_from_text(file, index, &f.grid, v.get()).and_then(|c| {
+                match seen.insert(c.id.clone(), index) {
+                    Some(first) => Err(FixtureError::DuplicateId {
+                        file: file.to_path_buf(),
+                        at: CaseRef {
+                            id: Some(c.id.clone()),
+                            ..at
+                        },
+                        first,
+                    }),
+                    None => Ok(c),
+                }
+            }),
             Err(e) => Err(FixtureError::Syntax {
                 file: file.to_path_buf(),
                 at: CaseRef {
@@ -262,17 +267,15 @@ fn parse_inner(
     let mut errors = Vec::new();
     let mut cases = Vec::with_capacity(raw.cases.len());
     let mut seen: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
-    for (index, value) in raw.cases.into_iter().enumerate() {
-        let id = value.get("id").and_then(|v| v.as_str()).map(str::to_string);
-        let at = CaseRef {
-            index: Some(index),
-            id,
-        };
-        let result = case_from_value(file, &at, &raw.grid, value).and_then(|case| {
+    for (index, value) in raw.cases.iter().enumerate() {
+        let result = case_from_text(file, index, &raw.grid, value.get()).and_then(|case| {
             if let Some(&first) = seen.get(&case.id) {
                 return Err(FixtureError::DuplicateId {
                     file: file.to_path_buf(),
-                    at: at.clone(),
+                    at: CaseRef {
+                        index: Some(index),
+                        id: Some(case.id.clone()),
+                    },
                     first,
                 });
             }
@@ -340,17 +343,17 @@ fn json_error(file: &Path, text: &str, field: String, inner: serde_json::Error) 
     }
 }
 
-/// Deserializes one case from its JSON value, validates its structure and re-derives its `expect`
-/// with the linked oracle (`recheck`).
-fn case_from_value(
-    file: &Path,
-    at: &CaseRef,
-    grid: &str,
-    value: serde_json::Value,
-) -> Result<Case, FixtureError> {
-    let case: Case = serde_path_to_error::deserialize(value).map_err(|e| FixtureError::Case {
+/// Deserializes case number `index` from its JSON text (syntax already checked), validates its
+/// structure and re-derives its `expect` with the linked oracle (`recheck`).
+fn case_from_text(file: &Path, index: usize, grid: &str, text: &str) -> Result<Case, FixtureError> {
+    let mut de = serde_json::Deserializer::from_str(text);
+    let case: Case = serde_path_to_error::deserialize(&mut de).map_err(|e| FixtureError::Case {
         file: file.to_path_buf(),
-        at: at.clone(),
+        at: CaseRef {
+            index: Some(index),
+            // Where the case does not deserialize, its id (if it has a readable one) names it.
+            id: serde_json::from_str::<IdOnly>(text).ok().map(|c| c.id),
+        },
         field: if e.path().to_string() == "." {
             "(case)".to_string()
         } else {
@@ -358,6 +361,10 @@ fn case_from_value(
         },
         msg: strip_position(&e.inner().to_string()),
     })?;
+    let at = &CaseRef {
+        index: Some(index),
+        id: Some(case.id.clone()),
+    };
     validate(&case).map_err(|e| match e {
         ModelError::Invalid { field, msg, .. } => FixtureError::Case {
             file: file.to_path_buf(),

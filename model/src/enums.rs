@@ -18,6 +18,10 @@ macro_rules! keyed_enum {
             /// Parses a key as written by [`Self::key`].
             pub fn from_key(s: &str) -> Option<Self> { match s { $($key => Some($name::$var),)+ _ => None } }
         }
+        impl crate::keymap::Keyed for $name {
+            const ALL: &'static [$name] = $name::ALL;
+            fn index(self) -> usize { self as usize }
+        }
         impl std::fmt::Display for $name {
             fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result { f.write_str(self.key()) }
         }

@@ -1,8 +1,8 @@
 //! What the oracle expects (carried in fixtures) and what a backend observed.
 
 use crate::enums::*;
+use crate::keymap::KeyMap;
 use serde::{Deserialize, Serialize};
-use std::collections::BTreeMap;
 
 /// A closed interval [lo, hi] of acceptable values of r.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -74,9 +74,9 @@ pub struct Expectation {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spec_value: Option<f64>,
     /// Acceptable values of r under each precision profile.
-    pub accept: BTreeMap<Profile, Acceptance>,
+    pub accept: KeyMap<Profile, Acceptance>,
     /// How r appears in the observed RGBA, per API path the case applies to.
-    pub layout: BTreeMap<ApiPath, [Channel; 4]>,
+    pub layout: KeyMap<ApiPath, [Channel; 4]>,
     /// Set when the specs leave the result open; says why.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub implementation_defined: Option<String>,

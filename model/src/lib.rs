@@ -11,12 +11,14 @@
 pub mod case;
 pub mod enums;
 pub mod expect;
+pub mod keymap;
 pub mod real;
 pub mod validate;
 
 pub use case::*;
 pub use enums::*;
 pub use expect::*;
+pub use keymap::{KeyMap, Keyed};
 
 /// Version of the on-disk formats (fixtures, observations, results). Bumped on breaking change.
 pub const SCHEMA_VERSION: u32 = 1;

@@ -451,10 +451,10 @@ mod tests {
 
     #[test]
     fn judge_uses_layout_and_profiles() {
-        let mut accept = std::collections::BTreeMap::new();
+        let mut accept = crate::KeyMap::new();
         accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
         accept.insert(Profile::Quality, Acceptance(vec![Interval::new(0.9, 1.0)]));
-        let mut layout = std::collections::BTreeMap::new();
+        let mut layout = crate::KeyMap::new();
         layout.insert(
             ApiPath::FixedFunction,
             [Channel::R, Channel::R, Channel::R, Channel::One],

@@ -171,6 +171,7 @@ fn split_name(line: &str) -> Option<(String, &str)> {
 #[derive(Debug, Clone)]
 pub struct RegexList {
     set: RegexSet,
+    regexes: Vec<regex::Regex>,
     patterns: Vec<String>,
 }
 
@@ -178,6 +179,7 @@ impl Default for RegexList {
     fn default() -> Self {
         RegexList {
             set: RegexSet::empty(),
+            regexes: vec![],
             patterns: vec![],
         }
     }
@@ -190,16 +192,17 @@ impl RegexList {
 
     pub fn parse(text: &str, file: &str) -> Result<RegexList, ListError> {
         let mut patterns = vec![];
+        let mut regexes = vec![];
         for (i, raw) in text.lines().enumerate() {
             let line = raw.trim();
             if line.is_empty() || line.starts_with('#') {
                 continue;
             }
-            regex::Regex::new(line).map_err(|e| ListError::Bad {
+            regexes.push(regex::Regex::new(line).map_err(|e| ListError::Bad {
                 file: file.to_string(),
                 line: i + 1,
                 msg: e.to_string(),
-            })?;
+            })?);
             patterns.push(line.to_string());
         }
         let set = RegexSet::new(&patterns).map_err(|e| ListError::Bad {
@@ -207,7 +210,11 @@ impl RegexList {
             line: 0,
             msg: e.to_string(),
         })?;
-        Ok(RegexList { set, patterns })
+        Ok(RegexList {
+            set,
+            regexes,
+            patterns,
+        })
     }
 
     /// The first pattern matching `test`.
@@ -216,6 +223,28 @@ impl RegexList {
             .matches(test)
             .iter()
             .next()
+            .map(|i| self.patterns[i].as_str())
+    }
+
+    /// The first pattern matching `test` on `backend`: its bare name, or its name qualified by
+    /// the backend (`<backend>/<test>`, as a multi-backend run's CSV files write it) with a match
+    /// that starts in the backend part and reaches the `/` or crosses it, so `^egl:zink:core/` names one
+    /// backend's tests while a pattern that only matches inside a backend's name (`n=0001` in
+    /// `mock:fail=n=0001`) selects nothing.
+    pub fn matching_for(&self, backend: &str, test: &str) -> Option<&str> {
+        if let Some(p) = self.matching(test) {
+            return Some(p);
+        }
+        let q = qualified_name(backend, test);
+        let sep = q.len() - test.len() - 1;
+        self.set
+            .matches(&q)
+            .iter()
+            .find(|&i| {
+                self.regexes[i]
+                    .find_iter(&q)
+                    .any(|m| m.start() < sep && m.end() >= sep)
+            })
             .map(|i| self.patterns[i].as_str())
     }
 }
@@ -237,7 +266,7 @@ impl Lists {
     pub fn status(&self, backend: &str, test: &str, outcome: Outcome) -> (Status, Option<String>) {
         let listed = self.baseline.get_for(backend, test);
         if outcome.is_failure() {
-            if self.flakes.matching(test).is_some() {
+            if self.flakes.matching_for(backend, test).is_some() {
                 return (Status::KnownFlake, None);
             }
             return match listed {
@@ -386,5 +415,42 @@ mod tests {
         let l = RegexList::parse("lequal", "s").unwrap();
         assert_eq!(l.matching("gl46/2d/lequal@core"), Some("lequal"));
         assert_eq!(l.matching("gl46/2d/gequal@core"), None);
+    }
+
+    #[test]
+    fn a_pattern_may_name_one_backend() {
+        let l = RegexList::parse("^egl:zink:core/gl46/\n", "flakes.txt").unwrap();
+        assert_eq!(
+            l.matching_for("egl:zink:core", "gl46/2d/lequal@core"),
+            Some("^egl:zink:core/gl46/")
+        );
+        assert_eq!(
+            l.matching_for("egl:llvmpipe:core", "gl46/2d/lequal@core"),
+            None
+        );
+        let l = RegexList::parse("^egl:zink:core\n", "flakes.txt").unwrap();
+        assert!(l
+            .matching_for("egl:zink:core", "gl46/2d/lequal@core")
+            .is_some());
+        // Only inside the backend's name: not a match.
+        let l = RegexList::parse("n=0001", "flakes.txt").unwrap();
+        assert_eq!(l.matching_for("mock:fail=n=0001,x", "n=0000@core"), None);
+        // A bare pattern applies to every backend.
+        let l = RegexList::parse("^gl46/", "skips.txt").unwrap();
+        assert!(l
+            .matching_for("egl:llvmpipe:core", "gl46/2d/lequal@core")
+            .is_some());
+        let lists = Lists {
+            flakes: RegexList::parse("^b1/f", "flakes.txt").unwrap(),
+            ..Lists::default()
+        };
+        assert_eq!(
+            lists.status("b1", "f@core", Outcome::Fail).0,
+            Status::KnownFlake
+        );
+        assert_eq!(
+            lists.status("b2", "f@core", Outcome::Fail).0,
+            Status::Plain(Outcome::Fail)
+        );
     }
 }

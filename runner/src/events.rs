@@ -18,6 +18,8 @@ pub enum Event<'a> {
     BackendStarted {
         backend: &'a str,
         tests: usize,
+        /// Cases whose spec or API path the backend does not implement: not tests of it.
+        not_applicable: usize,
     },
     /// Something an implementation or the runner wants a human to see (stderr lines, restarts).
     Diagnostic {

@@ -62,6 +62,7 @@ enum Owned {
     BackendStarted {
         backend: String,
         tests: usize,
+        not_applicable: usize,
     },
     Diagnostic {
         backend: String,
@@ -86,9 +87,14 @@ struct ChannelSink(Sender<Owned>);
 impl Sink for ChannelSink {
     fn emit(&mut self, ev: &Event<'_>) {
         let owned = match ev {
-            Event::BackendStarted { backend, tests } => Owned::BackendStarted {
+            Event::BackendStarted {
+                backend,
+                tests,
+                not_applicable,
+            } => Owned::BackendStarted {
                 backend: backend.to_string(),
                 tests: *tests,
+                not_applicable: *not_applicable,
             },
             Event::Diagnostic { backend, message } => Owned::Diagnostic {
                 backend: backend.to_string(),
@@ -120,9 +126,14 @@ impl Sink for ChannelSink {
 
 fn forward(fanout: &mut Fanout, m: &Owned) {
     match m {
-        Owned::BackendStarted { backend, tests } => fanout.emit(&Event::BackendStarted {
+        Owned::BackendStarted {
+            backend,
+            tests,
+            not_applicable,
+        } => fanout.emit(&Event::BackendStarted {
             backend,
             tests: *tests,
+            not_applicable: *not_applicable,
         }),
         Owned::Diagnostic { backend, message } => {
             fanout.emit(&Event::Diagnostic { backend, message })

@@ -268,17 +268,17 @@ pub fn judge(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use shadowcheck_model::KeyMap;
     use shadowcheck_model::*;
-    use std::collections::BTreeMap;
 
     /// GL 4.6 core, 2x1 D16 texture (Dt = 0 and 1), NEAREST at the centre of texel 0, LEQUAL, Dref 0.5:
     /// Table 8.23 gives r = 0 (0.5 <= 0 is false).
     fn case(with_expect: bool) -> Case {
         let expect = with_expect.then(|| {
-            let mut accept = BTreeMap::new();
+            let mut accept = KeyMap::new();
             accept.insert(Profile::Strict, Acceptance(vec![Interval::point(0.0)]));
             accept.insert(Profile::Quality, Acceptance(vec![Interval::new(0.0, 0.1)]));
-            let mut layout = BTreeMap::new();
+            let mut layout = KeyMap::new();
             layout.insert(
                 ApiPath::GlslCore,
                 [

@@ -106,6 +106,49 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
         serde_json::from_str(&std::fs::read_to_string(out1.join("report.json")).unwrap()).unwrap();
     assert_eq!(report["summary"]["counts"]["not_applicable"], 1);
 
+    // results.jsonl: the 8 passing tests in the compact form, the 8 failures in full; merging the
+    // run keeps all 16 tests and its not-applicable count.
+    let jsonl = std::fs::read_to_string(out1.join("results.jsonl")).unwrap();
+    let failed: std::collections::BTreeSet<String> = jsonl
+        .lines()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
+        .filter(|v| v["kind"] == "result")
+        .map(|v| v["test"].to_string())
+        .collect();
+    let passed_tests: usize = jsonl
+        .lines()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
+        .filter(|v| v["kind"] == "passed")
+        .map(|v| v["tests"].as_array().unwrap().len())
+        .sum();
+    assert_eq!(passed_tests, 8, "{jsonl}");
+    // (each failure twice: its first record, then the flake re-run's final one)
+    assert_eq!(failed.len(), 8, "{jsonl}");
+    let merged = dir.join("merged");
+    let r = Run::of(
+        bin()
+            .args([
+                "merge",
+                "-o",
+                merged.to_str().unwrap(),
+                out1.to_str().unwrap(),
+            ])
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
+    assert_eq!(results(&merged), rows);
+    // The merged results.jsonl holds every test (it is what the next merge or report reads).
+    let again = shadowcheck_runner::records::read_results(&merged.join("results.jsonl")).unwrap();
+    assert_eq!(again.results.len(), 16);
+    assert_eq!(again.not_applicable.values().sum::<usize>(), 1);
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(merged.join("report.json")).unwrap())
+            .unwrap();
+    assert_eq!(report["summary"]["counts"]["not_applicable"], 1);
+    let said = format!("{}{}", r.stdout, r.stderr);
+    assert!(said.contains("1 not applicable"), "{said}");
+
     // Those failures as the baseline: exit 0.
     let base = out1.join("failures.csv");
     assert_eq!(std::fs::read_to_string(&base).unwrap().lines().count(), 8);

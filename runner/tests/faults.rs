@@ -11,21 +11,19 @@ fn report(out: &Path) -> serde_json::Value {
 }
 
 /// (status, reason) of the one test whose name contains `needle`, from results.jsonl (every test;
-/// report.json holds only the tests that did not pass); the last record of a test is its final one.
+/// report.json holds only the tests that did not pass), read by the one results.jsonl reader (the
+/// last record of a test is its final one; compact `passed` lines expand to their tests).
 fn result_of(out: &Path, needle: &str) -> (String, String) {
-    let text = std::fs::read_to_string(out.join("results.jsonl")).unwrap();
-    let mut last = std::collections::BTreeMap::new();
-    for line in text.lines() {
-        let r: serde_json::Value = serde_json::from_str(line).unwrap();
-        if r["kind"] == "result" && r["test"].as_str().unwrap().contains(needle) {
-            last.insert(r["test"].as_str().unwrap().to_string(), r);
-        }
-    }
-    assert_eq!(last.len(), 1, "{needle}: {last:?}");
-    let r = last.into_values().next().unwrap();
+    let read = shadowcheck_runner::records::read_results(&out.join("results.jsonl")).unwrap();
+    let found: Vec<_> = read
+        .results
+        .iter()
+        .filter(|r| r.test.contains(needle))
+        .collect();
+    assert_eq!(found.len(), 1, "{needle}: {found:?}");
     (
-        r["status"].as_str().unwrap_or("").to_string(),
-        r["reason"].as_str().unwrap_or("").to_string(),
+        found[0].status.to_string(),
+        found[0].reason.clone().unwrap_or_default(),
     )
 }
 

@@ -48,11 +48,10 @@ fn sigkill_then_resume_gives_the_uninterrupted_report() {
             "the runner should have been killed: {o:?}"
         );
     }
-    let partial = std::fs::read_to_string(killed.join("results.jsonl")).unwrap();
-    let done = partial
-        .lines()
-        .filter(|l| l.contains(r#""kind":"result""#))
-        .count();
+    let done = shadowcheck_runner::records::read_results(&killed.join("results.jsonl"))
+        .unwrap()
+        .results
+        .len();
     assert!(
         (100..300).contains(&done),
         "{done} results on disk after the kill"

@@ -20,9 +20,8 @@ use crate::sample::{Kind, TexelCtx};
 use crate::select::build;
 use crate::{check, layout, lod, Evaluation, OracleError, Step};
 use shadowcheck_model::{
-    Acceptance, ApiPath, Case, Channel, Expectation, Footprint, Interval, Profile,
+    Acceptance, ApiPath, Case, Channel, Expectation, Footprint, Interval, KeyMap, Profile,
 };
-use std::collections::BTreeMap;
 
 /// The derivation so far: steps, citations and notes (implementation-defined choices), in order.
 struct Eval {
@@ -52,7 +51,7 @@ impl Eval {
     }
 }
 
-type Layouts = BTreeMap<ApiPath, [Channel; 4]>;
+type Layouts = KeyMap<ApiPath, [Channel; 4]>;
 
 /// Evaluates `case` under `rules` (the spec's own, or an alternative reading from `contradictions`).
 pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
@@ -120,7 +119,7 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
 
 /// The layout of r on each of the case's API paths, with a step each.
 fn layouts(e: &mut Eval, rules: &Rules, case: &Case, kind: Kind, incomplete: bool) -> Layouts {
-    let mut layouts = BTreeMap::new();
+    let mut layouts = KeyMap::new();
     for &api in &case.api {
         let (l, cite) = layout::layout(
             rules,
@@ -198,8 +197,7 @@ fn finish(
     layout: Layouts,
     footprint: Footprint,
 ) -> Evaluation {
-    let accept: BTreeMap<Profile, Acceptance> =
-        PROFILES.iter().map(|p| p.profile).zip(acc).collect();
+    let accept: KeyMap<Profile, Acceptance> = PROFILES.iter().map(|p| p.profile).zip(acc).collect();
     let implementation_defined = if e.notes.is_empty() {
         None
     } else {

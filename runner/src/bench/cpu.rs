@@ -132,16 +132,16 @@ pub fn soft_rows(lookups: usize, min: Duration) -> Result<Vec<Measurement>, Stri
 #[cfg(test)]
 mod tests {
     use super::*;
+    use shadowcheck_model::KeyMap;
     use shadowcheck_model::{Acceptance, Interval, Profile};
-    use std::collections::BTreeMap;
 
     #[test]
     fn exact_rgba_follows_the_layout_and_is_judged_strict() {
-        let mut accept = BTreeMap::new();
+        let mut accept = KeyMap::new();
         for &p in Profile::ALL {
             accept.insert(p, Acceptance(vec![Interval::point(1.0)]));
         }
-        let mut layout = BTreeMap::new();
+        let mut layout = KeyMap::new();
         layout.insert(
             ApiPath::GlslCore,
             [Channel::R, Channel::Zero, Channel::Zero, Channel::One],

@@ -28,7 +28,8 @@ pub struct Args {
     /// Output directories (or results.jsonl files) of the runs to merge.
     #[arg(required = true)]
     inputs: Vec<PathBuf>,
-    /// Keep passing tests in report.json and junit.xml too (as `run --full-report`).
+    /// Keep passing tests in full in results.jsonl, report.json and junit.xml too (as
+    /// `run --full-report`).
     #[arg(long)]
     full_report: bool,
 }
@@ -84,6 +85,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             merged.insert(r);
         }
         merged.load_errors.extend(p.load_errors);
+        // Shards and backends of one selection: each input counts its own not-applicable cases.
+        for (b, n) in p.not_applicable {
+            *merged.not_applicable.entry(b).or_default() += n;
+        }
     }
     std::fs::create_dir_all(&a.out).with_context(|| format!("creating {}", a.out.display()))?;
     let _lock = shadowcheck_runner::outdir::OutLock::acquire(&a.out)?;
@@ -95,12 +100,20 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     fanout
         .reporters
         .push(Box::new(TerminalReporter::new(false, false)));
-    let mut jsonl = JsonlReporter::create(&a.out.join(RESULTS_FILE), &meta)?;
+    let mut jsonl = JsonlReporter::create(&a.out.join(RESULTS_FILE), &meta, a.full_report)?;
     let errors: Vec<_> = merged.load_errors.iter().cloned().collect();
     let mut results = merged.results;
     for e in &errors {
         jsonl.event(&Event::LoadError(e))?;
     }
+    for (b, n) in &merged.not_applicable {
+        jsonl.event(&Event::BackendStarted {
+            backend: b,
+            tests: 0,
+            not_applicable: *n,
+        })?;
+    }
+    let not_applicable = merged.not_applicable.values().sum();
     run::sort_results(&mut results);
     for r in &results {
         jsonl.event(&Event::CaseFinished {
@@ -108,6 +121,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             replayed: false,
         })?;
     }
+    jsonl.finish()?;
     fanout.reporters.extend(report::file_reporters(
         &a.out,
         &FileReports {
@@ -115,7 +129,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             ..FileReports::default()
         },
     ));
-    let summary = run::finish(backends, &mut results, &errors, 0, &mut fanout);
+    let summary = run::finish(backends, &mut results, &errors, not_applicable, &mut fanout);
     let mut ending = Ending::new(summary.exit_code);
     if let Some((_, e)) = &fanout.error {
         eprintln!("shadowcheck: error: {e} (in {})", a.out.display());

@@ -53,8 +53,9 @@ pub struct Args {
     /// Finish an interrupted run in --out: tests already in results.jsonl are not run again.
     #[arg(long)]
     resume: bool,
-    /// Keep passing tests in report.json and junit.xml too (by default they hold what did not
-    /// pass; results.csv and results.jsonl list every test either way).
+    /// Keep passing tests in full in results.jsonl, report.json and junit.xml too (by default
+    /// report.json and junit.xml hold what did not pass and results.jsonl keeps plain passes in a
+    /// compact line per case; results.csv lists every test either way).
     #[arg(long)]
     full_report: bool,
     /// Seconds an external implementation may take for one group of cases.
@@ -242,11 +243,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
                 );
             }
         }
-        (prior, JsonlReporter::append(&results_path)?)
+        (prior, JsonlReporter::append(&results_path, a.full_report)?)
     } else {
         (
             records::Results::default(),
-            JsonlReporter::create(&results_path, &meta)?,
+            JsonlReporter::create(&results_path, &meta, a.full_report)?,
         )
     };
 

@@ -5,10 +5,12 @@
 //! - a run killed mid-write may leave a truncated last line (no newline at its end): it is dropped
 //!   when read, and cut off before `--resume` appends ([`truncate_partial_line`]); any other line
 //!   that does not parse is an error naming the file and line;
+//! - a `passed` line (the compact form of passing tests) stands for one record per test it lists;
 //! - for each (backend, test) the last record wins (a flake re-run appends the final record of a
 //!   test after its first one), kept at the place of the first;
 //! - load errors are de-duplicated;
-//! - the last metadata line is the run's [`RunMeta`];
+//! - the last metadata line is the run's [`RunMeta`]; the last not-applicable count of a backend
+//!   is its count;
 //! - a record whose footprint does not read back (serde_json writes a non-finite footprint number
 //!   as `null`) keeps everything else: only the footprint is dropped.
 //!
@@ -17,7 +19,7 @@
 //! later one and counts it.
 
 use super::{Line, LoadError, RunMeta, TestResult};
-use std::collections::{BTreeSet, HashMap};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::io::{BufRead, BufReader, Seek, SeekFrom};
 use std::path::Path;
 
@@ -49,6 +51,8 @@ pub struct Results {
     pub results: Vec<TestResult>,
     index: HashMap<(String, String), usize>,
     pub load_errors: BTreeSet<LoadError>,
+    /// Per backend, the cases that are not tests of it (the last count written for it).
+    pub not_applicable: BTreeMap<String, usize>,
 }
 
 impl Results {
@@ -89,6 +93,23 @@ impl Results {
                 Ok(Line::Result(r)) => {
                     out.insert(*r);
                 }
+                Ok(Line::NotApplicable { backend, cases }) => {
+                    out.not_applicable.insert(backend, cases);
+                }
+                Ok(Line::Passed(p)) => match p.results() {
+                    Ok(rs) => {
+                        for r in rs {
+                            out.insert(r);
+                        }
+                    }
+                    Err(e) => {
+                        return Err(ReadError::Bad {
+                            file: file.to_string(),
+                            line: i + 1,
+                            msg: e.to_string(),
+                        })
+                    }
+                },
                 Err(_) if i + 1 == lines.len() && !complete => {}
                 Err(e) => {
                     return Err(ReadError::Bad {

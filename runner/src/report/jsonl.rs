@@ -4,9 +4,14 @@
 //! Only whole lines reach the file: records are collected in memory and written at each batch's end;
 //! when a write fails part-way (a full disk), the file is cut back to its last complete line and the
 //! reporter stops writing (the error is returned once; the run goes on and says so at the end).
+//!
+//! Passing tests are kept in the compact form ([`Passed`]: one line per case and backend, about 100
+//! bytes a test) unless the reporter is asked for full records (`--full-report`). A case's line is
+//! written before any full record of the same backend, so the reader's "last record wins" still sees
+//! records in the order they were made (a crash re-emits a case's earlier passes as Crash).
 
 use crate::events::{Event, Reporter};
-use crate::records::{Line, RunMeta};
+use crate::records::{Line, Passed, RunMeta, TestResult};
 use std::fs::{File, OpenOptions};
 use std::io::Write;
 use std::path::Path;
@@ -39,40 +44,81 @@ pub struct JsonlReporter<S: Store = File> {
     written: u64,
     /// A write failed: nothing more is written (the file holds whole lines only).
     failed: bool,
+    /// Every test as a full record (`--full-report`), none in the compact form.
+    full: bool,
+    /// Per backend, the compact line of passing tests being filled (at most one per backend).
+    open: Vec<Passed>,
 }
 
 impl JsonlReporter<File> {
-    /// Starts `path` afresh with `meta` as its first line.
-    pub fn create(path: &Path, meta: &RunMeta) -> std::io::Result<JsonlReporter> {
+    /// Starts `path` afresh with `meta` as its first line; `full`: every test as a full record.
+    pub fn create(path: &Path, meta: &RunMeta, full: bool) -> std::io::Result<JsonlReporter> {
         let file = OpenOptions::new()
             .create(true)
             .write(true)
             .truncate(true)
             .open(path)?;
         drop(file);
-        let mut r = JsonlReporter::over(OpenOptions::new().append(true).open(path)?, 0);
+        let mut r = JsonlReporter::over(OpenOptions::new().append(true).open(path)?, 0, full);
         r.push(&Line::Meta(meta.clone()))?;
         r.flush()?;
         Ok(r)
     }
 
     /// Appends to an existing file (`--resume`; cut any partial last line first).
-    pub fn append(path: &Path) -> std::io::Result<JsonlReporter> {
+    pub fn append(path: &Path, full: bool) -> std::io::Result<JsonlReporter> {
         let file = OpenOptions::new().append(true).open(path)?;
         let len = file.metadata()?.len();
-        Ok(JsonlReporter::over(file, len))
+        Ok(JsonlReporter::over(file, len, full))
     }
 }
 
 impl<S: Store> JsonlReporter<S> {
     /// A reporter appending to `store`, which already holds `len` bytes of whole lines.
-    pub fn over(store: S, len: u64) -> JsonlReporter<S> {
+    pub fn over(store: S, len: u64, full: bool) -> JsonlReporter<S> {
         JsonlReporter {
             store,
             pending: Vec::with_capacity(1 << 16),
             written: len,
             failed: false,
+            full,
+            open: vec![],
         }
+    }
+
+    /// Takes one test's final record: into its case's compact line when it passed plainly,
+    /// otherwise as a full record after the backend's open compact line.
+    fn result(&mut self, r: &TestResult) -> std::io::Result<()> {
+        let at = self.open.iter().position(|p| p.backend == r.backend);
+        if !self.full && Passed::admits(r) {
+            match at {
+                Some(i) if self.open[i].holds(r) => self.open[i].push(r),
+                Some(i) => {
+                    let done = std::mem::replace(&mut self.open[i], Passed::first(r));
+                    self.push(&Line::Passed(done))?;
+                }
+                None => self.open.push(Passed::first(r)),
+            }
+            return Ok(());
+        }
+        if let Some(i) = at {
+            let done = self.open.swap_remove(i);
+            self.push(&Line::Passed(done))?;
+        }
+        self.push(&Line::Result(Box::new(r.clone())))
+    }
+
+    /// Writes everything taken so far (for writers that send no end-of-run event, as `merge`).
+    pub fn finish(&mut self) -> std::io::Result<()> {
+        self.close_and_flush()
+    }
+
+    /// Writes the open compact lines, then the pending lines.
+    fn close_and_flush(&mut self) -> std::io::Result<()> {
+        for p in std::mem::take(&mut self.open) {
+            self.push(&Line::Passed(p))?;
+        }
+        self.flush()
     }
 
     fn push(&mut self, line: &Line) -> std::io::Result<()> {
@@ -120,12 +166,22 @@ impl<S: Store> Reporter for JsonlReporter<S> {
             Event::CaseFinished {
                 result,
                 replayed: false,
-            } => self.push(&Line::Result(Box::new((*result).clone()))),
+            } => self.result(result),
             Event::LoadError(e) => self.push(&Line::LoadError((*e).clone())),
+            Event::BackendStarted {
+                backend,
+                not_applicable,
+                ..
+            } => {
+                self.push(&Line::NotApplicable {
+                    backend: backend.to_string(),
+                    cases: *not_applicable,
+                })?;
+                self.close_and_flush()
+            }
             Event::BatchFinished { .. }
-            | Event::BackendStarted { .. }
             | Event::BackendFinished { .. }
-            | Event::RunFinished { .. } => self.flush(),
+            | Event::RunFinished { .. } => self.close_and_flush(),
             _ => Ok(()),
         }
     }
@@ -166,6 +222,7 @@ mod tests {
                 room: 300,
             },
             0,
+            false,
         );
         let mut errors = 0;
         for batch in 0..10 {

@@ -244,6 +244,7 @@ pub fn run_backend(
     ctx.fanout.emit(&Event::BackendStarted {
         backend: &name,
         tests,
+        not_applicable,
     });
     let lists = &settings.lists;
     let file_of = |l: &Loaded| {
@@ -273,7 +274,7 @@ pub fn run_backend(
         let mut apis = Vec::with_capacity(applicable.len());
         for &api in &applicable {
             let test = TestResult::name(&case.id, api);
-            match lists.skips.matching(&test) {
+            match lists.skips.matching_for(&name, &test) {
                 Some(re) => {
                     let mut r = base_result(&name, case, api, fixtures);
                     r.reason = Some(format!("skips list: `{re}`"));
@@ -501,7 +502,7 @@ pub fn sort_results(results: &mut [TestResult]) {
 }
 
 /// Sorts, totals and announces the end of a run (shared with `merge`). `not_applicable`: the
-/// count of not-applicable tests ([`CaseSet::tests_on`]; `merge` does not know it and passes 0).
+/// count of not-applicable tests ([`CaseSet::tests_on`]; `merge` adds up its inputs' counts).
 pub fn finish(
     backends: Vec<String>,
     results: &mut [TestResult],

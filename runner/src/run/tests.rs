@@ -3,8 +3,8 @@
 use super::*;
 use crate::backend::{ApiOutcome, Capabilities};
 use crate::events::{Event, Reporter};
+use shadowcheck_model::KeyMap;
 use shadowcheck_model::*;
-use std::collections::BTreeMap;
 
 /// Answers r = 1 on every path it is sent, and records what it was sent.
 struct Fake {
@@ -66,7 +66,7 @@ impl Reporter for Count {
 }
 
 fn case(id: &str, spec: Spec, api: Vec<ApiPath>) -> Case {
-    let mut accept = BTreeMap::new();
+    let mut accept = KeyMap::new();
     for &p in Profile::ALL {
         accept.insert(p, Acceptance(vec![Interval::point(1.0)]));
     }

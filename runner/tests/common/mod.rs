@@ -4,8 +4,8 @@
 #![allow(dead_code)]
 
 use shadowcheck_cases::fixtures::{to_string, FixtureFile};
+use shadowcheck_model::KeyMap;
 use shadowcheck_model::*;
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -53,11 +53,11 @@ pub fn compare(func: CompareFunc, dref: f64, dt: f64) -> f64 {
 pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
     let dt = TEXELS[(y * 2 + x) as usize] as f64 / 65535.0;
     let r = compare(func, dref, dt);
-    let mut accept = BTreeMap::new();
+    let mut accept = KeyMap::new();
     for &p in Profile::ALL {
         accept.insert(p, Acceptance(vec![Interval::point(r)]));
     }
-    let mut layout = BTreeMap::new();
+    let mut layout = KeyMap::new();
     layout.insert(
         ApiPath::GlslCore,
         [
