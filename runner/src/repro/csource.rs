@@ -501,3 +501,7 @@ fn glsl_draw(s: &Subject, plan: &Plan, centre: [f32; 2]) -> String {
 /// `main` and its helpers: context, framebuffer (as `draw::Renderer::new`), texture, one draw,
 /// read-back, verdict. A fragment of C, not a program of its own.
 const MAIN: &str = include_str!("main.c");
+
+#[cfg(test)]
+#[path = "csource_tests.rs"]
+mod tests;
