@@ -1,4 +1,4 @@
-//! Creating a current GL context through EGL (surfaceless) or OSMesa, with every library loaded at
+//! Creating a current GL context through EGL (surfaceless, or an EGL 1.4 pbuffer: `egl.rs`) or OSMesa, with every library loaded at
 //! run time so a machine without Mesa still builds and reports "unavailable" with the install command.
 
 use super::names::{BackendName, ContextApi, Driver, Platform};
@@ -6,14 +6,21 @@ use super::GlError;
 use std::ffi::{c_void, CString};
 use std::os::raw::{c_char, c_int, c_uint};
 
-/// apt-get command that installs what a platform needs.
+/// The command that installs what a backend needs (apt-get for Mesa and chromium-common, the
+/// fetch script for SwiftShader's GLES).
 pub fn install_hint(b: BackendName) -> String {
     let mut pkgs = match b.platform {
         Platform::Egl => vec!["libegl1", "libegl-mesa0", "libgl1-mesa-dri"],
         Platform::Osmesa => vec!["libosmesa6", "libgl1-mesa-dri"],
     };
-    if b.driver == Driver::Zink {
-        pkgs.push("mesa-vulkan-drivers");
+    match b.driver {
+        Driver::Zink => pkgs.push("mesa-vulkan-drivers"),
+        Driver::ZinkSwiftshader => pkgs.extend(["libvulkan1", "chromium-common"]),
+        Driver::Swiftshader => return crate::libdir::SWIFTSHADER_FETCH.to_string(),
+        Driver::Native => {
+            return "the EGL driver of the implementation (its vendor's package)".into()
+        }
+        Driver::Llvmpipe | Driver::Softpipe => {}
     }
     format!("apt-get install -y {}", pkgs.join(" "))
 }
@@ -26,13 +33,6 @@ pub const LIBOSMESA_ENV: &str = "SHADOWCHECK_LIBOSMESA";
 fn lib_name(env: &str, default: &str) -> std::ffi::OsString {
     std::env::var_os(env).unwrap_or_else(|| default.into())
 }
-
-const EGL_PLATFORM_SURFACELESS_MESA: khronos_egl::Enum = 0x31DD;
-const EGL_CONTEXT_MAJOR_VERSION: khronos_egl::Int = 0x3098;
-const EGL_CONTEXT_MINOR_VERSION: khronos_egl::Int = 0x30FB;
-const EGL_CONTEXT_OPENGL_PROFILE_MASK: khronos_egl::Int = 0x30FD;
-const EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT: khronos_egl::Int = 1;
-const EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT: khronos_egl::Int = 2;
 
 const OSMESA_FORMAT: c_int = 0x22;
 const OSMESA_RGBA: c_int = 0x1908;
@@ -51,7 +51,7 @@ type OsMesaGetProc = unsafe extern "C" fn(*const c_char) -> *const c_void;
 
 enum Inner {
     Egl {
-        egl: Box<khronos_egl::DynamicInstance<khronos_egl::EGL1_5>>,
+        ctx: super::egl::EglContext,
     },
     Osmesa {
         _lib: libloading::Library,
@@ -65,8 +65,6 @@ enum Inner {
 /// survive being unloaded); the process exits soon after anyway.
 pub struct GlContext {
     inner: Inner,
-    /// The (major, minor) asked for that succeeded.
-    pub requested: (i32, i32),
 }
 
 impl GlContext {
@@ -75,18 +73,28 @@ impl GlContext {
         if let Some(why) = b.static_unavailability() {
             return Err(GlError::Unavailable(why));
         }
+        // The runner checked the files; a library named by the runner is what is loaded.
+        if std::env::var_os(LIBEGL_ENV).is_none() {
+            check_files(b)?;
+        }
         match b.platform {
             Platform::Egl => create_egl(b),
             Platform::Osmesa => create_osmesa(b),
         }
     }
 
+    /// How an EGL context was made current (`None` for OSMesa).
+    pub fn egl_mode(&self) -> Option<super::egl::SurfaceMode> {
+        match &self.inner {
+            Inner::Egl { ctx } => Some(ctx.mode),
+            Inner::Osmesa { .. } => None,
+        }
+    }
+
     /// Looks up a GL entry point (core, extension or legacy) for the current context.
     pub fn get_proc(&self, name: &str) -> *const c_void {
         match &self.inner {
-            Inner::Egl { egl } => egl
-                .get_proc_address(name)
-                .map_or(std::ptr::null(), |f| f as *const c_void),
+            Inner::Egl { ctx } => ctx.get_proc(name),
             Inner::Osmesa { get_proc, .. } => match CString::new(name) {
                 // SAFETY: OSMesaGetProcAddress takes a NUL-terminated name and returns a pointer or null.
                 Ok(c) => unsafe { get_proc(c.as_ptr()) },
@@ -96,103 +104,25 @@ impl GlContext {
     }
 }
 
-/// Versions to try, highest first: drivers refuse versions above what they support.
-fn versions(api: ContextApi) -> &'static [(i32, i32)] {
-    match api {
-        ContextApi::Core | ContextApi::Compat => &[
-            (4, 6),
-            (4, 5),
-            (4, 3),
-            (4, 2),
-            (4, 1),
-            (4, 0),
-            (3, 3),
-            (3, 2),
-            (3, 1),
-            (3, 0),
-        ],
-        ContextApi::Es3 => &[(3, 2), (3, 1), (3, 0)],
-        ContextApi::Es2 => &[(2, 0)],
+/// Whether the files a backend needs beyond the system's libraries are here (SwiftShader's Vulkan
+/// ICD for zink+swiftshader); the error names the file and the install command.
+pub fn check_files(b: BackendName) -> Result<(), GlError> {
+    match b.missing_file() {
+        None => Ok(()),
+        Some((path, install)) => Err(GlError::MissingLibrary {
+            lib: path.display().to_string(),
+            detail: "no such file".into(),
+            install: install.into(),
+        }),
     }
 }
 
 fn create_egl(b: BackendName) -> Result<GlContext, GlError> {
-    // SAFETY: loading the system EGL library; khronos-egl checks every required symbol.
     let name = lib_name(LIBEGL_ENV, "libEGL.so.1");
-    let egl = unsafe {
-        khronos_egl::DynamicInstance::<khronos_egl::EGL1_5>::load_required_from_filename(&name)
-    }
-    .map_err(|e| GlError::MissingLibrary {
-        lib: format!("{} (EGL 1.5)", name.to_string_lossy()),
-        detail: e.to_string(),
-        install: install_hint(b),
-    })?;
-    // SAFETY: the surfaceless platform takes no native display.
-    let display = unsafe {
-        egl.get_platform_display(
-            EGL_PLATFORM_SURFACELESS_MESA,
-            khronos_egl::DEFAULT_DISPLAY,
-            &[khronos_egl::ATTRIB_NONE],
-        )
-    }
-    .map_err(|e| {
-        GlError::ContextFailed(format!(
-            "eglGetPlatformDisplay(SURFACELESS_MESA): {e} (install: {})",
-            install_hint(b)
-        ))
-    })?;
-    egl.initialize(display).map_err(|e| {
-        GlError::ContextFailed(format!(
-            "eglInitialize: {e} (is libegl-mesa0 installed? {})",
-            install_hint(b)
-        ))
-    })?;
-    let api = if b.api.is_es() {
-        khronos_egl::OPENGL_ES_API
-    } else {
-        khronos_egl::OPENGL_API
-    };
-    egl.bind_api(api)
-        .map_err(|e| GlError::ContextFailed(format!("eglBindAPI: {e}")))?;
-    // SAFETY: EGL_NO_CONFIG_KHR is the null config (EGL_KHR_no_config_context, exposed by Mesa).
-    let no_config = unsafe { khronos_egl::Config::from_ptr(std::ptr::null_mut()) };
-    let mut last = String::new();
-    for &(maj, min) in versions(b.api) {
-        let mut attrs = vec![
-            EGL_CONTEXT_MAJOR_VERSION,
-            maj,
-            EGL_CONTEXT_MINOR_VERSION,
-            min,
-        ];
-        match b.api {
-            ContextApi::Core => attrs.extend([
-                EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-            ]),
-            ContextApi::Compat => attrs.extend([
-                EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
-            ]),
-            _ => {}
-        }
-        attrs.push(khronos_egl::NONE);
-        match egl.create_context(display, no_config, None, &attrs) {
-            Ok(ctx) => {
-                egl.make_current(display, None, None, Some(ctx))
-                    .map_err(|e| {
-                        GlError::ContextFailed(format!("eglMakeCurrent(no surface): {e}"))
-                    })?;
-                return Ok(GlContext {
-                    inner: Inner::Egl { egl: Box::new(egl) },
-                    requested: (maj, min),
-                });
-            }
-            Err(e) => last = format!("eglCreateContext {}.{}: {e}", maj, min),
-        }
-    }
-    Err(GlError::ContextFailed(format!(
-        "{last} (no version of this context kind could be created)"
-    )))
+    let ctx = super::egl::create(b, &name, install_hint(b))?;
+    Ok(GlContext {
+        inner: Inner::Egl { ctx },
+    })
 }
 
 fn create_osmesa(b: BackendName) -> Result<GlContext, GlError> {
@@ -224,7 +154,7 @@ fn create_osmesa(b: BackendName) -> Result<GlContext, GlError> {
     };
     let (w, h) = (16, 16);
     let mut buffer = vec![0u8; (w * h * 4) as usize];
-    for &(maj, min) in versions(b.api) {
+    for &(maj, min) in super::egl::versions(b.api) {
         let attrs = [
             OSMESA_FORMAT,
             OSMESA_RGBA,
@@ -258,7 +188,6 @@ fn create_osmesa(b: BackendName) -> Result<GlContext, GlError> {
                 get_proc,
                 _buffer: buffer,
             },
-            requested: (maj, min),
         });
     }
     Err(GlError::ContextFailed(

@@ -15,7 +15,9 @@
 mod batch;
 pub mod context;
 pub mod draw;
+pub mod egl;
 pub mod legacy;
+pub mod libdir;
 pub mod names;
 pub mod paths;
 mod programs;

@@ -45,7 +45,7 @@ pub struct Worker {
     renderer: Renderer,
     /// What this context runs, declared in the hello and applied to every case received.
     caps: Capabilities,
-    _ctx: GlContext,
+    ctx: GlContext,
 }
 
 fn parse_version(s: &str) -> (u32, u32) {
@@ -100,7 +100,7 @@ impl Worker {
                 gl.get_parameter_string(glow::SHADING_LANGUAGE_VERSION),
             )
         };
-        if !renderer.to_lowercase().contains(name.driver.key()) {
+        if !name.driver.renderer_matches(&renderer) {
             return Err(GlError::WrongDriver {
                 wanted: name.driver.key().into(),
                 renderer,
@@ -129,7 +129,7 @@ impl Worker {
             name,
             renderer,
             caps: Capabilities::default(),
-            _ctx: ctx,
+            ctx,
         };
         w.caps = w.declared_capabilities();
         Ok(w)
@@ -175,23 +175,7 @@ impl Worker {
     }
 
     pub fn formats(&self) -> Vec<Format> {
-        Format::ALL
-            .iter()
-            .copied()
-            .filter(|f| !(self.info().es && *f == Format::D32))
-            .collect()
-    }
-
-    /// The specs this kind of context implements, exposed or not: a case of another spec is no
-    /// test of it (not applicable); one of these whose extension the driver lacks is Skip with
-    /// the extension named ([`Self::unexposed`]).
-    fn implemented_specs(&self) -> Vec<Spec> {
-        match self.info().api {
-            ContextApi::Core => vec![Spec::Gl46],
-            ContextApi::Compat => vec![Spec::Gl46, Spec::Arb, Spec::ArbAmbient, Spec::ExtFuncs],
-            ContextApi::Es3 => vec![Spec::Gles32],
-            ContextApi::Es2 => vec![Spec::Es2Ext],
-        }
+        formats(self.info())
     }
 
     /// Why a case of `spec` cannot run on this context although it implements the spec (the
@@ -237,43 +221,19 @@ impl Worker {
     }
 
     fn declared_capabilities(&self) -> Capabilities {
-        let i = self.info();
-        Capabilities {
-            // What the context type implements: the runner counts other specs and paths as not
-            // applicable; what the driver does not expose is Skip with its reason (`admit`).
-            specs: Some(
-                self.implemented_specs()
-                    .iter()
-                    .map(|s| s.key().to_string())
-                    .collect(),
-            ),
-            api: Some(i.api.paths().iter().map(|p| p.key().to_string()).collect()),
-            targets: Some(i.targets().iter().map(|t| t.key().to_string()).collect()),
-            formats: Some(self.formats().iter().map(|f| f.key().to_string()).collect()),
-            features: Some(
-                FEATURES
-                    .iter()
-                    .filter(|f| match f.key {
-                        // ES 3.2 §8.10: no TEXTURE_LOD_BIAS texture parameter.
-                        "lod_bias" => !i.es,
-                        "fail_value" => i.has_ext("GL_ARB_shadow_ambient"),
-                        _ => false,
-                    })
-                    .map(|f| f.key.to_string())
-                    .collect(),
-            ),
-            extensions: RELEVANT_EXTENSIONS
-                .iter()
-                .filter(|e| i.has_ext(e))
-                .map(|e| e.to_string())
-                .collect(),
-        }
+        declared_capabilities(self.info())
     }
 
     /// The implementation's name for the handshake, e.g. `egl:llvmpipe:core (4.5 (Core Profile) Mesa 22.3.6; llvmpipe ...)`.
+    /// An EGL 1.4 pbuffer context says so: `...; EGL pbuffer)`.
     pub fn display_name(&self) -> String {
+        let pbuffer = if self.ctx.egl_mode() == Some(super::egl::SurfaceMode::Pbuffer) {
+            "; EGL pbuffer"
+        } else {
+            ""
+        };
         format!(
-            "{} ({}; {})",
+            "{} ({}; {}{pbuffer})",
             self.name,
             self.info().version_string,
             self.info().renderer
@@ -366,6 +326,63 @@ impl Worker {
             .into_iter()
             .map(|a| a.unwrap_or_else(|| Answer::Error("internal: missing answer".into())))
             .collect()
+    }
+}
+
+fn formats(i: &GlInfo) -> Vec<Format> {
+    Format::ALL
+        .iter()
+        .copied()
+        .filter(|f| !(i.es && *f == Format::D32))
+        .collect()
+}
+
+/// The specs a kind of context implements, exposed or not: a case of another spec is no test of
+/// it (not applicable); one of these whose extension the driver lacks is Skip with the extension
+/// named ([`Worker::unexposed`]).
+fn implemented_specs(api: ContextApi) -> Vec<Spec> {
+    match api {
+        ContextApi::Core => vec![Spec::Gl46],
+        ContextApi::Compat => vec![Spec::Gl46, Spec::Arb, Spec::ArbAmbient, Spec::ExtFuncs],
+        ContextApi::Es3 => vec![Spec::Gles32],
+        ContextApi::Es2 => vec![Spec::Es2Ext],
+    }
+}
+
+/// What a context described by `info` runs (declared in the hello): the spec and API paths its
+/// kind implements, the targets, formats and sampler features the driver exposes.
+pub fn declared_capabilities(i: &GlInfo) -> Capabilities {
+    Capabilities {
+        // What the context type implements: the runner counts other specs and paths as not
+        // applicable; what the driver does not expose is Skip with its reason (`admit`).
+        specs: Some(
+            implemented_specs(i.api)
+                .iter()
+                .map(|s| s.key().to_string())
+                .collect(),
+        ),
+        api: Some(i.api.paths().iter().map(|p| p.key().to_string()).collect()),
+        targets: Some(i.targets().iter().map(|t| t.key().to_string()).collect()),
+        formats: Some(formats(i).iter().map(|f| f.key().to_string()).collect()),
+        features: Some(
+            FEATURES
+                .iter()
+                .filter(|f| match f.key {
+                    // ES 3.2 §8.10: no TEXTURE_LOD_BIAS texture parameter.
+                    "lod_bias" => !i.es,
+                    "fail_value" => i.has_ext("GL_ARB_shadow_ambient"),
+                    "border_clamp" => i.border_clamp(),
+                    "stencil_texturing" => i.stencil_texturing(),
+                    _ => false,
+                })
+                .map(|f| f.key.to_string())
+                .collect(),
+        ),
+        extensions: RELEVANT_EXTENSIONS
+            .iter()
+            .filter(|e| i.has_ext(e))
+            .map(|e| e.to_string())
+            .collect(),
     }
 }
 
@@ -506,3 +523,7 @@ mod tests {
         assert_eq!(parse_version("4.50"), (4, 50));
     }
 }
+
+#[cfg(test)]
+#[path = "gating_tests.rs"]
+mod gating_tests;

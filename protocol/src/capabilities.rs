@@ -36,7 +36,9 @@ pub struct Feature {
 }
 
 /// Every feature a case may need. OpenGL ES has no TEXTURE_LOD_BIAS (ES 3.2 §8.10 lists no such
-/// parameter); TEXTURE_COMPARE_FAIL_VALUE_ARB exists only with GL_ARB_shadow_ambient.
+/// parameter); TEXTURE_COMPARE_FAIL_VALUE_ARB exists only with GL_ARB_shadow_ambient; an ES 3.0
+/// context has neither CLAMP_TO_BORDER / TEXTURE_BORDER_COLOR (ES 3.2) nor
+/// DEPTH_STENCIL_TEXTURE_MODE (ES 3.1), so a case setting them is Skip there, never a GL error.
 pub const FEATURES: &[Feature] = &[
     Feature {
         key: "lod_bias",
@@ -48,7 +50,31 @@ pub const FEATURES: &[Feature] = &[
         what: "TEXTURE_COMPARE_FAIL_VALUE_ARB (GL_ARB_shadow_ambient)",
         used_by: |c| c.sampler.fail_value.is_some(),
     },
+    Feature {
+        key: "border_clamp",
+        what: "CLAMP_TO_BORDER / TEXTURE_BORDER_COLOR (OpenGL ES 3.2, OES_texture_border_clamp)",
+        used_by: uses_border,
+    },
+    Feature {
+        key: "stencil_texturing",
+        what: "DEPTH_STENCIL_TEXTURE_MODE (OpenGL 4.3, OpenGL ES 3.1, ARB_stencil_texturing)",
+        used_by: |c| c.sampler.depth_stencil_mode.is_some(),
+    },
 ];
+
+/// Whether a case sets TEXTURE_BORDER_COLOR or wraps a coordinate its target uses with
+/// CLAMP_TO_BORDER (neither exists in OpenGL ES 3.0: ES 3.2 §8.10 added both).
+fn uses_border(c: &Case) -> bool {
+    use shadowcheck_model::Wrap;
+    let s = &c.sampler;
+    let t = c.texture.target;
+    let used = [
+        (s.wrap_s, true),
+        (s.wrap_t, t.dims() == 2),
+        (s.wrap_r, t.is_cube()),
+    ];
+    s.border != [0.0; 4] || used.iter().any(|(w, on)| *on && *w == Wrap::ClampToBorder)
+}
 
 fn listed(list: &Option<Vec<String>>, key: &str) -> bool {
     list.as_ref().is_none_or(|l| l.iter().any(|k| k == key))

@@ -1,6 +1,8 @@
 //! The committed Mesa 22.3.6 reference baselines (reports/mesa-22.3.6/<backend>/failures.csv) work
 //! as deqp-runner baselines: a run of llvmpipe over a subset of the default fixtures with its
-//! committed baseline (and flakes list) exits 0, the documented "all good" code (runner/README.md).
+//! committed baseline (and flakes list) exits 0, the documented "all good" code (runner/README.md);
+//! the same for the implementations beyond Mesa (reports/zink-swiftshader-chromium-156,
+//! reports/swiftshader-4.0.0.3) on their 2D ES cases.
 //! A missing driver is a loud skip here, a failure under CI=true (see gl_support).
 mod common;
 mod gl_support;
@@ -14,13 +16,21 @@ fn root() -> PathBuf {
 /// Runs `backend` over `cases` (a --cases regex) of the default fixtures with the committed
 /// baseline; `None` when the driver is not there (already reported by `unavailable`).
 fn run_with_baseline(backend: &str, cases: &str, name: &str) -> Option<common::Run> {
+    run_with_baseline_in("reports/mesa-22.3.6", backend, cases, name)
+}
+
+/// [`run_with_baseline`] with the baseline of another implementation's reference folder.
+fn run_with_baseline_in(
+    reports: &str,
+    backend: &str,
+    cases: &str,
+    name: &str,
+) -> Option<common::Run> {
     if let Err(e) = shadowcheck_runner::backend::gl::worker_command(backend) {
         gl_support::unavailable(backend, &e.to_string());
         return None;
     }
-    let dir = root()
-        .join("reports/mesa-22.3.6")
-        .join(backend.replace(':', "-"));
+    let dir = root().join(reports).join(backend.replace(':', "-"));
     let baseline = dir.join("failures.csv");
     assert!(
         baseline.is_file(),
@@ -96,6 +106,44 @@ fn llvmpipe_es3_known_failures_are_expected_fails_with_its_committed_baseline() 
         !summary.contains(" 0 expected fail"),
         "the baseline excused nothing: {summary}"
     );
+}
+
+/// The implementations beyond Mesa: their committed baselines on the 2D ES cases, which hold their
+/// known failures (cause S1, Dref not clamped, and Mesa's cause 2 on zink): exit 0 with some
+/// expected fails.
+#[test]
+fn swiftshader_es3_subsets_pass_with_their_committed_baselines() {
+    for (reports, backend) in [
+        (
+            "reports/zink-swiftshader-chromium-156",
+            "egl:zink+swiftshader:es3",
+        ),
+        ("reports/swiftshader-4.0.0.3", "egl:swiftshader:es3"),
+    ] {
+        let name = format!("baseline-{}", backend.replace([':', '+'], "-"));
+        let Some(r) = run_with_baseline_in(reports, backend, "^gles32/2d/", &name) else {
+            continue;
+        };
+        assert_eq!(
+            r.code,
+            0,
+            "{backend}: exit code {}\nstdout tail: {}\nstderr tail: {}",
+            r.code,
+            tail(&r.stdout),
+            tail(&r.stderr)
+        );
+        let summary = r
+            .stderr
+            .lines()
+            .chain(r.stdout.lines())
+            .find(|l| l.contains("expected fail"))
+            .unwrap_or("")
+            .to_string();
+        assert!(
+            !summary.contains(" 0 expected fail"),
+            "{backend}: the baseline excused nothing: {summary}"
+        );
+    }
 }
 
 fn tail(s: &str) -> String {

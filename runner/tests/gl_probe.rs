@@ -7,7 +7,7 @@ use shadowcheck_runner::backend::gl;
 fn probe_reports_every_backend_with_reasons() {
     std::env::set_var(gl::WORKER_EXE_ENV, env!("CARGO_BIN_EXE_shadowcheck"));
     let report = gl::probe_report();
-    assert_eq!(report.len(), 24);
+    assert_eq!(report.len(), 40);
     let ci = std::env::var("CI").is_ok_and(|v| v == "true");
     for (name, res) in &report {
         let b: BackendName = name.parse().unwrap();

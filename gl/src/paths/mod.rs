@@ -52,6 +52,37 @@ impl GlInfo {
             self.at_least(4, 0) || self.has_ext("GL_ARB_texture_cube_map_array")
         }
     }
+    /// CLAMP_TO_BORDER and TEXTURE_BORDER_COLOR: desktop GL 1.3 on; ES 3.2 or
+    /// OES/EXT_texture_border_clamp.
+    pub fn border_clamp(&self) -> bool {
+        !self.es
+            || self.at_least(3, 2)
+            || self.has_ext("GL_OES_texture_border_clamp")
+            || self.has_ext("GL_EXT_texture_border_clamp")
+    }
+    /// DEPTH_STENCIL_TEXTURE_MODE: GL 4.3 or ARB_stencil_texturing; ES 3.1.
+    pub fn stencil_texturing(&self) -> bool {
+        if self.es {
+            self.at_least(3, 1)
+        } else {
+            self.at_least(4, 3) || self.has_ext("GL_ARB_stencil_texturing")
+        }
+    }
+    /// 1D and 2D array textures on desktop GL: 3.0 or EXT_texture_array.
+    fn texture_array(&self) -> bool {
+        self.at_least(3, 0) || self.has_ext("GL_EXT_texture_array")
+    }
+    /// Rectangle textures on desktop GL: 3.1 or ARB/NV/EXT_texture_rectangle.
+    fn texture_rectangle(&self) -> bool {
+        self.at_least(3, 1)
+            || [
+                "GL_ARB_texture_rectangle",
+                "GL_NV_texture_rectangle",
+                "GL_EXT_texture_rectangle",
+            ]
+            .iter()
+            .any(|e| self.has_ext(e))
+    }
     pub fn arbfp_shadow(&self) -> bool {
         self.compat
             && self.has_ext("GL_ARB_fragment_program")
@@ -79,14 +110,15 @@ impl GlInfo {
         let mut v = if self.es || self.api == ContextApi::Es2 {
             vec![Target::T2d, Target::Cube, Target::T2dArray]
         } else {
-            vec![
-                Target::T1d,
-                Target::T2d,
-                Target::Rect,
-                Target::Cube,
-                Target::T1dArray,
-                Target::T2dArray,
-            ]
+            let mut v = vec![Target::T1d, Target::T2d];
+            if self.texture_rectangle() {
+                v.push(Target::Rect);
+            }
+            v.push(Target::Cube);
+            if self.texture_array() {
+                v.extend([Target::T1dArray, Target::T2dArray]);
+            }
+            v
         };
         if self.api == ContextApi::Es2 {
             v = vec![Target::T2d];

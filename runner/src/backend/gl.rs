@@ -4,7 +4,7 @@
 //! probing which backends this machine can run. The worker itself is the GL crate's.
 
 use super::exec::ProcessCommand;
-use shadowcheck_gl::{BackendName, GlError};
+use shadowcheck_gl::{libdir, BackendName, GlError};
 use std::path::PathBuf;
 use std::process::Stdio;
 use std::time::{Duration, Instant};
@@ -38,16 +38,35 @@ fn shadowcheck_exe() -> Result<PathBuf, GlError> {
     )))
 }
 
-/// How to start the worker for one backend name.
+/// How to start the worker for one backend name. `egl@<dir>:<driver>:<api>` loads libEGL from
+/// `<dir>` (with LD_LIBRARY_PATH there, so it binds its own libGLESv2): the worker gets the name
+/// without the directory and the library through its environment.
 pub fn worker_command(backend: &str) -> Result<ProcessCommand, GlError> {
-    let name: BackendName = backend.parse()?;
+    let (lib_dir, plain) = libdir::split_lib_dir(backend)?;
+    let name: BackendName = plain.parse()?;
     if let Some(why) = name.static_unavailability() {
         return Err(GlError::Unavailable(why));
+    }
+    let mut env = name.env();
+    match &lib_dir {
+        None => shadowcheck_gl::context::check_files(name)?,
+        Some(dir) => {
+            let egl = libdir::libegl_in(dir);
+            if !egl.is_file() {
+                return Err(GlError::MissingLibrary {
+                    lib: egl.display().to_string(),
+                    detail: "no such file".into(),
+                    install: "name a directory holding libEGL.so or libEGL.so.1".into(),
+                });
+            }
+            env.retain(|(k, _)| k != "LD_LIBRARY_PATH" && k != shadowcheck_gl::context::LIBEGL_ENV);
+            env.extend(libdir::lib_dir_env(dir));
+        }
     }
     Ok(ProcessCommand {
         program: shadowcheck_exe()?,
         args: vec!["gl-worker".into(), "--backend".into(), name.to_string()],
-        env: name.env(),
+        env,
     })
 }
 

@@ -37,7 +37,7 @@ pub const KINDS: &[Kind] = &[
     Kind {
         prefix: "egl",
         pattern: "egl:*",
-        help: "egl:<driver>:<api>[:<form>], a Mesa driver through EGL in a gl-worker child",
+        help: "egl[@<lib-dir>]:<driver>:<api>[:<form>], a GL driver through EGL (surfaceless, or EGL 1.4 pbuffer) in a gl-worker child",
         open: open_gl,
     },
     Kind {
@@ -57,6 +57,8 @@ pub const KINDS: &[Kind] = &[
 /// The kind a backend name belongs to.
 pub fn kind_of(name: &str) -> Option<&'static Kind> {
     let prefix = name.split_once(':').map_or(name, |(k, _)| k);
+    // `egl@<lib-dir>:...`: an EGL backend with its library directory.
+    let prefix = prefix.split_once('@').map_or(prefix, |(k, _)| k);
     KINDS.iter().find(|k| k.prefix == prefix)
 }
 
@@ -134,6 +136,7 @@ mod tests {
         assert!(kind_of("egl:llvmpipe:core").is_some_and(|k| k.prefix == "egl"));
         assert!(kind_of("soft").is_some_and(|k| k.prefix == "soft"));
         assert!(kind_of("nonsense:x").is_none());
+        assert!(kind_of("egl@/opt/vendor/lib:native:es3").is_some_and(|k| k.prefix == "egl"));
         assert_eq!(help().lines().count(), KINDS.len() + 1);
     }
 }

@@ -103,25 +103,35 @@ pub fn gl_backends() -> Vec<String> {
     gl::probe()
 }
 
+/// A backend name and why it does not run here.
+pub type Unavailable = (String, String);
+
 /// Backends run when none is named: `soft` plus every GL backend a machine with Mesa offers. The
 /// second list holds those that cannot start here, each with the reason (a driver not installed or
-/// hidden); combinations that can never work (OSMesa with ES, OSMesa with zink) are in neither.
-pub fn default_backends() -> (Vec<String>, Vec<(String, String)>) {
+/// hidden); combinations that can never work (OSMesa with ES, OSMesa with zink) are in neither. The
+/// third holds the optional implementations beyond Mesa whose files are not installed
+/// (SwiftShader's Vulkan ICD, SwiftShader's GLES), each with the command that installs it: announced,
+/// not an error.
+pub fn default_backends() -> (Vec<String>, Vec<Unavailable>, Vec<Unavailable>) {
     let mut run = vec!["soft".to_string()];
     let mut missing = vec![];
+    let mut absent = vec![];
     for (name, probed) in gl::probe_report() {
-        let impossible = name
-            .parse::<shadowcheck_gl::BackendName>()
-            .ok()
-            .and_then(|b| b.static_unavailability())
-            .is_some();
+        let parsed = name.parse::<shadowcheck_gl::BackendName>().ok();
+        let impossible = parsed.and_then(|b| b.static_unavailability()).is_some();
+        let not_installed = parsed.and_then(|b| b.missing_file());
         match probed {
             _ if impossible => {}
             Ok(()) => run.push(name),
+            Err(_) if not_installed.is_some() => {
+                if let Some((file, install)) = not_installed {
+                    absent.push((name, format!("{} not found; `{install}`", file.display())));
+                }
+            }
             Err(why) => missing.push((name, why)),
         }
     }
-    (run, missing)
+    (run, missing, absent)
 }
 
 /// Opens the backend called `name` (starting and greeting its process, if any); the kind comes

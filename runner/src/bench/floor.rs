@@ -129,7 +129,7 @@ unsafe fn draw_loop(
 ) -> Result<FloorResult, String> {
     let renderer = gl.get_parameter_string(glow::RENDERER);
     let version = gl.get_parameter_string(glow::VERSION);
-    if !renderer.to_lowercase().contains(name.driver.key()) {
+    if !name.driver.renderer_matches(&renderer) {
         return Err(format!("wrong driver: GL_RENDERER is `{renderer}`"));
     }
     // Framebuffer: RGBA32F like the worker's result buffer.

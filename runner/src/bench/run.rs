@@ -28,7 +28,7 @@ pub struct BenchOptions {
 pub fn candidates(o: &BenchOptions) -> Vec<String> {
     BackendName::all()
         .into_iter()
-        .filter(|b| b.static_unavailability().is_none())
+        .filter(|b| b.static_unavailability().is_none() && Driver::MESA.contains(&b.driver))
         .map(|b| b.to_string())
         .filter(|n| {
             if o.backends.is_empty() {
@@ -256,7 +256,7 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
     };
     let out_root = std::env::temp_dir().join(format!("shadowcheck-bench-{}", std::process::id()));
     let mut groups: Vec<(String, Vec<String>)> = vec![("soft".into(), vec!["soft".into()])];
-    for d in Driver::ALL {
+    for d in Driver::MESA {
         let bs: Vec<String> = available
             .iter()
             .filter(|n| n.split(':').nth(1) == Some(d.key()))
@@ -336,7 +336,7 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
     }
     let _ = std::fs::remove_dir_all(&out_root);
     if !total_drivers.is_empty() {
-        let all3 = total_drivers.len() == Driver::ALL.len();
+        let all3 = total_drivers.len() == Driver::MESA.len();
         for (id, v, how) in [
             (ids::SUITE_TOTAL, total, "empty shader cache"),
             (

@@ -156,11 +156,14 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
 
     // Backends that cannot start here: named with the reason and the install hint; the run goes on
     // without them and exits 96 unless --skip-missing.
-    let (requested, mut missing) = if a.backends.is_empty() {
+    let (requested, mut missing, absent) = if a.backends.is_empty() {
         backend::default_backends()
     } else {
-        (a.backends.clone(), vec![])
+        (a.backends.clone(), vec![], vec![])
     };
+    for (n, how) in &absent {
+        eprintln!("shadowcheck: note: optional backend `{n}` is not installed here: {how}");
+    }
     for (i, n) in requested.iter().enumerate() {
         if requested[..i].contains(n) {
             bail!("backend `{n}` is named twice");

@@ -182,14 +182,13 @@ fn expectation(s: &Subject) -> String {
     )
 }
 
-fn versions(api: ContextApi) -> &'static str {
-    match api {
-        ContextApi::Core | ContextApi::Compat => {
-            "{{4, 6}, {4, 5}, {4, 3}, {4, 2}, {4, 1}, {4, 0}, {3, 3}, {3, 2}, {3, 1}, {3, 0}}"
-        }
-        ContextApi::Es3 => "{{3, 2}, {3, 1}, {3, 0}}",
-        ContextApi::Es2 => "{{2, 0}}",
-    }
+/// The versions the worker tries, highest first (`gl::egl::versions`), as a C initializer.
+fn versions(api: ContextApi) -> String {
+    let v: Vec<String> = shadowcheck_gl::egl::versions(api)
+        .iter()
+        .map(|(a, b)| format!("{{{a}, {b}}}"))
+        .collect();
+    format!("{{{}}}", v.join(", "))
 }
 
 fn context_fn(s: &Subject) -> String {

@@ -17,7 +17,7 @@ pub mod csource;
 pub mod report;
 mod tokens;
 
-use shadowcheck_gl::BackendName;
+use shadowcheck_gl::{BackendName, Driver};
 use shadowcheck_model::{ApiPath, Case, Expectation};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -110,6 +110,11 @@ pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subjec
     if let Some(why) = name.static_unavailability() {
         return Err(ReproError::BadBackend(why));
     }
+    if matches!(name.driver, Driver::Swiftshader | Driver::Native) {
+        return Err(ReproError::BadBackend(format!(
+            "{name}: repro writes programs for Mesa's drivers (llvmpipe, softpipe, zink, zink+swiftshader) on EGL surfaceless or OSMesa; SwiftShader's own GLES and a native EGL (EGL 1.4 pbuffer contexts) are not supported yet"
+        )));
+    }
     let (id, api) = parse_test_id(test)?;
     if !name.api.paths().contains(&api) {
         return Err(ReproError::PathNotOnBackend {
@@ -166,7 +171,7 @@ fn keys(paths: &[ApiPath]) -> String {
 
 /// The Debian packages the build needs (headers and link libraries) and those the run needs.
 pub fn packages(s: &Subject) -> (String, String) {
-    use shadowcheck_gl::{Driver, Platform};
+    use shadowcheck_gl::Platform;
     let dev = match (s.backend.platform, s.backend.api.is_es()) {
         (Platform::Osmesa, _) => "gcc libosmesa6-dev libgl-dev",
         (Platform::Egl, true) => "gcc libegl-dev libgles-dev",
@@ -176,8 +181,11 @@ pub fn packages(s: &Subject) -> (String, String) {
         Platform::Egl => vec!["libegl-mesa0", "libgl1-mesa-dri"],
         Platform::Osmesa => vec!["libosmesa6", "libgl1-mesa-dri"],
     };
-    if s.backend.driver == Driver::Zink {
-        run.push("mesa-vulkan-drivers");
+    match s.backend.driver {
+        Driver::Zink => run.push("mesa-vulkan-drivers"),
+        // SwiftShader's Vulkan ICD (VK_ICD_FILENAMES in the run line).
+        Driver::ZinkSwiftshader => run.push("chromium-common"),
+        _ => {}
     }
     (dev.to_string(), run.join(" "))
 }

@@ -36,6 +36,11 @@ pub fn unavailable(backend: &str, why: &str) {
 impl Session {
     /// Starts the worker; `None` when the backend is unavailable (after `unavailable`).
     pub fn start(backend: &str) -> Option<Session> {
+        Session::start_with_env(backend, &[])
+    }
+
+    /// [`Session::start`] with extra environment variables for the worker.
+    pub fn start_with_env(backend: &str, extra: &[(&str, &str)]) -> Option<Session> {
         let mut wc = match shadowcheck_runner::backend::gl::worker_command(backend) {
             Ok(wc) => wc,
             Err(e) => {
@@ -44,6 +49,8 @@ impl Session {
             }
         };
         wc.program = PathBuf::from(env!("CARGO_BIN_EXE_shadowcheck"));
+        wc.env
+            .extend(extra.iter().map(|(k, v)| (k.to_string(), v.to_string())));
         let mut child = wc
             .to_command()
             .stdin(Stdio::piped())

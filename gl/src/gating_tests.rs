@@ -1,0 +1,148 @@
+//! Contexts by capability: what a GL 2.1 compat or an OpenGL ES 3.0 context declares, and that a
+//! case needing more is Skip with its reason through [`Capabilities::support`] (never sent to the
+//! driver, so never a GL error counted as Fail).
+use super::declared_capabilities;
+use crate::names::{ContextApi, LookupForm};
+use crate::paths::GlInfo;
+use shadowcheck_model::*;
+use shadowcheck_protocol::Support;
+use std::collections::HashSet;
+
+fn info(api: ContextApi, version: (u32, u32), glsl: u32, exts: &[&str]) -> GlInfo {
+    GlInfo {
+        api,
+        es: api.is_es(),
+        compat: api == ContextApi::Compat,
+        version,
+        glsl,
+        renderer: "test".into(),
+        version_string: "test".into(),
+        extensions: exts.iter().map(|e| e.to_string()).collect::<HashSet<_>>(),
+        form: LookupForm::Auto,
+    }
+}
+
+fn case(spec: Spec, api: ApiPath, target: Target, format: Format) -> Case {
+    let layers = if target.is_cube() { 6 } else { 1 };
+    Case {
+        id: "t".into(),
+        spec,
+        api: vec![api],
+        texture: Texture {
+            target,
+            format,
+            base_level: 0,
+            levels: vec![Level {
+                width: 2,
+                height: 2,
+                layers,
+                depth: Texels::Unorm(vec![0; 4 * layers as usize]),
+                stencil: None,
+            }],
+        },
+        sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
+        lookup: Lookup {
+            coord: [0.5, 0.5, 0.5, 1.0],
+            layer: 0.0,
+            dref: 0.5,
+            projective: false,
+            lod: 0.0,
+            bias: 0.0,
+            offset: [0; 3],
+        },
+        expect: None,
+    }
+}
+
+fn skip_reason(s: Support) -> String {
+    match s {
+        Support::Skip(why) => why,
+        other => panic!("expected Skip, got {other:?}"),
+    }
+}
+
+#[test]
+fn es_3_0_skips_border_clamp_stencil_texturing_and_cube_map_arrays_with_the_reason() {
+    let es30 = declared_capabilities(&info(ContextApi::Es3, (3, 0), 300, &[]));
+    let plain = case(Spec::Gles32, ApiPath::Es300, Target::T2d, Format::D24);
+    assert!(matches!(es30.support(&plain), Support::Run { .. }));
+
+    let mut border = plain.clone();
+    border.sampler.wrap_s = Wrap::ClampToBorder;
+    assert!(skip_reason(es30.support(&border)).contains("border_clamp"));
+    let mut colour = plain.clone();
+    colour.sampler.border = [1.0, 0.0, 0.0, 0.0];
+    assert!(skip_reason(es30.support(&colour)).contains("TEXTURE_BORDER_COLOR"));
+    // wrap_r of a 2D texture is never set, so it needs nothing.
+    let mut unused = plain.clone();
+    unused.sampler.wrap_r = Wrap::ClampToBorder;
+    assert!(matches!(es30.support(&unused), Support::Run { .. }));
+
+    let mut stencil = case(Spec::Gles32, ApiPath::Es300, Target::T2d, Format::D24S8);
+    stencil.sampler.depth_stencil_mode = Some(DepthStencilMode::DepthComponent);
+    assert!(skip_reason(es30.support(&stencil)).contains("DEPTH_STENCIL_TEXTURE_MODE"));
+
+    let cube_array = case(Spec::Gles32, ApiPath::Es300, Target::CubeArray, Format::D24);
+    assert!(skip_reason(es30.support(&cube_array)).starts_with("target"));
+
+    // The same cases run on ES 3.2, and on ES 3.0 with the extensions that add the state.
+    let es32 = declared_capabilities(&info(ContextApi::Es3, (3, 2), 320, &[]));
+    for c in [&border, &colour, &stencil, &cube_array] {
+        assert!(matches!(es32.support(c), Support::Run { .. }), "{c:?}");
+    }
+    let es30_ext = declared_capabilities(&info(
+        ContextApi::Es3,
+        (3, 0),
+        300,
+        &[
+            "GL_OES_texture_border_clamp",
+            "GL_OES_texture_cube_map_array",
+        ],
+    ));
+    for c in [&border, &colour, &cube_array] {
+        assert!(matches!(es30_ext.support(c), Support::Run { .. }), "{c:?}");
+    }
+    assert!(matches!(es30_ext.support(&stencil), Support::Skip(_)));
+}
+
+#[test]
+fn gl_2_1_compat_declares_targets_by_extension_and_leaves_glsl_1_30_out() {
+    let bare = info(ContextApi::Compat, (2, 1), 120, &[]);
+    let caps = declared_capabilities(&bare);
+    let c = case(Spec::Gl46, ApiPath::Glsl120, Target::T2dArray, Format::D24);
+    assert!(skip_reason(caps.support(&c)).starts_with("target"));
+    let rect = case(
+        Spec::Gl46,
+        ApiPath::FixedFunction,
+        Target::Rect,
+        Format::D24,
+    );
+    assert!(matches!(caps.support(&rect), Support::Skip(_)));
+    assert!(!bare.paths().contains(&ApiPath::Glsl130));
+    assert!(bare.paths().contains(&ApiPath::Glsl120));
+    assert!(bare.paths().contains(&ApiPath::FixedFunction));
+
+    // zink on SwiftShader's GL 2.1 context: the extensions give arrays, rectangles, cube-map arrays
+    // and stencil texturing (what its GL 2.1 context lists, Mesa 22.3.6).
+    let zss = info(
+        ContextApi::Compat,
+        (2, 1),
+        120,
+        &[
+            "GL_EXT_texture_array",
+            "GL_ARB_texture_rectangle",
+            "GL_ARB_texture_cube_map_array",
+            "GL_ARB_stencil_texturing",
+        ],
+    );
+    let caps = declared_capabilities(&zss);
+    assert!(matches!(caps.support(&c), Support::Run { .. }));
+    assert!(matches!(caps.support(&rect), Support::Run { .. }));
+    let mut stencil = case(Spec::Gl46, ApiPath::Glsl120, Target::T2d, Format::D24S8);
+    stencil.sampler.depth_stencil_mode = Some(DepthStencilMode::DepthComponent);
+    assert!(matches!(caps.support(&stencil), Support::Run { .. }));
+    assert!(matches!(
+        declared_capabilities(&bare).support(&stencil),
+        Support::Skip(_)
+    ));
+}
