@@ -14,6 +14,7 @@ pub mod mutants;
 pub mod outdir;
 pub mod records;
 pub mod report;
+pub mod repro;
 pub mod run;
 pub mod schedule;
 pub mod shard;

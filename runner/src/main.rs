@@ -42,6 +42,15 @@ enum Command {
     /// over every backend x API path. Reads results.jsonl (the last record of a test wins),
     /// failures.csv and report.md of each run. Exit 0 when written, 96 on bad input.
     Summarize(cmd::summarize::Args),
+    /// Write a standalone C reproducer (repro.c, build.sh) and a bug report (REPORT.md) for a test
+    /// that fails on a GL backend, or one per failure class of a results directory.
+    ///
+    /// `--backend B --case '<case id>@<api>'`: repro.c creates the worker's context, texture,
+    /// sampler state and lookup, draws once, prints expected (from the oracle) and observed, and
+    /// exits 1 when the observation is outside the accepted set. The command builds and runs it
+    /// here (gcc and the GL dev packages needed), and writes REPORT.md only for a Fail. Exit 0
+    /// written, 1 the test is not a Fail here (no report; --allow-pass: 0), 96 bad input or setup.
+    Repro(cmd::repro::Args),
     /// (internal) A GL worker process speaking runner/PROTOCOL.md on stdin/stdout.
     #[command(hide = true)]
     GlWorker(cmd::gl_worker::Args),
@@ -73,6 +82,7 @@ fn main() -> std::process::ExitCode {
         Command::Mutants(a) => cmd::mutants::main(a),
         Command::Report(a) => cmd::report::main(a),
         Command::Summarize(a) => cmd::summarize::main(a),
+        Command::Repro(a) => cmd::repro::main(a),
         Command::GlWorker(a) => cmd::gl_worker::main(a),
         Command::WebglWorker(a) => cmd::webgl_worker::main(a),
         Command::MockWorker(a) => cmd::mock_worker::main(a),

@@ -7,6 +7,7 @@ pub mod merge;
 pub mod mock_worker;
 pub mod mutants;
 pub mod report;
+pub mod repro;
 pub mod run;
 pub mod summarize;
 pub mod webgl_worker;

@@ -1,0 +1,506 @@
+//! The text of `repro.c`: one self-contained C program that does for one (case, API path) what the
+//! GL worker (shadowcheck-gl) does, with nothing of shadowcheck linked in.
+//!
+//! What it mirrors, and from where: the context (`gl/src/context.rs`: EGL surfaceless or OSMesa,
+//! the same API and versions tried highest first), the texture (`texture.rs`: the bytes
+//! `texture::level_bytes` uploads, the transfer of `texture::transfer_for`, the sampler state in
+//! `set_state`'s order), the lookup (`paths::plan_with` gives the shader key and the uniform
+//! values; `shaders::glsl` / `shaders::arbfp` give the program text, the same functions the worker
+//! compiles), and one draw into a 1x1 viewport of an RGBA32F framebuffer cleared to -1
+//! (`draw.rs`). One difference: the worker draws `textureLod`/`textureGrad` lookups of core and
+//! ES contexts batched, reading P, the gradients and the LOD from a parameter texture; the
+//! reproducer passes the same values as uniforms (the shader key and the lookup call are the same).
+
+use super::tokens::Tokens;
+use super::Subject;
+use shadowcheck_gl::paths::{self, GlInfo, LodForm, Plan, SamplerKind};
+use shadowcheck_gl::{shaders, texture, ContextApi, Platform};
+use shadowcheck_model::{Acceptance, ApiPath, Channel, Format, Profile, Target};
+use std::fmt::Write;
+
+const GL_DEPTH_TEXTURE_MODE: u32 = 0x884B;
+const GL_DEPTH_STENCIL_TEXTURE_MODE: u32 = 0x90EA;
+const GL_TEXTURE_COMPARE_FAIL_VALUE_ARB: u32 = 0x80BF;
+
+/// A C `float` literal that reads back as exactly `v`.
+pub(super) fn cf(v: f32) -> String {
+    if v.is_nan() {
+        "NAN".into()
+    } else if v.is_infinite() {
+        if v > 0.0 { "INFINITY" } else { "-INFINITY" }.into()
+    } else {
+        format!("{v:?}f")
+    }
+}
+
+/// A C `double` literal that reads back as exactly `v`.
+fn cd(v: f64) -> String {
+    if v.is_nan() {
+        "NAN".into()
+    } else if v.is_infinite() {
+        if v > 0.0 { "INFINITY" } else { "-INFINITY" }.into()
+    } else {
+        format!("{v:?}")
+    }
+}
+
+/// A C string literal, one source line per line.
+fn cstr(s: &str, indent: &str) -> String {
+    let esc = |l: &str| l.replace('\\', "\\\\").replace('"', "\\\"");
+    let lines: Vec<String> = s
+        .split_inclusive('\n')
+        .map(|l| format!("{indent}\"{}\"", esc(l).replace('\n', "\\n")))
+        .collect();
+    if lines.is_empty() {
+        "\"\"".into()
+    } else {
+        lines.join("\n")
+    }
+}
+
+fn intervals(a: Option<&Acceptance>) -> (String, usize) {
+    let v: Vec<String> = a
+        .map(|a| {
+            a.0.iter()
+                .map(|i| format!("{{{}, {}}}", cd(i.lo), cd(i.hi)))
+                .collect()
+        })
+        .unwrap_or_default();
+    let n = v.len();
+    // C has no empty initializer list: an empty set is one interval nothing lies in.
+    let body = if v.is_empty() {
+        "{1.0, 0.0}".to_string()
+    } else {
+        v.join(", ")
+    };
+    (format!("{{{body}}}"), n)
+}
+
+fn layout_char(c: Channel) -> char {
+    match c {
+        Channel::R => 'r',
+        Channel::Zero => '0',
+        Channel::One => '1',
+        Channel::Unused => '-',
+        Channel::ROrZero => 'z',
+    }
+}
+
+/// The build command (one line) for this platform and API.
+pub fn build_line(s: &Subject) -> String {
+    let libs = match (s.backend.platform, s.backend.api.is_es()) {
+        (Platform::Osmesa, _) => "-lOSMesa",
+        (Platform::Egl, true) => "-lEGL -lGLESv2",
+        (Platform::Egl, false) => "-lEGL -lGL",
+    };
+    format!("cc -std=c99 -O1 -Wall -o repro repro.c {libs} -lm")
+}
+
+/// The environment that picks the driver, as `NAME=value` words (the worker's, `BackendName::env`).
+pub fn env_words(s: &Subject) -> String {
+    s.backend
+        .env()
+        .iter()
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The program text, or why this path cannot be planned for this case (the worker would Skip it).
+pub fn program(s: &Subject) -> Result<String, String> {
+    let plan = paths::plan_with(s.api, &s.case, s.backend.form)?;
+    let mut tok = Tokens::default();
+    let mut body = String::new();
+    let es = s.backend.api.is_es();
+    let compat = s.backend.api == ContextApi::Compat;
+    let _ = write!(body, "{}", expectation(s));
+    let _ = write!(body, "{}", context_fn(s));
+    let _ = write!(body, "{}", texture_fn(s, compat, &mut tok)?);
+    let _ = write!(body, "{}", draw_fn(s, &plan, &mut tok));
+    let _ = write!(body, "{MAIN}");
+    let includes = match (s.backend.platform, es) {
+        (_, true) => "#include <EGL/egl.h>\n#include <EGL/eglext.h>\n#include <GLES3/gl32.h>\n#include <GLES2/gl2ext.h>\n",
+        (Platform::Egl, false) => "#include <EGL/egl.h>\n#include <EGL/eglext.h>\n#include <GL/gl.h>\n#include <GL/glext.h>\n",
+        (Platform::Osmesa, false) => "#include <GL/osmesa.h>\n#include <GL/gl.h>\n#include <GL/glext.h>\n",
+    };
+    let run = format!("{} ./repro", env_words(s));
+    Ok(format!(
+        "/* shadowcheck reproducer: {test} on {backend}\n *\n * Build: {build}\n * Run:   {run}\n *\n * Generated by `shadowcheck repro`: what shadowcheck's GL worker does for this test, with no\n * shadowcheck code.\n * Context: {ctx}.\n * Texture: the integers the worker uploads, the same sampler state.\n * Lookup: {how}; one draw into a 1x1 viewport of an RGBA32F framebuffer.\n * Prints the expected result (spec value and accepted set, computed by\n * shadowcheck's oracle, written here as constants) and the observed RGBA; exits 1 when the\n * observation is outside the accepted set, 0 when inside, 2 when setup fails.\n */\n#define GL_GLEXT_PROTOTYPES 1\n{includes}#include <math.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n{defines}\n{body}",
+        test = s.test(),
+        backend = s.backend,
+        build = build_line(s),
+        ctx = context_words(s),
+        how = plan.note,
+        defines = tok.defines(),
+    ))
+}
+
+fn context_words(s: &Subject) -> String {
+    let platform = match s.backend.platform {
+        Platform::Egl => "EGL, EGL_PLATFORM_SURFACELESS_MESA",
+        Platform::Osmesa => "OSMesa",
+    };
+    let api = match s.backend.api {
+        ContextApi::Core => "desktop GL core profile",
+        ContextApi::Compat => "desktop GL compatibility profile",
+        ContextApi::Es3 | ContextApi::Es2 => "OpenGL ES",
+    };
+    format!("{platform}, {api}, highest version first")
+}
+
+fn expectation(s: &Subject) -> String {
+    let e = &s.expect;
+    let (quality, nq) = intervals(e.accept.get(&Profile::loosest()));
+    let (strict, ns) = intervals(e.accept.get(&Profile::strictest()));
+    let layout: String = e
+        .layout
+        .get(&s.api)
+        .map(|l| {
+            l.iter()
+                .map(|c| format!("'{}'", layout_char(*c)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        })
+        .unwrap_or_else(|| "'-', '-', '-', '-'".into());
+    let spec_value = e
+        .spec_value
+        .map(|v| format!("r = {v}"))
+        .unwrap_or_else(|| "no single value".into());
+    let show = |p: Profile| {
+        e.accept
+            .get(&p)
+            .map(|a| a.to_string())
+            .unwrap_or_else(|| "(none)".into())
+    };
+    format!(
+        "/* Expected, from shadowcheck's oracle (`shadowcheck explain` shows the derivation). The accepted\n * set is what a conforming implementation may return for r (the `{q}` tier: outside it a \"shall\"\n * is violated); inside the `{st}` tier too is a plain pass. Layout per channel: 'r' the result,\n * '0'/'1' exactly that, 'z' r or 0, '-' not produced by this path. */\nstatic const char *TEST = \"{test}\";\nstatic const char *SPEC_VALUE = \"{spec_value}\";\nstatic const char *ACCEPTED_TEXT = \"{qt}\";\nstatic const char *STRICT_TEXT = \"{stt}\";\nstatic const double ACCEPTED[][2] = {quality};\nstatic const int N_ACCEPTED = {nq};\nstatic const double STRICT[][2] = {strict};\nstatic const int N_STRICT = {ns};\nstatic const char LAYOUT[4] = {{{layout}}};\n\n",
+        q = Profile::loosest(),
+        st = Profile::strictest(),
+        test = s.test(),
+        qt = show(Profile::loosest()).replace('"', "'"),
+        stt = show(Profile::strictest()).replace('"', "'"),
+    )
+}
+
+/// The versions the worker tries, highest first (`gl::egl::versions`), as a C initializer.
+fn versions(api: ContextApi) -> String {
+    let v: Vec<String> = shadowcheck_gl::egl::versions(api)
+        .iter()
+        .map(|(a, b)| format!("{{{a}, {b}}}"))
+        .collect();
+    format!("{{{}}}", v.join(", "))
+}
+
+fn context_fn(s: &Subject) -> String {
+    let b = s.backend;
+    let vs = versions(b.api);
+    let create = match b.platform {
+        Platform::Egl => {
+            let (bind, profile) = match b.api {
+                ContextApi::Core => ("EGL_OPENGL_API", "EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, "),
+                ContextApi::Compat => ("EGL_OPENGL_API", "EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, "),
+                ContextApi::Es3 | ContextApi::Es2 => ("EGL_OPENGL_ES_API", ""),
+            };
+            format!(
+                "    EGLDisplay dpy = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);\n    if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, NULL, NULL)) die(\"eglInitialize (surfaceless)\");\n    if (!eglBindAPI({bind})) die(\"eglBindAPI\");\n    static const int versions[][2] = {vs};\n    for (unsigned i = 0; i < sizeof versions / sizeof versions[0]; i++) {{\n        const EGLint attrs[] = {{EGL_CONTEXT_MAJOR_VERSION, versions[i][0], EGL_CONTEXT_MINOR_VERSION, versions[i][1], {profile}EGL_NONE}};\n        EGLContext ctx = eglCreateContext(dpy, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attrs);\n        if (ctx == EGL_NO_CONTEXT) continue;\n        if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) die(\"eglMakeCurrent (no surface)\");\n        printf(\"context:   asked for %d.%d\\n\", versions[i][0], versions[i][1]);\n        return;\n    }}\n    die(\"eglCreateContext: no version of this context kind\");\n"
+            )
+        }
+        Platform::Osmesa => {
+            let profile = if b.api == ContextApi::Core {
+                "OSMESA_CORE_PROFILE"
+            } else {
+                "OSMESA_COMPAT_PROFILE"
+            };
+            format!(
+                "    static unsigned char buffer[16 * 16 * 4]; /* OSMesa's colour buffer; the draw goes to an FBO */\n    static const int versions[][2] = {vs};\n    for (unsigned i = 0; i < sizeof versions / sizeof versions[0]; i++) {{\n        const int attrs[] = {{OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0, OSMESA_ACCUM_BITS, 0,\n                             OSMESA_PROFILE, {profile}, OSMESA_CONTEXT_MAJOR_VERSION, versions[i][0],\n                             OSMESA_CONTEXT_MINOR_VERSION, versions[i][1], 0}};\n        OSMesaContext ctx = OSMesaCreateContextAttribs(attrs, NULL);\n        if (!ctx) continue;\n        if (!OSMesaMakeCurrent(ctx, buffer, GL_UNSIGNED_BYTE, 16, 16)) die(\"OSMesaMakeCurrent\");\n        printf(\"context:   asked for %d.%d\\n\", versions[i][0], versions[i][1]);\n        return;\n    }}\n    die(\"OSMesaCreateContextAttribs returned NULL for every version\");\n"
+            )
+        }
+    };
+    format!(
+        "static void die(const char *what) {{\n    fprintf(stderr, \"setup failed: %s\\n\", what);\n    exit(2);\n}}\n\nstatic void check(const char *what) {{\n    GLenum e = glGetError();\n    if (e != GL_NO_ERROR) {{\n        fprintf(stderr, \"setup failed: %s raised GL error 0x%04X\\n\", what, e);\n        exit(2);\n    }}\n}}\n\n/* The context, as shadowcheck's worker creates it (gl/src/context.rs). */\nstatic void make_context(void) {{\n{create}}}\n\n"
+    )
+}
+
+/// The C element type of an upload (`texture::transfer_for`'s type) and the values of `bytes`.
+fn texel_array(ty: u32, bytes: &[u8]) -> (&'static str, Vec<String>) {
+    let words = |n: usize| bytes.chunks_exact(n);
+    match ty {
+        glow::UNSIGNED_BYTE => ("GLubyte", bytes.iter().map(|b| b.to_string()).collect()),
+        glow::UNSIGNED_SHORT => (
+            "GLushort",
+            words(2)
+                .map(|c| u16::from_ne_bytes([c[0], c[1]]).to_string())
+                .collect(),
+        ),
+        glow::FLOAT => (
+            "GLfloat",
+            words(4)
+                .map(|c| cf(f32::from_ne_bytes([c[0], c[1], c[2], c[3]])))
+                .collect(),
+        ),
+        // UNSIGNED_INT, UNSIGNED_INT_24_8 and FLOAT_32_UNSIGNED_INT_24_8_REV (float bits, stencil).
+        _ => (
+            "GLuint",
+            words(4)
+                .map(|c| format!("{}u", u32::from_ne_bytes([c[0], c[1], c[2], c[3]])))
+                .collect(),
+        ),
+    }
+}
+
+fn texture_fn(s: &Subject, compat: bool, tok: &mut Tokens) -> Result<String, String> {
+    let t = &s.case.texture;
+    let (ifmt, fmt, ty, bpt) = texture::transfer_for(&s.case);
+    let target = tok.name(t.target.gl());
+    let (ifmt, fmt_n, ty_n) = (tok.name(ifmt as u32), tok.name(fmt), tok.name(ty));
+    let mut data = String::new();
+    let mut up = String::new();
+    for (i, lvl) in t.levels.iter().enumerate() {
+        let level = t.base_level as usize + i;
+        let bytes = texture::level_bytes(t.format, lvl).map_err(|e| e.to_string())?;
+        let (cty, vals) = texel_array(ty, &bytes);
+        let rows: Vec<String> = vals
+            .chunks(8)
+            .map(|c| format!("    {}", c.join(", ")))
+            .collect();
+        let note = match t.format {
+            Format::D24 => {
+                " (24-bit values c as 32-bit unorm (c << 8) | low byte: every conversion gives c)"
+            }
+            Format::D24S8 => " ((depth << 8) | stencil)",
+            Format::D32fS8 => " (float bits, then stencil)",
+            _ => "",
+        };
+        let _ = writeln!(
+            data,
+            "/* level {level}: {}x{}x{}{note} */\nstatic const {cty} LEVEL{level}[] = {{\n{}\n}};",
+            lvl.width,
+            lvl.height,
+            lvl.layers,
+            rows.join(",\n")
+        );
+        let (w, h, l) = (lvl.width, lvl.height, lvl.layers);
+        let _ = match t.target {
+            Target::T1d => writeln!(up, "    glTexImage1D({target}, {level}, {ifmt}, {w}, 0, {fmt_n}, {ty_n}, LEVEL{level});"),
+            Target::T2d | Target::Rect => writeln!(up, "    glTexImage2D({target}, {level}, {ifmt}, {w}, {h}, 0, {fmt_n}, {ty_n}, LEVEL{level});"),
+            Target::T1dArray => writeln!(up, "    glTexImage2D({target}, {level}, {ifmt}, {w}, {l}, 0, {fmt_n}, {ty_n}, LEVEL{level});"),
+            Target::T2dArray | Target::CubeArray => writeln!(up, "    glTexImage3D({target}, {level}, {ifmt}, {w}, {h}, {l}, 0, {fmt_n}, {ty_n}, LEVEL{level});"),
+            Target::Cube => {
+                let elem = bpt / if ty == glow::UNSIGNED_SHORT { 2 } else if ty == glow::UNSIGNED_BYTE { 1 } else { 4 };
+                let per_face = (w * h) as usize * elem;
+                for f in 0..6u32 {
+                    let face = tok.name(glow::TEXTURE_CUBE_MAP_POSITIVE_X + f);
+                    let _ = writeln!(up, "    glTexImage2D({face}, {level}, {ifmt}, {w}, {h}, 0, {fmt_n}, {ty_n}, LEVEL{level} + {});", f as usize * per_face);
+                }
+                Ok(())
+            }
+        };
+    }
+    let sm = &s.case.sampler;
+    let mut st = String::new();
+    let pi = |st: &mut String, tok: &mut Tokens, p: u32, v: u32| {
+        let (p, v) = (tok.name(p), tok.name(v));
+        let _ = writeln!(st, "    glTexParameteri({target}, {p}, {v});");
+    };
+    let pf = |st: &mut String, tok: &mut Tokens, p: u32, v: f32| {
+        let p = tok.name(p);
+        let _ = writeln!(st, "    glTexParameterf({target}, {p}, {});", cf(v));
+    };
+    // The order of texture.rs `set_state`.
+    if t.base_level != 0 {
+        let p = tok.name(glow::TEXTURE_BASE_LEVEL);
+        let _ = writeln!(st, "    glTexParameteri({target}, {p}, {});", t.base_level);
+    }
+    if let Some(m) = sm.max_level {
+        let p = tok.name(glow::TEXTURE_MAX_LEVEL);
+        let _ = writeln!(st, "    glTexParameteri({target}, {p}, {m});");
+    }
+    pi(&mut st, tok, glow::TEXTURE_MIN_FILTER, sm.min_filter.gl());
+    pi(&mut st, tok, glow::TEXTURE_MAG_FILTER, sm.mag_filter.gl());
+    pi(&mut st, tok, glow::TEXTURE_WRAP_S, sm.wrap_s.gl());
+    if t.target.dims() == 2 {
+        pi(&mut st, tok, glow::TEXTURE_WRAP_T, sm.wrap_t.gl());
+    }
+    if t.target.is_cube() {
+        pi(&mut st, tok, glow::TEXTURE_WRAP_R, sm.wrap_r.gl());
+    }
+    if sm.border != [0.0; 4] {
+        let p = tok.name(glow::TEXTURE_BORDER_COLOR);
+        let b: Vec<String> = sm.border.iter().map(|v| cf(*v)).collect();
+        let _ = writeln!(
+            st,
+            "    {{ static const GLfloat border[4] = {{{}}}; glTexParameterfv({target}, {p}, border); }}",
+            b.join(", ")
+        );
+    }
+    if sm.min_lod != -1000.0 {
+        pf(&mut st, tok, glow::TEXTURE_MIN_LOD, sm.min_lod);
+    }
+    if sm.max_lod != 1000.0 {
+        pf(&mut st, tok, glow::TEXTURE_MAX_LOD, sm.max_lod);
+    }
+    if sm.lod_bias != 0.0 {
+        pf(&mut st, tok, glow::TEXTURE_LOD_BIAS, sm.lod_bias);
+    }
+    pi(
+        &mut st,
+        tok,
+        glow::TEXTURE_COMPARE_MODE,
+        sm.compare_mode.gl(),
+    );
+    pi(
+        &mut st,
+        tok,
+        glow::TEXTURE_COMPARE_FUNC,
+        sm.compare_func.gl(),
+    );
+    if let (Some(m), true) = (sm.depth_texture_mode, compat) {
+        pi(&mut st, tok, GL_DEPTH_TEXTURE_MODE, m.gl());
+    }
+    if let Some(m) = sm.depth_stencil_mode {
+        pi(&mut st, tok, GL_DEPTH_STENCIL_TEXTURE_MODE, m.gl());
+    }
+    if let Some(v) = sm.fail_value {
+        pf(&mut st, tok, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, v);
+    }
+    Ok(format!(
+        "/* The texture ({fmt} {tgt}): the integers shadowcheck's worker uploads (gl/src/texture.rs). */\n{data}\nstatic void make_texture(void) {{\n    GLuint tex;\n    glGenTextures(1, &tex);\n    glActiveTexture(GL_TEXTURE0);\n    glBindTexture({target}, tex);\n{up}    check(\"texture upload (glTexImage*)\");\n{st}    check(\"sampler state (glTexParameter*)\");\n}}\n\n",
+        fmt = t.format,
+        tgt = t.target,
+    ))
+}
+
+fn vec4(v: [f32; 4]) -> String {
+    format!("{}, {}, {}, {}", cf(v[0]), cf(v[1]), cf(v[2]), cf(v[3]))
+}
+
+fn draw_fn(s: &Subject, plan: &Plan, tok: &mut Tokens) -> String {
+    let key = &plan.key;
+    let centre = [0.5f32, 0.5];
+    let mut out = format!(
+        "/* The lookup: {path} path, {kind:?} sampler, {how}. P = ({p}), x (LOD / bias / compare value) = {x},\n * dx = ({dx}), dy = ({dy}). */\n",
+        path = s.api,
+        kind = key.kind,
+        how = plan.note,
+        p = vec4(plan.p),
+        x = cf(plan.x),
+        dx = vec4(plan.dx),
+        dy = vec4(plan.dy),
+    );
+    match key.path {
+        ApiPath::FixedFunction => {
+            let target = tok.name(s.case.texture.target.gl());
+            let tc = match s.case.texture.target {
+                Target::Cube => [plan.p[0], plan.p[1], plan.p[2], 1.0],
+                _ => plan.p,
+            };
+            let body = if let LodForm::Implicit(bias) = key.form {
+                // draw.rs: vertex (X, Y) lies (X/2, Y/2) pixels from the pixel centre.
+                let at = |ox: f32, oy: f32| -> [f32; 4] {
+                    let mut v = tc;
+                    for (i, c) in v.iter_mut().enumerate() {
+                        *c += ox * plan.dx[i] + oy * plan.dy[i];
+                    }
+                    v
+                };
+                let b = if bias { plan.x } else { 0.0 };
+                let mut t = format!("    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, {});\n    glBegin(GL_TRIANGLES);\n", cf(b));
+                for (v, (x, y)) in [at(-0.5, -0.5), at(1.5, -0.5), at(-0.5, 1.5)].iter().zip([
+                    (-1, -1),
+                    (3, -1),
+                    (-1, 3),
+                ]) {
+                    let _ = writeln!(
+                        t,
+                        "    glTexCoord4f({}); glVertex2f({x}.0f, {y}.0f);",
+                        vec4(*v)
+                    );
+                }
+                t + "    glEnd();\n    glTexEnvf(GL_TEXTURE_FILTER_CONTROL, GL_TEXTURE_LOD_BIAS, 0.0f);\n"
+            } else {
+                format!("    glTexCoord4f({}); /* constant coordinates */\n    glBegin(GL_TRIANGLES);\n    glVertex2f(-1.0f, -1.0f); glVertex2f(3.0f, -1.0f); glVertex2f(-1.0f, 3.0f);\n    glEnd();\n", vec4(tc))
+            };
+            let _ = write!(
+                out,
+                "static void draw(int glsl) {{\n    (void)glsl;\n    glUseProgram(0);\n    glEnable({target});\n    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);\n    glColor4f(0.0f, 0.0f, 0.0f, 1.0f); /* REPLACE takes what the texture lacks from here */\n{body}    glDisable({target});\n    check(\"fixed-function draw\");\n}}\n\n"
+            );
+        }
+        ApiPath::ArbFp => {
+            let src = shaders::arbfp(key);
+            let _ = write!(
+                out,
+                "static const char *PROGRAM =\n{src};\n\nstatic void draw(int glsl) {{\n    (void)glsl;\n    GLuint id;\n    glGenProgramsARB(1, &id);\n    glBindProgramARB(GL_FRAGMENT_PROGRAM_ARB, id);\n    glProgramStringARB(GL_FRAGMENT_PROGRAM_ARB, GL_PROGRAM_FORMAT_ASCII_ARB, (GLsizei)strlen(PROGRAM), PROGRAM);\n    GLint pos = 0;\n    glGetIntegerv(GL_PROGRAM_ERROR_POSITION_ARB, &pos);\n    if (pos != -1) {{\n        fprintf(stderr, \"ARB program rejected at %d: %s\\n\", pos, glGetString(GL_PROGRAM_ERROR_STRING_ARB));\n        exit(2);\n    }}\n    glUseProgram(0);\n    glEnable(GL_FRAGMENT_PROGRAM_ARB);\n    glProgramLocalParameter4fARB(GL_FRAGMENT_PROGRAM_ARB, 0, {p});\n    glProgramLocalParameter4fARB(GL_FRAGMENT_PROGRAM_ARB, 1, {dx});\n    glProgramLocalParameter4fARB(GL_FRAGMENT_PROGRAM_ARB, 2, {dy});\n    glProgramLocalParameter4fARB(GL_FRAGMENT_PROGRAM_ARB, 3, {cx}, {cy}, 0.0f, 0.0f);\n    glBegin(GL_TRIANGLES);\n    glVertex2f(-1.0f, -1.0f); glVertex2f(3.0f, -1.0f); glVertex2f(-1.0f, 3.0f);\n    glEnd();\n    glDisable(GL_FRAGMENT_PROGRAM_ARB);\n    check(\"ARB fragment program draw\");\n}}\n\n",
+                src = cstr(&src, "    "),
+                p = vec4(plan.p),
+                dx = vec4(plan.dx),
+                dy = vec4(plan.dy),
+                cx = cf(centre[0]),
+                cy = cf(centre[1]),
+            );
+        }
+        _ => {
+            let _ = write!(out, "{}", glsl_draw(s, plan, centre));
+        }
+    }
+    out
+}
+
+/// The GLSL program variants: `shaders::glsl` writes a different `#version` line above GLSL 4.00
+/// (desktop) and 3.20 (ES); the program picks the first whose minimum the context reaches.
+fn glsl_variants(s: &Subject, plan: &Plan) -> Vec<(u32, String, String)> {
+    let es = s.backend.api.is_es();
+    let info = |glsl: u32| GlInfo {
+        api: s.backend.api,
+        es,
+        compat: s.backend.api == ContextApi::Compat,
+        version: (0, 0),
+        glsl,
+        renderer: String::new(),
+        version_string: String::new(),
+        extensions: Default::default(),
+        form: s.backend.form,
+    };
+    let (hi, lo) = if es { (320, 300) } else { (400, 330) };
+    let (vh, fh) = shaders::glsl(&info(hi), &plan.key, None);
+    let (vl, fl) = shaders::glsl(&info(lo), &plan.key, None);
+    if (&vh, &fh) == (&vl, &fl) {
+        vec![(0, vh, fh)]
+    } else {
+        vec![(hi, vh, fh), (0, vl, fl)]
+    }
+}
+
+fn glsl_draw(s: &Subject, plan: &Plan, centre: [f32; 2]) -> String {
+    let variants = glsl_variants(s, plan);
+    let mut table = String::new();
+    for (min, vs, fs) in &variants {
+        let _ = writeln!(
+            table,
+            "    {{{min},\n{},\n{}}},",
+            cstr(vs, "     "),
+            cstr(fs, "     ")
+        );
+    }
+    let uint = if plan.key.kind == SamplerKind::Uint {
+        " (usampler: the stencil index)"
+    } else {
+        ""
+    };
+    format!(
+        "/* The shaders shadowcheck's worker compiles for this lookup (gl/src/shaders.rs){uint}:\n * {{minimum GLSL version x 100, vertex, fragment}}. */\nstatic const struct {{ int min_glsl; const char *vs, *fs; }} PROGRAMS[] = {{\n{table}}};\n\nstatic GLuint shader(GLenum type, const char *src) {{\n    GLuint sh = glCreateShader(type);\n    glShaderSource(sh, 1, &src, NULL);\n    glCompileShader(sh);\n    GLint ok = 0;\n    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);\n    if (!ok) {{\n        char log[2048];\n        glGetShaderInfoLog(sh, sizeof log, NULL, log);\n        fprintf(stderr, \"shader compile failed: %s\\n%s\\n\", log, src);\n        exit(2);\n    }}\n    return sh;\n}}\n\nstatic void draw(int glsl) {{\n    unsigned v = 0;\n    while (v + 1 < sizeof PROGRAMS / sizeof PROGRAMS[0] && PROGRAMS[v].min_glsl > glsl) v++;\n    GLuint p = glCreateProgram();\n    glAttachShader(p, shader(GL_VERTEX_SHADER, PROGRAMS[v].vs));\n    glAttachShader(p, shader(GL_FRAGMENT_SHADER, PROGRAMS[v].fs));\n    glBindAttribLocation(p, 0, \"a_pos\");\n    glLinkProgram(p);\n    GLint ok = 0;\n    glGetProgramiv(p, GL_LINK_STATUS, &ok);\n    if (!ok) die(\"program link\");\n    glUseProgram(p);\n    glUniform1i(glGetUniformLocation(p, \"u_tex\"), 0);\n    glUniform4f(glGetUniformLocation(p, \"u_p\"), {p});\n    glUniform1f(glGetUniformLocation(p, \"u_x\"), {x});\n    glUniform4f(glGetUniformLocation(p, \"u_dx\"), {dx});\n    glUniform4f(glGetUniformLocation(p, \"u_dy\"), {dy});\n    glUniform2f(glGetUniformLocation(p, \"u_c\"), {cx}, {cy});\n    glDrawArrays(GL_TRIANGLES, 0, 3);\n    check(\"GLSL draw\");\n}}\n\n",
+        p = vec4(plan.p),
+        x = cf(plan.x),
+        dx = vec4(plan.dx),
+        dy = vec4(plan.dy),
+        cx = cf(centre[0]),
+        cy = cf(centre[1]),
+    )
+}
+
+/// `main` and its helpers: context, framebuffer (as `draw::Renderer::new`), texture, one draw,
+/// read-back, verdict. A fragment of C, not a program of its own.
+const MAIN: &str = include_str!("main.c");
+
+#[cfg(test)]
+#[path = "csource_tests.rs"]
+mod tests;

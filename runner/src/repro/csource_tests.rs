@@ -1,0 +1,80 @@
+//! Unit tests of the C program text (no GL, no compiler).
+
+use super::*;
+use shadowcheck_model::*;
+
+/// GL 4.6 core, 2x2 D16 (stored 0, 21845, 43690, 65535), NEAREST at the centre of texel (1,0)
+/// (Dt = 1/3), LEQUAL, Dref 0.5: Table 8.23 gives r = 0 (0.5 <= 1/3 is false).
+fn subject() -> Subject {
+    let case = Case {
+        id: "gl46/2d/d16/nearest/lequal/unit".into(),
+        spec: Spec::Gl46,
+        api: vec![ApiPath::GlslCore],
+        texture: Texture {
+            target: Target::T2d,
+            format: Format::D16,
+            base_level: 0,
+            levels: vec![Level {
+                width: 2,
+                height: 2,
+                layers: 1,
+                depth: Texels::Unorm(vec![0, 21845, 43690, 65535]),
+                stencil: None,
+            }],
+        },
+        sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
+        lookup: Lookup {
+            coord: [0.75, 0.25, 0.0, 1.0],
+            layer: 0.0,
+            dref: 0.5,
+            projective: false,
+            lod: 0.0,
+            bias: 0.0,
+            offset: [0; 3],
+        },
+        expect: None,
+    };
+    let ev = shadowcheck_oracle::evaluate(&case).unwrap();
+    Subject {
+        backend: "egl:llvmpipe:core".parse().unwrap(),
+        case,
+        api: ApiPath::GlslCore,
+        expect: ev.expect,
+        steps: ev.steps,
+        explain: String::new(),
+        fixture: "unit.json".into(),
+    }
+}
+
+#[test]
+fn program_carries_the_stored_integers_the_state_the_lookup_and_the_oracle_set() {
+    let c = program(&subject()).unwrap();
+    for want in [
+        "static const GLushort LEVEL0[] = {\n    0, 21845, 43690, 65535\n};",
+        "glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, 2, 2, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, LEVEL0);",
+        "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);",
+        "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);",
+        "textureLod(u_tex, p.xyz, u_x)",
+        "glUniform4f(glGetUniformLocation(p, \"u_p\"), 0.75f, 0.25f, 0.5f, 1.0f);",
+        "static const double ACCEPTED[][2] = {{0.0, 0.0}};",
+        "static const char LAYOUT[4] = {'r', '-', '-', '-'};",
+        "EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT",
+        "#version 400 core",
+        "#version 330 core",
+    ] {
+        assert!(c.contains(want), "missing `{want}` in\n{c}");
+    }
+    // Desktop-only tokens not used: no #ifndef block.
+    assert!(!c.contains("#ifndef"), "{c}");
+}
+
+#[test]
+fn float_literals_read_back_exactly() {
+    for v in [0.1f32, 1.0 / 3.0, 1e-7, -0.0, 16777215.0, f32::MIN_POSITIVE] {
+        let lit = cf(v);
+        let back: f32 = lit.trim_end_matches('f').parse().unwrap();
+        assert_eq!(back.to_bits(), v.to_bits(), "{lit}");
+    }
+    assert_eq!(cf(f32::INFINITY), "INFINITY");
+    assert_eq!(cd(0.4000000059604645), "0.4000000059604645");
+}

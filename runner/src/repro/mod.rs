@@ -1,0 +1,290 @@
+//! `shadowcheck repro`: from one failing test to a standalone reproducer and a bug report.
+//!
+//! For a GL backend (`egl:*`, `osmesa:*`) and a test `<case id>@<api>` this writes into a directory:
+//! - `repro.c` ([`csource`]): a C program that creates the worker's context, texture, sampler state
+//!   and lookup, draws once, prints expected (from the oracle, as constants) and observed, and exits 1
+//!   when the observation is outside the accepted set;
+//! - `build.sh`: the one-line build command (also at the top of repro.c) and the run line with the
+//!   environment that picks the driver (the worker's, `BackendName::env`);
+//! - `output.txt`: what the program printed when [`build_and_run`] ran it here;
+//! - `REPORT.md` ([`report`]): a bug report, written only for a Fail (a "shall" violated).
+//!
+//! `--all-failures` groups the Fails of a results directory into classes ([`classes`]) and writes one
+//! reproducer per class with an index.
+
+pub mod classes;
+pub mod csource;
+pub mod report;
+mod tokens;
+
+use shadowcheck_gl::{BackendName, Driver};
+use shadowcheck_model::{ApiPath, Case, Expectation};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+#[derive(Debug, thiserror::Error)]
+pub enum ReproError {
+    #[error("bad test id `{0}`: expected `<case id>@<api>` with api one of ff, arbfp, glsl120, glsl130, core, es100, es300")]
+    BadTestId(String),
+    #[error("{0}")]
+    BadBackend(String),
+    #[error("case `{id}` not found in {fixtures}")]
+    NoCase { id: String, fixtures: String },
+    #[error("case `{id}` does not list API path `{api}` (it lists: {listed})")]
+    NoPath {
+        id: String,
+        api: String,
+        listed: String,
+    },
+    #[error("backend {backend} runs the API paths {paths}, not `{api}`")]
+    PathNotOnBackend {
+        backend: String,
+        api: String,
+        paths: String,
+    },
+    #[error("the oracle has no expectation for this case: {0}")]
+    NoExpectation(String),
+    #[error("the worker would not run this test: {0}")]
+    NotPlanned(String),
+    #[error("{what}: {source}")]
+    Io {
+        what: String,
+        #[source]
+        source: std::io::Error,
+    },
+    #[error(
+        "building the reproducer failed (is gcc and the dev package installed? {packages}):\n{log}"
+    )]
+    Build { packages: String, log: String },
+    #[error("the reproducer could not set up (exit {code}):\n{log}")]
+    Setup { code: i32, log: String },
+}
+
+fn io(what: impl Into<String>) -> impl FnOnce(std::io::Error) -> ReproError {
+    let what = what.into();
+    move |source| ReproError::Io { what, source }
+}
+
+/// One test on one GL backend, with the oracle's expectation.
+#[derive(Debug, Clone)]
+pub struct Subject {
+    pub backend: BackendName,
+    pub case: Case,
+    pub api: ApiPath,
+    /// Evaluated by the oracle now (not read from the fixture).
+    pub expect: Expectation,
+    /// The oracle's derivation steps, each with the section (and sentence) it comes from.
+    pub steps: Vec<shadowcheck_oracle::Step>,
+    /// The oracle's derivation and footprint, as `shadowcheck explain` prints them.
+    pub explain: String,
+    /// The fixture file the case came from.
+    pub fixture: PathBuf,
+}
+
+impl Subject {
+    /// `<case id>@<api>`, the test's name in results and baselines.
+    pub fn test(&self) -> String {
+        crate::records::TestResult::name(&self.case.id, self.api)
+    }
+}
+
+/// Splits `<case id>@<api>` at its last `@`.
+pub fn parse_test_id(test: &str) -> Result<(String, ApiPath), ReproError> {
+    let (id, api) = test
+        .rsplit_once('@')
+        .ok_or_else(|| ReproError::BadTestId(test.to_string()))?;
+    let api = ApiPath::from_key(api).ok_or_else(|| ReproError::BadTestId(test.to_string()))?;
+    if id.is_empty() {
+        return Err(ReproError::BadTestId(test.to_string()));
+    }
+    Ok((id.to_string(), api))
+}
+
+/// Finds the case, checks the backend runs the path, and asks the oracle.
+pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subject, ReproError> {
+    let name: BackendName = backend.parse().map_err(|e: shadowcheck_gl::GlError| {
+        ReproError::BadBackend(format!(
+            "{e} (repro writes C programs for the GL backends egl:* and osmesa:*)"
+        ))
+    })?;
+    if let Some(why) = name.static_unavailability() {
+        return Err(ReproError::BadBackend(why));
+    }
+    if matches!(name.driver, Driver::Swiftshader | Driver::Native) {
+        return Err(ReproError::BadBackend(format!(
+            "{name}: repro writes programs for Mesa's drivers (llvmpipe, softpipe, zink, zink+swiftshader) on EGL surfaceless or OSMesa; SwiftShader's own GLES and a native EGL (EGL 1.4 pbuffer contexts) are not supported yet"
+        )));
+    }
+    let (id, api) = parse_test_id(test)?;
+    if !name.api.paths().contains(&api) {
+        return Err(ReproError::PathNotOnBackend {
+            backend: name.to_string(),
+            api: api.key().into(),
+            paths: keys(name.api.paths()),
+        });
+    }
+    let set = crate::run::load_cases(fixtures);
+    let loaded = set
+        .cases
+        .into_iter()
+        .find(|l| l.case.id == id)
+        .ok_or_else(|| ReproError::NoCase {
+            id: id.clone(),
+            fixtures: fixtures
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", "),
+        })?;
+    let fixture = PathBuf::from(&set.files[loaded.file]);
+    let case = loaded.case;
+    if !case.api.contains(&api) {
+        return Err(ReproError::NoPath {
+            id,
+            api: api.key().into(),
+            listed: keys(&case.api),
+        });
+    }
+    let mut bare = case.clone();
+    bare.expect = None;
+    let ev = crate::verdict::oracle_evaluate(&bare).map_err(ReproError::NoExpectation)?;
+    if !ev.expect.layout.contains_key(&api) {
+        return Err(ReproError::NoExpectation(format!(
+            "no layout for API path `{api}`"
+        )));
+    }
+    let explain = shadowcheck_oracle::explain::render(&bare, &Ok(ev.clone()));
+    Ok(Subject {
+        backend: name,
+        case,
+        api,
+        expect: ev.expect,
+        steps: ev.steps,
+        explain,
+        fixture,
+    })
+}
+
+fn keys(paths: &[ApiPath]) -> String {
+    paths.iter().map(|p| p.key()).collect::<Vec<_>>().join(", ")
+}
+
+/// The Debian packages the build needs (headers and link libraries) and those the run needs.
+pub fn packages(s: &Subject) -> (String, String) {
+    use shadowcheck_gl::Platform;
+    let dev = match (s.backend.platform, s.backend.api.is_es()) {
+        (Platform::Osmesa, _) => "gcc libosmesa6-dev libgl-dev",
+        (Platform::Egl, true) => "gcc libegl-dev libgles-dev",
+        (Platform::Egl, false) => "gcc libegl-dev libgl-dev",
+    };
+    let mut run = match s.backend.platform {
+        Platform::Egl => vec!["libegl-mesa0", "libgl1-mesa-dri"],
+        Platform::Osmesa => vec!["libosmesa6", "libgl1-mesa-dri"],
+    };
+    match s.backend.driver {
+        Driver::Zink => run.push("mesa-vulkan-drivers"),
+        // SwiftShader's Vulkan ICD (VK_ICD_FILENAMES in the run line).
+        Driver::ZinkSwiftshader => run.push("chromium-common"),
+        _ => {}
+    }
+    (dev.to_string(), run.join(" "))
+}
+
+/// The text of build.sh: build, then run with the driver's environment; its exit status is the
+/// reproducer's.
+pub fn build_sh(s: &Subject) -> String {
+    let (dev, run) = packages(s);
+    format!(
+        "#!/bin/sh\n# shadowcheck reproducer for {test} on {backend}.\n# Debian 12: apt-get install -y {dev} {run}\ncd \"$(dirname \"$0\")\" || exit 2\n{build} || exit 2\nexec env {env} ./repro\n",
+        test = s.test(),
+        backend = s.backend,
+        build = csource::build_line(s),
+        env = csource::env_words(s),
+    )
+}
+
+/// What the reproducer printed and how it exited.
+#[derive(Debug, Clone)]
+pub struct RunOutput {
+    pub code: i32,
+    pub stdout: String,
+    pub stderr: String,
+}
+
+impl RunOutput {
+    /// The value of a `key: value` line the program prints (`GL_RENDERER`, `observed`, ...).
+    pub fn field(&self, key: &str) -> Option<&str> {
+        self.stdout.lines().find_map(|l| {
+            l.strip_prefix(key)
+                .and_then(|r| r.strip_prefix(':'))
+                .map(str::trim)
+        })
+    }
+    /// The observed RGBA (the `observed: (r, g, b, a)` line).
+    pub fn observed(&self) -> Option<[f64; 4]> {
+        let v: Vec<f64> = self
+            .field("observed")?
+            .trim_matches(|c| c == '(' || c == ')')
+            .split(',')
+            .map(|x| x.trim().parse::<f64>())
+            .collect::<Result<_, _>>()
+            .ok()?;
+        v.try_into().ok()
+    }
+}
+
+/// The files a reproducer directory holds.
+pub const REPRO_C: &str = "repro.c";
+pub const BUILD_SH: &str = "build.sh";
+pub const OUTPUT_TXT: &str = "output.txt";
+pub const REPORT_MD: &str = "REPORT.md";
+
+/// Writes repro.c and build.sh into `dir` (created).
+pub fn write_sources(s: &Subject, dir: &Path) -> Result<(), ReproError> {
+    let c = csource::program(s).map_err(ReproError::NotPlanned)?;
+    std::fs::create_dir_all(dir).map_err(io(format!("creating {}", dir.display())))?;
+    std::fs::write(dir.join(REPRO_C), c).map_err(io("writing repro.c"))?;
+    std::fs::write(dir.join(BUILD_SH), build_sh(s)).map_err(io("writing build.sh"))?;
+    Ok(())
+}
+
+/// Runs `sh build.sh` in `dir` and keeps what it printed in output.txt. A build failure (exit 2
+/// before the program printed anything) and a setup failure of the program are errors.
+pub fn build_and_run(s: &Subject, dir: &Path) -> Result<RunOutput, ReproError> {
+    // A binary left from an earlier build must not run when this build fails.
+    let _ = std::fs::remove_file(dir.join("repro"));
+    let out = Command::new("sh")
+        .arg(BUILD_SH)
+        .current_dir(dir)
+        .output()
+        .map_err(io("running sh build.sh"))?;
+    let r = RunOutput {
+        code: out.status.code().unwrap_or(-1),
+        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    };
+    let text = format!(
+        "$ sh build.sh\n{}{}exit {}\n",
+        r.stdout,
+        if r.stderr.is_empty() {
+            String::new()
+        } else {
+            format!("[stderr]\n{}", r.stderr)
+        },
+        r.code
+    );
+    std::fs::write(dir.join(OUTPUT_TXT), text).map_err(io("writing output.txt"))?;
+    if r.code != 0 && r.code != 1 {
+        if r.field("GL_RENDERER").is_none() && !dir.join("repro").exists() {
+            return Err(ReproError::Build {
+                packages: format!("apt-get install -y {}", packages(s).0),
+                log: r.stderr,
+            });
+        }
+        return Err(ReproError::Setup {
+            code: r.code,
+            log: format!("{}{}", r.stdout, r.stderr),
+        });
+    }
+    Ok(r)
+}

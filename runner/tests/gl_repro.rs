@@ -1,0 +1,385 @@
+//! `shadowcheck repro` end to end on Mesa: for one known failing test of each Mesa cause in
+//! reports/README.md that is a "shall" violation (a Fail), the harness runs the test, then the
+//! reproducer is written, built with the system C compiler and run on its own; it must exit 1 and
+//! print the very RGBA the harness observed. A test that passes on its backend gives a reproducer
+//! that exits 0 (and no REPORT.md). Nothing here is a driver value written down: the expectation is
+//! the oracle's (inside repro.c) and the observation is compared with the harness's of this run.
+//!
+//! Needs gcc, the GL dev packages (libegl-dev libgles-dev libgl-dev libosmesa6-dev) and the Mesa
+//! drivers: missing ones are a loud skip, a failure under CI=true (see gl_support).
+mod common;
+mod gl_support;
+
+use shadowcheck_runner::records::{read_results, Outcome, RESULTS_FILE};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// Can this machine build a reproducer (a C compiler and the EGL/GL headers)?
+fn can_build(backend: &str) -> bool {
+    let header = if backend.starts_with("osmesa:") {
+        "/usr/include/GL/osmesa.h"
+    } else {
+        "/usr/include/EGL/egl.h"
+    };
+    let cc = Command::new("cc").arg("--version").output();
+    if !matches!(cc, Ok(o) if o.status.success()) || !Path::new(header).is_file() {
+        gl_support::unavailable(
+            backend,
+            &format!("no C compiler or no {header} to build the reproducer (apt-get install -y gcc libegl-dev libgles-dev libgl-dev libosmesa6-dev)"),
+        );
+        return false;
+    }
+    true
+}
+
+/// The fixture file of a default-grid case (`cases/fixtures/<spec>/<target>/<min filter>.json`, the
+/// first, second and fourth parts of its id), so that neither the run nor `repro` loads them all.
+fn fixture_file(id: &str) -> PathBuf {
+    let parts: Vec<&str> = id.split('/').collect();
+    let f = root()
+        .join("cases/fixtures")
+        .join(parts[0])
+        .join(parts[1])
+        .join(format!("{}.json", parts[3]));
+    assert!(f.is_file(), "{} missing", f.display());
+    f
+}
+
+/// What the harness and the reproducer said about one test.
+struct Both {
+    harness: Outcome,
+    harness_rgba: [f64; 4],
+    repro_exit: i32,
+    repro_rgba: [f64; 4],
+    repro_cmd_exit: i32,
+    dir: PathBuf,
+}
+
+fn observed_line(stdout: &str) -> [f64; 4] {
+    let line = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("observed:"))
+        .unwrap_or_else(|| panic!("no observed line in\n{stdout}"));
+    let v: Vec<f64> = line
+        .trim()
+        .trim_matches(|c| c == '(' || c == ')')
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect();
+    v.try_into().unwrap()
+}
+
+/// Runs `test` on `backend` in the harness, then `shadowcheck repro` for it, then the reproducer's
+/// build.sh on its own. `None` when the backend or the toolchain is missing (reported).
+fn both(backend: &str, test: &str, name: &str, extra: &[&str]) -> Option<Both> {
+    if let Err(e) = shadowcheck_runner::backend::gl::worker_command(backend) {
+        gl_support::unavailable(backend, &e.to_string());
+        return None;
+    }
+    if !can_build(backend) {
+        return None;
+    }
+    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
+    let fixtures = fixture_file(&id);
+    let out = common::tmpdir(name);
+    let pattern = format!("^{}$", regex::escape(&id));
+    let run_dir = out.join("run");
+    let r = common::run(&[
+        "--backend",
+        backend,
+        "--fixtures",
+        fixtures.to_str().unwrap(),
+        "--cases",
+        &pattern,
+        "--no-rerun",
+        "--out",
+        run_dir.to_str().unwrap(),
+    ]);
+    if r.code == 96 && r.stderr.contains("cannot start") {
+        gl_support::unavailable(backend, r.stderr.trim());
+        return None;
+    }
+    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
+    let rec = results
+        .get(backend, test)
+        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    let harness_rgba = rec.observed.as_ref().expect("harness observed nothing").0;
+    let dir = out.join("repro");
+    let mut cmd = common::bin();
+    cmd.args(["repro", "--backend", backend, "--case", test, "--fixtures"])
+        .arg(&fixtures)
+        .arg("--out")
+        .arg(&dir)
+        .args(extra);
+    let rc = common::Run::of(cmd.output().unwrap());
+    assert!(
+        dir.join("repro.c").is_file(),
+        "no repro.c: {}{}",
+        rc.stdout,
+        rc.stderr
+    );
+    // The reproducer on its own, as a driver developer runs it.
+    let own = Command::new("sh")
+        .arg("build.sh")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&own.stdout).into_owned();
+    assert!(
+        matches!(own.status.code(), Some(0 | 1)),
+        "reproducer setup failed:\n{stdout}{}",
+        String::from_utf8_lossy(&own.stderr)
+    );
+    Some(Both {
+        harness: rec.outcome,
+        harness_rgba,
+        repro_exit: own.status.code().unwrap_or(-1),
+        repro_rgba: observed_line(&stdout),
+        repro_cmd_exit: rc.code,
+        dir,
+    })
+}
+
+/// The harness's observation is f32 read back as f64; the reproducer prints f32 with 9 digits.
+fn same_rgba(a: [f64; 4], b: [f64; 4]) -> bool {
+    a.iter().zip(b).all(|(x, y)| (*x as f32) == (y as f32))
+}
+
+/// A Mesa "shall" failure: the harness says Fail, `repro` writes REPORT.md (exit 0), the program
+/// exits 1 and prints what the harness observed.
+fn check_fail(cause: &str, backend: &str, test: &str) {
+    let name = format!("repro-{}", cause.replace(' ', "-"));
+    let Some(b) = both(backend, test, &name, &[]) else {
+        return;
+    };
+    assert_eq!(
+        b.harness,
+        Outcome::Fail,
+        "{cause}: the harness no longer fails {test} on {backend} (driver fixed? update reports/README.md)"
+    );
+    assert_eq!(b.repro_cmd_exit, 0, "{cause}: shadowcheck repro exit");
+    assert_eq!(b.repro_exit, 1, "{cause}: the reproducer must exit 1");
+    assert!(
+        same_rgba(b.harness_rgba, b.repro_rgba),
+        "{cause}: harness observed {:?}, reproducer {:?}",
+        b.harness_rgba,
+        b.repro_rgba
+    );
+    let report = std::fs::read_to_string(b.dir.join("REPORT.md")).unwrap();
+    assert!(
+        report.contains(test) && report.contains("GL_RENDERER: `") && report.contains("**Fail**"),
+        "{report}"
+    );
+}
+
+#[test]
+fn cause2_es_sized_depth_completeness() {
+    check_fail(
+        "cause 2",
+        "egl:llvmpipe:es3",
+        "gles32/2d/d24/linear/none/a=0.25_0.5/read/dt=0.2_0.4_0.6_0.8@es300",
+    );
+}
+
+#[test]
+fn cause3_softpipe_compare_after_filtering() {
+    check_fail(
+        "cause 3",
+        "egl:softpipe:core",
+        "gl46/2d/d24/linear/equal/pcf/a=0.5_0.5/ref=0.5/dt=0.2_0.4_0.6_0.8@core",
+    );
+}
+
+#[test]
+fn cause5_fixed_function_1d_compares_against_t() {
+    check_fail(
+        "cause 5",
+        "egl:llvmpipe:compat",
+        "arb/1d/d16/nearest/lequal/texel1/ref=0.5/dt=0.2_0.4_0.6_0.8@ff",
+    );
+}
+
+#[test]
+fn cause5_on_osmesa() {
+    check_fail(
+        "cause 5 osmesa",
+        "osmesa:llvmpipe:compat",
+        "arb/1d/d16/nearest/lequal/texel1/ref=0.5/dt=0.2_0.4_0.6_0.8@ff",
+    );
+}
+
+#[test]
+fn cause6_zink_depth_texture_mode_layout() {
+    check_fail(
+        "cause 6",
+        "egl:zink:compat",
+        "arb/2d/d24/linear/lequal/wrap/wrap=clamp/st=-0.25_0.25/border=1/ref=0.5@glsl120",
+    );
+}
+
+#[test]
+fn cause7_glsl130_alpha_becomes_intensity() {
+    check_fail(
+        "cause 7",
+        "egl:llvmpipe:compat",
+        "gl46/2d/d24/nearest/none/dtm/dtm=alpha/texel1/ref=0.3@glsl130",
+    );
+}
+
+#[test]
+fn cause8_softpipe_texture_grad_drops_lod_bias() {
+    check_fail(
+        "cause 8",
+        "egl:softpipe:core:grad",
+        "gl46/2d/d24/nmn/lequal/mip/lod_bias=1/lod=0/ref=0.5/levels=0.2_0.8_0.4@core",
+    );
+}
+
+#[test]
+fn cause9_linear_array_layer_tie() {
+    check_fail(
+        "cause 9",
+        "egl:llvmpipe:core",
+        "gl46/2darray/d24/linear/lequal/layer/layer=0.5/ref=0.6/layers=0.2_0.8_0.4@core",
+    );
+}
+
+/// A test that passes: without --allow-pass `repro` refuses (exit 1, no REPORT.md); with it, exit 0;
+/// the program exits 0 and prints what the harness observed.
+#[test]
+fn passing_test_gives_exit_0_and_no_report() {
+    let backend = "egl:llvmpipe:compat";
+    let test = "arb/2d/d24/linear/lequal/wrap/wrap=clamp/st=-0.25_0.25/border=1/ref=0.5@glsl120";
+    let Some(b) = both(backend, test, "repro-pass", &[]) else {
+        return;
+    };
+    assert_eq!(b.harness, Outcome::Pass);
+    assert_eq!(
+        b.repro_cmd_exit, 1,
+        "repro refuses a Pass without --allow-pass"
+    );
+    assert!(!b.dir.join("REPORT.md").exists());
+    assert_eq!(b.repro_exit, 0);
+    assert!(same_rgba(b.harness_rgba, b.repro_rgba));
+    let Some(b) = both(backend, test, "repro-pass-allowed", &["--allow-pass"]) else {
+        return;
+    };
+    assert_eq!(b.repro_cmd_exit, 0);
+    assert!(!b.dir.join("REPORT.md").exists());
+}
+
+/// Bad arguments exit 96 with a message naming the problem (no GL needed).
+#[test]
+fn bad_arguments_exit_96() {
+    let fixtures = root().join("cases/fixtures");
+    for (args, says) in [
+        (
+            vec!["--backend", "egl:llvmpipe:core", "--case", "no-api-path"],
+            "bad test id",
+        ),
+        (
+            vec!["--backend", "soft", "--case", "x@core"],
+            "bad backend name",
+        ),
+        (
+            vec!["--backend", "egl:llvmpipe:core", "--case", "gl46/none@core"],
+            "not found",
+        ),
+        (
+            vec![
+                "--backend",
+                "egl:llvmpipe:core",
+                "--case",
+                "arb/1d/d16/nearest/lequal/texel1/ref=0.5/dt=0.2_0.4_0.6_0.8@ff",
+            ],
+            "runs the API paths core",
+        ),
+        (vec!["--case", "x@core"], "--backend"),
+    ] {
+        let r = common::Run::of(
+            common::bin()
+                .arg("repro")
+                .args(&args)
+                .arg("--fixtures")
+                .arg(&fixtures)
+                .output()
+                .unwrap(),
+        );
+        assert_eq!(r.code, 96, "{args:?}: {}", r.stderr);
+        assert!(r.stderr.contains(says), "{args:?}: {}", r.stderr);
+    }
+}
+
+/// `--all-failures`: the Fails of a run (ES 2D and cube fixtures on llvmpipe: the 84-case
+/// completeness cause shows on both targets) become fewer classes than Fails, each with a
+/// reproducer that fails alone, and index.md names every failing test once.
+#[test]
+fn all_failures_writes_one_reproducer_per_class() {
+    let backend = "egl:llvmpipe:es3";
+    if shadowcheck_runner::backend::gl::worker_command(backend).is_err() || !can_build(backend) {
+        gl_support::unavailable(backend, "driver or toolchain missing");
+        return;
+    }
+    let out = common::tmpdir("repro-all");
+    let run_dir = out.join("run");
+    let fx = root().join("cases/fixtures/gles32");
+    let r = common::run(&[
+        "--backend",
+        backend,
+        "--fixtures",
+        fx.join("2d").to_str().unwrap(),
+        "--fixtures",
+        fx.join("cube").to_str().unwrap(),
+        "--no-rerun",
+        "--out",
+        run_dir.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        r.code, 100,
+        "the ES completeness Fails make it a regression run: {}",
+        r.stderr
+    );
+    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
+    let fails: Vec<&str> = results
+        .results
+        .iter()
+        .filter(|r| r.outcome == Outcome::Fail)
+        .map(|r| r.test.as_str())
+        .collect();
+    assert!(fails.len() > 2, "{fails:?}");
+    let a = common::Run::of(
+        common::bin()
+            .args(["repro", "--all-failures"])
+            .arg(&run_dir)
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(a.code, 0, "{}{}", a.stdout, a.stderr);
+    let index = std::fs::read_to_string(run_dir.join("repro/index.md")).unwrap();
+    let rows: Vec<&str> = index.lines().filter(|l| l.starts_with("| [")).collect();
+    assert!(
+        !rows.is_empty() && rows.len() < fails.len(),
+        "{} classes for {} Fails",
+        rows.len(),
+        fails.len()
+    );
+    for row in &rows {
+        assert!(row.contains("Fail reproduced"), "{row}");
+    }
+    for t in &fails {
+        assert_eq!(
+            index.matches(&format!("- `{t}`")).count(),
+            1,
+            "{t} in\n{index}"
+        );
+    }
+    let reports = std::fs::read_dir(run_dir.join("repro"))
+        .unwrap()
+        .filter(|e| e.as_ref().unwrap().path().join("REPORT.md").is_file())
+        .count();
+    assert_eq!(reports, rows.len());
+}
