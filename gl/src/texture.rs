@@ -277,78 +277,136 @@ pub fn check(gl: &glow::Context, what: &str) -> Result<(), GlError> {
     }
 }
 
-unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<(), GlError> {
-    let target = case.texture.target.gl();
+/// The value of one TexParameter call.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ParamValue {
+    /// glTexParameteri.
+    Int(u32),
+    /// glTexParameterf.
+    Float(f32),
+    /// glTexParameterfv.
+    Floats([f32; 4]),
+}
+
+/// One TexParameter call of a case's sampler state: the parameter, its name (for error messages)
+/// and the value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TexParam {
+    pub pname: u32,
+    pub name: &'static str,
+    pub value: ParamValue,
+}
+
+impl TexParam {
+    /// The call as an error message names it, e.g. `glTexParameteri(TEXTURE_COMPARE_MODE)`.
+    pub fn call(&self) -> String {
+        let f = match self.value {
+            ParamValue::Int(_) => "glTexParameteri",
+            ParamValue::Float(_) => "glTexParameterf",
+            ParamValue::Floats(_) => "glTexParameterfv",
+        };
+        format!("{f}({})", self.name)
+    }
+}
+
+/// The TexParameter calls that set `case`'s sampler state on its texture object, in the order
+/// they are made (state left at its default is not set). The GL worker makes them with glow; the
+/// WebGL page makes the same list (`shadowcheck-webgl`).
+pub fn tex_params(info: &GlInfo, case: &Case) -> Vec<TexParam> {
     let s = &case.sampler;
     let t = &case.texture;
-    let pi = |p: u32, v: u32, name: &str| -> Result<(), GlError> {
-        gl.tex_parameter_i32(target, p, v as i32);
-        check(gl, &format!("glTexParameteri({name})"))
-    };
+    let mut v = Vec::new();
+    let mut push =
+        |pname: u32, name: &'static str, value: ParamValue| v.push(TexParam { pname, name, value });
+    use ParamValue::{Float, Floats, Int};
     if t.base_level != 0 {
-        pi(glow::TEXTURE_BASE_LEVEL, t.base_level, "TEXTURE_BASE_LEVEL")?;
+        push(
+            glow::TEXTURE_BASE_LEVEL,
+            "TEXTURE_BASE_LEVEL",
+            Int(t.base_level),
+        );
     }
     if let Some(m) = s.max_level {
-        pi(glow::TEXTURE_MAX_LEVEL, m, "TEXTURE_MAX_LEVEL")?;
+        push(glow::TEXTURE_MAX_LEVEL, "TEXTURE_MAX_LEVEL", Int(m));
     }
-    pi(
+    push(
         glow::TEXTURE_MIN_FILTER,
-        s.min_filter.gl(),
         "TEXTURE_MIN_FILTER",
-    )?;
-    pi(
+        Int(s.min_filter.gl()),
+    );
+    push(
         glow::TEXTURE_MAG_FILTER,
-        s.mag_filter.gl(),
         "TEXTURE_MAG_FILTER",
-    )?;
+        Int(s.mag_filter.gl()),
+    );
     // Only the wraps of coordinates the target uses: a rectangle texture rejects REPEAT even for
     // a coordinate it never wraps.
-    pi(glow::TEXTURE_WRAP_S, s.wrap_s.gl(), "TEXTURE_WRAP_S")?;
+    push(glow::TEXTURE_WRAP_S, "TEXTURE_WRAP_S", Int(s.wrap_s.gl()));
     if t.target.dims() == 2 {
-        pi(glow::TEXTURE_WRAP_T, s.wrap_t.gl(), "TEXTURE_WRAP_T")?;
+        push(glow::TEXTURE_WRAP_T, "TEXTURE_WRAP_T", Int(s.wrap_t.gl()));
     }
     if t.target.is_cube() {
-        pi(glow::TEXTURE_WRAP_R, s.wrap_r.gl(), "TEXTURE_WRAP_R")?;
+        push(glow::TEXTURE_WRAP_R, "TEXTURE_WRAP_R", Int(s.wrap_r.gl()));
     }
     if s.border != [0.0; 4] {
-        gl.tex_parameter_f32_slice(target, glow::TEXTURE_BORDER_COLOR, &s.border);
-        check(gl, "glTexParameterfv(TEXTURE_BORDER_COLOR)")?;
+        push(
+            glow::TEXTURE_BORDER_COLOR,
+            "TEXTURE_BORDER_COLOR",
+            Floats(s.border),
+        );
     }
     if s.min_lod != -1000.0 {
-        gl.tex_parameter_f32(target, glow::TEXTURE_MIN_LOD, s.min_lod);
-        check(gl, "glTexParameterf(TEXTURE_MIN_LOD)")?;
+        push(glow::TEXTURE_MIN_LOD, "TEXTURE_MIN_LOD", Float(s.min_lod));
     }
     if s.max_lod != 1000.0 {
-        gl.tex_parameter_f32(target, glow::TEXTURE_MAX_LOD, s.max_lod);
-        check(gl, "glTexParameterf(TEXTURE_MAX_LOD)")?;
+        push(glow::TEXTURE_MAX_LOD, "TEXTURE_MAX_LOD", Float(s.max_lod));
     }
     if s.lod_bias != 0.0 {
-        gl.tex_parameter_f32(target, glow::TEXTURE_LOD_BIAS, s.lod_bias);
-        check(gl, "glTexParameterf(TEXTURE_LOD_BIAS)")?;
+        push(
+            glow::TEXTURE_LOD_BIAS,
+            "TEXTURE_LOD_BIAS",
+            Float(s.lod_bias),
+        );
     }
-    pi(
+    push(
         glow::TEXTURE_COMPARE_MODE,
-        s.compare_mode.gl(),
         "TEXTURE_COMPARE_MODE",
-    )?;
-    pi(
+        Int(s.compare_mode.gl()),
+    );
+    push(
         glow::TEXTURE_COMPARE_FUNC,
-        s.compare_func.gl(),
         "TEXTURE_COMPARE_FUNC",
-    )?;
+        Int(s.compare_func.gl()),
+    );
     if let (Some(m), true) = (s.depth_texture_mode, info.compat) {
-        pi(GL_DEPTH_TEXTURE_MODE, m.gl(), "DEPTH_TEXTURE_MODE")?;
+        push(GL_DEPTH_TEXTURE_MODE, "DEPTH_TEXTURE_MODE", Int(m.gl()));
     }
     if let Some(m) = s.depth_stencil_mode {
-        pi(
+        push(
             GL_DEPTH_STENCIL_TEXTURE_MODE,
-            m.gl(),
             "DEPTH_STENCIL_TEXTURE_MODE",
-        )?;
+            Int(m.gl()),
+        );
     }
-    if let Some(v) = s.fail_value {
-        gl.tex_parameter_f32(target, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, v);
-        check(gl, "glTexParameterf(TEXTURE_COMPARE_FAIL_VALUE_ARB)")?;
+    if let Some(f) = s.fail_value {
+        push(
+            GL_TEXTURE_COMPARE_FAIL_VALUE_ARB,
+            "TEXTURE_COMPARE_FAIL_VALUE_ARB",
+            Float(f),
+        );
+    }
+    v
+}
+
+unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<(), GlError> {
+    let target = case.texture.target.gl();
+    for p in tex_params(info, case) {
+        match p.value {
+            ParamValue::Int(v) => gl.tex_parameter_i32(target, p.pname, v as i32),
+            ParamValue::Float(v) => gl.tex_parameter_f32(target, p.pname, v),
+            ParamValue::Floats(v) => gl.tex_parameter_f32_slice(target, p.pname, &v),
+        }
+        check(gl, &p.call())?;
     }
     Ok(())
 }

@@ -411,7 +411,7 @@ fn write_line(out: &mut impl Write, msg: &Reply) -> std::io::Result<()> {
 }
 
 fn flush_batch(
-    worker: &mut Worker,
+    worker: &mut impl Serve,
     batch: &mut Vec<Entry>,
     out: &mut impl Write,
 ) -> std::io::Result<()> {
@@ -427,7 +427,7 @@ fn flush_batch(
             Entry::Bad { id, message } => slots.push(Err((id, message))),
         }
     }
-    let mut answers = worker.run_batch(&cases).into_iter();
+    let mut answers = worker.run_batch(&cases)?.into_iter();
     for slot in slots {
         let msg = match slot {
             Ok(id) => answer_message(
@@ -446,9 +446,31 @@ fn flush_batch(
     out.flush()
 }
 
+/// A worker behind the protocol loop: its hello, and the answers for a batch (in order). An `Err`
+/// ends the loop without answering (the process exits and the runner's crash handling takes over:
+/// the implementation itself is gone, e.g. a browser that died).
+pub trait Serve {
+    fn hello(&self) -> Hello;
+    fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>>;
+}
+
+impl Serve for Worker {
+    fn hello(&self) -> Hello {
+        Hello {
+            protocol: PROTOCOL_VERSION,
+            name: Some(self.display_name()),
+            capabilities: self.capabilities().clone(),
+            wants_expect: false,
+        }
+    }
+    fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>> {
+        Ok(Worker::run_batch(self, cases))
+    }
+}
+
 /// Speaks the protocol on `input`/`output` until `bye` or end of input.
 pub fn serve(
-    worker: &mut Worker,
+    worker: &mut impl Serve,
     input: impl BufRead,
     mut output: impl Write,
 ) -> std::io::Result<()> {
@@ -461,14 +483,11 @@ pub fn serve(
         match Request::parse(&line) {
             Ok(Request::Hello { protocol }) => {
                 if protocol != 0 && protocol != PROTOCOL_VERSION {
-                    eprintln!("gl-worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}");
+                    eprintln!(
+                        "worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}"
+                    );
                 }
-                let hello = Reply::Hello(Hello {
-                    protocol: PROTOCOL_VERSION,
-                    name: Some(worker.display_name()),
-                    capabilities: worker.capabilities().clone(),
-                    wants_expect: false,
-                });
+                let hello = Reply::Hello(worker.hello());
                 write_line(&mut output, &hello)?;
                 output.flush()?;
             }
@@ -495,7 +514,7 @@ pub fn serve(
                         message: format!("cannot parse case: {e}"),
                     });
                 } else {
-                    eprintln!("gl-worker: ignoring unknown message: {e}");
+                    eprintln!("worker: ignoring unknown message: {e}");
                 }
             }
         }

@@ -54,6 +54,9 @@ enum Command {
     /// (internal) A GL worker process speaking runner/PROTOCOL.md on stdin/stdout.
     #[command(hide = true)]
     GlWorker(cmd::gl_worker::Args),
+    /// (internal) The `webgl:chromium` worker: headless Chromium speaking runner/PROTOCOL.md.
+    #[command(hide = true)]
+    WebglWorker(cmd::webgl_worker::Args),
     /// (internal) The `mock:` backend's process, speaking runner/PROTOCOL.md (runner self-tests).
     #[command(hide = true)]
     MockWorker(cmd::mock_worker::Args),
@@ -81,6 +84,7 @@ fn main() -> std::process::ExitCode {
         Command::Summarize(a) => cmd::summarize::main(a),
         Command::Repro(a) => cmd::repro::main(a),
         Command::GlWorker(a) => cmd::gl_worker::main(a),
+        Command::WebglWorker(a) => cmd::webgl_worker::main(a),
         Command::MockWorker(a) => cmd::mock_worker::main(a),
     };
     match result {

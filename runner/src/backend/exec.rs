@@ -205,6 +205,8 @@ pub struct ExecBackend {
     answered: HashSet<String>,
     /// Answered cases found misbehaving later (see [`Backend::take_faults`]).
     faults: Vec<(String, String)>,
+    /// The hello's `name`.
+    implementation: Option<String>,
 }
 
 impl ExecBackend {
@@ -228,6 +230,7 @@ impl ExecBackend {
             timeouts_in_a_row: 0,
             answered: HashSet::new(),
             faults: vec![],
+            implementation: None,
         };
         let hello = b.ensure().map_err(|msg| BackendError::Setup {
             backend: name.to_string(),
@@ -238,6 +241,7 @@ impl ExecBackend {
             b.wants_expect = h.wants_expect;
             if let Some(n) = h.name {
                 b.push_diag(format!("implementation: {n}"));
+                b.implementation = Some(n);
             }
         }
         Ok(b)
@@ -525,6 +529,10 @@ impl Backend for ExecBackend {
     fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
         self.run_group(cases)
     }
+    fn implementation(&self) -> Option<String> {
+        self.implementation.clone()
+    }
+
     fn take_diagnostics(&mut self) -> Vec<String> {
         self.diags
             .lock()

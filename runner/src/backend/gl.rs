@@ -14,7 +14,7 @@ pub const WORKER_EXE_ENV: &str = "SHADOWCHECK_EXE";
 
 /// The `shadowcheck` binary: `$SHADOWCHECK_EXE`, the current executable when it is shadowcheck, or
 /// `shadowcheck` beside the current executable or its parent (a test binary in target/*/deps).
-fn shadowcheck_exe() -> Result<PathBuf, GlError> {
+pub fn shadowcheck_exe() -> Result<PathBuf, GlError> {
     if let Some(p) = std::env::var_os(WORKER_EXE_ENV) {
         return Ok(PathBuf::from(p));
     }

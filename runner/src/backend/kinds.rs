@@ -47,6 +47,12 @@ pub const KINDS: &[Kind] = &[
         open: open_gl,
     },
     Kind {
+        prefix: "webgl",
+        pattern: "webgl:chromium",
+        help: "WebGL 2.0 in headless Chromium (ANGLE on SwiftShader), the es300 path, in a webgl-worker child",
+        open: open_webgl,
+    },
+    Kind {
         prefix: "mock",
         pattern: "mock:<script>",
         help: "a scripted implementation for testing the runner itself",
@@ -112,6 +118,11 @@ fn open_gl(name: &str, _: &str, opts: &Options) -> Result<Box<dyn Backend>, Back
     Ok(Box::new(ExecBackend::start(name, cmd, opts)?))
 }
 
+fn open_webgl(name: &str, rest: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
+    let cmd = super::webgl::worker_command(rest).map_err(|e| setup(name, e))?;
+    Ok(Box::new(ExecBackend::start(name, cmd, opts)?))
+}
+
 fn open_mock(name: &str, rest: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
     let exe = std::env::current_exe().map_err(|e| setup(name, e))?;
     mock::Script::parse(rest).map_err(|msg| setup(name, msg))?;
@@ -131,7 +142,7 @@ mod tests {
     fn the_unknown_backend_error_lists_every_kind() {
         assert_eq!(
             patterns(),
-            "soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, mock:<script>"
+            "soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, webgl:chromium, mock:<script>"
         );
         assert!(kind_of("egl:llvmpipe:core").is_some_and(|k| k.prefix == "egl"));
         assert!(kind_of("soft").is_some_and(|k| k.prefix == "soft"));

@@ -6,6 +6,7 @@
 //! - `soft` / `soft:<spec>`: the project's own texture unit (shadowcheck-soft);
 //! - `exec:<command line>`: an external process speaking runner/PROTOCOL.md;
 //! - `egl:*`, `osmesa:*`: GL drivers, each in a `shadowcheck gl-worker` child speaking the protocol;
+//! - `webgl:chromium`: WebGL 2.0 in headless Chromium, in a `shadowcheck webgl-worker` child;
 //! - `mock:<script>`: a scripted implementation for testing the runner itself.
 
 mod answer;
@@ -15,6 +16,7 @@ pub mod gl;
 pub mod kinds;
 pub mod mock;
 pub mod soft;
+pub mod webgl;
 
 use shadowcheck_model::{ApiPath, Case, Texels};
 pub use shadowcheck_protocol::{Capabilities, Support};
@@ -61,6 +63,11 @@ pub trait Backend: Send {
     fn batch_size(&self) -> usize {
         256
     }
+    /// What the implementation called itself (the protocol hello's `name`: version, renderer),
+    /// for the run's meta line; `None` when it said nothing.
+    fn implementation(&self) -> Option<String> {
+        None
+    }
     /// Lines an implementation printed on stderr, restarts and the like since the last call.
     fn take_diagnostics(&mut self) -> Vec<String> {
         vec![]
@@ -106,11 +113,12 @@ pub fn gl_backends() -> Vec<String> {
 /// A backend name and why it does not run here.
 pub type Unavailable = (String, String);
 
-/// Backends run when none is named: `soft` plus every GL backend a machine with Mesa offers. The
+/// Backends run when none is named: `soft`, every GL backend a machine with Mesa offers and
+/// `webgl:chromium` when Chromium is installed. The
 /// second list holds those that cannot start here, each with the reason (a driver not installed or
 /// hidden); combinations that can never work (OSMesa with ES, OSMesa with zink) are in neither. The
 /// third holds the optional implementations beyond Mesa whose files are not installed
-/// (SwiftShader's Vulkan ICD, SwiftShader's GLES), each with the command that installs it: announced,
+/// (SwiftShader's Vulkan ICD, SwiftShader's GLES, Chromium), each with the command that installs it: announced,
 /// not an error.
 pub fn default_backends() -> (Vec<String>, Vec<Unavailable>, Vec<Unavailable>) {
     let mut run = vec!["soft".to_string()];
@@ -130,6 +138,10 @@ pub fn default_backends() -> (Vec<String>, Vec<Unavailable>, Vec<Unavailable>) {
             }
             Err(why) => missing.push((name, why)),
         }
+    }
+    match webgl::installed() {
+        Ok(()) => run.push("webgl:chromium".to_string()),
+        Err(why) => absent.push(("webgl:chromium".to_string(), why)),
     }
     (run, missing, absent)
 }

@@ -66,10 +66,16 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
                     backends.push(b.clone());
                 }
             }
-            meta.get_or_insert_with(|| RunMeta {
+            let merged_meta = meta.get_or_insert_with(|| RunMeta {
                 shard: None,
                 ..m.clone()
             });
+            for (b, i) in &m.implementations {
+                merged_meta
+                    .implementations
+                    .entry(b.clone())
+                    .or_insert_with(|| i.clone());
+            }
         }
         for r in p.results {
             if let Some(prev) = merged.get(&r.backend, &r.test) {

@@ -10,6 +10,7 @@ pub mod report;
 pub mod repro;
 pub mod run;
 pub mod summarize;
+pub mod webgl_worker;
 
 /// Writes `text` to stdout. A reader that went away (`shadowcheck explain ... | head`) is not an
 /// error: the output was for it, and nothing else depends on it. Other write errors are.

@@ -217,6 +217,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         cases: a.cases.clone(),
         shard: a.shard.map(|s| s.to_string()),
         baseline: a.baseline.as_ref().map(|p| p.display().to_string()),
+        implementations: backends
+            .iter()
+            .filter_map(|b| b.implementation().map(|i| (b.name().to_string(), i)))
+            .collect(),
         ..RunMeta::new()
     };
 
@@ -238,7 +242,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         records::truncate_partial_line(&results_path)?;
         let prior = records::read_results(&results_path)?;
         if let Some(m) = &prior.meta {
-            if *m != meta {
+            if m.selection() != meta.selection() {
                 bail!(
                     "--resume: {} was written by a different selection ({:?}); give the same --backend/--fixtures/--cases/--shard/--baseline, or drop --resume",
                     results_path.display(),

@@ -30,6 +30,7 @@ pub use summary::{Counts, Summary};
 use serde::{Deserialize, Serialize};
 use shadowcheck_model::{ApiPath, Case, Footprint, Profile, SCHEMA_VERSION};
 use shadowcheck_protocol::Rgba;
+use std::collections::BTreeMap;
 
 /// The case's coordinates in the grid, for summary tables.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
@@ -162,9 +163,22 @@ pub struct RunMeta {
     pub shard: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub baseline: Option<String>,
+    /// Per backend, what its implementation called itself in the protocol hello (for a GL or
+    /// WebGL worker: the version and renderer strings, e.g. ANGLE's for `webgl:chromium`).
+    /// Informational: `--resume` and `merge` do not compare it.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub implementations: BTreeMap<String, String>,
 }
 
 impl RunMeta {
+    /// The meta without what `--resume` does not compare (the implementations' names).
+    pub fn selection(&self) -> RunMeta {
+        RunMeta {
+            implementations: BTreeMap::new(),
+            ..self.clone()
+        }
+    }
+
     pub fn new() -> RunMeta {
         RunMeta {
             schema_version: SCHEMA_VERSION,
@@ -173,6 +187,7 @@ impl RunMeta {
             cases: None,
             shard: None,
             baseline: None,
+            implementations: BTreeMap::new(),
         }
     }
 }

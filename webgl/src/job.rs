@@ -1,0 +1,312 @@
+//! A batch of cases as one job for the page (`page.js`), and the page's answer as protocol
+//! answers. Everything is decided here by the GL worker's own code, so the WebGL port runs the same
+//! es300 path: the lookup plan (`paths::plan_with`), the shader text (`shaders::glsl`), the bytes
+//! of every level (`texture::level_bytes`, `transfer_for`) and the TexParameter calls
+//! (`texture::tex_params`). Consecutive cases with equal texture and sampler share one texture
+//! object, as on the GL worker's ES contexts.
+
+use base64::Engine;
+use serde::Serialize;
+use shadowcheck_gl::draw::Answer;
+use shadowcheck_gl::paths::{self, GlInfo, Plan};
+use shadowcheck_gl::texture::{self, ParamValue};
+use shadowcheck_gl::{shaders, GlError};
+use shadowcheck_model::{Case, Target};
+use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
+
+/// Most (case, path) pixels of one job (the page's framebuffer is 256 x 256).
+pub const MAX_SLOTS: usize = 256 * 256;
+
+#[derive(Debug, Serialize)]
+pub struct Job {
+    /// (vertex, fragment) source per program.
+    programs: Vec<[String; 2]>,
+    slots: usize,
+    groups: Vec<Group>,
+}
+
+#[derive(Debug, Serialize)]
+struct Group {
+    cases: Vec<usize>,
+    texture: Texture,
+    draws: Vec<Draw>,
+}
+
+#[derive(Debug, Serialize)]
+struct Texture {
+    target: u32,
+    /// `2d`, `3d` (texImage3D) or `cube` (six texImage2D per level).
+    upload: &'static str,
+    levels: Vec<Level>,
+    params: Vec<Param>,
+}
+
+#[derive(Debug, Serialize)]
+struct Level {
+    level: u32,
+    ifmt: i32,
+    fmt: u32,
+    #[serde(rename = "type")]
+    ty: u32,
+    bpt: usize,
+    width: u32,
+    height: u32,
+    layers: u32,
+    /// level_bytes, base64.
+    data: String,
+}
+
+#[derive(Debug, Serialize)]
+struct Param {
+    pname: u32,
+    call: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    int: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    float: Option<Js>,
+}
+
+#[derive(Debug, Serialize)]
+struct Draw {
+    case: usize,
+    api: String,
+    slot: usize,
+    program: usize,
+    p: [Js; 4],
+    x: Js,
+    dx: [Js; 4],
+    dy: [Js; 4],
+}
+
+/// An f32 as the page reads it: a JSON number when finite (shortest round-trip text, so the
+/// page's `Number` and WebGL's conversion to float give the same f32), else `"Infinity"`,
+/// `"-Infinity"` or `"NaN"` (JSON has no such numbers; serde_json would write `null`), which
+/// JavaScript's `Number()` reads back.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Js(pub f32);
+
+impl Serialize for Js {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let v = self.0;
+        if v.is_finite() {
+            s.serialize_f32(v)
+        } else if v.is_nan() {
+            s.serialize_str("NaN")
+        } else if v > 0.0 {
+            s.serialize_str("Infinity")
+        } else {
+            s.serialize_str("-Infinity")
+        }
+    }
+}
+
+fn js4(v: [f32; 4]) -> [Js; 4] {
+    v.map(Js)
+}
+
+/// What a job's pixels mean: per slot, the case, its path and the plan's note.
+#[derive(Debug, Default)]
+pub struct Layout {
+    slots: Vec<(usize, String, String)>,
+}
+
+/// Cases planned for the es300 path: the answers decided without drawing (Skip), the job, and
+/// where each pixel goes.
+pub struct Built {
+    pub answers: Vec<Option<Answer>>,
+    pub skipped: Vec<Vec<PathSkip>>,
+    pub job: Job,
+    pub layout: Layout,
+}
+
+fn texture_of(info: &GlInfo, case: &Case) -> Result<Texture, GlError> {
+    let t = &case.texture;
+    let (ifmt, fmt, ty, bpt) = texture::transfer_for(case);
+    let mut levels = Vec::with_capacity(t.levels.len());
+    for (i, lvl) in t.levels.iter().enumerate() {
+        let bytes = texture::level_bytes(t.format, lvl)?;
+        levels.push(Level {
+            level: t.base_level + i as u32,
+            ifmt,
+            fmt,
+            ty,
+            bpt,
+            width: lvl.width,
+            height: lvl.height,
+            layers: lvl.layers,
+            data: base64::engine::general_purpose::STANDARD.encode(bytes),
+        });
+    }
+    let params = texture::tex_params(info, case)
+        .into_iter()
+        .map(|p| {
+            let (int, float) = match p.value {
+                ParamValue::Int(v) => (Some(v), None),
+                ParamValue::Float(v) => (None, Some(Js(v))),
+                ParamValue::Floats(_) => (None, None),
+            };
+            Param {
+                pname: p.pname,
+                call: p.call(),
+                int,
+                float,
+            }
+        })
+        .collect();
+    let upload = match t.target {
+        Target::Cube => "cube",
+        Target::T2dArray | Target::CubeArray => "3d",
+        _ => "2d",
+    };
+    Ok(Texture {
+        target: t.target.gl(),
+        upload,
+        levels,
+        params,
+    })
+}
+
+/// Plans every case's paths and builds the job. At most [`MAX_SLOTS`] paths in all (the caller
+/// splits larger batches).
+pub fn build(info: &GlInfo, cases: &[Case]) -> Built {
+    let mut b = Built {
+        answers: vec![None; cases.len()],
+        skipped: vec![Vec::new(); cases.len()],
+        job: Job {
+            programs: vec![],
+            slots: 0,
+            groups: vec![],
+        },
+        layout: Layout::default(),
+    };
+    let mut planned: Vec<(usize, Vec<Plan>)> = Vec::new();
+    for (ci, case) in cases.iter().enumerate() {
+        let mut plans = Vec::new();
+        for &path in &case.api {
+            match paths::plan_with(path, case, info.form) {
+                Ok(p) => plans.push(p),
+                Err(reason) => b.skipped[ci].push(PathSkip {
+                    api: path.key().to_string(),
+                    reason,
+                }),
+            }
+        }
+        if plans.is_empty() {
+            let why: Vec<String> = b.skipped[ci].drain(..).map(|s| s.reason).collect();
+            b.answers[ci] = Some(Answer::Skip(why.join("; ")));
+        } else {
+            planned.push((ci, plans));
+        }
+    }
+    let mut sources: Vec<[String; 2]> = Vec::new();
+    for (ci, plans) in planned {
+        let case = &cases[ci];
+        let shares = b.job.groups.last().is_some_and(|g| {
+            let first = &cases[g.cases[0]];
+            first.texture == case.texture && first.sampler == case.sampler
+        });
+        if !shares {
+            match texture_of(info, case) {
+                Ok(texture) => b.job.groups.push(Group {
+                    cases: vec![],
+                    texture,
+                    draws: vec![],
+                }),
+                Err(e) => {
+                    b.answers[ci] = Some(Answer::Error(e.to_string()));
+                    continue;
+                }
+            }
+        }
+        let Some(group) = b.job.groups.last_mut() else {
+            continue;
+        };
+        group.cases.push(ci);
+        for plan in plans {
+            let (vs, fs) = shaders::glsl(info, &plan.key, None);
+            let src = [vs, fs];
+            let program = match sources.iter().position(|s| *s == src) {
+                Some(i) => i,
+                None => {
+                    sources.push(src);
+                    sources.len() - 1
+                }
+            };
+            let slot = b.layout.slots.len();
+            b.layout
+                .slots
+                .push((ci, plan.key.path.key().to_string(), plan.note.clone()));
+            group.draws.push(Draw {
+                case: ci,
+                api: plan.key.path.key().to_string(),
+                slot,
+                program,
+                p: js4(plan.p),
+                x: Js(plan.x),
+                dx: js4(plan.dx),
+                dy: js4(plan.dy),
+            });
+        }
+    }
+    b.job.programs = sources;
+    b.job.slots = b.layout.slots.len();
+    b
+}
+
+/// The page's answer to a job: `{pixels: base64, errors: {case: message}}`.
+#[derive(Debug, serde::Deserialize)]
+pub struct PageAnswer {
+    pixels: String,
+    #[serde(default)]
+    errors: std::collections::BTreeMap<usize, String>,
+}
+
+/// The answers of a built job from the page's answer, one per case in order.
+pub fn answers(mut built: Built, cases: &[Case], page: PageAnswer) -> Vec<Answer> {
+    let bytes = match base64::engine::general_purpose::STANDARD.decode(page.pixels.as_bytes()) {
+        Ok(b) => b,
+        Err(e) => {
+            let msg = format!("page answer: pixels are not base64 ({e})");
+            return built
+                .answers
+                .into_iter()
+                .map(|a| a.unwrap_or_else(|| Answer::Error(msg.clone())))
+                .collect();
+        }
+    };
+    let px: Vec<[f32; 4]> = bytes
+        .chunks_exact(16)
+        .map(|c| {
+            let f = |i: usize| f32::from_ne_bytes([c[i], c[i + 1], c[i + 2], c[i + 3]]);
+            [f(0), f(4), f(8), f(12)]
+        })
+        .collect();
+    for (ci, msg) in page.errors {
+        if let Some(a) = built.answers.get_mut(ci) {
+            *a = Some(Answer::Error(msg));
+        }
+    }
+    let mut results: Vec<Vec<PathResult>> = vec![Vec::new(); cases.len()];
+    for (slot, (ci, api, note)) in built.layout.slots.into_iter().enumerate() {
+        if built.answers[ci].is_some() {
+            continue;
+        }
+        let v = px.get(slot).copied().unwrap_or([f32::NAN; 4]);
+        results[ci].push(PathResult {
+            api,
+            rgba: Rgba(v.map(|c| c as f64)),
+            stored: None,
+            note: Some(note),
+        });
+    }
+    built
+        .answers
+        .into_iter()
+        .zip(results)
+        .zip(built.skipped)
+        .map(|((a, r), skipped)| a.unwrap_or(Answer::Observation(r, skipped)))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests;

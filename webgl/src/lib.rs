@@ -1,0 +1,26 @@
+//! shadowcheck-webgl: the `webgl:chromium` worker. WebGL 2.0 in headless Chromium (ANGLE's
+//! Vulkan back end on SwiftShader), driven over the Chrome DevTools Protocol pipe
+//! ([`browser`]), running the GL worker's `es300` path: the same lookup plans, shader text,
+//! texture bytes and TexParameter calls (shadowcheck-gl), made by a small page script
+//! (`page.js`) in batches ([`job`]). The [`worker`] answers runner/PROTOCOL.md through the GL
+//! worker's serve loop; the runner starts it as `shadowcheck webgl-worker`.
+
+pub mod browser;
+pub mod job;
+pub mod worker;
+
+#[derive(Debug, thiserror::Error)]
+pub enum WebglError {
+    /// The browser is not installed or cannot be started.
+    #[error("{0}")]
+    NoBrowser(String),
+    /// The browser or its DevTools pipe failed.
+    #[error("browser: {0}")]
+    Browser(String),
+    /// The page script threw.
+    #[error("page: {0}")]
+    Page(String),
+    /// The page has no usable WebGL 2.0 context.
+    #[error("WebGL: {0}")]
+    Context(String),
+}

@@ -1,0 +1,238 @@
+// The WebGL 2.0 side of shadowcheck's webgl:chromium backend. Evaluated once in about:blank; the
+// worker (shadowcheck-webgl, job.rs) then calls shadowcheck.run(job) per batch. Everything a case
+// needs is decided on the Rust side by the GL worker's own code (texture bytes, TexParameter list,
+// es300 shader text, uniform values); this page only makes the WebGL calls, one pixel of an
+// RGBA32F framebuffer per (case, path), and reads the pixels back once per job.
+globalThis.shadowcheck = (() => {
+  const FB = 256;
+  let gl = null;
+  let fbo = null;
+  let vao = null;
+  const programs = new Map();
+
+  const ERRORS = {
+    0x0500: "GL_INVALID_ENUM",
+    0x0501: "GL_INVALID_VALUE",
+    0x0502: "GL_INVALID_OPERATION",
+    0x0505: "GL_OUT_OF_MEMORY",
+    0x0506: "GL_INVALID_FRAMEBUFFER_OPERATION",
+    0x9242: "GL_CONTEXT_LOST_WEBGL",
+  };
+  const errorName = (e) => ERRORS[e] || "GL error 0x" + e.toString(16).toUpperCase();
+
+  // Throws "<what> raised <error>" for a pending error, as the GL worker's texture::check does.
+  function check(what) {
+    const e = gl.getError();
+    if (e !== gl.NO_ERROR) {
+      while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+      throw new Error(what + " raised " + errorName(e));
+    }
+  }
+
+  function bytes(b64) {
+    const s = atob(b64);
+    const u8 = new Uint8Array(s.length);
+    for (let i = 0; i < s.length; i++) u8[i] = s.charCodeAt(i);
+    return u8;
+  }
+
+  function base64(u8) {
+    let s = "";
+    for (let i = 0; i < u8.length; i += 0x8000) {
+      s += String.fromCharCode.apply(null, u8.subarray(i, i + 0x8000));
+    }
+    return btoa(s);
+  }
+
+  // The typed array WebGL 2.0 requires for a pixel type (WebGL 2.0 §3.7.6 table).
+  function view(u8, type) {
+    const buf = u8.buffer.slice(u8.byteOffset, u8.byteOffset + u8.byteLength);
+    switch (type) {
+      case gl.UNSIGNED_BYTE: return new Uint8Array(buf);
+      case gl.UNSIGNED_SHORT: return new Uint16Array(buf);
+      case gl.UNSIGNED_INT:
+      case gl.UNSIGNED_INT_24_8: return new Uint32Array(buf);
+      case gl.FLOAT: return new Float32Array(buf);
+      default: throw new Error("no typed array for pixel type 0x" + type.toString(16));
+    }
+  }
+
+  function init() {
+    const canvas = document.createElement("canvas");
+    canvas.width = 1;
+    canvas.height = 1;
+    gl = canvas.getContext("webgl2", { antialias: false, depth: false, stencil: false });
+    if (!gl) return { error: "no WebGL 2.0 context" };
+    const enabled = [];
+    for (const e of ["EXT_color_buffer_float", "WEBGL_stencil_texturing", "WEBGL_debug_renderer_info"]) {
+      if (gl.getExtension(e)) enabled.push(e);
+    }
+    if (!enabled.includes("EXT_color_buffer_float")) {
+      return { error: "EXT_color_buffer_float not exposed: no RGBA32F render target to read results from" };
+    }
+    const color = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, color);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, FB, FB, 0, gl.RGBA, gl.FLOAT, null);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    fbo = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, color, 0);
+    const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
+    if (status !== gl.FRAMEBUFFER_COMPLETE) {
+      return { error: "RGBA32F framebuffer incomplete (status 0x" + status.toString(16) + ")" };
+    }
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const vbo = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, vbo);
+    gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 3, -1, -1, 3]), gl.STATIC_DRAW);
+    gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 8, 0);
+    gl.enableVertexAttribArray(0);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    gl.pixelStorei(gl.PACK_ALIGNMENT, 1);
+    gl.disable(gl.DITHER);
+    check("framebuffer setup");
+    const dbg = enabled.includes("WEBGL_debug_renderer_info") ? gl.getExtension("WEBGL_debug_renderer_info") : null;
+    return {
+      version: gl.getParameter(gl.VERSION),
+      glsl: gl.getParameter(gl.SHADING_LANGUAGE_VERSION),
+      renderer: dbg ? gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
+      vendor: dbg ? gl.getParameter(dbg.UNMASKED_VENDOR_WEBGL) : gl.getParameter(gl.VENDOR),
+      extensions: gl.getSupportedExtensions(),
+      enabled: enabled,
+    };
+  }
+
+  function program(src) {
+    const key = src[0] + "\u0000" + src[1];
+    let p = programs.get(key);
+    if (p) return p;
+    const shader = (type, text) => {
+      const s = gl.createShader(type);
+      gl.shaderSource(s, text);
+      gl.compileShader(s);
+      if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
+        throw new Error("shader compilation failed: " + gl.getShaderInfoLog(s));
+      }
+      return s;
+    };
+    const prog = gl.createProgram();
+    gl.attachShader(prog, shader(gl.VERTEX_SHADER, src[0]));
+    gl.attachShader(prog, shader(gl.FRAGMENT_SHADER, src[1]));
+    gl.bindAttribLocation(prog, 0, "a_pos");
+    gl.linkProgram(prog);
+    if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) {
+      throw new Error("program link failed: " + gl.getProgramInfoLog(prog));
+    }
+    const u = (n) => gl.getUniformLocation(prog, n);
+    p = { prog, u_p: u("u_p"), u_x: u("u_x"), u_dx: u("u_dx"), u_dy: u("u_dy"), u_c: u("u_c") };
+    gl.useProgram(prog);
+    const t = u("u_tex");
+    if (t !== null) gl.uniform1i(t, 0);
+    programs.set(key, p);
+    return p;
+  }
+
+  // Creates, uploads and parameterizes the texture of a group (texture.rs: create + set_state).
+  function texture(t) {
+    const tex = gl.createTexture();
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(t.target, tex);
+    for (const l of t.levels) {
+      const data = bytes(l.data);
+      if (t.upload === "cube") {
+        const face = l.width * l.height * l.bpt;
+        for (let f = 0; f < 6; f++) {
+          const part = data.subarray(f * face, (f + 1) * face);
+          if (part.length !== face) throw new Error("cube level has fewer than 6 faces");
+          gl.texImage2D(gl.TEXTURE_CUBE_MAP_POSITIVE_X + f, l.level, l.ifmt, l.width, l.height, 0, l.fmt, l.type, view(part, l.type));
+        }
+      } else if (t.upload === "3d") {
+        gl.texImage3D(t.target, l.level, l.ifmt, l.width, l.height, l.layers, 0, l.fmt, l.type, view(data, l.type));
+      } else {
+        gl.texImage2D(t.target, l.level, l.ifmt, l.width, l.height, 0, l.fmt, l.type, view(data, l.type));
+      }
+    }
+    check("texture upload (glTexImage*)");
+    // getError is a synchronous round trip to the GPU process: one check for all the calls, and
+    // only when that finds an error, the calls again one by one to name the one that raised it
+    // (setting a parameter twice to the same value changes nothing).
+    const setParams = (each) => {
+      for (const p of t.params) {
+        if (p.int !== undefined) gl.texParameteri(t.target, p.pname, p.int);
+        else if (p.float !== undefined) gl.texParameterf(t.target, p.pname, Number(p.float));
+        else throw new Error(p.call + ": WebGL 2.0 has no vector TexParameter");
+        if (each) check(p.call);
+      }
+    };
+    setParams(false);
+    const e = gl.getError();
+    if (e !== gl.NO_ERROR) {
+      while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+      setParams(true);
+      throw new Error("glTexParameter* raised " + errorName(e));
+    }
+    return tex;
+  }
+
+  function draw(d, src) {
+    const p = program(src);
+    const x = d.slot % FB;
+    const y = Math.floor(d.slot / FB);
+    gl.viewport(x, y, 1, 1);
+    gl.useProgram(p.prog);
+    // Numbers, or "Infinity" / "-Infinity" / "NaN" (job.rs, Js).
+    gl.uniform4fv(p.u_p, d.p.map(Number));
+    gl.uniform1f(p.u_x, Number(d.x));
+    gl.uniform4fv(p.u_dx, d.dx.map(Number));
+    gl.uniform4fv(p.u_dy, d.dy.map(Number));
+    gl.uniform2f(p.u_c, x + 0.5, y + 0.5);
+    gl.bindVertexArray(vao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+
+  // job: {programs: [[vs, fs]], slots, groups: [{cases: [i], texture: {...}, draws: [{case, api,
+  // slot, program, p, x, dx, dy}]}]}. Answer: {pixels: base64 of slots x RGBA32F, errors: {case:
+  // message}}; a pixel no draw wrote stays -1.
+  function run(job) {
+    const errors = {};
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+    gl.viewport(0, 0, FB, FB);
+    gl.clearColor(-1, -1, -1, -1);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+    for (const g of job.groups) {
+      while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+      let tex;
+      try {
+        tex = texture(g.texture);
+      } catch (e) {
+        for (const c of g.cases) errors[c] = e.message;
+        continue;
+      }
+      for (const d of g.draws) {
+        if (errors[d.case] !== undefined) continue;
+        try {
+          draw(d, job.programs[d.program]);
+        } catch (e) {
+          errors[d.case] = d.api + ": " + e.message;
+        }
+      }
+      try {
+        check("drawing");
+      } catch (e) {
+        for (const c of g.cases) if (errors[c] === undefined) errors[c] = e.message;
+      }
+      gl.deleteTexture(tex);
+    }
+    const rows = Math.max(1, Math.ceil(job.slots / FB));
+    const px = new Float32Array(FB * rows * 4);
+    gl.readPixels(0, 0, FB, rows, gl.RGBA, gl.FLOAT, px);
+    check("glReadPixels");
+    return { pixels: base64(new Uint8Array(px.buffer, 0, job.slots * 16)), errors };
+  }
+
+  return { init, run };
+})();
+"loaded";

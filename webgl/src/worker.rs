@@ -1,0 +1,206 @@
+//! The `webgl:chromium` worker: starts the browser, loads the page, declares what WebGL 2.0 can
+//! run, and answers batches through the GL worker's protocol loop ([`shadowcheck_gl::worker::serve`]).
+
+use super::browser::Browser;
+use super::job;
+use super::WebglError;
+use serde::Deserialize;
+use shadowcheck_gl::draw::Answer;
+use shadowcheck_gl::names::LookupForm;
+use shadowcheck_gl::paths::GlInfo;
+use shadowcheck_gl::worker::Serve;
+use shadowcheck_gl::ContextApi;
+use shadowcheck_model::{ApiPath, Case, Format, Spec, Target};
+use shadowcheck_protocol::{Capabilities, Hello, Support, PROTOCOL_VERSION};
+
+/// The backend's name.
+pub const NAME: &str = "webgl:chromium";
+
+/// The page script (evaluated once per browser).
+const PAGE_JS: &str = include_str!("page.js");
+
+/// Cases per `Runtime.evaluate` (one read-back each).
+pub const JOB_CASES: usize = 64;
+
+/// Targets of WebGL 2.0 (OpenGL ES 3.0): no 1D, rectangle or cube-map-array textures.
+pub const TARGETS: [Target; 3] = [Target::T2d, Target::Cube, Target::T2dArray];
+
+/// Formats whose texels WebGL 2.0 can upload from the fixture: not DEPTH_COMPONENT32 (no ES
+/// format), not unsized DEPTH_COMPONENT (ES 3.0 Table 3.2 has no unsized depth format), and not
+/// DEPTH32F_STENCIL8: WebGL 2.0 §3.7.6 (texImage2D/texImage3D) accepts type
+/// FLOAT_32_UNSIGNED_INT_24_8_REV only with null pixels (INVALID_OPERATION otherwise).
+pub const FORMATS: [Format; 5] = [
+    Format::D16,
+    Format::D24,
+    Format::D24S8,
+    Format::D32f,
+    Format::R8,
+];
+
+/// What `shadowcheck.init()` answers.
+#[derive(Debug, Clone, Deserialize)]
+pub struct PageInfo {
+    #[serde(default)]
+    pub error: Option<String>,
+    #[serde(default)]
+    pub version: String,
+    #[serde(default)]
+    pub glsl: String,
+    #[serde(default)]
+    pub renderer: String,
+    #[serde(default)]
+    pub vendor: String,
+    #[serde(default)]
+    pub extensions: Vec<String>,
+    /// Extensions the page enabled (getExtension).
+    #[serde(default)]
+    pub enabled: Vec<String>,
+}
+
+/// A browser with the page loaded.
+pub struct WebglWorker {
+    browser: Browser,
+    pub page: PageInfo,
+    info: GlInfo,
+    caps: Capabilities,
+}
+
+/// The capabilities of a page that enabled `enabled` (WebGL extension names).
+pub fn capabilities(enabled: &[String], extensions: &[String]) -> Capabilities {
+    let stencil = enabled.iter().any(|e| e == "WEBGL_stencil_texturing");
+    Capabilities {
+        specs: Some(vec![Spec::Gles32.key().to_string()]),
+        api: Some(vec![ApiPath::Es300.key().to_string()]),
+        targets: Some(TARGETS.iter().map(|t| t.key().to_string()).collect()),
+        formats: Some(FORMATS.iter().map(|f| f.key().to_string()).collect()),
+        // No TEXTURE_LOD_BIAS, TEXTURE_BORDER_COLOR or CLAMP_TO_BORDER in WebGL 2.0 (ES 3.0);
+        // DEPTH_STENCIL_TEXTURE_MODE with WEBGL_stencil_texturing.
+        features: Some(if stencil {
+            vec!["stencil_texturing".to_string()]
+        } else {
+            vec![]
+        }),
+        extensions: extensions.to_vec(),
+    }
+}
+
+impl WebglWorker {
+    /// Starts the browser, loads the page and creates its WebGL 2.0 context.
+    pub fn start() -> Result<WebglWorker, WebglError> {
+        let mut browser = Browser::start()?;
+        browser.evaluate(PAGE_JS)?;
+        let v = browser.evaluate("shadowcheck.init()")?;
+        let page: PageInfo = serde_json::from_value(v.clone())
+            .map_err(|e| WebglError::Page(format!("init answered {v}: {e}")))?;
+        if let Some(e) = &page.error {
+            return Err(WebglError::Context(e.clone()));
+        }
+        let info = GlInfo {
+            api: ContextApi::Es3,
+            es: true,
+            compat: false,
+            version: (3, 0),
+            glsl: 300,
+            renderer: page.renderer.clone(),
+            version_string: page.version.clone(),
+            extensions: Default::default(),
+            form: LookupForm::Auto,
+        };
+        let caps = capabilities(&page.enabled, &page.extensions);
+        Ok(WebglWorker {
+            browser,
+            page,
+            info,
+            caps,
+        })
+    }
+
+    /// E.g. `webgl:chromium (WebGL 2.0 (OpenGL ES 3.0 Chromium); ANGLE (Google, Vulkan 1.3.0
+    /// (SwiftShader Device (Subzero) ...)); Chrome/156.0.8078.79)`.
+    pub fn display_name(&self) -> String {
+        format!(
+            "{NAME} ({}; {}; {})",
+            self.page.version, self.page.renderer, self.browser.product
+        )
+    }
+
+    pub fn capabilities(&self) -> &Capabilities {
+        &self.caps
+    }
+
+    /// The case as drawn (its supported paths), or why it does not run (the same decision as
+    /// the runner's, [`Capabilities::support`]).
+    fn admit(&self, case: &Case) -> Result<Case, String> {
+        let apis = match self.caps.support(case) {
+            Support::Skip(reason) | Support::NotApplicable(reason) => return Err(reason),
+            Support::Run { apis, .. } => apis,
+        };
+        shadowcheck_model::validate::validate(case).map_err(|e| format!("invalid case: {e}"))?;
+        let mut drawn = case.clone();
+        drawn.api = apis;
+        Ok(drawn)
+    }
+
+    /// Draws up to [`JOB_CASES`] admitted cases in the page.
+    fn run_job(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>> {
+        let built = job::build(&self.info, cases);
+        let arg = serde_json::to_string(&built.job).map_err(std::io::Error::other)?;
+        let v = match self.browser.evaluate(&format!("shadowcheck.run({arg})")) {
+            Ok(v) => v,
+            // The page threw: every case of the job answers with the message.
+            Err(WebglError::Page(msg)) => {
+                return Ok(vec![Answer::Error(format!("page: {msg}")); cases.len()])
+            }
+            // The browser is gone: so is this worker (the runner finds the case that did it).
+            Err(e) => return Err(std::io::Error::other(e.to_string())),
+        };
+        let page: job::PageAnswer = serde_json::from_value(v)
+            .map_err(|e| std::io::Error::other(format!("page answer: {e}")))?;
+        Ok(job::answers(built, cases, page))
+    }
+}
+
+impl Serve for WebglWorker {
+    fn hello(&self) -> Hello {
+        Hello {
+            protocol: PROTOCOL_VERSION,
+            name: Some(self.display_name()),
+            capabilities: self.caps.clone(),
+            wants_expect: false,
+        }
+    }
+
+    fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>> {
+        let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
+        let mut runnable: Vec<Case> = Vec::new();
+        for c in cases {
+            match self.admit(c) {
+                Ok(d) => {
+                    runnable.push(d);
+                    answers.push(None);
+                }
+                Err(reason) => answers.push(Some(Answer::Skip(reason))),
+            }
+        }
+        let mut drawn = Vec::with_capacity(runnable.len());
+        for chunk in runnable.chunks(JOB_CASES) {
+            drawn.extend(self.run_job(chunk)?);
+        }
+        let mut drawn = drawn.into_iter();
+        Ok(answers
+            .into_iter()
+            .map(|a| {
+                a.or_else(|| drawn.next())
+                    .unwrap_or_else(|| Answer::Error("internal: missing answer".into()))
+            })
+            .collect())
+    }
+}
+
+/// `--probe`: start the browser and the page; `ok <name>` or `unavailable: <reason>`.
+pub fn probe_line() -> (bool, String) {
+    match WebglWorker::start() {
+        Ok(w) => (true, format!("ok {}", w.display_name())),
+        Err(e) => (false, format!("unavailable: {e}")),
+    }
+}
