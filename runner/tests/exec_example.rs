@@ -119,7 +119,8 @@ fn swapped_lequal_gequal_fails_with_a_footprint_then_baseline_then_improvement()
         .lines()
         .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
         .filter(|v| v["kind"] == "passed")
-        .map(|v| v["tests"].as_array().unwrap().len())
+        .flat_map(|v| v["cases"].as_array().unwrap().clone())
+        .map(|c| c[1].as_array().unwrap().len())
         .sum();
     assert_eq!(passed_tests, 8, "{jsonl}");
     // (each failure twice: its first record, then the flake re-run's final one)

@@ -32,34 +32,15 @@ fn fixtures() -> PathBuf {
         .join("cases/fixtures")
 }
 
-/// (status, reason) of every test in `dir/results.jsonl`, by test name (the last record wins;
-/// a compact `passed` line holds plain passes of one case).
+/// (status, reason) of every test in `dir/results.jsonl`, by test name, as the one results.jsonl
+/// reader gives them (the last record wins; compact `passed` lines expand to their tests).
 fn results(dir: &std::path::Path) -> BTreeMap<String, (String, Option<String>)> {
-    let text = std::fs::read_to_string(dir.join("results.jsonl")).unwrap();
-    let mut out = BTreeMap::new();
-    for line in text.lines() {
-        let v: serde_json::Value = serde_json::from_str(line).unwrap();
-        if v["kind"] == "passed" {
-            for t in v["tests"].as_array().unwrap() {
-                let test = format!(
-                    "{}@{}",
-                    v["case_id"].as_str().unwrap(),
-                    t[0].as_str().unwrap()
-                );
-                out.insert(test, ("Pass".to_string(), None));
-            }
-        }
-        if v["kind"] == "result" {
-            out.insert(
-                v["test"].as_str().unwrap().to_string(),
-                (
-                    v["status"].as_str().unwrap().to_string(),
-                    v["reason"].as_str().map(str::to_string),
-                ),
-            );
-        }
-    }
-    out
+    shadowcheck_runner::records::read_results(&dir.join("results.jsonl"))
+        .unwrap()
+        .results
+        .into_iter()
+        .map(|r| (r.test, (r.status.to_string(), r.reason)))
+        .collect()
 }
 
 #[test]

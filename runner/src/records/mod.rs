@@ -5,8 +5,8 @@
 //!   [`Status`] and raw [`Outcome`] ([`status`]), its grid [`Tags`] and, for what did not pass, the
 //!   [`ExpectedSummary`];
 //! - [`Line`]: one line of `results.jsonl`: the run's [`RunMeta`] first, then one [`TestResult`]
-//!   or [`LoadError`] per line, passing tests of a case together on one [`Passed`] line
-//!   ([`passed`]: the compact form, unless `--full-report`);
+//!   or [`LoadError`] per line, plain passes of a backend's cases with the same tags together on
+//!   one [`Passed`] line ([`passed`]: the compact form, unless `--full-report`);
 //! - [`Counts`] and [`Summary`]: the totals of a run and the exit code they give ([`exit`], the
 //!   documented exit codes, runner/README.md#exit-codes);
 //! - [`reader`]: the one reader of `results.jsonl` (for `--resume`, `merge`, `report` and
@@ -22,7 +22,7 @@ pub mod reader;
 pub mod status;
 mod summary;
 
-pub use passed::{Passed, PassedTest};
+pub use passed::{Passed, PassedCase};
 pub use reader::{read_results, truncate_partial_line, ReadError, Results, RESULTS_FILE};
 pub use status::{Outcome, Status};
 pub use summary::{Counts, Summary};
@@ -205,7 +205,7 @@ pub enum Line {
     Meta(RunMeta),
     LoadError(LoadError),
     Result(Box<TestResult>),
-    /// Passing tests of one case in the compact form ([`passed`]).
+    /// Plain passes of cases with the same tags, in the compact form ([`passed`]).
     Passed(Passed),
     /// A backend started: how many cases of the selection are not tests of it (spec or API path
     /// not implemented), so `merge` and `report` count them as the run did.

@@ -1,40 +1,35 @@
 //! The compact form results.jsonl keeps passing tests in (deqp-runner's habit: a line for everything,
-//! details only for what did not pass): one [`Passed`] line per (backend, case) holds the case id and
-//! tags once and, per test, its API path, duration and observed value, about 100 bytes a test
-//! instead of the 400 of a full [`TestResult`]. Only a plain Pass with nothing else to say is kept
-//! so ([`Passed::admits`]); `--full-report` writes full records for every test.
+//! details only for what did not pass). One [`Passed`] line holds consecutive plain passes of one
+//! backend whose cases share their [`Tags`] (and fixture file): the tags once, then per case its id
+//! and, per test, its API path and duration; about 50 bytes a test instead of the 400 of a full
+//! [`TestResult`]. Only a plain Pass is kept so ([`Passed::admits`]); its observed value is a
+//! detail and is not kept (`--full-report` writes full records, observed values included, for
+//! every test).
 //!
 //! The reader expands a `Passed` line back into the [`TestResult`]s it stands for
-//! ([`Passed::results`]): nothing a passing record carried is lost (a passing record carries no
-//! expected summary, footprint, reason or re-run) but its duration's digits beyond the third.
+//! ([`Passed::results`]): a passing record carries no expected summary, footprint, reason or
+//! re-run, so only its observed value and its duration's digits beyond the third are not kept.
 
 use super::{Outcome, Status, Tags, TestResult};
 use serde::{Deserialize, Serialize};
 use shadowcheck_model::ApiPath;
-use shadowcheck_protocol::Rgba;
 
-/// Passing tests of one case on one backend.
+/// Plain passes of one backend, their cases sharing tags and fixture file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Passed {
     pub backend: String,
-    pub case_id: String,
     /// The [`Tags`] as one string: `spec target format func min/mag`.
     pub tags: String,
-    /// The fixture path the case came from (as [`TestResult::fixtures`]).
+    /// The fixture path the cases came from (as [`TestResult::fixtures`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fixtures: Option<String>,
-    pub tests: Vec<PassedTest>,
+    pub cases: Vec<PassedCase>,
 }
 
-/// One passing test of a [`Passed`] line, written as a JSON array:
-/// `[api, duration in seconds (three significant digits), observed]` (observed as f32, which
-/// read-back values are).
+/// One case of a [`Passed`] line, written as a JSON array: `[case id, [[api, duration], ...]]`
+/// (duration in seconds, three significant digits).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct PassedTest(
-    pub ApiPath,
-    pub f64,
-    #[serde(default, skip_serializing_if = "Option::is_none")] pub Option<[f32; 4]>,
-);
+pub struct PassedCase(pub String, pub Vec<(ApiPath, f64)>);
 
 /// Why a `Passed` line does not expand.
 #[derive(Debug, thiserror::Error)]
@@ -42,10 +37,10 @@ pub struct PassedTest(
 pub struct BadTags(String);
 
 impl Passed {
-    /// Whether `r` can be kept in the compact form without losing anything: a plain Pass with no
-    /// reason, expected summary, footprint or re-run, and an observed value that is finite and
-    /// exact in f32.
+    /// Whether `r` can be kept in the compact form: a plain Pass with no reason, expected summary,
+    /// footprint or re-run, named `<case id>@<api>`, with tags that hold no space.
     pub fn admits(r: &TestResult) -> bool {
+        let t = &r.tags;
         r.status == Status::Plain(Outcome::Pass)
             && r.outcome == Outcome::Pass
             && r.reason.is_none()
@@ -53,44 +48,36 @@ impl Passed {
             && r.footprint.is_none()
             && r.rerun.is_none()
             && r.test == TestResult::name(&r.case_id, r.api)
-            && r.observed
-                .as_ref()
-                .is_none_or(|o| observed_f32(o).is_some())
-            && !r.tags.spec.contains(' ')
-            && [&r.tags.target, &r.tags.format, &r.tags.func, &r.tags.filter]
+            && [&t.spec, &t.target, &t.format, &t.func, &t.filter]
                 .iter()
-                .all(|t| !t.is_empty() && !t.contains(' '))
+                .all(|s| !s.is_empty() && !s.contains(' '))
     }
 
     /// A line holding `r` alone (which [`Passed::admits`]).
     pub fn first(r: &TestResult) -> Passed {
-        let t = &r.tags;
         let mut p = Passed {
             backend: r.backend.clone(),
-            case_id: r.case_id.clone(),
-            tags: format!(
-                "{} {} {} {} {}",
-                t.spec, t.target, t.format, t.func, t.filter
-            ),
+            tags: tags_text(&r.tags),
             fixtures: r.fixtures.clone(),
-            tests: vec![],
+            cases: vec![],
         };
         p.push(r);
         p
     }
 
-    /// Whether `r` belongs on this line (same backend and case).
+    /// Whether `r` belongs on this line (same backend, tags and fixture file).
     pub fn holds(&self, r: &TestResult) -> bool {
-        self.backend == r.backend && self.case_id == r.case_id && self.fixtures == r.fixtures
+        self.backend == r.backend && self.fixtures == r.fixtures && self.tags == tags_text(&r.tags)
     }
 
-    /// Adds `r` (which [`Passed::admits`] and this line [`Passed::holds`]).
+    /// Adds `r` (which [`Passed::admits`] and this line [`Passed::holds`]): to the last case when
+    /// it is `r`'s, otherwise as a new case.
     pub fn push(&mut self, r: &TestResult) {
-        self.tests.push(PassedTest(
-            r.api,
-            three_digits(r.duration),
-            r.observed.as_ref().and_then(observed_f32),
-        ));
+        let test = (r.api, three_digits(r.duration));
+        match self.cases.last_mut() {
+            Some(PassedCase(id, tests)) if *id == r.case_id => tests.push(test),
+            _ => self.cases.push(PassedCase(r.case_id.clone(), vec![test])),
+        }
     }
 
     /// The full records this line stands for.
@@ -106,27 +93,36 @@ impl Passed {
             func: func.into(),
             filter: filter.into(),
         };
-        Ok(self
-            .tests
-            .into_iter()
-            .map(|PassedTest(api, duration, observed)| TestResult {
-                backend: self.backend.clone(),
-                test: TestResult::name(&self.case_id, api),
-                case_id: self.case_id.clone(),
-                api,
-                status: Status::Plain(Outcome::Pass),
-                outcome: Outcome::Pass,
-                reason: None,
-                duration,
-                tags: tags.clone(),
-                observed: observed.map(|o| Rgba(o.map(f64::from))),
-                expected: None,
-                footprint: None,
-                rerun: None,
-                fixtures: self.fixtures.clone(),
-            })
-            .collect())
+        let mut out = vec![];
+        for PassedCase(case_id, tests) in self.cases {
+            for (api, duration) in tests {
+                out.push(TestResult {
+                    backend: self.backend.clone(),
+                    test: TestResult::name(&case_id, api),
+                    case_id: case_id.clone(),
+                    api,
+                    status: Status::Plain(Outcome::Pass),
+                    outcome: Outcome::Pass,
+                    reason: None,
+                    duration,
+                    tags: tags.clone(),
+                    observed: None,
+                    expected: None,
+                    footprint: None,
+                    rerun: None,
+                    fixtures: self.fixtures.clone(),
+                });
+            }
+        }
+        Ok(out)
     }
+}
+
+fn tags_text(t: &Tags) -> String {
+    format!(
+        "{} {} {} {} {}",
+        t.spec, t.target, t.format, t.func, t.filter
+    )
 }
 
 /// `d` to three significant digits (a duration; results.csv keeps microseconds).
@@ -134,72 +130,78 @@ fn three_digits(d: f64) -> f64 {
     format!("{d:.2e}").parse().unwrap_or(d)
 }
 
-/// `o` as f32, when every channel is finite and exactly an f32 (as RGBA32F read-back is).
-fn observed_f32(o: &Rgba) -> Option<[f32; 4]> {
-    let mut out = [0f32; 4];
-    for (v, slot) in o.0.iter().zip(out.iter_mut()) {
-        let f = *v as f32;
-        if !v.is_finite() || f64::from(f) != *v {
-            return None;
-        }
-        *slot = f;
-    }
-    Some(out)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::records::Line;
+    use shadowcheck_protocol::Rgba;
 
-    fn pass(api: ApiPath, observed: Option<[f64; 4]>) -> TestResult {
+    fn pass(case_id: &str, api: ApiPath) -> TestResult {
         let mut r = TestResult::sample("x", Status::Plain(Outcome::Pass));
-        r.case_id = "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25_1".into();
+        r.case_id = case_id.into();
         r.api = api;
         r.test = TestResult::name(&r.case_id, api);
         r.duration = 1.25e-6;
-        r.observed = observed.map(Rgba);
         r
     }
 
     #[test]
     fn a_passed_line_expands_to_the_records_it_stands_for() {
-        let a = pass(ApiPath::GlslCore, Some([0.45f32 as f64, 0.0, 0.0, 1.0]));
-        let mut b = pass(ApiPath::Es300, None);
-        b.fixtures = Some("f.json".into());
-        assert!(
-            !Passed::first(&a).holds(&b),
-            "another fixture file is another line"
-        );
-        b.fixtures = None;
-        assert!(Passed::admits(&a) && Passed::admits(&b));
+        let c1 = "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25_1";
+        let c2 = "gl46/2d/d16/nearest/lequal/ref=0.75/dt=0.25_1";
+        let a = pass(c1, ApiPath::GlslCore);
+        let b = pass(c1, ApiPath::Es300);
+        let c = pass(c2, ApiPath::GlslCore);
+        assert!([&a, &b, &c].iter().all(|r| Passed::admits(r)));
         let mut p = Passed::first(&a);
-        assert!(p.holds(&b));
-        p.push(&b);
+        for r in [&b, &c] {
+            assert!(p.holds(r));
+            p.push(r);
+        }
         let line = serde_json::to_string(&Line::Passed(p)).unwrap();
-        // The observed f32 0.45 is written as 0.45, not 0.45000001788139343.
-        assert!(line.contains("[0.45,0.0,0.0,1.0]"), "{line}");
+        assert_eq!(
+            line,
+            format!(
+                r#"{{"kind":"passed","backend":"b","tags":"gl46 2d d16 lequal nearest/nearest","cases":[["{c1}",[["core",1.25e-6],["es300",1.25e-6]]],["{c2}",[["core",1.25e-6]]]]}}"#
+            )
+        );
         let Line::Passed(back) = serde_json::from_str(&line).unwrap() else {
             panic!("{line}")
         };
-        assert_eq!(back.results().unwrap(), vec![a, b]);
+        assert_eq!(back.results().unwrap(), vec![a, b, c]);
+    }
+
+    #[test]
+    fn another_backend_tag_or_fixture_file_is_another_line() {
+        let a = pass("c", ApiPath::GlslCore);
+        let p = Passed::first(&a);
+        let mut b = a.clone();
+        b.fixtures = Some("f.json".into());
+        assert!(!p.holds(&b));
+        let mut b = a.clone();
+        b.backend = "other".into();
+        assert!(!p.holds(&b));
+        let mut b = a.clone();
+        b.tags.func = "gequal".into();
+        assert!(!p.holds(&b));
     }
 
     #[test]
     fn what_a_compact_line_cannot_hold_stays_a_full_record() {
-        let mut r = pass(ApiPath::GlslCore, Some([0.1, 0.0, 0.0, 1.0]));
-        assert!(!Passed::admits(&r), "0.1 is not an f32");
-        r.observed = Some(Rgba([f64::NAN, 0.0, 0.0, 1.0]));
-        assert!(!Passed::admits(&r));
-        r.observed = None;
+        let mut r = pass("c", ApiPath::GlslCore);
+        // The observed value of a pass is a detail: admitted, not kept.
+        r.observed = Some(Rgba([0.1, 0.0, 0.0, 1.0]));
         assert!(Passed::admits(&r));
         r.reason = Some("why".into());
         assert!(!Passed::admits(&r));
         r.reason = None;
         r.status = Status::Plain(Outcome::Warn);
         assert!(!Passed::admits(&r));
-        let mut r = pass(ApiPath::GlslCore, None);
+        let mut r = pass("c", ApiPath::GlslCore);
         r.rerun = Some(Outcome::Pass);
+        assert!(!Passed::admits(&r));
+        let mut r = pass("c", ApiPath::GlslCore);
+        r.tags.func = "two words".into();
         assert!(!Passed::admits(&r));
     }
 
@@ -207,10 +209,9 @@ mod tests {
     fn malformed_tags_are_an_error_not_a_panic() {
         let p = Passed {
             backend: "b".into(),
-            case_id: "c".into(),
             tags: "only three parts".into(),
             fixtures: None,
-            tests: vec![PassedTest(ApiPath::FixedFunction, 0.0, None)],
+            cases: vec![PassedCase("c".into(), vec![(ApiPath::FixedFunction, 0.0)])],
         };
         assert!(p.results().is_err());
     }

@@ -5,10 +5,11 @@
 //! when a write fails part-way (a full disk), the file is cut back to its last complete line and the
 //! reporter stops writing (the error is returned once; the run goes on and says so at the end).
 //!
-//! Passing tests are kept in the compact form ([`Passed`]: one line per case and backend, about 100
-//! bytes a test) unless the reporter is asked for full records (`--full-report`). A case's line is
-//! written before any full record of the same backend, so the reader's "last record wins" still sees
-//! records in the order they were made (a crash re-emits a case's earlier passes as Crash).
+//! Plain passes are kept in the compact form ([`Passed`]: consecutive passes of a backend whose cases
+//! share their tags on one line, about 50 bytes a test, observed values left out) unless the
+//! reporter is asked for full records (`--full-report`). A backend's open compact line is written
+//! before any full record of that backend, so the reader's "last record wins" still sees records in
+//! the order they were made (a crash re-emits a case's earlier passes as Crash).
 
 use crate::events::{Event, Reporter};
 use crate::records::{Line, Passed, RunMeta, TestResult};
