@@ -96,6 +96,8 @@ fn both(backend: &str, test: &str, name: &str, extra: &[&str]) -> Option<Both> {
         "--cases",
         &pattern,
         "--no-rerun",
+        // Full records for passes too: the observed value of a pass is a detail.
+        "--full-report",
         "--out",
         run_dir.to_str().unwrap(),
     ]);
