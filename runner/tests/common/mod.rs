@@ -13,15 +13,41 @@ pub fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_shadowcheck"))
 }
 
-/// A fresh, empty directory for one test.
+const TMP_PREFIX: &str = "shadowcheck-runner-test-";
+
+/// A fresh, empty directory for one test. The directories of test processes that have ended are
+/// removed first (once per process), so repeated runs on one machine do not fill its disk.
 pub fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "shadowcheck-runner-test-{}-{name}",
-        std::process::id()
-    ));
+    static SWEEP: std::sync::Once = std::sync::Once::new();
+    SWEEP.call_once(sweep_dead_tmpdirs);
+    let d = std::env::temp_dir().join(format!("{TMP_PREFIX}{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
+}
+
+/// Removes `<temp>/shadowcheck-runner-test-<pid>-*` of every pid that no longer runs (Linux: no
+/// `/proc/<pid>`); directories of running test processes, and anything else, are left alone.
+fn sweep_dead_tmpdirs() {
+    if !Path::new("/proc/self").exists() {
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(std::env::temp_dir()) else {
+        return;
+    };
+    for e in entries.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        let Some(pid) = name
+            .strip_prefix(TMP_PREFIX)
+            .and_then(|rest| rest.split('-').next())
+            .and_then(|p| p.parse::<u32>().ok())
+        else {
+            continue;
+        };
+        if !Path::new(&format!("/proc/{pid}")).exists() {
+            let _ = std::fs::remove_dir_all(e.path());
+        }
+    }
 }
 
 /// The 2x2 D16 texture used by the hand-built cases: stored integers 0, 21845, 43690, 65535, i.e.
