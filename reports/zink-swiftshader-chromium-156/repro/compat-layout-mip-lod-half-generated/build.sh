@@ -1,0 +1,6 @@
+#!/bin/sh
+# shadowcheck reproducer for arb/2d/d24/nmn/lequal/mip/lod=0.5/ref=0.3/levels=0.2_0.8_0.4@glsl120 on egl:zink+swiftshader:compat.
+# Debian 12: apt-get install -y gcc libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri chromium-common
+cd "$(dirname "$0")" || exit 2
+cc -std=c99 -O1 -Wall -o repro repro.c -lEGL -lGL -lm || exit 2
+exec env LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=zink EGL_PLATFORM=surfaceless VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json ./repro
