@@ -1,19 +1,56 @@
 //! Coverage of a set of cases: counts per spec x target x format x filter x func (compare mode NONE
-//! counted as func `none`), the combinations a spec allows that no case covers, and the Markdown
-//! tables printed by `shadowcheck gen` and committed in cases/README.md.
+//! counted as func `none`), the combinations a spec allows that no case covers, the checks per
+//! compiled sampler state on each API path, and the Markdown tables printed by `shadowcheck gen` and
+//! committed in cases/README.md.
 
 use crate::grids::specs;
 use shadowcheck_model::*;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 
 /// (spec, target, format, filter, func key)
 pub type Key = (Spec, Target, Format, Filter, String);
 
+/// What a driver that compiles one shader variant per sampler state (llvmpipe, lavapipe) bakes
+/// into the variant: target, format, compare mode and function, min / mag filters, the three wraps
+/// and the depth modes. Texel values, Dref, coordinates, LOD and border colour are not in it.
+pub type StateKey = (
+    Target,
+    Format,
+    String,
+    Filter,
+    Filter,
+    [Wrap; 3],
+    Option<DepthTextureMode>,
+    Option<DepthStencilMode>,
+);
+
+/// Per API path: the tests (case x path) it runs and the distinct [`StateKey`]s among them.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Density {
+    pub tests: usize,
+    pub states: BTreeSet<StateKey>,
+}
+
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Coverage {
     pub counts: BTreeMap<Key, usize>,
     pub total: usize,
+    pub per_path: BTreeMap<ApiPath, Density>,
+}
+
+fn state_key(c: &Case) -> StateKey {
+    let s = &c.sampler;
+    (
+        c.texture.target,
+        c.texture.format,
+        func_key(s),
+        s.min_filter,
+        s.mag_filter,
+        [s.wrap_s, s.wrap_t, s.wrap_r],
+        s.depth_texture_mode,
+        s.depth_stencil_mode,
+    )
 }
 
 fn func_key(s: &Sampler) -> String {
@@ -36,6 +73,11 @@ impl Coverage {
             );
             *cov.counts.entry(key).or_default() += 1;
             cov.total += 1;
+            for &api in &c.api {
+                let d = cov.per_path.entry(api).or_default();
+                d.tests += 1;
+                d.states.insert(state_key(c));
+            }
         }
         cov
     }
@@ -125,7 +167,29 @@ impl Coverage {
             }
             s.push('\n');
         }
-        let _ = writeln!(s, "Total: {} cases.", self.total);
+        let _ = writeln!(s, "Total: {} cases.\n", self.total);
+        s.push_str(&self.density_markdown());
+        s
+    }
+
+    /// Checks per compiled sampler state on each API path: tests, distinct [`StateKey`]s, and
+    /// tests per state (what a driver compiling one variant per state gets for each compilation).
+    pub fn density_markdown(&self) -> String {
+        let mut s = String::from(
+            "#### Checks per compiled sampler state
+
+",
+        );
+        s.push_str("State = target, format, compare mode/func, min/mag filters, wraps, depth modes (what llvmpipe and lavapipe bake into a shader variant).
+
+");
+        s.push_str(
+            "| API path | tests | distinct states | tests per state |\n|---|---:|---:|---:|\n",
+        );
+        for (api, d) in &self.per_path {
+            let per = d.tests as f64 / d.states.len().max(1) as f64;
+            let _ = writeln!(s, "| {api} | {} | {} | {per:.1} |", d.tests, d.states.len());
+        }
         s
     }
 

@@ -234,6 +234,33 @@ fn default_covers_every_allowed_combination() {
     }
 }
 
+/// Checks per compiled state: a case counts once per API path it lists; cases that differ only in
+/// values (Dref, texels) share a state, a different wrap is another state.
+#[test]
+fn density_counts_tests_and_distinct_states_per_path() {
+    let cases = default_unfilled();
+    let base = cases
+        .iter()
+        .find(|c| c.api.len() >= 2 && c.texture.target == Target::T2d)
+        .expect("a 2D case on two API paths");
+    let mut same_state = base.clone();
+    same_state.id.push_str("/other-values");
+    same_state.lookup.dref /= 2.0;
+    let mut other_wrap = base.clone();
+    other_wrap.id.push_str("/other-wrap");
+    other_wrap.sampler.wrap_s = if base.sampler.wrap_s == Wrap::Repeat {
+        Wrap::ClampToEdge
+    } else {
+        Wrap::Repeat
+    };
+    let cov = Coverage::of([base, &same_state, &other_wrap]);
+    for api in &base.api {
+        let d = &cov.per_path[api];
+        assert_eq!((d.tests, d.states.len()), (3, 2), "{api}");
+    }
+    assert!(cov.density_markdown().contains("| 3 | 2 | 1.5 |"));
+}
+
 #[test]
 fn readme_coverage_table_is_current() {
     let readme = std::fs::read_to_string(crate_dir().join("README.md")).unwrap();
