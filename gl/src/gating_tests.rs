@@ -24,34 +24,11 @@ fn info(api: ContextApi, version: (u32, u32), glsl: u32, exts: &[&str]) -> GlInf
 
 fn case(spec: Spec, api: ApiPath, target: Target, format: Format) -> Case {
     let layers = if target.is_cube() { 6 } else { 1 };
-    Case {
-        id: "t".into(),
-        spec,
-        api: vec![api],
-        texture: Texture {
-            target,
-            format,
-            base_level: 0,
-            levels: vec![Level {
-                width: 2,
-                height: 2,
-                layers,
-                depth: Texels::Unorm(vec![0; 4 * layers as usize]),
-                stencil: None,
-            }],
-        },
-        sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
-        lookup: Lookup {
-            coord: [0.5, 0.5, 0.5, 1.0],
-            layer: 0.0,
-            dref: 0.5,
-            projective: false,
-            lod: 0.0,
-            bias: 0.0,
-            offset: [0; 3],
-        },
-        expect: None,
-    }
+    let mut c = crate::test_case::case(target, 2, 2, layers);
+    c.spec = spec;
+    c.api = vec![api];
+    c.texture.format = format;
+    c
 }
 
 fn skip_reason(s: Support) -> String {

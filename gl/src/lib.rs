@@ -23,6 +23,8 @@ pub mod paths;
 mod programs;
 pub mod shaders;
 pub mod state;
+#[cfg(test)]
+mod test_case;
 pub mod texture;
 pub mod worker;
 

@@ -87,25 +87,7 @@ fn llvmpipe_es3_known_failures_are_expected_fails_with_its_committed_baseline() 
     let Some(r) = run_with_baseline("egl:llvmpipe:es3", "^gles32/2d/", "baseline-es3") else {
         return;
     };
-    assert_eq!(
-        r.code,
-        0,
-        "exit code {}\nstdout tail: {}\nstderr tail: {}",
-        r.code,
-        tail(&r.stdout),
-        tail(&r.stderr)
-    );
-    let summary = r
-        .stderr
-        .lines()
-        .chain(r.stdout.lines())
-        .find(|l| l.contains("expected fail"))
-        .unwrap_or("")
-        .to_string();
-    assert!(
-        !summary.contains(" 0 expected fail"),
-        "the baseline excused nothing: {summary}"
-    );
+    assert_baselined("egl:llvmpipe:es3", &r);
 }
 
 /// The implementations beyond Mesa: their committed baselines on the 2D ES cases, which hold their
@@ -124,26 +106,30 @@ fn swiftshader_es3_subsets_pass_with_their_committed_baselines() {
         let Some(r) = run_with_baseline_in(reports, backend, "^gles32/2d/", &name) else {
             continue;
         };
-        assert_eq!(
-            r.code,
-            0,
-            "{backend}: exit code {}\nstdout tail: {}\nstderr tail: {}",
-            r.code,
-            tail(&r.stdout),
-            tail(&r.stderr)
-        );
-        let summary = r
-            .stderr
-            .lines()
-            .chain(r.stdout.lines())
-            .find(|l| l.contains("expected fail"))
-            .unwrap_or("")
-            .to_string();
-        assert!(
-            !summary.contains(" 0 expected fail"),
-            "{backend}: the baseline excused nothing: {summary}"
-        );
+        assert_baselined(backend, &r);
     }
+}
+
+/// A run with its committed baseline: exit 0 (all good) and the baseline excused some failures.
+fn assert_baselined(backend: &str, r: &common::Run) {
+    assert_eq!(
+        r.code,
+        0,
+        "{backend}: exit code {}\nstdout tail: {}\nstderr tail: {}",
+        r.code,
+        tail(&r.stdout),
+        tail(&r.stderr)
+    );
+    let summary = r
+        .stderr
+        .lines()
+        .chain(r.stdout.lines())
+        .find(|l| l.contains("expected fail"))
+        .unwrap_or("");
+    assert!(
+        !summary.contains(" 0 expected fail"),
+        "{backend}: the baseline excused nothing: {summary}"
+    );
 }
 
 fn tail(s: &str) -> String {

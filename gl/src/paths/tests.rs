@@ -1,37 +1,6 @@
 //! Unit tests of the per-path plans: lookup forms, P layout, gradients, fixed-function coordinates.
 use super::*;
-use shadowcheck_model::*;
-
-fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
-    Case {
-        id: "t".into(),
-        spec: Spec::Gl46,
-        api: vec![ApiPath::GlslCore],
-        texture: Texture {
-            target,
-            format: Format::D16,
-            base_level: 0,
-            levels: vec![Level {
-                width: w,
-                height: h,
-                layers,
-                depth: Texels::Unorm(vec![0; (w * h * layers) as usize]),
-                stencil: None,
-            }],
-        },
-        sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
-        lookup: Lookup {
-            coord: [0.5, 0.5, 0.5, 1.0],
-            layer: 0.0,
-            dref: 0.5,
-            projective: false,
-            lod: 0.0,
-            bias: 0.0,
-            offset: [0; 3],
-        },
-        expect: None,
-    }
-}
+use crate::test_case::case;
 
 #[test]
 fn glsl_function_availability_follows_the_language_tables() {

@@ -113,11 +113,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         jsonl.event(&Event::LoadError(e))?;
     }
     for (b, n) in &merged.not_applicable {
-        jsonl.event(&Event::BackendStarted {
-            backend: b,
-            tests: 0,
-            not_applicable: *n,
-        })?;
+        jsonl.not_applicable(b, *n)?;
     }
     let not_applicable = merged.not_applicable.values().sum();
     run::sort_results(&mut results);

@@ -109,6 +109,15 @@ impl<S: Store> JsonlReporter<S> {
         self.push(&Line::Result(Box::new(r.clone())))
     }
 
+    /// Records how many cases are not tests of `backend` (a `not_applicable` line) and writes it.
+    pub fn not_applicable(&mut self, backend: &str, cases: usize) -> std::io::Result<()> {
+        self.push(&Line::NotApplicable {
+            backend: backend.to_string(),
+            cases,
+        })?;
+        self.close_and_flush()
+    }
+
     /// Writes everything taken so far (for writers that send no end-of-run event, as `merge`).
     pub fn finish(&mut self) -> std::io::Result<()> {
         self.close_and_flush()
@@ -173,13 +182,7 @@ impl<S: Store> Reporter for JsonlReporter<S> {
                 backend,
                 not_applicable,
                 ..
-            } => {
-                self.push(&Line::NotApplicable {
-                    backend: backend.to_string(),
-                    cases: *not_applicable,
-                })?;
-                self.close_and_flush()
-            }
+            } => self.not_applicable(backend, *not_applicable),
             Event::BatchFinished { .. }
             | Event::BackendFinished { .. }
             | Event::RunFinished { .. } => self.close_and_flush(),
