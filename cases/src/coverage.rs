@@ -3,6 +3,7 @@
 //! compiled sampler state on each API path, and the Markdown tables printed by `shadowcheck gen` and
 //! committed in cases/README.md.
 
+use crate::features::FeatureCounts;
 use crate::grids::specs;
 use shadowcheck_model::*;
 use std::collections::{BTreeMap, BTreeSet};
@@ -37,6 +38,8 @@ pub struct Coverage {
     pub counts: BTreeMap<Key, usize>,
     pub total: usize,
     pub per_path: BTreeMap<ApiPath, Density>,
+    /// Cases per feature of [`crate::features::FEATURES`] and spec.
+    pub features: FeatureCounts,
 }
 
 fn state_key(c: &Case) -> StateKey {
@@ -73,6 +76,7 @@ impl Coverage {
             );
             *cov.counts.entry(key).or_default() += 1;
             cov.total += 1;
+            cov.features.add(c);
             for &api in &c.api {
                 let d = cov.per_path.entry(api).or_default();
                 d.tests += 1;
@@ -168,6 +172,7 @@ impl Coverage {
             s.push('\n');
         }
         let _ = writeln!(s, "Total: {} cases.\n", self.total);
+        s.push_str(&self.features.markdown());
         s.push_str(&self.density_markdown());
         s
     }

@@ -6,7 +6,8 @@
 //! - [`grids`]: the named grids (`smoke`, `default`, `exhaustive`) and [`grids::generate`];
 //! - [`fixtures`]: the versioned fixture file format, its writer and loaders (which re-derive every
 //!   case's `expect` with the linked oracle, `recheck`);
-//! - [`coverage`]: cases per spec x target x format x filter x func;
+//! - [`coverage`]: cases per spec x target x format x filter x func, checks per compiled state;
+//! - [`features`]: cases per feature (mixed filters, per-coordinate wraps, ...) and spec;
 //! - [`markers`]: generated sections of hand-written Markdown (README tables).
 //!
 //! The format is documented in cases/README.md; its JSON Schema is cases/schema/fixture.schema.json.
@@ -14,6 +15,7 @@
 pub mod build;
 pub mod coverage;
 pub mod dsl;
+pub mod features;
 pub mod fixtures;
 pub mod grids;
 pub mod markers;

@@ -262,6 +262,33 @@ fn density_counts_tests_and_distinct_states_per_path() {
 }
 
 #[test]
+fn every_feature_a_spec_defines_has_cases_and_the_predicates_tell_cases_apart() {
+    let cases = default_unfilled();
+    let cov = Coverage::of(&cases);
+    assert_eq!(cov.features.missing(), Vec::<(&str, Spec)>::new());
+    // Each predicate picks some cases and leaves others: no feature row counts everything.
+    for (i, f) in shadowcheck_cases::features::FEATURES.iter().enumerate() {
+        let n: usize = Spec::ALL.iter().map(|s| cov.features.count(i, *s)).sum();
+        assert!(n > 0 && n < cases.len(), "{}: {n}", f.name);
+    }
+    // A hand-made case of each kind is recognised.
+    let base = cases
+        .iter()
+        .find(|c| c.spec == Spec::Gl46 && c.texture.target == Target::T2d)
+        .expect("a gl46 2D case");
+    let mut mixed = base.clone();
+    mixed.sampler.min_filter = Filter::Nearest;
+    mixed.sampler.mag_filter = Filter::Linear;
+    let mut pair = base.clone();
+    pair.sampler.wrap_s = Wrap::Repeat;
+    pair.sampler.wrap_t = Wrap::ClampToEdge;
+    let hits = Coverage::of([&mixed, &pair]).features;
+    assert_eq!(hits.count(0, Spec::Gl46), 1, "mixed filter classes");
+    assert_eq!(hits.count(1, Spec::Gl46), 1, "wrap_s != wrap_t");
+    assert!(cov.markdown().contains("#### Features"));
+}
+
+#[test]
 fn readme_coverage_table_is_current() {
     let readme = std::fs::read_to_string(crate_dir().join("README.md")).unwrap();
     let have = coverage::section(&readme).expect("coverage markers in cases/README.md");

@@ -87,12 +87,15 @@ fn correct_unit_has_no_kill_and_the_lequal_gequal_swap_is_killed() {
 #[test]
 fn a_fault_the_cases_cannot_see_survives_and_its_witness_kills_it() {
     // The smoke cases without CLAMP_TO_BORDER or CLAMP (whose LINEAR footprint reaches the border
-    // too): ignoring the border cannot change any of them.
+    // too) and without cube maps (seamless filtering applies CLAMP_TO_BORDER to reach the adjacent
+    // face, §8.13.1): ignoring the border cannot change any of them.
     let cases: Vec<Case> = smoke()
         .into_iter()
         .filter(|c| {
             let w = [c.sampler.wrap_s, c.sampler.wrap_t, c.sampler.wrap_r];
-            !w.contains(&Wrap::ClampToBorder) && !w.contains(&Wrap::Clamp)
+            !w.contains(&Wrap::ClampToBorder)
+                && !w.contains(&Wrap::Clamp)
+                && !c.texture.target.is_cube()
         })
         .collect();
     assert!(!cases.is_empty());

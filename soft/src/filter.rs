@@ -401,14 +401,15 @@ impl PreparedTexture {
             };
         }
 
+        if let Some(m) = missing {
+            // Cube corner: no unique neighbour; the fourth texel is the average of the three
+            // available texels' values (the recommended method of §8.13.1), and is then compared
+            // like any texel (a comparison yields only the pass or the fail value per texel).
+            raw[m] = (raw.iter().sum::<f32>() - raw[m]) / 3.0;
+        }
         let mut vals = [0.0f32; 4];
         for k in 0..4 {
             vals[k] = self.resolve(st, raw[k], dref);
-        }
-        if let Some(m) = missing {
-            // Cube corner: no unique neighbour; use the average of the three available texels'
-            // values (the recommended method of §8.13.1, applied to the per-texel results).
-            vals[m] = (vals.iter().sum::<f32>() - vals[m]) / 3.0;
         }
         weights[0] * vals[0] + weights[1] * vals[1] + weights[2] * vals[2] + weights[3] * vals[3]
     }

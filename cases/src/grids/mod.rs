@@ -86,6 +86,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
         g = g
             .extend(families::mip(d))
             .extend(families::cube(d))
+            .extend(families::cube_wraps(d))
             .extend(families::layer(d))
             .extend(families::mixfilter(d))
             .extend(families::incomplete(d))

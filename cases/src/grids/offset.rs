@@ -22,14 +22,40 @@ const SIZE: u32 = 4;
 /// Offsets at level 0: small ones, and the extremes every implementation supports (-8, 7).
 const OFFSETS: [[i32; 2]; 6] = [[1, 0], [0, 1], [-1, -1], [2, -1], [-8, 7], [7, -8]];
 
-/// The texel index i + d on a level `n` texels wide under `wrap` (Table 8.20 for the modes used).
+/// The texel index i + d on a level `n` texels wide under `wrap` (Table 8.20 for the modes used;
+/// CLAMP_TO_BORDER reads the border outside the image, see [`hot_and_border`]).
 fn wrapped(i: i64, d: i32, n: u32, wrap: Wrap) -> i64 {
     let n = n as i64;
     let x = i + d as i64;
     match wrap {
         Wrap::Repeat => x.rem_euclid(n),
+        // MIRRORED_REPEAT: (size − 1) − mirror((i mod 2·size) − size), mirror(f) = f or −(1 + f).
+        Wrap::MirroredRepeat => {
+            let m = x.rem_euclid(2 * n);
+            if m < n {
+                m
+            } else {
+                2 * n - 1 - m
+            }
+        }
         _ => x.clamp(0, n - 1),
     }
+}
+
+/// Where the offset lookup from texel (i, j) reads on a `SIZE`×`SIZE` level under `wrap`: the hot
+/// texel, or (CLAMP_TO_BORDER off the image) no hot texel and a hot border.
+fn hot_and_border(i: i64, j: i64, o: [i32; 2], wrap: Wrap) -> (Option<(i64, i64, u32)>, f32) {
+    let inside = |x: i64| (0..SIZE as i64).contains(&x);
+    let (x, y) = (i + o[0] as i64, j + o[1] as i64);
+    if wrap == Wrap::ClampToBorder && !(inside(x) && inside(y)) {
+        return (None, HOT as f32);
+    }
+    let hot = (
+        wrapped(i, o[0], SIZE, wrap),
+        wrapped(j, o[1], SIZE, wrap),
+        0,
+    );
+    (Some(hot), COLD as f32)
 }
 
 /// A `w`×`h`×`layers` level of `format` whose only hot texel is (x, y) of layer `l`.
@@ -82,42 +108,46 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
             (j as f64 + 0.5) / SIZE as f64,
         )
     };
-    // Level 0, NEAREST: from texel (1, 2), every offset, clamped and repeated; LEQUAL and NONE.
+    // Level 0, NEAREST: from texel (1, 2), every offset under every wrap mode of the spec that
+    // moves it (clamp to edge, repeat, mirrored repeat, clamp to border: the offset is added before
+    // the wrap, §8.14.2 (8.10), so a border lookup off the image reads the hot border); LEQUAL and NONE.
     let (i, j) = (1i64, 2i64);
-    for wrap in [Wrap::ClampToEdge, Wrap::Repeat] {
+    let wraps = [
+        Wrap::ClampToEdge,
+        Wrap::Repeat,
+        Wrap::MirroredRepeat,
+        Wrap::ClampToBorder,
+    ];
+    for wrap in wraps.into_iter().filter(|w| d.wraps.contains(w)) {
         for mode in [CompareMode::Compare, CompareMode::None] {
             let c = cell2d(Filter::Nearest, mode);
             for o in OFFSETS {
-                let hot = (
-                    wrapped(i, o[0], SIZE, wrap),
-                    wrapped(j, o[1], SIZE, wrap),
-                    0,
-                );
-                let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, Some(hot))]);
+                let (hot, border) = hot_and_border(i, j, o, wrap);
+                let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, hot)]);
                 let lk = offset_lookup(Target::T2d, centre(i, j, 0.0), SIZE, SIZE, o);
-                out.push(wrap_draft(
+                let mut x = wrap_draft(
                     c,
                     tex,
                     lk,
                     wrap,
                     format!("wrap={wrap}/texel={i}_{j}/offset={}_{}/ref=0.5", o[0], o[1]),
-                ));
+                );
+                if wrap == Wrap::ClampToBorder {
+                    x.sampler.border = [border, 0.0, 0.0, 0.0];
+                }
+                out.push(x);
             }
         }
     }
     // LINEAR (PCF) a quarter texel right of the centre of texel (1, 2): the hot texel (the offset
     // one) weighs 3/4; with the footprint of the offset, 1/4 of the next texel.
-    for wrap in [Wrap::ClampToEdge, Wrap::Repeat] {
+    for wrap in wraps.into_iter().filter(|w| d.wraps.contains(w)) {
         let c = cell2d(Filter::Linear, CompareMode::Compare);
         for o in [[1, 0], [-1, -1], [7, -8]] {
-            let hot = (
-                wrapped(i, o[0], SIZE, wrap),
-                wrapped(j, o[1], SIZE, wrap),
-                0,
-            );
-            let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, Some(hot))]);
+            let (hot, border) = hot_and_border(i, j, o, wrap);
+            let tex = texture(&c, vec![one_hot(c.format, SIZE, SIZE, 1, hot)]);
             let lk = offset_lookup(Target::T2d, centre(i, j, 0.25), SIZE, SIZE, o);
-            out.push(wrap_draft(
+            let mut x = wrap_draft(
                 c,
                 tex,
                 lk,
@@ -126,7 +156,11 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
                     "wrap={wrap}/texel={i}.25_{j}/offset={}_{}/ref=0.5",
                     o[0], o[1]
                 ),
-            ));
+            );
+            if wrap == Wrap::ClampToBorder {
+                x.sampler.border = [border, 0.0, 0.0, 0.0];
+            }
+            out.push(x);
         }
     }
     // Level 1 (2x2) of a 4x4 chain, at s = t = 0.1 (u = v = 0.2): offset +1 reads texel 1 of level
@@ -290,6 +324,23 @@ mod tests {
                     .all(|a| matches!(a, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300)));
             }
         }
+    }
+
+    #[test]
+    fn wrapped_follows_table_8_20_for_mirrored_repeat_and_border_reads_off_the_image() {
+        // 4 texels: ... 1 0 | 0 1 2 3 | 3 2 1 0 | 0 1 ...
+        assert_eq!(wrapped(1, -2, 4, Wrap::MirroredRepeat), 0);
+        assert_eq!(wrapped(1, -3, 4, Wrap::MirroredRepeat), 1);
+        assert_eq!(wrapped(2, 2, 4, Wrap::MirroredRepeat), 3);
+        assert_eq!(wrapped(1, 7, 4, Wrap::MirroredRepeat), 0);
+        assert_eq!(
+            hot_and_border(1, 2, [7, -8], Wrap::ClampToBorder),
+            (None, HOT as f32)
+        );
+        assert_eq!(
+            hot_and_border(1, 2, [1, 0], Wrap::ClampToBorder),
+            (Some((2, 2, 0)), COLD as f32)
+        );
     }
 
     #[test]

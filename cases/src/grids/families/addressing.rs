@@ -123,6 +123,8 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
             }
         }
     }
+    out.extend(wrap_pairs(d));
+    out.extend(rect_wraps(d));
     if d.formats.contains(&Format::D32f) && d.wraps.contains(&Wrap::ClampToBorder) {
         let c = cell(d, Target::T2d, Format::D32f, Filter::Nearest, func);
         let (tex, w, h, _) = pattern_texture(&c);
@@ -171,6 +173,79 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
             x.sampler.wrap_t = Wrap::ClampToBorder;
             x.sampler.border = [border as f32, 0.0, 0.0, 0.0];
             out.push(x);
+        }
+    }
+    out
+}
+
+/// s and t wrapped by different modes (Table 8.20 applies each coordinate's own TEXTURE_WRAP_S /
+/// _T): both coordinates off the image, so a lookup that wraps t by s's mode (or the reverse)
+/// reads other texels; border 1.0 as in [`wrap`], R = 0.5.
+fn wrap_pairs(d: &SpecDims) -> Vec<Draft> {
+    use Wrap::*;
+    let mut out = Vec::new();
+    let fmt = fixed_fmt(d);
+    let pairs = [
+        (Repeat, ClampToEdge),
+        (ClampToEdge, Repeat),
+        (MirroredRepeat, ClampToBorder),
+        (ClampToBorder, MirroredRepeat),
+        (Clamp, Repeat),
+    ];
+    for (ws, wt) in pairs
+        .into_iter()
+        .filter(|(a, b)| d.wraps.contains(a) && d.wraps.contains(b))
+    {
+        for filter in [Filter::Nearest, Filter::Linear] {
+            let c = cell(d, Target::T2d, fmt, filter, main_func(d));
+            let (tex, w, h, _) = pattern_texture(&c);
+            for (s, t) in [(1.25, -0.25), (-0.75, 1.6)] {
+                let mut x = Draft::new(
+                    "wrap",
+                    c,
+                    tex.clone(),
+                    lookup(Target::T2d, At::st(s, t), w, h, 0.5),
+                    format!("wrap_s={ws}/wrap_t={wt}/st={s}_{t}/border=1/ref=0.5"),
+                );
+                x.sampler.wrap_s = ws;
+                x.sampler.wrap_t = wt;
+                x.sampler.border = [1.0, 0.0, 0.0, 0.0];
+                out.push(x);
+            }
+        }
+    }
+    out
+}
+
+/// Rectangle textures with the wrap modes they allow (GL 4.6 §8.10: only the clamp modes; REPEAT
+/// and the mirrored modes are an INVALID_ENUM, which the oracle's `check` rejects): unnormalized
+/// coordinates off the image in s, in t and in both, border 1.0, R = 0.5.
+fn rect_wraps(d: &SpecDims) -> Vec<Draft> {
+    let mut out = Vec::new();
+    if !d.targets.contains(&Target::Rect) {
+        return out;
+    }
+    let fmt = fixed_fmt(d);
+    for wrap in [Wrap::ClampToEdge, Wrap::ClampToBorder, Wrap::Clamp] {
+        if !d.wraps.contains(&wrap) {
+            continue;
+        }
+        for filter in [Filter::Nearest, Filter::Linear] {
+            let c = cell(d, Target::Rect, fmt, filter, main_func(d));
+            let (tex, w, h, _) = pattern_texture(&c);
+            for (s, t) in [(-0.25, 0.25), (1.3, 0.75), (0.25, 1.6), (-0.5, 1.5)] {
+                let mut x = Draft::new(
+                    "wrap",
+                    c,
+                    tex.clone(),
+                    lookup(Target::Rect, At::st(s, t), w, h, 0.5),
+                    format!("wrap={wrap}/st={s}_{t}/border=1/ref=0.5"),
+                );
+                x.sampler.wrap_s = wrap;
+                x.sampler.wrap_t = wrap;
+                x.sampler.border = [1.0, 0.0, 0.0, 0.0];
+                out.push(x);
+            }
         }
     }
     out
@@ -265,6 +340,60 @@ pub fn cube(d: &SpecDims) -> Vec<Draft> {
     out
 }
 
+/// Cube faces with the wrap modes other than CLAMP_TO_EDGE, LINEAR at an edge (s = 0.9) and a
+/// corner (s = t = 0.9) of faces +X and +Z, border 1.0: where cube filtering is seamless the modes
+/// are ignored (GL 4.6 §8.13.1: "If LINEAR filtering is done within a miplevel, always apply wrap
+/// mode CLAMP_TO_BORDER" to reach the adjacent face); where it is not (GL's default), the face is
+/// a 2D image wrapped by the modes (§8.13: "the new s and t are used to find a texture value in the
+/// determined face's two-dimensional image using the rules given in sections 8.14 through 8.15").
+pub fn cube_wraps(d: &SpecDims) -> Vec<Draft> {
+    let mut out = Vec::new();
+    let func = main_func(d);
+    let fmt = fixed_fmt(d);
+    let wraps = [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::ClampToBorder];
+    for &target in d.targets.iter().filter(|t| t.is_cube()) {
+        let n = if target == Target::CubeArray { 2 } else { 1 };
+        let (w, h, layers) = build::dims(target, 2, n);
+        // Texel k of layer l: 0.1 + 0.13 (l mod 6) + 0.02 k, so every face and texel differs.
+        let vals: Vec<f64> = (0..layers)
+            .flat_map(|l| (0..4).map(move |k| 0.1 + 0.13 * (l % 6) as f64 + 0.02 * k as f64))
+            .collect();
+        let cube_index = if target == Target::CubeArray {
+            1.0
+        } else {
+            0.0
+        };
+        for wrap in wraps.into_iter().filter(|w| d.wraps.contains(w)) {
+            let c = cell(d, target, fmt, Filter::Linear, func);
+            let tex = texture(&c, vec![build::level(fmt, w, h, layers, &vals)]);
+            for face in [0u32, 4] {
+                let r = 0.1 + 0.13 * face as f64 + 0.03;
+                for (tag, s, t) in [("edge", 0.9, 0.5), ("corner", 0.9, 0.9)] {
+                    let at = At {
+                        s,
+                        t,
+                        layer: cube_index,
+                        face,
+                    };
+                    let mut x = Draft::new(
+                        "cube",
+                        c,
+                        tex.clone(),
+                        lookup(target, at, w, h, r),
+                        format!("wrap={wrap}/face={face}/{tag}/border=1/ref={}", num(r)),
+                    );
+                    x.sampler.wrap_s = wrap;
+                    x.sampler.wrap_t = wrap;
+                    x.sampler.wrap_r = wrap;
+                    x.sampler.border = [1.0, 0.0, 0.0, 0.0];
+                    out.push(x);
+                }
+            }
+        }
+    }
+    out
+}
+
 /// Array layer selection: layers hold 0.2, 0.8, 0.4 (cube arrays: per cube); the layer coordinate
 /// is rounded (floor(layer + 0.5)) and clamped to [0, d-1] (GL 4.6 §8.14.2).
 pub fn layer(d: &SpecDims) -> Vec<Draft> {
@@ -313,6 +442,49 @@ pub fn layer(d: &SpecDims) -> Vec<Draft> {
                 }
             }
         }
+        // Mipmapped: a 2-level chain with the same values on every level of a layer, λ = 0.5 (both
+        // levels under *_MIPMAP_LINEAR), the layer at its rounding ties: every level reads the same
+        // layer "l = clamp(RNE(r), 0, d_s − 1)" (§8.14.2; footnote 4 allows ⌊r + 1/2⌋ instead).
+        for &filter in d.filters.iter().filter(|f| f.is_mipmap()) {
+            let c = cell(d, target, fmt, filter, func);
+            let chain: Vec<Level> = [2u32, 1]
+                .into_iter()
+                .map(|size| {
+                    let (w, h, layers) = build::dims(target, size, 3);
+                    let per = (w * h) as usize * if target.is_cube() { 6 } else { 1 };
+                    let vals: Vec<f64> = (0..layers as usize * (w * h) as usize)
+                        .map(|i| VALS[i / per])
+                        .collect();
+                    build::level(fmt, w, h, layers, &vals)
+                })
+                .collect();
+            let (w, h, _) = build::dims(target, 2, 3);
+            let tex = texture(&c, chain);
+            for l in [-0.5, 0.5, 1.5, 2.5] {
+                for r in [0.3, 0.6] {
+                    let mut lk = lookup(
+                        target,
+                        At {
+                            s: 0.25,
+                            t: 0.25,
+                            layer: l,
+                            face: 0,
+                        },
+                        w,
+                        h,
+                        r,
+                    );
+                    lk.lod = 0.5;
+                    out.push(Draft::new(
+                        "layer",
+                        c,
+                        tex.clone(),
+                        lk,
+                        format!("layer={l}/lod=0.5/ref={r}/layers={}", nums(&VALS)),
+                    ));
+                }
+            }
+        }
     }
     out
 }
@@ -320,7 +492,8 @@ pub fn layer(d: &SpecDims) -> Vec<Draft> {
 /// Mixed filter classes (GL 4.6 §8.23.1, ES 3.2 §8.20.1: with MAG_FILTER not NEAREST or MIN_FILTER
 /// not NEAREST / NEAREST_MIPMAP_NEAREST, "r may be computed by comparing more than one depth texture
 /// value", whichever filter the lookup ends up using): min NEAREST + mag LINEAR and min LINEAR + mag
-/// NEAREST, each magnified (λ = -1) and minified (λ = 1), on the 2x2 PCF pattern.
+/// NEAREST, each magnified (λ = -1), at the crossover (λ = 0, magnified) and minified (λ = 1), on the
+/// 2x2 PCF pattern.
 pub fn mixfilter(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
@@ -331,7 +504,8 @@ pub fn mixfilter(d: &SpecDims) -> Vec<Draft> {
     ] {
         let c = cell(d, Target::T2d, fmt, min, func);
         let (tex, w, h, _) = pattern_texture(&c);
-        for lod in [-1.0, 1.0] {
+        // λ = 0 is the crossover itself: "less than or equal to zero" magnifies (§8.14.1).
+        for lod in [-1.0, 0.0, 1.0] {
             for r in [0.3, 0.5, 0.7] {
                 let mut lk = lookup(Target::T2d, At::st(0.375, 0.375), w, h, r);
                 lk.lod = lod;

@@ -9,7 +9,7 @@ use shadowcheck_model::*;
 
 mod addressing;
 mod state;
-pub use addressing::{cube, layer, mip, mixfilter, wrap};
+pub use addressing::{cube, cube_wraps, layer, mip, mixfilter, wrap};
 pub use state::{ambient, dtm, incomplete, proj, stencil};
 
 /// A fixed-point depth format of the spec (D24, else D16, else unsized).

@@ -1,11 +1,11 @@
 //! The families that test what the texture state makes of a texel: DEPTH_TEXTURE_MODE,
 //! DEPTH_STENCIL_TEXTURE_MODE, completeness, projective lookups and the fail / ambient value.
 
-use super::super::cells::pattern_texture;
+use super::super::cells::{mip_texture, pattern_texture, LEVELS};
 use super::super::draft::{lookup, Cell, Draft};
 use super::super::specs::SpecDims;
 use super::{cell, fixed_fmt, func_pair, main_func};
-use crate::build::{self, At};
+use crate::build::{self, nums, At};
 use shadowcheck_model::*;
 
 /// DEPTH_TEXTURE_MODE (each value) x format x compare mode, NEAREST 2D, with LEQUAL and GEQUAL
@@ -171,6 +171,71 @@ pub fn proj(d: &SpecDims) -> Vec<Draft> {
                     tex.clone(),
                     lk,
                     format!("q={q}/texel2/ref={r}"),
+                ));
+            }
+        }
+        out.extend(proj_filtered(d, target));
+    }
+    out
+}
+
+/// Projective lookups that filter: LINEAR on the PCF pattern between texels (2 of 4 pass at
+/// R = 0.5), and each mipmapped filter of the spec on the mip chain (levels 0.2, 0.8, 0.4) at
+/// λ = 0.25 and 1.25, R = 0.5 and 0.3. The divide by q happens before the footprint and λ are
+/// computed (GL 4.6 §8.14.1 and (8.10) use the divided coordinates; λ here is the explicit level
+/// of detail, which the divide does not change).
+fn proj_filtered(d: &SpecDims, target: Target) -> Vec<Draft> {
+    let mut out = Vec::new();
+    let fmt = fixed_fmt(d);
+    let func = main_func(d);
+    let divide = |lk: &mut Lookup, q: f64| {
+        for i in 0..3 {
+            lk.coord[i] *= q;
+        }
+        lk.dref *= q;
+        lk.coord[3] = q;
+        lk.projective = true;
+    };
+    let c = cell(d, target, fmt, Filter::Linear, func);
+    let (tex, w, h, _) = pattern_texture(&c);
+    let at = if target.dims() == 1 {
+        At::st(0.375, 0.0)
+    } else {
+        At::st(0.5, 0.5)
+    };
+    for q in [2.0, 0.5] {
+        for r in [0.3, 0.5, 0.7] {
+            let mut lk = lookup(target, at, w, h, r);
+            divide(&mut lk, q);
+            out.push(Draft::new(
+                "proj",
+                c,
+                tex.clone(),
+                lk,
+                format!("q={q}/between/ref={r}"),
+            ));
+        }
+    }
+    if target.is_rect() {
+        return out;
+    }
+    for &filter in d.filters.iter().filter(|f| f.is_mipmap()) {
+        let c = cell(d, target, fmt, filter, func);
+        let (tex, at) = mip_texture(&c);
+        let (w, h) = (tex.levels[0].width, tex.levels[0].height);
+        // Away from the λ = 0.5 rounding tie of the *_MIPMAP_NEAREST filters, so that a path with
+        // implicit derivatives (GLSL 1.20, ARB fp) has one nearest level.
+        for lod in [0.25, 1.25] {
+            for r in [0.3, 0.5] {
+                let mut lk = lookup(target, at, w, h, r);
+                lk.lod = lod;
+                divide(&mut lk, 2.0);
+                out.push(Draft::new(
+                    "proj",
+                    c,
+                    tex.clone(),
+                    lk,
+                    format!("q=2/lod={lod}/ref={r}/levels={}", nums(&LEVELS)),
                 ));
             }
         }

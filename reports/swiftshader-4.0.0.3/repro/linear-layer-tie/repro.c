@@ -6,6 +6,8 @@
  * The round-to-nearest-even alternative of footnote 4 belongs to the NEAREST formula only
  * (clamp(RNE(r), 0, d - 1)), where layer 0 and layer 1 are both conforming at r = 0.5.
  *
+ * The same holds for the mipmapped filters that filter LINEAR within a level (LINEAR_MIPMAP_*):
+ * the third column minifies with textureGrad (lambda = 1, MAX_LEVEL 0).
  * Texture: 1x1x3 DEPTH_COMPONENT24, layer depths 0.2, 0.8, 0.4; compare LEQUAL, Dref = 0.6, so
  * layer 0 gives r = 0 and layer 1 gives r = 1. Build: sh build.sh; run: ./repro
  * This copy of ../../../mesa-22.3.6/repro/linear-layer-tie/ makes its context the EGL 1.4 way
@@ -29,12 +31,17 @@ static GLuint shader(GLenum type, const char *src) {
 
 static const char *VS = "#version 300 es\nvoid main(){ vec2 p = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1)) * 4.0 - 1.0; gl_Position = vec4(p, 0.0, 1.0); }\n";
 static const char *FS = "#version 300 es\nprecision highp float; precision highp sampler2DArrayShadow;\n"
-    "uniform sampler2DArrayShadow t; uniform float layer; uniform float dref; out vec4 o;\n"
-    "void main(){ o = vec4(texture(t, vec4(0.5, 0.5, layer, dref)), 0.0, 0.0, 1.0); }\n";
+    "uniform sampler2DArrayShadow t; uniform float layer; uniform float dref; uniform float grad; out vec4 o;\n"
+    "void main(){ o = vec4(textureGrad(t, vec4(0.5, 0.5, layer, dref), vec2(grad, 0.0), vec2(0.0, grad)), 0.0, 0.0, 1.0); }\n";
 
+/* filter: the min and mag filter; for a mipmapped min filter the mag filter is LINEAR and the
+ * gradients (2 texels per pixel: lambda = 1) make the lookup a minification; MAX_LEVEL 0, so level 0 is
+ * filtered LINEAR within the level (LINEAR_MIPMAP_*). */
 static float lookup(GLuint prog, GLenum filter, float layer) {
+    int mip = filter == GL_LINEAR_MIPMAP_LINEAR || filter == GL_LINEAR_MIPMAP_NEAREST;
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, filter);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, mip ? GL_LINEAR : filter);
+    glUniform1f(glGetUniformLocation(prog, "grad"), mip ? 2.0f : 0.0f);
     glUniform1f(glGetUniformLocation(prog, "layer"), layer);
     glUniform1f(glGetUniformLocation(prog, "dref"), 0.6f);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -83,16 +90,19 @@ int main(void) {
     glUniform1i(glGetUniformLocation(prog, "t"), 0);
 
     const float layers[] = {0.0f, 0.49f, 0.5f, 0.51f, 1.0f, 1.5f, 2.5f};
-    printf("layer r | NEAREST: r (layer) | LINEAR: r (layer) | spec LINEAR layer floor(r+1/2)\n");
+    printf("layer r | NEAREST: r (layer) | LINEAR: r (layer) | LINEAR_MIPMAP_LINEAR, minified: r (layer) | spec LINEAR layer floor(r+1/2)\n");
     int bad = 0;
     for (unsigned i = 0; i < sizeof layers / sizeof *layers; i++) {
         float l = layers[i];
         float n = lookup(prog, GL_NEAREST, l), li = lookup(prog, GL_LINEAR, l);
+        float lml = lookup(prog, GL_LINEAR_MIPMAP_LINEAR, l);
         int spec = (int)(l + 0.5f); if (spec > 2) spec = 2;
         float want = spec == 1 ? 1.0f : 0.0f; /* layer 1 is the only one with 0.6 <= Dt */
-        printf("%7.2f | %4.1f (%s) | %4.1f (%s) | layer %d -> r = %.0f%s\n", l, n, n > 0.5f ? "1" : "0 or 2",
-               li, li > 0.5f ? "1" : "0 or 2", spec, want, (li > 0.5f) != (want > 0.5f) ? "   <-- LINEAR differs from the spec" : "");
-        if ((li > 0.5f) != (want > 0.5f)) bad = 1;
+        int off = (li > 0.5f) != (want > 0.5f), off_mip = (lml > 0.5f) != (want > 0.5f);
+        printf("%7.2f | %4.1f (%s) | %4.1f (%s) | %4.1f (%s) | layer %d -> r = %.0f%s%s\n", l, n, n > 0.5f ? "1" : "0 or 2",
+               li, li > 0.5f ? "1" : "0 or 2", lml, lml > 0.5f ? "1" : "0 or 2", spec, want,
+               off ? "   <-- LINEAR differs from the spec" : "", off_mip ? "   <-- LINEAR_MIPMAP_LINEAR differs from the spec" : "");
+        if (off || off_mip) bad = 1;
     }
     printf("glGetError: 0x%x\n", glGetError());
     return bad;
