@@ -123,6 +123,7 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
             }
         }
     }
+    out.extend(wrap_texel_centres(d));
     out.extend(wrap_pairs(d));
     out.extend(rect_wraps(d));
     if d.formats.contains(&Format::D32f) && d.wraps.contains(&Wrap::ClampToBorder) {
@@ -173,6 +174,54 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
             x.sampler.wrap_t = Wrap::ClampToBorder;
             x.sampler.border = [border as f32, 0.0, 0.0, 0.0];
             out.push(x);
+        }
+    }
+    out
+}
+
+/// LINEAR exactly at texel centres of the repetitions left and right of the image (s = -0.25 and
+/// 1.75 on the 2-texel pattern: α = 0, so one texel alone is the result, §8.14.2), read with compare
+/// NONE (the value names the texel) and compared with R = 0.3, between the texels 0.2 and 0.4 that
+/// a wrong mirrored index would swap (piglit's `texwrap formats` on softpipe: reports/piglit, H2).
+/// ES has no NONE read here: a sized depth texture with COMPARE_MODE NONE and LINEAR is incomplete
+/// there (ES 3.2 §8.17), which the `incomplete` family covers. The border colour is set only for
+/// the modes that read it.
+fn wrap_texel_centres(d: &SpecDims) -> Vec<Draft> {
+    let mut out = Vec::new();
+    let fmt = fixed_fmt(d);
+    let modes: &[CompareMode] = if matches!(d.spec, Spec::Gles32 | Spec::Es2Ext) {
+        &[CompareMode::Compare]
+    } else {
+        &[CompareMode::None, CompareMode::Compare]
+    };
+    for &wrap in d.wraps {
+        for &mode in modes {
+            let c = Cell {
+                mode,
+                ..cell(d, Target::T2d, fmt, Filter::Linear, main_func(d))
+            };
+            let (tex, w, h, _) = pattern_texture(&c);
+            for s in [-0.25, 1.75] {
+                let what = if mode == CompareMode::None {
+                    "read".to_string()
+                } else {
+                    "ref=0.3".to_string()
+                };
+                let mut x = Draft::new(
+                    "wrap",
+                    c,
+                    tex.clone(),
+                    lookup(Target::T2d, At::st(s, 0.25), w, h, 0.3),
+                    format!("wrap={wrap}/centre/st={s}_0.25/{what}"),
+                );
+                x.sampler.wrap_s = wrap;
+                x.sampler.wrap_t = wrap;
+                x.sampler.wrap_r = wrap;
+                if matches!(wrap, Wrap::ClampToBorder | Wrap::Clamp) {
+                    x.sampler.border = [1.0, 0.0, 0.0, 0.0];
+                }
+                out.push(x);
+            }
         }
     }
     out
