@@ -8,7 +8,9 @@ set -e
 OUT=${1:-out/piglit}
 mkdir -p "$OUT"
 # The subset: every test whose name speaks of shadow or depth textures, seamless cubes, sampler
-# objects, stencil texturing or ext_texture_swizzle (506 tests of the `quick` profile).
+# objects, stencil texturing or ext_texture_swizzle (1121 tests of the `quick` profile). Serial (-1): with
+# -j 2 under one Xvfb, 33 tests fail to connect to the X server and report "fail" without running
+# (reports/piglit/README.md). About 22 minutes for the three drivers.
 FILTER='shadow|depth|seamless|sampler_objects|stencil_texturing|ext_texture_swizzle@'
 for drv in llvmpipe softpipe zink; do
   case $drv in
@@ -17,7 +19,7 @@ for drv in llvmpipe softpipe zink; do
   esac
   rm -rf "$OUT/$drv"
   xvfb-run -a -s '-screen 0 1024x768x24' \
-    piglit run -p x11_egl -t "$FILTER" -j 2 --timeout 120 -l dummy quick "$OUT/$drv" || true
+    piglit run -p x11_egl -t "$FILTER" -1 --timeout 120 -l dummy quick "$OUT/$drv" || true
   python3 - "$OUT/$drv/results.json.bz2" > "reports/piglit/$drv.txt" <<'PY'
 import bz2, json, sys
 d = json.load(bz2.open(sys.argv[1]))
