@@ -206,13 +206,22 @@ impl Renderer {
                 gl.use_program(None);
                 let enable = target.gl();
                 gl.enable(enable);
-                l.tex_envi(
-                    legacy::GL_TEXTURE_ENV,
-                    legacy::GL_TEXTURE_ENV_MODE,
-                    legacy::GL_REPLACE as i32,
-                );
-                // REPLACE takes the colour of ALPHA textures and the alpha of LUMINANCE ones from
-                // the fragment: (0,0,0,1) gives the layouts of GL 2.1 Table 3.20.
+                // COMBINE with REPLACE of SOURCE0 = TEXTURE, OPERAND0 = SRC_COLOR / SRC_ALPHA: the
+                // fragment colour is the source colour (Cs, As) of GL 2.1 Table 3.20 in all four
+                // channels (plain REPLACE would take the RGB of an ALPHA texture and the alpha of a
+                // LUMINANCE one from the fragment and hide them: reports/piglit, hole H1).
+                for (pname, value) in [
+                    (legacy::GL_TEXTURE_ENV_MODE, legacy::GL_COMBINE),
+                    (legacy::GL_COMBINE_RGB, legacy::GL_REPLACE),
+                    (legacy::GL_COMBINE_ALPHA, legacy::GL_REPLACE),
+                    (legacy::GL_SOURCE0_RGB, legacy::GL_TEXTURE),
+                    (legacy::GL_SOURCE0_ALPHA, legacy::GL_TEXTURE),
+                    (legacy::GL_OPERAND0_RGB, legacy::GL_SRC_COLOR),
+                    (legacy::GL_OPERAND0_ALPHA, legacy::GL_SRC_ALPHA),
+                ] {
+                    l.tex_envi(legacy::GL_TEXTURE_ENV, pname, value as i32);
+                }
+                // Seen only where texturing is disabled (an incomplete texture, §3.8.10).
                 l.color4f([0.0, 0.0, 0.0, 1.0]);
                 let tc = match target {
                     Target::Cube => [plan.p[0], plan.p[1], plan.p[2], 1.0],

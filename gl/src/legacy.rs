@@ -20,6 +20,19 @@ pub const GL_TRIANGLES: u32 = 0x0004;
 pub const GL_TEXTURE_ENV: u32 = 0x2300;
 pub const GL_TEXTURE_ENV_MODE: u32 = 0x2200;
 pub const GL_REPLACE: u32 = 0x1E01;
+/// TexEnv COMBINE (GL 1.3, ARB_texture_env_combine) and the state that makes it pass the source
+/// colour through: COMBINE_RGB = COMBINE_ALPHA = REPLACE (Arg0), SOURCE0 = TEXTURE, OPERAND0 =
+/// SRC_COLOR / SRC_ALPHA.
+pub const GL_COMBINE: u32 = 0x8570;
+pub const GL_COMBINE_RGB: u32 = 0x8571;
+pub const GL_COMBINE_ALPHA: u32 = 0x8572;
+pub const GL_SOURCE0_RGB: u32 = 0x8580;
+pub const GL_SOURCE0_ALPHA: u32 = 0x8588;
+pub const GL_OPERAND0_RGB: u32 = 0x8590;
+pub const GL_OPERAND0_ALPHA: u32 = 0x8598;
+pub const GL_TEXTURE: u32 = 0x1702;
+pub const GL_SRC_COLOR: u32 = 0x0300;
+pub const GL_SRC_ALPHA: u32 = 0x0302;
 pub const GL_TEXTURE_FILTER_CONTROL: u32 = 0x8500;
 pub const GL_TEXTURE_LOD_BIAS: u32 = 0x8501;
 pub const GL_FRAGMENT_PROGRAM_ARB: u32 = 0x8804;

@@ -15,6 +15,12 @@ pub fn depth_mode(rules: &Rules, m: Option<DepthTextureMode>) -> DepthTextureMod
         .unwrap_or(DepthTextureMode::Luminance)
 }
 
+/// The fixed-function read-out: the worker draws with TexEnv COMBINE, COMBINE_RGB = COMBINE_ALPHA =
+/// REPLACE, SOURCE0 = TEXTURE, OPERAND0 = SRC_COLOR / SRC_ALPHA (ARB_texture_env_combine, GL 2.1
+/// §3.8.13: REPLACE yields Arg0, and these operands make Arg0 the texture's Cs and As), so the
+/// fragment colour is the whole source colour of Table 3.20 / compatibility Table 16.1.
+pub const FF_READ_OUT: &str = "GL 2.1 §3.8.14, Table 3.20; compatibility Table 16.1; read through TexEnv COMBINE REPLACE of (Cs, As) (GL 2.1 §3.8.13)";
+
 /// The layout of r for `api`, with a citation. `incomplete`: the texture is incomplete (r = 0).
 pub fn layout(
     rules: &Rules,
@@ -71,16 +77,15 @@ pub fn layout(
             } else {
                 [R, Zero, Zero, One]
             };
-            if ff {
-                // TexEnv REPLACE with an RGB-type base format keeps the fragment alpha: Av = Af.
-                return (
-                    [base[0], base[1], base[2], Unused],
-                    "GL 2.1 Table 3.22 (REPLACE: Cv = Cs, Av = Af)",
-                );
-            }
+            // Fixed function draws through TexEnv COMBINE / REPLACE of the texture's (Cs, As): the
+            // source colour itself (see [`FF_READ_OUT`]).
             (
                 base,
-                "GL 2.1 Table 3.20 / GL 4.6 Table 15.1 (colour texture, comparison bypassed)",
+                if ff {
+                    "GL 2.1 Table 3.20 (colour texture, comparison bypassed); §3.8.13 COMBINE REPLACE of (Cs, As)"
+                } else {
+                    "GL 2.1 Table 3.20 / GL 4.6 Table 15.1 (colour texture, comparison bypassed)"
+                },
             )
         }
         Kind::Compare | Kind::Depth => {
@@ -99,14 +104,7 @@ pub fn layout(
                     DepthTextureMode::Red => [R, Zero, Zero, One],
                 };
                 if ff {
-                    // TexEnv REPLACE (GL 2.1 Table 3.22): LUMINANCE/RED keep Af, ALPHA keeps Cf.
-                    let v = match m {
-                        DepthTextureMode::Luminance => [R, R, R, Unused],
-                        DepthTextureMode::Intensity => [R, R, R, R],
-                        DepthTextureMode::Alpha => [Unused, Unused, Unused, R],
-                        DepthTextureMode::Red => [R, Zero, Zero, Unused],
-                    };
-                    return (v, "GL 2.1 §3.8.14, Table 3.20, Table 3.22 (REPLACE); compatibility Table 16.1");
+                    return (cs, FF_READ_OUT);
                 }
                 return (
                     cs,

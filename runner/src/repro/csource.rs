@@ -422,7 +422,7 @@ fn draw_fn(s: &Subject, plan: &Plan, tok: &mut Tokens) -> String {
             };
             let _ = write!(
                 out,
-                "static void draw(int glsl) {{\n    (void)glsl;\n    glUseProgram(0);\n    glEnable({target});\n    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);\n    glColor4f(0.0f, 0.0f, 0.0f, 1.0f); /* REPLACE takes what the texture lacks from here */\n{body}    glDisable({target});\n    check(\"fixed-function draw\");\n}}\n\n"
+                "static void draw(int glsl) {{\n    (void)glsl;\n    glUseProgram(0);\n    glEnable({target});\n    /* COMBINE REPLACE of the texture's (Cs, As): the fragment colour is the source colour */\n    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);\n    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_REPLACE);\n    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_REPLACE);\n    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE);\n    glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_TEXTURE);\n    glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_RGB, GL_SRC_COLOR);\n    glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA, GL_SRC_ALPHA);\n    glColor4f(0.0f, 0.0f, 0.0f, 1.0f); /* seen only where texturing is disabled (incomplete) */\n{body}    glDisable({target});\n    check(\"fixed-function draw\");\n}}\n\n"
             );
         }
         ApiPath::ArbFp => {
