@@ -83,6 +83,8 @@ fn layout_char(c: Channel) -> char {
         Channel::One => '1',
         Channel::Unused => '-',
         Channel::ROrZero => 'z',
+        // Gather cases are refused before a program is written (`repro` has no gather draw).
+        Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => 'g',
     }
 }
 
