@@ -60,6 +60,16 @@ impl GlInfo {
             || self.has_ext("GL_OES_texture_border_clamp")
             || self.has_ext("GL_EXT_texture_border_clamp")
     }
+    /// Shadow textureGather / textureGatherOffset / textureGatherOffsets: GLSL 4.00 on desktop GL
+    /// (ARB_texture_gather has no shadow forms), GLSL ES 3.20 on ES (3.10 has no
+    /// textureGatherOffsets; asking for 3.2 keeps the three forms one feature).
+    pub fn gather(&self) -> bool {
+        if self.es {
+            self.at_least(3, 2) && self.glsl >= 320
+        } else {
+            self.glsl >= 400
+        }
+    }
     /// DEPTH_STENCIL_TEXTURE_MODE: GL 4.3 or ARB_stencil_texturing; ES 3.1.
     pub fn stencil_texturing(&self) -> bool {
         if self.es {
@@ -149,6 +159,19 @@ pub enum LodForm {
     Implicit(bool),
     /// Fixed-function: constant texture coordinates (lambda_base = -inf).
     Constant,
+    /// A shadow `textureGather*` (no λ: GLSL 4.60 §8.9.4 "the minification and magnification
+    /// filters are ignored"); `true`: the coordinate still varies across the pixel quad by the
+    /// case's gradients, so that an implementation that wrongly selects a level by λ shows it.
+    Gather(bool),
+}
+
+/// The gather function of a [`ShaderKey`] with [`LodForm::Gather`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum GatherCall {
+    /// `textureGather`, or `textureGatherOffset` with the key's `offset`.
+    Single,
+    /// `textureGatherOffsets` with these four constant offsets (R, G, B, A).
+    Offsets([[i8; 2]; 4]),
 }
 
 /// The shader variant: programs are cached by this key.
@@ -165,6 +188,8 @@ pub struct ShaderKey {
     /// Texel offset (δu, δv) of a `*Offset` lookup (a constant expression in GLSL, so part of
     /// the program); [0, 0]: the plain function.
     pub offset: [i8; 2],
+    /// Shadow gather (`form` is [`LodForm::Gather`]); `None` for every other lookup.
+    pub gather: Option<GatherCall>,
 }
 
 /// One API path's plan for one case.
@@ -269,14 +294,14 @@ pub fn available(
                         matches!(target, T1d | T2d) || (!proj && matches!(target, Cube | T1dArray))
                     }
                     LodForm::Implicit(false) => true,
-                    LodForm::Constant => false,
+                    LodForm::Constant | LodForm::Gather(_) => false,
                 }
             } else {
                 match form {
                     LodForm::Lod => target != Rect && !(proj && es && target != T2d),
                     LodForm::Grad => true,
                     LodForm::Implicit(bias) => !(bias && target == Rect),
-                    LodForm::Constant => false,
+                    LodForm::Constant | LodForm::Gather(_) => false,
                 }
             }
         }
@@ -336,6 +361,9 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
 /// [`plan`] with a preferred lookup function: the preferred form is tried first, then the usual
 /// order (the backend name's fourth part, see `names::LookupForm`).
 pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan, String> {
+    if case.lookup.gather.is_some() {
+        return gather::plan(path, case);
+    }
     let kind = sampler_kind(case);
     let t = case.texture.target;
     let l = &case.lookup;
@@ -417,6 +445,7 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
         proj,
         mode: case.sampler.depth_texture_mode,
         offset,
+        gather: None,
     };
     let folded = matches!(form, LodForm::Lod | LodForm::Grad) && bias != 0.0;
     let lod_eff = if folded { lod + bias } else { lod };
@@ -515,5 +544,6 @@ pub fn gradients(case: &Case, lod: f32) -> ([f32; 4], [f32; 4]) {
     (dx, dy)
 }
 
+mod gather;
 #[cfg(test)]
 mod tests;
