@@ -6,7 +6,7 @@
 //! `u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy`, which is exactly `u_p`
 //! at the written pixel and varies by the gradients across its 2x2 quad.
 
-use super::paths::{GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
+use super::paths::{uses_shadow_lod, GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
 use shadowcheck_model::{ApiPath, Target};
 
 fn sampler_type(kind: SamplerKind, target: Target) -> String {
@@ -93,6 +93,8 @@ fn modern_call(key: &ShaderKey) -> String {
         [a, b] => ("Offset", format!(", ivec2({a}, {b})")),
     };
     match key.form {
+        // EXT_texture_shadow_lod: textureLod(samplerCubeArrayShadow, P, compare, lod).
+        LodForm::Lod if cube_array_shadow => "textureLod(u_tex, p, u_x, u_dx.x)".to_string(),
         LodForm::Lod => format!("texture{s}Lod{o}(u_tex, {p}, u_x{oa})"),
         LodForm::Grad => format!("texture{s}Grad{o}(u_tex, {p}, u_dx{g}, u_dy{g}{oa})"),
         LodForm::Implicit(true) => format!("texture{s}{o}(u_tex, {p}{oa}, u_x)"),
@@ -201,6 +203,17 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
             "",
         ),
         ApiPath::FixedFunction | ApiPath::ArbFp => (String::new(), "in", "o", ""),
+    };
+    // EXT_texture_shadow_lod's overloads: the directive right after #version.
+    let header = if uses_shadow_lod(key) {
+        match header.split_once('\n') {
+            Some((version, rest)) => {
+                format!("{version}\n#extension GL_EXT_texture_shadow_lod : require\n{rest}")
+            }
+            None => header,
+        }
+    } else {
+        header
     };
     let vs = format!(
         "{header}{vin} vec2 a_pos;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); }}\n"
@@ -331,6 +344,42 @@ mod tests {
             modern_call(&k),
             "textureOffset(u_tex, p.xyz, ivec2(-8, 7), u_x)"
         );
+    }
+
+    #[test]
+    fn shadow_lod_overloads_enable_the_extension() {
+        let k = ShaderKey {
+            path: ApiPath::Es300,
+            target: Target::CubeArray,
+            kind: SamplerKind::Shadow,
+            form: LodForm::Lod,
+            proj: false,
+            mode: None,
+            offset: [0, 0],
+            gather: None,
+        };
+        assert_eq!(modern_call(&k), "textureLod(u_tex, p, u_x, u_dx.x)");
+        let info = GlInfo {
+            api: crate::names::ContextApi::Es3,
+            es: true,
+            compat: false,
+            version: (3, 2),
+            glsl: 320,
+            renderer: String::new(),
+            version_string: String::new(),
+            extensions: Default::default(),
+            form: crate::names::LookupForm::Lod,
+        };
+        let (_, fs) = glsl(&info, &k, None);
+        assert!(
+            fs.starts_with("#version 320 es\n#extension GL_EXT_texture_shadow_lod : require\n"),
+            "{fs}"
+        );
+        let k = ShaderKey {
+            target: Target::T2d,
+            ..k
+        };
+        assert!(!glsl(&info, &k, None).1.contains("#extension"));
     }
 
     #[test]

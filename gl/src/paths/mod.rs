@@ -63,6 +63,10 @@ impl GlInfo {
     /// Shadow textureGather / textureGatherOffset / textureGatherOffsets: GLSL 4.00 on desktop GL
     /// (ARB_texture_gather has no shadow forms), GLSL ES 3.20 on ES (3.10 has no
     /// textureGatherOffsets; asking for 3.2 keeps the three forms one feature).
+    /// EXT_texture_shadow_lod (its overloads exist in no GLSL version, the extension's issue 1).
+    pub fn shadow_lod(&self) -> bool {
+        self.has_ext("GL_EXT_texture_shadow_lod")
+    }
     pub fn gather(&self) -> bool {
         if self.es {
             self.at_least(3, 2) && self.glsl >= 320
@@ -248,6 +252,22 @@ pub fn available(
     form: LodForm,
     proj: bool,
 ) -> bool {
+    available_with(path, kind, target, form, proj, false)
+}
+
+/// [`available`], with the overloads of EXT_texture_shadow_lod where `shadow_lod`: "float
+/// textureLod(sampler2DArrayShadow sampler, vec4 P, float lod)", "textureLod(samplerCubeShadow
+/// ...)", "textureLod(samplerCubeArrayShadow sampler, vec4 P, float compare, float lod)" and
+/// "float texture(sampler2DArrayShadow sampler, vec4 P [, float bias])" (the extension, §8.9.2;
+/// GLSL 4.60 itself has none of them, the extension's issue 1).
+pub fn available_with(
+    path: ApiPath,
+    kind: SamplerKind,
+    target: Target,
+    form: LodForm,
+    proj: bool,
+    shadow_lod: bool,
+) -> bool {
     use Target::*;
     let d = dialect(path);
     let es_target = matches!(target, T2d | Cube | T2dArray | CubeArray);
@@ -287,11 +307,18 @@ pub fn available(
         Dialect::Modern | Dialect::Es3 => {
             let es = d == Dialect::Es3;
             if kind == SamplerKind::Shadow {
+                let ext = shadow_lod && !proj;
                 match form {
-                    LodForm::Lod => matches!(target, T1d | T2d) || (!proj && target == T1dArray),
+                    LodForm::Lod => {
+                        matches!(target, T1d | T2d)
+                            || (!proj && target == T1dArray)
+                            || (ext && matches!(target, T2dArray | Cube | CubeArray))
+                    }
                     LodForm::Grad => target != CubeArray,
                     LodForm::Implicit(true) => {
-                        matches!(target, T1d | T2d) || (!proj && matches!(target, Cube | T1dArray))
+                        matches!(target, T1d | T2d)
+                            || (!proj && matches!(target, Cube | T1dArray))
+                            || (ext && target == T2dArray)
                     }
                     LodForm::Implicit(false) => true,
                     LodForm::Constant | LodForm::Gather(_) => false,
@@ -315,6 +342,19 @@ pub fn available(
 /// came with GLSL 4.30, later than the versions the worker writes); ES has offsets on 2D and 2D
 /// arrays only. Cube maps take none.
 pub fn offset_available(path: ApiPath, kind: SamplerKind, target: Target, form: LodForm) -> bool {
+    offset_available_with(path, kind, target, form, false)
+}
+
+/// [`offset_available`], with EXT_texture_shadow_lod's "float textureOffset(sampler2DArrayShadow
+/// sampler, vec4 P, ivec2 offset [, float bias])" and "textureLodOffset(sampler2DArrayShadow ...)"
+/// where `shadow_lod`.
+pub fn offset_available_with(
+    path: ApiPath,
+    kind: SamplerKind,
+    target: Target,
+    form: LodForm,
+    shadow_lod: bool,
+) -> bool {
     use Target::*;
     let shadow = kind == SamplerKind::Shadow;
     let es = path == ApiPath::Es300;
@@ -323,7 +363,11 @@ pub fn offset_available(path: ApiPath, kind: SamplerKind, target: Target, form: 
         T2d => true,
         T1d | T1dArray => !es,
         Rect => !es && matches!(form, LodForm::Grad | LodForm::Implicit(false)),
-        T2dArray => !shadow || form == LodForm::Grad,
+        T2dArray => {
+            !shadow
+                || form == LodForm::Grad
+                || (shadow_lod && matches!(form, LodForm::Lod | LodForm::Implicit(_)))
+        }
     }
 }
 
@@ -361,6 +405,39 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
 /// [`plan`] with a preferred lookup function: the preferred form is tried first, then the usual
 /// order (the backend name's fourth part, see `names::LookupForm`).
 pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan, String> {
+    plan_in(path, case, prefer, false)
+}
+
+/// The plan on a context: [`plan_with`] with the context's preferred form and, where it exposes
+/// EXT_texture_shadow_lod, that extension's overloads ([`GlInfo::shadow_lod`]).
+pub fn plan_for(info: &GlInfo, path: ApiPath, case: &Case) -> Result<Plan, String> {
+    plan_in(path, case, info.form, info.shadow_lod())
+}
+
+/// The lookup function uses an EXT_texture_shadow_lod overload (the shader then enables the
+/// extension): textureLod on 2D-array, cube and cube-array shadow samplers, the bias form on a
+/// 2D-array shadow sampler, textureOffset / textureLodOffset on a 2D-array shadow sampler.
+pub fn uses_shadow_lod(key: &ShaderKey) -> bool {
+    use Target::*;
+    key.kind == SamplerKind::Shadow
+        && !key.proj
+        && key.gather.is_none()
+        && match key.form {
+            LodForm::Lod => matches!(key.target, T2dArray | Cube | CubeArray),
+            LodForm::Implicit(bias) => key.target == T2dArray && (bias || key.offset != [0, 0]),
+            _ => false,
+        }
+}
+
+/// `shadow_lod`: the extension's overloads may be used, and only where the preferred form asks
+/// for them (`prefer` Lod: textureLod; Implicit: the bias form), so that the default order (and
+/// every committed result of it) is what it was without the extension.
+pub fn plan_in(
+    path: ApiPath,
+    case: &Case,
+    prefer: LookupForm,
+    shadow_lod: bool,
+) -> Result<Plan, String> {
     if case.lookup.gather.is_some() {
         return gather::plan(path, case);
     }
@@ -405,11 +482,20 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
     };
     // Stable: the preferred form first, the others in their usual order.
     forms.sort_by_key(|(f, _)| !preferred(f));
+    let ext_for = |f: &LodForm| {
+        shadow_lod
+            && match prefer {
+                LookupForm::Lod => *f == LodForm::Lod,
+                LookupForm::Implicit => matches!(f, LodForm::Implicit(_)),
+                _ => false,
+            }
+    };
     let (form, how) = forms
         .into_iter()
         .find(|(f, _)| {
-            available(path, kind, t, *f, proj)
-                && (offset == [0, 0] || offset_available(path, kind, t, *f))
+            let ext = ext_for(f);
+            available_with(path, kind, t, *f, proj, ext)
+                && (offset == [0, 0] || offset_available_with(path, kind, t, *f, ext))
         })
         .ok_or_else(|| {
             format!(
@@ -447,6 +533,11 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
         offset,
         gather: None,
     };
+    let how = if uses_shadow_lod(&key) {
+        format!("{how} (EXT_texture_shadow_lod overload)")
+    } else {
+        how.to_string()
+    };
     let folded = matches!(form, LodForm::Lod | LodForm::Grad) && bias != 0.0;
     let lod_eff = if folded { lod + bias } else { lod };
     let c = [
@@ -478,6 +569,11 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
         _ => 0.0,
     };
     let (mut dx, mut dy) = gradients(case, lod_eff);
+    if shadow && t == Target::CubeArray && form == LodForm::Lod {
+        // textureLod(samplerCubeArrayShadow, P, compare, lod): the compare value is in `x`, the
+        // LOD goes in dx.x (the gradients are unused by textureLod).
+        dx[0] = lod_eff;
+    }
     if let LodForm::Implicit(_) = form {
         if proj {
             // The function divides by q, so the coordinate must vary q times faster.
@@ -506,7 +602,7 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
         x,
         dx,
         dy,
-        note: how.to_string(),
+        note: how,
     })
 }
 
