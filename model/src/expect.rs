@@ -201,3 +201,40 @@ pub struct Footprint {
     pub dref: f64,
     pub texels: Vec<FootprintTexel>,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn set(v: f64) -> KeyMap<Profile, Acceptance> {
+        Profile::ALL
+            .iter()
+            .map(|&p| (p, Acceptance(vec![Interval::point(v)])))
+            .collect()
+    }
+
+    #[test]
+    fn gather_channels_read_their_own_component() {
+        let e = Expectation {
+            spec_value: Some(1.0),
+            accept: set(1.0),
+            layout: [(ApiPath::GlslCore, Channel::GATHER)].into_iter().collect(),
+            gather: Some([set(1.0), set(1.0), set(0.0), set(0.0)]),
+            implementation_defined: None,
+            citations: vec![],
+        };
+        let judge = |rgba| e.judge(ApiPath::GlslCore, rgba);
+        assert_eq!(judge([1.0, 1.0, 0.0, 0.0]), Some(Judgement::Strictest));
+        // Rotated order, or r written to every channel: outside.
+        assert_eq!(judge([0.0, 1.0, 1.0, 0.0]), Some(Judgement::Outside));
+        assert_eq!(judge([1.0, 1.0, 1.0, 1.0]), Some(Judgement::Outside));
+        // A gather channel with no gather sets accepts nothing.
+        let no_gather = Expectation {
+            gather: None,
+            ..e.clone()
+        };
+        assert!(!no_gather.channel_accepts(Profile::Strict, Channel::G0, 1.0));
+        assert_eq!(Channel::G2.gather_index(), Some(2));
+        assert_eq!(Channel::R.gather_index(), None);
+    }
+}
