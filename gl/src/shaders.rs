@@ -175,9 +175,13 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
             (h, "in", "o", "out vec4 o;\n")
         }
         ApiPath::Es300 => {
-            let mut h = if key.gather.is_some() {
-                // Shadow gather and textureGatherOffsets: GLSL ES 3.20 (`GlInfo::gather`).
-                "#version 320 es\n".to_string()
+            let mut h = if key.gather.is_some() && !cube_array {
+                // Shadow gather: GLSL ES 3.10 (textureGatherOffsets: 3.20, `paths::plan_for`).
+                if info.glsl >= 320 {
+                    "#version 320 es\n".to_string()
+                } else {
+                    "#version 310 es\n".to_string()
+                }
             } else if cube_array && info.glsl >= 320 {
                 "#version 320 es\n".to_string()
             } else if cube_array {

@@ -62,7 +62,7 @@ pub const FEATURES: &[Feature] = &[
     },
     Feature {
         key: "gather",
-        what: "shadow textureGather / textureGatherOffset(s) (GLSL 4.00, GLSL ES 3.10; ARB_texture_gather)",
+        what: "shadow textureGather / textureGatherOffset(s) (GLSL 4.00, GLSL ES 3.10)",
         used_by: |c| c.lookup.gather.is_some(),
     },
 ];

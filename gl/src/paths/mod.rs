@@ -60,16 +60,16 @@ impl GlInfo {
             || self.has_ext("GL_OES_texture_border_clamp")
             || self.has_ext("GL_EXT_texture_border_clamp")
     }
-    /// Shadow textureGather / textureGatherOffset / textureGatherOffsets: GLSL 4.00 on desktop GL
-    /// (ARB_texture_gather has no shadow forms), GLSL ES 3.20 on ES (3.10 has no
-    /// textureGatherOffsets; asking for 3.2 keeps the three forms one feature).
     /// EXT_texture_shadow_lod (its overloads exist in no GLSL version, the extension's issue 1).
     pub fn shadow_lod(&self) -> bool {
         self.has_ext("GL_EXT_texture_shadow_lod")
     }
+    /// Shadow textureGather / textureGatherOffset(s): GLSL 4.00 on desktop GL (ARB_texture_gather
+    /// has no shadow forms), GLSL ES 3.10 on ES (textureGatherOffsets only from GLSL ES 3.20:
+    /// [`plan_for`] skips it below).
     pub fn gather(&self) -> bool {
         if self.es {
-            self.at_least(3, 2) && self.glsl >= 320
+            self.at_least(3, 1) && self.glsl >= 310
         } else {
             self.glsl >= 400
         }
@@ -411,6 +411,14 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
 /// The plan on a context: [`plan_with`] with the context's preferred form and, where it exposes
 /// EXT_texture_shadow_lod, that extension's overloads ([`GlInfo::shadow_lod`]).
 pub fn plan_for(info: &GlInfo, path: ApiPath, case: &Case) -> Result<Plan, String> {
+    let offsets = case
+        .lookup
+        .gather
+        .as_ref()
+        .is_some_and(|g| g.offsets.is_some());
+    if offsets && info.es && info.glsl < 320 {
+        return Err("textureGatherOffsets needs GLSL ES 3.20 (GLSL ES 3.10 has textureGather and textureGatherOffset only)".into());
+    }
     plan_in(path, case, info.form, info.shadow_lod())
 }
 
