@@ -40,7 +40,56 @@ pub struct Coverage {
     pub per_path: BTreeMap<ApiPath, Density>,
     /// Cases per feature of [`crate::features::FEATURES`] and spec.
     pub features: FeatureCounts,
+    /// Shadow gather tests (case x path) per (spec, API path, target, function).
+    pub gather: BTreeMap<GatherKey, usize>,
 }
+
+/// (spec, API path, target, gather function).
+pub type GatherKey = (Spec, ApiPath, Target, GatherFn);
+
+/// The three shadow gather functions (GLSL 4.60 §8.9.4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum GatherFn {
+    Gather,
+    Offset,
+    Offsets,
+}
+
+impl GatherFn {
+    pub const ALL: [GatherFn; 3] = [GatherFn::Gather, GatherFn::Offset, GatherFn::Offsets];
+    pub fn name(self) -> &'static str {
+        match self {
+            GatherFn::Gather => "textureGather",
+            GatherFn::Offset => "textureGatherOffset",
+            GatherFn::Offsets => "textureGatherOffsets",
+        }
+    }
+    fn of(l: &Lookup) -> Option<GatherFn> {
+        let g = l.gather.as_ref()?;
+        Some(if g.offsets.is_some() {
+            GatherFn::Offsets
+        } else if l.offset != [0; 3] {
+            GatherFn::Offset
+        } else {
+            GatherFn::Gather
+        })
+    }
+    /// Whether the function exists for `target` on `api` (cube samplers take no offsets; GLSL ES
+    /// has no rectangle textures).
+    pub fn allowed(self, api: ApiPath, target: Target) -> bool {
+        let targets_ok = matches!(
+            target,
+            Target::T2d | Target::T2dArray | Target::Cube | Target::CubeArray
+        ) || (target == Target::Rect && api == ApiPath::GlslCore);
+        targets_ok && (self == GatherFn::Gather || !target.is_cube())
+    }
+}
+
+/// The (spec, API path) pairs with shadow gather.
+const GATHER_PATHS: [(Spec, ApiPath); 2] = [
+    (Spec::Gl46, ApiPath::GlslCore),
+    (Spec::Gles32, ApiPath::Es300),
+];
 
 fn state_key(c: &Case) -> StateKey {
     let s = &c.sampler;
@@ -81,6 +130,11 @@ impl Coverage {
                 let d = cov.per_path.entry(api).or_default();
                 d.tests += 1;
                 d.states.insert(state_key(c));
+                if let Some(f) = GatherFn::of(&c.lookup) {
+                    *cov.gather
+                        .entry((c.spec, api, c.texture.target, f))
+                        .or_default() += 1;
+                }
             }
         }
         cov
@@ -115,6 +169,54 @@ impl Coverage {
             }
         }
         out
+    }
+
+    /// Every (spec, path, target, gather function) the specs allow with no test.
+    pub fn missing_gather(&self) -> Vec<GatherKey> {
+        let mut out = Vec::new();
+        for (spec, api) in GATHER_PATHS {
+            for &t in specs::dims(spec).targets {
+                for f in GatherFn::ALL.into_iter().filter(|f| f.allowed(api, t)) {
+                    if !self.gather.contains_key(&(spec, api, t, f)) {
+                        out.push((spec, api, t, f));
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The shadow gather table: tests per spec / API path / target and function (`-` where the
+    /// function does not exist for the target).
+    pub fn gather_markdown(&self) -> String {
+        let mut s = String::from("#### Shadow textureGather (tests per API path)\n\n");
+        let names: Vec<&str> = GatherFn::ALL.iter().map(|f| f.name()).collect();
+        let _ = writeln!(s, "| spec | API path | target | {} |", names.join(" | "));
+        let _ = writeln!(s, "|---|---|---|{}", "---:|".repeat(names.len()));
+        for (spec, api) in GATHER_PATHS {
+            for &t in specs::dims(spec).targets {
+                if !GatherFn::Gather.allowed(api, t) {
+                    continue;
+                }
+                let cells: Vec<String> = GatherFn::ALL
+                    .iter()
+                    .map(|f| {
+                        if f.allowed(api, t) {
+                            self.gather
+                                .get(&(spec, api, t, *f))
+                                .copied()
+                                .unwrap_or(0)
+                                .to_string()
+                        } else {
+                            "-".into()
+                        }
+                    })
+                    .collect();
+                let _ = writeln!(s, "| {spec} | {api} | {t} | {} |", cells.join(" | "));
+            }
+        }
+        s.push('\n');
+        s
     }
 
     fn count(&self, k: &Key) -> usize {
@@ -173,6 +275,7 @@ impl Coverage {
         }
         let _ = writeln!(s, "Total: {} cases.\n", self.total);
         s.push_str(&self.features.markdown());
+        s.push_str(&self.gather_markdown());
         s.push_str(&self.density_markdown());
         s
     }

@@ -190,6 +190,9 @@ fn default_covers_every_allowed_combination() {
         missing.len(),
         &missing[..missing.len().min(10)]
     );
+    // Shadow gather: every function on every target and path that has it.
+    let missing = cov.missing_gather();
+    assert!(missing.is_empty(), "gather cells with no test: {missing:?}");
     // And nothing outside what the spec allows.
     for c in &cases {
         let d = specs::dims(c.spec);

@@ -308,7 +308,7 @@ impl Renderer {
             let mut plans = Vec::new();
             let mut skipped = Vec::new();
             for &path in &case.api {
-                match paths::plan_with(path, case, self.info.form) {
+                match paths::plan_for(&self.info, path, case) {
                     Ok(p) => plans.push(p),
                     Err(reason) => skipped.push(PathSkip {
                         api: path.key().to_string(),

@@ -123,3 +123,31 @@ fn gl_2_1_compat_declares_targets_by_extension_and_leaves_glsl_1_30_out() {
         Support::Skip(_)
     ));
 }
+
+#[test]
+fn gather_needs_glsl_400_or_glsl_es_310_and_offsets_glsl_es_320() {
+    let mut g = case(Spec::Gles32, ApiPath::Es300, Target::T2d, Format::D24);
+    g.lookup.gather = Some(Gather { offsets: None });
+    let es30 = declared_capabilities(&info(ContextApi::Es3, (3, 0), 300, &[]));
+    assert!(skip_reason(es30.support(&g)).contains("gather"));
+    let i31 = info(ContextApi::Es3, (3, 1), 310, &[]);
+    let es31 = declared_capabilities(&i31);
+    assert!(matches!(es31.support(&g), Support::Run { .. }));
+    assert!(crate::paths::plan_for(&i31, ApiPath::Es300, &g).is_ok());
+    let mut four = g.clone();
+    four.lookup.gather = Some(Gather {
+        offsets: Some([[0, 1], [1, 1], [1, 0], [0, 0]]),
+    });
+    let why = crate::paths::plan_for(&i31, ApiPath::Es300, &four).unwrap_err();
+    assert!(why.contains("GLSL ES 3.20"), "{why}");
+    let i32 = info(ContextApi::Es3, (3, 2), 320, &[]);
+    assert!(crate::paths::plan_for(&i32, ApiPath::Es300, &four).is_ok());
+    let es32 = declared_capabilities(&i32);
+    assert!(matches!(es32.support(&g), Support::Run { .. }));
+    g.spec = Spec::Gl46;
+    g.api = vec![ApiPath::GlslCore];
+    let core33 = declared_capabilities(&info(ContextApi::Core, (3, 3), 330, &[]));
+    assert!(skip_reason(core33.support(&g)).contains("gather"));
+    let core45 = declared_capabilities(&info(ContextApi::Core, (4, 5), 450, &[]));
+    assert!(matches!(core45.support(&g), Support::Run { .. }));
+}

@@ -6,7 +6,7 @@
 //! `u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy`, which is exactly `u_p`
 //! at the written pixel and varies by the gradients across its 2x2 quad.
 
-use super::paths::{GlInfo, LodForm, SamplerKind, ShaderKey};
+use super::paths::{uses_shadow_lod, GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
 use shadowcheck_model::{ApiPath, Target};
 
 fn sampler_type(kind: SamplerKind, target: Target) -> String {
@@ -50,8 +50,35 @@ fn grad_swizzle(target: Target) -> &'static str {
     }
 }
 
+/// The shadow gather call (GLSL 4.60 / GLSL ES 3.20 §8.9.4): P and refZ split out of `p` (cube
+/// arrays: refZ in `u_x`), then the offset or the four offsets as constant expressions.
+fn gather_call(key: &ShaderKey, call: GatherCall) -> String {
+    let (p, refz) = match key.target {
+        Target::CubeArray => ("p", "u_x"),
+        Target::T2dArray | Target::Cube => ("p.xyz", "p.w"),
+        _ => ("p.xy", "p.z"),
+    };
+    let iv = |o: [i8; 2]| format!("ivec2({}, {})", o[0], o[1]);
+    match call {
+        GatherCall::Offsets(o) => format!(
+            "textureGatherOffsets(u_tex, {p}, {refz}, ivec2[4]({}))",
+            o.map(iv).join(", ")
+        ),
+        GatherCall::Single if key.offset != [0, 0] => {
+            format!(
+                "textureGatherOffset(u_tex, {p}, {refz}, {})",
+                iv(key.offset)
+            )
+        }
+        GatherCall::Single => format!("textureGather(u_tex, {p}, {refz})"),
+    }
+}
+
 /// The lookup call for GLSL >= 1.30 and GLSL ES 3.00.
 fn modern_call(key: &ShaderKey) -> String {
+    if let Some(call) = key.gather {
+        return gather_call(key, call);
+    }
     let s = if key.proj { "Proj" } else { "" };
     let p = p_expr(key.kind, key.target, key.proj);
     let g = grad_swizzle(key.target);
@@ -66,11 +93,15 @@ fn modern_call(key: &ShaderKey) -> String {
         [a, b] => ("Offset", format!(", ivec2({a}, {b})")),
     };
     match key.form {
+        // EXT_texture_shadow_lod: textureLod(samplerCubeArrayShadow, P, compare, lod).
+        LodForm::Lod if cube_array_shadow => "textureLod(u_tex, p, u_x, u_dx.x)".to_string(),
         LodForm::Lod => format!("texture{s}Lod{o}(u_tex, {p}, u_x{oa})"),
         LodForm::Grad => format!("texture{s}Grad{o}(u_tex, {p}, u_dx{g}, u_dy{g}{oa})"),
         LodForm::Implicit(true) => format!("texture{s}{o}(u_tex, {p}{oa}, u_x)"),
         LodForm::Implicit(false) if cube_array_shadow => "texture(u_tex, p, u_x)".to_string(),
-        LodForm::Implicit(false) | LodForm::Constant => format!("texture{s}{o}(u_tex, {p}{oa})"),
+        LodForm::Implicit(false) | LodForm::Constant | LodForm::Gather(_) => {
+            format!("texture{s}{o}(u_tex, {p}{oa})")
+        }
     }
 }
 
@@ -108,7 +139,10 @@ pub fn batchable(key: &ShaderKey) -> bool {
     matches!(
         key.path,
         ApiPath::GlslCore | ApiPath::Glsl130 | ApiPath::Es300
-    ) && matches!(key.form, LodForm::Lod | LodForm::Grad)
+    ) && matches!(
+        key.form,
+        LodForm::Lod | LodForm::Grad | LodForm::Gather(false)
+    )
 }
 
 /// (vertex source, fragment source) for a GLSL path. `batched`: the case values come from the
@@ -141,7 +175,14 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
             (h, "in", "o", "out vec4 o;\n")
         }
         ApiPath::Es300 => {
-            let mut h = if cube_array && info.glsl >= 320 {
+            let mut h = if key.gather.is_some() && !cube_array {
+                // Shadow gather: GLSL ES 3.10 (textureGatherOffsets: 3.20, `paths::plan_for`).
+                if info.glsl >= 320 {
+                    "#version 320 es\n".to_string()
+                } else {
+                    "#version 310 es\n".to_string()
+                }
+            } else if cube_array && info.glsl >= 320 {
                 "#version 320 es\n".to_string()
             } else if cube_array {
                 "#version 310 es\n#extension GL_OES_texture_cube_map_array : require\n".to_string()
@@ -167,6 +208,17 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
         ),
         ApiPath::FixedFunction | ApiPath::ArbFp => (String::new(), "in", "o", ""),
     };
+    // EXT_texture_shadow_lod's overloads: the directive right after #version.
+    let header = if uses_shadow_lod(key) {
+        match header.split_once('\n') {
+            Some((version, rest)) => {
+                format!("{version}\n#extension GL_EXT_texture_shadow_lod : require\n{rest}")
+            }
+            None => header,
+        }
+    } else {
+        header
+    };
     let vs = format!(
         "{header}{vin} vec2 a_pos;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); }}\n"
     );
@@ -179,7 +231,7 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
         (Some(fb_width), _) => format!(
             "int k = int(gl_FragCoord.y) * {fb_width} + int(gl_FragCoord.x) - u_base;\n  if (k < 0 || k >= u_count) discard;\n  int t = k * {PARAM_TEXELS};\n  vec4 p = texelFetch(u_params, ivec2(t % {PARAM_WIDTH}, t / {PARAM_WIDTH}), 0);\n  vec4 u_dx = texelFetch(u_params, ivec2((t + 1) % {PARAM_WIDTH}, (t + 1) / {PARAM_WIDTH}), 0);\n  vec4 u_dy = texelFetch(u_params, ivec2((t + 2) % {PARAM_WIDTH}, (t + 2) / {PARAM_WIDTH}), 0);\n  float u_x = texelFetch(u_params, ivec2((t + 3) % {PARAM_WIDTH}, (t + 3) / {PARAM_WIDTH}), 0).x;"
         ),
-        (None, LodForm::Implicit(_)) => "vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;".to_string(),
+        (None, LodForm::Implicit(_) | LodForm::Gather(true)) => "vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;".to_string(),
         (None, _) => "vec4 p = u_p;".to_string(),
     };
     let uniforms = if batched.is_some() {
@@ -187,7 +239,9 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
     } else {
         "uniform vec4 u_p;\nuniform float u_x;\nuniform vec4 u_dx;\nuniform vec4 u_dy;\nuniform vec2 u_c;\n".to_string()
     };
-    let vec4_result = matches!(key.path, ApiPath::Glsl120) || key.kind != SamplerKind::Shadow;
+    let vec4_result = matches!(key.path, ApiPath::Glsl120)
+        || key.kind != SamplerKind::Shadow
+        || key.gather.is_some();
     let call = match key.path {
         ApiPath::Glsl120 | ApiPath::Es100Ext => legacy_call(key),
         _ => modern_call(key),
@@ -248,6 +302,7 @@ mod tests {
             proj: false,
             mode: None,
             offset: [0, 0],
+            gather: None,
         };
         assert_eq!(modern_call(&k), "textureLod(u_tex, p.xyz, u_x)");
         let k = ShaderKey {
@@ -296,6 +351,81 @@ mod tests {
     }
 
     #[test]
+    fn shadow_lod_overloads_enable_the_extension() {
+        let k = ShaderKey {
+            path: ApiPath::Es300,
+            target: Target::CubeArray,
+            kind: SamplerKind::Shadow,
+            form: LodForm::Lod,
+            proj: false,
+            mode: None,
+            offset: [0, 0],
+            gather: None,
+        };
+        assert_eq!(modern_call(&k), "textureLod(u_tex, p, u_x, u_dx.x)");
+        let info = GlInfo {
+            api: crate::names::ContextApi::Es3,
+            es: true,
+            compat: false,
+            version: (3, 2),
+            glsl: 320,
+            renderer: String::new(),
+            version_string: String::new(),
+            extensions: Default::default(),
+            form: crate::names::LookupForm::Lod,
+        };
+        let (_, fs) = glsl(&info, &k, None);
+        assert!(
+            fs.starts_with("#version 320 es\n#extension GL_EXT_texture_shadow_lod : require\n"),
+            "{fs}"
+        );
+        let k = ShaderKey {
+            target: Target::T2d,
+            ..k
+        };
+        assert!(!glsl(&info, &k, None).1.contains("#extension"));
+    }
+
+    #[test]
+    fn gather_calls_split_p_and_ref_z() {
+        let k = ShaderKey {
+            path: ApiPath::GlslCore,
+            target: Target::T2d,
+            kind: SamplerKind::Shadow,
+            form: LodForm::Gather(false),
+            proj: false,
+            mode: None,
+            offset: [0, 0],
+            gather: Some(GatherCall::Single),
+        };
+        assert_eq!(modern_call(&k), "textureGather(u_tex, p.xy, p.z)");
+        let k = ShaderKey {
+            offset: [-8, 7],
+            ..k
+        };
+        assert_eq!(
+            modern_call(&k),
+            "textureGatherOffset(u_tex, p.xy, p.z, ivec2(-8, 7))"
+        );
+        let k = ShaderKey {
+            target: Target::T2dArray,
+            offset: [0, 0],
+            gather: Some(GatherCall::Offsets([[0, 1], [1, 1], [1, 0], [0, 0]])),
+            ..k
+        };
+        assert_eq!(
+            modern_call(&k),
+            "textureGatherOffsets(u_tex, p.xyz, p.w, ivec2[4](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0)))"
+        );
+        let k = ShaderKey {
+            target: Target::CubeArray,
+            gather: Some(GatherCall::Single),
+            ..k
+        };
+        assert_eq!(modern_call(&k), "textureGather(u_tex, p, u_x)");
+    }
+
+    #[test]
     fn legacy_calls_use_the_glsl_120_names() {
         let k = ShaderKey {
             path: ApiPath::Glsl120,
@@ -305,6 +435,7 @@ mod tests {
             proj: true,
             mode: None,
             offset: [0, 0],
+            gather: None,
         };
         assert_eq!(legacy_call(&k), "shadow2DRectProj(u_tex, p)");
         let k = ShaderKey {
@@ -325,6 +456,7 @@ mod tests {
             proj: false,
             mode: None,
             offset: [0, 0],
+            gather: None,
         };
         let s = arbfp(&k);
         assert!(

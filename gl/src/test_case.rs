@@ -29,6 +29,7 @@ pub(crate) fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
             lod: 0.0,
             bias: 0.0,
             offset: [0; 3],
+            gather: None,
         },
         expect: None,
     }

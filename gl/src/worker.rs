@@ -373,6 +373,7 @@ pub fn declared_capabilities(i: &GlInfo) -> Capabilities {
                     "fail_value" => i.has_ext("GL_ARB_shadow_ambient"),
                     "border_clamp" => i.border_clamp(),
                     "stencil_texturing" => i.stencil_texturing(),
+                    "gather" => i.gather(),
                     _ => false,
                 })
                 .map(|f| f.key.to_string())

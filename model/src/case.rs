@@ -128,6 +128,21 @@ pub struct Lookup {
     /// function takes no offset. Components a target does not use are 0.
     #[serde(default, skip_serializing_if = "is_zero3")]
     pub offset: [i32; 3],
+    /// A `textureGather*` lookup on a shadow sampler (GL 4.6 §8.14.2, GLSL 4.60 §8.9.4): four
+    /// comparisons against the reference, one per texel of the base level's LINEAR footprint.
+    /// `None`: a filtered lookup (every other function).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gather: Option<Gather>,
+}
+
+/// The gather variant. `textureGather` has no offset; `textureGatherOffset` takes
+/// [`Lookup::offset`] (δu, δv); `textureGatherOffsets` takes one (δu, δv) per result component.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Gather {
+    /// `textureGatherOffsets`: the offsets of the components (R, G, B, A) in order; each selects
+    /// τi0j0 of its own footprint (GL 4.6 §8.14.2). `None`: `textureGather(Offset)`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub offsets: Option<[[i32; 2]; 4]>,
 }
 
 fn is_zero(v: &f64) -> bool {

@@ -382,5 +382,24 @@ keyed_enum! {
         /// r, or 0 under a second reading the texts leave open (a GLSL 1.30 shadow lookup in a
         /// compatibility context with DEPTH_TEXTURE_MODE ALPHA: contradiction `compat-float-alpha`).
         ROrZero = "r|0",
+        /// Shadow textureGather: the comparison result of the texel τi0j1 (component R of the
+        /// result vector), read from [`crate::Expectation::gather`]`[0]`.
+        G0 = "g0",
+        /// Gather component G: texel τi1j1 (`gather[1]`).
+        G1 = "g1",
+        /// Gather component B: texel τi1j0 (`gather[2]`).
+        G2 = "g2",
+        /// Gather component A: texel τi0j0 (`gather[3]`).
+        G3 = "g3",
+    }
+}
+
+impl Channel {
+    /// The gather layout: component i of the result holds gather value i (GL 4.6 §8.14.2: "in
+    /// the order τi0j1, τi1j1, τi1j0, and τi0j0").
+    pub const GATHER: [Channel; 4] = [Channel::G0, Channel::G1, Channel::G2, Channel::G3];
+    /// Which gather value this channel reads, if it is a gather channel.
+    pub fn gather_index(self) -> Option<usize> {
+        Channel::GATHER.iter().position(|&c| c == self)
     }
 }

@@ -77,6 +77,11 @@ pub struct Expectation {
     pub accept: KeyMap<Profile, Acceptance>,
     /// How r appears in the observed RGBA, per API path the case applies to.
     pub layout: KeyMap<ApiPath, [Channel; 4]>,
+    /// Shadow textureGather: the acceptable values of the four result components (τi0j1, τi1j1,
+    /// τi1j0, τi0j0) per profile, read by the layout's `g0`..`g3` channels; `accept` and
+    /// `spec_value` then describe component 0. `None` for every other lookup.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gather: Option<[KeyMap<Profile, Acceptance>; 4]>,
     /// Set when the specs leave the result open; says why.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub implementation_defined: Option<String>,
@@ -102,14 +107,37 @@ impl Expectation {
     /// Returns `None` when the expectation has no layout for that API path.
     pub fn accepts(&self, profile: Profile, api: ApiPath, rgba: [f64; 4]) -> Option<bool> {
         let layout = self.layout.get(&api)?;
-        let acc = self.accept.get(&profile)?;
-        Some(layout.iter().zip(rgba).all(|(ch, v)| match ch {
-            Channel::R => acc.contains(v),
-            Channel::ROrZero => v == 0.0 || acc.contains(v),
+        self.accept.get(&profile)?;
+        Some(
+            layout
+                .iter()
+                .zip(rgba)
+                .all(|(ch, v)| self.channel_accepts(profile, *ch, v)),
+        )
+    }
+
+    /// The acceptance set a channel's value is checked against under `profile`: r's, or for a
+    /// gather channel its component's. `None` for the constant channels or a missing profile.
+    pub fn channel_acceptance(&self, profile: Profile, ch: Channel) -> Option<&Acceptance> {
+        match ch.gather_index() {
+            Some(i) => self.gather.as_ref()?[i].get(&profile),
+            None if matches!(ch, Channel::R | Channel::ROrZero) => self.accept.get(&profile),
+            None => None,
+        }
+    }
+
+    /// Does one channel's value `v` satisfy `ch` under `profile`?
+    pub fn channel_accepts(&self, profile: Profile, ch: Channel, v: f64) -> bool {
+        let acc = self.channel_acceptance(profile, ch);
+        match ch {
             Channel::Zero => v == 0.0,
             Channel::One => v == 1.0,
             Channel::Unused => true,
-        }))
+            Channel::ROrZero => v == 0.0 || acc.is_some_and(|a| a.contains(v)),
+            Channel::R | Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => {
+                acc.is_some_and(|a| a.contains(v))
+            }
+        }
     }
 
     /// The strictest profile accepting one observation, trying the profiles strictest first.
@@ -172,4 +200,41 @@ pub struct Footprint {
     #[serde(with = "crate::real")]
     pub dref: f64,
     pub texels: Vec<FootprintTexel>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn set(v: f64) -> KeyMap<Profile, Acceptance> {
+        Profile::ALL
+            .iter()
+            .map(|&p| (p, Acceptance(vec![Interval::point(v)])))
+            .collect()
+    }
+
+    #[test]
+    fn gather_channels_read_their_own_component() {
+        let e = Expectation {
+            spec_value: Some(1.0),
+            accept: set(1.0),
+            layout: [(ApiPath::GlslCore, Channel::GATHER)].into_iter().collect(),
+            gather: Some([set(1.0), set(1.0), set(0.0), set(0.0)]),
+            implementation_defined: None,
+            citations: vec![],
+        };
+        let judge = |rgba| e.judge(ApiPath::GlslCore, rgba);
+        assert_eq!(judge([1.0, 1.0, 0.0, 0.0]), Some(Judgement::Strictest));
+        // Rotated order, or r written to every channel: outside.
+        assert_eq!(judge([0.0, 1.0, 1.0, 0.0]), Some(Judgement::Outside));
+        assert_eq!(judge([1.0, 1.0, 1.0, 1.0]), Some(Judgement::Outside));
+        // A gather channel with no gather sets accepts nothing.
+        let no_gather = Expectation {
+            gather: None,
+            ..e.clone()
+        };
+        assert!(!no_gather.channel_accepts(Profile::Strict, Channel::G0, 1.0));
+        assert_eq!(Channel::G2.gather_index(), Some(2));
+        assert_eq!(Channel::R.gather_index(), None);
+    }
 }

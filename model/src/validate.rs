@@ -324,6 +324,7 @@ mod tests {
                 lod: 0.0,
                 bias: 0.0,
                 offset: [0; 3],
+                gather: None,
             },
             expect: None,
         }
@@ -463,6 +464,7 @@ mod tests {
             spec_value: Some(1.0),
             accept,
             layout,
+            gather: None,
             implementation_defined: None,
             citations: vec![],
         };

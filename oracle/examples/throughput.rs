@@ -47,6 +47,7 @@ fn case(filter: Filter, i: usize) -> Case {
             lod: (i % 5) as f64 * 0.4,
             bias: 0.0,
             offset: [0; 3],
+            gather: None,
         },
         expect: None,
     }

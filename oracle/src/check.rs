@@ -6,7 +6,7 @@
 use crate::rules::Rules;
 use crate::state::{self, Ctx, GlErrorKind, Value};
 use crate::OracleError;
-use shadowcheck_model::{ApiPath, Case, Filter, Spec, Target, Wrap};
+use shadowcheck_model::{ApiPath, Case, CompareMode, Filter, Spec, Target, Wrap};
 
 /// The context an API path runs in.
 pub fn ctx_of(api: ApiPath) -> Ctx {
@@ -197,6 +197,9 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
             return Err(not_applicable(case, rules, why.into()));
         }
     }
+    if case.lookup.gather.is_some() {
+        check_gather(case, rules)?;
+    }
     if t.target == Target::Rect {
         // GL 4.6 §8.10: "An INVALID_ENUM error is generated if the effective target is
         // TEXTURE_RECTANGLE and either of pnames TEXTURE_WRAP_S or TEXTURE_WRAP_T is set to either
@@ -231,6 +234,63 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
                 "TEXTURE_BASE_LEVEL ≠ 0 on a rectangle texture (GL 4.6 §8.10)".into(),
             ));
         }
+    }
+    Ok(())
+}
+
+/// The range every implementation supports: MIN_PROGRAM_TEXTURE_GATHER_OFFSET at most −8 and
+/// MAX_PROGRAM_TEXTURE_GATHER_OFFSET at least 7 (the minimum values in the implementation-dependent
+/// value tables of GL 4.6 and ES 3.2). An offset outside may be past the implementation's limits, where
+/// "the results of the texture lookup are undefined" (§8.14.2).
+pub const GATHER_OFFSET_RANGE: (i32, i32) = (-8, 7);
+
+/// A shadow gather exists on GLSL 4.00+ / GLSL ES 3.10+ (the `core` and `es300` paths), for the
+/// sampler types of GLSL 4.60 §8.9.4 ("vec4 textureGather(sampler2DShadow sampler, vec2 P, float
+/// refZ)", 2DArray, Cube, CubeArray, 2DRect), non-projective, with comparison enabled ("the results
+/// of a texture gather are undefined for shadow samplers if the texture referenced is not a depth
+/// texture or has depth comparisons disabled"); textureGatherOffset(s) takes no cube sampler.
+fn check_gather(case: &Case, rules: &Rules) -> Result<(), OracleError> {
+    let t = &case.texture;
+    let l = &case.lookup;
+    let na = |why: String| Err(not_applicable(case, rules, why));
+    if !matches!(rules.spec, Spec::Gl46 | Spec::Gles32) {
+        return na(format!("{} has no textureGather", rules.doc));
+    }
+    if let Some(api) = case
+        .api
+        .iter()
+        .find(|a| !matches!(a, ApiPath::GlslCore | ApiPath::Es300))
+    {
+        return na(format!(
+            "API path `{api}` has no shadow textureGather (GLSL 4.00 / GLSL ES 3.10)"
+        ));
+    }
+    if !matches!(
+        t.target,
+        Target::T2d | Target::T2dArray | Target::Cube | Target::CubeArray | Target::Rect
+    ) {
+        return na(format!("no shadow textureGather for target `{}`", t.target));
+    }
+    if l.projective {
+        return na("textureGather has no projective form".into());
+    }
+    if !t.format.is_depth() || case.sampler.compare_mode == CompareMode::None {
+        return na("a shadow gather needs a depth texture with comparison enabled (GLSL 4.60 §8.9.4: otherwise undefined)".into());
+    }
+    let offsets: Vec<[i32; 2]> = match l.gather.as_ref().and_then(|g| g.offsets) {
+        Some(o) => o.to_vec(),
+        None => vec![[l.offset[0], l.offset[1]]],
+    };
+    let has_offset = l.offset != [0; 3] || l.gather.as_ref().is_some_and(|g| g.offsets.is_some());
+    if has_offset && t.target.is_cube() {
+        return na("textureGatherOffset(s) takes no cube sampler (GLSL 4.60 §8.9.4)".into());
+    }
+    if l.offset != [0; 3] && l.gather.as_ref().is_some_and(|g| g.offsets.is_some()) {
+        return na("textureGatherOffsets takes its four offsets, not a fifth".into());
+    }
+    let (lo, hi) = GATHER_OFFSET_RANGE;
+    if l.offset[2] != 0 || offsets.iter().flatten().any(|o| !(lo..=hi).contains(o)) {
+        return na(format!("a gather offset outside [{lo}, {hi}], the spec's minimum range of MIN/MAX_PROGRAM_TEXTURE_GATHER_OFFSET: the result is undefined (§8.14.2)"));
     }
     Ok(())
 }

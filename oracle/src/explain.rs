@@ -72,6 +72,17 @@ pub fn render(case: &Case, result: &Result<Evaluation, OracleError>) -> String {
                     spec_of(*p).map(|s| s.describe()).unwrap_or_default()
                 );
             }
+            if let Some(g) = &x.gather {
+                let _ = writeln!(
+                    o,
+                    "gather components (g0 τi0j1, g1 τi1j1, g2 τi1j0, g3 τi0j0; r above is g0):"
+                );
+                for (k, m) in g.iter().enumerate() {
+                    let sets: Vec<String> =
+                        m.iter().map(|(p, a)| format!("{} {a}", p.key())).collect();
+                    let _ = writeln!(o, "  g{k}       {}", sets.join(", "));
+                }
+            }
             if let Some(why) = &x.implementation_defined {
                 let _ = writeln!(o, "implementation-defined: {why}");
             }

@@ -243,6 +243,7 @@ fn wide_case() -> impl Strategy<Value = Case> {
                         lod,
                         bias,
                         offset: [0; 3],
+                        gather: None,
                     },
                     expect: None,
                 }

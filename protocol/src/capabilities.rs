@@ -60,6 +60,11 @@ pub const FEATURES: &[Feature] = &[
         what: "DEPTH_STENCIL_TEXTURE_MODE (OpenGL 4.3, OpenGL ES 3.1, ARB_stencil_texturing)",
         used_by: |c| c.sampler.depth_stencil_mode.is_some(),
     },
+    Feature {
+        key: "gather",
+        what: "shadow textureGather / textureGatherOffset(s) (GLSL 4.00, GLSL ES 3.10)",
+        used_by: |c| c.lookup.gather.is_some(),
+    },
 ];
 
 /// Whether a case sets TEXTURE_BORDER_COLOR or wraps a coordinate its target uses with

@@ -43,6 +43,8 @@ def sample(case):
         return None, "only depth comparison is implemented"
     if smp["min_filter"] not in ("nearest", "linear"):  # mipmaps bring completeness rules (§8.17)
         return None, "mipmap filters are not implemented"
+    if "gather" in lk:  # a hello without `features` claims them all: refuse what is not done
+        return None, "textureGather is not implemented"
     lam = f32(lk.get("lod", 0)) + f32(smp.get("lod_bias", 0)) + f32(lk.get("bias", 0))
     lam = min(max(lam, smp.get("min_lod", -1000.0)), smp.get("max_lod", 1000.0))
     flt = smp["min_filter"] if lam > 0 else smp["mag_filter"]  # §8.14: c = 0 without mipmaps

@@ -49,19 +49,17 @@ fn channel_misses(
     profile: Profile,
     rgba: [f64; 4],
 ) -> String {
-    let acc = e.accept.get(&profile);
     let mut out = vec![];
     for ((name, ch), v) in ['r', 'g', 'b', 'a'].iter().zip(layout).zip(rgba) {
-        let ok = match ch {
-            Channel::R => acc.is_some_and(|a| a.contains(v)),
-            Channel::ROrZero => v == 0.0 || acc.is_some_and(|a| a.contains(v)),
-            Channel::Zero => v == 0.0,
-            Channel::One => v == 1.0,
-            Channel::Unused => true,
-        };
-        if !ok {
+        let acc = e.channel_acceptance(profile, *ch);
+        if !e.channel_accepts(profile, *ch, v) {
             let want = match ch {
                 Channel::R => format!("r in {}", acc.map(|a| a.to_string()).unwrap_or_default()),
+                Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => format!(
+                    "{} in {}",
+                    ch.key(),
+                    acc.map(|a| a.to_string()).unwrap_or_default()
+                ),
                 Channel::ROrZero => format!(
                     "0 or r in {}",
                     acc.map(|a| a.to_string()).unwrap_or_default()
@@ -292,6 +290,7 @@ mod tests {
                 spec_value: Some(0.0),
                 accept,
                 layout,
+                gather: None,
                 implementation_defined: None,
                 citations: vec![],
             }
@@ -321,6 +320,7 @@ mod tests {
                 lod: 0.0,
                 bias: 0.0,
                 offset: [0; 3],
+                gather: None,
             },
             expect,
         }

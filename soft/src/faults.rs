@@ -128,6 +128,14 @@ faults! {
     BorderDepthFromAlpha = "border-depth-from-alpha",
     /// MIRRORED_REPEAT mirrors without the (size - 1) offset (off by one texel).
     MirroredRepeatOffByOne = "mirrored-repeat-off-by-one",
+    // --- shadow textureGather (GL 4.6 §8.14.2, GLSL 4.60 §8.9.4) ---
+    /// Gather components taken in a rotated texel order (τi0j0, τi0j1, τi1j1, τi1j0) instead of
+    /// (τi0j1, τi1j1, τi1j0, τi0j0).
+    GatherOrderRotated = "gather-order-rotated",
+    /// Shadow gather returns the texels' depth values, ignoring refZ (no comparison).
+    GatherIgnoresRef = "gather-ignores-ref",
+    /// Gather reads the level the filters' λ selects instead of level base.
+    GatherUsesLodLevel = "gather-uses-lod-level",
     // --- storage ---
     /// Unorm conversion c / 2^b instead of c / (2^b - 1).
     UnormDividedByPowerOfTwo = "unorm-divided-by-power-of-two",

@@ -39,13 +39,13 @@ pub struct Coords {
 /// Where in the texture one lookup reads: normalized (or, for rectangles, unnormalized) s, t
 /// within an image, the layer of that image and, for cubes, the face.
 #[derive(Debug, Clone, Copy)]
-struct Address {
-    s: f32,
-    t: f32,
+pub(crate) struct Address {
+    pub(crate) s: f32,
+    pub(crate) t: f32,
     /// Array layer coordinate (already rounded) before clamping to the level's layer count; for
     /// cube arrays the cube index.
-    layer: i64,
-    face: Option<cube::Face>,
+    pub(crate) layer: i64,
+    pub(crate) face: Option<cube::Face>,
 }
 
 /// layer = clamp(⌊layer + ½⌋, 0, layers − 1) (§8.14.2, the ⌊x + ½⌋ form footnote 4 allows).
@@ -112,7 +112,7 @@ impl PreparedTexture {
         }
     }
 
-    fn address(&self, st: &SamplerState, c: &Coords) -> Address {
+    pub(crate) fn address(&self, st: &SamplerState, c: &Coords) -> Address {
         match self.target() {
             Target::T1d => Address {
                 s: c.s,
@@ -159,7 +159,7 @@ impl PreparedTexture {
     /// The prepared level for absolute level `level` (clamped to what exists, which only matters
     /// when a fault lets an incomplete texture be sampled).
     #[inline(always)]
-    fn level_desc(&self, st: &SamplerState, level: u32) -> &LevelDesc {
+    pub(crate) fn level_desc(&self, st: &SamplerState, level: u32) -> &LevelDesc {
         let i = (level.saturating_sub(st.lod.level_base) as usize)
             .min(self.levels.len().saturating_sub(1));
         &self.levels[i]
@@ -167,7 +167,7 @@ impl PreparedTexture {
 
     /// The storage layer for the address within level `l`.
     #[inline(always)]
-    fn storage_layer(&self, l: &LevelDesc, a: &Address) -> u32 {
+    pub(crate) fn storage_layer(&self, l: &LevelDesc, a: &Address) -> u32 {
         match a.face {
             None => a.layer.clamp(0, l.layers as i64 - 1) as u32,
             Some(face) => {
@@ -179,7 +179,14 @@ impl PreparedTexture {
 
     /// The raw value at (i, j) of `layer`, or the border value outside the image.
     #[inline(always)]
-    fn fetch(&self, st: &SamplerState, l: &LevelDesc, i: i64, j: i64, layer: u32) -> f32 {
+    pub(crate) fn fetch(
+        &self,
+        st: &SamplerState,
+        l: &LevelDesc,
+        i: i64,
+        j: i64,
+        layer: u32,
+    ) -> f32 {
         if i < 0 || j < 0 || i >= l.width as i64 || j >= l.height as i64 {
             return st.border;
         }
@@ -193,7 +200,7 @@ impl PreparedTexture {
     /// What one texel contributes to the filter: pass / fail value for comparisons, the clamped Dt,
     /// the colour or the stencil index.
     #[inline(always)]
-    fn resolve(&self, st: &SamplerState, v: f32, dref: f32) -> f32 {
+    pub(crate) fn resolve(&self, st: &SamplerState, v: f32, dref: f32) -> f32 {
         match st.kind {
             Kind::Compare => {
                 let dt = if st.clamp.dt { clamp01(v) } else { v };

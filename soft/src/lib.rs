@@ -22,6 +22,7 @@ pub mod compare;
 pub mod cube;
 pub mod faults;
 pub mod filter;
+pub mod gather;
 pub mod layout;
 pub mod lod;
 pub mod sampler;
@@ -236,6 +237,51 @@ impl SoftUnit {
         Ok(())
     }
 
+    /// A shadow gather exists on GLSL 4.00+ and GLSL ES 3.10+ (`core`, `es300`), for 2D, 2D
+    /// array, cube, cube array and rectangle shadow samplers, with comparison enabled, never
+    /// projective; the *Offset(s) forms take no cube sampler; offsets within [-8, 7].
+    fn check_gather(&self, case: &Case, api: ApiPath, st: &SamplerState) -> Result<(), SoftError> {
+        let undefined = |what| {
+            Err(SoftError::Undefined {
+                spec: self.spec,
+                what,
+            })
+        };
+        if !matches!(api, ApiPath::GlslCore | ApiPath::Es300) {
+            return undefined("textureGather on this API path");
+        }
+        let t = case.texture.target;
+        if !matches!(
+            t,
+            Target::T2d | Target::T2dArray | Target::Cube | Target::CubeArray | Target::Rect
+        ) {
+            return Err(SoftError::Target { api, target: t });
+        }
+        if case.lookup.projective {
+            return Err(SoftError::Projective { target: t });
+        }
+        if st.kind != Kind::Compare {
+            return Err(SoftError::UndefinedResult(
+                "a shadow gather on a texture without depth comparison",
+            ));
+        }
+        let l = &case.lookup;
+        let offs = l.gather.as_ref().and_then(|g| g.offsets);
+        let any_offset = l.offset != [0; 3] || offs.is_some();
+        if any_offset && t.is_cube() {
+            return undefined("textureGatherOffset on a cube sampler");
+        }
+        let all = offs
+            .map(|o| o.to_vec())
+            .unwrap_or_else(|| vec![[l.offset[0], l.offset[1]]]);
+        if l.offset[2] != 0 || all.iter().flatten().any(|v| !(-8..=7).contains(v)) {
+            return Err(SoftError::UndefinedResult(
+                "a gather offset outside MIN/MAX_PROGRAM_TEXTURE_GATHER_OFFSET's guaranteed range",
+            ));
+        }
+        Ok(())
+    }
+
     /// RGBA for one case on one API path. The case must be for this unit's spec.
     ///
     /// Allocation-free after warm-up: the texture is converted into a per-thread scratch buffer.
@@ -324,6 +370,15 @@ impl SoftUnit {
         c: &Coords,
     ) -> Result<[f32; 4], SoftError> {
         self.check_path(case, api)?;
+        if let Some(g) = &case.lookup.gather {
+            self.check_gather(case, api, st)?;
+            if !st.complete {
+                // "Incomplete textures ... return a texture source color of (0.0, 0.0, 0.0, 1.0)
+                // ... for all four source texels" (GL 4.6 §8.14.2): R of each is 0.
+                return Ok([0.0; 4]);
+            }
+            return Ok(tex.gather(st, c, g.offsets));
+        }
         let lay = layout::resolve(
             self.spec,
             api,

@@ -43,6 +43,7 @@ fn case(spec: Spec, w: u32, h: u32, texels: Vec<u32>, func: CompareFunc) -> Case
             lod: 0.0,
             bias: 0.0,
             offset: [0; 3],
+            gather: None,
         },
         expect: None,
     }
@@ -100,6 +101,15 @@ fn mips(filter: Filter, lod: f64) -> Case {
     });
     c.sampler.min_filter = filter;
     c.lookup.lod = lod;
+    c
+}
+
+/// A shadow gather on a 2x2 D16 image [0, ¼ / ¾, 1] at the centre, LEQUAL Dref ½: the footprint
+/// is the whole image, (τi0j1, τi1j1, τi1j0, τi0j0) = (¾, 1, ¼, 0) → (1, 1, 0, 0).
+fn gather4() -> Case {
+    let mut c = gl(vec![0, d16(0.25), d16(0.75), 65535], 2, CompareFunc::Lequal);
+    c.texture.levels[0].height = 2;
+    c.lookup.gather = Some(Gather { offsets: None });
     c
 }
 
@@ -305,6 +315,16 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
             c.lookup.coord[2] = 0.5;
             c
         }
+        Fault::GatherOrderRotated | Fault::GatherIgnoresRef => gather4(),
+        Fault::GatherUsesLodLevel => {
+            // λ = 1 with a mipmap filter: level 1 (all Dt 1, every texel passes) would be read;
+            // the gather reads level base (all Dt 0, every texel fails with Dref ½).
+            let mut c = mips(Filter::NearestMipmapNearest, 1.0);
+            c.lookup.gather = Some(Gather { offsets: None });
+            c.lookup.coord[1] = 0.375;
+            c.lookup.coord[0] = 0.375;
+            c
+        }
         Fault::ColourDividedBy256 => {
             // R8 102: exactly 102/255 (eq. (2.1)); the fault reads 102/256.
             let mut c = gl(vec![102], 1, C::Lequal);
@@ -358,6 +378,9 @@ mod tests {
         assert_eq!(r(Fault::AmbientIgnored), [0.25, 0.25, 0.25, 1.0]);
         // Texel offsets (GL 4.6 (8.10)): u = w·s + δu at the selected level, then wrap.
         assert_eq!(r(Fault::OffsetIgnored)[0], 0.0);
+        // Shadow gather (GL 4.6 §8.14.2): (τi0j1, τi1j1, τi1j0, τi0j0) compared with Dref.
+        assert_eq!(r(Fault::GatherOrderRotated), [1.0, 1.0, 0.0, 0.0]);
+        assert_eq!(r(Fault::GatherUsesLodLevel), [0.0; 4]); // level base, not λ's level 1
         assert_eq!(r(Fault::OffsetInBaseLevelTexels)[0], 0.0);
         assert_eq!(r(Fault::OffsetAfterWrap)[0], 0.0);
     }

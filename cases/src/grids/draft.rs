@@ -120,6 +120,10 @@ impl Draft {
             // Only GLSL >= 1.30 and GLSL ES 3.00 have lookup functions with a texel offset.
             api.retain(|a| matches!(a, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300));
         }
+        if self.lookup.gather.is_some() {
+            // Shadow textureGather: GLSL 4.00 (core) and GLSL ES 3.10+ only (GLSL 4.60 §8.9.4).
+            api.retain(|a| matches!(a, ApiPath::GlslCore | ApiPath::Es300));
+        }
         Case {
             id,
             spec: self.cell.spec,
@@ -143,6 +147,7 @@ pub fn lookup(target: Target, at: At, w: u32, h: u32, dref: f64) -> Lookup {
         lod: 0.0,
         bias: 0.0,
         offset: [0; 3],
+        gather: None,
     }
 }
 

@@ -5,6 +5,7 @@ pub mod cells;
 pub mod draft;
 pub mod exhaustive;
 pub mod families;
+pub mod gather;
 pub mod offset;
 pub mod random;
 pub mod specs;
@@ -91,7 +92,8 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             .extend(families::mixfilter(d))
             .extend(families::incomplete(d))
             .extend(families::proj(d))
-            .extend(offset::offset(d));
+            .extend(offset::offset(d))
+            .extend(gather::gather(d));
     }
     g.extend(families::wrap(d))
         .extend(families::dtm(d))

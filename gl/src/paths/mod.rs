@@ -60,6 +60,20 @@ impl GlInfo {
             || self.has_ext("GL_OES_texture_border_clamp")
             || self.has_ext("GL_EXT_texture_border_clamp")
     }
+    /// EXT_texture_shadow_lod (its overloads exist in no GLSL version, the extension's issue 1).
+    pub fn shadow_lod(&self) -> bool {
+        self.has_ext("GL_EXT_texture_shadow_lod")
+    }
+    /// Shadow textureGather / textureGatherOffset(s): GLSL 4.00 on desktop GL (ARB_texture_gather
+    /// has no shadow forms), GLSL ES 3.10 on ES (textureGatherOffsets only from GLSL ES 3.20:
+    /// [`plan_for`] skips it below).
+    pub fn gather(&self) -> bool {
+        if self.es {
+            self.at_least(3, 1) && self.glsl >= 310
+        } else {
+            self.glsl >= 400
+        }
+    }
     /// DEPTH_STENCIL_TEXTURE_MODE: GL 4.3 or ARB_stencil_texturing; ES 3.1.
     pub fn stencil_texturing(&self) -> bool {
         if self.es {
@@ -149,6 +163,19 @@ pub enum LodForm {
     Implicit(bool),
     /// Fixed-function: constant texture coordinates (lambda_base = -inf).
     Constant,
+    /// A shadow `textureGather*` (no λ: GLSL 4.60 §8.9.4 "the minification and magnification
+    /// filters are ignored"); `true`: the coordinate still varies across the pixel quad by the
+    /// case's gradients, so that an implementation that wrongly selects a level by λ shows it.
+    Gather(bool),
+}
+
+/// The gather function of a [`ShaderKey`] with [`LodForm::Gather`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum GatherCall {
+    /// `textureGather`, or `textureGatherOffset` with the key's `offset`.
+    Single,
+    /// `textureGatherOffsets` with these four constant offsets (R, G, B, A).
+    Offsets([[i8; 2]; 4]),
 }
 
 /// The shader variant: programs are cached by this key.
@@ -165,6 +192,8 @@ pub struct ShaderKey {
     /// Texel offset (δu, δv) of a `*Offset` lookup (a constant expression in GLSL, so part of
     /// the program); [0, 0]: the plain function.
     pub offset: [i8; 2],
+    /// Shadow gather (`form` is [`LodForm::Gather`]); `None` for every other lookup.
+    pub gather: Option<GatherCall>,
 }
 
 /// One API path's plan for one case.
@@ -192,116 +221,7 @@ pub fn sampler_kind(case: &Case) -> SamplerKind {
     }
 }
 
-/// The shading-language dialect of a path.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Dialect {
-    Modern,
-    Es3,
-    Glsl120,
-    Es100,
-    ArbFp,
-    Ff,
-}
-
-fn dialect(path: ApiPath) -> Dialect {
-    match path {
-        ApiPath::GlslCore | ApiPath::Glsl130 => Dialect::Modern,
-        ApiPath::Es300 => Dialect::Es3,
-        ApiPath::Glsl120 => Dialect::Glsl120,
-        ApiPath::Es100Ext => Dialect::Es100,
-        ApiPath::ArbFp => Dialect::ArbFp,
-        ApiPath::FixedFunction => Dialect::Ff,
-    }
-}
-
-/// Does the language have this lookup function? (GLSL 4.60 §8.9.2, GLSL ES 3.20 §8.9.2,
-/// GLSL 1.20 §8.7, EXT_shadow_samplers, ARB_fragment_program(_shadow).)
-pub fn available(
-    path: ApiPath,
-    kind: SamplerKind,
-    target: Target,
-    form: LodForm,
-    proj: bool,
-) -> bool {
-    use Target::*;
-    let d = dialect(path);
-    let es_target = matches!(target, T2d | Cube | T2dArray | CubeArray);
-    if matches!(d, Dialect::Es3) && !es_target {
-        return false;
-    }
-    if proj && !matches!(target, T1d | T2d | Rect) {
-        return false;
-    }
-    match d {
-        Dialect::Ff => {
-            matches!(form, LodForm::Constant | LodForm::Implicit(_))
-                && (matches!(target, T1d | T2d | Rect)
-                    || (kind != SamplerKind::Shadow && target == Cube))
-        }
-        Dialect::ArbFp => match form {
-            LodForm::Implicit(bias) => {
-                kind != SamplerKind::Uint
-                    && (matches!(target, T1d | T2d | Rect)
-                        || (kind == SamplerKind::Float && target == Cube))
-                    && !(bias && (proj || target == Rect))
-            }
-            _ => false,
-        },
-        Dialect::Es100 => {
-            target == T2d && kind != SamplerKind::Uint && form == LodForm::Implicit(false)
-        }
-        Dialect::Glsl120 => match form {
-            LodForm::Implicit(bias) => {
-                kind != SamplerKind::Uint
-                    && (matches!(target, T1d | T2d | Rect)
-                        || (kind == SamplerKind::Float && target == Cube))
-                    && !(bias && target == Rect)
-            }
-            _ => false,
-        },
-        Dialect::Modern | Dialect::Es3 => {
-            let es = d == Dialect::Es3;
-            if kind == SamplerKind::Shadow {
-                match form {
-                    LodForm::Lod => matches!(target, T1d | T2d) || (!proj && target == T1dArray),
-                    LodForm::Grad => target != CubeArray,
-                    LodForm::Implicit(true) => {
-                        matches!(target, T1d | T2d) || (!proj && matches!(target, Cube | T1dArray))
-                    }
-                    LodForm::Implicit(false) => true,
-                    LodForm::Constant => false,
-                }
-            } else {
-                match form {
-                    LodForm::Lod => target != Rect && !(proj && es && target != T2d),
-                    LodForm::Grad => true,
-                    LodForm::Implicit(bias) => !(bias && target == Rect),
-                    LodForm::Constant => false,
-                }
-            }
-        }
-    }
-}
-
 /// The `c` of GL 4.6 §8.14 (mag/min switch-over point).
-/// Does the `*Offset` variant of this lookup exist (GLSL 4.60 §8.9.2, GLSL ES 3.00 §8.8)? The
-/// 2D, 1D and 1D-array shadow samplers have every form; sampler2DRectShadow has no LOD form and
-/// its textureOffset no bias; sampler2DArrayShadow has only textureGradOffset (its textureOffset
-/// came with GLSL 4.30, later than the versions the worker writes); ES has offsets on 2D and 2D
-/// arrays only. Cube maps take none.
-pub fn offset_available(path: ApiPath, kind: SamplerKind, target: Target, form: LodForm) -> bool {
-    use Target::*;
-    let shadow = kind == SamplerKind::Shadow;
-    let es = path == ApiPath::Es300;
-    match target {
-        Cube | CubeArray => false,
-        T2d => true,
-        T1d | T1dArray => !es,
-        Rect => !es && matches!(form, LodForm::Grad | LodForm::Implicit(false)),
-        T2dArray => !shadow || form == LodForm::Grad,
-    }
-}
-
 fn switch_over(case: &Case) -> f64 {
     let s = &case.sampler;
     if s.mag_filter == Filter::Linear
@@ -336,6 +256,35 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
 /// [`plan`] with a preferred lookup function: the preferred form is tried first, then the usual
 /// order (the backend name's fourth part, see `names::LookupForm`).
 pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan, String> {
+    plan_in(path, case, prefer, false)
+}
+
+/// The plan on a context: [`plan_with`] with the context's preferred form and, where it exposes
+/// EXT_texture_shadow_lod, that extension's overloads ([`GlInfo::shadow_lod`]).
+pub fn plan_for(info: &GlInfo, path: ApiPath, case: &Case) -> Result<Plan, String> {
+    let offsets = case
+        .lookup
+        .gather
+        .as_ref()
+        .is_some_and(|g| g.offsets.is_some());
+    if offsets && info.es && info.glsl < 320 {
+        return Err("textureGatherOffsets needs GLSL ES 3.20 (GLSL ES 3.10 has textureGather and textureGatherOffset only)".into());
+    }
+    plan_in(path, case, info.form, info.shadow_lod())
+}
+
+/// `shadow_lod`: the extension's overloads may be used, and only where the preferred form asks
+/// for them (`prefer` Lod: textureLod; Implicit: the bias form), so that the default order (and
+/// every committed result of it) is what it was without the extension.
+pub fn plan_in(
+    path: ApiPath,
+    case: &Case,
+    prefer: LookupForm,
+    shadow_lod: bool,
+) -> Result<Plan, String> {
+    if case.lookup.gather.is_some() {
+        return gather::plan(path, case);
+    }
     let kind = sampler_kind(case);
     let t = case.texture.target;
     let l = &case.lookup;
@@ -377,11 +326,20 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
     };
     // Stable: the preferred form first, the others in their usual order.
     forms.sort_by_key(|(f, _)| !preferred(f));
+    let ext_for = |f: &LodForm| {
+        shadow_lod
+            && match prefer {
+                LookupForm::Lod => *f == LodForm::Lod,
+                LookupForm::Implicit => matches!(f, LodForm::Implicit(_)),
+                _ => false,
+            }
+    };
     let (form, how) = forms
         .into_iter()
         .find(|(f, _)| {
-            available(path, kind, t, *f, proj)
-                && (offset == [0, 0] || offset_available(path, kind, t, *f))
+            let ext = ext_for(f);
+            available_with(path, kind, t, *f, proj, ext)
+                && (offset == [0, 0] || offset_available_with(path, kind, t, *f, ext))
         })
         .ok_or_else(|| {
             format!(
@@ -417,6 +375,12 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
         proj,
         mode: case.sampler.depth_texture_mode,
         offset,
+        gather: None,
+    };
+    let how = if uses_shadow_lod(&key) {
+        format!("{how} (EXT_texture_shadow_lod overload)")
+    } else {
+        how.to_string()
     };
     let folded = matches!(form, LodForm::Lod | LodForm::Grad) && bias != 0.0;
     let lod_eff = if folded { lod + bias } else { lod };
@@ -449,6 +413,11 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
         _ => 0.0,
     };
     let (mut dx, mut dy) = gradients(case, lod_eff);
+    if shadow && t == Target::CubeArray && form == LodForm::Lod {
+        // textureLod(samplerCubeArrayShadow, P, compare, lod): the compare value is in `x`, the
+        // LOD goes in dx.x (the gradients are unused by textureLod).
+        dx[0] = lod_eff;
+    }
     if let LodForm::Implicit(_) = form {
         if proj {
             // The function divides by q, so the coordinate must vary q times faster.
@@ -477,7 +446,7 @@ pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan,
         x,
         dx,
         dy,
-        note: how.to_string(),
+        note: how,
     })
 }
 
@@ -515,5 +484,11 @@ pub fn gradients(case: &Case, lod: f32) -> ([f32; 4], [f32; 4]) {
     (dx, dy)
 }
 
+mod forms;
+mod gather;
 #[cfg(test)]
 mod tests;
+
+pub use forms::{
+    available, available_with, offset_available, offset_available_with, uses_shadow_lod,
+};

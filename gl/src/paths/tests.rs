@@ -231,3 +231,53 @@ fn offset_lookups_exist_per_glsl_4_60_8_9_2() {
         LodForm::Grad
     );
 }
+
+#[test]
+fn ext_texture_shadow_lod_overloads_are_used_when_the_form_asks_for_them() {
+    // EXT_texture_shadow_lod §8.9.2: textureLod on samplerCubeShadow, sampler2DArrayShadow and
+    // samplerCubeArrayShadow, texture(sampler2DArrayShadow, P, bias), textureOffset on
+    // sampler2DArrayShadow.
+    for (target, layers) in [
+        (Target::Cube, 6),
+        (Target::T2dArray, 2),
+        (Target::CubeArray, 6),
+    ] {
+        let mut c = case(target, 4, 4, layers);
+        c.lookup.lod = 1.0;
+        let with = plan_in(ApiPath::GlslCore, &c, LookupForm::Lod, true).unwrap();
+        assert_eq!(with.key.form, LodForm::Lod, "{target}");
+        assert!(uses_shadow_lod(&with.key));
+        assert!(
+            with.note.contains("EXT_texture_shadow_lod"),
+            "{}",
+            with.note
+        );
+        // Without the extension, or without asking for textureLod: the form of before.
+        let without = plan_in(ApiPath::GlslCore, &c, LookupForm::Lod, false).unwrap();
+        assert_ne!(without.key.form, LodForm::Lod, "{target}");
+        let auto = plan_in(ApiPath::GlslCore, &c, LookupForm::Auto, true).unwrap();
+        assert_eq!(auto.key.form, without.key.form, "{target}");
+        if target == Target::CubeArray {
+            // textureLod(samplerCubeArrayShadow, P, compare, lod): compare in x, lod in dx.x.
+            assert_eq!((with.x, with.dx[0]), (c.lookup.dref as f32, 1.0));
+        }
+    }
+    let mut b = case(Target::T2dArray, 4, 4, 2);
+    b.lookup.bias = 1.0;
+    let p = plan_in(ApiPath::Es300, &b, LookupForm::Implicit, true).unwrap();
+    assert_eq!(p.key.form, LodForm::Implicit(true));
+    assert!(uses_shadow_lod(&p.key));
+    let p = plan_in(ApiPath::Es300, &b, LookupForm::Implicit, false).unwrap();
+    assert_ne!(
+        p.key.form,
+        LodForm::Implicit(true),
+        "no bias form without the extension"
+    );
+    b.lookup.offset = [1, 0, 0];
+    let p = plan_in(ApiPath::GlslCore, &b, LookupForm::Implicit, true).unwrap();
+    assert_eq!(
+        p.key.form,
+        LodForm::Implicit(true),
+        "textureOffset with bias"
+    );
+}

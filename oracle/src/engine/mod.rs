@@ -9,6 +9,7 @@
 //! - acceptance: `accept::finalize` turns the per-profile intervals into the acceptance sets.
 
 mod footprint;
+mod gather;
 mod geometry;
 mod inputs;
 mod levels;
@@ -61,6 +62,10 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
         cites: Vec::new(),
         notes: Vec::new(),
     };
+    if case.lookup.gather.is_some() {
+        let incomplete = lod::incomplete(&rules, &case.texture, &case.sampler, false);
+        return Ok(gather::run(e, &rules, case, incomplete));
+    }
     let kind = inputs::kind(&mut e, &rules, case);
     // Completeness (§8.17).
     let incomplete = lod::incomplete(&rules, &case.texture, &case.sampler, kind == Kind::Stencil);
@@ -208,6 +213,7 @@ fn finish(
             spec_value,
             accept,
             layout,
+            gather: None,
             implementation_defined,
             citations: e.cites,
         },

@@ -78,6 +78,7 @@ pub fn case2d(
             lod: 0.0,
             bias: 0.0,
             offset: [0; 3],
+            gather: None,
         },
         expect: None,
     }

@@ -128,11 +128,25 @@ fn laid_out(case: &Case, api: shadowcheck_model::ApiPath, r: f64) -> [f64; 4] {
         .and_then(|e| e.layout.get(&api))
         .copied()
         .unwrap_or([Channel::R; 4]);
+    let pass = strict_value(case) == Some(r);
     layout.map(|c| match c {
         Channel::R | Channel::ROrZero => r,
         Channel::One => 1.0,
         Channel::Zero | Channel::Unused => 0.0,
+        // A gather component: its own strict value when answering the expectation, else r.
+        Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => c
+            .gather_index()
+            .filter(|_| pass)
+            .and_then(|k| gather_strict(case, k))
+            .unwrap_or(r),
     })
+}
+
+/// Gather component `k`'s strict value (its spec value where the strict set holds it).
+fn gather_strict(case: &Case, k: usize) -> Option<f64> {
+    let e = case.expect.as_ref()?;
+    let acc = e.gather.as_ref()?[k].get(&Profile::strictest())?;
+    acc.0.first().map(|i| i.lo)
 }
 
 fn strict_value(case: &Case) -> Option<f64> {

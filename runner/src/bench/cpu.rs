@@ -35,10 +35,17 @@ pub fn exact_rgba(e: &Expectation, api: ApiPath) -> Option<[f64; 4]> {
                 .map(|i| (i.lo + i.hi) / 2.0)
         })
         .unwrap_or(0.0);
-    Some(layout.map(|c| match c {
-        Channel::R | Channel::ROrZero => r,
-        Channel::Zero | Channel::Unused => 0.0,
-        Channel::One => 1.0,
+    Some(layout.map(|c| {
+        match c {
+            Channel::R | Channel::ROrZero => r,
+            Channel::Zero | Channel::Unused => 0.0,
+            Channel::One => 1.0,
+            Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => c
+                .gather_index()
+                .and_then(|k| e.gather.as_ref()?[k].get(&shadowcheck_model::Profile::strictest()))
+                .and_then(|a| a.0.first())
+                .map_or(r, |i| (i.lo + i.hi) / 2.0),
+        }
     }))
 }
 
@@ -150,6 +157,7 @@ mod tests {
             spec_value: Some(1.0),
             accept,
             layout,
+            gather: None,
             implementation_defined: None,
             citations: vec![],
         };

@@ -241,6 +241,7 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
             lod: a.lod,
             bias: a.bias,
             offset,
+            gather: None,
         },
         expect: None,
     })

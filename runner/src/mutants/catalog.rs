@@ -86,6 +86,11 @@ pub fn about(f: Fault) -> &'static str {
             "array layer rounded to nearest even under LINEAR (GL 4.6 §8.14.2 LINEAR: ⌊r + 1/2⌋)"
         }
         F::ColourDividedBy256 => "colour (R8) conversion c/256 instead of c/255 (eq. (2.1))",
+        F::GatherOrderRotated => {
+            "shadow textureGather components in a rotated texel order (gather4_c emulation)"
+        }
+        F::GatherIgnoresRef => "shadow textureGather returns depths, refZ ignored (no comparison)",
+        F::GatherUsesLodLevel => "textureGather reads the level λ selects instead of level base",
         #[allow(unreachable_patterns)]
         _ => "",
     }

@@ -224,7 +224,7 @@ pub struct ExpectedSummary {
     pub strict: String,
     /// Acceptance set under `quality`.
     pub quality: String,
-    /// Channel layout of the API path (`r`, `0`, `1`, `-`).
+    /// Channel layout of the API path (`r`, `0`, `1`, `-`, `r|0`; `g0`..`g3` for a gather).
     pub layout: String,
     /// The profile that decided the verdict (`quality` for Warn and Fail: Warn is inside it, Fail
     /// outside; only non-passing tests carry an expected summary).

@@ -83,6 +83,8 @@ fn layout_char(c: Channel) -> char {
         Channel::One => '1',
         Channel::Unused => '-',
         Channel::ROrZero => 'z',
+        // Gather cases are refused before a program is written (`repro` has no gather draw).
+        Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => 'g',
     }
 }
 
@@ -108,7 +110,12 @@ pub fn env_words(s: &Subject) -> String {
 
 /// The program text, or why this path cannot be planned for this case (the worker would Skip it).
 pub fn program(s: &Subject) -> Result<String, String> {
-    let plan = paths::plan_with(s.api, &s.case, s.backend.form)?;
+    if s.case.lookup.gather.is_some() {
+        return Err("shadowcheck repro does not write textureGather programs yet (its C check reads one r, a gather returns four comparisons): write one by hand from the case's JSON (`shadowcheck explain`)".into());
+    }
+    // As the GL worker on a driver with EXT_texture_shadow_lod (`paths::plan_for`): a backend
+    // name asking for `lod` / `implicit` gets that extension's overloads (the shader requires it).
+    let plan = paths::plan_in(s.api, &s.case, s.backend.form, true)?;
     let mut tok = Tokens::default();
     let mut body = String::new();
     let es = s.backend.api.is_es();

@@ -31,6 +31,7 @@ fn subject() -> Subject {
             lod: 0.0,
             bias: 0.0,
             offset: [0; 3],
+            gather: None,
         },
         expect: None,
     };

@@ -67,6 +67,10 @@ pub fn title(s: &Subject, run: &RunOutput) -> String {
                     Channel::One => "1",
                     Channel::Unused => "any",
                     Channel::ROrZero => "r or 0",
+                    Channel::G0 => "g0",
+                    Channel::G1 => "g1",
+                    Channel::G2 => "g2",
+                    Channel::G3 => "g3",
                 })
                 .collect();
             format!("({}) with r in {accepted}", ch.join(", "))

@@ -109,11 +109,13 @@ fn case(id: &str, spec: Spec, api: Vec<ApiPath>) -> Case {
             lod: 0.0,
             bias: 0.0,
             offset: [0; 3],
+            gather: None,
         },
         expect: Some(Expectation {
             spec_value: Some(1.0),
             accept,
             layout,
+            gather: None,
             implementation_defined: None,
             citations: vec![],
         }),

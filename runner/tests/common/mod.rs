@@ -121,11 +121,13 @@ pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
             lod: 0.0,
             bias: 0.0,
             offset: [0; 3],
+            gather: None,
         },
         expect: Some(Expectation {
             spec_value: Some(r),
             accept,
             layout,
+            gather: None,
             implementation_defined: None,
             citations: vec!["GL 4.6 §8.23.1 Table 8.23".into()],
         }),

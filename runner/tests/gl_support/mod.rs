@@ -219,6 +219,7 @@ pub fn d16_case(id: &str, spec: Spec, api: &[ApiPath], target: Target, c: u32, d
             lod: 0.0,
             bias: 0.0,
             offset: [0; 3],
+            gather: None,
         },
         expect: None,
     }

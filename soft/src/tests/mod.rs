@@ -53,6 +53,7 @@ pub(super) fn case2d(
             lod: 0.0,
             bias: 0.0,
             offset: [0; 3],
+            gather: None,
         },
         expect: None,
     }

@@ -61,8 +61,13 @@ pub fn observed_r(r: &TestResult, geo: &Geometry) -> Option<f64> {
         &r.expected,
         geo.expectation(r).and_then(|e| e.layout.get(&r.api)),
     ) {
-        (Some(e), _) => e.layout.split(',').position(|c| c.trim() == "r")?,
-        (None, Some(layout)) => layout.iter().position(|c| *c == Channel::R)?,
+        (Some(e), _) => e
+            .layout
+            .split(',')
+            .position(|c| matches!(c.trim(), "r" | "g0"))?,
+        (None, Some(layout)) => layout
+            .iter()
+            .position(|c| matches!(c, Channel::R | Channel::G0))?,
         (None, None) => 0,
     };
     obs.0.get(idx).copied()

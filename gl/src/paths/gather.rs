@@ -1,0 +1,84 @@
+//! The plan of a shadow `textureGather*` case (GLSL 4.60 / GLSL ES 3.20 §8.9.4):
+//! `textureGather(sampler*Shadow, P, refZ)`, `textureGatherOffset(..., refZ, ivec2)` and
+//! `textureGatherOffsets(..., refZ, ivec2[4])` on 2D, 2D array, cube, cube array and (desktop)
+//! rectangle shadow samplers.
+
+use super::{gradients, sampler_kind, GatherCall, LodForm, Plan, SamplerKind, ShaderKey};
+use shadowcheck_model::{ApiPath, Case, Target};
+
+/// Plans a gather case on `path`, or says why it cannot run.
+pub(super) fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
+    let t = case.texture.target;
+    let l = &case.lookup;
+    if !matches!(path, ApiPath::GlslCore | ApiPath::Es300) {
+        return Err(format!("{path} has no shadow textureGather"));
+    }
+    let kind = sampler_kind(case);
+    if kind != SamplerKind::Shadow {
+        return Err("textureGather here is the shadow form only (comparison enabled)".into());
+    }
+    let es_target = matches!(
+        t,
+        Target::T2d | Target::T2dArray | Target::Cube | Target::CubeArray
+    );
+    let gl_target = es_target || t == Target::Rect;
+    if !(gl_target && (path != ApiPath::Es300 || es_target)) || l.projective {
+        return Err(format!(
+            "{path} has no shadow textureGather on a {t} texture"
+        ));
+    }
+    let i8s = |v: i32| i8::try_from(v).map_err(|_| format!("gather offset {v} out of range"));
+    let offset = [i8s(l.offset[0])?, i8s(l.offset[1])?];
+    let call = match l.gather.as_ref().and_then(|g| g.offsets) {
+        Some(o) => {
+            let mut k = [[0i8; 2]; 4];
+            for (dst, src) in k.iter_mut().zip(o) {
+                *dst = [i8s(src[0])?, i8s(src[1])?];
+            }
+            GatherCall::Offsets(k)
+        }
+        None => GatherCall::Single,
+    };
+    if t.is_cube() && (offset != [0, 0] || call != GatherCall::Single) {
+        return Err("textureGatherOffset(s) takes no cube sampler".into());
+    }
+    // λ plays no part; a case with a level of detail draws with the coordinate varying by its
+    // gradients (unbatched), so that a level chosen by λ would show.
+    let lod = (l.lod + l.bias) as f32;
+    let derivs = lod != 0.0;
+    let key = ShaderKey {
+        path,
+        target: t,
+        kind,
+        form: LodForm::Gather(derivs),
+        proj: false,
+        mode: None,
+        offset,
+        gather: Some(call),
+    };
+    let c = l.coord.map(|v| v as f32);
+    let dref = l.dref as f32;
+    // P as for the other shadow lookups (shaders::gather_call splits it into P and refZ).
+    let p = match t {
+        Target::T2d | Target::Rect => [c[0], c[1], dref, 1.0],
+        Target::CubeArray => [c[0], c[1], c[2], l.layer as f32],
+        _ => [c[0], c[1], c[2], dref],
+    };
+    let (dx, dy) = if derivs {
+        gradients(case, lod)
+    } else {
+        ([0.0; 4], [0.0; 4])
+    };
+    Ok(Plan {
+        key,
+        p,
+        x: dref,
+        dx,
+        dy,
+        note: if derivs {
+            "textureGather, coordinate varying by the case's λ gradients (ignored by gather)".into()
+        } else {
+            "textureGather".into()
+        },
+    })
+}
