@@ -10,7 +10,8 @@
 //! Loading never panics on bad input: every error names the file, the case (index and id, when the
 //! case got far enough to have one) and the field (a path such as `texture.levels[0].width`).
 
-use shadowcheck_model::{validate::validate, Case, ModelError, SCHEMA_VERSION};
+use shadowcheck_model::state::validate_state;
+use shadowcheck_model::{validate::validate, Case, ModelError, StateCase, SCHEMA_VERSION};
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -27,6 +28,10 @@ pub struct FixtureFile {
     /// The seed the grid was generated with.
     pub seed: u64,
     pub cases: Vec<Case>,
+    /// TexParameter / GetTexParameter state cases (a file of the `state/` folder holds only these,
+    /// after an empty `cases`); absent from lookup files.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub state_cases: Vec<StateCase>,
 }
 
 /// Where in a file an error is, as far as it is known.
@@ -144,7 +149,10 @@ struct RawFile {
     generator: String,
     grid: String,
     seed: u64,
+    #[serde(default)]
     cases: Vec<Box<serde_json::value::RawValue>>,
+    #[serde(default)]
+    state_cases: Vec<Box<serde_json::value::RawValue>>,
 }
 
 /// Only a case's id, read from its text when the case itself does not deserialize.
@@ -169,6 +177,16 @@ pub fn to_string(file: &FixtureFile) -> Result<String, serde_json::Error> {
     );
     out.push_str(",\"cases\":[");
     for (i, case) in file.cases.iter().enumerate() {
+        out.push_str(if i == 0 { "\n" } else { ",\n" });
+        out.push_str(&serde_json::to_string(case)?);
+    }
+    if file.state_cases.is_empty() {
+        out.push_str("\n]}\n");
+        return Ok(out);
+    }
+    out.push_str(if file.cases.is_empty() { "]" } else { "\n]" });
+    out.push_str(",\"state_cases\":[");
+    for (i, case) in file.state_cases.iter().enumerate() {
         out.push_str(if i == 0 { "\n" } else { ",\n" });
         out.push_str(&serde_json::to_string(case)?);
     }
@@ -292,12 +310,37 @@ fn parse_inner(
             }
         }
     }
+    let mut state_cases = Vec::with_capacity(raw.state_cases.len());
+    for (index, value) in raw.state_cases.iter().enumerate() {
+        if stop_at_first && !errors.is_empty() {
+            break;
+        }
+        let result = state_from_text(file, index, &raw.grid, value.get()).and_then(|case| {
+            let at = CaseRef {
+                index: Some(index),
+                id: Some(case.id.clone()),
+            };
+            match seen.insert(case.id.clone(), index) {
+                Some(first) => Err(FixtureError::DuplicateId {
+                    file: file.to_path_buf(),
+                    at,
+                    first,
+                }),
+                None => Ok(case),
+            }
+        });
+        match result {
+            Ok(case) => state_cases.push(case),
+            Err(e) => errors.push(e),
+        }
+    }
     let f = FixtureFile {
         schema_version: raw.schema_version,
         generator: raw.generator,
         grid: raw.grid,
         seed: raw.seed,
         cases,
+        state_cases,
     };
     Ok((f, errors))
 }
@@ -380,6 +423,45 @@ fn case_from_text(file: &Path, index: usize, grid: &str, text: &str) -> Result<C
         },
     })?;
     crate::recheck::check(file, at, grid, &case)?;
+    Ok(case)
+}
+
+/// Deserializes state case number `index` (of `state_cases`), validates it and re-derives its
+/// `expect` with the linked oracle (`recheck::check_state`).
+fn state_from_text(
+    file: &Path,
+    index: usize,
+    grid: &str,
+    text: &str,
+) -> Result<StateCase, FixtureError> {
+    let mut de = serde_json::Deserializer::from_str(text);
+    let case: StateCase =
+        serde_path_to_error::deserialize(&mut de).map_err(|e| FixtureError::Case {
+            file: file.to_path_buf(),
+            at: CaseRef {
+                index: Some(index),
+                id: serde_json::from_str::<IdOnly>(text).ok().map(|c| c.id),
+            },
+            field: format!("state_cases.{}", e.path()),
+            msg: strip_position(&e.inner().to_string()),
+        })?;
+    let at = CaseRef {
+        index: Some(index),
+        id: Some(case.id.clone()),
+    };
+    validate_state(&case).map_err(|e| FixtureError::Case {
+        file: file.to_path_buf(),
+        at: at.clone(),
+        field: match &e {
+            ModelError::Invalid { field, .. } => field.clone(),
+            _ => "(case)".into(),
+        },
+        msg: match e {
+            ModelError::Invalid { msg, .. } => msg,
+            other => other.to_string(),
+        },
+    })?;
+    crate::recheck::check_state(file, &at, grid, &case)?;
     Ok(case)
 }
 

@@ -7,9 +7,9 @@ use super::legacy::Legacy;
 use super::names::{BackendName, ContextApi};
 use super::paths::GlInfo;
 use super::GlError;
-use shadowcheck_model::{ApiPath, Case, Format, Spec};
+use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase};
 use shadowcheck_protocol::{
-    Capabilities, Hello, PathSkip, Reply, Request, Support, FEATURES, PROTOCOL_VERSION,
+    Capabilities, Hello, PathSkip, Reply, Request, StateResult, Support, FEATURES, PROTOCOL_VERSION,
 };
 use std::ffi::c_void;
 use std::io::{BufRead, Write};
@@ -135,12 +135,43 @@ impl Worker {
         Ok(w)
     }
 
-    /// TexParameter state self-check against the oracle's tables (see `state.rs`).
-    pub fn state_check(&self) -> Vec<super::state::StateCheck> {
-        // SAFETY: the worker's context is current on this thread.
-        unsafe { super::state::check(&self.renderer.gl, &self.renderer.info) }
+    /// Runs a state case (observes; the runner judges). Paths of another context kind or a
+    /// target the context lacks are skipped with the reason.
+    pub fn run_state(&mut self, case: &StateCase) -> Reply {
+        let case_id = case.id.clone();
+        match self.caps.support_state(case) {
+            Support::Skip(reason) | Support::NotApplicable(reason) => {
+                return Reply::Skip { case_id, reason }
+            }
+            Support::Run { apis, others } => {
+                if let Some(reason) = self.unexposed(case.spec) {
+                    return Reply::Skip { case_id, reason };
+                }
+                // SAFETY: the worker's context is current on this thread.
+                let observed = unsafe { super::state::observe(&self.renderer.gl, case) };
+                let skipped = case
+                    .api
+                    .iter()
+                    .filter(|a| !apis.contains(a))
+                    .map(|a| PathSkip {
+                        api: a.key().to_string(),
+                        reason: others.clone().unwrap_or_default(),
+                    })
+                    .collect();
+                Reply::StateObservation {
+                    case_id,
+                    results: apis
+                        .iter()
+                        .map(|a| StateResult {
+                            api: a.key().to_string(),
+                            observed: observed.clone(),
+                        })
+                        .collect(),
+                    skipped,
+                }
+            }
+        }
     }
-
     pub fn info(&self) -> &GlInfo {
         &self.renderer.info
     }
@@ -373,6 +404,8 @@ pub fn declared_capabilities(i: &GlInfo) -> Capabilities {
                     "fail_value" => i.has_ext("GL_ARB_shadow_ambient"),
                     "border_clamp" => i.border_clamp(),
                     "stencil_texturing" => i.stencil_texturing(),
+                    // TexParameter / GetTexParameter exist in every context.
+                    "tex_parameter" => true,
                     _ => false,
                 })
                 .map(|f| f.key.to_string())
@@ -401,6 +434,7 @@ fn answer_message(case_id: String, a: Answer) -> Reply {
 /// An entry of the batch: a parsed case, or a line that should have been one.
 enum Entry {
     Case(Box<Case>),
+    State(Box<StateCase>),
     Bad { id: String, message: String },
 }
 
@@ -410,6 +444,13 @@ fn write_line(out: &mut impl Write, msg: &Reply) -> std::io::Result<()> {
     out.write_all(b"\n")
 }
 
+/// Where each answer of a batch comes from, in order.
+enum Slot {
+    Lookup(String),
+    State(Box<StateCase>),
+    Bad(String, String),
+}
+
 fn flush_batch(
     worker: &mut impl Serve,
     batch: &mut Vec<Entry>,
@@ -417,26 +458,28 @@ fn flush_batch(
 ) -> std::io::Result<()> {
     // Move the cases out; keep where each answer goes (a case id, or a parse error).
     let mut cases: Vec<Case> = Vec::new();
-    let mut slots: Vec<Result<String, (String, String)>> = Vec::new();
+    let mut slots: Vec<Slot> = Vec::new();
     for e in batch.drain(..) {
         match e {
             Entry::Case(c) => {
-                slots.push(Ok(c.id.clone()));
+                slots.push(Slot::Lookup(c.id.clone()));
                 cases.push(*c);
             }
-            Entry::Bad { id, message } => slots.push(Err((id, message))),
+            Entry::State(c) => slots.push(Slot::State(c)),
+            Entry::Bad { id, message } => slots.push(Slot::Bad(id, message)),
         }
     }
     let mut answers = worker.run_batch(&cases)?.into_iter();
     for slot in slots {
         let msg = match slot {
-            Ok(id) => answer_message(
+            Slot::State(c) => worker.run_state(&c),
+            Slot::Lookup(id) => answer_message(
                 id,
                 answers
                     .next()
                     .unwrap_or(Answer::Error("internal: missing answer".into())),
             ),
-            Err((id, message)) => Reply::Error {
+            Slot::Bad(id, message) => Reply::Error {
                 case_id: id,
                 message,
             },
@@ -452,6 +495,14 @@ fn flush_batch(
 pub trait Serve {
     fn hello(&self) -> Hello;
     fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>>;
+    /// The answer to a state case. An implementation that does not declare the `tex_parameter`
+    /// feature is never sent one; if it is, it answers Skip.
+    fn run_state(&mut self, case: &StateCase) -> Reply {
+        Reply::Skip {
+            case_id: case.id.clone(),
+            reason: "this implementation runs no state cases".into(),
+        }
+    }
 }
 
 impl Serve for Worker {
@@ -465,6 +516,9 @@ impl Serve for Worker {
     }
     fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>> {
         Ok(Worker::run_batch(self, cases))
+    }
+    fn run_state(&mut self, case: &StateCase) -> Reply {
+        Worker::run_state(self, case)
     }
 }
 
@@ -492,6 +546,7 @@ pub fn serve(
                 output.flush()?;
             }
             Ok(Request::Case { case }) => batch.push(Entry::Case(case)),
+            Ok(Request::State { case }) => batch.push(Entry::State(case)),
             Ok(Request::Flush) => flush_batch(worker, &mut batch, &mut output)?,
             Ok(Request::Bye) => break,
             Err(e) => {
@@ -501,11 +556,11 @@ pub fn serve(
                     .as_ref()
                     .and_then(|v| v.get("type"))
                     .and_then(|t| t.as_str())
-                    == Some("case");
-                if is_case {
+                    .filter(|t| *t == "case" || *t == "state");
+                if let Some(ty) = is_case {
                     let id = v
                         .as_ref()
-                        .and_then(|v| v.pointer("/case/id"))
+                        .and_then(|v| v.pointer(&format!("/{ty}/id")))
                         .and_then(|i| i.as_str())
                         .unwrap_or("")
                         .to_string();

@@ -8,6 +8,7 @@ pub mod families;
 pub mod offset;
 pub mod random;
 pub mod specs;
+pub mod tex_params;
 
 use crate::dsl;
 use crate::fixtures::{self, FixtureFile};
@@ -32,6 +33,13 @@ pub enum GridError {
     /// combination, or the case is malformed. Either way the grid must be fixed, not the fixture.
     #[error("grid `{grid}`: the oracle rejects a generated case (the grid needs a filter for it): {source}")]
     Oracle { grid: String, source: OracleError },
+    /// The oracle cannot state a generated state case's expectation.
+    #[error("grid `{grid}`: state case `{id}`: {msg}")]
+    State {
+        grid: String,
+        id: String,
+        msg: String,
+    },
     #[error(transparent)]
     Fixture(#[from] fixtures::FixtureError),
 }
@@ -231,6 +239,7 @@ fn into_files(grid: &str, seed: u64, cases: Vec<(String, Case)>) -> Vec<(String,
                     grid: grid.to_string(),
                     seed,
                     cases,
+                    state_cases: vec![],
                 },
             )
         })
@@ -271,6 +280,7 @@ pub fn for_each_file(
                     grid: name.to_string(),
                     seed,
                     cases,
+                    state_cases: vec![],
                 },
             )?;
         }
@@ -280,6 +290,10 @@ pub fn for_each_file(
     let (files, mut cases): (Vec<String>, Vec<Case>) = cases.into_iter().unzip();
     fill_expectations(name, &mut cases)?;
     for (rel, file) in into_files(name, seed, files.into_iter().zip(cases).collect()) {
+        sink(rel, file)?;
+    }
+    // `state/` sorts after every spec folder, so files still arrive sorted by path.
+    for (rel, file) in tex_params::files(name, seed)? {
         sink(rel, file)?;
     }
     Ok(())
