@@ -263,11 +263,22 @@ impl Reply {
         if tag.ty != "hello" {
             return Err(format!("expected a hello message, got type `{}`", tag.ty));
         }
-        if h.protocol != PROTOCOL_VERSION {
-            return Err(format!(
-                "protocol {} (this runner speaks {PROTOCOL_VERSION})",
-                h.protocol
-            ));
+        let mut h = h;
+        match h.protocol {
+            PROTOCOL_VERSION => {}
+            // Version 1 had no state cases: such an implementation is never sent one (its
+            // features lose `tex_parameter`; no list meant every version-1 feature).
+            1 => {
+                let all = || FEATURES.iter().map(|f| f.key.to_string()).collect();
+                let mut features: Vec<String> = h.capabilities.features.take().unwrap_or_else(all);
+                features.retain(|f| f != TEX_PARAMETER);
+                h.capabilities.features = Some(features);
+            }
+            other => {
+                return Err(format!(
+                    "protocol {other} (this runner speaks {PROTOCOL_VERSION}, and 1 without state cases)"
+                ))
+            }
         }
         Ok(h)
     }
