@@ -236,7 +236,10 @@ fn state_requests_and_answers_round_trip() {
     let mut buf = Vec::new();
     Request::write_state(&mut buf, &case, false);
     let line = String::from_utf8(buf).unwrap();
-    assert!(line.starts_with(r#"{"type":"state","state":{"id":"#), "{line}");
+    assert!(
+        line.starts_with(r#"{"type":"state","state":{"id":"#),
+        "{line}"
+    );
     assert!(!line.contains("expect"), "{line}");
     match Request::parse(&line).unwrap() {
         Request::State { case: got } => assert_eq!(got.call, case.call),
@@ -244,7 +247,9 @@ fn state_requests_and_answers_round_trip() {
     }
     let answer = r#"{"type":"state_observation","case_id":"s","results":[{"api":"core","error":"invalid_enum","value":{"enum":0}}]}"#;
     match Reply::parse_answer(answer).unwrap() {
-        Reply::StateObservation { case_id, results, .. } => {
+        Reply::StateObservation {
+            case_id, results, ..
+        } => {
             assert_eq!(case_id, "s");
             assert_eq!(results[0].observed.error, Some(GlError::InvalidEnum));
             assert_eq!(results[0].observed.value, Some(StateValue::Enum(0)));

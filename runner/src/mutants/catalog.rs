@@ -86,6 +86,12 @@ pub fn about(f: Fault) -> &'static str {
             "array layer rounded to nearest even under LINEAR (GL 4.6 §8.14.2 LINEAR: ⌊r + 1/2⌋)"
         }
         F::ColourDividedBy256 => "colour (R8) conversion c/256 instead of c/255 (eq. (2.1))",
+        F::WrongInitialCompareFunc => {
+            "a new texture's TEXTURE_COMPARE_FUNC is LESS, not LEQUAL (GL 4.6 Table 23.15): seen by state cases"
+        }
+        F::IllegalValueStored => {
+            "an illegal TexParameter enum value stored instead of INVALID_ENUM (GL 4.6 §8.10): seen by state cases"
+        }
         #[allow(unreachable_patterns)]
         _ => "",
     }
