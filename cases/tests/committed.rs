@@ -265,7 +265,14 @@ fn density_counts_tests_and_distinct_states_per_path() {
 fn readme_coverage_table_is_current() {
     let readme = std::fs::read_to_string(crate_dir().join("README.md")).unwrap();
     let have = coverage::section(&readme).expect("coverage markers in cases/README.md");
-    let want = Coverage::of(&default_unfilled()).markdown();
+    let states: Vec<StateCase> = grids::unfilled("default", grids::DEFAULT_SEED)
+        .unwrap()
+        .into_iter()
+        .flat_map(|(_, f)| f.state_cases)
+        .collect();
+    let want = Coverage::of(&default_unfilled())
+        .with_states(&states)
+        .markdown();
     assert!(
         have.trim() == want.trim(),
         "the coverage table in cases/README.md is out of date; run `cargo run --release -- gen --grid default -o cases/fixtures --update-readme cases/README.md`"

@@ -76,3 +76,16 @@ fn state_cases_pass_on_every_mesa_context_through_run() {
         assert!(bad.is_empty(), "{b}:\n{}", bad.join("\n"));
     }
 }
+
+#[test]
+fn repro_refuses_a_state_case_with_the_reason() {
+    let e = shadowcheck_runner::repro::subject(
+        "egl:llvmpipe:core",
+        "state/gl46/core/2d/compare_mode/initial@core",
+        &[fixtures().join("state")],
+    )
+    .err()
+    .map(|e| e.to_string())
+    .unwrap_or_default();
+    assert!(e.contains("TexParameter state case"), "{e}");
+}

@@ -303,7 +303,9 @@ pub fn for_each_file(
 /// generator would evaluate. Used by tests that must not depend on the oracle.
 pub fn unfilled(name: &str, seed: u64) -> Result<Vec<(String, FixtureFile)>, GridError> {
     let cases = to_cases(name, drafts(name, seed)?)?;
-    Ok(into_files(name, seed, cases))
+    let mut files = into_files(name, seed, cases);
+    files.extend(tex_params::unfilled_files(name, seed));
+    Ok(files)
 }
 
 /// Distinct relative paths of a list of files (for reports).

@@ -120,12 +120,31 @@ pub fn cases_of(spec: Spec) -> Vec<StateCase> {
     out
 }
 
+/// The state fixture files of a grid without expectations.
+pub fn unfilled_files(grid: &str, seed: u64) -> Vec<(String, FixtureFile)> {
+    [Spec::Gl46, Spec::Gles32]
+        .into_iter()
+        .map(|spec| {
+            (
+                format!("state/{}.json", spec.key()),
+                FixtureFile {
+                    schema_version: SCHEMA_VERSION,
+                    generator: super::GENERATOR.to_string(),
+                    grid: grid.to_string(),
+                    seed,
+                    cases: vec![],
+                    state_cases: cases_of(spec),
+                },
+            )
+        })
+        .collect()
+}
+
 /// The state fixture files of a grid (`state/<spec>.json`), expectations filled by the oracle.
 pub fn files(grid: &str, seed: u64) -> Result<Vec<(String, FixtureFile)>, GridError> {
-    let mut files = Vec::new();
-    for spec in [Spec::Gl46, Spec::Gles32] {
-        let mut cases = cases_of(spec);
-        for c in &mut cases {
+    let mut files = unfilled_files(grid, seed);
+    for (_, f) in &mut files {
+        for c in &mut f.state_cases {
             let e = ostate::expect_state(c).map_err(|msg| GridError::State {
                 grid: grid.into(),
                 id: c.id.clone(),
@@ -133,17 +152,6 @@ pub fn files(grid: &str, seed: u64) -> Result<Vec<(String, FixtureFile)>, GridEr
             })?;
             c.expect = Some(e);
         }
-        files.push((
-            format!("state/{}.json", spec.key()),
-            FixtureFile {
-                schema_version: SCHEMA_VERSION,
-                generator: super::GENERATOR.to_string(),
-                grid: grid.to_string(),
-                seed,
-                cases: vec![],
-                state_cases: cases,
-            },
-        ));
     }
     Ok(files)
 }
