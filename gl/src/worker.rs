@@ -141,7 +141,7 @@ impl Worker {
         let case_id = case.id.clone();
         match self.caps.support_state(case) {
             Support::Skip(reason) | Support::NotApplicable(reason) => {
-                return Reply::Skip { case_id, reason }
+                Reply::Skip { case_id, reason }
             }
             Support::Run { apis, others } => {
                 if let Some(reason) = self.unexposed(case.spec) {
