@@ -149,8 +149,8 @@ struct RawFile {
     generator: String,
     grid: String,
     seed: u64,
-    #[serde(default)]
     cases: Vec<Box<serde_json::value::RawValue>>,
+    /// Present in state files only (after an empty `cases`).
     #[serde(default)]
     state_cases: Vec<Box<serde_json::value::RawValue>>,
 }

@@ -198,6 +198,16 @@ impl Capabilities {
                 case.target
             ));
         }
+        // DEPTH_STENCIL_TEXTURE_MODE exists from GL 4.3 / ES 3.1 on: a context without it (ES 3.0)
+        // answers INVALID_ENUM where the case's spec has the pname. Skip, as for lookups.
+        if case.pname == shadowcheck_model::StatePname::DepthStencilMode
+            && !listed(&self.features, "stencil_texturing")
+        {
+            return Support::Skip(
+                "DEPTH_STENCIL_TEXTURE_MODE (feature `stencil_texturing`) not supported by this backend"
+                    .to_string(),
+            );
+        }
         let others = (apis.len() < case.api.len())
             .then(|| "API path not supported by this backend".to_string());
         Support::Run { apis, others }
