@@ -14,6 +14,7 @@
 pub mod build;
 pub mod coverage;
 pub mod dsl;
+mod fixture_error;
 pub mod fixtures;
 pub mod grids;
 pub mod markers;

@@ -9,7 +9,7 @@ use super::paths::GlInfo;
 use super::GlError;
 use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase};
 use shadowcheck_protocol::{
-    Capabilities, Hello, PathSkip, Reply, Request, StateResult, Support, FEATURES, PROTOCOL_VERSION,
+    Capabilities, Hello, PathSkip, Reply, Request, Support, FEATURES, PROTOCOL_VERSION,
 };
 use std::ffi::c_void;
 use std::io::{BufRead, Write};
@@ -138,39 +138,12 @@ impl Worker {
     /// Runs a state case (observes; the runner judges). Paths of another context kind or a
     /// target the context lacks are skipped with the reason.
     pub fn run_state(&mut self, case: &StateCase) -> Reply {
-        let case_id = case.id.clone();
-        match self.caps.support_state(case) {
-            Support::Skip(reason) | Support::NotApplicable(reason) => {
-                Reply::Skip { case_id, reason }
-            }
-            Support::Run { apis, others } => {
-                if let Some(reason) = self.unexposed(case.spec) {
-                    return Reply::Skip { case_id, reason };
-                }
-                // SAFETY: the worker's context is current on this thread.
-                let observed = unsafe { super::state::observe(&self.renderer.gl, case) };
-                let skipped = case
-                    .api
-                    .iter()
-                    .filter(|a| !apis.contains(a))
-                    .map(|a| PathSkip {
-                        api: a.key().to_string(),
-                        reason: others.clone().unwrap_or_default(),
-                    })
-                    .collect();
-                Reply::StateObservation {
-                    case_id,
-                    results: apis
-                        .iter()
-                        .map(|a| StateResult {
-                            api: a.key().to_string(),
-                            observed: observed.clone(),
-                        })
-                        .collect(),
-                    skipped,
-                }
-            }
-        }
+        let unexposed = self.unexposed(case.spec);
+        let gl = &self.renderer.gl;
+        // SAFETY: the worker's context is current on this thread.
+        super::state::answer(&self.caps, unexposed, case, |c| unsafe {
+            super::state::observe(gl, c)
+        })
     }
     pub fn info(&self) -> &GlInfo {
         &self.renderer.info
