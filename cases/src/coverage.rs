@@ -42,6 +42,9 @@ pub struct Coverage {
     pub features: FeatureCounts,
     /// Shadow gather tests (case x path) per (spec, API path, target, function).
     pub gather: BTreeMap<GatherKey, usize>,
+    /// State cases per (API path standing for the context kind, pname): (cases, whether the pname
+    /// exists there, i.e. is read back).
+    pub state: BTreeMap<(ApiPath, StatePname), (usize, bool)>,
 }
 
 /// (spec, API path, target, gather function).
@@ -223,6 +226,51 @@ impl Coverage {
         self.counts.get(k).copied().unwrap_or(0)
     }
 
+    /// The same coverage with the TexParameter state cases `states` counted too.
+    pub fn with_states<'a>(mut self, states: impl IntoIterator<Item = &'a StateCase>) -> Coverage {
+        for c in states {
+            for &api in &c.api {
+                let e = self.state.entry((api, c.pname)).or_insert((0, c.read_back));
+                e.0 += 1;
+                e.1 |= c.read_back;
+            }
+        }
+        self
+    }
+
+    /// The state cases per pname and context kind (`n`: cases; `n (absent)`: the pname does not
+    /// exist there, so the cases check INVALID_ENUM).
+    pub fn state_markdown(&self) -> String {
+        let mut s = String::from("#### TexParameter / GetTexParameter state cases\n\n");
+        let apis: Vec<ApiPath> = {
+            let mut v: Vec<ApiPath> = self.state.keys().map(|k| k.0).collect();
+            v.dedup();
+            v.sort();
+            v.dedup();
+            v
+        };
+        let total: usize = self.state.values().map(|v| v.0).sum();
+        let _ = writeln!(
+            s,
+            "Tests per pname and context kind (by its API path: `core` core profile, `ff` compatibility, `es300` ES 3); `absent`: the pname does not exist there (INVALID_ENUM). {total} tests.\n"
+        );
+        let names: Vec<&str> = apis.iter().map(|a| a.key()).collect();
+        let _ = writeln!(s, "| pname | {} |", names.join(" | "));
+        let _ = writeln!(s, "|---|{}", "---:|".repeat(apis.len()));
+        for &p in StatePname::ALL {
+            let cells: Vec<String> = apis
+                .iter()
+                .map(|a| match self.state.get(&(*a, p)) {
+                    Some((n, true)) => n.to_string(),
+                    Some((n, false)) => format!("{n} (absent)"),
+                    None => "0".into(),
+                })
+                .collect();
+            let _ = writeln!(s, "| {} | {} |", p.name(), cells.join(" | "));
+        }
+        s
+    }
+
     /// One Markdown table per spec: a row per target / format / filter, a column per func; cells
     /// count cases (`-` where the spec does not allow the combination).
     pub fn markdown(&self) -> String {
@@ -277,6 +325,10 @@ impl Coverage {
         s.push_str(&self.features.markdown());
         s.push_str(&self.gather_markdown());
         s.push_str(&self.density_markdown());
+        if !self.state.is_empty() {
+            s.push('\n');
+            s.push_str(&self.state_markdown());
+        }
         s
     }
 

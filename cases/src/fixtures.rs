@@ -10,7 +10,9 @@
 //! Loading never panics on bad input: every error names the file, the case (index and id, when the
 //! case got far enough to have one) and the field (a path such as `texture.levels[0].width`).
 
-use shadowcheck_model::{validate::validate, Case, ModelError, SCHEMA_VERSION};
+pub use crate::fixture_error::{CaseRef, FixtureError};
+use shadowcheck_model::state::validate_state;
+use shadowcheck_model::{validate::validate, Case, ModelError, StateCase, SCHEMA_VERSION};
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -27,112 +29,10 @@ pub struct FixtureFile {
     /// The seed the grid was generated with.
     pub seed: u64,
     pub cases: Vec<Case>,
-}
-
-/// Where in a file an error is, as far as it is known.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub struct CaseRef {
-    /// Index in the `cases` array.
-    pub index: Option<usize>,
-    /// The case's `id`, when it could be read.
-    pub id: Option<String>,
-}
-
-impl std::fmt::Display for CaseRef {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match (&self.index, &self.id) {
-            (Some(i), Some(id)) => write!(f, "case #{i} `{}`", id.escape_debug()),
-            (None, Some(id)) => write!(f, "case `{}`", id.escape_debug()),
-            (Some(i), None) => write!(f, "case #{i} (id unknown)"),
-            (None, None) => f.write_str("file header"),
-        }
-    }
-}
-
-/// Errors from reading or writing fixture files.
-#[derive(Debug, thiserror::Error)]
-pub enum FixtureError {
-    #[error("{}: cannot read: {source}", file.display())]
-    Read {
-        file: PathBuf,
-        source: std::io::Error,
-    },
-    #[error("{}: cannot write: {source}", file.display())]
-    Write {
-        file: PathBuf,
-        source: std::io::Error,
-    },
-    /// The text is not JSON (truncated file, `NaN` literal, stray comma...).
-    #[error("{}: {at}: invalid JSON at line {line} column {column}: {msg}", file.display())]
-    Syntax {
-        file: PathBuf,
-        at: CaseRef,
-        line: usize,
-        column: usize,
-        msg: String,
-    },
-    /// The top-level object is not a fixture file (missing or mistyped header field).
-    #[error("{}: not a shadowcheck fixture file: field `{field}`: {msg}", file.display())]
-    NotFixture {
-        file: PathBuf,
-        field: String,
-        msg: String,
-    },
-    #[error("{}: schema_version {found} is not supported (this shadowcheck reads {supported}; regenerate with `shadowcheck gen` or update shadowcheck)", file.display())]
-    Version {
-        file: PathBuf,
-        found: u32,
-        supported: u32,
-    },
-    /// One case does not deserialize or fails structural validation.
-    #[error("{}: {at}: field `{field}`: {msg}", file.display())]
-    Case {
-        file: PathBuf,
-        at: CaseRef,
-        field: String,
-        msg: String,
-    },
-    /// The written `expect` differs from what the linked oracle derives (a stale or edited fixture);
-    /// `msg` gives both values and the command that regenerates.
-    #[error("{}: {at}: field `{field}`: {msg}", file.display())]
-    StaleExpect {
-        file: PathBuf,
-        at: CaseRef,
-        field: String,
-        msg: String,
-    },
-    #[error("{}: {at}: duplicate case id (first at case #{first})", file.display())]
-    DuplicateId {
-        file: PathBuf,
-        at: CaseRef,
-        first: usize,
-    },
-    #[error("{}: no fixture files (*.json) found", path.display())]
-    NoFixtures { path: PathBuf },
-    #[error("{}: refusing to write outside the output directory: `{rel}`", dir.display())]
-    BadRelativePath { dir: PathBuf, rel: String },
-}
-
-impl FixtureError {
-    /// The case this error is about, when known.
-    pub fn case_id(&self) -> Option<&str> {
-        match self {
-            FixtureError::Syntax { at, .. }
-            | FixtureError::Case { at, .. }
-            | FixtureError::StaleExpect { at, .. }
-            | FixtureError::DuplicateId { at, .. } => at.id.as_deref(),
-            _ => None,
-        }
-    }
-    /// The field this error is about, when known.
-    pub fn field(&self) -> Option<&str> {
-        match self {
-            FixtureError::Case { field, .. }
-            | FixtureError::StaleExpect { field, .. }
-            | FixtureError::NotFixture { field, .. } => Some(field),
-            _ => None,
-        }
-    }
+    /// TexParameter / GetTexParameter state cases (a file of the `state/` folder holds only these,
+    /// after an empty `cases`); absent from lookup files.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub state_cases: Vec<StateCase>,
 }
 
 /// The header plus the still-unparsed cases (each case's JSON text, checked for syntax only), so
@@ -145,6 +45,9 @@ struct RawFile {
     grid: String,
     seed: u64,
     cases: Vec<Box<serde_json::value::RawValue>>,
+    /// Present in state files only (after an empty `cases`).
+    #[serde(default)]
+    state_cases: Vec<Box<serde_json::value::RawValue>>,
 }
 
 /// Only a case's id, read from its text when the case itself does not deserialize.
@@ -169,6 +72,16 @@ pub fn to_string(file: &FixtureFile) -> Result<String, serde_json::Error> {
     );
     out.push_str(",\"cases\":[");
     for (i, case) in file.cases.iter().enumerate() {
+        out.push_str(if i == 0 { "\n" } else { ",\n" });
+        out.push_str(&serde_json::to_string(case)?);
+    }
+    if file.state_cases.is_empty() {
+        out.push_str("\n]}\n");
+        return Ok(out);
+    }
+    out.push_str(if file.cases.is_empty() { "]" } else { "\n]" });
+    out.push_str(",\"state_cases\":[");
+    for (i, case) in file.state_cases.iter().enumerate() {
         out.push_str(if i == 0 { "\n" } else { ",\n" });
         out.push_str(&serde_json::to_string(case)?);
     }
@@ -292,12 +205,37 @@ fn parse_inner(
             }
         }
     }
+    let mut state_cases = Vec::with_capacity(raw.state_cases.len());
+    for (index, value) in raw.state_cases.iter().enumerate() {
+        if stop_at_first && !errors.is_empty() {
+            break;
+        }
+        let result = state_from_text(file, index, &raw.grid, value.get()).and_then(|case| {
+            let at = CaseRef {
+                index: Some(index),
+                id: Some(case.id.clone()),
+            };
+            match seen.insert(case.id.clone(), index) {
+                Some(first) => Err(FixtureError::DuplicateId {
+                    file: file.to_path_buf(),
+                    at,
+                    first,
+                }),
+                None => Ok(case),
+            }
+        });
+        match result {
+            Ok(case) => state_cases.push(case),
+            Err(e) => errors.push(e),
+        }
+    }
     let f = FixtureFile {
         schema_version: raw.schema_version,
         generator: raw.generator,
         grid: raw.grid,
         seed: raw.seed,
         cases,
+        state_cases,
     };
     Ok((f, errors))
 }
@@ -380,6 +318,45 @@ fn case_from_text(file: &Path, index: usize, grid: &str, text: &str) -> Result<C
         },
     })?;
     crate::recheck::check(file, at, grid, &case)?;
+    Ok(case)
+}
+
+/// Deserializes state case number `index` (of `state_cases`), validates it and re-derives its
+/// `expect` with the linked oracle (`recheck::check_state`).
+fn state_from_text(
+    file: &Path,
+    index: usize,
+    grid: &str,
+    text: &str,
+) -> Result<StateCase, FixtureError> {
+    let mut de = serde_json::Deserializer::from_str(text);
+    let case: StateCase =
+        serde_path_to_error::deserialize(&mut de).map_err(|e| FixtureError::Case {
+            file: file.to_path_buf(),
+            at: CaseRef {
+                index: Some(index),
+                id: serde_json::from_str::<IdOnly>(text).ok().map(|c| c.id),
+            },
+            field: format!("state_cases.{}", e.path()),
+            msg: strip_position(&e.inner().to_string()),
+        })?;
+    let at = CaseRef {
+        index: Some(index),
+        id: Some(case.id.clone()),
+    };
+    validate_state(&case).map_err(|e| FixtureError::Case {
+        file: file.to_path_buf(),
+        at: at.clone(),
+        field: match &e {
+            ModelError::Invalid { field, .. } => field.clone(),
+            _ => "(case)".into(),
+        },
+        msg: match e {
+            ModelError::Invalid { msg, .. } => msg,
+            other => other.to_string(),
+        },
+    })?;
+    crate::recheck::check_state(file, &at, grid, &case)?;
     Ok(case)
 }
 

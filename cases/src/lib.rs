@@ -16,6 +16,7 @@ pub mod build;
 pub mod coverage;
 pub mod dsl;
 pub mod features;
+mod fixture_error;
 pub mod fixtures;
 pub mod grids;
 pub mod markers;

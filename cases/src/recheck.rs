@@ -76,3 +76,49 @@ fn first_difference(a: &Expectation, b: &Expectation) -> Option<(String, String,
     }
     None
 }
+
+/// Checks a state case's `expect` against the oracle's ([`shadowcheck_oracle::state::expect_state`]):
+/// the error and the value read back (citations explain, they are not compared).
+pub(crate) fn check_state(
+    file: &Path,
+    at: &CaseRef,
+    grid: &str,
+    case: &shadowcheck_model::StateCase,
+) -> Result<(), FixtureError> {
+    let Some(written) = &case.expect else {
+        return Ok(());
+    };
+    let derived =
+        shadowcheck_oracle::state::expect_state(case).map_err(|e| FixtureError::Case {
+            file: file.to_path_buf(),
+            at: at.clone(),
+            field: "expect".into(),
+            msg: format!("the oracle rejects the state case: {e}"),
+        })?;
+    let differs = if written.error != derived.error {
+        Some((
+            "expect.error",
+            format!("{:?}", written.error),
+            format!("{:?}", derived.error),
+        ))
+    } else if written.value != derived.value {
+        Some((
+            "expect.value",
+            format!("{:?}", written.value),
+            format!("{:?}", derived.value),
+        ))
+    } else {
+        None
+    };
+    match differs {
+        None => Ok(()),
+        Some((field, fixture, oracle)) => Err(FixtureError::StaleExpect {
+            file: file.to_path_buf(),
+            at: at.clone(),
+            field: field.into(),
+            msg: format!(
+                "the fixture's expectation {fixture} differs from the oracle's {oracle}: the fixture is stale or was edited; regenerate it with `shadowcheck gen --grid {grid} -o DIR` (DIR: the fixture directory it was generated into, e.g. cases/fixtures)"
+            ),
+        }),
+    }
+}

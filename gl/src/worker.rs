@@ -7,7 +7,7 @@ use super::legacy::Legacy;
 use super::names::{BackendName, ContextApi};
 use super::paths::GlInfo;
 use super::GlError;
-use shadowcheck_model::{ApiPath, Case, Format, Spec};
+use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase};
 use shadowcheck_protocol::{
     Capabilities, Hello, PathSkip, Reply, Request, Support, FEATURES, PROTOCOL_VERSION,
 };
@@ -135,12 +135,16 @@ impl Worker {
         Ok(w)
     }
 
-    /// TexParameter state self-check against the oracle's tables (see `state.rs`).
-    pub fn state_check(&self) -> Vec<super::state::StateCheck> {
+    /// Runs a state case (observes; the runner judges). Paths of another context kind or a
+    /// target the context lacks are skipped with the reason.
+    pub fn run_state(&mut self, case: &StateCase) -> Reply {
+        let unexposed = self.unexposed(case.spec);
+        let gl = &self.renderer.gl;
         // SAFETY: the worker's context is current on this thread.
-        unsafe { super::state::check(&self.renderer.gl, &self.renderer.info) }
+        super::state::answer(&self.caps, unexposed, case, |c| unsafe {
+            super::state::observe(gl, c)
+        })
     }
-
     pub fn info(&self) -> &GlInfo {
         &self.renderer.info
     }
@@ -374,6 +378,8 @@ pub fn declared_capabilities(i: &GlInfo) -> Capabilities {
                     "border_clamp" => i.border_clamp(),
                     "stencil_texturing" => i.stencil_texturing(),
                     "gather" => i.gather(),
+                    // TexParameter / GetTexParameter exist in every context.
+                    "tex_parameter" => true,
                     _ => false,
                 })
                 .map(|f| f.key.to_string())
@@ -402,6 +408,7 @@ fn answer_message(case_id: String, a: Answer) -> Reply {
 /// An entry of the batch: a parsed case, or a line that should have been one.
 enum Entry {
     Case(Box<Case>),
+    State(Box<StateCase>),
     Bad { id: String, message: String },
 }
 
@@ -411,6 +418,13 @@ fn write_line(out: &mut impl Write, msg: &Reply) -> std::io::Result<()> {
     out.write_all(b"\n")
 }
 
+/// Where each answer of a batch comes from, in order.
+enum Slot {
+    Lookup(String),
+    State(Box<StateCase>),
+    Bad(String, String),
+}
+
 fn flush_batch(
     worker: &mut impl Serve,
     batch: &mut Vec<Entry>,
@@ -418,26 +432,28 @@ fn flush_batch(
 ) -> std::io::Result<()> {
     // Move the cases out; keep where each answer goes (a case id, or a parse error).
     let mut cases: Vec<Case> = Vec::new();
-    let mut slots: Vec<Result<String, (String, String)>> = Vec::new();
+    let mut slots: Vec<Slot> = Vec::new();
     for e in batch.drain(..) {
         match e {
             Entry::Case(c) => {
-                slots.push(Ok(c.id.clone()));
+                slots.push(Slot::Lookup(c.id.clone()));
                 cases.push(*c);
             }
-            Entry::Bad { id, message } => slots.push(Err((id, message))),
+            Entry::State(c) => slots.push(Slot::State(c)),
+            Entry::Bad { id, message } => slots.push(Slot::Bad(id, message)),
         }
     }
     let mut answers = worker.run_batch(&cases)?.into_iter();
     for slot in slots {
         let msg = match slot {
-            Ok(id) => answer_message(
+            Slot::State(c) => worker.run_state(&c),
+            Slot::Lookup(id) => answer_message(
                 id,
                 answers
                     .next()
                     .unwrap_or(Answer::Error("internal: missing answer".into())),
             ),
-            Err((id, message)) => Reply::Error {
+            Slot::Bad(id, message) => Reply::Error {
                 case_id: id,
                 message,
             },
@@ -453,6 +469,14 @@ fn flush_batch(
 pub trait Serve {
     fn hello(&self) -> Hello;
     fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>>;
+    /// The answer to a state case. An implementation that does not declare the `tex_parameter`
+    /// feature is never sent one; if it is, it answers Skip.
+    fn run_state(&mut self, case: &StateCase) -> Reply {
+        Reply::Skip {
+            case_id: case.id.clone(),
+            reason: "this implementation runs no state cases".into(),
+        }
+    }
 }
 
 impl Serve for Worker {
@@ -466,6 +490,9 @@ impl Serve for Worker {
     }
     fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>> {
         Ok(Worker::run_batch(self, cases))
+    }
+    fn run_state(&mut self, case: &StateCase) -> Reply {
+        Worker::run_state(self, case)
     }
 }
 
@@ -493,6 +520,7 @@ pub fn serve(
                 output.flush()?;
             }
             Ok(Request::Case { case }) => batch.push(Entry::Case(case)),
+            Ok(Request::State { case }) => batch.push(Entry::State(case)),
             Ok(Request::Flush) => flush_batch(worker, &mut batch, &mut output)?,
             Ok(Request::Bye) => break,
             Err(e) => {
@@ -502,11 +530,11 @@ pub fn serve(
                     .as_ref()
                     .and_then(|v| v.get("type"))
                     .and_then(|t| t.as_str())
-                    == Some("case");
-                if is_case {
+                    .filter(|t| *t == "case" || *t == "state");
+                if let Some(ty) = is_case {
                     let id = v
                         .as_ref()
-                        .and_then(|v| v.pointer("/case/id"))
+                        .and_then(|v| v.pointer(&format!("/{ty}/id")))
                         .and_then(|i| i.as_str())
                         .unwrap_or("")
                         .to_string();

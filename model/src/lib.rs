@@ -2,6 +2,7 @@
 //!
 //! - [`enums`]: specification variants, API paths, GL state values (with their GL tokens);
 //! - [`case`]: a test case (texture, sampler, lookup);
+//! - [`state`]: a TexParameter / GetTexParameter state case, its expectation and observation;
 //! - [`expect`]: the oracle's expectation, acceptance sets, observations and footprints;
 //! - [`validate`]: checks that reject malformed cases with errors naming the field.
 //!
@@ -13,12 +14,16 @@ pub mod enums;
 pub mod expect;
 pub mod keymap;
 pub mod real;
+pub mod state;
 pub mod validate;
 
 pub use case::*;
 pub use enums::*;
 pub use expect::*;
 pub use keymap::{KeyMap, Keyed};
+pub use state::{
+    GlError, StateCall, StateCase, StateExpect, StateObserved, StatePname, StateType, StateValue,
+};
 
 /// Version of the on-disk formats (fixtures, observations, results). Bumped on breaking change.
 pub const SCHEMA_VERSION: u32 = 1;

@@ -221,6 +221,91 @@ pub fn default_value(spec: Spec, ctx: Ctx, pname: u32) -> Result<Stored, GlError
     param(spec, ctx, pname).map(|p| p.default)
 }
 
+/// The context kind a state case's API path stands for (`core`: core profile; the compatibility
+/// paths; the ES paths).
+pub fn ctx_of(api: shadowcheck_model::ApiPath) -> Ctx {
+    use shadowcheck_model::ApiPath::*;
+    match api {
+        GlslCore => Ctx::Core,
+        FixedFunction | ArbFp | Glsl120 | Glsl130 => Ctx::Compat,
+        Es100Ext | Es300 => Ctx::Es,
+    }
+}
+
+/// GL 4.6 §2.3.1 (ES 3.2 §2.3.1 alike), the rule for every error below.
+pub const ERROR_IGNORED: &str = "GL 4.6 §2.3.1: \"the command which generates the error is ignored so that it has no effect on GL state\"";
+/// GL 4.6 §8.10 Errors (ES 3.2 §8.10 alike): a pname the context does not have.
+pub const PNAME_UNKNOWN: &str = "GL 4.6 §8.10 / ES 3.2 §8.10: \"An INVALID_ENUM error is generated if pname is not one of the parameter names in table 8.17\" (8.19 in ES)";
+/// GL 4.6 §8.10 Errors (ES 3.2 §8.10 alike): an enum value outside the legal ones.
+pub const VALUE_ILLEGAL: &str = "GL 4.6 §8.10 / ES 3.2 §8.10: \"An INVALID_ENUM error is generated if the type of the parameter specified by pname is enum, and any value specified by param or params is not among the legal values shown in table 8.17\"";
+
+fn to_model(s: Stored) -> shadowcheck_model::StateValue {
+    use shadowcheck_model::StateValue as V;
+    match s {
+        Stored::Bool(b) => V::Bool(b),
+        Stored::Enum(e) => V::Enum(e),
+        Stored::Float(f) => V::Float(f as f32),
+    }
+}
+
+fn error_to_model(e: GlErrorKind) -> shadowcheck_model::GlError {
+    use shadowcheck_model::GlError as E;
+    match e {
+        GlErrorKind::InvalidEnum => E::InvalidEnum,
+        GlErrorKind::InvalidValue => E::InvalidValue,
+        GlErrorKind::InvalidOperation => E::InvalidOperation,
+    }
+}
+
+/// The oracle's expectation of a state case on its (single) context kind: the error of the call
+/// and the value GetTexParameter reads afterwards (the stored value, or the initial one after an
+/// error). `Err` when the case names no API path or several of different context kinds.
+pub fn expect_state(
+    case: &shadowcheck_model::StateCase,
+) -> Result<shadowcheck_model::StateExpect, String> {
+    use shadowcheck_model::{StateCall, StateExpect};
+    let ctxs: Vec<Ctx> = case.api.iter().map(|a| ctx_of(*a)).collect();
+    let ctx = match ctxs.first() {
+        Some(c) if ctxs.iter().all(|d| d == c) => *c,
+        _ => return Err("a state case needs API paths of exactly one context kind".into()),
+    };
+    let pname = case.pname.gl();
+    let Ok(prm) = param(case.spec, ctx, pname) else {
+        // Neither TexParameter nor GetTexParameter knows the pname: INVALID_ENUM, nothing stored.
+        return Ok(StateExpect {
+            error: Some(shadowcheck_model::GlError::InvalidEnum),
+            value: None,
+            citations: vec![PNAME_UNKNOWN.into(), ERROR_IGNORED.into()],
+        });
+    };
+    let mut citations = vec![format!("{}: {}", prm.name, prm.cite)];
+    let (error, value) = match case.call {
+        StateCall::Initial => (None, prm.default),
+        call => {
+            let v = match call {
+                StateCall::SetFloat(f) => Value::Float(f as f64),
+                StateCall::SetInt(i) => Value::Int(i as i64),
+                StateCall::Initial => Value::Int(0),
+            };
+            match set_param(case.spec, ctx, pname, v) {
+                Ok(s) => (None, s),
+                Err(e) => {
+                    if matches!(prm.kind, ParamKind::Enum(_, GlErrorKind::InvalidEnum)) {
+                        citations.push(VALUE_ILLEGAL.into());
+                    }
+                    citations.push(ERROR_IGNORED.into());
+                    (Some(error_to_model(e)), prm.default)
+                }
+            }
+        }
+    };
+    Ok(StateExpect {
+        error,
+        value: case.read_back.then(|| to_model(value)),
+        citations,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,7 +3,7 @@
 //! or API path it does not implement: not applicable, as a dEQP caselist would not list it).
 
 use serde::{Deserialize, Serialize};
-use shadowcheck_model::{ApiPath, Case};
+use shadowcheck_model::{ApiPath, Case, StateCase};
 
 /// What an implementation can run (fixture keys). `None` for a list means "no restriction
 /// declared".
@@ -65,7 +65,16 @@ pub const FEATURES: &[Feature] = &[
         what: "shadow textureGather / textureGatherOffset(s) (GLSL 4.00, GLSL ES 3.10)",
         used_by: |c| c.lookup.gather.is_some(),
     },
+    Feature {
+        key: TEX_PARAMETER,
+        what: "TexParameter / GetTexParameter state cases (the `state` request)",
+        // No lookup case needs it; state cases need it (`Capabilities::support_state`).
+        used_by: |_| false,
+    },
 ];
+
+/// The feature an implementation lists to be sent state cases.
+pub const TEX_PARAMETER: &str = "tex_parameter";
 
 /// Whether a case sets TEXTURE_BORDER_COLOR or wraps a coordinate its target uses with
 /// CLAMP_TO_BORDER (neither exists in OpenGL ES 3.0: ES 3.2 §8.10 added both).
@@ -154,6 +163,55 @@ impl Capabilities {
                     f.what, f.key
                 ));
             }
+        }
+        let others = (apis.len() < case.api.len())
+            .then(|| "API path not supported by this backend".to_string());
+        Support::Run { apis, others }
+    }
+}
+
+impl Capabilities {
+    /// Whether a state case runs here, by the same rules as [`Capabilities::support`]: spec and
+    /// API paths (context kinds) decide applicability; the target, then the `tex_parameter`
+    /// feature, decide Skip.
+    pub fn support_state(&self, case: &StateCase) -> Support {
+        if !listed(&self.specs, case.spec.key()) {
+            return Support::NotApplicable(format!(
+                "spec `{}` not supported by this backend",
+                case.spec
+            ));
+        }
+        let apis: Vec<ApiPath> = case
+            .api
+            .iter()
+            .copied()
+            .filter(|a| self.implements_api(*a))
+            .collect();
+        if apis.is_empty() {
+            return Support::NotApplicable(
+                "none of the case's API paths is supported by this backend".to_string(),
+            );
+        }
+        if !listed(&self.features, TEX_PARAMETER) {
+            return Support::Skip(format!(
+                "TexParameter / GetTexParameter state cases (feature `{TEX_PARAMETER}`) not supported by this backend"
+            ));
+        }
+        if !listed(&self.targets, case.target.key()) {
+            return Support::Skip(format!(
+                "target `{}` not supported by this backend",
+                case.target
+            ));
+        }
+        // DEPTH_STENCIL_TEXTURE_MODE exists from GL 4.3 / ES 3.1 on: a context without it (ES 3.0)
+        // answers INVALID_ENUM where the case's spec has the pname. Skip, as for lookups.
+        if case.pname == shadowcheck_model::StatePname::DepthStencilMode
+            && !listed(&self.features, "stencil_texturing")
+        {
+            return Support::Skip(
+                "DEPTH_STENCIL_TEXTURE_MODE (feature `stencil_texturing`) not supported by this backend"
+                    .to_string(),
+            );
         }
         let others = (apis.len() < case.api.len())
             .then(|| "API path not supported by this backend".to_string());

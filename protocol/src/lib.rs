@@ -8,13 +8,16 @@
 
 mod capabilities;
 
-pub use capabilities::{Capabilities, Feature, Support, FEATURES};
+pub use capabilities::{Capabilities, Feature, Support, FEATURES, TEX_PARAMETER};
 
 use serde::{Deserialize, Serialize};
-use shadowcheck_model::{ApiPath, Case, Expectation, Lookup, Sampler, Spec, Texels, Texture};
+use shadowcheck_model::{
+    ApiPath, Case, Expectation, Lookup, Sampler, Spec, StateCase, StateObserved, Texels, Texture,
+};
 
 /// The protocol version both sides speak.
-pub const PROTOCOL_VERSION: u32 = 1;
+/// 2: TexParameter state cases (`state` requests, `state_observation` answers).
+pub const PROTOCOL_VERSION: u32 = 2;
 
 /// Four channels that may be non-finite (written as "nan", "inf", "-inf").
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -27,8 +30,17 @@ pub struct Rgba(#[serde(with = "shadowcheck_model::real::array4")] pub [f64; 4])
 /// A message from the runner.
 #[derive(Debug)]
 pub enum Request {
-    Hello { protocol: u32 },
-    Case { case: Box<Case> },
+    Hello {
+        protocol: u32,
+    },
+    Case {
+        case: Box<Case>,
+    },
+    /// A TexParameter / GetTexParameter state case (sent only to implementations whose
+    /// capabilities list the `tex_parameter` feature, or declare no feature list).
+    State {
+        case: Box<StateCase>,
+    },
     Flush,
     Bye,
 }
@@ -44,12 +56,20 @@ struct RequestWire {
     protocol: u32,
     #[serde(default)]
     case: Option<Box<Case>>,
+    #[serde(default)]
+    state: Option<Box<StateCase>>,
 }
 
 impl Request {
     /// Parses one line.
     pub fn parse(line: &str) -> Result<Request, String> {
         let w: RequestWire = serde_json::from_str(line).map_err(|e| e.to_string())?;
+        if w.ty == "state" {
+            return match w.state {
+                Some(case) => Ok(Request::State { case }),
+                None => Err("state message without `state`".into()),
+            };
+        }
         match (w.ty.as_str(), w.case) {
             ("hello", _) => Ok(Request::Hello {
                 protocol: w.protocol,
@@ -90,6 +110,44 @@ impl Request {
         // Serializing plain data into a Vec cannot fail (no maps with non-string keys here).
         let _ = serde_json::to_writer(&mut *buf, &msg);
     }
+}
+
+impl Request {
+    /// Appends the `state` message for `c` (without the newline) to `buf`, without `expect`
+    /// unless `with_expect`.
+    pub fn write_state(buf: &mut Vec<u8>, c: &StateCase, with_expect: bool) {
+        #[derive(Serialize)]
+        struct StateMsg<'a> {
+            #[serde(rename = "type")]
+            kind: &'static str,
+            state: &'a StateCase,
+        }
+        let stripped;
+        let state = if with_expect || c.expect.is_none() {
+            c
+        } else {
+            stripped = StateCase {
+                expect: None,
+                ..c.clone()
+            };
+            &stripped
+        };
+        let _ = serde_json::to_writer(
+            &mut *buf,
+            &StateMsg {
+                kind: "state",
+                state,
+            },
+        );
+    }
+}
+
+/// One API path's (context kind's) result of a state case.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StateResult {
+    pub api: String,
+    #[serde(flatten)]
+    pub observed: StateObserved,
 }
 
 /// A case as sent (borrowed, so the runner serializes without cloning).
@@ -162,6 +220,13 @@ pub enum Reply {
         #[serde(default, skip_serializing_if = "Vec::is_empty")]
         skipped: Vec<PathSkip>,
     },
+    /// The answer to a `state` request: what each API path's context observed.
+    StateObservation {
+        case_id: String,
+        results: Vec<StateResult>,
+        #[serde(default, skip_serializing_if = "Vec::is_empty")]
+        skipped: Vec<PathSkip>,
+    },
     Skip {
         case_id: String,
         reason: String,
@@ -185,6 +250,7 @@ impl Reply {
         match self {
             Reply::Hello(_) => None,
             Reply::Observation { case_id, .. }
+            | Reply::StateObservation { case_id, .. }
             | Reply::Skip { case_id, .. }
             | Reply::Error { case_id, .. } => Some(case_id),
         }
@@ -197,11 +263,22 @@ impl Reply {
         if tag.ty != "hello" {
             return Err(format!("expected a hello message, got type `{}`", tag.ty));
         }
-        if h.protocol != PROTOCOL_VERSION {
-            return Err(format!(
-                "protocol {} (this runner speaks {PROTOCOL_VERSION})",
-                h.protocol
-            ));
+        let mut h = h;
+        match h.protocol {
+            PROTOCOL_VERSION => {}
+            // Version 1 had no state cases: such an implementation is never sent one (its
+            // features lose `tex_parameter`; no list meant every version-1 feature).
+            1 => {
+                let all = || FEATURES.iter().map(|f| f.key.to_string()).collect();
+                let mut features: Vec<String> = h.capabilities.features.take().unwrap_or_else(all);
+                features.retain(|f| f != TEX_PARAMETER);
+                h.capabilities.features = Some(features);
+            }
+            other => {
+                return Err(format!(
+                    "protocol {other} (this runner speaks {PROTOCOL_VERSION}, and 1 without state cases)"
+                ))
+            }
         }
         Ok(h)
     }

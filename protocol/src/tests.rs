@@ -65,7 +65,13 @@ fn answers_parse_with_non_finite_channels_and_unknown_fields() {
             .unwrap();
     assert_eq!(h.capabilities.specs, Some(vec!["gl46".to_string()]));
     assert!(h.capabilities.formats.is_none());
-    assert!(Reply::parse_hello(r#"{"type":"hello","protocol":2}"#).is_err());
+    // A version-1 implementation keeps every version-1 feature but is sent no state case.
+    let features = h.capabilities.features.unwrap_or_default();
+    assert!(features.iter().any(|f| f == "lod_bias"));
+    assert!(!features.iter().any(|f| f == TEX_PARAMETER));
+    let h2 = Reply::parse_hello(r#"{"type":"hello","protocol":2}"#).unwrap();
+    assert!(h2.capabilities.features.is_none());
+    assert!(Reply::parse_hello(r#"{"type":"hello","protocol":3}"#).is_err());
     assert!(Reply::parse_hello(r#"{"type":"helo","protocol":1}"#)
         .unwrap_err()
         .contains("expected a hello"));
@@ -88,7 +94,7 @@ fn replies_serialize_as_the_protocol_writes_them() {
     });
     assert_eq!(
         serde_json::to_string(&hello).unwrap(),
-        r#"{"type":"hello","protocol":1,"name":"w","capabilities":{"specs":["gl46"],"api":["core"],"targets":["2d"],"formats":["d16"],"extensions":[]}}"#
+        r#"{"type":"hello","protocol":2,"name":"w","capabilities":{"specs":["gl46"],"api":["core"],"targets":["2d"],"formats":["d16"],"extensions":[]}}"#
     );
     let obs = Reply::Observation {
         case_id: "x".into(),
@@ -176,6 +182,7 @@ fn every_example_in_protocol_md_parses() {
                     "hello"
                 }
                 Request::Case { .. } => "case",
+                Request::State { .. } => "state",
                 Request::Flush => "flush",
                 Request::Bye => "bye",
             });
@@ -187,6 +194,7 @@ fn every_example_in_protocol_md_parses() {
             replies.insert(match r {
                 Reply::Hello(_) => "hello",
                 Reply::Observation { .. } => "observation",
+                Reply::StateObservation { .. } => "state_observation",
                 Reply::Skip { .. } => "skip",
                 Reply::Error { .. } => "error",
             });
@@ -198,12 +206,67 @@ fn every_example_in_protocol_md_parses() {
     }
     assert_eq!(
         requests.into_iter().collect::<Vec<_>>(),
-        ["bye", "case", "flush", "hello"],
+        ["bye", "case", "flush", "hello", "state"],
         "request kinds documented in PROTOCOL.md"
     );
     assert_eq!(
         replies.into_iter().collect::<Vec<_>>(),
-        ["error", "hello", "observation", "skip"],
+        ["error", "hello", "observation", "skip", "state_observation"],
         "reply kinds documented in PROTOCOL.md"
     );
+}
+
+#[test]
+fn state_requests_and_answers_round_trip() {
+    use shadowcheck_model::*;
+    let case = StateCase {
+        id: "state/gl46/core/2d/compare_mode/set=0x1234".into(),
+        spec: Spec::Gl46,
+        api: vec![ApiPath::GlslCore],
+        target: Target::T2d,
+        pname: StatePname::CompareMode,
+        call: StateCall::SetInt(0x1234),
+        read_back: true,
+        expect: Some(StateExpect {
+            error: Some(GlError::InvalidEnum),
+            value: Some(StateValue::Enum(0)),
+            citations: vec![],
+        }),
+    };
+    let mut buf = Vec::new();
+    Request::write_state(&mut buf, &case, false);
+    let line = String::from_utf8(buf).unwrap();
+    assert!(
+        line.starts_with(r#"{"type":"state","state":{"id":"#),
+        "{line}"
+    );
+    assert!(!line.contains("expect"), "{line}");
+    match Request::parse(&line).unwrap() {
+        Request::State { case: got } => assert_eq!(got.call, case.call),
+        other => panic!("{other:?}"),
+    }
+    let answer = r#"{"type":"state_observation","case_id":"s","results":[{"api":"core","error":"invalid_enum","value":{"enum":0}}]}"#;
+    match Reply::parse_answer(answer).unwrap() {
+        Reply::StateObservation {
+            case_id, results, ..
+        } => {
+            assert_eq!(case_id, "s");
+            assert_eq!(results[0].observed.error, Some(GlError::InvalidEnum));
+            assert_eq!(results[0].observed.value, Some(StateValue::Enum(0)));
+        }
+        other => panic!("{other:?}"),
+    }
+    // The tex_parameter feature decides: Skip with the reason when it is not listed.
+    let caps = Capabilities {
+        features: Some(vec![]),
+        ..Capabilities::all()
+    };
+    match caps.support_state(&case) {
+        Support::Skip(why) => assert!(why.contains(TEX_PARAMETER), "{why}"),
+        other => panic!("{other:?}"),
+    }
+    assert!(matches!(
+        Capabilities::all().support_state(&case),
+        Support::Run { .. }
+    ));
 }

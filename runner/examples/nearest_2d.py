@@ -5,7 +5,11 @@ OpenGL 4.6 core, GLSL `texture(sampler2DShadow, ...)`: 2D depth textures (d16, d
 NEAREST and LINEAR filtering of the base level, REPEAT / CLAMP_TO_EDGE / MIRRORED_REPEAT wrapping,
 texel offsets (`textureOffset`: u = w*s + du before wrapping, GL 4.6 (8.10)), depth comparison per GL 4.6 §8.23.1 (compare each texel, then filter). It declares these
 capabilities in its hello, so the runner skips every other case; anything else it meets is answered
-with a skip message. It speaks runner/PROTOCOL.md.
+with a skip message. It speaks runner/PROTOCOL.md (version 2): it also answers `state` requests
+(TexParameteri / GetTexParameter on a GL 4.6 core context) from its own small table of the
+depth-comparison texture parameters (GL 4.6 Table 8.17: TEXTURE_COMPARE_MODE NONE or
+COMPARE_REF_TO_TEXTURE, TEXTURE_COMPARE_FUNC the eight functions, DEPTH_STENCIL_TEXTURE_MODE
+DEPTH_COMPONENT or STENCIL_INDEX; any other value or pname INVALID_ENUM, the state unchanged).
 
 `--swap-lequal-gequal` (or SHADOWCHECK_SWAP_LEQUAL_GEQUAL=1) swaps LEQUAL and GEQUAL: the bug the
 runner must catch. `--lie-stored` answers r = 1 everywhere and claims every texel was stored as the
@@ -76,11 +80,41 @@ def sample(case):
 def send(msg):
     sys.stdout.write(json.dumps(msg) + "\n")
 
+# GL 4.6 core: pname key -> (initial value, legal values), Table 8.17 / Table 23.15.
+STATE = {
+    "compare_mode": (0x0000, {0x0000, 0x884E}),
+    "compare_func": (0x0203, set(range(0x0200, 0x0208))),
+    "depth_stencil_mode": (0x1902, {0x1902, 0x1901}),
+}
+
+
+def state_answer(case):
+    """One TexParameteri / GetTexParameter call on a fresh texture: the error and the value read back."""
+    known = STATE.get(case["pname"])
+    call = case["call"]
+    if known is None:
+        return {"error": "invalid_enum"}
+    initial, legal = known
+    error, value = None, initial
+    if isinstance(call, dict) and "set_int" in call:
+        v = call["set_int"]
+        if v in legal:
+            value = v
+        else:
+            error = "invalid_enum"
+    elif isinstance(call, dict):
+        return None  # TexParameterf: not implemented here
+    out = {"value": {"enum": value}} if case.get("read_back") else {}
+    if error:
+        out["error"] = error
+    return out
+
+
 for line in sys.stdin:
     msg = json.loads(line)
     kind = msg.get("type")
     if kind == "hello":
-        send({"type": "hello", "protocol": 1, "name": "nearest_2d.py" + (" (LEQUAL/GEQUAL swapped)" if SWAP else ""),
+        send({"type": "hello", "protocol": 2, "name": "nearest_2d.py" + (" (LEQUAL/GEQUAL swapped)" if SWAP else ""),
               "capabilities": {"specs": ["gl46"], "api": ["core"], "targets": ["2d"],
                                "formats": ["d16", "d24", "d32", "d32f"], "extensions": []}})
         sys.stdout.flush()
@@ -99,6 +133,14 @@ for line in sys.stdin:
         else:
             send({"type": "observation", "case_id": case["id"],
                   "results": [{"api": "core", "rgba": [r, 0.0, 0.0, 1.0]}]})
+    elif kind == "state":
+        case = msg["state"]
+        got = state_answer(case) if case["spec"] == "gl46" and case["api"] == ["core"] else None
+        if got is None:
+            send({"type": "skip", "case_id": case["id"], "reason": "only TexParameteri on GL 4.6 core"})
+        else:
+            got["api"] = "core"
+            send({"type": "state_observation", "case_id": case["id"], "results": [got]})
     elif kind == "flush":
         sys.stdout.flush()
     elif kind == "bye":

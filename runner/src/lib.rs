@@ -18,4 +18,5 @@ pub mod repro;
 pub mod run;
 pub mod schedule;
 pub mod shard;
+pub mod state_verdict;
 pub mod verdict;

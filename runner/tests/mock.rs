@@ -351,6 +351,7 @@ fn a_bad_case_is_reported_by_file_and_id_and_the_rest_runs() {
         grid: "t".into(),
         seed: 0,
         cases,
+        state_cases: vec![],
     };
     std::fs::create_dir_all(fx.parent().unwrap()).unwrap();
     std::fs::write(&fx, shadowcheck_cases::fixtures::to_string(&f).unwrap()).unwrap();

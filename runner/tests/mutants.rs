@@ -318,3 +318,29 @@ fn the_committed_default_fixtures_kill_every_observable_mutant() {
         "the kill matrix in README.md is stale: run `cargo run --release -- mutants --markdown reports/MUTANTS.md --update-readme README.md`"
     );
 }
+
+#[test]
+fn state_faults_are_killed_by_the_state_cases_and_the_correct_state_passes() {
+    let mut cases = Vec::new();
+    let mut states = Vec::new();
+    for (_, f) in shadowcheck_cases::grids::generate("smoke", 0).unwrap() {
+        cases.extend(f.cases);
+        states.extend(f.state_cases);
+    }
+    assert!(!states.is_empty());
+    let suite = Suite::new(cases).unwrap().with_states(states.clone());
+    let base = suite.unmutated();
+    assert_eq!(base.fail, 0, "the correct unit fails: {:?}", base.failures);
+    for f in [Fault::WrongInitialCompareFunc, Fault::IllegalValueStored] {
+        let m = suite.mutant(f);
+        assert_eq!(m.status, KillStatus::Killed, "{f}: {m:?}");
+        let k = m.first.unwrap();
+        assert!(k.case.starts_with("state/"), "{f}: {}", k.case);
+        assert!(k.reason.unwrap_or_default().contains("expected"), "{f}");
+    }
+    // Without the state cases no lookup sees them: survived, pointing at the state cases.
+    let lookups_only = Suite::new(smoke()).unwrap();
+    let m = lookups_only.mutant(Fault::IllegalValueStored);
+    assert_eq!(m.status, KillStatus::Survived);
+    assert!(m.grid_change.unwrap_or_default().contains("state cases"));
+}

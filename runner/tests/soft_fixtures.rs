@@ -72,6 +72,26 @@ fn every_soft_variant_passes_its_own_specs_fixtures_under_strict() {
         assert_eq!(r.code, 0, "soft:{spec}: {}{}", r.stdout, r.stderr);
         covered += own.len();
     }
+    // The TexParameter state cases (cases/fixtures/state/), answered by soft's own state table.
+    let out = tmp.join("state");
+    let r = Run::of(
+        bin()
+            .current_dir(&root)
+            .args(["run", "--backend", "soft", "--fixtures"])
+            .arg(fixtures.join("state"))
+            .args(["--out", out.to_str().unwrap(), "--full-report"])
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(
+        r.code, 0,
+        "soft on the state cases: {}{}",
+        r.stdout, r.stderr
+    );
+    let state = results(&out);
+    assert!(state.len() >= 250, "{} state tests", state.len());
+    assert!(state.iter().all(|t| t.1 == "Pass"), "{state:?}");
+    covered += state.len();
     // The same cases through `soft` (each case under its own spec): everything passes at once.
     let out = tmp.join("all");
     let r = Run::of(

@@ -143,6 +143,22 @@ faults! {
     UploadNotClamped = "upload-not-clamped",
     /// Colour (R8) conversion c/256 instead of c/255 (eq. (2.1)); depth formats converted correctly.
     ColourDividedBy256 = "colour-divided-by-256",
+    // --- TexParameter state (state cases, GL 4.6 §8.10, Table 23.15) ---
+    /// A new texture's TEXTURE_COMPARE_FUNC is LESS instead of LEQUAL.
+    WrongInitialCompareFunc = "wrong-initial-compare-func",
+    /// An illegal enum value for a depth-comparison pname is stored instead of raising INVALID_ENUM.
+    IllegalValueStored = "illegal-value-stored",
+}
+
+impl Fault {
+    /// Whether the fault sits in TexParameter state (seen by state cases, never by a lookup case,
+    /// whose sampler state is always set explicitly).
+    pub fn is_state(self) -> bool {
+        matches!(
+            self,
+            Fault::WrongInitialCompareFunc | Fault::IllegalValueStored
+        )
+    }
 }
 
 impl fmt::Display for Fault {

@@ -11,6 +11,7 @@
 //! - [`SoftUnit`]: a case in, RGBA per API path out ([`SoftUnit::sample`], [`SoftUnit::sample_batch`]).
 //! - [`PreparedTexture`] + [`SamplerState`] + [`Coords`]: the raw lookup
 //!   ([`PreparedTexture::lookup`]) for benchmarks: prepare once, look up many times, no allocation.
+//! - [`tex_param`]: its own TexParameter / GetTexParameter state ([`SoftUnit::tex_parameter`]).
 //! - [`Fault`] / [`Faults`]: seedable bugs for mutation testing ([`SoftUnit::with_fault`]).
 //!
 //! Module map: `storage` (texel conversion), `wrap` (Table 8.20), `lod` (§8.14.1/§8.14.3),
@@ -27,6 +28,7 @@ pub mod layout;
 pub mod lod;
 pub mod sampler;
 pub mod storage;
+pub mod tex_param;
 pub mod witness;
 pub mod wrap;
 
@@ -139,6 +141,15 @@ impl SoftUnit {
     }
     pub fn faults(&self) -> Faults {
         self.faults
+    }
+
+    /// A TexParameter / GetTexParameter state case on API path (context kind) `api`.
+    pub fn tex_parameter(
+        &self,
+        case: &shadowcheck_model::StateCase,
+        api: ApiPath,
+    ) -> shadowcheck_model::StateObserved {
+        tex_param::observe(self.spec, self.faults, case, api)
     }
 
     /// Converts the case's texture (allocates; see [`PreparedTexture::prepare_into`] to reuse).

@@ -9,6 +9,7 @@ pub mod gather;
 pub mod offset;
 pub mod random;
 pub mod specs;
+pub mod tex_params;
 
 use crate::dsl;
 use crate::fixtures::{self, FixtureFile};
@@ -33,6 +34,13 @@ pub enum GridError {
     /// combination, or the case is malformed. Either way the grid must be fixed, not the fixture.
     #[error("grid `{grid}`: the oracle rejects a generated case (the grid needs a filter for it): {source}")]
     Oracle { grid: String, source: OracleError },
+    /// The oracle cannot state a generated state case's expectation.
+    #[error("grid `{grid}`: state case `{id}`: {msg}")]
+    State {
+        grid: String,
+        id: String,
+        msg: String,
+    },
     #[error(transparent)]
     Fixture(#[from] fixtures::FixtureError),
 }
@@ -234,6 +242,7 @@ fn into_files(grid: &str, seed: u64, cases: Vec<(String, Case)>) -> Vec<(String,
                     grid: grid.to_string(),
                     seed,
                     cases,
+                    state_cases: vec![],
                 },
             )
         })
@@ -274,6 +283,7 @@ pub fn for_each_file(
                     grid: name.to_string(),
                     seed,
                     cases,
+                    state_cases: vec![],
                 },
             )?;
         }
@@ -285,6 +295,10 @@ pub fn for_each_file(
     for (rel, file) in into_files(name, seed, files.into_iter().zip(cases).collect()) {
         sink(rel, file)?;
     }
+    // `state/` sorts after every spec folder, so files still arrive sorted by path.
+    for (rel, file) in tex_params::files(name, seed)? {
+        sink(rel, file)?;
+    }
     Ok(())
 }
 
@@ -292,7 +306,9 @@ pub fn for_each_file(
 /// generator would evaluate. Used by tests that must not depend on the oracle.
 pub fn unfilled(name: &str, seed: u64) -> Result<Vec<(String, FixtureFile)>, GridError> {
     let cases = to_cases(name, drafts(name, seed)?)?;
-    Ok(into_files(name, seed, cases))
+    let mut files = into_files(name, seed, cases);
+    files.extend(tex_params::unfilled_files(name, seed));
+    Ok(files)
 }
 
 /// Distinct relative paths of a list of files (for reports).

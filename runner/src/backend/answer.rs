@@ -3,67 +3,114 @@
 //! left out, given two results, or not in the case makes the case the implementation's error.
 
 use super::{ApiOutcome, CaseOutcome};
-use shadowcheck_model::{ApiPath, Case};
-use shadowcheck_protocol::{PathResult, PathSkip, Reply};
+use shadowcheck_model::{ApiPath, Case, StateCase};
+use shadowcheck_protocol::{PathResult, PathSkip, Reply, StateResult};
 
 pub fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
     match a {
-        // parse_answer never returns a hello.
-        Reply::Hello(_) => CaseOutcome::Error("a hello where an answer was expected".into()),
-        Reply::Skip { reason, .. } => CaseOutcome::Skip(reason),
-        Reply::Error { message, .. } => CaseOutcome::Error(message),
         Reply::Observation {
             results, skipped, ..
-        } => {
-            let mut v = Vec::with_capacity(results.len() + skipped.len());
-            for PathResult {
-                api, rgba, stored, ..
-            } in results
-            {
-                match ApiPath::from_key(&api) {
-                    Some(a) if v.iter().any(|(p, _)| *p == a) => {
-                        return CaseOutcome::Error(format!("two results for API path `{api}`"))
-                    }
-                    Some(a) if case.api.contains(&a) => v.push((
-                        a,
-                        ApiOutcome::Rgba {
-                            rgba: rgba.0,
-                            stored,
-                        },
-                    )),
-                    _ => {
-                        return CaseOutcome::Error(format!(
-                            "result for API path `{api}`, which the case does not have"
-                        ))
-                    }
-                }
+        } => collect(
+            &case.api,
+            results
+                .into_iter()
+                .map(
+                    |PathResult {
+                         api, rgba, stored, ..
+                     }| {
+                        (
+                            api,
+                            ApiOutcome::Rgba {
+                                rgba: rgba.0,
+                                stored,
+                            },
+                        )
+                    },
+                )
+                .collect(),
+            skipped,
+        ),
+        Reply::StateObservation { .. } => {
+            CaseOutcome::Error("a state observation answering a lookup case".into())
+        }
+        other => common(other),
+    }
+}
+
+/// The outcome of a state case from its answer (`state_observation`), by the same rules.
+pub fn to_state_outcome(case: &StateCase, a: Reply) -> CaseOutcome {
+    match a {
+        Reply::StateObservation {
+            results, skipped, ..
+        } => collect(
+            &case.api,
+            results
+                .into_iter()
+                .map(|StateResult { api, observed }| (api, ApiOutcome::State(observed)))
+                .collect(),
+            skipped,
+        ),
+        Reply::Observation { .. } => {
+            CaseOutcome::Error("a lookup observation answering a state case".into())
+        }
+        other => common(other),
+    }
+}
+
+/// Answers that mean the same for both kinds of case.
+fn common(a: Reply) -> CaseOutcome {
+    match a {
+        Reply::Skip { reason, .. } => CaseOutcome::Skip(reason),
+        Reply::Error { message, .. } => CaseOutcome::Error(message),
+        // parse_answer never returns a hello.
+        _ => CaseOutcome::Error("a hello where an answer was expected".into()),
+    }
+}
+
+/// Every path of `case_api` gets exactly one result or skip.
+fn collect(
+    case_api: &[ApiPath],
+    results: Vec<(String, ApiOutcome)>,
+    skipped: Vec<PathSkip>,
+) -> CaseOutcome {
+    let mut v = Vec::with_capacity(results.len() + skipped.len());
+    for (api, outcome) in results {
+        match ApiPath::from_key(&api) {
+            Some(a) if v.iter().any(|(p, _)| *p == a) => {
+                return CaseOutcome::Error(format!("two results for API path `{api}`"))
             }
-            // A path both answered and listed as skipped keeps its result (judged, never hidden).
-            for PathSkip { api, reason } in skipped {
-                match ApiPath::from_key(&api) {
-                    Some(a) if case.api.contains(&a) => {
-                        if !v.iter().any(|(p, _)| *p == a) {
-                            v.push((a, ApiOutcome::Skip(reason)));
-                        }
-                    }
-                    _ => {
-                        return CaseOutcome::Error(format!(
-                            "skipped API path `{api}`, which the case does not have"
-                        ))
-                    }
-                }
-            }
-            // Every path sent is answered or skipped: a path left out is the implementation's error
-            // (never a silent Skip).
-            if let Some(a) = case.api.iter().find(|a| !v.iter().any(|(p, _)| p == *a)) {
+            Some(a) if case_api.contains(&a) => v.push((a, outcome)),
+            _ => {
                 return CaseOutcome::Error(format!(
-                    "neither a result nor a skip for API path `{}`",
-                    a.key()
-                ));
+                    "result for API path `{api}`, which the case does not have"
+                ))
             }
-            CaseOutcome::Observed(v)
         }
     }
+    // A path both answered and listed as skipped keeps its result (judged, never hidden).
+    for PathSkip { api, reason } in skipped {
+        match ApiPath::from_key(&api) {
+            Some(a) if case_api.contains(&a) => {
+                if !v.iter().any(|(p, _)| *p == a) {
+                    v.push((a, ApiOutcome::Skip(reason)));
+                }
+            }
+            _ => {
+                return CaseOutcome::Error(format!(
+                    "skipped API path `{api}`, which the case does not have"
+                ))
+            }
+        }
+    }
+    // Every path sent is answered or skipped: a path left out is the implementation's error
+    // (never a silent Skip).
+    if let Some(a) = case_api.iter().find(|a| !v.iter().any(|(p, _)| p == *a)) {
+        return CaseOutcome::Error(format!(
+            "neither a result nor a skip for API path `{}`",
+            a.key()
+        ));
+    }
+    CaseOutcome::Observed(v)
 }
 
 #[cfg(test)]

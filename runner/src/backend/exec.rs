@@ -12,10 +12,9 @@
 //! again; after `--give-up-after` K cases in a row end in Timeout the rest are Timeout unsent; an
 //! interrupted run stops waiting within [`POLL`]. Answers become outcomes in `answer.rs`.
 
-use super::answer::to_outcome;
 pub use super::command::{split_command, ProcessCommand};
-use super::{Backend, BackendError, Capabilities, CaseOutcome, Options};
-use shadowcheck_model::Case;
+use super::{Backend, BackendError, Capabilities, CaseOutcome, Options, Sendable};
+use shadowcheck_model::{Case, StateCase};
 use shadowcheck_protocol::{Hello, Reply, Request};
 use std::collections::{HashSet, VecDeque};
 use std::io::{BufRead, BufReader, BufWriter, Write};
@@ -304,7 +303,10 @@ impl ExecBackend {
 
     /// One attempt at a group in the current process: the answers received, and why it stopped
     /// early if it did.
-    fn attempt(&mut self, group: &[&Case]) -> (Vec<CaseOutcome>, Option<Failure>) {
+    fn attempt<T: Sendable + ?Sized>(
+        &mut self,
+        group: &[&T],
+    ) -> (Vec<CaseOutcome>, Option<Failure>) {
         self.check_stray_lines();
         let Some(p) = self.proc.as_mut() else {
             return (vec![], Some(Failure::Died));
@@ -312,7 +314,7 @@ impl ExecBackend {
         // The whole group in one buffer, then `flush`: one hand-over to the writer thread.
         let mut buf = Vec::with_capacity(group.len() * 1024);
         for c in group {
-            Request::write_case(&mut buf, c, self.wants_expect);
+            c.write(&mut buf, self.wants_expect);
             buf.push(b'\n');
         }
         buf.extend_from_slice(Request::FLUSH_LINE);
@@ -336,10 +338,10 @@ impl ExecBackend {
                 }
             };
             match Reply::parse_answer(&line) {
-                Ok(a) if a.case_id() == Some(c.id.as_str()) => out.push(to_outcome(c, a)),
+                Ok(a) if a.case_id() == Some(c.id()) => out.push(c.outcome(a)),
                 Ok(a)
                     if a.case_id().is_some_and(|id| {
-                        group[..i].iter().any(|g| g.id == id) || self.answered.contains(id)
+                        group[..i].iter().any(|g| g.id() == id) || self.answered.contains(id)
                     }) =>
                 {
                     let id = a.case_id().unwrap_or_default().to_string();
@@ -349,7 +351,7 @@ impl ExecBackend {
                     let msg = format!(
                         "answer for `{}` where `{}` was expected",
                         a.case_id().unwrap_or_default(),
-                        c.id
+                        c.id()
                     );
                     return (out, Some(Failure::Protocol(msg)));
                 }
@@ -364,7 +366,8 @@ impl ExecBackend {
                 }
             }
         }
-        self.answered.extend(group.iter().map(|c| c.id.clone()));
+        self.answered
+            .extend(group.iter().map(|c| c.id().to_string()));
         self.check_stray_lines();
         (out, None)
     }
@@ -416,7 +419,7 @@ impl ExecBackend {
     }
 
     /// Runs a group, bisecting whatever a dying or stalling process leaves unanswered.
-    fn run_group(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
+    fn run_group<T: Sendable + ?Sized>(&mut self, cases: &[&T]) -> Vec<CaseOutcome> {
         let mut results = Vec::with_capacity(cases.len());
         while results.len() < cases.len() {
             let rest = &cases[results.len()..];
@@ -455,7 +458,8 @@ impl ExecBackend {
                     let how = self.kill_proc();
                     self.push_diag(format!(
                         "{}: answer for `{}` expected; restarting ({how})",
-                        self.name, rest[0].id
+                        self.name,
+                        rest[0].id()
                     ));
                     self.fault(id);
                 }
@@ -463,7 +467,8 @@ impl ExecBackend {
                     let how = self.kill_proc();
                     self.push_diag(format!(
                         "{}: protocol error on `{}`: {msg}; restarting ({how})",
-                        self.name, rest[0].id
+                        self.name,
+                        rest[0].id()
                     ));
                     results.push(CaseOutcome::Crash(format!("protocol error: {msg}")));
                 }
@@ -481,7 +486,7 @@ impl ExecBackend {
                         self.push_diag(format!(
                             "{}: `{}`: {}",
                             self.name,
-                            rest[0].id,
+                            rest[0].id(),
                             if stalled { "timeout" } else { "crash" }
                         ));
                         results.push(what);
@@ -527,6 +532,9 @@ impl Backend for ExecBackend {
         self.group
     }
     fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
+        self.run_group(cases)
+    }
+    fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {
         self.run_group(cases)
     }
     fn implementation(&self) -> Option<String> {

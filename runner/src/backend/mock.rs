@@ -261,6 +261,33 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
                 output.write_all(b"\n")?;
                 output.flush()?;
             }
+            Request::State { case } => {
+                // The mock answers what the expectation says (it asked for it in its hello).
+                let observed = shadowcheck_model::StateObserved {
+                    error: case.expect.as_ref().and_then(|e| e.error),
+                    other_error: None,
+                    value: case.expect.as_ref().and_then(|e| e.value),
+                };
+                let reply = Reply::StateObservation {
+                    case_id: case.id.clone(),
+                    results: case
+                        .api
+                        .iter()
+                        .map(|a| shadowcheck_protocol::StateResult {
+                            api: a.key().to_string(),
+                            observed: observed.clone(),
+                        })
+                        .collect(),
+                    skipped: vec![],
+                };
+                pending.push(serde_json::to_string(&reply)?);
+                if !script.buffer {
+                    for l in pending.drain(..) {
+                        writeln!(output, "{l}")?;
+                    }
+                    output.flush()?;
+                }
+            }
             Request::Case { case } => {
                 if kill_runner.as_ref().is_some_and(|r| r.is_match(&case.id)) {
                     signal_parent("KILL");

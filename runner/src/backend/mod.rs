@@ -18,8 +18,9 @@ pub mod mock;
 pub mod soft;
 pub mod webgl;
 
-use shadowcheck_model::{ApiPath, Case, Texels};
+use shadowcheck_model::{ApiPath, Case, StateCase, StateObserved, Texels};
 pub use shadowcheck_protocol::{Capabilities, Support};
+use shadowcheck_protocol::{Reply, Request};
 use std::time::Duration;
 
 /// What a backend returned for one API path of a case.
@@ -29,7 +30,42 @@ pub enum ApiOutcome {
         rgba: [f64; 4],
         stored: Option<Texels>,
     },
+    /// What a state case observed (its error and the value read back).
+    State(StateObserved),
     Skip(String),
+}
+
+/// What the runner sends an implementation: a lookup case or a state case.
+pub trait Sendable: Sync {
+    fn id(&self) -> &str;
+    /// Appends the request line (without the newline).
+    fn write(&self, buf: &mut Vec<u8>, with_expect: bool);
+    /// The outcome an answer line gives this case.
+    fn outcome(&self, reply: Reply) -> CaseOutcome;
+}
+
+impl Sendable for Case {
+    fn id(&self) -> &str {
+        &self.id
+    }
+    fn write(&self, buf: &mut Vec<u8>, with_expect: bool) {
+        Request::write_case(buf, self, with_expect)
+    }
+    fn outcome(&self, reply: Reply) -> CaseOutcome {
+        answer::to_outcome(self, reply)
+    }
+}
+
+impl Sendable for StateCase {
+    fn id(&self) -> &str {
+        &self.id
+    }
+    fn write(&self, buf: &mut Vec<u8>, with_expect: bool) {
+        Request::write_state(buf, self, with_expect)
+    }
+    fn outcome(&self, reply: Reply) -> CaseOutcome {
+        answer::to_state_outcome(self, reply)
+    }
 }
 
 /// The answer for one case.
@@ -59,6 +95,14 @@ pub trait Backend: Send {
     fn name(&self) -> &str;
     fn capabilities(&self) -> &Capabilities;
     fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome>;
+    /// Runs TexParameter state cases (only sent when the capabilities list the `tex_parameter`
+    /// feature, or declare no feature list). A backend without them answers Skip.
+    fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {
+        cases
+            .iter()
+            .map(|_| CaseOutcome::Skip("this backend runs no state cases".into()))
+            .collect()
+    }
     /// How many cases the runner hands over at once (streaming granularity of results.jsonl).
     fn batch_size(&self) -> usize {
         256

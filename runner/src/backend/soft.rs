@@ -6,7 +6,7 @@
 //! `SoftUnit` per spec, built once; each lookup returns four f32 channels.
 
 use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome};
-use shadowcheck_model::{Case, Spec};
+use shadowcheck_model::{Case, Spec, StateCase};
 use shadowcheck_soft::SoftUnit;
 
 pub struct SoftBackend {
@@ -85,5 +85,25 @@ impl Backend for SoftBackend {
     }
     fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
         cases.iter().map(|c| self.run_one(c)).collect()
+    }
+    /// The soft unit's own TexParameter state (`shadowcheck_soft::tex_param`).
+    fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {
+        cases
+            .iter()
+            .map(|c| match self.only {
+                Some(only) if c.spec != only => {
+                    CaseOutcome::Skip(format!("case is for spec {}", c.spec))
+                }
+                _ => {
+                    let unit = SoftUnit::new(c.spec);
+                    CaseOutcome::Observed(
+                        c.api
+                            .iter()
+                            .map(|&a| (a, ApiOutcome::State(unit.tex_parameter(c, a))))
+                            .collect(),
+                    )
+                }
+            })
+            .collect()
     }
 }

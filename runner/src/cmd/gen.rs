@@ -55,6 +55,7 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     let mut nfiles = 0usize;
     let mut differ: Vec<String> = Vec::new();
     let mut all_cases = Vec::new();
+    let mut all_states = Vec::new();
     let mut written: Vec<(String, fixtures::FixtureFile)> = Vec::new();
     let streaming = args.grid == "exhaustive";
     let mut coverage = Coverage::default();
@@ -73,9 +74,13 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
             }
         }
         if streaming {
-            let cov = Coverage::of(&file.cases);
+            let cov = Coverage::of(&file.cases).with_states(&file.state_cases);
             for (k, n) in cov.counts {
                 *coverage.counts.entry(k).or_default() += n;
+            }
+            for (k, (n, exists)) in cov.state {
+                let e = coverage.state.entry(k).or_insert((0, exists));
+                e.0 += n;
             }
             coverage.total += cov.total;
             if !args.check {
@@ -83,6 +88,7 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
             }
         } else {
             all_cases.extend(file.cases.iter().cloned());
+            all_states.extend(file.state_cases.iter().cloned());
             written.push((rel, file));
         }
         Ok(())
@@ -94,7 +100,7 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
             .with_context(|| format!("cleaning {}", out.display()))?;
     }
     if !streaming {
-        coverage = Coverage::of(&all_cases);
+        coverage = Coverage::of(&all_cases).with_states(&all_states);
         if args.check {
             if let Ok(existing) = fixtures::fixture_paths(&out) {
                 let wanted = grids::paths(&written);

@@ -11,10 +11,6 @@ pub struct Args {
     /// Only create the context and print `ok <name>` or `unavailable: <reason>`, then exit.
     #[arg(long)]
     probe: bool,
-    /// Check TexParameter defaults and accepted/rejected values against the oracle's tables; prints
-    /// one JSON line per check and exits 1 if any differs.
-    #[arg(long)]
-    state_check: bool,
 }
 
 pub fn main(args: Args) -> anyhow::Result<ExitCode> {
@@ -29,17 +25,6 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
         });
     }
     let mut w = worker::Worker::start(name)?;
-    if args.state_check {
-        let checks = w.state_check();
-        for c in &checks {
-            println!("{}", serde_json::to_string(c)?);
-        }
-        return Ok(if checks.iter().all(|c| c.ok) {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        });
-    }
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
     worker::serve(&mut w, stdin.lock(), std::io::BufWriter::new(stdout.lock()))?;

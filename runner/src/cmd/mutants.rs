@@ -78,17 +78,17 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let faults = mutants::select(&a.mutant)?;
+    let mut states = Vec::new();
     let (source, cases) = match &a.grid {
         Some(g) => {
             let files = shadowcheck_cases::grids::generate(g, 0)
                 .with_context(|| format!("generating grid `{g}`"))?;
-            (
-                format!("grid {g}"),
-                files
-                    .into_iter()
-                    .flat_map(|(_, f)| f.cases)
-                    .collect::<Vec<_>>(),
-            )
+            let mut cases = Vec::new();
+            for (_, f) in files {
+                cases.extend(f.cases);
+                states.extend(f.state_cases);
+            }
+            (format!("grid {g}"), cases)
         }
         None => {
             let paths = if a.fixtures.is_empty() {
@@ -104,7 +104,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
                         path.display()
                     )
                 })?;
-                cases.extend(files.into_iter().flat_map(|(_, f)| f.cases));
+                for (_, f) in files {
+                    cases.extend(f.cases);
+                    states.extend(f.state_cases);
+                }
             }
             let names: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
             (names.join(", "), cases)
@@ -117,7 +120,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             t0.elapsed().as_secs_f64()
         );
     }
-    let suite = Suite::new(cases)?;
+    let suite = Suite::new(cases)?.with_states(states);
     let threads = a.jobs.unwrap_or_else(|| {
         std::thread::available_parallelism()
             .map(|n| n.get())

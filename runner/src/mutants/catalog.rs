@@ -91,6 +91,12 @@ pub fn about(f: Fault) -> &'static str {
         }
         F::GatherIgnoresRef => "shadow textureGather returns depths, refZ ignored (no comparison)",
         F::GatherUsesLodLevel => "textureGather reads the level λ selects instead of level base",
+        F::WrongInitialCompareFunc => {
+            "a new texture's TEXTURE_COMPARE_FUNC is LESS, not LEQUAL (GL 4.6 Table 23.15): seen by state cases"
+        }
+        F::IllegalValueStored => {
+            "an illegal TexParameter enum value stored instead of INVALID_ENUM (GL 4.6 §8.10): seen by state cases"
+        }
         #[allow(unreachable_patterns)]
         _ => "",
     }

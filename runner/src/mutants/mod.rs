@@ -34,6 +34,9 @@
 pub mod catalog;
 pub mod render;
 mod results;
+mod state;
+
+pub use state::StateSuite;
 
 pub use catalog::{about, grid_change, unobservable, witness};
 pub use results::{
@@ -87,6 +90,8 @@ pub struct Suite {
     /// Correct observations, in sampling order.
     unmutated: Vec<BatchResult>,
     complexity: Vec<Complexity>,
+    /// TexParameter state cases (empty unless [`Suite::with_states`]).
+    states: StateSuite,
 }
 
 impl Suite {
@@ -127,6 +132,7 @@ impl Suite {
             test_case: vec![],
             unmutated: vec![],
             complexity,
+            states: StateSuite::default(),
         };
         let unmutated = suite.sample(None);
         suite.test_case = unmutated.iter().map(|b| b.case).collect();
@@ -134,11 +140,18 @@ impl Suite {
         Ok(suite)
     }
 
+    /// The same suite with the state cases `states` as well (sampled by each mutant's own
+    /// TexParameter state, judged like `shadowcheck run --backend soft`).
+    pub fn with_states(mut self, states: Vec<shadowcheck_model::StateCase>) -> Suite {
+        self.states = StateSuite::new(states);
+        self
+    }
+
     pub fn cases(&self) -> usize {
         self.cases.len()
     }
     pub fn tests(&self) -> usize {
-        self.unmutated.len()
+        self.unmutated.len() + self.states.tests()
     }
 
     /// Every test sampled by the unit with `fault` (or the correct unit), in sampling order, with
@@ -229,6 +242,7 @@ impl Suite {
                 _ => r.skip += 1,
             }
         }
+        self.states.unmutated(&mut r);
         r.seconds = t0.elapsed().as_secs_f64();
         r
     }
@@ -284,7 +298,11 @@ impl Suite {
                 minimal[slot] = Some(t);
             }
         }
-        let killing_cases = worst.iter().filter(|o| **o == Outcome::Fail).count();
+        let states = self.states.mutant(fault);
+        failing_tests += states.failing_tests;
+        changed_tests += states.changed_tests;
+        let killing_cases =
+            worst.iter().filter(|o| **o == Outcome::Fail).count() + states.killing_cases;
         let warn_cases = worst.iter().filter(|o| **o == Outcome::Warn).count();
         let (status, slot) = if killing_cases > 0 {
             (KillStatus::Killed, 0)
@@ -306,8 +324,12 @@ impl Suite {
             failing_tests,
             warn_cases,
             changed_tests,
-            first: first[slot].map(|(_, t)| self.kill(&results, t, outcome)),
-            minimal: minimal[slot].map(|t| self.kill(&results, t, outcome)),
+            first: first[slot]
+                .map(|(_, t)| self.kill(&results, t, outcome))
+                .or_else(|| (slot == 0).then(|| states.first.clone()).flatten()),
+            minimal: minimal[slot]
+                .map(|t| self.kill(&results, t, outcome))
+                .or_else(|| (slot == 0).then_some(states.first).flatten()),
             witness: None,
             unobservable: None,
             grid_change: None,
@@ -320,7 +342,13 @@ impl Suite {
 impl MutantResult {
     /// Adds, for a mutant not killed, the witness check and the documented reason or grid change.
     fn explained(mut self, fault: Fault, t0: Instant) -> MutantResult {
-        if self.status != KillStatus::Killed {
+        if self.status != KillStatus::Killed && fault.is_state() {
+            // No lookup shows a TexParameter state fault: the state cases do.
+            self.grid_change = Some(
+                "run with the state cases (cases/fixtures/state/, `shadowcheck gen` writes them)"
+                    .to_string(),
+            );
+        } else if self.status != KillStatus::Killed {
             let w = check_witness(fault);
             // A documented "unobservable" only stands while the oracle accepts the witness's faulty result.
             if w.mutant != Outcome::Fail {

@@ -30,6 +30,8 @@ pub enum ReproError {
     BadBackend(String),
     #[error("case `{id}` not found in {fixtures}")]
     NoCase { id: String, fixtures: String },
+    #[error("`{id}` is a TexParameter state case: repro writes C programs for lookup cases only; a state case's call is one TexParameter and one GetTexParameter on a fresh texture (its id and fixture line say which), small enough to write by hand")]
+    StateCase { id: String },
     #[error("case `{id}` does not list API path `{api}` (it lists: {listed})")]
     NoPath {
         id: String,
@@ -124,6 +126,9 @@ pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subjec
         });
     }
     let set = crate::run::load_cases(fixtures);
+    if set.states.iter().any(|l| l.case.id == id) {
+        return Err(ReproError::StateCase { id });
+    }
     let loaded = set
         .cases
         .into_iter()

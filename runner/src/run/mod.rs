@@ -18,7 +18,7 @@ use crate::interrupt;
 use crate::records::{Counts, LoadError, Outcome, Results, Status, Summary, Tags, TestResult};
 use crate::shard::Shard;
 use crate::verdict;
-use shadowcheck_model::{ApiPath, Case};
+use shadowcheck_model::{ApiPath, Case, StateCase};
 use shadowcheck_protocol::{Capabilities, Rgba};
 use std::borrow::Cow;
 use std::collections::HashMap;
@@ -32,11 +32,20 @@ pub struct Loaded {
     pub file: usize,
 }
 
+/// A state case and the fixture file it came from.
+#[derive(Debug, Clone)]
+pub struct LoadedState {
+    pub case: StateCase,
+    pub file: usize,
+}
+
 /// The cases of a run and what went wrong loading them.
 #[derive(Debug, Default)]
 pub struct CaseSet {
     pub files: Vec<String>,
     pub cases: Vec<Loaded>,
+    /// TexParameter state cases (`state_cases` of the fixture files).
+    pub states: Vec<LoadedState>,
     pub errors: Vec<LoadError>,
 }
 
@@ -86,6 +95,21 @@ pub fn load_cases(paths: &[PathBuf]) -> CaseSet {
                         seen.insert(case.id.clone(), idx);
                         set.cases.push(Loaded { case, file: idx });
                     }
+                    for case in ff.state_cases {
+                        if let Some(&first) = seen.get(&case.id) {
+                            set.errors.push(LoadError {
+                                file: file.clone(),
+                                case: Some(case.id.clone()),
+                                message: format!(
+                                    "duplicate case id (first in {})",
+                                    set.files[first]
+                                ),
+                            });
+                            continue;
+                        }
+                        seen.insert(case.id.clone(), idx);
+                        set.states.push(LoadedState { case, file: idx });
+                    }
                 }
                 Err(e) => set.errors.push(LoadError {
                     file,
@@ -101,13 +125,15 @@ pub fn load_cases(paths: &[PathBuf]) -> CaseSet {
 impl CaseSet {
     /// Keeps the cases whose id matches `pattern` and that belong to `shard`.
     pub fn select(&mut self, pattern: Option<&regex::Regex>, shard: Option<Shard>) {
-        self.cases.retain(|l| {
-            pattern.is_none_or(|p| p.is_match(&l.case.id))
-                && shard.is_none_or(|s| s.contains(&l.case.id))
-        });
+        let keep = |id: &str| {
+            pattern.is_none_or(|p| p.is_match(id)) && shard.is_none_or(|s| s.contains(id))
+        };
+        self.cases.retain(|l| keep(&l.case.id));
+        self.states.retain(|l| keep(&l.case.id));
     }
     pub fn tests(&self) -> usize {
-        self.cases.iter().map(|l| l.case.api.len()).sum()
+        self.cases.iter().map(|l| l.case.api.len()).sum::<usize>()
+            + self.states.iter().map(|l| l.case.api.len()).sum::<usize>()
     }
     /// The tests of this set on a backend with `caps`: `(tests, not applicable)`. A case's API
     /// paths, or the whole case, whose spec or path the backend does not implement are no tests
@@ -117,6 +143,11 @@ impl CaseSet {
         let mut n = (0, 0);
         for l in &self.cases {
             let applicable = applicable_apis(caps, &l.case).map_or(0, |(a, _)| a.len());
+            n.0 += applicable;
+            n.1 += l.case.api.len() - applicable;
+        }
+        for l in &self.states {
+            let applicable = state::applicable(caps, &l.case).map_or(0, |(a, _)| a.len());
             n.0 += applicable;
             n.1 += l.case.api.len() - applicable;
         }
@@ -209,6 +240,10 @@ fn judge_outcome(
                         Some("the backend returned no result for this API path".to_string()),
                     ),
                     Some(ApiOutcome::Skip(m)) => (Outcome::Skip, Some(m.clone())),
+                    Some(ApiOutcome::State(_)) => (
+                        Outcome::Fail,
+                        Some("the backend answered a lookup case with a state result".into()),
+                    ),
                     Some(ApiOutcome::Rgba { rgba, stored }) => {
                         let j = verdict::judge(sent, api, *rgba, stored.as_ref());
                         r.observed = Some(Rgba(*rgba));
@@ -353,6 +388,7 @@ pub fn run_backend(
         ctx.fanout.emit(&Event::BatchFinished { backend: &name });
         timing.verdict_s += t1.elapsed().as_secs_f64();
     }
+    state::run_states(backend, set, prior, &mut ctx, &mut timing);
     if settings.rerun_regressions && !interrupt::requested() {
         rerun_regressions(backend, set, &mut ctx);
     }
@@ -520,6 +556,9 @@ pub fn finish(
     });
     summary
 }
+
+mod state;
+pub use state::tags as state_tags;
 
 #[cfg(test)]
 mod tests;

@@ -126,6 +126,7 @@ fn case(id: &str, spec: Spec, api: Vec<ApiPath>) -> Case {
 fn capabilities_and_skips_narrow_what_is_sent_and_not_applicable_paths_are_no_tests() {
     let set = CaseSet {
         files: vec!["f.json".into()],
+        states: vec![],
         cases: vec![
             Loaded {
                 case: case(
@@ -213,6 +214,7 @@ fn capabilities_and_skips_narrow_what_is_sent_and_not_applicable_paths_are_no_te
 fn resumed_tests_are_replayed_not_rerun() {
     let set = CaseSet {
         files: vec!["f.json".into()],
+        states: vec![],
         cases: vec![Loaded {
             case: case("gl46/a", Spec::Gl46, vec![ApiPath::GlslCore]),
             file: 0,

@@ -158,6 +158,7 @@ pub fn write_fixture(path: &Path, cases: Vec<Case>) {
         grid: "test".into(),
         seed: 0,
         cases,
+        state_cases: vec![],
     };
     std::fs::create_dir_all(path.parent().unwrap()).unwrap();
     std::fs::write(path, to_string(&f).unwrap()).unwrap();
