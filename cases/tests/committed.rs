@@ -144,6 +144,7 @@ fn schema_enums_match_the_model() {
         v.iter().map(|x| key(*x).to_string()).collect()
     }
     assert_eq!(keys("spec"), all(Spec::ALL, Spec::key));
+    assert_eq!(keys("swizzle"), all(Swizzle::ALL, Swizzle::key));
     assert_eq!(keys("api"), all(ApiPath::ALL, ApiPath::key));
     assert_eq!(
         keys("compare_func"),

@@ -64,6 +64,16 @@ impl Renderer {
                 return;
             }
         };
+        let so = match texture::bind_unit_state(&self.gl, first) {
+            Ok(so) => so,
+            Err(e) => {
+                for (ci, _) in &group {
+                    st.fail(*ci, e.to_string());
+                }
+                self.gl.delete_texture(tex);
+                return;
+            }
+        };
         // Batchable (case, plan) pairs by program, in first-appearance order. Small groups draw a
         // pixel per case instead: updating the parameter texture makes the driver wait for the
         // draws still reading it, which costs more than a few single-pixel draws.
@@ -124,6 +134,7 @@ impl Renderer {
                 }
             }
         }
+        texture::unbind_unit_state(&self.gl, first, so);
         let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
         self.retire(cases, st, tex, group[0].0, sharing);
         if let Err(e) = texture::check(&self.gl, "drawing") {

@@ -417,9 +417,18 @@ impl Renderer {
                     break;
                 }
             };
+            let so = match texture::bind_unit_state(&self.gl, case) {
+                Ok(so) => so,
+                Err(e) => {
+                    self.gl.delete_texture(tex);
+                    failed = Some(e.to_string());
+                    break;
+                }
+            };
             self.reserve(st, 1);
             let slot = st.pending.len();
             let r = self.draw(plan, case.texture.target, slot);
+            texture::unbind_unit_state(&self.gl, case, so);
             if pi == 0 {
                 self.retire(cases, st, tex, ci, vec![ci]);
             } else {

@@ -373,6 +373,9 @@ pub fn declared_capabilities(i: &GlInfo) -> Capabilities {
                     "fail_value" => i.has_ext("GL_ARB_shadow_ambient"),
                     "border_clamp" => i.border_clamp(),
                     "stencil_texturing" => i.stencil_texturing(),
+                    "swizzle" => i.swizzle(),
+                    "seamless_toggle" => i.seamless_toggle(),
+                    "sampler_objects" => i.sampler_objects(),
                     _ => false,
                 })
                 .map(|f| f.key.to_string())
