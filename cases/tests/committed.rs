@@ -191,6 +191,9 @@ fn default_covers_every_allowed_combination() {
         missing.len(),
         &missing[..missing.len().min(10)]
     );
+    // The unit-state dimensions (swizzle, seamless enable / ES rule, sampler objects) on every
+    // API path that has them.
+    assert_eq!(cov.unit_state_missing(), vec![]);
     // And nothing outside what the spec allows.
     for c in &cases {
         let d = specs::dims(c.spec);

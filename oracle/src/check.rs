@@ -6,7 +6,7 @@
 use crate::rules::Rules;
 use crate::state::{self, Ctx, GlErrorKind, Value};
 use crate::OracleError;
-use shadowcheck_model::{ApiPath, Case, CompareMode, DepthTextureMode, Filter, Spec, Target, Wrap};
+use shadowcheck_model::{ApiPath, Case, CompareMode, Filter, Spec, Target, Wrap};
 
 /// The context an API path runs in.
 pub fn ctx_of(api: ApiPath) -> Ctx {
@@ -78,14 +78,12 @@ fn check_lookup_state(case: &Case, rules: &Rules) -> Result<(), OracleError> {
                 format!("the swizzle is modelled on GLSL 1.30+ / ES 3.00 shader lookups (GL 4.6 §15.2.1), not on `{api}`"),
             ));
         }
-        let alpha_mode = s.depth_texture_mode == Some(DepthTextureMode::Alpha)
-            && case.api.contains(&ApiPath::Glsl130)
-            && s.compare_mode != CompareMode::None;
-        if alpha_mode {
+        let shadow = s.in_effect().compare_mode != CompareMode::None;
+        if shadow && case.api.contains(&ApiPath::Glsl130) {
             return Err(not_applicable(
                 case,
                 rules,
-                "a swizzled GLSL 1.30 shadow lookup with DEPTH_TEXTURE_MODE ALPHA: the two readings of contradiction `compat-float-alpha` give Cb = (r,0,0,1) or (0,0,0,r), whose swizzles have no common channel form".into(),
+                "a swizzled GLSL 1.30 shadow lookup in a compatibility context: the two readings of contradiction `compat-float-alpha` give Cb = (Rt,0,0,1) (§11.1.3.5) or Cb by DEPTH_TEXTURE_MODE (§8.23.1, Table 16.1: LUMINANCE (r,r,r,1) by default), whose swizzled Cs[0] differ".into(),
             ));
         }
     }

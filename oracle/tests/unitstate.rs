@@ -65,6 +65,15 @@ fn swizzle_only_where_it_exists() {
         not_applicable(&c),
         "fixed function is not a modelled swizzle path"
     );
+    // GLSL 1.30 shadow lookups: Cb = (Rt,0,0,1) (§11.1.3.5) or by DEPTH_TEXTURE_MODE (§8.23.1,
+    // Table 16.1): two readings whose swizzled Cs[0] differ.
+    c.api = vec![ApiPath::Glsl130];
+    assert!(not_applicable(&c), "two readings on glsl130 shadow lookups");
+    c.sampler.compare_mode = CompareMode::None;
+    assert!(
+        !not_applicable(&c),
+        "a non-shadow glsl130 read has one reading"
+    );
     let mut e = one(Spec::Es2Ext, Format::D16, CompareFunc::Lequal, 0.5, 0.8);
     e.sampler.swizzle = Some([S::One, S::Green, S::Blue, S::Alpha]);
     assert!(not_applicable(&e), "ES 2.0 has no swizzle");

@@ -93,9 +93,14 @@ pub fn swizzle(d: &SpecDims) -> Vec<Draft> {
 /// face values (+X 0.2). At R = 0.5 and 0.7 (LEQUAL) seamless filtering (the +Z / -Y neighbours)
 /// and per-face filtering with CLAMP_TO_EDGE or REPEAT give three different r near the edges.
 fn seamless_texture(c: &Cell) -> Texture {
+    seamless_texture_with(c, [0.2, 0.6])
+}
+
+/// [`seamless_texture`] with +X's level-0 columns holding `x`.
+fn seamless_texture_with(c: &Cell, x: [f64; 2]) -> Texture {
     const FACES: [f64; 6] = [0.2, 0.3, 0.85, 0.75, 0.9, 0.65];
     let l0: Vec<f64> = (0..6)
-        .flat_map(|f| (0..4).map(move |i| if f == 0 { [0.2, 0.6][i % 2] } else { FACES[f] }))
+        .flat_map(|f| (0..4).map(move |i| if f == 0 { x[i % 2] } else { FACES[f] }))
         .collect();
     texture(
         c,
@@ -173,6 +178,31 @@ pub fn seamless(d: &SpecDims) -> Vec<Draft> {
                     }
                 }
             }
+            // +X column 0 passes, column 1 fails (0.9 | 0.2): at its +Z edge the seamless
+            // footprint passes everywhere (r = 1 exactly, whatever a profile allows for mixed
+            // footprints), while per-face REPEAT mixes in column 1.
+            let c = cell(d, Target::Cube, fmt, Filter::Linear, func);
+            let at = At {
+                s: 0.05,
+                t: 0.5,
+                layer: 0.0,
+                face: 0,
+            };
+            let mode = match on {
+                Some(true) => "on",
+                Some(false) => "off",
+                None => "es",
+            };
+            let mut x = Draft::new(
+                "seamless",
+                c,
+                seamless_texture_with(&c, [0.9, 0.2]),
+                lookup(Target::Cube, at, 2, 2, 0.5),
+                format!("seamless={mode}/wrap={wrap}/x0=0.9/edge_s/ref=0.5"),
+            );
+            x.sampler.seamless = on;
+            (x.sampler.wrap_s, x.sampler.wrap_t, x.sampler.wrap_r) = (wrap, wrap, wrap);
+            out.push(x);
         }
     }
     out
