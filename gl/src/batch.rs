@@ -10,6 +10,7 @@ use super::draw::{BatchState, Pending, Renderer, CAPACITY};
 use super::paths::{Plan, ShaderKey};
 use super::shaders::{self, PARAM_TEXELS, PARAM_WIDTH};
 use super::texture;
+use super::unitstate;
 use glow::HasContext;
 use shadowcheck_model::Case;
 
@@ -64,7 +65,7 @@ impl Renderer {
                 return;
             }
         };
-        let so = match texture::bind_unit_state(&self.gl, first) {
+        let so = match unitstate::bind_unit_state(&self.gl, first) {
             Ok(so) => so,
             Err(e) => {
                 for (ci, _) in &group {
@@ -134,7 +135,7 @@ impl Renderer {
                 }
             }
         }
-        texture::unbind_unit_state(&self.gl, first, so);
+        unitstate::unbind_unit_state(&self.gl, first, so);
         let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
         self.retire(cases, st, tex, group[0].0, sharing);
         if let Err(e) = texture::check(&self.gl, "drawing") {

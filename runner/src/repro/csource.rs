@@ -14,7 +14,7 @@
 use super::tokens::Tokens;
 use super::Subject;
 use shadowcheck_gl::paths::{self, GlInfo, LodForm, Plan, SamplerKind};
-use shadowcheck_gl::{shaders, texture, ContextApi, Platform};
+use shadowcheck_gl::{shaders, texture, unitstate, ContextApi, Platform};
 use shadowcheck_model::{Acceptance, ApiPath, Channel, Format, Profile, Swizzle, Target};
 use std::fmt::Write;
 
@@ -372,7 +372,7 @@ fn texture_fn(s: &Subject, compat: bool, tok: &mut Tokens) -> Result<String, Str
 }
 
 /// The swizzle (texture state), the seamless enable and the sampler object of the case, as
-/// `texture.rs` (`tex_params`, `bind_unit_state`) sets them.
+/// the worker sets them (`texture::tex_params`, `unitstate::bind_unit_state`).
 fn unit_state(st: &mut String, s: &Subject, tok: &mut Tokens) {
     let sm = &s.case.sampler;
     let target = tok.name(s.case.texture.target.gl());
@@ -412,7 +412,7 @@ fn unit_state(st: &mut String, s: &Subject, tok: &mut Tokens) {
         GLuint so;
         glGenSamplers(1, &so);"
         );
-        for p in texture::sampler_params(&s.case) {
+        for p in unitstate::sampler_params(&s.case) {
             let name = tok.name(p.pname);
             let _ = match p.value {
                 texture::ParamValue::Int(v) => {
