@@ -86,6 +86,16 @@ pub fn about(f: Fault) -> &'static str {
             "array layer rounded to nearest even under LINEAR (GL 4.6 §8.14.2 LINEAR: ⌊r + 1/2⌋)"
         }
         F::ColourDividedBy256 => "colour (R8) conversion c/256 instead of c/255 (eq. (2.1))",
+        F::SwizzleIgnored => "TEXTURE_SWIZZLE_* not applied to the depth / shadow result",
+        F::SwizzleBeforeCompare => {
+            "swizzle applied to the stored depth before the comparison, not to Cb = (Rt,0,0,1) (a translation layer swizzling the texel)"
+        }
+        F::SeamlessIgnored => {
+            "GL's TEXTURE_CUBE_MAP_SEAMLESS enable ignored (cube maps filtered per face)"
+        }
+        F::SamplerObjectIgnored => {
+            "a bound sampler object's compare / filter / wrap / LOD state ignored in favour of the texture's"
+        }
         #[allow(unreachable_patterns)]
         _ => "",
     }
