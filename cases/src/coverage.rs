@@ -45,6 +45,8 @@ pub struct Coverage {
     /// State cases per (API path standing for the context kind, pname): (cases, whether the pname
     /// exists there, i.e. is read back).
     pub state: BTreeMap<(ApiPath, StatePname), (usize, bool)>,
+    /// Per API path: tests per unit-state column ([`UNIT_STATE`]).
+    pub unit_state: BTreeMap<ApiPath, [usize; UNIT_STATE.len()]>,
 }
 
 /// (spec, API path, target, gather function).
@@ -94,6 +96,59 @@ const GATHER_PATHS: [(Spec, ApiPath); 2] = [
     (Spec::Gles32, ApiPath::Es300),
 ];
 
+/// One unit-state column: its name, whether a case falls in it, the API paths that have it.
+pub type UnitStateColumn = (&'static str, fn(&Case) -> bool, &'static [ApiPath]);
+
+/// The unit-state dimensions of issue 16: (column, whether a test falls in it, the API paths on
+/// which it exists). Swizzle: GL 3.3 / ES 3.0 shader lookups (a GLSL 1.30 shadow lookup has two
+/// readings, oracle `check`); the seamless enable: GL 3.2 cube lookups (ff, glsl130, core); the ES
+/// rule: filtered cube lookups of ES 3.x, always seamless; sampler objects: GL 3.3 / ES 3.0.
+pub const UNIT_STATE: [UnitStateColumn; 6] = {
+    use ApiPath::*;
+    [
+        (
+            "swizzle, shadow",
+            |c| {
+                c.sampler.swizzle.is_some()
+                    && c.sampler.in_effect().compare_mode != CompareMode::None
+            },
+            &[GlslCore, Es300],
+        ),
+        (
+            "swizzle, depth read",
+            |c| {
+                c.sampler.swizzle.is_some()
+                    && c.sampler.in_effect().compare_mode == CompareMode::None
+            },
+            &[Glsl130, GlslCore, Es300],
+        ),
+        (
+            "seamless off",
+            |c| c.sampler.seamless == Some(false),
+            &[FixedFunction, Glsl130, GlslCore],
+        ),
+        (
+            "seamless on",
+            |c| c.sampler.seamless == Some(true),
+            &[FixedFunction, Glsl130, GlslCore],
+        ),
+        (
+            "ES always seamless (filtered cube)",
+            |c| {
+                c.spec == Spec::Gles32
+                    && c.texture.target.is_cube()
+                    && c.sampler.in_effect().mag_filter == Filter::Linear
+            },
+            &[Es300],
+        ),
+        (
+            "sampler object",
+            |c| c.sampler.sampler_object.is_some(),
+            &[FixedFunction, Glsl120, Glsl130, GlslCore, Es300],
+        ),
+    ]
+};
+
 fn state_key(c: &Case) -> StateKey {
     let s = &c.sampler;
     (
@@ -137,6 +192,10 @@ impl Coverage {
                     *cov.gather
                         .entry((c.spec, api, c.texture.target, f))
                         .or_default() += 1;
+                }
+                let u = cov.unit_state.entry(api).or_default();
+                for (i, (_, used, _)) in UNIT_STATE.iter().enumerate() {
+                    u[i] += used(c) as usize;
                 }
             }
         }
@@ -329,7 +388,48 @@ impl Coverage {
             s.push('\n');
             s.push_str(&self.state_markdown());
         }
+        s.push('\n');
+        s.push_str(&self.unit_state_markdown());
         s
+    }
+
+    /// Tests per API path in each unit-state dimension ([`UNIT_STATE`]); `-` where the path has
+    /// no such state.
+    pub fn unit_state_markdown(&self) -> String {
+        let mut s = String::from("#### Unit state (issue 16): tests per API path\n\n");
+        let names: Vec<&str> = UNIT_STATE.iter().map(|u| u.0).collect();
+        let _ = writeln!(s, "| API path | {} |", names.join(" | "));
+        let _ = writeln!(s, "|---|{}", "---:|".repeat(names.len()));
+        for api in ApiPath::ALL {
+            let counts = self.unit_state.get(api).copied().unwrap_or_default();
+            let cells: Vec<String> = UNIT_STATE
+                .iter()
+                .zip(counts)
+                .map(|((_, _, paths), n)| {
+                    if paths.contains(api) {
+                        n.to_string()
+                    } else {
+                        "-".into()
+                    }
+                })
+                .collect();
+            let _ = writeln!(s, "| {api} | {} |", cells.join(" | "));
+        }
+        s
+    }
+
+    /// Unit-state cells a path allows with no test.
+    pub fn unit_state_missing(&self) -> Vec<(ApiPath, &'static str)> {
+        let mut out = Vec::new();
+        for api in ApiPath::ALL {
+            let counts = self.unit_state.get(api).copied().unwrap_or_default();
+            for ((name, _, paths), n) in UNIT_STATE.iter().zip(counts) {
+                if paths.contains(api) && n == 0 {
+                    out.push((*api, *name));
+                }
+            }
+        }
+        out
     }
 
     /// Checks per compiled sampler state on each API path: tests, distinct [`StateKey`]s, and

@@ -10,6 +10,7 @@ use super::draw::{BatchState, Pending, Renderer, CAPACITY};
 use super::paths::{Plan, ShaderKey};
 use super::shaders::{self, PARAM_TEXELS, PARAM_WIDTH};
 use super::texture;
+use super::unitstate;
 use glow::HasContext;
 use shadowcheck_model::Case;
 
@@ -61,6 +62,16 @@ impl Renderer {
                 for (ci, _) in &group {
                     st.fail(*ci, e.to_string());
                 }
+                return;
+            }
+        };
+        let so = match unitstate::bind_unit_state(&self.gl, first) {
+            Ok(so) => so,
+            Err(e) => {
+                for (ci, _) in &group {
+                    st.fail(*ci, e.to_string());
+                }
+                self.gl.delete_texture(tex);
                 return;
             }
         };
@@ -124,6 +135,7 @@ impl Renderer {
                 }
             }
         }
+        unitstate::unbind_unit_state(&self.gl, first, so);
         let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
         self.retire(cases, st, tex, group[0].0, sharing);
         if let Err(e) = texture::check(&self.gl, "drawing") {

@@ -12,6 +12,7 @@ use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
 use super::programs::{Compiled, ProgramCache};
 use super::shaders;
 use super::texture;
+use super::unitstate;
 use super::GlError;
 use glow::HasContext;
 use shadowcheck_model::{ApiPath, Case, Target, Texels};
@@ -426,9 +427,18 @@ impl Renderer {
                     break;
                 }
             };
+            let so = match unitstate::bind_unit_state(&self.gl, case) {
+                Ok(so) => so,
+                Err(e) => {
+                    self.gl.delete_texture(tex);
+                    failed = Some(e.to_string());
+                    break;
+                }
+            };
             self.reserve(st, 1);
             let slot = st.pending.len();
             let r = self.draw(plan, case.texture.target, slot);
+            unitstate::unbind_unit_state(&self.gl, case, so);
             if pi == 0 {
                 self.retire(cases, st, tex, ci, vec![ci]);
             } else {

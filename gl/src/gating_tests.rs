@@ -151,3 +151,44 @@ fn gather_needs_glsl_400_or_glsl_es_310_and_offsets_glsl_es_320() {
     let core45 = declared_capabilities(&info(ContextApi::Core, (4, 5), 450, &[]));
     assert!(matches!(core45.support(&g), Support::Run { .. }));
 }
+
+#[test]
+fn unit_state_features_follow_the_context_version() {
+    let plain = case(Spec::Gles32, ApiPath::Es300, Target::T2d, Format::D24);
+    let mut swizzle = plain.clone();
+    swizzle.sampler.swizzle = Some([Swizzle::One, Swizzle::Red, Swizzle::Zero, Swizzle::Red]);
+    let mut so = plain.clone();
+    so.sampler.sampler_object = Some(SamplerObject::from_sampler(&so.sampler));
+    let mut seamless = case(Spec::Gl46, ApiPath::GlslCore, Target::Cube, Format::D24);
+    seamless.sampler.seamless = Some(true);
+    // ES 3.0 has the swizzle and sampler objects, and no seamless enable (always seamless).
+    let es30 = declared_capabilities(&info(ContextApi::Es3, (3, 0), 300, &[]));
+    assert!(matches!(es30.support(&swizzle), Support::Run { .. }));
+    assert!(matches!(es30.support(&so), Support::Run { .. }));
+    let es_seamless = Case {
+        spec: Spec::Gles32,
+        api: vec![ApiPath::Es300],
+        ..seamless.clone()
+    };
+    assert!(skip_reason(es30.support(&es_seamless)).contains("seamless_toggle"));
+    // A GL 2.1 context has none of them; GL 3.2 the enable only; GL 3.3 all three.
+    let (mut sw_gl, mut so_gl) = (swizzle.clone(), so.clone());
+    for c in [&mut sw_gl, &mut so_gl] {
+        c.spec = Spec::Gl46;
+        c.api = vec![ApiPath::Glsl120];
+    }
+    let gl21 = declared_capabilities(&info(ContextApi::Compat, (2, 1), 120, &[]));
+    assert!(skip_reason(gl21.support(&sw_gl)).contains("swizzle"));
+    assert!(skip_reason(gl21.support(&so_gl)).contains("sampler_objects"));
+    let gl32 = declared_capabilities(&info(ContextApi::Core, (3, 2), 150, &[]));
+    for c in [&mut sw_gl, &mut so_gl] {
+        c.api = vec![ApiPath::GlslCore];
+    }
+    assert!(matches!(gl32.support(&seamless), Support::Run { .. }));
+    assert!(skip_reason(gl32.support(&sw_gl)).contains("swizzle"));
+    assert!(skip_reason(gl32.support(&so_gl)).contains("sampler_objects"));
+    let gl33 = declared_capabilities(&info(ContextApi::Core, (3, 3), 330, &[]));
+    for c in [&sw_gl, &so_gl, &seamless] {
+        assert!(matches!(gl33.support(c), Support::Run { .. }), "{c:?}");
+    }
+}

@@ -26,6 +26,7 @@ pub mod state;
 #[cfg(test)]
 mod test_case;
 pub mod texture;
+pub mod unitstate;
 pub mod worker;
 
 pub use names::{BackendName, ContextApi, Driver, Platform};

@@ -395,6 +395,18 @@ pub fn tex_params(info: &GlInfo, case: &Case) -> Vec<TexParam> {
             Float(f),
         );
     }
+    if let Some(sw) = s.swizzle {
+        // One call per component (the same state as TEXTURE_SWIZZLE_RGBA, GL 4.6 §8.10).
+        let names = [
+            (glow::TEXTURE_SWIZZLE_R, "TEXTURE_SWIZZLE_R"),
+            (glow::TEXTURE_SWIZZLE_G, "TEXTURE_SWIZZLE_G"),
+            (glow::TEXTURE_SWIZZLE_B, "TEXTURE_SWIZZLE_B"),
+            (glow::TEXTURE_SWIZZLE_A, "TEXTURE_SWIZZLE_A"),
+        ];
+        for ((pname, name), c) in names.into_iter().zip(sw) {
+            push(pname, name, Int(c.gl()));
+        }
+    }
     v
 }
 

@@ -380,6 +380,9 @@ pub fn declared_capabilities(i: &GlInfo) -> Capabilities {
                     "gather" => i.gather(),
                     // TexParameter / GetTexParameter exist in every context.
                     "tex_parameter" => true,
+                    "swizzle" => i.swizzle(),
+                    "seamless_toggle" => i.seamless_toggle(),
+                    "sampler_objects" => i.sampler_objects(),
                     _ => false,
                 })
                 .map(|f| f.key.to_string())

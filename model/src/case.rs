@@ -91,6 +91,89 @@ pub struct Sampler {
     /// TEXTURE_COMPARE_FAIL_VALUE_ARB (arb_ambient) or SHADOW_AMBIENT_SGIX (sgix_ambient).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fail_value: Option<f32>,
+    /// TEXTURE_SWIZZLE_R/G/B/A (texture state, GL 3.3+ / ES 3.0+), applied to the base colour Cb
+    /// (GL 4.6 §15.2.1). `None`: the initial value (RED, GREEN, BLUE, ALPHA).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub swizzle: Option<[Swizzle; 4]>,
+    /// The context's TEXTURE_CUBE_MAP_SEAMLESS enable (GL 3.2+, §8.13.1) while the lookup runs.
+    /// `None`: the context default (GL: disabled; ES 3.x: always seamless, no such enable).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seamless: Option<bool>,
+    /// The state of a sampler object bound to the texture unit (GL 3.3+ / ES 3.0+, §8.2). Its
+    /// state is used instead of the texture's sampling state above (§8.17.1); `None`: no sampler
+    /// object bound (the texture's own state is used). Kept beside the texture state so that the
+    /// pair is one value wherever "the sampling state of a case" is compared.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sampler_object: Option<SamplerObject>,
+}
+
+/// The parameters of a sampler object (GL 4.6 Table 23.18 / ES 3.2 §8.2): everything but
+/// DEPTH_STENCIL_TEXTURE_MODE, DEPTH_TEXTURE_MODE, the swizzle, TEXTURE_BASE_LEVEL and
+/// TEXTURE_MAX_LEVEL, which stay texture state.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SamplerObject {
+    pub compare_mode: CompareMode,
+    pub compare_func: CompareFunc,
+    pub min_filter: Filter,
+    pub mag_filter: Filter,
+    pub wrap_s: Wrap,
+    pub wrap_t: Wrap,
+    pub wrap_r: Wrap,
+    pub border: [f32; 4],
+    #[serde(default = "default_min_lod")]
+    pub min_lod: f32,
+    #[serde(default = "default_max_lod")]
+    pub max_lod: f32,
+    /// TEXTURE_LOD_BIAS (not in ES).
+    #[serde(default)]
+    pub lod_bias: f32,
+}
+
+impl Sampler {
+    /// The sampling parameters a lookup uses: with a sampler object bound, its parameters replace
+    /// the texture's (GL 4.6 §8.17.1: "the sampling state for that unit is taken from the sampler
+    /// object"); the rest (DEPTH_TEXTURE_MODE, DEPTH_STENCIL_TEXTURE_MODE, swizzle, MAX_LEVEL, fail
+    /// value) stays the texture's. For backends choosing a sampler type or declaring a feature;
+    /// the oracle and the soft unit resolve the two states on their own.
+    pub fn in_effect(&self) -> std::borrow::Cow<'_, Sampler> {
+        let Some(o) = &self.sampler_object else {
+            return std::borrow::Cow::Borrowed(self);
+        };
+        std::borrow::Cow::Owned(Sampler {
+            compare_mode: o.compare_mode,
+            compare_func: o.compare_func,
+            min_filter: o.min_filter,
+            mag_filter: o.mag_filter,
+            wrap_s: o.wrap_s,
+            wrap_t: o.wrap_t,
+            wrap_r: o.wrap_r,
+            border: o.border,
+            min_lod: o.min_lod,
+            max_lod: o.max_lod,
+            lod_bias: o.lod_bias,
+            sampler_object: None,
+            ..self.clone()
+        })
+    }
+}
+
+impl SamplerObject {
+    /// A sampler object holding `s`'s sampler-object parameters.
+    pub fn from_sampler(s: &Sampler) -> SamplerObject {
+        SamplerObject {
+            compare_mode: s.compare_mode,
+            compare_func: s.compare_func,
+            min_filter: s.min_filter,
+            mag_filter: s.mag_filter,
+            wrap_s: s.wrap_s,
+            wrap_t: s.wrap_t,
+            wrap_r: s.wrap_r,
+            border: s.border,
+            min_lod: s.min_lod,
+            max_lod: s.max_lod,
+            lod_bias: s.lod_bias,
+        }
+    }
 }
 
 fn default_min_lod() -> f32 {
@@ -198,6 +281,9 @@ impl Sampler {
             lod_bias: 0.0,
             max_level: None,
             fail_value: None,
+            swizzle: None,
+            seamless: None,
+            sampler_object: None,
         }
     }
 }

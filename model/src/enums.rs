@@ -403,3 +403,42 @@ impl Channel {
         Channel::GATHER.iter().position(|&c| c == self)
     }
 }
+
+keyed_enum! {
+    /// TEXTURE_SWIZZLE_R/G/B/A values (GL 4.6 §8.10, §15.2.1).
+    Swizzle {
+        Red = "red",
+        Green = "green",
+        Blue = "blue",
+        Alpha = "alpha",
+        Zero = "zero",
+        One = "one",
+    }
+}
+
+impl Swizzle {
+    pub fn gl(self) -> u32 {
+        match self {
+            Swizzle::Red => 0x1903,
+            Swizzle::Green => 0x1904,
+            Swizzle::Blue => 0x1905,
+            Swizzle::Alpha => 0x1906,
+            Swizzle::Zero => 0,
+            Swizzle::One => 1,
+        }
+    }
+    /// The initial TEXTURE_SWIZZLE_RGBA (RED, GREEN, BLUE, ALPHA).
+    pub const IDENTITY: [Swizzle; 4] =
+        [Swizzle::Red, Swizzle::Green, Swizzle::Blue, Swizzle::Alpha];
+    /// GL 4.6 §15.2.1: one component of Cs from the base colour `cb` (Cs[i] = Cb[0..3], 0 or 1).
+    pub fn pick<T: Copy>(self, cb: [T; 4], zero: T, one: T) -> T {
+        match self {
+            Swizzle::Red => cb[0],
+            Swizzle::Green => cb[1],
+            Swizzle::Blue => cb[2],
+            Swizzle::Alpha => cb[3],
+            Swizzle::Zero => zero,
+            Swizzle::One => one,
+        }
+    }
+}

@@ -215,6 +215,25 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
             format!("{v} is not finite"),
         ));
     }
+    if let Some(o) = &s.sampler_object {
+        let floats = [
+            ("min_lod", o.min_lod),
+            ("max_lod", o.max_lod),
+            ("lod_bias", o.lod_bias),
+        ];
+        let border = o.border.iter().enumerate().map(|(j, v)| (j, *v));
+        let named = floats.into_iter().map(|(n, v)| (n.to_string(), v));
+        let all = named.chain(border.map(|(j, v)| (format!("border[{j}]"), v)));
+        for (name, v) in all {
+            if !v.is_finite() {
+                return Err(invalid(
+                    case,
+                    format!("sampler.sampler_object.{name}"),
+                    format!("{v} is not finite"),
+                ));
+            }
+        }
+    }
     let l = &case.lookup;
     for (name, v) in [("lod", l.lod), ("bias", l.bias), ("layer", l.layer)] {
         if !v.is_finite() {

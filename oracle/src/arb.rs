@@ -52,6 +52,9 @@ pub fn rules(spec: Spec) -> Rules {
         incomplete: Incomplete::Legacy0001,
         es_depth_completeness: false,
         seamless_cube: false,
+        seamless_enable: None,
+        swizzle: None,
+        sampler_objects: None,
         lod_bias: true,
         ambient_on_pass: false,
         fail_value_cite: if ambient {

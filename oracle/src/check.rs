@@ -55,8 +55,58 @@ fn not_applicable(case: &Case, rules: &Rules, why: String) -> OracleError {
     }
 }
 
+/// API paths whose result the texture swizzle is modelled on: the GLSL 1.30+ and GLSL ES 3.00
+/// shader lookups of GL 4.6 §15.2.1 / §11.1.3.5 (ES 3.2 §14.2.1).
+pub const SWIZZLE_PATHS: &[ApiPath] = &[ApiPath::Glsl130, ApiPath::GlslCore, ApiPath::Es300];
+
+/// Whether the state that issue 16 adds (swizzle, seamless enable, sampler object) exists under
+/// the spec and on the case's paths: a case setting state its spec does not have is not applicable.
+fn check_lookup_state(case: &Case, rules: &Rules) -> Result<(), OracleError> {
+    let s = &case.sampler;
+    if s.swizzle.is_some() {
+        if rules.swizzle.is_none() {
+            return Err(not_applicable(
+                case,
+                rules,
+                format!("{} has no TEXTURE_SWIZZLE_* (GL 3.3 / ES 3.0)", rules.doc),
+            ));
+        }
+        if let Some(api) = case.api.iter().find(|a| !SWIZZLE_PATHS.contains(a)) {
+            return Err(not_applicable(
+                case,
+                rules,
+                format!("the swizzle is modelled on GLSL 1.30+ / ES 3.00 shader lookups (GL 4.6 §15.2.1), not on `{api}`"),
+            ));
+        }
+        let shadow = s.in_effect().compare_mode != CompareMode::None;
+        if shadow && case.api.contains(&ApiPath::Glsl130) {
+            return Err(not_applicable(
+                case,
+                rules,
+                "a swizzled GLSL 1.30 shadow lookup in a compatibility context: the two readings of contradiction `compat-float-alpha` give Cb = (Rt,0,0,1) (§11.1.3.5) or Cb by DEPTH_TEXTURE_MODE (§8.23.1, Table 16.1: LUMINANCE (r,r,r,1) by default), whose swizzled Cs[0] differ".into(),
+            ));
+        }
+    }
+    if s.seamless.is_some() && rules.seamless_enable.is_none() {
+        return Err(not_applicable(
+            case,
+            rules,
+            format!("{} has no TEXTURE_CUBE_MAP_SEAMLESS enable (ES 3.x cube maps are always seamless, §8.13.1)", rules.doc),
+        ));
+    }
+    if s.sampler_object.is_some() && rules.sampler_objects.is_none() {
+        return Err(not_applicable(
+            case,
+            rules,
+            format!("{} has no sampler objects (GL 3.3 / ES 3.0)", rules.doc),
+        ));
+    }
+    Ok(())
+}
+
 /// Checks state legality and applicability; Ok when the lookup is defined.
 pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
+    check_lookup_state(case, rules)?;
     let s = &case.sampler;
     let t = &case.texture;
     let ctxs: Vec<Ctx> = case.api.iter().map(|a| ctx_of(*a)).collect();

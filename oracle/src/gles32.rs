@@ -57,6 +57,9 @@ pub fn rules() -> Rules {
         es_depth_completeness: true,
         // §8.13.1 footnote: cube map filtering is always seamless in ES 3.x.
         seamless_cube: true,
+        seamless_enable: None,
+        swizzle: Some("ES 3.2 §11.1.3.5 / §14.2.1 (as GL 4.6 §15.2.1): Cb = (Rt, 0, 0, 1), then TEXTURE_SWIZZLE_R/G/B/A, then only Cs[0] is returned for a shadow sampler"),
+        sampler_objects: Some("ES 3.2 §8.17.1 / §8.2 (as GL 4.6): the sampling state of a unit with a bound sampler object is taken from the sampler object; state not in the sampler state table remains in the texture object"),
         lod_bias: false,
         ambient_on_pass: false,
         fail_value_cite: None,

@@ -2,7 +2,7 @@
 
 use crate::rules::{Incomplete, Rules};
 use crate::sample::Kind;
-use shadowcheck_model::{ApiPath, Channel, DepthTextureMode};
+use shadowcheck_model::{ApiPath, Channel, DepthTextureMode, Swizzle};
 use Channel::{One, ROrZero, Unused, Zero, R};
 
 /// The DEPTH_TEXTURE_MODE in effect: the sampler's, or the initial value (LUMINANCE: ARB_depth_texture
@@ -150,4 +150,17 @@ pub fn layout(
             }
         }
     }
+}
+
+/// The texture swizzle applied to the layout `l` of a complete lookup (GL 4.6 §15.2.1; ES 3.2
+/// §14.2.1): Cs[i] is Cb[0], Cb[1], Cb[2], Ab, 0 or 1 by TEXTURE_SWIZZLE_R/G/B/A. A float shadow
+/// lookup returns Cs[0] only (§11.1.3.5: "swizzling of Cb is then performed as described above,
+/// but only the first component Cs[0] is returned to the shader"), its Cb being (Rt, 0, 0, 1).
+/// Only the paths of `check::SWIZZLE_PATHS` reach here.
+pub fn swizzled(l: [Channel; 4], sw: [Swizzle; 4]) -> [Channel; 4] {
+    if l[1..] == [Unused; 3] {
+        let cs0 = sw[0].pick([l[0], Zero, Zero, One], Zero, One);
+        return [cs0, Unused, Unused, Unused];
+    }
+    sw.map(|c| c.pick(l, Zero, One))
 }

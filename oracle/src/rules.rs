@@ -89,6 +89,14 @@ pub struct Rules {
     pub es_depth_completeness: bool,
     /// Cube maps are always seamless (ES 3.x); GL 4.6's TEXTURE_CUBE_MAP_SEAMLESS starts disabled.
     pub seamless_cube: bool,
+    /// TEXTURE_CUBE_MAP_SEAMLESS can be enabled and disabled (GL 3.2+): the sentence; `None`
+    /// where the spec has no such enable (a case setting it is not applicable).
+    pub seamless_enable: Option<&'static str>,
+    /// TEXTURE_SWIZZLE_R/G/B/A exist (GL 3.3+, ES 3.0+): the sentence; `None`: no swizzle.
+    pub swizzle: Option<&'static str>,
+    /// Sampler objects exist (GL 3.3+, ES 3.0+): the sentence saying their state is used instead
+    /// of the texture's; `None`: no sampler objects.
+    pub sampler_objects: Option<&'static str>,
     /// TEXTURE_LOD_BIAS exists (not in ES).
     pub lod_bias: bool,
     /// The fail/ambient value replaces 0.0 (ARB_shadow_ambient, SGIX_shadow_ambient): the citation of

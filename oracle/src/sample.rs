@@ -379,7 +379,18 @@ impl TexelCtx<'_> {
                     add_to(&mut strict, self.table(exact_ord));
                 }
                 let mut poss = vec![self.two(strict); PROFILES.len()];
+                if let (Key::Corner { .. }, Some(_)) = (key, src.undefined) {
+                    // §8.13.1 leaves the fourth corner texel to the implementation ("free to
+                    // construct this fourth texel in another way"); built from the three texels'
+                    // comparison results (their average, the recommended method applied to the
+                    // values the filter combines), it holds any value between a fail and a pass.
+                    let o = self.open_outcome();
+                    poss = vec![Poss { two: false, ..o }; PROFILES.len()];
+                }
                 for (i, p) in PROFILES.iter().enumerate() {
+                    if matches!(key, Key::Corner { .. }) && src.undefined.is_some() {
+                        continue;
+                    }
                     if let Some(bits) = p.ref_bits {
                         let mut o = strict;
                         // 0 and 1 survive every fixed-point quantization exactly: an exact tie there

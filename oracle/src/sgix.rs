@@ -81,6 +81,9 @@ pub fn rules(spec: Spec) -> Rules {
         incomplete: Incomplete::Legacy0001,
         es_depth_completeness: false,
         seamless_cube: false,
+        seamless_enable: None,
+        swizzle: None,
+        sampler_objects: None,
         // Table 3.8 as updated by SGIX_shadow lists no TEXTURE_LOD_BIAS (EXT_texture_lod_bias, GL 1.4):
         // a case that sets it is outside this text (`outside_table_3_8`).
         lod_bias: false,

@@ -43,7 +43,7 @@ pub const FEATURES: &[Feature] = &[
     Feature {
         key: "lod_bias",
         what: "TEXTURE_LOD_BIAS",
-        used_by: |c| c.sampler.lod_bias != 0.0,
+        used_by: |c| c.sampler.in_effect().lod_bias != 0.0 || c.sampler.lod_bias != 0.0,
     },
     Feature {
         key: "fail_value",
@@ -71,6 +71,21 @@ pub const FEATURES: &[Feature] = &[
         // No lookup case needs it; state cases need it (`Capabilities::support_state`).
         used_by: |_| false,
     },
+    Feature {
+        key: "swizzle",
+        what: "TEXTURE_SWIZZLE_R/G/B/A (OpenGL 3.3, OpenGL ES 3.0, ARB_texture_swizzle)",
+        used_by: |c| c.sampler.swizzle.is_some(),
+    },
+    Feature {
+        key: "seamless_toggle",
+        what: "Enable / Disable(TEXTURE_CUBE_MAP_SEAMLESS) (OpenGL 3.2, ARB_seamless_cube_map)",
+        used_by: |c| c.sampler.seamless.is_some(),
+    },
+    Feature {
+        key: "sampler_objects",
+        what: "sampler objects (OpenGL 3.3, OpenGL ES 3.0, ARB_sampler_objects)",
+        used_by: |c| c.sampler.sampler_object.is_some(),
+    },
 ];
 
 /// The feature an implementation lists to be sent state cases.
@@ -79,9 +94,12 @@ pub const TEX_PARAMETER: &str = "tex_parameter";
 /// Whether a case sets TEXTURE_BORDER_COLOR or wraps a coordinate its target uses with
 /// CLAMP_TO_BORDER (neither exists in OpenGL ES 3.0: ES 3.2 §8.10 added both).
 fn uses_border(c: &Case) -> bool {
-    use shadowcheck_model::Wrap;
-    let s = &c.sampler;
     let t = c.texture.target;
+    sets_border(&c.sampler, t) || sets_border(&c.sampler.in_effect(), t)
+}
+
+fn sets_border(s: &shadowcheck_model::Sampler, t: shadowcheck_model::Target) -> bool {
+    use shadowcheck_model::Wrap;
     let used = [
         (s.wrap_s, true),
         (s.wrap_t, t.dims() == 2),

@@ -136,6 +136,16 @@ faults! {
     GatherIgnoresRef = "gather-ignores-ref",
     /// Gather reads the level the filters' λ selects instead of level base.
     GatherUsesLodLevel = "gather-uses-lod-level",
+    // --- unit state: swizzle, seamless enable, sampler objects (issue 16) ---
+    /// TEXTURE_SWIZZLE_* ignored (the unswizzled base colour returned).
+    SwizzleIgnored = "swizzle-ignored",
+    /// The swizzle applied to the stored depth before the comparison (Dref compared with Cs[0]
+    /// of (Dt, 0, 0, 1)) instead of to the comparison result Cb = (Rt, 0, 0, 1).
+    SwizzleBeforeCompare = "swizzle-before-compare",
+    /// GL's TEXTURE_CUBE_MAP_SEAMLESS enable ignored (cube maps filtered per face).
+    SeamlessIgnored = "seamless-ignored",
+    /// A bound sampler object's state ignored in favour of the texture's own parameters.
+    SamplerObjectIgnored = "sampler-object-ignored",
     // --- storage ---
     /// Unorm conversion c / 2^b instead of c / (2^b - 1).
     UnormDividedByPowerOfTwo = "unorm-divided-by-power-of-two",

@@ -203,6 +203,7 @@ impl PreparedTexture {
     pub(crate) fn resolve(&self, st: &SamplerState, v: f32, dref: f32) -> f32 {
         match st.kind {
             Kind::Compare => {
+                let v = st.swizzled_dt.unwrap_or(v);
                 let dt = if st.clamp.dt { clamp01(v) } else { v };
                 if passes(st.op, dref, dt, st.faults) {
                     st.pass

@@ -29,6 +29,7 @@ pub mod lod;
 pub mod sampler;
 pub mod storage;
 pub mod tex_param;
+pub mod unitstate;
 pub mod witness;
 pub mod wrap;
 
@@ -163,7 +164,8 @@ impl SoftUnit {
         case: &Case,
         tex: &PreparedTexture,
     ) -> Result<SamplerState, SoftError> {
-        SamplerState::new(self.spec, &case.sampler, tex, self.faults)
+        let s = unitstate::effective(self.spec, case, self.faults)?;
+        SamplerState::new(self.spec, &s, tex, self.faults)
     }
 
     /// The lookup coordinates of `case` as f32, after the projective divide (s, t, (r) and Dref
@@ -238,6 +240,14 @@ impl SoftUnit {
             });
         }
         let s = &case.sampler;
+        if s.swizzle.is_some()
+            && !matches!(api, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300)
+        {
+            return Err(SoftError::Undefined {
+                spec: self.spec,
+                what: "the texture swizzle on a path other than GLSL 1.30+ / ES 3.00",
+            });
+        }
         if api == ApiPath::GlslCore && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::Clamp) {
             // CLAMP exists only in the compatibility profile.
             return Err(SoftError::Wrap {
@@ -366,7 +376,8 @@ impl SoftUnit {
         shadowcheck_model::validate::validate(case)
             .map_err(|e| SoftError::Invalid(e.to_string()))?;
         tex.prepare_into(&case.texture, self.faults)?;
-        let st = SamplerState::new(self.spec, &case.sampler, tex, self.faults)?;
+        let s = unitstate::effective(self.spec, case, self.faults)?;
+        let st = SamplerState::new(self.spec, &s, tex, self.faults)?;
         let coords = self.coords(case.texture.target, &case.lookup)?;
         Ok((st, coords))
     }
@@ -400,7 +411,14 @@ impl SoftUnit {
         if !st.complete {
             return Ok(layout::INCOMPLETE);
         }
-        Ok(lay.apply(tex.lookup(st, c)))
+        let rgba = lay.apply(tex.lookup(st, c));
+        Ok(unitstate::swizzle(
+            &case.sampler,
+            api,
+            st.kind,
+            rgba,
+            self.faults,
+        ))
     }
 }
 

@@ -47,6 +47,8 @@ pub struct SamplerState {
     pub faults: Faults,
     /// Set only by [`Fault::StencilCompared`]: stencil indices go through the comparison.
     pub stencil_compare: bool,
+    /// Set only by [`Fault::SwizzleBeforeCompare`]: the value every texel compares as.
+    pub swizzled_dt: Option<f32>,
 }
 
 fn undefined(spec: Spec, what: &'static str) -> SoftError {
@@ -254,10 +256,11 @@ impl SamplerState {
                 min_filter: s.min_filter,
                 mag_filter: s.mag_filter,
             },
-            seamless: spec == Spec::Gles32 && target.is_cube(),
+            seamless: target.is_cube() && crate::unitstate::seamless(spec, s, faults),
             complete,
             faults,
             stencil_compare,
+            swizzled_dt: crate::unitstate::pre_compare_dt(s, faults),
         })
     }
 }

@@ -332,6 +332,49 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
             c.sampler.compare_mode = CompareMode::None;
             c
         }
+        Fault::SwizzleIgnored => {
+            // Passes (r = 1); swizzle R = ZERO: Cs[0] = 0 (GL 4.6 §15.2.1).
+            let mut c = gl(vec![65535], 1, C::Lequal);
+            c.sampler.swizzle =
+                Some([Swizzle::Zero, Swizzle::Green, Swizzle::Blue, Swizzle::Alpha]);
+            c
+        }
+        Fault::SwizzleBeforeCompare => {
+            // GEQUAL, Dt = 1 fails at Dref 0.5: r = 0, and R = ZERO gives Cs[0] = 0 anyway; the
+            // faulty unit compares 0.5 >= 0 (ZERO applied to Dt) and passes.
+            let mut c = gl(vec![65535], 1, C::Gequal);
+            c.sampler.swizzle =
+                Some([Swizzle::Zero, Swizzle::Green, Swizzle::Blue, Swizzle::Alpha]);
+            c
+        }
+        Fault::SeamlessIgnored => {
+            // As `seamless_cube_edge_in_es`: LINEAR near the +X/+Z edge with the GL enable on:
+            // column i0 comes from +Z and passes, r = 0.4; per-face filtering reads +X only, r = 0.
+            let mut texels = vec![0; 24];
+            texels[16..20].copy_from_slice(&[65535; 4]);
+            let mut c = case(Spec::Gl46, 2, 2, vec![], C::Lequal);
+            c.texture.target = Target::Cube;
+            c.texture.levels[0] = Level {
+                width: 2,
+                height: 2,
+                layers: 6,
+                depth: Texels::Unorm(texels),
+                stencil: None,
+            };
+            c.sampler.min_filter = Filter::Linear;
+            c.sampler.mag_filter = Filter::Linear;
+            c.sampler.seamless = Some(true);
+            c.lookup.coord = [1.0, 0.0, 0.9, 1.0];
+            c
+        }
+        Fault::SamplerObjectIgnored => {
+            // Texture LEQUAL passes (r = 1); the bound sampler object's GREATER fails (r = 0).
+            let mut c = gl(vec![65535], 1, C::Lequal);
+            let mut o = SamplerObject::from_sampler(&c.sampler);
+            o.compare_func = C::Greater;
+            c.sampler.sampler_object = Some(o);
+            c
+        }
         Fault::UnormDividedByPowerOfTwo => {
             let mut c = gl(vec![65535], 1, C::Lequal);
             c.lookup.dref = 1.0;
@@ -387,5 +430,10 @@ mod tests {
         assert_eq!(r(Fault::GatherUsesLodLevel), [0.0; 4]); // level base, not λ's level 1
         assert_eq!(r(Fault::OffsetInBaseLevelTexels)[0], 0.0);
         assert_eq!(r(Fault::OffsetAfterWrap)[0], 0.0);
+        // Swizzle, seamless enable, sampler object (GL 4.6 §15.2.1, §8.13.1, §8.17.1).
+        assert_eq!(r(Fault::SwizzleIgnored)[0], 0.0);
+        assert_eq!(r(Fault::SwizzleBeforeCompare)[0], 0.0);
+        assert!((r(Fault::SeamlessIgnored)[0] - 0.4).abs() < 1e-6);
+        assert_eq!(r(Fault::SamplerObjectIgnored)[0], 0.0);
     }
 }

@@ -100,6 +100,9 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             .extend(families::mixfilter(d))
             .extend(families::incomplete(d))
             .extend(families::proj(d))
+            .extend(families::swizzle(d))
+            .extend(families::seamless(d))
+            .extend(families::sampler_object(d))
             .extend(offset::offset(d))
             .extend(gather::gather(d));
     }
@@ -114,7 +117,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
         )
         .filter(
             "TEXTURE_LOD_BIAS does not exist in ES or SGIX-era GL (ES 3.2 §8.14.1; INVALID_ENUM)",
-            |x| d.lod_bias || x.sampler.lod_bias == 0.0,
+            |x| d.lod_bias || (x.sampler.lod_bias == 0.0 && x.sampler.in_effect().lod_bias == 0.0),
         )
         .filter(
             "no shader bias argument on this spec's shadow lookups (shadow2DEXT, fixed function)",

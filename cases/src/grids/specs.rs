@@ -171,7 +171,24 @@ pub fn filter_allowed(target: Target, filter: Filter) -> bool {
 ///   compatibility profile, so cases setting them leave out `core`; stencil texturing needs an
 ///   integer sampler (GLSL 4.30+), so it is `core` only.
 /// - ES 3.x: GLSL ES 3.00.
+/// - A case setting the texture swizzle keeps GLSL 1.30 (compare NONE only), core and GLSL ES 3.00
+///   (the swizzle is modelled on the shader lookups of GL 4.6 §15.2.1).
 pub fn apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
+    let mut v = state_apis(spec, target, sampler);
+    if sampler.swizzle.is_some() {
+        // The swizzle is modelled on the GLSL 1.30+ / ES 3.00 shader lookups (GL 4.6 §15.2.1);
+        // a swizzled GLSL 1.30 shadow lookup has two readings (oracle `check`), so not there.
+        let shadow = sampler.in_effect().compare_mode != CompareMode::None;
+        v.retain(|a| match a {
+            ApiPath::Glsl130 => !shadow,
+            ApiPath::GlslCore | ApiPath::Es300 => true,
+            _ => false,
+        });
+    }
+    v
+}
+
+fn state_apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
     use ApiPath as A;
     let legacy_target = matches!(target, T::T1d | T::T2d | T::Rect);
     let stencil = sampler.depth_stencil_mode == Some(DepthStencilMode::StencilIndex);

@@ -82,6 +82,29 @@ impl GlInfo {
             self.at_least(4, 3) || self.has_ext("GL_ARB_stencil_texturing")
         }
     }
+    /// TEXTURE_SWIZZLE_*: GL 3.3 or ARB/EXT_texture_swizzle; ES 3.0.
+    pub fn swizzle(&self) -> bool {
+        if self.es {
+            self.at_least(3, 0)
+        } else {
+            self.at_least(3, 3)
+                || self.has_ext("GL_ARB_texture_swizzle")
+                || self.has_ext("GL_EXT_texture_swizzle")
+        }
+    }
+    /// Enable / Disable(TEXTURE_CUBE_MAP_SEAMLESS): GL 3.2 or ARB_seamless_cube_map; ES has
+    /// no such enable (always seamless).
+    pub fn seamless_toggle(&self) -> bool {
+        !self.es && (self.at_least(3, 2) || self.has_ext("GL_ARB_seamless_cube_map"))
+    }
+    /// Sampler objects: GL 3.3 or ARB_sampler_objects; ES 3.0.
+    pub fn sampler_objects(&self) -> bool {
+        if self.es {
+            self.at_least(3, 0)
+        } else {
+            self.at_least(3, 3) || self.has_ext("GL_ARB_sampler_objects")
+        }
+    }
     /// 1D and 2D array textures on desktop GL: 3.0 or EXT_texture_array.
     fn texture_array(&self) -> bool {
         self.at_least(3, 0) || self.has_ext("GL_EXT_texture_array")
@@ -214,7 +237,7 @@ pub fn sampler_kind(case: &Case) -> SamplerKind {
     let f = case.texture.format;
     if f.has_stencil() && case.sampler.depth_stencil_mode == Some(DepthStencilMode::StencilIndex) {
         SamplerKind::Uint
-    } else if f.is_depth() && case.sampler.compare_mode == CompareMode::Compare {
+    } else if f.is_depth() && case.sampler.in_effect().compare_mode == CompareMode::Compare {
         SamplerKind::Shadow
     } else {
         SamplerKind::Float
@@ -223,7 +246,7 @@ pub fn sampler_kind(case: &Case) -> SamplerKind {
 
 /// The `c` of GL 4.6 §8.14 (mag/min switch-over point).
 fn switch_over(case: &Case) -> f64 {
-    let s = &case.sampler;
+    let s = case.sampler.in_effect();
     if s.mag_filter == Filter::Linear
         && matches!(
             s.min_filter,
@@ -239,7 +262,7 @@ fn switch_over(case: &Case) -> f64 {
 /// Is the fixed-function lookup (constant coordinates: lambda_base = -inf, so lambda' = min_lod)
 /// certain to give the same filter and level as the case's lambda?
 fn constant_coords_equivalent(case: &Case) -> bool {
-    let s = &case.sampler;
+    let s = case.sampler.in_effect();
     let f32r = |v: f64| v as f32 as f64;
     let lam = (f32r(case.lookup.lod) + s.lod_bias as f64 + f32r(case.lookup.bias))
         .clamp(s.min_lod as f64, (s.max_lod as f64).max(s.min_lod as f64));

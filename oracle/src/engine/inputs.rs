@@ -6,12 +6,97 @@ use super::Eval;
 use crate::rules::{RefClamp, Rules};
 use crate::sample::{Kind, TexelCtx};
 use crate::unorm::{f32_candidates, f32r, Exact};
-use shadowcheck_model::{Case, CompareFunc, CompareMode, DepthStencilMode, Spec};
+use shadowcheck_model::{Case, CompareFunc, CompareMode, DepthStencilMode, Sampler, Spec};
+use std::borrow::Cow;
 
 /// The coordinates as the API passes them (f32) and the projective divisor q (1 when not projective).
 pub(super) struct Coords {
     pub c: [f64; 4],
     pub q: f64,
+}
+
+/// The state the lookup uses (the "effective" state): with a sampler object bound, its sampling
+/// parameters replace the texture's (GL 4.6 §8.17.1, ES 3.2 §8.17.1), while DEPTH_TEXTURE_MODE,
+/// DEPTH_STENCIL_TEXTURE_MODE, the swizzle, TEXTURE_MAX_LEVEL and the fail value remain texture
+/// state (§8.2: not in Table 23.18); and the cube seamless rule of the context (§8.13.1: the
+/// enable when the case sets it, otherwise the spec's default).
+pub(super) fn effective<'a>(e: &mut Eval, rules: Rules, case: &'a Case) -> (Cow<'a, Case>, Rules) {
+    let mut rules = rules;
+    if let (Some(on), Some(cite)) = (case.sampler.seamless, rules.seamless_enable) {
+        rules.seamless_cube = on;
+        if case.texture.target.is_cube() {
+            let what = if on { "enabled" } else { "disabled" };
+            e.step(format!("TEXTURE_CUBE_MAP_SEAMLESS {what}"), cite);
+        }
+    }
+    let (Some(o), Some(cite)) = (&case.sampler.sampler_object, rules.sampler_objects) else {
+        return (Cow::Borrowed(case), rules);
+    };
+    let t = &case.sampler;
+    let s = Sampler {
+        compare_mode: o.compare_mode,
+        compare_func: o.compare_func,
+        min_filter: o.min_filter,
+        mag_filter: o.mag_filter,
+        wrap_s: o.wrap_s,
+        wrap_t: o.wrap_t,
+        wrap_r: o.wrap_r,
+        border: o.border,
+        min_lod: o.min_lod,
+        max_lod: o.max_lod,
+        lod_bias: o.lod_bias,
+        sampler_object: None,
+        ..t.clone()
+    };
+    let mut changed = Vec::new();
+    let mut diff = |name: &str, a: String, b: String| {
+        if a != b {
+            changed.push(format!("{name} {b} (texture: {a})"));
+        }
+    };
+    diff(
+        "compare mode",
+        t.compare_mode.to_string(),
+        s.compare_mode.to_string(),
+    );
+    diff(
+        "compare func",
+        t.compare_func.to_string(),
+        s.compare_func.to_string(),
+    );
+    diff(
+        "min filter",
+        t.min_filter.to_string(),
+        s.min_filter.to_string(),
+    );
+    diff(
+        "mag filter",
+        t.mag_filter.to_string(),
+        s.mag_filter.to_string(),
+    );
+    diff("wrap s", t.wrap_s.to_string(), s.wrap_s.to_string());
+    diff("wrap t", t.wrap_t.to_string(), s.wrap_t.to_string());
+    diff("wrap r", t.wrap_r.to_string(), s.wrap_r.to_string());
+    diff(
+        "border",
+        format!("{:?}", t.border),
+        format!("{:?}", s.border),
+    );
+    diff("min lod", t.min_lod.to_string(), s.min_lod.to_string());
+    diff("max lod", t.max_lod.to_string(), s.max_lod.to_string());
+    diff("lod bias", t.lod_bias.to_string(), s.lod_bias.to_string());
+    let list = if changed.is_empty() {
+        "the same values as the texture".to_string()
+    } else {
+        changed.join(", ")
+    };
+    e.step(
+        format!("a sampler object is bound: its sampling state is used: {list}"),
+        cite,
+    );
+    let mut eff = case.clone();
+    eff.sampler = s;
+    (Cow::Owned(eff), rules)
 }
 
 /// Which computation: §8.23.1 "If the base internal format is DEPTH_STENCIL and the value of

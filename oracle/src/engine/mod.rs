@@ -62,6 +62,10 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
         cites: Vec::new(),
         notes: Vec::new(),
     };
+    // The effective sampling state (sampler object, seamless enable); it must be legal too.
+    let (case, rules) = inputs::effective(&mut e, rules, case);
+    let case: &Case = &case;
+    check::check(case, &rules)?;
     if case.lookup.gather.is_some() {
         let incomplete = lod::incomplete(&rules, &case.texture, &case.sampler, false);
         return Ok(gather::run(e, &rules, case, incomplete));
@@ -126,13 +130,27 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
 fn layouts(e: &mut Eval, rules: &Rules, case: &Case, kind: Kind, incomplete: bool) -> Layouts {
     let mut layouts = KeyMap::new();
     for &api in &case.api {
-        let (l, cite) = layout::layout(
+        let (mut l, cite) = layout::layout(
             rules,
             api,
             kind,
             case.sampler.depth_texture_mode,
             incomplete,
         );
+        if let (Some(sw), Some(sw_cite), false) = (case.sampler.swizzle, rules.swizzle, incomplete)
+        {
+            let before = l;
+            l = layout::swizzled(l, sw);
+            e.step(
+                format!(
+                    "TEXTURE_SWIZZLE_RGBA ({}) on `{api}`: ({}) → ({})",
+                    sw.iter().map(|c| c.key()).collect::<Vec<_>>().join(","),
+                    before.iter().map(|c| c.key()).collect::<Vec<_>>().join(","),
+                    l.iter().map(|c| c.key()).collect::<Vec<_>>().join(",")
+                ),
+                sw_cite,
+            );
+        }
         e.step(
             format!(
                 "layout on `{api}`: ({})",

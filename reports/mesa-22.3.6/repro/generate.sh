@@ -18,3 +18,7 @@ gen cause6-zink-depth-texture-mode egl:zink:compat 'arb/2d/d24/linear/lequal/wra
 gen cause7-glsl130-alpha-intensity egl:llvmpipe:compat 'gl46/2d/d24/nearest/none/dtm/dtm=alpha/texel1/ref=0.3@glsl130'
 gen cause8-softpipe-grad-lod-bias egl:softpipe:core:grad 'gl46/2d/d24/nmn/lequal/mip/lod_bias=1/lod=0/ref=0.5/levels=0.2_0.8_0.4@core'
 gen cause9-linear-layer-tie-core egl:llvmpipe:core 'gl46/2darray/d24/linear/lequal/layer/layer=0.5/ref=0.6/layers=0.2_0.8_0.4@core'
+# Issue 16 (unit state): the same causes reached through the swizzle and a sampler object.
+gen i16-cause7-swizzle-alpha egl:llvmpipe:compat 'gl46/2d/d24/nearest/none/swizzle/swizzle=zero_green_blue_alpha/dtm=alpha/texel1/ref=0.5@glsl130'
+gen i16-cause2-sampler-object-none egl:llvmpipe:es3 'gles32/2d/d24/linear/lequal/sampler_object/so_none_linear/s=0.5/ref=0.5@es300'
+gen i16-cause6-zink-sampler-object egl:zink:compat 'gl46/2d/d24/nearest/lequal/sampler_object/so_func/s=0.75/ref=0.5@glsl120'

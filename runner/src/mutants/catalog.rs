@@ -97,6 +97,16 @@ pub fn about(f: Fault) -> &'static str {
         F::IllegalValueStored => {
             "an illegal TexParameter enum value stored instead of INVALID_ENUM (GL 4.6 §8.10): seen by state cases"
         }
+        F::SwizzleIgnored => "TEXTURE_SWIZZLE_* not applied to the depth / shadow result",
+        F::SwizzleBeforeCompare => {
+            "swizzle applied to the stored depth before the comparison, not to Cb = (Rt,0,0,1) (a translation layer swizzling the texel)"
+        }
+        F::SeamlessIgnored => {
+            "GL's TEXTURE_CUBE_MAP_SEAMLESS enable ignored (cube maps filtered per face)"
+        }
+        F::SamplerObjectIgnored => {
+            "a bound sampler object's compare / filter / wrap / LOD state ignored in favour of the texture's"
+        }
         #[allow(unreachable_patterns)]
         _ => "",
     }

@@ -14,8 +14,8 @@
 use super::tokens::Tokens;
 use super::Subject;
 use shadowcheck_gl::paths::{self, GlInfo, LodForm, Plan, SamplerKind};
-use shadowcheck_gl::{shaders, texture, ContextApi, Platform};
-use shadowcheck_model::{Acceptance, ApiPath, Channel, Format, Profile, Target};
+use shadowcheck_gl::{shaders, texture, unitstate, ContextApi, Platform};
+use shadowcheck_model::{Acceptance, ApiPath, Channel, Format, Profile, Swizzle, Target};
 use std::fmt::Write;
 
 const GL_DEPTH_TEXTURE_MODE: u32 = 0x884B;
@@ -370,11 +370,81 @@ fn texture_fn(s: &Subject, compat: bool, tok: &mut Tokens) -> Result<String, Str
     if let Some(v) = sm.fail_value {
         pf(&mut st, tok, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, v);
     }
+    unit_state(&mut st, s, tok);
     Ok(format!(
         "/* The texture ({fmt} {tgt}): the integers shadowcheck's worker uploads (gl/src/texture.rs). */\n{data}\nstatic void make_texture(void) {{\n    GLuint tex;\n    glGenTextures(1, &tex);\n    glActiveTexture(GL_TEXTURE0);\n    glBindTexture({target}, tex);\n{up}    check(\"texture upload (glTexImage*)\");\n{st}    check(\"sampler state (glTexParameter*)\");\n}}\n\n",
         fmt = t.format,
         tgt = t.target,
     ))
+}
+
+/// The swizzle (texture state), the seamless enable and the sampler object of the case, as
+/// the worker sets them (`texture::tex_params`, `unitstate::bind_unit_state`).
+fn unit_state(st: &mut String, s: &Subject, tok: &mut Tokens) {
+    let sm = &s.case.sampler;
+    let target = tok.name(s.case.texture.target.gl());
+    if let Some(sw) = sm.swizzle {
+        let pnames = [
+            glow::TEXTURE_SWIZZLE_R,
+            glow::TEXTURE_SWIZZLE_G,
+            glow::TEXTURE_SWIZZLE_B,
+            glow::TEXTURE_SWIZZLE_A,
+        ];
+        for (p, c) in pnames.into_iter().zip(sw) {
+            let v = match c {
+                Swizzle::Red => "GL_RED",
+                Swizzle::Green => "GL_GREEN",
+                Swizzle::Blue => "GL_BLUE",
+                Swizzle::Alpha => "GL_ALPHA",
+                Swizzle::Zero => "GL_ZERO",
+                Swizzle::One => "GL_ONE",
+            };
+            let p = tok.name(p);
+            let _ = writeln!(st, "    glTexParameteri({target}, {p}, {v});");
+        }
+    }
+    if let Some(on) = sm.seamless {
+        let cap = tok.name(glow::TEXTURE_CUBE_MAP_SEAMLESS);
+        let f = if on { "glEnable" } else { "glDisable" };
+        let _ = writeln!(st, "    {f}({cap});");
+    }
+    if sm.sampler_object.is_some() {
+        let _ = writeln!(
+            st,
+            "    /* A sampler object bound to unit 0: its state replaces the texture's (GL 4.6 8.17.1). */"
+        );
+        let _ = writeln!(
+            st,
+            "    {{
+        GLuint so;
+        glGenSamplers(1, &so);"
+        );
+        for p in unitstate::sampler_params(&s.case) {
+            let name = tok.name(p.pname);
+            let _ = match p.value {
+                texture::ParamValue::Int(v) => {
+                    let v = tok.name(v);
+                    writeln!(st, "        glSamplerParameteri(so, {name}, {v});")
+                }
+                texture::ParamValue::Float(v) => {
+                    writeln!(st, "        glSamplerParameterf(so, {name}, {});", cf(v))
+                }
+                texture::ParamValue::Floats(v) => {
+                    let b: Vec<String> = v.iter().map(|x| cf(*x)).collect();
+                    writeln!(
+                        st,
+                        "        {{ static const GLfloat border[4] = {{{}}}; glSamplerParameterfv(so, {name}, border); }}",
+                        b.join(", ")
+                    )
+                }
+            };
+        }
+        let _ = writeln!(
+            st,
+            "        glBindSampler(0, so);
+    }}"
+        );
+    }
 }
 
 fn vec4(v: [f32; 4]) -> String {

@@ -82,6 +82,11 @@ const NAMES: &[(u32, &str)] = &[
     (0x884B, "GL_DEPTH_TEXTURE_MODE"),
     (0x90EA, "GL_DEPTH_STENCIL_TEXTURE_MODE"),
     (0x80BF, "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB"),
+    (0x8E42, "GL_TEXTURE_SWIZZLE_R"),
+    (0x8E43, "GL_TEXTURE_SWIZZLE_G"),
+    (0x8E44, "GL_TEXTURE_SWIZZLE_B"),
+    (0x8E45, "GL_TEXTURE_SWIZZLE_A"),
+    (0x884F, "GL_TEXTURE_CUBE_MAP_SEAMLESS"),
 ];
 
 /// Names of the table missing from the ES headers (checked against Debian 12's libgles-dev).
@@ -99,6 +104,7 @@ const NOT_IN_ES_HEADERS: &[&str] = &[
     "GL_TEXTURE_LOD_BIAS",
     "GL_DEPTH_TEXTURE_MODE",
     "GL_TEXTURE_COMPARE_FAIL_VALUE_ARB",
+    "GL_TEXTURE_CUBE_MAP_SEAMLESS",
 ];
 
 /// The tokens one program uses, for the `#ifndef` block at its top.

@@ -9,8 +9,10 @@ use shadowcheck_model::*;
 
 mod addressing;
 mod state;
+mod unitstate;
 pub use addressing::{cube, cube_wraps, layer, mip, mixfilter, wrap};
 pub use state::{ambient, dtm, incomplete, proj, stencil};
+pub use unitstate::{sampler_object, seamless, swizzle};
 
 /// A fixed-point depth format of the spec (D24, else D16, else unsized).
 pub fn fixed_fmt(d: &SpecDims) -> Format {
