@@ -108,6 +108,51 @@ fn webgl2_in_headless_chromium_passes_the_d16_and_d32f_fixtures_and_skips_what_i
 }
 
 #[test]
+fn webgl2_binds_sampler_objects_and_their_state_is_the_one_used() {
+    // The `sampler_object` family sets texture and sampler object state to different values, so
+    // that sampling with the texture's state gives another r (soft's `sampler-object-ignored`
+    // mutant dies on it). WebGL 2.0 has sampler objects; it lacks the swizzle and the border colour.
+    if !chromium_or_skip("the webgl:chromium sampler-object test") {
+        return;
+    }
+    let tmp = tmpdir("webgl-sampler");
+    let out = bin()
+        .args(["run", "--backend", "webgl:chromium", "--fixtures"])
+        .arg(fixtures())
+        .args(["--cases", "^gles32/.*/sampler_object/", "--out"])
+        .arg(&tmp)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let r = results(&tmp);
+    let mut passed = 0;
+    for (test, (status, reason)) in &r {
+        let reason = reason.as_deref().unwrap_or("");
+        if test.contains("/so_border/") {
+            assert!(
+                status == "Skip" && reason.contains("feature `border_clamp`"),
+                "{test}: {status} {reason}"
+            );
+        } else if test.contains("/so_swizzle/") {
+            assert!(
+                status == "Skip" && reason.contains("feature `swizzle`"),
+                "{test}: {status} {reason}"
+            );
+        } else {
+            assert!(status == "Pass", "{test}: {status} {reason}");
+            passed += 1;
+        }
+    }
+    assert!(passed >= 8, "{passed} sampler-object tests passed: {r:?}");
+    let _ = std::fs::remove_dir_all(&tmp);
+}
+
+#[test]
 fn the_default_run_includes_webgl_chromium_when_installed_and_announces_it_when_absent() {
     // SHADOWCHECK_EXE pointing nowhere: no worker starts (GL or WebGL), so the run is quick and
     // shows which backends it tried; --skip-missing keeps it going with `soft`.

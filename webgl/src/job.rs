@@ -10,7 +10,7 @@ use serde::Serialize;
 use shadowcheck_gl::draw::Answer;
 use shadowcheck_gl::paths::{self, GlInfo, Plan};
 use shadowcheck_gl::texture::{self, ParamValue};
-use shadowcheck_gl::{shaders, GlError};
+use shadowcheck_gl::{shaders, unitstate, GlError};
 use shadowcheck_model::{Case, Target};
 use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
 
@@ -39,6 +39,9 @@ struct Texture {
     upload: &'static str,
     levels: Vec<Level>,
     params: Vec<Param>,
+    /// SamplerParameter calls of a bound sampler object (`gl::unitstate::sampler_params`); empty:
+    /// no sampler object.
+    sampler: Vec<Param>,
 }
 
 #[derive(Debug, Serialize)]
@@ -137,21 +140,26 @@ fn texture_of(info: &GlInfo, case: &Case) -> Result<Texture, GlError> {
             data: base64::engine::general_purpose::STANDARD.encode(bytes),
         });
     }
+    let param = |p: texture::TexParam| {
+        let (int, float) = match p.value {
+            ParamValue::Int(v) => (Some(v), None),
+            ParamValue::Float(v) => (None, Some(Js(v))),
+            ParamValue::Floats(_) => (None, None),
+        };
+        Param {
+            pname: p.pname,
+            call: p.call(),
+            int,
+            float,
+        }
+    };
     let params = texture::tex_params(info, case)
         .into_iter()
-        .map(|p| {
-            let (int, float) = match p.value {
-                ParamValue::Int(v) => (Some(v), None),
-                ParamValue::Float(v) => (None, Some(Js(v))),
-                ParamValue::Floats(_) => (None, None),
-            };
-            Param {
-                pname: p.pname,
-                call: p.call(),
-                int,
-                float,
-            }
-        })
+        .map(param)
+        .collect();
+    let sampler = unitstate::sampler_params(case)
+        .into_iter()
+        .map(param)
         .collect();
     let upload = match t.target {
         Target::Cube => "cube",
@@ -163,6 +171,7 @@ fn texture_of(info: &GlInfo, case: &Case) -> Result<Texture, GlError> {
         upload,
         levels,
         params,
+        sampler,
     })
 }
 

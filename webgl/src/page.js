@@ -177,6 +177,22 @@ globalThis.shadowcheck = (() => {
     return tex;
   }
 
+  // A bound sampler object with the group's SamplerParameter calls (unitstate.rs: its state is used
+  // instead of the texture's, ES 3.0 §3.8.2), or null when the group has none.
+  function sampler(t) {
+    if (!t.sampler || t.sampler.length === 0) return null;
+    const s = gl.createSampler();
+    for (const p of t.sampler) {
+      if (p.int !== undefined) gl.samplerParameteri(s, p.pname, p.int);
+      else if (p.float !== undefined) gl.samplerParameterf(s, p.pname, Number(p.float));
+      else throw new Error("sampler " + p.call + ": WebGL 2.0 has no vector SamplerParameter");
+      check("glSamplerParameter for " + p.call);
+    }
+    gl.bindSampler(0, s);
+    check("glBindSampler");
+    return s;
+  }
+
   function draw(d, src) {
     const p = program(src);
     const x = d.slot % FB;
@@ -205,10 +221,14 @@ globalThis.shadowcheck = (() => {
     for (const g of job.groups) {
       while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
       let tex;
+      let so = null;
       try {
         tex = texture(g.texture);
+        so = sampler(g.texture);
       } catch (e) {
         for (const c of g.cases) errors[c] = e.message;
+        if (tex) gl.deleteTexture(tex);
+        gl.bindSampler(0, null);
         continue;
       }
       for (const d of g.draws) {
@@ -225,6 +245,10 @@ globalThis.shadowcheck = (() => {
         for (const c of g.cases) if (errors[c] === undefined) errors[c] = e.message;
       }
       gl.deleteTexture(tex);
+      if (so) {
+        gl.bindSampler(0, null);
+        gl.deleteSampler(so);
+      }
     }
     const rows = Math.max(1, Math.ceil(job.slots / FB));
     const px = new Float32Array(FB * rows * 4);

@@ -73,12 +73,16 @@ pub fn capabilities(enabled: &[String], extensions: &[String]) -> Capabilities {
         api: Some(vec![ApiPath::Es300.key().to_string()]),
         targets: Some(TARGETS.iter().map(|t| t.key().to_string()).collect()),
         formats: Some(FORMATS.iter().map(|f| f.key().to_string()).collect()),
-        // No TEXTURE_LOD_BIAS, TEXTURE_BORDER_COLOR or CLAMP_TO_BORDER in WebGL 2.0 (ES 3.0);
-        // DEPTH_STENCIL_TEXTURE_MODE with WEBGL_stencil_texturing.
-        features: Some(if stencil {
-            vec!["stencil_texturing".to_string()]
-        } else {
-            vec![]
+        // No TEXTURE_LOD_BIAS, TEXTURE_BORDER_COLOR or CLAMP_TO_BORDER in WebGL 2.0 (ES 3.0), no
+        // texture swizzle and no seamless enable (cube maps are always seamless); sampler objects
+        // (WebGL 2.0 §3.7.14, createSampler / bindSampler); DEPTH_STENCIL_TEXTURE_MODE with
+        // WEBGL_stencil_texturing.
+        features: Some({
+            let mut f = vec!["sampler_objects".to_string()];
+            if stencil {
+                f.push("stencil_texturing".to_string());
+            }
+            f
         }),
         extensions: extensions.to_vec(),
     }
