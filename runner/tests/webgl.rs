@@ -153,6 +153,47 @@ fn webgl2_binds_sampler_objects_and_their_state_is_the_one_used() {
 }
 
 #[test]
+fn webgl2_answers_the_texparameter_state_cases() {
+    // State cases (cases/fixtures/state/gles32.json): the page makes the TexParameter /
+    // GetTexParameter call and reports glGetError and the value; the runner judges against the
+    // oracle's tables (ES 3.2 §8.10), illegal values included. WebGL 2.0 has no cube-map arrays.
+    if !chromium_or_skip("the webgl:chromium state-case test") {
+        return;
+    }
+    let tmp = tmpdir("webgl-state");
+    let out = bin()
+        .args(["run", "--backend", "webgl:chromium", "--fixtures"])
+        .arg(fixtures())
+        .args(["--cases", "^state/gles32/", "--out"])
+        .arg(&tmp)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let r = results(&tmp);
+    assert!(r.len() >= 80, "{} state tests", r.len());
+    let mut illegal = 0;
+    for (test, (status, reason)) in &r {
+        let reason = reason.as_deref().unwrap_or("");
+        if test.contains("/cubearray/") {
+            assert!(
+                status == "Skip" && reason.contains("cubearray"),
+                "{test}: {status} {reason}"
+            );
+        } else {
+            assert!(status == "Pass", "{test}: {status} {reason}");
+        }
+        illegal += usize::from(test.contains("/set=") && status == "Pass");
+    }
+    assert!(illegal > 10, "{illegal} TexParameter calls judged");
+    let _ = std::fs::remove_dir_all(&tmp);
+}
+
+#[test]
 fn the_default_run_includes_webgl_chromium_when_installed_and_announces_it_when_absent() {
     // SHADOWCHECK_EXE pointing nowhere: no worker starts (GL or WebGL), so the run is quick and
     // shows which backends it tried; --skip-missing keeps it going with `soft`.

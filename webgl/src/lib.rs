@@ -7,6 +7,7 @@
 
 pub mod browser;
 pub mod job;
+pub mod state;
 pub mod worker;
 
 #[derive(Debug, thiserror::Error)]

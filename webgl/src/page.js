@@ -257,6 +257,40 @@ globalThis.shadowcheck = (() => {
     return { pixels: base64(new Uint8Array(px.buffer, 0, job.slots * 16)), errors };
   }
 
-  return { init, run };
+  // A state case (state.rs): the call on a fresh texture bound to unit 0, glGetError after it, and
+  // (read_back) getTexParameter and glGetError after that; the GL worker's state.rs, in WebGL.
+  function state(s) {
+    while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+    const tex = gl.createTexture();
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(s.target, tex);
+    const get = () => {
+      const v = gl.getTexParameter(s.target, s.pname);
+      if (typeof v === "boolean") return v ? 1 : 0;
+      return typeof v === "number" ? v : null;
+    };
+    let error = 0;
+    let value = null;
+    let readError = 0;
+    if (s.call === "initial") {
+      value = get();
+      error = gl.getError();
+    } else {
+      if (s.call === "int") gl.texParameteri(s.target, s.pname, Number(s.value));
+      else gl.texParameterf(s.target, s.pname, Number(s.value));
+      error = gl.getError();
+      if (s.read_back) {
+        while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+        value = get();
+        readError = gl.getError();
+      }
+    }
+    gl.bindTexture(s.target, null);
+    gl.deleteTexture(tex);
+    while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+    return { error, value, read_error: readError };
+  }
+
+  return { init, run, state };
 })();
 "loaded";

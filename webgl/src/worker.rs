@@ -10,8 +10,8 @@ use shadowcheck_gl::names::LookupForm;
 use shadowcheck_gl::paths::GlInfo;
 use shadowcheck_gl::worker::Serve;
 use shadowcheck_gl::ContextApi;
-use shadowcheck_model::{ApiPath, Case, Format, Spec, Target};
-use shadowcheck_protocol::{Capabilities, Hello, Support, PROTOCOL_VERSION};
+use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase, StateObserved, Target};
+use shadowcheck_protocol::{Capabilities, Hello, Reply, Support, PROTOCOL_VERSION};
 
 /// The backend's name.
 pub const NAME: &str = "webgl:chromium";
@@ -78,7 +78,10 @@ pub fn capabilities(enabled: &[String], extensions: &[String]) -> Capabilities {
         // (WebGL 2.0 §3.7.14, createSampler / bindSampler); DEPTH_STENCIL_TEXTURE_MODE with
         // WEBGL_stencil_texturing.
         features: Some({
-            let mut f = vec!["sampler_objects".to_string()];
+            let mut f = vec![
+                "sampler_objects".to_string(),
+                shadowcheck_protocol::TEX_PARAMETER.to_string(),
+            ];
             if stencil {
                 f.push("stencil_texturing".to_string());
             }
@@ -171,6 +174,32 @@ impl Serve for WebglWorker {
             name: Some(self.display_name()),
             capabilities: self.caps.clone(),
             wants_expect: false,
+        }
+    }
+
+    fn run_state(&mut self, case: &StateCase) -> Reply {
+        let caps = self.caps.clone();
+        let mut failed = None;
+        let reply =
+            shadowcheck_gl::state::answer(&caps, None, case, |c| {
+                match super::state::observe(&mut self.browser, c) {
+                    Ok(o) => o,
+                    Err(e) => {
+                        failed = Some(e.to_string());
+                        StateObserved {
+                            error: None,
+                            other_error: None,
+                            value: None,
+                        }
+                    }
+                }
+            });
+        match failed {
+            Some(m) => Reply::Error {
+                case_id: case.id.clone(),
+                message: format!("page: {m}"),
+            },
+            None => reply,
         }
     }
 
