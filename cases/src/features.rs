@@ -6,6 +6,7 @@
 //!
 //! Adding a feature: one [`Feature`] in [`FEATURES`].
 
+use crate::grids::families;
 use crate::grids::specs::{self, SpecDims};
 use shadowcheck_model::*;
 use std::collections::BTreeMap;
@@ -66,9 +67,7 @@ pub const FEATURES: &[Feature] = &[
         allowed: |d| {
             geometry(d)
                 && d.targets.iter().any(|t| t.is_cube())
-                && [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::ClampToBorder]
-                    .iter()
-                    .any(|w| d.wraps.contains(w))
+                && families::CUBE_WRAPS.iter().any(|w| d.wraps.contains(w))
         },
     },
     Feature {

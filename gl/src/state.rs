@@ -55,13 +55,7 @@ unsafe fn take_error(gl: &glow::Context) -> (Option<GlError>, Option<u32>) {
     while gl.get_error() != glow::NO_ERROR && guard < 16 {
         guard += 1;
     }
-    match first {
-        glow::NO_ERROR => (None, None),
-        code => match GlError::from_gl(code) {
-            Some(e) => (Some(e), None),
-            None => (None, Some(code)),
-        },
-    }
+    GlError::classify(first)
 }
 
 /// GetTexParameter of `case.pname` in the type the pname is stored as.

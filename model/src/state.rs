@@ -134,6 +134,17 @@ impl GlError {
     pub fn from_gl(code: u32) -> Option<GlError> {
         GlError::ALL.iter().copied().find(|e| e.gl() == code)
     }
+    /// A glGetError code as [`StateObserved`] holds it: (`error`, `other_error`); NO_ERROR (0)
+    /// is (None, None).
+    pub fn classify(code: u32) -> (Option<GlError>, Option<u32>) {
+        match code {
+            0 => (None, None),
+            code => match GlError::from_gl(code) {
+                Some(e) => (Some(e), None),
+                None => (None, Some(code)),
+            },
+        }
+    }
 }
 
 /// What a state call must leave: the first GL error it raises (`None`: NO_ERROR) and the value
@@ -249,6 +260,12 @@ mod tests {
             assert_eq!(StatePname::from_gl(p.gl()), Some(*p));
         }
         assert_eq!(GlError::from_gl(0x0502), Some(GlError::InvalidOperation));
+        assert_eq!(GlError::classify(0), (None, None));
+        assert_eq!(
+            GlError::classify(0x0500),
+            (Some(GlError::InvalidEnum), None)
+        );
+        assert_eq!(GlError::classify(0x0505), (None, Some(0x0505)));
         let bad = StateCase {
             id: "a b".into(),
             ..c

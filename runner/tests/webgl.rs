@@ -107,19 +107,14 @@ fn webgl2_in_headless_chromium_passes_the_d16_and_d32f_fixtures_and_skips_what_i
     let _ = std::fs::remove_dir_all(&tmp);
 }
 
-#[test]
-fn webgl2_binds_sampler_objects_and_their_state_is_the_one_used() {
-    // The `sampler_object` family sets texture and sampler object state to different values, so
-    // that sampling with the texture's state gives another r (soft's `sampler-object-ignored`
-    // mutant dies on it). WebGL 2.0 has sampler objects; it lacks the swizzle and the border colour.
-    if !chromium_or_skip("the webgl:chromium sampler-object test") {
-        return;
-    }
-    let tmp = tmpdir("webgl-sampler");
+/// `shadowcheck run -b webgl:chromium --cases PATTERN` on the committed fixtures: asserts exit 0
+/// and returns the results with the output directory (removed by the caller).
+fn run_webgl(dir: &str, pattern: &str) -> (BTreeMap<String, (String, Option<String>)>, PathBuf) {
+    let tmp = tmpdir(dir);
     let out = bin()
         .args(["run", "--backend", "webgl:chromium", "--fixtures"])
         .arg(fixtures())
-        .args(["--cases", "^gles32/.*/sampler_object/", "--out"])
+        .args(["--cases", pattern, "--out"])
         .arg(&tmp)
         .output()
         .unwrap();
@@ -129,7 +124,18 @@ fn webgl2_binds_sampler_objects_and_their_state_is_the_one_used() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let r = results(&tmp);
+    (results(&tmp), tmp)
+}
+
+#[test]
+fn webgl2_binds_sampler_objects_and_their_state_is_the_one_used() {
+    // The `sampler_object` family sets texture and sampler object state to different values, so
+    // that sampling with the texture's state gives another r (soft's `sampler-object-ignored`
+    // mutant dies on it). WebGL 2.0 has sampler objects; it lacks the swizzle and the border colour.
+    if !chromium_or_skip("the webgl:chromium sampler-object test") {
+        return;
+    }
+    let (r, tmp) = run_webgl("webgl-sampler", "^gles32/.*/sampler_object/");
     let mut passed = 0;
     for (test, (status, reason)) in &r {
         let reason = reason.as_deref().unwrap_or("");
@@ -160,21 +166,7 @@ fn webgl2_answers_the_texparameter_state_cases() {
     if !chromium_or_skip("the webgl:chromium state-case test") {
         return;
     }
-    let tmp = tmpdir("webgl-state");
-    let out = bin()
-        .args(["run", "--backend", "webgl:chromium", "--fixtures"])
-        .arg(fixtures())
-        .args(["--cases", "^state/gles32/", "--out"])
-        .arg(&tmp)
-        .output()
-        .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let r = results(&tmp);
+    let (r, tmp) = run_webgl("webgl-state", "^state/gles32/");
     assert!(r.len() >= 80, "{} state tests", r.len());
     let mut illegal = 0;
     for (test, (status, reason)) in &r {

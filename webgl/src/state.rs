@@ -56,13 +56,7 @@ pub fn observe(browser: &mut Browser, case: &StateCase) -> Result<StateObserved,
     let v = browser.evaluate(&format!("shadowcheck.state({arg})"))?;
     let page: PageState = serde_json::from_value(v.clone())
         .map_err(|e| WebglError::Page(format!("state answered {v}: {e}")))?;
-    let (error, other_error) = match page.error {
-        0 => (None, None),
-        code => match GlError::from_gl(code) {
-            Some(e) => (Some(e), None),
-            None => (None, Some(code)),
-        },
-    };
+    let (error, other_error) = GlError::classify(page.error);
     // As on GL: the initial value counts only when the query raised no error; a set value only
     // when its read raised none.
     let read_ok = match case.call {

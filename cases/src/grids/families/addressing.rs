@@ -389,6 +389,9 @@ pub fn cube(d: &SpecDims) -> Vec<Draft> {
     out
 }
 
+/// The wrap modes [`cube_wraps`] sets on cube faces (those of a spec's list).
+pub const CUBE_WRAPS: [Wrap; 3] = [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::ClampToBorder];
+
 /// Cube faces with the wrap modes other than CLAMP_TO_EDGE, LINEAR at an edge (s = 0.9) and a
 /// corner (s = t = 0.9) of faces +X and +Z, border 1.0: where cube filtering is seamless the modes
 /// are ignored (GL 4.6 §8.13.1: "If LINEAR filtering is done within a miplevel, always apply wrap
@@ -399,7 +402,7 @@ pub fn cube_wraps(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let func = main_func(d);
     let fmt = fixed_fmt(d);
-    let wraps = [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::ClampToBorder];
+    let wraps = CUBE_WRAPS;
     for &target in d.targets.iter().filter(|t| t.is_cube()) {
         let n = if target == Target::CubeArray { 2 } else { 1 };
         let (w, h, layers) = build::dims(target, 2, n);

@@ -10,7 +10,7 @@ use shadowcheck_model::*;
 mod addressing;
 mod state;
 mod unitstate;
-pub use addressing::{cube, cube_wraps, layer, mip, mixfilter, wrap};
+pub use addressing::{cube, cube_wraps, layer, mip, mixfilter, wrap, CUBE_WRAPS};
 pub use state::{ambient, dtm, incomplete, proj, stencil};
 pub use unitstate::{sampler_object, seamless, swizzle};
 
