@@ -155,6 +155,26 @@ fn forward(fanout: &mut Fanout, m: &Owned) {
     }
 }
 
+/// Seconds a compilation of one shader variant takes on llvmpipe / lavapipe (reports/BENCH.md,
+/// `compile_s_per_variant`: 17-26 ms on these machines); only the ratio to [`PER_TEST_S`] matters.
+const COMPILE_S: f64 = 20e-3;
+/// Seconds of harness and driver work per test once its variant exists (reports/BENCH.md: about
+/// 35 us per case on llvmpipe, warm).
+const PER_TEST_S: f64 = 40e-6;
+
+/// Estimated seconds of a cold run of `b` over `set`: a compilation per distinct (API path, sampler
+/// state) on a backend that compiles per state, plus the per-test cost. Orders the queue only.
+fn estimated_cost(b: &dyn Backend, set: &CaseSet) -> f64 {
+    let caps = b.capabilities();
+    let (tests, _) = set.tests_on(caps);
+    let compile = if b.compiles_per_state() {
+        set.compiled_states_on(caps) as f64 * COMPILE_S
+    } else {
+        0.0
+    };
+    compile + tests as f64 * PER_TEST_S
+}
+
 /// Runs `backends` on up to `jobs` threads; returns each backend's results, in `backends` order.
 pub fn run_backends(
     backends: &mut [Box<dyn Backend>],
@@ -165,8 +185,21 @@ pub fn run_backends(
     jobs: usize,
 ) -> Vec<(Vec<TestResult>, Timing)> {
     let n = backends.len();
-    let queue: Mutex<VecDeque<(usize, &mut Box<dyn Backend>)>> =
-        Mutex::new(backends.iter_mut().enumerate().collect());
+    // Longest first (LPT): a cold run's time is mostly compilation, so a compile-heavy backend
+    // started last would leave the other threads idle while it finishes alone.
+    let mut order: Vec<(usize, f64)> = backends
+        .iter()
+        .map(|b| estimated_cost(b.as_ref(), set))
+        .enumerate()
+        .collect();
+    order.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let mut slots: Vec<Option<&mut Box<dyn Backend>>> = backends.iter_mut().map(Some).collect();
+    let queue: Mutex<VecDeque<(usize, &mut Box<dyn Backend>)>> = Mutex::new(
+        order
+            .iter()
+            .filter_map(|&(i, _)| slots[i].take().map(|b| (i, b)))
+            .collect(),
+    );
     type Finished = Option<(Vec<TestResult>, Timing)>;
     let done: Mutex<Vec<Finished>> = Mutex::new((0..n).map(|_| None).collect());
     let (tx, rx) = mpsc::channel();
@@ -193,4 +226,71 @@ pub fn run_backends(
         .into_iter()
         .map(|r| r.unwrap_or_default())
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::backend::CaseOutcome;
+    use shadowcheck_model::Case;
+    use shadowcheck_protocol::Capabilities;
+
+    struct Idle {
+        caps: Capabilities,
+        compiles: bool,
+    }
+
+    impl Backend for Idle {
+        fn name(&self) -> &str {
+            "idle"
+        }
+        fn capabilities(&self) -> &Capabilities {
+            &self.caps
+        }
+        fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
+            cases
+                .iter()
+                .map(|_| CaseOutcome::Skip("idle".into()))
+                .collect()
+        }
+        fn compiles_per_state(&self) -> bool {
+            self.compiles
+        }
+    }
+
+    #[test]
+    fn a_backend_compiling_per_state_is_estimated_by_its_distinct_states() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures");
+        let set = crate::run::load_cases(&[root.join("gl46/2d/nearest.json")]);
+        assert!(set.errors.is_empty(), "{:?}", set.errors);
+        let caps = Capabilities::default();
+        let (tests, _) = set.tests_on(&caps);
+        // Distinct (path, state) pairs, counted independently of the runner's helper.
+        let mut pairs = std::collections::BTreeSet::new();
+        for l in &set.cases {
+            for a in &l.case.api {
+                pairs.insert((*a, shadowcheck_cases::coverage::state_key(&l.case)));
+            }
+        }
+        let states = set.compiled_states_on(&caps);
+        assert_eq!(states, pairs.len());
+        assert!(
+            states > 0 && states < tests,
+            "{states} states, {tests} tests"
+        );
+        let heavy = Idle {
+            caps: caps.clone(),
+            compiles: true,
+        };
+        let light = Idle {
+            caps,
+            compiles: false,
+        };
+        let (h, l) = (estimated_cost(&heavy, &set), estimated_cost(&light, &set));
+        assert!(
+            (h - l - states as f64 * COMPILE_S).abs() < 1e-9,
+            "{h} vs {l}"
+        );
+        assert!((l - tests as f64 * PER_TEST_S).abs() < 1e-9);
+    }
 }

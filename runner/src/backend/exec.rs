@@ -206,9 +206,18 @@ pub struct ExecBackend {
     faults: Vec<(String, String)>,
     /// The hello's `name`.
     implementation: Option<String>,
+    /// See [`Backend::compiles_per_state`]; set by the opener that knows the driver.
+    compiles_per_state: bool,
 }
 
 impl ExecBackend {
+    /// Declares whether the implementation compiles code per sampler state (the scheduler's
+    /// weight; see [`Backend::compiles_per_state`]).
+    pub fn with_compiles_per_state(mut self, yes: bool) -> ExecBackend {
+        self.compiles_per_state = yes;
+        self
+    }
+
     /// Starts the process and reads its capabilities.
     pub fn start(
         name: &str,
@@ -230,6 +239,7 @@ impl ExecBackend {
             answered: HashSet::new(),
             faults: vec![],
             implementation: None,
+            compiles_per_state: true,
         };
         let hello = b.ensure().map_err(|msg| BackendError::Setup {
             backend: name.to_string(),
@@ -522,6 +532,9 @@ fn clip(s: &str) -> String {
 }
 
 impl Backend for ExecBackend {
+    fn compiles_per_state(&self) -> bool {
+        self.compiles_per_state
+    }
     fn name(&self) -> &str {
         &self.name
     }

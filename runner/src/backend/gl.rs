@@ -4,7 +4,7 @@
 //! probing which backends this machine can run. The worker itself is the GL crate's.
 
 use super::exec::ProcessCommand;
-use shadowcheck_gl::{libdir, BackendName, GlError};
+use shadowcheck_gl::{libdir, BackendName, Driver, GlError};
 use std::path::PathBuf;
 use std::process::Stdio;
 use std::time::{Duration, Instant};
@@ -68,6 +68,15 @@ pub fn worker_command(backend: &str) -> Result<ProcessCommand, GlError> {
         args: vec!["gl-worker".into(), "--backend".into(), name.to_string()],
         env,
     })
+}
+
+/// Whether the driver behind `backend` compiles a shader variant per sampler state: every driver
+/// but softpipe, which interprets its shaders (an unparsable name: assumed to).
+pub fn compiles_per_state(backend: &str) -> bool {
+    libdir::split_lib_dir(backend)
+        .ok()
+        .and_then(|(_, plain)| plain.parse::<BackendName>().ok())
+        .is_none_or(|n| n.driver != Driver::Softpipe)
 }
 
 /// Backend names that can run here (each probed in a child process).

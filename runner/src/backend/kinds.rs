@@ -114,8 +114,14 @@ fn open_exec(name: &str, rest: &str, opts: &Options) -> Result<Box<dyn Backend>,
 }
 
 fn open_gl(name: &str, _: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
-    let cmd = super::gl::worker_command(name).map_err(|e| setup(name, e))?;
-    Ok(Box::new(ExecBackend::start(name, cmd, opts)?))
+    let mut cmd = super::gl::worker_command(name).map_err(|e| setup(name, e))?;
+    if opts.fast_compile {
+        cmd.env.push(("GALLIVM_PERF".into(), "nopt".into()));
+    }
+    let compiles = super::gl::compiles_per_state(name);
+    Ok(Box::new(
+        ExecBackend::start(name, cmd, opts)?.with_compiles_per_state(compiles),
+    ))
 }
 
 fn open_webgl(name: &str, rest: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
@@ -131,7 +137,9 @@ fn open_mock(name: &str, rest: &str, opts: &Options) -> Result<Box<dyn Backend>,
         args: vec!["mock-worker".into(), rest.to_string()],
         env: vec![],
     };
-    Ok(Box::new(ExecBackend::start(name, cmd, opts)?))
+    Ok(Box::new(
+        ExecBackend::start(name, cmd, opts)?.with_compiles_per_state(false),
+    ))
 }
 
 #[cfg(test)]

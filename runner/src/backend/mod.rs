@@ -122,6 +122,13 @@ pub trait Backend: Send {
     fn take_faults(&mut self) -> Vec<(String, String)> {
         vec![]
     }
+    /// Whether the implementation compiles code per sampler state (llvmpipe and lavapipe bake
+    /// filter, wrap, compare function and format into each shader variant): a cold run of such a
+    /// backend costs a compilation per distinct state, which the scheduler weighs (longest first).
+    /// An unknown implementation is assumed to.
+    fn compiles_per_state(&self) -> bool {
+        true
+    }
 }
 
 /// Options shared by the backends that run child processes.
@@ -134,6 +141,9 @@ pub struct Options {
     /// After this many cases in a row ended in Timeout, the rest of the implementation's cases are
     /// Timeout without being sent (0: never give up).
     pub give_up: usize,
+    /// `run --fast-compile`: GL workers run with `GALLIVM_PERF=nopt` (llvmpipe and lavapipe skip
+    /// LLVM's optimisation passes). Opt-in only: it changes the driver's code generation.
+    pub fast_compile: bool,
 }
 
 /// Consecutive timeouts after which an implementation is given up (`run --give-up-after`).
@@ -145,6 +155,7 @@ impl Default for Options {
             timeout: Duration::from_secs(10),
             group: 64,
             give_up: GIVE_UP_AFTER,
+            fast_compile: false,
         }
     }
 }

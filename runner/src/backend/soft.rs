@@ -74,6 +74,9 @@ impl SoftBackend {
 }
 
 impl Backend for SoftBackend {
+    fn compiles_per_state(&self) -> bool {
+        false
+    }
     fn name(&self) -> &str {
         &self.name
     }

@@ -90,6 +90,11 @@ pub struct Args {
     /// Show implementations' stderr lines and restarts.
     #[arg(long, short = 'v')]
     verbose: bool,
+    /// Cold runs in about half the time: GL workers run with GALLIVM_PERF=nopt, so llvmpipe and
+    /// lavapipe (zink) skip LLVM's optimisation passes when compiling shader variants. It changes
+    /// the driver's code generation, so it is never the default; the run's meta records it.
+    #[arg(long)]
+    fast_compile: bool,
 }
 
 /// `out/<backends>` with characters unfit for a file name replaced.
@@ -176,7 +181,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         timeout: Duration::from_secs_f64(a.timeout),
         group: a.group,
         give_up: a.give_up_after,
+        fast_compile: a.fast_compile,
     };
+    if a.fast_compile {
+        eprintln!("shadowcheck: --fast-compile: GL workers run with GALLIVM_PERF=nopt (LLVM's optimisation passes off); the results are of that code generation");
+    }
     let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(requested.len());
     for n in &requested {
         match backend::open(n, &opts) {
@@ -219,7 +228,16 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         baseline: a.baseline.as_ref().map(|p| p.display().to_string()),
         implementations: backends
             .iter()
-            .filter_map(|b| b.implementation().map(|i| (b.name().to_string(), i)))
+            .filter_map(|b| {
+                let i = b.implementation()?;
+                let gl = b.name().starts_with("egl") || b.name().starts_with("osmesa:");
+                let i = if a.fast_compile && gl {
+                    format!("{i} [--fast-compile: GALLIVM_PERF=nopt]")
+                } else {
+                    i
+                };
+                Some((b.name().to_string(), i))
+            })
             .collect(),
         ..RunMeta::new()
     };

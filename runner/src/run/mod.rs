@@ -155,6 +155,24 @@ impl CaseSet {
     }
 }
 
+impl CaseSet {
+    /// Distinct (API path, compiled sampler state) pairs among the cases a backend with `caps`
+    /// runs: how many shader variants a driver that bakes the sampler state into its code
+    /// (llvmpipe, lavapipe) compiles for this set ([`shadowcheck_cases::coverage::state_key`]).
+    pub fn compiled_states_on(&self, caps: &Capabilities) -> usize {
+        let mut seen = std::collections::HashSet::new();
+        for l in &self.cases {
+            if let Some((apis, None)) = applicable_apis(caps, &l.case) {
+                let key = shadowcheck_cases::coverage::state_key(&l.case);
+                for a in apis {
+                    seen.insert((a, key.clone()));
+                }
+            }
+        }
+        seen.len()
+    }
+}
+
 /// The API paths of `case` that are tests of a backend with `caps`, and the reason to Skip them
 /// all when the backend lacks the case's target or format; `None` when none is applicable.
 fn applicable_apis(caps: &Capabilities, case: &Case) -> Option<(Vec<ApiPath>, Option<String>)> {
