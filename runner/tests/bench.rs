@@ -1,5 +1,5 @@
-//! `shadowcheck bench --quick --json`: the report has the rows issue 6 asks for, each a positive
-//! finite number. No timing is asserted (speed is what the bench reports, not what tests check).
+//! `shadowcheck bench --quick --json`: the report has the rows issues 6 and 17 ask for, each a
+//! positive finite number. No timing is asserted (speed is what the bench reports, not what tests check).
 
 use std::path::Path;
 use std::process::Command;
@@ -55,7 +55,14 @@ fn quick_json_has_every_row_with_positive_finite_values() {
     positive(&rep, "soft_lookups_per_s", None);
     positive(&rep, "soft_lookups_per_s_linear", None);
     positive(&rep, "suite_wall_s", Some("soft"));
+    positive(&rep, "suite_wall_cached_s", Some("soft"));
     positive(&rep, "suite_peak_rss_mib", Some("soft"));
+    // Issue 17: checks per compiled state for every API path of the fixtures.
+    for path in [
+        "ff", "arbfp", "glsl120", "glsl130", "core", "es100", "es300",
+    ] {
+        positive(&rep, "checks_per_compiled_state", Some(path));
+    }
 
     // GL rows exist exactly when the driver could be used; otherwise the report says why.
     let llvmpipe = "egl:llvmpipe:core";
@@ -71,12 +78,16 @@ fn quick_json_has_every_row_with_positive_finite_values() {
         positive(&rep, "gl_e2e_steady_cases_per_s", Some(llvmpipe));
         positive(&rep, "gl_e2e_warm_cases_per_s", Some(llvmpipe));
         positive(&rep, "gl_e2e_cached_cases_per_s", Some(llvmpipe));
-        positive(&rep, "suite_wall_cached_s", Some("llvmpipe"));
-        positive(&rep, "suite_total_wall_cached_s", None);
         positive(&rep, "gl_e2e_over_floor", Some(llvmpipe));
-        positive(&rep, "suite_wall_s", Some("llvmpipe"));
-        positive(&rep, "suite_peak_rss_mib", Some("llvmpipe"));
-        positive(&rep, "suite_total_wall_s", None);
+        positive(&rep, "gl_warm_us_per_check", Some(llvmpipe));
+        positive(&rep, "compile_ms_per_variant", Some(llvmpipe));
+        positive(&rep, "suite_mesa_cold_s", None);
+        positive(&rep, "suite_mesa_cached_s", None);
+        positive(&rep, "suite_mesa_fast_compile_cold_s", None);
+        positive(&rep, "suite_peak_rss_mib", Some("mesa"));
+        positive(&rep, "cold_floor_s", None);
+        positive(&rep, "cold_floor_states_s", None);
+        positive(&rep, "suite_mesa_cold_over_floor", None);
         // soft is compared with llvmpipe's single-thread rate.
         let soft = rep["rows"]
             .as_array()

@@ -1,6 +1,6 @@
 //! Single-thread CPU measurements: the oracle's verdicts and the `soft` unit's raw lookups.
 
-use super::{ids, targets, Goal, Measurement, Target};
+use super::{ids, targets, targets17, Goal, Measurement, Target};
 use shadowcheck_model::{ApiPath, Case, Channel, Expectation, Filter, Spec};
 use shadowcheck_soft::bench::Workload;
 use std::hint::black_box;
@@ -101,7 +101,7 @@ pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Measurement> {
             (judged.len() as u64 * passes) as f64 / secs,
             "verdicts/s/core",
             format!("Expectation::judge against the fixtures' stored expectations, {} verdicts x {passes} passes in {secs:.2} s, 1 thread", judged.len()),
-        ));
+        ).with_target(Target::new(Goal::AtLeast, targets17::JUDGE_PER_S, "issue 17")));
     }
     rows
 }

@@ -25,9 +25,16 @@ fn label(id: &str) -> &'static str {
         GL_RATIO => "GL end to end / floor",
         SUITE_WALL => "default suite: wall",
         SUITE_RSS => "default suite: peak RSS",
-        SUITE_TOTAL => "default suite: llvmpipe + softpipe + zink",
         SUITE_WALL_CACHED => "default suite: wall, shader cache filled",
-        SUITE_TOTAL_CACHED => "default suite: llvmpipe + softpipe + zink, cache filled",
+        MESA_COLD => "default suite, every Mesa backend, one run: cold",
+        MESA_CACHED => "default suite, every Mesa backend, one run: shader cache filled",
+        MESA_FAST_COMPILE => "same, cold, `--fast-compile` (opt-in)",
+        CHECKS_PER_STATE => "checks per compiled sampler state",
+        HARNESS_PER_CHECK => "cost per check after compilation (warm)",
+        COMPILE_PER_VARIANT => "compile time per shader variant",
+        COLD_FLOOR_STATES => "cold floor, by distinct states: states x compile time / cores",
+        COLD_FLOOR => "cold floor, by variants compiled: cache entries x compile time / cores",
+        COLD_OVER_FLOOR => "cold suite / cold floor",
         _ => "",
     }
 }

@@ -1,4 +1,4 @@
-//! Throughput measurements behind `shadowcheck bench` (tracker issue 6).
+//! Throughput measurements behind `shadowcheck bench` (tracker issues 6 and 17).
 //!
 //! Each measurement yields [`Measurement`]s: the oracle's verdicts per second on one core, the `soft`
 //! implementation's raw lookups per second on one core, and per GL backend the bare-draw floor
@@ -148,9 +148,23 @@ pub mod ids {
     pub const GL_RATIO: &str = "gl_e2e_over_floor";
     pub const SUITE_WALL: &str = "suite_wall_s";
     pub const SUITE_RSS: &str = "suite_peak_rss_mib";
-    pub const SUITE_TOTAL: &str = "suite_total_wall_s";
     pub const SUITE_WALL_CACHED: &str = "suite_wall_cached_s";
-    pub const SUITE_TOTAL_CACHED: &str = "suite_total_wall_cached_s";
+    /// Issue 17: every Mesa backend of the machine in one `shadowcheck run` (both cores).
+    pub const MESA_COLD: &str = "suite_mesa_cold_s";
+    pub const MESA_CACHED: &str = "suite_mesa_cached_s";
+    pub const MESA_FAST_COMPILE: &str = "suite_mesa_fast_compile_cold_s";
+    /// Tests per distinct compiled sampler state, per API path (backend column: the path).
+    pub const CHECKS_PER_STATE: &str = "checks_per_compiled_state";
+    /// Harness and driver cost per check after compilation (warm pass), microseconds.
+    pub const HARNESS_PER_CHECK: &str = "gl_warm_us_per_check";
+    /// Measured compile time of one shader variant (cold minus warm, per state), milliseconds.
+    pub const COMPILE_PER_VARIANT: &str = "compile_ms_per_variant";
+    /// Compiled states of the Mesa backends ([`shadowcheck_cases::coverage::StateKey`] per API
+    /// path) x their driver's compile time, over the cores.
+    pub const COLD_FLOOR_STATES: &str = "cold_floor_states_s";
+    /// Variants the cold suite wrote to its empty shader cache x the compile time, over the cores.
+    pub const COLD_FLOOR: &str = "cold_floor_s";
+    pub const COLD_OVER_FLOOR: &str = "suite_mesa_cold_over_floor";
 }
 
 /// Targets of issue 6.
@@ -161,10 +175,22 @@ pub mod targets {
     pub const LLVMPIPE_E2E_PER_S: f64 = 50e6;
     /// End to end over bare-draw floor.
     pub const E2E_OVER_FLOOR: f64 = 0.5;
-    /// Default suite on llvmpipe + softpipe + zink, seconds of wall time.
-    pub const SUITE_TOTAL_S: f64 = 30.0;
     /// Peak resident set size, MiB.
     pub const PEAK_RSS_MIB: f64 = 1024.0;
+}
+
+/// Targets of issue 17 (cold runs).
+pub mod targets17 {
+    /// Default suite, every Mesa backend, empty shader cache, 2 cores: seconds of wall time.
+    pub const MESA_COLD_S: f64 = 60.0;
+    /// Tests per compiled sampler state on every API path.
+    pub const CHECKS_PER_STATE: f64 = 16.0;
+    /// Harness cost per check after compilation on llvmpipe, microseconds.
+    pub const HARNESS_US_PER_CHECK: f64 = 2.0;
+    /// `judge` verdicts per second on one core.
+    pub const JUDGE_PER_S: f64 = 50e6;
+    /// Cold suite over its compile floor.
+    pub const COLD_OVER_FLOOR: f64 = 1.2;
 }
 
 /// Compact number: 3 significant digits with SI suffix (k, M, G) for large values.

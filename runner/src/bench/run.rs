@@ -3,8 +3,8 @@
 use super::floor::{self, FloorResult};
 use super::suite::{self, nearest_2d_fixtures};
 use super::{
-    cpu, ids, machine::Machine, targets, BenchReport, Goal, Measurement, Target, Unavailable,
-    SCHEMA_VERSION,
+    cpu, ids, machine::Machine, targets, targets17, BenchReport, Goal, Measurement, Target,
+    Unavailable, SCHEMA_VERSION,
 };
 use shadowcheck_gl::names::{BackendName, Driver};
 use std::path::PathBuf;
@@ -78,7 +78,8 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
 
     progress("oracle: loading the default fixtures");
     let set = crate::run::load_cases(&o.fixtures);
-    let mut cases: Vec<_> = set.cases.into_iter().map(|l| l.case).collect();
+    rows.extend(density_rows(&set));
+    let mut cases: Vec<_> = set.cases.iter().map(|l| l.case.clone()).collect();
     if o.quick {
         cases = cases.into_iter().step_by(10).collect();
     }
@@ -170,6 +171,22 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
                     "cases/s",
                     format!("the same cases again on the same worker ({:.2} s): shader variants already compiled", e.warm_run_s),
                 ));
+                let per_check = Measurement::new(
+                    ids::HARNESS_PER_CHECK,
+                    Some(&name),
+                    e.warm_run_s / e.verified as f64 * 1e6,
+                    "us/check",
+                    format!("the warm pass ({:.3} s for {} checks): worker I/O, texture upload, draw, read-back and verdict once the variants exist", e.warm_run_s, e.verified),
+                );
+                rows.push(if name.contains(":llvmpipe:") {
+                    per_check.with_target(Target::new(
+                        Goal::AtMost,
+                        targets17::HARNESS_US_PER_CHECK,
+                        "issue 17 (llvmpipe)",
+                    ))
+                } else {
+                    per_check
+                });
                 rows.push(Measurement::new(
                     ids::GL_E2E_CACHED,
                     Some(&name),
@@ -243,7 +260,38 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
         });
     }
 
-    // The default suite per driver (quick: the 2D NEAREST fixtures).
+    // What one shader variant costs each compiling driver to build (issue 17's floor).
+    let mut per_variant: Vec<(Driver, f64)> = Vec::new();
+    for d in [Driver::Llvmpipe, Driver::Zink] {
+        let name = format!("egl:{}:core", d.key());
+        if !available.contains(&name) {
+            continue;
+        }
+        let stride = if o.quick { 64 } else { 8 };
+        progress(&format!(
+            "{name}: compile time per variant (every {stride}th state, empty shader cache)"
+        ));
+        match suite::compile_cost(&name, &set, stride) {
+            Ok(c) => {
+                per_variant.push((d, c.per_variant_s()));
+                rows.push(Measurement::new(
+                    ids::COMPILE_PER_VARIANT,
+                    Some(&name),
+                    c.per_variant_s() * 1e3,
+                    "ms",
+                    format!("one case per compiled state, {} states (every {stride}th of the fixtures): cold {:.2} s, same cases warm {:.2} s; (cold - warm) / states", c.states, c.cold_s, c.warm_s),
+                ));
+            }
+            Err(e) => unavailable.push(Unavailable {
+                what: "compile time per variant".into(),
+                backend: Some(name),
+                reason: e,
+            }),
+        }
+    }
+
+    // The default suite (quick: the 2D NEAREST fixtures): soft alone, then every Mesa backend in
+    // one run, cold, with the cache it filled, and cold again with --fast-compile.
     let suite_fixtures = if o.quick {
         e2e_fixtures.clone()
     } else {
@@ -255,121 +303,253 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
         "default fixtures"
     };
     let out_root = std::env::temp_dir().join(format!("shadowcheck-bench-{}", std::process::id()));
-    let mut groups: Vec<(String, Vec<String>)> = vec![("soft".into(), vec!["soft".into()])];
-    for d in Driver::MESA {
-        let bs: Vec<String> = available
-            .iter()
-            .filter(|n| n.split(':').nth(1) == Some(d.key()))
-            .cloned()
-            .collect();
-        if !bs.is_empty() {
-            groups.push((d.key().to_string(), bs));
+    progress("suite: soft, twice");
+    let soft = ["soft".to_string()];
+    match (
+        suite::suite(&o.exe, &soft, &suite_fixtures, &out_root.join("soft"), &[]),
+        suite::suite(
+            &o.exe,
+            &soft,
+            &suite_fixtures,
+            &out_root.join("soft-2"),
+            &[],
+        ),
+    ) {
+        (Ok(s), Ok(c)) => {
+            let detail = format!(
+                "`shadowcheck run` over the {what}, backend soft, exit {}",
+                s.exit_code
+            );
+            rows.push(Measurement::new(
+                ids::SUITE_WALL,
+                Some("soft"),
+                s.wall_s,
+                "s",
+                detail.clone(),
+            ));
+            rows.push(Measurement::new(
+                ids::SUITE_WALL_CACHED,
+                Some("soft"),
+                c.wall_s,
+                "s",
+                format!("{detail}; a second run"),
+            ));
+            rows.push(
+                Measurement::new(
+                    ids::SUITE_RSS,
+                    Some("soft"),
+                    s.peak_rss_mib.max(c.peak_rss_mib),
+                    "MiB",
+                    format!("largest process of either run, wait4 ru_maxrss; {detail}"),
+                )
+                .with_target(Target::new(
+                    Goal::AtMost,
+                    targets::PEAK_RSS_MIB,
+                    "issue 6",
+                )),
+            );
         }
+        (Err(e), _) | (_, Err(e)) => unavailable.push(Unavailable {
+            what: "suite".into(),
+            backend: Some("soft".into()),
+            reason: e,
+        }),
     }
-    let mut total = 0.0;
-    let mut total_cached = 0.0;
-    let mut total_drivers = Vec::new();
-    for (label, bs) in groups {
-        progress(&format!(
-            "suite: {label} ({}), empty shader cache, then cached",
-            bs.join(", ")
-        ));
-        let cache = match suite::ShaderCache::fresh(&label) {
-            Ok(c) => c,
-            Err(e) => {
-                unavailable.push(Unavailable {
-                    what: "suite".into(),
-                    backend: Some(label),
-                    reason: e,
-                });
-                continue;
-            }
-        };
-        let cold = suite::suite(&o.exe, &bs, &suite_fixtures, &out_root.join(&label));
-        let cached = cold.as_ref().ok().map(|_| {
-            suite::suite(
-                &o.exe,
-                &bs,
-                &suite_fixtures,
-                &out_root.join(format!("{label}-cached")),
-            )
-        });
-        drop(cache);
-        match (cold, cached) {
-            (Ok(s), Some(Ok(c))) => {
-                let detail = format!(
-                    "`shadowcheck run` over the {what}, backends {}, exit {}",
-                    bs.join(" "),
-                    s.exit_code
-                );
-                rows.push(Measurement::new(
-                    ids::SUITE_WALL,
-                    Some(&label),
-                    s.wall_s,
-                    "s",
-                    format!("{detail}; empty Mesa shader cache"),
-                ));
-                rows.push(Measurement::new(
-                    ids::SUITE_WALL_CACHED,
-                    Some(&label),
-                    c.wall_s,
-                    "s",
-                    format!("{detail}; again with the shader cache the first run filled"),
-                ));
-                rows.push(
-                    Measurement::new(ids::SUITE_RSS, Some(&label), s.peak_rss_mib.max(c.peak_rss_mib), "MiB", format!("largest process (runner or worker) of either run, wait4 ru_maxrss; {detail}"))
-                        .with_target(Target::new(Goal::AtMost, targets::PEAK_RSS_MIB, "issue 6")),
-                );
-                if label != "soft" {
-                    total += s.wall_s;
-                    total_cached += c.wall_s;
-                    total_drivers.push(label);
+    let mesa: Vec<String> = available.clone();
+    let drivers: Vec<Driver> = Driver::MESA
+        .iter()
+        .copied()
+        .filter(|d| mesa.iter().any(|n| n.split(':').nth(1) == Some(d.key())))
+        .collect();
+    if !mesa.is_empty() {
+        let every = drivers.len() == Driver::MESA.len() && !o.quick;
+        let label = "mesa";
+        let mut cold_s = None;
+        let mut cold_entries = 0;
+        // Cold then cached share one cache; the --fast-compile cold run gets a fresh one.
+        let mut cache = None;
+        for (id, extra, cached) in [
+            (ids::MESA_COLD, &[][..], false),
+            (ids::MESA_CACHED, &[][..], true),
+            (ids::MESA_FAST_COMPILE, &["--fast-compile"][..], false),
+        ] {
+            progress(&format!(
+                "suite: {} ({}){}",
+                mesa.join(", "),
+                if cached {
+                    "shader cache filled"
+                } else {
+                    "empty shader cache"
+                },
+                if extra.is_empty() {
+                    String::new()
+                } else {
+                    format!(", {}", extra.join(" "))
+                }
+            ));
+            if !cached {
+                drop(cache.take());
+                match suite::ShaderCache::fresh(&format!("{label}-{id}")) {
+                    Ok(c) => cache = Some(c),
+                    Err(e) => {
+                        unavailable.push(Unavailable {
+                            what: "suite".into(),
+                            backend: Some(label.into()),
+                            reason: e,
+                        });
+                        continue;
+                    }
                 }
             }
-            (Err(e), _) | (_, Some(Err(e))) => unavailable.push(Unavailable {
-                what: "suite".into(),
-                backend: Some(label),
-                reason: e,
-            }),
-            (Ok(_), None) => {}
+            match suite::suite(&o.exe, &mesa, &suite_fixtures, &out_root.join(id), extra) {
+                Ok(run) => {
+                    if id == ids::MESA_COLD {
+                        cold_entries = cache.as_ref().map_or(0, |c| c.entries());
+                    }
+                    let per: Vec<String> = run
+                        .backend_s
+                        .iter()
+                        .map(|(b, t)| format!("{b} {t:.1}"))
+                        .collect();
+                    let mut m = Measurement::new(
+                        id,
+                        None,
+                        run.wall_s,
+                        "s",
+                        format!(
+                            "`shadowcheck run` over the {what}, {} backends, {} at once (-j default), exit {}, peak RSS {:.0} MiB; seconds in each backend: {}",
+                            mesa.len(),
+                            Machine::describe(None).nproc,
+                            run.exit_code,
+                            run.peak_rss_mib,
+                            per.join(", ")
+                        ),
+                    );
+                    if id == ids::MESA_COLD {
+                        cold_s = Some(run.wall_s);
+                        if every {
+                            m = m.with_target(Target::new(
+                                Goal::AtMost,
+                                targets17::MESA_COLD_S,
+                                "issue 17 (2 cores)",
+                            ));
+                        }
+                        rows.push(
+                            Measurement::new(
+                                ids::SUITE_RSS,
+                                Some(label),
+                                run.peak_rss_mib,
+                                "MiB",
+                                "largest process of the cold run, wait4 ru_maxrss".into(),
+                            )
+                            .with_target(Target::new(
+                                Goal::AtMost,
+                                targets::PEAK_RSS_MIB,
+                                "issue 6",
+                            )),
+                        );
+                    }
+                    rows.push(m);
+                }
+                Err(e) => unavailable.push(Unavailable {
+                    what: "suite".into(),
+                    backend: Some(label.into()),
+                    reason: e,
+                }),
+            }
+        }
+        drop(cache);
+        // The floor: every backend's compiled states x its driver's compile time, over the cores.
+        if !per_variant.is_empty() {
+            let quick_set;
+            let suite_set = if o.quick {
+                quick_set = crate::run::load_cases(&suite_fixtures);
+                &quick_set
+            } else {
+                &set
+            };
+            let cores = Machine::describe(None).nproc.max(1) as f64;
+            let mut floor = 0.0;
+            // One backend is one worker thread: the floor is never below its own compile time.
+            let mut longest: f64 = 0.0;
+            // Backends that compile anything: more cores than these cannot be used.
+            let mut heavy = 0usize;
+            let mut parts = Vec::new();
+            let mut complete = true;
+            for n in &mesa {
+                let Ok(bn) = n.parse::<BackendName>() else {
+                    continue;
+                };
+                let cost = match bn.driver {
+                    Driver::Softpipe => Some(0.0),
+                    // OSMesa's llvmpipe is the same compiler (its own cache: nothing is shared).
+                    d => per_variant.iter().find(|(k, _)| *k == d).map(|(_, c)| *c),
+                };
+                let Some(cost) = cost else {
+                    complete = false;
+                    continue;
+                };
+                if cost == 0.0 {
+                    continue;
+                }
+                match crate::backend::open(n, &crate::backend::Options::default()) {
+                    Ok(b) => {
+                        let states = suite_set.compiled_states_on(b.capabilities());
+                        floor += states as f64 * cost;
+                        longest = longest.max(states as f64 * cost);
+                        heavy += usize::from(states > 0);
+                        parts.push(format!("{n} {states}"));
+                    }
+                    Err(_) => complete = false,
+                }
+            }
+            floor = (floor / cores).max(longest);
+            rows.push(Measurement::new(
+                ids::COLD_FLOOR_STATES,
+                None,
+                floor,
+                "s",
+                format!(
+                    "compiled (API path, state) pairs per backend: {}; x the measured compile time per variant of its driver (softpipe interprets: 0); the sum / {cores} cores, or the longest backend alone if more{}",
+                    parts.join(", "),
+                    if complete { "" } else { "; some backend had no figure" }
+                ),
+            ));
+            // The same floor with the driver's own count: the entries the cold run wrote to its
+            // empty shader cache (distinct states in the driver's terms: formats it stores alike
+            // share a variant).
+            let mean = per_variant.iter().map(|(_, c)| c).sum::<f64>() / per_variant.len() as f64;
+            let usable = cores.min(heavy.max(1) as f64);
+            let floor = cold_entries as f64 * mean / usable;
+            rows.push(Measurement::new(
+                ids::COLD_FLOOR,
+                None,
+                floor,
+                "s",
+                format!(
+                    "{cold_entries} entries written to the empty shader cache by the cold run x {:.1} ms (mean measured compile time per variant) / {usable} cores (the cores, or the backends that compile if fewer)",
+                    mean * 1e3
+                ),
+            ));
+            if let Some(c) = cold_s.filter(|_| floor > 0.0) {
+                rows.push(
+                    Measurement::new(
+                        ids::COLD_OVER_FLOOR,
+                        None,
+                        c / floor,
+                        "x",
+                        format!("cold suite {c:.1} s over the floor of the variants it compiled, {floor:.1} s"),
+                    )
+                    .with_target(Target::new(
+                        Goal::AtMost,
+                        targets17::COLD_OVER_FLOOR,
+                        "issue 17",
+                    )),
+                );
+            }
         }
     }
     let _ = std::fs::remove_dir_all(&out_root);
-    if !total_drivers.is_empty() {
-        let all3 = total_drivers.len() == Driver::MESA.len();
-        for (id, v, how) in [
-            (ids::SUITE_TOTAL, total, "empty shader cache"),
-            (
-                ids::SUITE_TOTAL_CACHED,
-                total_cached,
-                "shader cache filled by the first run",
-            ),
-        ] {
-            let mut r = Measurement::new(
-                id,
-                None,
-                v,
-                "s",
-                format!(
-                    "sum over {} ({what}, {how}){}",
-                    total_drivers.join(", "),
-                    if all3 {
-                        ""
-                    } else {
-                        "; not every driver was measured"
-                    }
-                ),
-            );
-            if !o.quick && all3 {
-                r = r.with_target(Target::new(
-                    Goal::Below,
-                    targets::SUITE_TOTAL_S,
-                    "issue 6 (2-core machine)",
-                ));
-            }
-            rows.push(r);
-        }
-    }
 
     let mut machine = Machine::describe(gl_version.as_deref());
     machine.load_average = load_avg;
@@ -386,4 +566,32 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
 fn display_paths(paths: &[PathBuf]) -> String {
     let v: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
     v.join(", ")
+}
+
+/// Checks per compiled sampler state on each API path of the fixtures (cases/README.md prints the
+/// same table): tests over distinct states, against issue 17's goal.
+fn density_rows(set: &crate::run::CaseSet) -> Vec<Measurement> {
+    let cov = shadowcheck_cases::coverage::Coverage::of(set.cases.iter().map(|l| &l.case));
+    cov.per_path
+        .iter()
+        .map(|(api, d)| {
+            let states = d.states.len().max(1);
+            Measurement::new(
+                ids::CHECKS_PER_STATE,
+                Some(api.key()),
+                d.tests as f64 / states as f64,
+                "checks/state",
+                format!(
+                    "{} tests over {} distinct (target, format, compare mode/func, filters, wraps, depth modes)",
+                    d.tests,
+                    d.states.len()
+                ),
+            )
+            .with_target(Target::new(
+                Goal::AtLeast,
+                targets17::CHECKS_PER_STATE,
+                "issue 17",
+            ))
+        })
+        .collect()
 }

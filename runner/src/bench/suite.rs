@@ -5,7 +5,7 @@
 use crate::backend::{self, Options};
 use crate::events::Fanout;
 use crate::records::{exit, Outcome, Results};
-use crate::run::{self, Settings};
+use crate::run::{self, CaseSet, Settings};
 use std::path::{Path, PathBuf};
 use std::process::Stdio;
 use std::time::Instant;
@@ -37,6 +37,25 @@ impl ShaderCache {
         std::env::set_var("MESA_SHADER_CACHE_DIR", &c.dir);
         std::env::remove_var("MESA_SHADER_CACHE_DISABLE");
         Ok(c)
+    }
+}
+
+impl ShaderCache {
+    /// Files in the cache: one per compiled shader variant (llvmpipe, lavapipe), plus a few for
+    /// the GL front end's programs and zink's pipeline caches.
+    pub fn entries(&self) -> usize {
+        fn count(dir: &Path) -> usize {
+            std::fs::read_dir(dir).map_or(0, |rd| {
+                rd.filter_map(|e| e.ok())
+                    .map(|e| match e.file_type() {
+                        Ok(t) if t.is_dir() => count(&e.path()),
+                        Ok(t) if t.is_file() => 1,
+                        _ => 0,
+                    })
+                    .sum()
+            })
+        }
+        count(&self.dir)
     }
 }
 
@@ -193,15 +212,19 @@ pub struct SuiteRun {
     /// Largest resident set of the run process or its workers (wait4's ru_maxrss), MiB.
     pub peak_rss_mib: f64,
     pub exit_code: i32,
+    /// Seconds each backend spent in its implementation (`run --timings`), in the order printed.
+    pub backend_s: Vec<(String, f64)>,
 }
 
-/// Runs `shadowcheck run --backend B... --fixtures F... --out OUT --no-rerun` and reaps it with
-/// wait4. Exit codes 0 (all passed) and 100 (failures) are both a finished suite.
+/// Runs `shadowcheck run --backend B... --fixtures F... --out OUT --no-rerun --timings EXTRA...`
+/// and reaps it with wait4. Exit codes 0 (all passed) and 100 (failures) are both a finished
+/// suite. The child's stderr goes to `OUT.stderr` (read back for the per-backend timings).
 pub fn suite(
     exe: &Path,
     backends: &[String],
     fixtures: &[PathBuf],
     out: &Path,
+    extra: &[&str],
 ) -> Result<SuiteRun, String> {
     let mut c = std::process::Command::new(exe);
     c.arg("run");
@@ -211,10 +234,18 @@ pub fn suite(
     for f in fixtures {
         c.arg("--fixtures").arg(f);
     }
-    c.arg("--out").arg(out).arg("--no-rerun");
+    c.arg("--out").arg(out).args(["--no-rerun", "--timings"]);
+    c.args(extra);
+    if let Some(parent) = out.parent() {
+        std::fs::create_dir_all(parent)
+            .map_err(|e| format!("creating {}: {e}", parent.display()))?;
+    }
+    let err_path = out.with_extension("stderr");
+    let err_file = std::fs::File::create(&err_path)
+        .map_err(|e| format!("creating {}: {e}", err_path.display()))?;
     c.stdin(Stdio::null())
         .stdout(Stdio::null())
-        .stderr(Stdio::null());
+        .stderr(Stdio::from(err_file));
     let t0 = Instant::now();
     let child = c
         .spawn()
@@ -242,21 +273,126 @@ pub fn suite(
     };
     if exit_code != i32::from(exit::SUCCESS) && exit_code != i32::from(exit::REGRESSIONS) {
         return Err(format!(
-            "`shadowcheck run` ended with {exit_code} (see {})",
-            out.display()
+            "`shadowcheck run` ended with {exit_code} (see {} and {})",
+            out.display(),
+            err_path.display()
         ));
     }
+    let stderr = std::fs::read_to_string(&err_path).unwrap_or_default();
     // ru_maxrss is in KiB on Linux.
     Ok(SuiteRun {
         wall_s,
         peak_rss_mib: ru.ru_maxrss as f64 / 1024.0,
         exit_code,
+        backend_s: parse_timings(&stderr),
+    })
+}
+
+/// The `timings <backend>: N cases sent, X s in the backend ...` lines of `run --timings`.
+fn parse_timings(stderr: &str) -> Vec<(String, f64)> {
+    stderr
+        .lines()
+        .filter_map(|l| {
+            let (name, rest) = l.strip_prefix("timings ")?.split_once(": ")?;
+            let (_, after) = rest.split_once(" cases sent, ")?;
+            let secs = after.split_once(" s in the backend")?.0.parse().ok()?;
+            Some((name.to_string(), secs))
+        })
+        .collect()
+}
+
+/// What compiling one shader variant costs a backend: one case per distinct compiled state
+/// (every `stride`-th state of the set, in order of first appearance) run on a worker with an
+/// empty shader cache, then the same cases again on the same worker (variants in memory).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CompileCost {
+    /// Distinct (API path, state) pairs the sample compiled.
+    pub states: usize,
+    pub cold_s: f64,
+    pub warm_s: f64,
+}
+
+impl CompileCost {
+    /// Seconds per variant: what the cold pass spent beyond the warm pass, per state.
+    pub fn per_variant_s(&self) -> f64 {
+        ((self.cold_s - self.warm_s) / self.states.max(1) as f64).max(0.0)
+    }
+}
+
+/// Measures [`CompileCost`] of `backend_name` over a sample of `set`'s compiled states.
+pub fn compile_cost(
+    backend_name: &str,
+    set: &CaseSet,
+    stride: usize,
+) -> Result<CompileCost, String> {
+    let cache = ShaderCache::fresh("compile")?;
+    let mut b = backend::open(backend_name, &Options::default()).map_err(|e| e.to_string())?;
+    let mut seen = std::collections::HashSet::new();
+    let mut sample = CaseSet::default();
+    for l in &set.cases {
+        if seen.insert(shadowcheck_cases::coverage::state_key(&l.case))
+            && (seen.len() - 1) % stride.max(1) == 0
+        {
+            sample.cases.push(l.clone());
+        }
+    }
+    let states = sample.compiled_states_on(b.capabilities());
+    if states == 0 {
+        return Err(format!("{backend_name} runs none of the sampled states"));
+    }
+    let pass = |b: &mut Box<dyn backend::Backend>| {
+        let t = Instant::now();
+        let _ = run::run_backend(
+            b.as_mut(),
+            &sample,
+            &Results::default(),
+            &Settings::default(),
+            &mut Fanout::default(),
+        );
+        t.elapsed().as_secs_f64()
+    };
+    let cold_s = pass(&mut b);
+    let warm_s = pass(&mut b);
+    drop(b);
+    drop(cache);
+    Ok(CompileCost {
+        states,
+        cold_s,
+        warm_s,
     })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn run_timings_lines_are_read_per_backend() {
+        let err = "egl:llvmpipe:core: 3 pass\ntimings egl:llvmpipe:core: 6425 cases sent, 59.285 s in the backend (108 cases/s), 0.059 s judging and reporting\ntimings soft: 1 cases sent, 0.5 s in the backend (2 cases/s), 0 s judging\nnoise";
+        assert_eq!(
+            parse_timings(err),
+            vec![
+                ("egl:llvmpipe:core".to_string(), 59.285),
+                ("soft".to_string(), 0.5)
+            ]
+        );
+    }
+
+    #[test]
+    fn compile_cost_is_the_cold_excess_per_state() {
+        let c = CompileCost {
+            states: 10,
+            cold_s: 1.2,
+            warm_s: 0.2,
+        };
+        assert!((c.per_variant_s() - 0.1).abs() < 1e-12);
+        let none = CompileCost {
+            states: 0,
+            cold_s: 0.1,
+            warm_s: 0.2,
+        };
+        assert_eq!(none.per_variant_s(), 0.0);
+    }
 
     #[test]
     fn nearest_2d_fixtures_are_found_per_spec() {
