@@ -156,11 +156,11 @@ fn forward(fanout: &mut Fanout, m: &Owned) {
 }
 
 /// Seconds a compilation of one shader variant takes on llvmpipe / lavapipe (reports/BENCH.md,
-/// `compile_s_per_variant`: 17-26 ms on these machines); only the ratio to [`PER_TEST_S`] matters.
-const COMPILE_S: f64 = 20e-3;
+/// `compile_ms_per_variant`: 24-27 ms on these machines); only the ratio to [`PER_TEST_S`] matters.
+const COMPILE_S: f64 = 25e-3;
 /// Seconds of harness and driver work per test once its variant exists (reports/BENCH.md: about
-/// 35 us per case on llvmpipe, warm).
-const PER_TEST_S: f64 = 40e-6;
+/// 30 us per check on llvmpipe, `gl_warm_us_per_check`).
+const PER_TEST_S: f64 = 30e-6;
 
 /// Estimated seconds of a cold run of `b` over `set`: a compilation per distinct (API path, sampler
 /// state) on a backend that compiles per state, plus the per-test cost. Orders the queue only.
