@@ -7,6 +7,7 @@
 //! driver. A row carries its target (a goal of the benchmark, never a test assertion) and whether
 //! this run met it. Nothing here prints: `cmd/bench.rs` renders the [`BenchReport`].
 
+pub mod cold;
 pub mod cpu;
 pub mod floor;
 pub mod machine;

@@ -1,5 +1,6 @@
 //! The bench as a whole: which measurements run, in which order, with which targets.
 
+use super::cold;
 use super::floor::{self, FloorResult};
 use super::suite::{self, nearest_2d_fixtures};
 use super::{
@@ -78,7 +79,7 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
 
     progress("oracle: loading the default fixtures");
     let set = crate::run::load_cases(&o.fixtures);
-    rows.extend(density_rows(&set));
+    rows.extend(cold::density_rows(&set));
     let mut cases: Vec<_> = set.cases.iter().map(|l| l.case.clone()).collect();
     if o.quick {
         cases = cases.into_iter().step_by(10).collect();
@@ -260,35 +261,8 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
         });
     }
 
-    // What one shader variant costs each compiling driver to build (issue 17's floor).
-    let mut per_variant: Vec<(Driver, f64)> = Vec::new();
-    for d in [Driver::Llvmpipe, Driver::Zink] {
-        let name = format!("egl:{}:core", d.key());
-        if !available.contains(&name) {
-            continue;
-        }
-        let stride = if o.quick { 64 } else { 8 };
-        progress(&format!(
-            "{name}: compile time per variant (every {stride}th state, empty shader cache)"
-        ));
-        match suite::compile_cost(&name, &set, stride) {
-            Ok(c) => {
-                per_variant.push((d, c.per_variant_s()));
-                rows.push(Measurement::new(
-                    ids::COMPILE_PER_VARIANT,
-                    Some(&name),
-                    c.per_variant_s() * 1e3,
-                    "ms",
-                    format!("one case per compiled state, {} states (every {stride}th of the fixtures): cold {:.2} s, same cases warm {:.2} s; (cold - warm) / states", c.states, c.cold_s, c.warm_s),
-                ));
-            }
-            Err(e) => unavailable.push(Unavailable {
-                what: "compile time per variant".into(),
-                backend: Some(name),
-                reason: e,
-            }),
-        }
-    }
+    let per_variant =
+        cold::compile_rows(o, &set, &available, &mut rows, &mut unavailable, progress);
 
     // The default suite (quick: the 2D NEAREST fixtures): soft alone, then every Mesa backend in
     // one run, cold, with the cache it filled, and cold again with --fast-compile.
@@ -355,200 +329,21 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
             reason: e,
         }),
     }
-    let mesa: Vec<String> = available.clone();
-    let drivers: Vec<Driver> = Driver::MESA
-        .iter()
-        .copied()
-        .filter(|d| mesa.iter().any(|n| n.split(':').nth(1) == Some(d.key())))
-        .collect();
-    if !mesa.is_empty() {
-        let every = drivers.len() == Driver::MESA.len() && !o.quick;
-        let label = "mesa";
-        let mut cold_s = None;
-        let mut cold_entries = 0;
-        // Cold then cached share one cache; the --fast-compile cold run gets a fresh one.
-        let mut cache = None;
-        for (id, extra, cached) in [
-            (ids::MESA_COLD, &[][..], false),
-            (ids::MESA_CACHED, &[][..], true),
-            (ids::MESA_FAST_COMPILE, &["--fast-compile"][..], false),
-        ] {
-            progress(&format!(
-                "suite: {} ({}){}",
-                mesa.join(", "),
-                if cached {
-                    "shader cache filled"
-                } else {
-                    "empty shader cache"
-                },
-                if extra.is_empty() {
-                    String::new()
-                } else {
-                    format!(", {}", extra.join(" "))
-                }
-            ));
-            if !cached {
-                drop(cache.take());
-                match suite::ShaderCache::fresh(&format!("{label}-{id}")) {
-                    Ok(c) => cache = Some(c),
-                    Err(e) => {
-                        unavailable.push(Unavailable {
-                            what: "suite".into(),
-                            backend: Some(label.into()),
-                            reason: e,
-                        });
-                        continue;
-                    }
-                }
-            }
-            match suite::suite(&o.exe, &mesa, &suite_fixtures, &out_root.join(id), extra) {
-                Ok(run) => {
-                    if id == ids::MESA_COLD {
-                        cold_entries = cache.as_ref().map_or(0, |c| c.entries());
-                    }
-                    let per: Vec<String> = run
-                        .backend_s
-                        .iter()
-                        .map(|(b, t)| format!("{b} {t:.1}"))
-                        .collect();
-                    let mut m = Measurement::new(
-                        id,
-                        None,
-                        run.wall_s,
-                        "s",
-                        format!(
-                            "`shadowcheck run` over the {what}, {} backends, {} at once (-j default), exit {}, peak RSS {:.0} MiB; seconds in each backend: {}",
-                            mesa.len(),
-                            Machine::describe(None).nproc,
-                            run.exit_code,
-                            run.peak_rss_mib,
-                            per.join(", ")
-                        ),
-                    );
-                    if id == ids::MESA_COLD {
-                        cold_s = Some(run.wall_s);
-                        if every {
-                            m = m.with_target(Target::new(
-                                Goal::AtMost,
-                                targets17::MESA_COLD_S,
-                                "issue 17 (2 cores)",
-                            ));
-                        }
-                        rows.push(
-                            Measurement::new(
-                                ids::SUITE_RSS,
-                                Some(label),
-                                run.peak_rss_mib,
-                                "MiB",
-                                "largest process of the cold run, wait4 ru_maxrss".into(),
-                            )
-                            .with_target(Target::new(
-                                Goal::AtMost,
-                                targets::PEAK_RSS_MIB,
-                                "issue 6",
-                            )),
-                        );
-                    }
-                    rows.push(m);
-                }
-                Err(e) => unavailable.push(Unavailable {
-                    what: "suite".into(),
-                    backend: Some(label.into()),
-                    reason: e,
-                }),
-            }
-        }
-        drop(cache);
-        // The floor: every backend's compiled states x its driver's compile time, over the cores.
-        if !per_variant.is_empty() {
-            let quick_set;
-            let suite_set = if o.quick {
-                quick_set = crate::run::load_cases(&suite_fixtures);
-                &quick_set
-            } else {
-                &set
-            };
-            let cores = Machine::describe(None).nproc.max(1) as f64;
-            let mut floor = 0.0;
-            // One backend is one worker thread: the floor is never below its own compile time.
-            let mut longest: f64 = 0.0;
-            // Backends that compile anything: more cores than these cannot be used.
-            let mut heavy = 0usize;
-            let mut parts = Vec::new();
-            let mut complete = true;
-            for n in &mesa {
-                let Ok(bn) = n.parse::<BackendName>() else {
-                    continue;
-                };
-                let cost = match bn.driver {
-                    Driver::Softpipe => Some(0.0),
-                    // OSMesa's llvmpipe is the same compiler (its own cache: nothing is shared).
-                    d => per_variant.iter().find(|(k, _)| *k == d).map(|(_, c)| *c),
-                };
-                let Some(cost) = cost else {
-                    complete = false;
-                    continue;
-                };
-                if cost == 0.0 {
-                    continue;
-                }
-                match crate::backend::open(n, &crate::backend::Options::default()) {
-                    Ok(b) => {
-                        let states = suite_set.compiled_states_on(b.capabilities());
-                        floor += states as f64 * cost;
-                        longest = longest.max(states as f64 * cost);
-                        heavy += usize::from(states > 0);
-                        parts.push(format!("{n} {states}"));
-                    }
-                    Err(_) => complete = false,
-                }
-            }
-            floor = (floor / cores).max(longest);
-            rows.push(Measurement::new(
-                ids::COLD_FLOOR_STATES,
-                None,
-                floor,
-                "s",
-                format!(
-                    "compiled (API path, state) pairs per backend: {}; x the measured compile time per variant of its driver (softpipe interprets: 0); the sum / {cores} cores, or the longest backend alone if more{}",
-                    parts.join(", "),
-                    if complete { "" } else { "; some backend had no figure" }
-                ),
-            ));
-            // The same floor with the driver's own count: the entries the cold run wrote to its
-            // empty shader cache (distinct states in the driver's terms: formats it stores alike
-            // share a variant).
-            let mean = per_variant.iter().map(|(_, c)| c).sum::<f64>() / per_variant.len() as f64;
-            let usable = cores.min(heavy.max(1) as f64);
-            let floor = cold_entries as f64 * mean / usable;
-            rows.push(Measurement::new(
-                ids::COLD_FLOOR,
-                None,
-                floor,
-                "s",
-                format!(
-                    "{cold_entries} entries written to the empty shader cache by the cold run x {:.1} ms (mean measured compile time per variant) / {usable} cores (the cores, or the backends that compile if fewer)",
-                    mean * 1e3
-                ),
-            ));
-            if let Some(c) = cold_s.filter(|_| floor > 0.0) {
-                rows.push(
-                    Measurement::new(
-                        ids::COLD_OVER_FLOOR,
-                        None,
-                        c / floor,
-                        "x",
-                        format!("cold suite {c:.1} s over the floor of the variants it compiled, {floor:.1} s"),
-                    )
-                    .with_target(Target::new(
-                        Goal::AtMost,
-                        targets17::COLD_OVER_FLOOR,
-                        "issue 17",
-                    )),
-                );
-            }
-        }
-    }
+    let mesa = cold::Mesa {
+        backends: &available,
+        fixtures: &suite_fixtures,
+        what,
+        out_root: &out_root,
+    };
+    cold::suite_rows(
+        o,
+        &set,
+        &mesa,
+        &per_variant,
+        &mut rows,
+        &mut unavailable,
+        progress,
+    );
     let _ = std::fs::remove_dir_all(&out_root);
 
     let mut machine = Machine::describe(gl_version.as_deref());
@@ -566,32 +361,4 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
 fn display_paths(paths: &[PathBuf]) -> String {
     let v: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
     v.join(", ")
-}
-
-/// Checks per compiled sampler state on each API path of the fixtures (cases/README.md prints the
-/// same table): tests over distinct states, against issue 17's goal.
-fn density_rows(set: &crate::run::CaseSet) -> Vec<Measurement> {
-    let cov = shadowcheck_cases::coverage::Coverage::of(set.cases.iter().map(|l| &l.case));
-    cov.per_path
-        .iter()
-        .map(|(api, d)| {
-            let states = d.states.len().max(1);
-            Measurement::new(
-                ids::CHECKS_PER_STATE,
-                Some(api.key()),
-                d.tests as f64 / states as f64,
-                "checks/state",
-                format!(
-                    "{} tests over {} distinct (target, format, compare mode/func, filters, wraps, depth modes)",
-                    d.tests,
-                    d.states.len()
-                ),
-            )
-            .with_target(Target::new(
-                Goal::AtLeast,
-                targets17::CHECKS_PER_STATE,
-                "issue 17",
-            ))
-        })
-        .collect()
 }
