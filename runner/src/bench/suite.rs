@@ -3,8 +3,8 @@
 //! default suite per driver (a `shadowcheck run` child, reaped with `wait4` for its rusage).
 
 use crate::backend::{self, Options};
-use crate::events::Fanout;
-use crate::records::{exit, Outcome, Results};
+use crate::events::{Fanout, Timing};
+use crate::records::{exit, Outcome, Results, TestResult};
 use crate::run::{self, CaseSet, Settings};
 use std::path::{Path, PathBuf};
 use std::process::Stdio;
@@ -132,6 +132,18 @@ pub fn nearest_2d_fixtures(root: &Path) -> Vec<PathBuf> {
     v
 }
 
+/// One pass of `b` over `set` as a run makes it, with no reporters, no prior results and no flake
+/// re-runs (what every end-to-end measurement times).
+fn quiet_pass(b: &mut dyn backend::Backend, set: &CaseSet) -> (Vec<TestResult>, Timing) {
+    run::run_backend(
+        b,
+        set,
+        &Results::default(),
+        &Settings::default(),
+        &mut Fanout::default(),
+    )
+}
+
 /// Runs `backend` over `fixtures` in this process with no reporters and no flake re-runs: cold
 /// (empty shader cache), warm (same worker again), cached (new worker, filled cache).
 pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
@@ -146,33 +158,15 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
     let mut b = backend::open(backend_name, &Options::default()).map_err(|e| e.to_string())?;
     let open_s = t1.elapsed().as_secs_f64();
     let t2 = Instant::now();
-    let (results, timing) = run::run_backend(
-        b.as_mut(),
-        &set,
-        &Results::default(),
-        &Settings::default(),
-        &mut Fanout::default(),
-    );
+    let (results, timing) = quiet_pass(b.as_mut(), &set);
     let run_s = t2.elapsed().as_secs_f64();
     let t3 = Instant::now();
-    let _ = run::run_backend(
-        b.as_mut(),
-        &set,
-        &Results::default(),
-        &Settings::default(),
-        &mut Fanout::default(),
-    );
+    let _ = quiet_pass(b.as_mut(), &set);
     let warm_run_s = t3.elapsed().as_secs_f64();
     drop(b);
     let t4 = Instant::now();
     let mut b = backend::open(backend_name, &Options::default()).map_err(|e| e.to_string())?;
-    let _ = run::run_backend(
-        b.as_mut(),
-        &set,
-        &Results::default(),
-        &Settings::default(),
-        &mut Fanout::default(),
-    );
+    let _ = quiet_pass(b.as_mut(), &set);
     drop(b);
     let cached_s = t4.elapsed().as_secs_f64();
     drop(cache);
@@ -342,13 +336,7 @@ pub fn compile_cost(
     }
     let pass = |b: &mut Box<dyn backend::Backend>| {
         let t = Instant::now();
-        let _ = run::run_backend(
-            b.as_mut(),
-            &sample,
-            &Results::default(),
-            &Settings::default(),
-            &mut Fanout::default(),
-        );
+        let _ = quiet_pass(b.as_mut(), &sample);
         t.elapsed().as_secs_f64()
     };
     let cold_s = pass(&mut b);

@@ -230,7 +230,8 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             .iter()
             .filter_map(|b| {
                 let i = b.implementation()?;
-                let gl = b.name().starts_with("egl") || b.name().starts_with("osmesa:");
+                let gl = backend::kinds::kind_of(b.name())
+                    .is_some_and(|k| k.prefix == "egl" || k.prefix == "osmesa");
                 let i = if a.fast_compile && gl {
                     format!("{i} [--fast-compile: GALLIVM_PERF=nopt]")
                 } else {
