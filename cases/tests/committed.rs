@@ -85,9 +85,11 @@ fn committed_size_is_within_budget() {
         .iter()
         .map(|p| std::fs::metadata(p).unwrap().len())
         .sum();
+    // Raised from 24 MiB by issue 17's sweeps: ~94,000 points of ~200 bytes each (coordinates,
+    // reference and exact acceptance intervals).
     assert!(
-        total <= 24 * 1024 * 1024,
-        "{total} bytes committed (budget 24 MiB)"
+        total <= 40 * 1024 * 1024,
+        "{total} bytes committed (budget 40 MiB)"
     );
 }
 
@@ -304,9 +306,14 @@ fn readme_coverage_table_is_current() {
         .into_iter()
         .flat_map(|(_, f)| f.state_cases)
         .collect();
-    let want = Coverage::of(&default_unfilled())
-        .with_states(&states)
-        .markdown();
+    // The committed fixtures, not the unfilled grid: the checks-per-state table counts the sweeps,
+    // which need the oracle (default_grid_regenerates_byte_for_byte holds them to the generator).
+    let committed: Vec<Case> = fixtures::load_path(&fixtures_dir())
+        .unwrap()
+        .into_iter()
+        .flat_map(|(_, f)| f.cases)
+        .collect();
+    let want = Coverage::of(&committed).with_states(&states).markdown();
     assert!(
         have.trim() == want.trim(),
         "the coverage table in cases/README.md is out of date; run `cargo run --release -- gen --grid default -o cases/fixtures --update-readme cases/README.md`"

@@ -481,6 +481,7 @@ impl Renderer {
         for p in pending.drain(..) {
             let v = px.get(p.slot).copied().unwrap_or([f32::NAN; 4]);
             results[p.case].push(PathResult {
+                sweep: vec![],
                 api: p.path.key().to_string(),
                 rgba: Rgba(v.map(|c| c as f64)),
                 stored: None,

@@ -23,6 +23,7 @@ pub mod paths;
 mod programs;
 pub mod shaders;
 pub mod state;
+pub mod sweep;
 #[cfg(test)]
 mod test_case;
 pub mod texture;

@@ -5,6 +5,7 @@ use shadowcheck_model::*;
 /// A `w` x `h` x `layers` D16 case of `target` on the core path.
 pub(crate) fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
     Case {
+        sweep: vec![],
         id: "t".into(),
         spec: Spec::Gl46,
         api: vec![ApiPath::GlslCore],

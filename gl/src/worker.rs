@@ -446,16 +446,23 @@ fn flush_batch(
             Entry::Bad { id, message } => slots.push(Slot::Bad(id, message)),
         }
     }
+    let (cases, points) = super::sweep::expand(cases);
+    let mut points = points.into_iter();
     let mut answers = worker.run_batch(&cases)?.into_iter();
+    let mut next = || {
+        answers
+            .next()
+            .unwrap_or(Answer::Error("internal: missing answer".into()))
+    };
     for slot in slots {
         let msg = match slot {
             Slot::State(c) => worker.run_state(&c),
-            Slot::Lookup(id) => answer_message(
-                id,
-                answers
-                    .next()
-                    .unwrap_or(Answer::Error("internal: missing answer".into())),
-            ),
+            Slot::Lookup(id) => {
+                let main = next();
+                let n = points.next().unwrap_or(0);
+                let swept: Vec<Answer> = (0..n).map(|_| next()).collect();
+                answer_message(id, super::sweep::merge(main, swept))
+            }
             Slot::Bad(id, message) => Reply::Error {
                 case_id: id,
                 message,
@@ -485,6 +492,7 @@ pub trait Serve {
 impl Serve for Worker {
     fn hello(&self) -> Hello {
         Hello {
+            sweeps: false,
             protocol: PROTOCOL_VERSION,
             name: Some(self.display_name()),
             capabilities: self.capabilities().clone(),
@@ -518,7 +526,11 @@ pub fn serve(
                         "worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}"
                     );
                 }
-                let hello = Reply::Hello(worker.hello());
+                // Sweeps are expanded here, whatever the worker behind the loop.
+                let hello = Reply::Hello(Hello {
+                    sweeps: true,
+                    ..worker.hello()
+                });
                 write_line(&mut output, &hello)?;
                 output.flush()?;
             }

@@ -252,6 +252,10 @@ pub struct Case {
     /// The oracle's expectation (present in fixtures).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub expect: Option<Expectation>,
+    /// More lookups on the same texture and sampling state, each with its own expectation
+    /// ([`crate::sweep`]); empty for a case of one lookup.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub sweep: Vec<crate::sweep::SweepPoint>,
 }
 
 impl Sampler {

@@ -128,16 +128,7 @@ impl Expectation {
 
     /// Does one channel's value `v` satisfy `ch` under `profile`?
     pub fn channel_accepts(&self, profile: Profile, ch: Channel, v: f64) -> bool {
-        let acc = self.channel_acceptance(profile, ch);
-        match ch {
-            Channel::Zero => v == 0.0,
-            Channel::One => v == 1.0,
-            Channel::Unused => true,
-            Channel::ROrZero => v == 0.0 || acc.is_some_and(|a| a.contains(v)),
-            Channel::R | Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => {
-                acc.is_some_and(|a| a.contains(v))
-            }
-        }
+        channel_ok(ch, self.channel_acceptance(profile, ch), v)
     }
 
     /// The strictest profile accepting one observation, trying the profiles strictest first.
@@ -153,6 +144,20 @@ impl Expectation {
             }
         }
         Some(Judgement::Outside)
+    }
+}
+
+/// Does one channel's value `v` satisfy `ch`, where `acc` is the acceptance set the channel reads
+/// (r's or its gather component's; `None` for the constant channels)?
+pub fn channel_ok(ch: Channel, acc: Option<&Acceptance>, v: f64) -> bool {
+    match ch {
+        Channel::Zero => v == 0.0,
+        Channel::One => v == 1.0,
+        Channel::Unused => true,
+        Channel::ROrZero => v == 0.0 || acc.is_some_and(|a| a.contains(v)),
+        Channel::R | Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => {
+            acc.is_some_and(|a| a.contains(v))
+        }
     }
 }
 

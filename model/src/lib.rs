@@ -2,6 +2,7 @@
 //!
 //! - [`enums`]: specification variants, API paths, GL state values (with their GL tokens);
 //! - [`case`]: a test case (texture, sampler, lookup);
+//! - [`sweep`]: more lookups of a case on the same texture and sampling state;
 //! - [`state`]: a TexParameter / GetTexParameter state case, its expectation and observation;
 //! - [`expect`]: the oracle's expectation, acceptance sets, observations and footprints;
 //! - [`validate`]: checks that reject malformed cases with errors naming the field.
@@ -15,6 +16,7 @@ pub mod expect;
 pub mod keymap;
 pub mod real;
 pub mod state;
+pub mod sweep;
 pub mod validate;
 
 pub use case::*;
@@ -24,6 +26,7 @@ pub use keymap::{KeyMap, Keyed};
 pub use state::{
     GlError, StateCall, StateCase, StateExpect, StateObserved, StatePname, StateType, StateValue,
 };
+pub use sweep::{PointExpectation, SweepPoint, MAX_SWEEP_POINTS};
 
 /// Version of the on-disk formats (fixtures, observations, results). Bumped on breaking change.
 pub const SCHEMA_VERSION: u32 = 1;

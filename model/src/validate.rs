@@ -254,6 +254,42 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
     if l.offset != [0; 3] {
         validate_offset(case)?;
     }
+    validate_sweep(case)
+}
+
+/// A sweep's points: a bounded number, on a filtered lookup (a gather answers four values, a
+/// point one), each with a usable projective divisor.
+fn validate_sweep(case: &Case) -> Result<(), ModelError> {
+    if case.sweep.is_empty() {
+        return Ok(());
+    }
+    if case.sweep.len() > crate::MAX_SWEEP_POINTS {
+        return Err(invalid(
+            case,
+            "sweep",
+            format!(
+                "{} points (at most {})",
+                case.sweep.len(),
+                crate::MAX_SWEEP_POINTS
+            ),
+        ));
+    }
+    if case.lookup.gather.is_some() {
+        return Err(invalid(
+            case,
+            "sweep",
+            "a gather lookup has no sweep (each point answers one value)",
+        ));
+    }
+    for (k, p) in case.sweep.iter().enumerate() {
+        if case.lookup.projective && p.coord[3] == 0.0 {
+            return Err(invalid(
+                case,
+                format!("sweep[{k}].coord[3]"),
+                "projective lookup with q = 0",
+            ));
+        }
+    }
     Ok(())
 }
 
@@ -319,6 +355,7 @@ mod tests {
 
     fn case() -> Case {
         Case {
+            sweep: vec![],
             id: "t".into(),
             spec: Spec::Gl46,
             api: vec![ApiPath::GlslCore],

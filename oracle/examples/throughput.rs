@@ -29,6 +29,7 @@ fn case(filter: Filter, i: usize) -> Case {
         stencil: None,
     });
     Case {
+        sweep: vec![],
         id: format!("bench/{i}"),
         spec: Spec::Gl46,
         api: vec![ApiPath::GlslCore],

@@ -220,6 +220,7 @@ fn wide_case() -> impl Strategy<Value = Case> {
                 s.wrap_t = rules.wraps[wt % rules.wraps.len()];
                 s.border = [coord[3] as f32, 0.0, 0.0, 0.0];
                 Case {
+                    sweep: vec![],
                     id: "wide".into(),
                     spec,
                     api: vec![rules.apis[api % rules.apis.len()]],

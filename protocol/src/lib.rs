@@ -12,7 +12,8 @@ pub use capabilities::{Capabilities, Feature, Support, FEATURES, TEX_PARAMETER};
 
 use serde::{Deserialize, Serialize};
 use shadowcheck_model::{
-    ApiPath, Case, Expectation, Lookup, Sampler, Spec, StateCase, StateObserved, Texels, Texture,
+    ApiPath, Case, Expectation, Lookup, PointExpectation, Sampler, Spec, StateCase, StateObserved,
+    SweepPoint, Texels, Texture,
 };
 
 /// The protocol version both sides speak.
@@ -105,6 +106,10 @@ impl Request {
                 sampler: &c.sampler,
                 lookup: &c.lookup,
                 expect: if with_expect { c.expect.as_ref() } else { None },
+                sweep: Points {
+                    points: &c.sweep,
+                    with_expect,
+                },
             },
         };
         // Serializing plain data into a Vec cannot fail (no maps with non-string keys here).
@@ -161,6 +166,49 @@ struct CaseOut<'a> {
     lookup: &'a Lookup,
     #[serde(skip_serializing_if = "Option::is_none")]
     expect: Option<&'a Expectation>,
+    #[serde(skip_serializing_if = "Points::is_empty")]
+    sweep: Points<'a>,
+}
+
+/// A case's sweep points on the wire: coordinates and reference, the expectations only for an
+/// implementation that asked for them.
+struct Points<'a> {
+    points: &'a [SweepPoint],
+    with_expect: bool,
+}
+
+impl Points<'_> {
+    fn is_empty(&self) -> bool {
+        self.points.is_empty()
+    }
+}
+
+impl Serialize for Points<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeSeq;
+        #[derive(Serialize)]
+        struct Bare<'a> {
+            #[serde(with = "shadowcheck_model::real::array4")]
+            coord: [f64; 4],
+            #[serde(with = "shadowcheck_model::real")]
+            dref: f64,
+            #[serde(skip_serializing_if = "Option::is_none")]
+            expect: Option<&'a PointExpectation>,
+        }
+        let mut seq = s.serialize_seq(Some(self.points.len()))?;
+        for p in self.points {
+            seq.serialize_element(&Bare {
+                coord: p.coord,
+                dref: p.dref,
+                expect: if self.with_expect {
+                    p.expect.as_ref()
+                } else {
+                    None
+                },
+            })?;
+        }
+        seq.end()
+    }
 }
 
 #[derive(Serialize)]
@@ -184,6 +232,11 @@ pub struct Hello {
     /// Test doubles only (the mock): ask the runner to send each case with its `expect`.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub wants_expect: bool,
+    /// The implementation runs sweep cases (PROTOCOL.md §2): it is sent a case with its `sweep`
+    /// and answers each path with one `sweep` RGBA per point. Without it the runner sends each
+    /// point as a case of its own.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub sweeps: bool,
 }
 
 /// One API path's result in an observation.
@@ -198,6 +251,9 @@ pub struct PathResult {
     /// How the implementation realized this path (GLSL function, LOD method); informative only.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// A sweep case's points, in order: the RGBA of each (PROTOCOL.md §2). Empty otherwise.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub sweep: Vec<Rgba>,
 }
 
 /// An API path of a case that the implementation did not run, and why.

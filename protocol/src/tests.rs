@@ -80,6 +80,7 @@ fn answers_parse_with_non_finite_channels_and_unknown_fields() {
 #[test]
 fn replies_serialize_as_the_protocol_writes_them() {
     let hello = Reply::Hello(Hello {
+        sweeps: false,
         protocol: PROTOCOL_VERSION,
         name: Some("w".into()),
         capabilities: Capabilities {
@@ -99,6 +100,7 @@ fn replies_serialize_as_the_protocol_writes_them() {
     let obs = Reply::Observation {
         case_id: "x".into(),
         results: vec![PathResult {
+            sweep: vec![],
             api: "core".into(),
             rgba: Rgba([f64::NAN, 0.0, 1.0, 1.0]),
             stored: None,

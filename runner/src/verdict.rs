@@ -263,6 +263,71 @@ pub fn judge(
     }
 }
 
+/// The verdict on a test's lookups: the case's own and its sweep's points ([`Case::sweep`]), and
+/// the RGBA the verdict is about. The outcome is the worst of them (Pass < Warn < Skip < Fail);
+/// the reason, expected values and footprint are those of the first lookup with that outcome,
+/// and a point's reason names it. A point inside its strictest acceptance set is a pass without
+/// building its case; any other is judged like a case of its own ([`Case::point_case`]), the
+/// backend's stored texels included.
+pub fn judge_sweep(
+    case: &Case,
+    api: shadowcheck_model::ApiPath,
+    rgba: [f64; 4],
+    stored: Option<&Texels>,
+    sweep: &[[f64; 4]],
+) -> (Judged, [f64; 4]) {
+    let main = judge(case, api, rgba, stored);
+    if case.sweep.is_empty() && sweep.is_empty() {
+        return (main, rgba);
+    }
+    if sweep.len() != case.sweep.len() {
+        let j = Judged {
+            outcome: Outcome::Fail,
+            reason: Some(format!(
+                "implementation error: {} sweep results; the case has {} points",
+                sweep.len(),
+                case.sweep.len()
+            )),
+            expected: None,
+            footprint: None,
+        };
+        return (j, rgba);
+    }
+    let rank = |o: Outcome| match o {
+        Outcome::Pass => 0,
+        Outcome::Warn => 1,
+        Outcome::Skip => 2,
+        _ => 3,
+    };
+    let layout = case.expect.as_ref().and_then(|e| e.layout.get(&api));
+    let fixture_texels = case.texture.levels.first().map(|l| &l.depth);
+    let same_texels = stored.is_none() || stored == fixture_texels;
+    let mut worst = (main, rgba);
+    for (k, (p, &got)) in case.sweep.iter().zip(sweep).enumerate() {
+        let fast = same_texels
+            && layout
+                .zip(p.expect.as_ref())
+                .is_some_and(|(l, e)| e.passes(l, got));
+        if fast {
+            continue;
+        }
+        let Some(point) = case.point_case(k) else {
+            continue;
+        };
+        let mut j = judge(&point, api, got, stored);
+        if rank(j.outcome) > rank(worst.0.outcome) {
+            j.reason = j.reason.map(|r| {
+                format!(
+                    "sweep point {k} (coord {:?}, Dref {}): {r}",
+                    p.coord, p.dref
+                )
+            });
+            worst = (j, got);
+        }
+    }
+    worst
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -296,6 +361,7 @@ mod tests {
             }
         });
         Case {
+            sweep: vec![],
             id: "t".into(),
             spec: Spec::Gl46,
             api: vec![ApiPath::GlslCore],

@@ -317,6 +317,21 @@ impl SoftUnit {
         })
     }
 
+    /// A sweep case on one API path: the RGBA of the case's own lookup, then of each point of its
+    /// sweep in order (texture and sampler state prepared once; a point changes only the
+    /// coordinates and the reference).
+    pub fn sample_sweep(&self, case: &Case, api: ApiPath) -> Result<Vec<[f32; 4]>, SoftError> {
+        let mut tex = PreparedTexture::default();
+        let (st, coords) = self.prepare_case(case, &mut tex)?;
+        let mut out = Vec::with_capacity(case.checks());
+        out.push(self.finish(case, api, &tex, &st, &coords)?);
+        for p in &case.sweep {
+            let c = self.coords(case.texture.target, &case.point_lookup(p))?;
+            out.push(self.finish(case, api, &tex, &st, &c)?);
+        }
+        Ok(out)
+    }
+
     /// RGBA for every API path of the case, in `case.api` order.
     pub fn sample_all(&self, case: &Case) -> Vec<(ApiPath, Result<[f32; 4], SoftError>)> {
         let mut out = Vec::with_capacity(case.api.len());

@@ -14,6 +14,7 @@ fn d16(x: f64) -> u32 {
 /// A 2D case with one `w`×`h` level of unorm D16 texels, NEAREST, Dref 0.5, lookup at the centre.
 fn case(spec: Spec, w: u32, h: u32, texels: Vec<u32>, func: CompareFunc) -> Case {
     Case {
+        sweep: vec![],
         id: "witness".into(),
         spec,
         api: vec![match spec {

@@ -302,6 +302,7 @@ pub fn answers(mut built: Built, cases: &[Case], page: PageAnswer) -> Vec<Answer
         }
         let v = px.get(slot).copied().unwrap_or([f32::NAN; 4]);
         results[ci].push(PathResult {
+            sweep: vec![],
             api,
             rgba: Rgba(v.map(|c| c as f64)),
             stored: None,

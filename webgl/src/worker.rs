@@ -170,6 +170,7 @@ impl WebglWorker {
 impl Serve for WebglWorker {
     fn hello(&self) -> Hello {
         Hello {
+            sweeps: false,
             protocol: PROTOCOL_VERSION,
             name: Some(self.display_name()),
             capabilities: self.caps.clone(),

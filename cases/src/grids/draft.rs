@@ -125,6 +125,7 @@ impl Draft {
             api.retain(|a| matches!(a, ApiPath::GlslCore | ApiPath::Es300));
         }
         Case {
+            sweep: vec![],
             id,
             spec: self.cell.spec,
             api,

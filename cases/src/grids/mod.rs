@@ -9,6 +9,7 @@ pub mod gather;
 pub mod offset;
 pub mod random;
 pub mod specs;
+pub mod sweep;
 pub mod tex_params;
 
 use crate::dsl;
@@ -295,6 +296,7 @@ pub fn for_each_file(
     let cases = to_cases(name, drafts(name, seed)?)?;
     let (files, mut cases): (Vec<String>, Vec<Case>) = cases.into_iter().unzip();
     fill_expectations(name, &mut cases)?;
+    sweep::add_sweeps(&mut cases);
     for (rel, file) in into_files(name, seed, files.into_iter().zip(cases).collect()) {
         sink(rel, file)?;
     }

@@ -48,6 +48,7 @@ pub fn case2d(
         None
     };
     Case {
+        sweep: vec![],
         id: format!(
             "test/{}/{}/{}/{}",
             spec.key(),

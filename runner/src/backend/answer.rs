@@ -8,6 +8,17 @@ use shadowcheck_protocol::{PathResult, PathSkip, Reply, StateResult};
 
 pub fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
     match a {
+        Reply::Observation { results, .. }
+            if results.iter().any(|r| r.sweep.len() != case.sweep.len()) =>
+        {
+            let r = results.iter().find(|r| r.sweep.len() != case.sweep.len());
+            CaseOutcome::Error(format!(
+                "{} sweep results for API path `{}`; the case has {} points",
+                r.map_or(0, |r| r.sweep.len()),
+                r.map_or("", |r| r.api.as_str()),
+                case.sweep.len()
+            ))
+        }
         Reply::Observation {
             results, skipped, ..
         } => collect(
@@ -16,15 +27,18 @@ pub fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
                 .into_iter()
                 .map(
                     |PathResult {
-                         api, rgba, stored, ..
+                         api,
+                         rgba,
+                         stored,
+                         sweep,
+                         ..
                      }| {
-                        (
-                            api,
-                            ApiOutcome::Rgba {
-                                rgba: rgba.0,
-                                stored,
-                            },
-                        )
+                        let outcome = ApiOutcome::Rgba {
+                            rgba: rgba.0,
+                            stored,
+                            sweep: sweep.into_iter().map(|p| p.0).collect(),
+                        };
+                        (api, outcome)
                     },
                 )
                 .collect(),

@@ -192,6 +192,8 @@ pub struct ExecBackend {
     group: usize,
     caps: Capabilities,
     wants_expect: bool,
+    /// The hello's `sweeps`: the implementation is sent sweep cases whole.
+    sweeps: bool,
     proc: Option<Proc>,
     diags: Arc<Mutex<Vec<String>>>,
     /// How many processes were started (the first one included).
@@ -231,6 +233,7 @@ impl ExecBackend {
             group: opts.group.max(1),
             caps: Capabilities::default(),
             wants_expect: false,
+            sweeps: false,
             proc: None,
             diags: Arc::new(Mutex::new(vec![])),
             spawns: 0,
@@ -248,6 +251,7 @@ impl ExecBackend {
         if let Some(h) = hello {
             b.caps = h.capabilities;
             b.wants_expect = h.wants_expect;
+            b.sweeps = h.sweeps;
             if let Some(n) = h.name {
                 b.push_diag(format!("implementation: {n}"));
                 b.implementation = Some(n);
@@ -545,7 +549,11 @@ impl Backend for ExecBackend {
         self.group
     }
     fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
-        self.run_group(cases)
+        if self.sweeps || cases.iter().all(|c| c.sweep.is_empty()) {
+            self.run_group(cases)
+        } else {
+            super::sweep::run_expanded(cases, |flat| self.run_group(flat))
+        }
     }
     fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {
         self.run_group(cases)

@@ -5,7 +5,8 @@
 //! The script is a comma-separated list of `action=REGEX` (REGEX on the case id; `action` alone
 //! means every case); the first matching action wins, the default is `pass`:
 //! - `pass`: answers a value inside the strict acceptance set, laid out per API path;
-//! - `warn`: a value inside quality but outside strict (Fail-level value when there is none);
+//! - `warn`: a value inside quality but outside strict (Fail-level value when there is none; a
+//!   sweep point with none answers its strict value);
 //! - `fail`: r = -1 (outside every acceptance set);
 //! - `skip`: answers skip; `error`: answers an error message;
 //! - `crash`: exits with status 3 on reading the case; `hang`: stops answering;
@@ -187,6 +188,9 @@ fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Reply {
             }
         }
         Action::Fail => Some(-1.0),
+        // A sweep point (sent as a case of its own: the mock runs no sweeps) with no value
+        // between strict and quality answers its strict value, so its test stays a Warn.
+        Action::Warn if case.id.contains("/sweep=") => warn_value(case).or(strict_value(case)),
         Action::Warn => warn_value(case).or(Some(-1.0)),
         Action::Flaky if seen.insert(case.id.clone()) => Some(-1.0),
         _ => strict_value(case),
@@ -207,6 +211,7 @@ fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Reply {
         .iter()
         .flat_map(|&a| std::iter::repeat_n(a, copies))
         .map(|a| PathResult {
+            sweep: vec![],
             api: a.key().to_string(),
             rgba: Rgba(laid_out(case, a, r)),
             stored: None,
@@ -252,6 +257,7 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
         match req {
             Request::Hello { .. } => {
                 let hello = Reply::Hello(Hello {
+                    sweeps: false,
                     protocol: PROTOCOL_VERSION,
                     name: Some("shadowcheck mock".into()),
                     capabilities: Capabilities::all(),

@@ -16,6 +16,7 @@ pub mod gl;
 pub mod kinds;
 pub mod mock;
 pub mod soft;
+pub mod sweep;
 pub mod webgl;
 
 use shadowcheck_model::{ApiPath, Case, StateCase, StateObserved, Texels};
@@ -29,6 +30,8 @@ pub enum ApiOutcome {
     Rgba {
         rgba: [f64; 4],
         stored: Option<Texels>,
+        /// A sweep case's points, in order (empty for a case without a sweep).
+        sweep: Vec<[f64; 4]>,
     },
     /// What a state case observed (its error and the value read back).
     State(StateObserved),

@@ -59,10 +59,16 @@ impl SoftBackend {
             .api
             .iter()
             .map(|&api| {
-                let out = match unit.sample(case, api) {
+                let sampled = if case.sweep.is_empty() {
+                    unit.sample(case, api).map(|v| vec![v])
+                } else {
+                    unit.sample_sweep(case, api)
+                };
+                let out = match sampled {
                     Ok(v) => ApiOutcome::Rgba {
-                        rgba: v.map(f64::from),
+                        rgba: v.first().map_or([f64::NAN; 4], |v| v.map(f64::from)),
                         stored: None,
+                        sweep: v.iter().skip(1).map(|v| v.map(f64::from)).collect(),
                     },
                     Err(e) => ApiOutcome::Skip(e.to_string()),
                 };

@@ -20,10 +20,11 @@ pub fn density_rows(set: &CaseSet) -> Vec<Measurement> {
             Measurement::new(
                 ids::CHECKS_PER_STATE,
                 Some(api.key()),
-                d.tests as f64 / states as f64,
+                d.checks as f64 / states as f64,
                 "checks/state",
                 format!(
-                    "{} tests over {} distinct (target, format, compare mode/func, filters, wraps, depth modes)",
+                    "{} checks ({} tests with their sweeps) over {} distinct (target, format, compare mode/func, filters, wraps, depth modes)",
+                    d.checks,
                     d.tests,
                     d.states.len()
                 ),

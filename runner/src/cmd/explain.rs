@@ -217,6 +217,7 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
         id += &format!("/offset={}_{}_{}", offset[0], offset[1], offset[2]);
     }
     Ok(Case {
+        sweep: vec![],
         id,
         spec,
         api,

@@ -7,6 +7,7 @@ use shadowcheck_model::*;
 /// (Dt = 1/3), LEQUAL, Dref 0.5: Table 8.23 gives r = 0 (0.5 <= 1/3 is false).
 fn subject() -> Subject {
     let case = Case {
+        sweep: vec![],
         id: "gl46/2d/d16/nearest/lequal/unit".into(),
         spec: Spec::Gl46,
         api: vec![ApiPath::GlslCore],

@@ -262,9 +262,14 @@ fn judge_outcome(
                         Outcome::Fail,
                         Some("the backend answered a lookup case with a state result".into()),
                     ),
-                    Some(ApiOutcome::Rgba { rgba, stored }) => {
-                        let j = verdict::judge(sent, api, *rgba, stored.as_ref());
-                        r.observed = Some(Rgba(*rgba));
+                    Some(ApiOutcome::Rgba {
+                        rgba,
+                        stored,
+                        sweep,
+                    }) => {
+                        let (j, shown) =
+                            verdict::judge_sweep(sent, api, *rgba, stored.as_ref(), sweep);
+                        r.observed = Some(Rgba(shown));
                         r.expected = j.expected;
                         r.footprint = j.footprint;
                         (j.outcome, j.reason)

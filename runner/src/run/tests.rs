@@ -33,6 +33,7 @@ impl Backend for Fake {
                                 ApiOutcome::Rgba {
                                     rgba: [1.0, 1.0, 1.0, 1.0],
                                     stored: None,
+                                    sweep: vec![],
                                 },
                             )
                         })
@@ -85,6 +86,7 @@ fn case(id: &str, spec: Spec, api: Vec<ApiPath>) -> Case {
         })
         .collect();
     Case {
+        sweep: vec![],
         id: id.into(),
         spec,
         api,

@@ -94,6 +94,7 @@ pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
         ],
     );
     Case {
+        sweep: vec![],
         id: format!(
             "gl46/2d/d16/nearest/{}/ref={dref}/texel={x}_{y}",
             func.key()

@@ -191,6 +191,7 @@ pub fn d16_case(id: &str, spec: Spec, api: &[ApiPath], target: Target, c: u32, d
         _ => [0.25, 0.75, 0.0, 1.0],
     };
     Case {
+        sweep: vec![],
         id: id.to_string(),
         spec,
         api: api.to_vec(),

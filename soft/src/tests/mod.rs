@@ -29,6 +29,7 @@ pub(super) fn case2d(
         Texels::Float(texels.iter().map(|&x| x as f32 / 4.0).collect())
     };
     Case {
+        sweep: vec![],
         id: "t".into(),
         spec,
         api: vec![api],

@@ -1,0 +1,104 @@
+//! Sweep cases in a worker: each point of a case's sweep is run as a case of its own, right
+//! after the case's own lookup, so the renderer sees one group of cases sharing texture and
+//! sampler state (one texture, one batched draw where the path allows); the answers are then
+//! folded back into one answer per case, the points' RGBA in the `sweep` of each path's result.
+
+use super::draw::Answer;
+use shadowcheck_model::Case;
+
+/// The cases to run for `cases`, sweeps expanded, and how many points each input case has.
+pub fn expand(cases: Vec<Case>) -> (Vec<Case>, Vec<usize>) {
+    let total: usize = cases.iter().map(Case::checks).sum();
+    let mut flat = Vec::with_capacity(total);
+    let mut points = Vec::with_capacity(cases.len());
+    for mut c in cases {
+        let n = c.sweep.len();
+        points.push(n);
+        let expanded: Vec<Case> = (0..n).filter_map(|k| c.point_case(k)).collect();
+        c.sweep.clear();
+        flat.push(c);
+        flat.extend(expanded);
+    }
+    (flat, points)
+}
+
+/// Folds the answers of a case's points into the answer for its own lookup. A point that was not
+/// observed on a path the case was observed on makes the case an error naming the point: the
+/// points share the case's state, so they run where it runs.
+pub fn merge(main: Answer, points: impl IntoIterator<Item = Answer>) -> Answer {
+    let Answer::Observation(mut results, skipped) = main else {
+        return main;
+    };
+    for (k, a) in points.into_iter().enumerate() {
+        let observed = match a {
+            Answer::Observation(r, _) => r,
+            Answer::Skip(why) => return Answer::Error(format!("sweep point {k} skipped: {why}")),
+            Answer::Error(e) => return Answer::Error(format!("sweep point {k}: {e}")),
+        };
+        for r in results.iter_mut() {
+            match observed.iter().find(|p| p.api == r.api) {
+                Some(p) => r.sweep.push(p.rgba),
+                None => {
+                    return Answer::Error(format!(
+                        "sweep point {k}: no result on API path `{}`",
+                        r.api
+                    ))
+                }
+            }
+        }
+    }
+    Answer::Observation(results, skipped)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use shadowcheck_model::{SweepPoint, Target};
+    use shadowcheck_protocol::{PathResult, Rgba};
+
+    fn result(v: f64) -> PathResult {
+        PathResult {
+            api: "core".into(),
+            rgba: Rgba([v, 0.0, 0.0, 1.0]),
+            stored: None,
+            note: None,
+            sweep: vec![],
+        }
+    }
+
+    #[test]
+    fn points_run_after_their_case_and_fold_back_in_order() {
+        let mut c = crate::test_case::case(Target::T2d, 2, 1, 1);
+        c.sweep = (0..3)
+            .map(|k| SweepPoint {
+                coord: [0.25, 0.5, 0.0, 1.0],
+                dref: k as f64 / 4.0,
+                expect: None,
+            })
+            .collect();
+        let plain = crate::test_case::case(Target::T2d, 2, 1, 1);
+        let (flat, n) = expand(vec![plain, c]);
+        assert_eq!(n, vec![0, 3]);
+        assert_eq!(flat.len(), 5);
+        assert_eq!(flat[3].id, "t/sweep=1");
+        assert_eq!(flat[3].lookup.dref, 0.25);
+        assert!(flat.iter().all(|c| c.sweep.is_empty()));
+
+        let obs = |v| Answer::Observation(vec![result(v)], vec![]);
+        let merged = merge(obs(1.0), [obs(0.0), obs(0.5), obs(1.0)]);
+        let Answer::Observation(r, _) = merged else {
+            panic!("{merged:?}")
+        };
+        let got: Vec<f64> = r[0].sweep.iter().map(|p| p.0[0]).collect();
+        assert_eq!(got, vec![0.0, 0.5, 1.0]);
+        // A point that failed to run makes its case an error that names it.
+        let merged = merge(
+            obs(1.0),
+            [obs(0.0), Answer::Error("GL_OUT_OF_MEMORY".into())],
+        );
+        assert_eq!(
+            merged,
+            Answer::Error("sweep point 1: GL_OUT_OF_MEMORY".into())
+        );
+    }
+}
