@@ -16,6 +16,9 @@ use crate::expect::{Acceptance, Expectation};
 use crate::keymap::KeyMap;
 use serde::{Deserialize, Serialize};
 
+/// What a sweep point's id adds to its case's id, before the point's index ([`Case::point_id`]).
+pub const SWEEP_ID_TAG: &str = "/sweep=";
+
 /// Most points a case may carry (a bound on absurd input, far above what the grid writes).
 pub const MAX_SWEEP_POINTS: usize = 4096;
 
@@ -89,7 +92,7 @@ impl Case {
 
     /// The id of sweep point `k` when it is shown or run as a case of its own.
     pub fn point_id(&self, k: usize) -> String {
-        format!("{}/sweep={k}", self.id)
+        format!("{}{SWEEP_ID_TAG}{k}", self.id)
     }
 
     /// Sweep point `k` as a case of its own (id [`Case::point_id`], no sweep): what a backend that

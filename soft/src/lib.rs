@@ -33,6 +33,18 @@ pub mod unitstate;
 pub mod witness;
 pub mod wrap;
 
+/// Runs `f` on this thread's scratch texture buffer (allocation-free after warm-up), or on a
+/// fresh one if the scratch is in use (re-entered, which cannot happen today).
+fn with_scratch<R>(f: impl FnOnce(&mut PreparedTexture) -> R) -> R {
+    thread_local! {
+        static SCRATCH: std::cell::RefCell<PreparedTexture> = std::cell::RefCell::new(PreparedTexture::default());
+    }
+    SCRATCH.with(|t| match t.try_borrow_mut() {
+        Ok(mut tex) => f(&mut tex),
+        Err(_) => f(&mut PreparedTexture::default()),
+    })
+}
+
 #[cfg(test)]
 mod tests;
 
@@ -307,29 +319,23 @@ impl SoftUnit {
     ///
     /// Allocation-free after warm-up: the texture is converted into a per-thread scratch buffer.
     pub fn sample(&self, case: &Case, api: ApiPath) -> Result<[f32; 4], SoftError> {
-        thread_local! {
-            static SCRATCH: std::cell::RefCell<PreparedTexture> = std::cell::RefCell::new(PreparedTexture::default());
-        }
-        SCRATCH.with(|t| match t.try_borrow_mut() {
-            Ok(mut tex) => self.sample_with(case, api, &mut tex),
-            // Re-entered (cannot happen today): fall back to a fresh buffer.
-            Err(_) => self.sample_with(case, api, &mut PreparedTexture::default()),
-        })
+        with_scratch(|tex| self.sample_with(case, api, tex))
     }
 
     /// A sweep case on one API path: the RGBA of the case's own lookup, then of each point of its
     /// sweep in order (texture and sampler state prepared once; a point changes only the
     /// coordinates and the reference).
     pub fn sample_sweep(&self, case: &Case, api: ApiPath) -> Result<Vec<[f32; 4]>, SoftError> {
-        let mut tex = PreparedTexture::default();
-        let (st, coords) = self.prepare_case(case, &mut tex)?;
-        let mut out = Vec::with_capacity(case.checks());
-        out.push(self.finish(case, api, &tex, &st, &coords)?);
-        for p in &case.sweep {
-            let c = self.coords(case.texture.target, &case.point_lookup(p))?;
-            out.push(self.finish(case, api, &tex, &st, &c)?);
-        }
-        Ok(out)
+        with_scratch(|tex| {
+            let (st, coords) = self.prepare_case(case, tex)?;
+            let mut out = Vec::with_capacity(case.checks());
+            out.push(self.finish(case, api, tex, &st, &coords)?);
+            for p in &case.sweep {
+                let c = self.coords(case.texture.target, &case.point_lookup(p))?;
+                out.push(self.finish(case, api, tex, &st, &c)?);
+            }
+            Ok(out)
+        })
     }
 
     /// RGBA for every API path of the case, in `case.api` order.

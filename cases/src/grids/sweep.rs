@@ -10,6 +10,7 @@
 //! oracle's, computed like any case's; a point the oracle rejects, or whose result layout differs
 //! from its host's, is not written.
 
+use crate::build::{real, Stored};
 use crate::coverage::{state_key, StateKey};
 use shadowcheck_model::{
     ApiPath, Case, CompareMode, PointExpectation, Spec, SweepPoint, Target, Texels,
@@ -152,13 +153,10 @@ fn can_host(c: &Case) -> bool {
 /// The references of a sweep: each distinct stored value of level base, just below and just
 /// above it, 0 and 1 (sorted, distinct).
 fn references(c: &Case) -> Vec<f64> {
-    let mut stored: Vec<f64> = match (&c.texture.levels[0].depth, c.texture.format.unorm_bits()) {
-        (Texels::Unorm(v), Some(bits)) => {
-            let max = ((1u64 << bits) - 1) as f64;
-            v.iter().map(|&x| x as f64 / max).collect()
-        }
-        (Texels::Float(v), _) => v.iter().map(|&x| (x as f64).clamp(0.0, 1.0)).collect(),
-        (Texels::Unorm(v), None) => v.iter().map(|&x| x as f64).collect(),
+    let format = c.texture.format;
+    let mut stored: Vec<f64> = match &c.texture.levels[0].depth {
+        Texels::Unorm(v) => v.iter().map(|&x| real(format, Stored::Unorm(x))).collect(),
+        Texels::Float(v) => v.iter().map(|&x| real(format, Stored::Float(x))).collect(),
     };
     stored.sort_by(f64::total_cmp);
     stored.dedup();
@@ -173,6 +171,13 @@ fn references(c: &Case) -> Vec<f64> {
     refs.sort_by(f64::total_cmp);
     refs.dedup();
     refs
+}
+
+/// The cube-map major axis of a direction (s, t, r): the component of largest magnitude.
+fn major_axis(coord: &[f64; 4]) -> usize {
+    (0..3)
+        .max_by(|&a, &b| coord[a].abs().total_cmp(&coord[b].abs()))
+        .unwrap_or(2)
 }
 
 /// The host's coordinates moved by (ds, dt) texels of level base, in the form the lookup passes
@@ -196,9 +201,7 @@ fn moved(c: &Case, ds: f64, dt: f64) -> [f64; 4] {
         }
         Target::Cube | Target::CubeArray => {
             // The major axis stays; the other two move by 2|ma|/w per texel of the face.
-            let m = (0..3)
-                .max_by(|&a, &b| coord[a].abs().total_cmp(&coord[b].abs()))
-                .unwrap_or(2);
+            let m = major_axis(&coord);
             let scale = 2.0 * coord[m].abs() / w;
             let others: Vec<usize> = (0..3).filter(|&a| a != m).collect();
             coord[others[0]] += ds * scale;
@@ -220,9 +223,7 @@ fn texel_position(c: &Case, coord: &[f64; 4]) -> (f64, f64, bool) {
         Target::T1d | Target::T1dArray => (coord[0] / q * w, 0.5, true),
         Target::T2d | Target::T2dArray => (coord[0] / q * w, coord[1] / q * h, true),
         Target::Cube | Target::CubeArray => {
-            let m = (0..3)
-                .max_by(|&a, &b| coord[a].abs().total_cmp(&coord[b].abs()))
-                .unwrap_or(2);
+            let m = major_axis(coord);
             let ma = coord[m].abs().max(f64::MIN_POSITIVE);
             let others: Vec<f64> = (0..3).filter(|&a| a != m).map(|a| coord[a] / ma).collect();
             // A LINEAR footprint stays on the face at every level the lookup may reach: no edge

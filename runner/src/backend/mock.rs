@@ -190,7 +190,9 @@ fn answer(case: &Case, action: Action, seen: &mut HashSet<String>) -> Reply {
         Action::Fail => Some(-1.0),
         // A sweep point (sent as a case of its own: the mock runs no sweeps) with no value
         // between strict and quality answers its strict value, so its test stays a Warn.
-        Action::Warn if case.id.contains("/sweep=") => warn_value(case).or(strict_value(case)),
+        Action::Warn if case.id.contains(shadowcheck_model::SWEEP_ID_TAG) => {
+            warn_value(case).or(strict_value(case))
+        }
         Action::Warn => warn_value(case).or(Some(-1.0)),
         Action::Flaky if seen.insert(case.id.clone()) => Some(-1.0),
         _ => strict_value(case),
