@@ -106,14 +106,25 @@ impl Expectation {
     /// Channels marked `Unused` are ignored; `Zero`/`One` must be exact.
     /// Returns `None` when the expectation has no layout for that API path.
     pub fn accepts(&self, profile: Profile, api: ApiPath, rgba: [f64; 4]) -> Option<bool> {
-        let layout = self.layout.get(&api)?;
-        self.accept.get(&profile)?;
-        Some(
-            layout
-                .iter()
-                .zip(rgba)
-                .all(|(ch, v)| self.channel_accepts(profile, *ch, v)),
-        )
+        self.accepts_through(profile, self.layout.get(&api)?, rgba)
+    }
+
+    /// [`Expectation::accepts`] with the layout already looked up: r's set is fetched once, not
+    /// once per channel (the per-observation hot path of a run goes through here).
+    fn accepts_through(
+        &self,
+        profile: Profile,
+        layout: &[Channel; 4],
+        rgba: [f64; 4],
+    ) -> Option<bool> {
+        let r = self.accept.get(&profile)?;
+        Some(layout.iter().zip(rgba).all(|(ch, v)| {
+            let acc = match ch.gather_index() {
+                Some(i) => self.gather.as_ref().and_then(|g| g[i].get(&profile)),
+                None => Some(r),
+            };
+            channel_ok(*ch, acc, v)
+        }))
     }
 
     /// The acceptance set a channel's value is checked against under `profile`: r's, or for a
@@ -134,8 +145,9 @@ impl Expectation {
     /// The strictest profile accepting one observation, trying the profiles strictest first.
     /// `None` when the layout or a profile tried is missing.
     pub fn judge(&self, api: ApiPath, rgba: [f64; 4]) -> Option<Judgement> {
+        let layout = self.layout.get(&api)?;
         for &p in Profile::ALL {
-            if self.accepts(p, api, rgba)? {
+            if self.accepts_through(p, layout, rgba)? {
                 return Some(if p == Profile::strictest() {
                     Judgement::Strictest
                 } else {

@@ -1,7 +1,9 @@
 //! Single-thread CPU measurements: the oracle's verdicts and the `soft` unit's raw lookups.
 
 use super::{ids, targets, targets17, Goal, Measurement, Target};
-use shadowcheck_model::{ApiPath, Case, Channel, Expectation, Filter, Spec};
+use shadowcheck_model::{
+    ApiPath, Case, Channel, Expectation, Filter, PointExpectation, Profile, Spec,
+};
 use shadowcheck_soft::bench::Workload;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -49,6 +51,25 @@ pub fn exact_rgba(e: &Expectation, api: ApiPath) -> Option<[f64; 4]> {
     }))
 }
 
+/// What an exact implementation returns for a sweep point read through `layout`: its spec value
+/// (or the middle of its first strict interval) in the R channels, the constants elsewhere.
+fn exact_point_rgba(pe: &PointExpectation, layout: &[Channel; 4]) -> [f64; 4] {
+    let r = pe
+        .spec_value
+        .or_else(|| {
+            pe.accept
+                .get(&Profile::strictest())
+                .and_then(|a| a.0.first())
+                .map(|i| (i.lo + i.hi) / 2.0)
+        })
+        .unwrap_or(0.0);
+    layout.map(|c| match c {
+        Channel::One => 1.0,
+        Channel::Zero | Channel::Unused => 0.0,
+        _ => r,
+    })
+}
+
 /// The oracle over `cases`, one thread: `evaluate` once per case and `Expectation::judge` of the
 /// exact answer once per API path (a verdict = one judged (case, path)); then `judge` alone
 /// against the stored expectations, which is what a run does per observation. Cases the oracle
@@ -79,7 +100,9 @@ pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Measurement> {
     )
     .with_target(Target::new(Goal::AtLeast, targets::ORACLE_VERDICTS_PER_S, "issue 6"))];
 
-    // judge only: the stored expectation against the exact answer.
+    // judge only: the stored expectation against the exact answer, for every check a run judges
+    // (a case's own lookup through `Expectation::judge`, each sweep point through
+    // `PointExpectation::passes`, the fast path a run takes for a point inside its strict set).
     let judged: Vec<(&Expectation, ApiPath, [f64; 4])> = cases
         .iter()
         .filter_map(|c| c.expect.as_ref().map(|e| (c, e)))
@@ -89,18 +112,37 @@ pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Measurement> {
                 .filter_map(move |&api| exact_rgba(e, api).map(|rgba| (e, api, rgba)))
         })
         .collect();
-    if !judged.is_empty() {
+    let points: Vec<(&PointExpectation, &[Channel; 4], [f64; 4])> = cases
+        .iter()
+        .filter_map(|c| c.expect.as_ref().map(|e| (c, e)))
+        .flat_map(|(c, e)| {
+            c.api
+                .iter()
+                .filter_map(|api| e.layout.get(api))
+                .flat_map(|layout| {
+                    c.sweep.iter().filter_map(move |p| {
+                        let pe = p.expect.as_ref()?;
+                        Some((pe, layout, exact_point_rgba(pe, layout)))
+                    })
+                })
+        })
+        .collect();
+    let per_pass = judged.len() + points.len();
+    if per_pass > 0 {
         let (passes, secs) = repeat_for(min, || {
             for (e, api, rgba) in &judged {
                 black_box(black_box(*e).judge(black_box(*api), black_box(*rgba)));
+            }
+            for (pe, layout, rgba) in &points {
+                black_box(black_box(*pe).passes(black_box(layout), black_box(*rgba)));
             }
         });
         rows.push(Measurement::new(
             ids::ORACLE_JUDGE,
             None,
-            (judged.len() as u64 * passes) as f64 / secs,
+            (per_pass as u64 * passes) as f64 / secs,
             "verdicts/s/core",
-            format!("Expectation::judge against the fixtures' stored expectations, {} verdicts x {passes} passes in {secs:.2} s, 1 thread", judged.len()),
+            format!("Expectation::judge against the fixtures' stored expectations ({} case x path verdicts) and PointExpectation::passes for their sweep points ({}), x {passes} passes in {secs:.2} s, 1 thread", judged.len(), points.len()),
         ).with_target(Target::new(Goal::AtLeast, targets17::JUDGE_PER_S, "issue 17")));
     }
     rows
@@ -140,7 +182,7 @@ pub fn soft_rows(lookups: usize, min: Duration) -> Result<Vec<Measurement>, Stri
 mod tests {
     use super::*;
     use shadowcheck_model::KeyMap;
-    use shadowcheck_model::{Acceptance, Interval, Profile};
+    use shadowcheck_model::{Acceptance, Interval};
 
     #[test]
     fn exact_rgba_follows_the_layout_and_is_judged_strict() {
@@ -168,5 +210,24 @@ mod tests {
             Some(shadowcheck_model::Judgement::Strictest)
         );
         assert!(exact_rgba(&e, ApiPath::Es300).is_none());
+    }
+
+    #[test]
+    fn exact_point_rgba_passes_its_own_strict_set_and_a_miss_does_not() {
+        let mut accept = KeyMap::new();
+        accept.insert(
+            Profile::strictest(),
+            Acceptance(vec![Interval::new(0.25, 0.5)]),
+        );
+        let pe = PointExpectation {
+            spec_value: None,
+            accept,
+            implementation_defined: None,
+        };
+        let layout = [Channel::R, Channel::R, Channel::R, Channel::One];
+        let rgba = exact_point_rgba(&pe, &layout);
+        assert_eq!(rgba, [0.375, 0.375, 0.375, 1.0]);
+        assert!(pe.passes(&layout, rgba));
+        assert!(!pe.passes(&layout, [0.75, 0.375, 0.375, 1.0]));
     }
 }

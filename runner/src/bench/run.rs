@@ -175,9 +175,9 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
                 let per_check = Measurement::new(
                     ids::HARNESS_PER_CHECK,
                     Some(&name),
-                    e.warm_run_s / e.verified as f64 * 1e6,
+                    e.warm_run_s / e.checks as f64 * 1e6,
                     "us/check",
-                    format!("the warm pass ({:.3} s for {} checks): worker I/O, texture upload, draw, read-back and verdict once the variants exist", e.warm_run_s, e.verified),
+                    format!("the warm pass ({:.3} s for {} checks: {} tests and their sweep points): worker I/O, texture upload, draw, read-back and verdict once the variants exist", e.warm_run_s, e.checks, e.verified),
                 );
                 rows.push(if name.contains(":llvmpipe:") {
                     per_check.with_target(Target::new(

@@ -78,6 +78,8 @@ pub struct E2e {
     pub cases_loaded: usize,
     /// Tests (case x path) with a verdict: Pass, Warn or Fail.
     pub verified: usize,
+    /// Lookups those tests checked: each test's own and its case's sweep points.
+    pub checks: usize,
     pub skipped: usize,
     pub load_s: f64,
     /// Starting the worker process and its handshake.
@@ -174,6 +176,16 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
         .iter()
         .filter(|r| matches!(r.outcome, Outcome::Pass | Outcome::Warn | Outcome::Fail))
         .count();
+    let checks_of: std::collections::HashMap<&str, usize> = set
+        .cases
+        .iter()
+        .map(|l| (l.case.id.as_str(), l.case.checks()))
+        .collect();
+    let checks = results
+        .iter()
+        .filter(|r| matches!(r.outcome, Outcome::Pass | Outcome::Warn | Outcome::Fail))
+        .map(|r| checks_of.get(r.case_id.as_str()).copied().unwrap_or(1))
+        .sum();
     let skipped = results
         .iter()
         .filter(|r| r.outcome == Outcome::Skip)
@@ -188,6 +200,7 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
     Ok(E2e {
         cases_loaded: set.cases.len(),
         verified,
+        checks,
         skipped,
         load_s,
         open_s,
