@@ -1,25 +1,25 @@
 //! Drawing a group of cases that share one texture and sampler state (core and ES contexts).
 //!
-//! Paths whose lookup takes an explicit LOD or gradients need no neighbouring pixels, so every case
-//! of the group that uses the same program is drawn by one full-screen draw: each case's values (P,
-//! gradients, LOD) go into an RGBA32F parameter texture, each fragment finds its case from its pixel
-//! index and reads them with texelFetch (exact). Implicit-derivative paths draw one pixel per case
-//! (the 2x2 quad around it must belong to the same case).
+//! On the GLSL 1.30+ paths every case of the group that uses the same program is drawn by one
+//! full-screen draw: each case's values (P, gradients, LOD) go into an RGBA32F parameter texture,
+//! each fragment finds its case from its 2x2 pixel quad and reads them with texelFetch (exact). An
+//! implicit-derivative lookup varies P across its own quad by the case's gradients, so the
+//! derivatives the driver takes within the quad are the case's (GL 4.6 §15.2.3 / ES 3.2 §14.2.3
+//! leave the neighbours open; every implementation this project runs forms quads at even window
+//! coordinates, as dEQP also assumes). The other paths draw one pixel per case.
 
-use super::draw::{BatchState, Pending, Renderer, CAPACITY};
+use super::draw::{BatchState, Pending, Renderer};
 use super::paths::{Plan, ShaderKey};
-use super::shaders::{self, PARAM_TEXELS, PARAM_WIDTH};
+use super::shaders::{self, PARAM_CASES, PARAM_TEXELS, PARAM_WIDTH};
 use super::texture;
 use super::unitstate;
 use glow::HasContext;
 use shadowcheck_model::Case;
 
-/// Fewest cases sharing a texture for a batched draw.
-const MIN_BATCH: usize = 32;
-
 impl Renderer {
-    /// Uploads the values of `plans` to the parameter texture (case k at texels 4k..4k+3).
-    unsafe fn upload_params(&self, plans: &[&Plan]) {
+    /// Uploads the values of `plans` to the next parameter texture of the ring (case k at texels
+    /// 4k..4k+3) and binds it to unit 1.
+    unsafe fn upload_params(&mut self, plans: &[&Plan]) {
         let texels = plans.len() as i32 * PARAM_TEXELS;
         let rows = (texels + PARAM_WIDTH - 1) / PARAM_WIDTH;
         let mut data: Vec<f32> = Vec::with_capacity((rows * PARAM_WIDTH * 4) as usize);
@@ -31,8 +31,9 @@ impl Renderer {
         }
         data.resize((rows * PARAM_WIDTH * 4) as usize, 0.0);
         let bytes: Vec<u8> = data.iter().flat_map(|f| f.to_ne_bytes()).collect();
+        let tex = self.next_param_texture();
         self.gl.active_texture(glow::TEXTURE1);
-        self.gl.bind_texture(glow::TEXTURE_2D, Some(self.params));
+        self.gl.bind_texture(glow::TEXTURE_2D, Some(tex));
         self.gl.tex_sub_image_2d(
             glow::TEXTURE_2D,
             0,
@@ -75,14 +76,13 @@ impl Renderer {
                 return;
             }
         };
-        // Batchable (case, plan) pairs by program, in first-appearance order. Small groups draw a
-        // pixel per case instead: updating the parameter texture makes the driver wait for the
-        // draws still reading it, which costs more than a few single-pixel draws.
-        let batch = group.len() >= MIN_BATCH;
+        // Batchable (case, plan) pairs by program, in first-appearance order. A batchable path is
+        // always drawn batched, even alone, so the driver compiles one variant per (program,
+        // state), not a batched and a single-pixel one.
         let mut batches: Vec<(ShaderKey, Vec<(usize, &Plan)>)> = Vec::new();
         for (ci, plans) in &group {
             for plan in plans {
-                if batch && shaders::batchable(&plan.key) {
+                if shaders::batchable(&plan.key) {
                     match batches.iter_mut().find(|(k, _)| *k == plan.key) {
                         Some((_, v)) => v.push((*ci, plan)),
                         None => batches.push((plan.key, vec![(*ci, plan)])),
@@ -103,7 +103,7 @@ impl Renderer {
             }
         }
         for (key, items) in batches {
-            for chunk in items.chunks(CAPACITY) {
+            for chunk in items.chunks(PARAM_CASES) {
                 let live: Vec<(usize, &Plan)> = chunk
                     .iter()
                     .filter(|(ci, _)| st.answers[*ci].is_none())

@@ -1,11 +1,13 @@
-//! Drawing a batch of cases: each (case, API path) writes one pixel of an RGBA32F framebuffer, so
-//! results are not quantized and all four channels are observed; the batch is read back at once.
+//! Drawing a batch of cases: each (case, API path) owns one 2x2 pixel quad of an RGBA32F
+//! framebuffer and its result is the quad's lower-left pixel, so results are not quantized, all
+//! four channels are observed, and a batched draw of implicit-derivative lookups gives every case
+//! a quad of its own (derivatives are differences within a quad); the batch is read back at once.
 //!
-//! Consecutive cases with the same texture and sampler state share one texture object (the grid
-//! emits them together: only the reference or the coordinate changes), and where a path needs no
-//! implicit derivatives all of them are drawn with one full-screen draw reading their values from a
-//! parameter texture (see `batch.rs`). Compatibility contexts draw every path of every case on its
-//! own texture (see `run_compat_case`).
+//! Consecutive cases with the same texture and sampler state (a case and its sweep points, or
+//! the grid's neighbours: only the reference or the coordinate changes) share one texture object,
+//! and on the GLSL 1.30+ paths all of them are drawn with one full-screen draw reading their
+//! values from a parameter texture (see `batch.rs`). Compatibility contexts give each API path of
+//! such a group a texture of its own (see `run_compat_group`).
 
 use super::legacy::{self, Legacy};
 use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
@@ -18,10 +20,22 @@ use glow::HasContext;
 use shadowcheck_model::{ApiPath, Case, Target, Texels};
 use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
 
-/// Width and height of the result framebuffer: one pixel per (case, path).
+/// Width and height of the result framebuffer in pixels.
 pub(super) const FB_SIZE: i32 = 256;
-/// Pixels of the result framebuffer.
-pub(super) const CAPACITY: usize = (FB_SIZE * FB_SIZE) as usize;
+/// Quads (2x2 pixels, one per (case, path)) in a row of the framebuffer.
+pub(super) const QUADS_PER_ROW: i32 = FB_SIZE / 2;
+/// (case, path) results the framebuffer holds.
+pub(super) const CAPACITY: usize = (QUADS_PER_ROW * QUADS_PER_ROW) as usize;
+/// Parameter textures batched draws take turns with: writing one the queued draws still read
+/// would make the driver finish them first (llvmpipe flushes its scene), so consecutive batches
+/// write different ones.
+const PARAM_RING: usize = 16;
+
+/// The pixel holding slot `slot`'s result: the lower-left pixel of its quad.
+pub(super) fn pixel(slot: usize) -> (i32, i32) {
+    let s = slot as i32;
+    (2 * (s % QUADS_PER_ROW), 2 * (s / QUADS_PER_ROW))
+}
 /// Most textures kept alive for a deferred read-back.
 const MAX_DEFERRED: usize = 4096;
 
@@ -41,8 +55,9 @@ pub struct Renderer {
     pub(super) legacy: Option<Legacy>,
     fbo: glow::Framebuffer,
     vao: glow::VertexArray,
-    /// RGBA32F case values for batched draws (unit 1).
-    pub(super) params: glow::Texture,
+    /// RGBA32F case values for batched draws (unit 1), used in turn.
+    params: Vec<glow::Texture>,
+    next_params: usize,
     programs: ProgramCache,
 }
 
@@ -116,8 +131,11 @@ impl Renderer {
         gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
         gl.disable(glow::DITHER);
         gl.active_texture(glow::TEXTURE1);
-        let rows = CAPACITY as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
-        let params = texture::rgba32f(&gl, shaders::PARAM_WIDTH, rows).map_err(GlError::Gl)?;
+        let rows = shaders::PARAM_CASES as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
+        let mut params = Vec::with_capacity(PARAM_RING);
+        for _ in 0..PARAM_RING {
+            params.push(texture::rgba32f(&gl, shaders::PARAM_WIDTH, rows).map_err(GlError::Gl)?);
+        }
         gl.active_texture(glow::TEXTURE0);
         texture::check(&gl, "framebuffer setup")?;
         Ok(Renderer {
@@ -127,11 +145,20 @@ impl Renderer {
             fbo,
             vao,
             params,
+            next_params: 0,
             programs: ProgramCache::default(),
         })
     }
 
-    /// One batched draw: cases' values are in the parameter texture, written at `slot0..slot0+n`.
+    /// The parameter texture for the next batched draw (the ring's next one).
+    pub(super) fn next_param_texture(&mut self) -> glow::Texture {
+        let t = self.params[self.next_params % self.params.len()];
+        self.next_params = self.next_params.wrapping_add(1);
+        t
+    }
+
+    /// One batched draw: cases' values are in the parameter texture bound to unit 1, their
+    /// results go to slots `slot0..slot0+n`.
     pub(super) unsafe fn draw_batched(
         &mut self,
         key: &ShaderKey,
@@ -149,9 +176,9 @@ impl Renderer {
             return Err("batched program is not GLSL".into());
         };
         let gl = &self.gl;
-        let row0 = (slot0 as i32) / FB_SIZE;
-        let row1 = ((slot0 + n - 1) as i32) / FB_SIZE;
-        gl.viewport(0, row0, FB_SIZE, row1 - row0 + 1);
+        let (_, y0) = pixel(slot0);
+        let (_, y1) = pixel(slot0 + n - 1);
+        gl.viewport(0, y0, FB_SIZE, y1 + 2 - y0);
         gl.use_program(Some(p.program));
         gl.uniform_1_i32(p.u_base.as_ref(), slot0 as i32);
         gl.uniform_1_i32(p.u_count.as_ref(), n as i32);
@@ -169,7 +196,7 @@ impl Renderer {
         let compiled =
             self.programs
                 .get(&self.gl, &self.info, self.legacy.as_ref(), &plan.key, None)?;
-        let (x, y) = ((slot as i32) % FB_SIZE, (slot as i32) / FB_SIZE);
+        let (x, y) = pixel(slot);
         let gl = &self.gl;
         gl.viewport(x, y, 1, 1);
         let centre = [x as f32 + 0.5, y as f32 + 0.5];
@@ -260,8 +287,9 @@ impl Renderer {
         Ok(())
     }
 
+    /// The framebuffer's pixels up to the quad row of slot `used - 1`, row by row.
     pub(super) unsafe fn read(&self, used: usize) -> Vec<[f32; 4]> {
-        let rows = used.div_ceil(FB_SIZE as usize).max(1) as i32;
+        let rows = 2 * used.div_ceil(QUADS_PER_ROW as usize).max(1) as i32;
         let mut buf = vec![0u8; (FB_SIZE * rows) as usize * 16];
         self.gl
             .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
@@ -325,24 +353,24 @@ impl Renderer {
                 planned.push((ci, plans));
             }
         }
-        if self.info.compat {
-            for (ci, plans) in planned {
-                self.run_compat_case(cases, ci, &plans, &mut st);
-            }
-        } else {
-            // Consecutive cases with equal texture and sampler form one group (one texture).
-            let mut group: Vec<(usize, Vec<Plan>)> = Vec::new();
-            for item in planned {
-                let same = group.first().is_some_and(|(g, _)| {
-                    cases[*g].texture == cases[item.0].texture
-                        && cases[*g].sampler == cases[item.0].sampler
-                });
-                if !same && !group.is_empty() {
-                    self.run_group(cases, std::mem::take(&mut group), &mut st);
+        // Consecutive cases with equal texture and sampler form one group (one texture per group
+        // on a core context, one per group and path on a compatibility one).
+        let mut groups: Vec<Vec<(usize, Vec<Plan>)>> = Vec::new();
+        for item in planned {
+            match groups.last_mut() {
+                Some(group)
+                    if cases[group[0].0].texture == cases[item.0].texture
+                        && cases[group[0].0].sampler == cases[item.0].sampler =>
+                {
+                    group.push(item)
                 }
-                group.push(item);
+                _ => groups.push(vec![item]),
             }
-            if !group.is_empty() {
+        }
+        for group in groups {
+            if self.info.compat {
+                self.run_compat_group(cases, &group, &mut st);
+            } else {
                 self.run_group(cases, group, &mut st);
             }
         }
@@ -406,65 +434,89 @@ impl Renderer {
         }
     }
 
-    /// A compatibility-context case: every path on a fresh texture. Mesa keeps per-texture sampler
-    /// views whose DEPTH_TEXTURE_MODE swizzle depends on which path drew before, and one path's
-    /// answer must not depend on another path or on the case's neighbours.
-    unsafe fn run_compat_case(
+    /// A group of consecutive compatibility-context cases with equal texture and sampler state
+    /// (a case and its sweep points, or the grid's neighbours): each API path on a fresh texture
+    /// that every case of the group naming that path is drawn with. Mesa keeps per-texture
+    /// sampler views whose DEPTH_TEXTURE_MODE swizzle depends on which path drew before, and one
+    /// path's answer must not depend on another path; cases of one path share the texture as on a
+    /// core context.
+    unsafe fn run_compat_group(
         &mut self,
         cases: &[Case],
-        ci: usize,
-        plans: &[Plan],
+        group: &[(usize, Vec<Plan>)],
         st: &mut BatchState,
     ) {
-        let case = &cases[ci];
-        let mut failed = None;
-        for (pi, plan) in plans.iter().enumerate() {
+        let first = &cases[group[0].0];
+        let mut paths: Vec<ApiPath> = Vec::new();
+        for (_, plans) in group {
+            for plan in plans {
+                if !paths.contains(&plan.key.path) {
+                    paths.push(plan.key.path);
+                }
+            }
+        }
+        for (pi, &path) in paths.iter().enumerate() {
+            let users: Vec<(usize, &Plan)> = group
+                .iter()
+                .filter(|(ci, _)| st.answers[*ci].is_none())
+                .filter_map(|(ci, plans)| {
+                    plans.iter().find(|p| p.key.path == path).map(|p| (*ci, p))
+                })
+                .collect();
+            if users.is_empty() {
+                continue;
+            }
             while self.gl.get_error() != glow::NO_ERROR {}
-            let tex = match texture::create(&self.gl, &self.info, case) {
+            let tex = match texture::create(&self.gl, &self.info, first) {
                 Ok(t) => t,
                 Err(e) => {
-                    failed = Some(e.to_string());
-                    break;
+                    for (ci, _) in &users {
+                        st.fail(*ci, e.to_string());
+                    }
+                    continue;
                 }
             };
-            let so = match unitstate::bind_unit_state(&self.gl, case) {
+            let so = match unitstate::bind_unit_state(&self.gl, first) {
                 Ok(so) => so,
                 Err(e) => {
                     self.gl.delete_texture(tex);
-                    failed = Some(e.to_string());
-                    break;
+                    for (ci, _) in &users {
+                        st.fail(*ci, e.to_string());
+                    }
+                    continue;
                 }
             };
-            self.reserve(st, 1);
-            let slot = st.pending.len();
-            let r = self.draw(plan, case.texture.target, slot);
-            unitstate::unbind_unit_state(&self.gl, case, so);
+            for (ci, plan) in &users {
+                self.reserve(st, 1);
+                let slot = st.pending.len();
+                match self.draw(plan, first.texture.target, slot) {
+                    Ok(()) => st.pending.push(Pending {
+                        case: *ci,
+                        path,
+                        slot,
+                        note: if plan.key.form == LodForm::Constant {
+                            "fixed-function".to_string()
+                        } else {
+                            plan.note.clone()
+                        },
+                    }),
+                    Err(e) => st.fail(*ci, format!("{path}: {e}")),
+                }
+            }
+            unitstate::unbind_unit_state(&self.gl, first, so);
             if pi == 0 {
-                self.retire(cases, st, tex, ci, vec![ci]);
+                let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
+                self.retire(cases, st, tex, group[0].0, sharing);
             } else {
                 self.gl.delete_texture(tex);
             }
-            if let Err(e) = r {
-                failed = Some(format!("{}: {e}", plan.key.path));
-                break;
+            if let Err(e) = texture::check(&self.gl, "drawing") {
+                for (ci, _) in &users {
+                    if st.answers[*ci].is_none() {
+                        st.fail(*ci, e.to_string());
+                    }
+                }
             }
-            let how = if plan.key.form == LodForm::Constant {
-                "fixed-function".to_string()
-            } else {
-                plan.note.clone()
-            };
-            st.pending.push(Pending {
-                case: ci,
-                path: plan.key.path,
-                slot,
-                note: how,
-            });
-        }
-        if let Err(e) = texture::check(&self.gl, "drawing") {
-            failed = failed.or(Some(e.to_string()));
-        }
-        if let Some(msg) = failed {
-            st.fail(ci, msg);
         }
     }
 
@@ -479,7 +531,11 @@ impl Renderer {
         }
         let px = self.read(pending.len());
         for p in pending.drain(..) {
-            let v = px.get(p.slot).copied().unwrap_or([f32::NAN; 4]);
+            let (x, y) = pixel(p.slot);
+            let v = px
+                .get((y * FB_SIZE + x) as usize)
+                .copied()
+                .unwrap_or([f32::NAN; 4]);
             results[p.case].push(PathResult {
                 sweep: vec![],
                 api: p.path.key().to_string(),
@@ -488,5 +544,19 @@ impl Renderer {
                 note: Some(p.note),
             });
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slots_are_the_lower_left_pixels_of_quads_row_by_row() {
+        assert_eq!(pixel(0), (0, 0));
+        assert_eq!(pixel(1), (2, 0));
+        assert_eq!(pixel(QUADS_PER_ROW as usize - 1), (FB_SIZE - 2, 0));
+        assert_eq!(pixel(QUADS_PER_ROW as usize), (0, 2));
+        assert_eq!(pixel(CAPACITY - 1), (FB_SIZE - 2, FB_SIZE - 2));
     }
 }

@@ -1,10 +1,11 @@
 //! Shader and ARB fragment program text for a [`ShaderKey`].
 //!
-//! Every program reads the case from uniforms (exact f32 values): `u_p` the lookup vector P,
+//! A single-case program reads the case from uniforms (exact f32 values): `u_p` the lookup vector P,
 //! `u_x` the LOD / bias / cube-array compare value, `u_dx`/`u_dy` the gradients and `u_c` the centre
 //! of the written pixel. With implicit derivatives the coordinate is
 //! `u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy`, which is exactly `u_p`
-//! at the written pixel and varies by the gradients across its 2x2 quad.
+//! at the written pixel and varies by the gradients across its 2x2 quad. A batched program reads
+//! the same values from the parameter texture, one case per pixel quad (see `glsl`).
 
 use super::paths::{uses_shadow_lod, GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
 use shadowcheck_model::{ApiPath, Target};
@@ -132,22 +133,23 @@ fn legacy_call(key: &ShaderKey) -> String {
 pub const PARAM_TEXELS: i32 = 4;
 /// Width of the parameter texture.
 pub const PARAM_WIDTH: i32 = 1024;
+/// Most cases one batched draw serves (the parameter texture's size).
+pub const PARAM_CASES: usize = 1024;
 
-/// Can this key draw many cases at once (no implicit derivatives: neighbours in a pixel quad are
-/// other cases), reading each case's values from the parameter texture with texelFetch?
+/// Can this key draw many cases at once, each in its own pixel quad, reading its values from the
+/// parameter texture with texelFetch (GLSL 1.30+)?
 pub fn batchable(key: &ShaderKey) -> bool {
     matches!(
         key.path,
         ApiPath::GlslCore | ApiPath::Glsl130 | ApiPath::Es300
-    ) && matches!(
-        key.form,
-        LodForm::Lod | LodForm::Grad | LodForm::Gather(false)
-    )
+    ) && key.form != LodForm::Constant
 }
 
 /// (vertex source, fragment source) for a GLSL path. `batched`: the case values come from the
-/// parameter texture (unit 1) at index `slot - u_base`, where slot is the pixel's index in the
-/// framebuffer (`fb_width` wide); pixels outside [0, u_count) are discarded.
+/// parameter texture (unit 1) at index `slot - u_base`, where slot is the index of the pixel's
+/// 2x2 quad in the framebuffer (`fb_width` pixels wide); quads outside [0, u_count) are
+/// discarded. An implicit-derivative lookup's P varies across its quad by the case's gradients
+/// and is the case's P at the quad's lower-left pixel, whose result is read.
 pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, String) {
     let cube_array = key.target == Target::CubeArray;
     let rect = key.target == Target::Rect;
@@ -227,11 +229,25 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
     } else {
         ""
     };
+    let implicit = matches!(key.form, LodForm::Implicit(_) | LodForm::Gather(true));
     let p_line = match (batched, key.form) {
-        (Some(fb_width), _) => format!(
-            "int k = int(gl_FragCoord.y) * {fb_width} + int(gl_FragCoord.x) - u_base;\n  if (k < 0 || k >= u_count) discard;\n  int t = k * {PARAM_TEXELS};\n  vec4 p = texelFetch(u_params, ivec2(t % {PARAM_WIDTH}, t / {PARAM_WIDTH}), 0);\n  vec4 u_dx = texelFetch(u_params, ivec2((t + 1) % {PARAM_WIDTH}, (t + 1) / {PARAM_WIDTH}), 0);\n  vec4 u_dy = texelFetch(u_params, ivec2((t + 2) % {PARAM_WIDTH}, (t + 2) / {PARAM_WIDTH}), 0);\n  float u_x = texelFetch(u_params, ivec2((t + 3) % {PARAM_WIDTH}, (t + 3) / {PARAM_WIDTH}), 0).x;"
-        ),
-        (None, LodForm::Implicit(_) | LodForm::Gather(true)) => "vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;".to_string(),
+        (Some(fb_width), _) => {
+            // The fetch index is clamped: an implementation that runs a discarded quad on (SIMD
+            // lanes) must still read a real case's values, not a texel outside the parameter
+            // texture (SwiftShader's GLES crashed on the resulting cube lookups).
+            let quads = fb_width / 2;
+            let mut l = format!(
+                "ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  int k = q.y * {quads} + q.x - u_base;\n  if (k < 0 || k >= u_count) discard;\n  int t = clamp(k, 0, u_count - 1) * {PARAM_TEXELS};\n  vec4 p = texelFetch(u_params, ivec2(t % {PARAM_WIDTH}, t / {PARAM_WIDTH}), 0);\n  vec4 u_dx = texelFetch(u_params, ivec2((t + 1) % {PARAM_WIDTH}, (t + 1) / {PARAM_WIDTH}), 0);\n  vec4 u_dy = texelFetch(u_params, ivec2((t + 2) % {PARAM_WIDTH}, (t + 2) / {PARAM_WIDTH}), 0);\n  float u_x = texelFetch(u_params, ivec2((t + 3) % {PARAM_WIDTH}, (t + 3) / {PARAM_WIDTH}), 0).x;"
+            );
+            if implicit {
+                l += "\n  vec2 c = vec2(q * 2) + 0.5;\n  p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;";
+            }
+            l
+        }
+        (None, _) if implicit => {
+            "vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;"
+                .to_string()
+        }
         (None, _) => "vec4 p = u_p;".to_string(),
     };
     let uniforms = if batched.is_some() {
@@ -423,6 +439,56 @@ mod tests {
             ..k
         };
         assert_eq!(modern_call(&k), "textureGather(u_tex, p, u_x)");
+    }
+
+    #[test]
+    fn batched_programs_find_their_case_by_pixel_quad_and_vary_p_across_it_when_implicit() {
+        let info = GlInfo {
+            api: crate::names::ContextApi::Core,
+            es: false,
+            compat: false,
+            version: (4, 5),
+            glsl: 450,
+            renderer: String::new(),
+            version_string: String::new(),
+            extensions: Default::default(),
+            form: crate::names::LookupForm::Implicit,
+        };
+        let k = ShaderKey {
+            path: ApiPath::GlslCore,
+            target: Target::T2d,
+            kind: SamplerKind::Shadow,
+            form: LodForm::Implicit(false),
+            proj: false,
+            mode: None,
+            offset: [0, 0],
+            gather: None,
+        };
+        assert!(batchable(&k));
+        let (_, fs) = glsl(&info, &k, Some(256));
+        assert!(
+            fs.contains(
+                "ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  int k = q.y * 128 + q.x - u_base;"
+            ),
+            "{fs}"
+        );
+        assert!(fs.contains("vec2 c = vec2(q * 2) + 0.5;\n  p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;"), "{fs}");
+        // An explicit LOD reads P as stored: no variation across the quad.
+        let lod = ShaderKey {
+            form: LodForm::Lod,
+            ..k
+        };
+        assert!(batchable(&lod));
+        assert!(!glsl(&info, &lod, Some(256)).1.contains("vec2 c ="));
+        // Fixed function and the GLSL 1.20 / ES 1.00 paths have no texelFetch: one pixel per case.
+        assert!(!batchable(&ShaderKey {
+            path: ApiPath::Glsl120,
+            ..k
+        }));
+        assert!(!batchable(&ShaderKey {
+            path: ApiPath::Es100Ext,
+            ..k
+        }));
     }
 
     #[test]
