@@ -88,8 +88,7 @@ impl Renderer {
                         None => batches.push((plan.key, vec![(*ci, plan)])),
                     }
                 } else {
-                    self.reserve(st, 1);
-                    let slot = st.pending.len();
+                    let slot = self.take_slots(st, 1);
                     match self.draw(plan, first.texture.target, slot) {
                         Ok(()) => st.pending.push(Pending {
                             case: *ci,
@@ -112,8 +111,7 @@ impl Renderer {
                 if live.is_empty() {
                     continue;
                 }
-                self.reserve(st, live.len());
-                let slot0 = st.pending.len();
+                let slot0 = self.take_slots(st, live.len());
                 let plans: Vec<&Plan> = live.iter().map(|(_, p)| *p).collect();
                 self.upload_params(&plans);
                 match self.draw_batched(&key, slot0, live.len()) {

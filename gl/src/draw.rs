@@ -75,6 +75,9 @@ pub(super) struct BatchState {
     pub(super) results: Vec<Vec<PathResult>>,
     pub(super) stored: Vec<Option<Texels>>,
     pub(super) pending: Vec<Pending>,
+    /// The next free slot of the framebuffer. Not `pending.len()`: a failed case's pixels leave
+    /// `pending` but stay drawn, and a later draw must not reuse their slots.
+    pub(super) next_slot: usize,
     /// Textures whose level 0 is read back after the batch is drawn (reading back between draws
     /// makes the driver finish the queued draws first): texture, its case, the cases sharing it.
     pub(super) readbacks: Vec<(glow::Texture, usize, Vec<usize>)>,
@@ -328,6 +331,7 @@ impl Renderer {
             results: vec![Vec::new(); cases.len()],
             stored: vec![None; cases.len()],
             pending: Vec::new(),
+            next_slot: 0,
             readbacks: Vec::new(),
             skipped: vec![Vec::new(); cases.len()],
         };
@@ -425,13 +429,18 @@ impl Renderer {
         }
     }
 
-    /// Makes room for `n` more pixels, reading back and clearing when the framebuffer is full.
-    pub(super) unsafe fn reserve(&mut self, st: &mut BatchState, n: usize) {
-        if st.pending.len() + n > CAPACITY {
+    /// Takes `n` consecutive slots, reading back and clearing first when the framebuffer cannot
+    /// hold them; returns the first.
+    pub(super) unsafe fn take_slots(&mut self, st: &mut BatchState, n: usize) -> usize {
+        if st.next_slot + n > CAPACITY {
             let mut pending = std::mem::take(&mut st.pending);
             self.collect(&mut pending, &mut st.results);
             self.clear();
+            st.next_slot = 0;
         }
+        let first = st.next_slot;
+        st.next_slot += n;
+        first
     }
 
     /// A group of consecutive compatibility-context cases with equal texture and sampler state
@@ -487,8 +496,7 @@ impl Renderer {
                 }
             };
             for (ci, plan) in &users {
-                self.reserve(st, 1);
-                let slot = st.pending.len();
+                let slot = self.take_slots(st, 1);
                 match self.draw(plan, first.texture.target, slot) {
                     Ok(()) => st.pending.push(Pending {
                         case: *ci,
@@ -529,7 +537,8 @@ impl Renderer {
         if pending.is_empty() {
             return;
         }
-        let px = self.read(pending.len());
+        let used = pending.iter().map(|p| p.slot + 1).max().unwrap_or(1);
+        let px = self.read(used);
         for p in pending.drain(..) {
             let (x, y) = pixel(p.slot);
             let v = px
