@@ -11,7 +11,6 @@
 use super::draw::{BatchState, Pending, Renderer};
 use super::paths::{Plan, ShaderKey};
 use super::shaders::{self, PARAM_CASES, PARAM_TEXELS, PARAM_WIDTH};
-use super::texture;
 use super::unitstate;
 use glow::HasContext;
 use shadowcheck_model::Case;
@@ -56,25 +55,9 @@ impl Renderer {
         st: &mut BatchState,
     ) {
         let first = &cases[group[0].0];
-        while self.gl.get_error() != glow::NO_ERROR {}
-        let tex = match texture::create(&self.gl, &self.info, first) {
-            Ok(t) => t,
-            Err(e) => {
-                for (ci, _) in &group {
-                    st.fail(*ci, e.to_string());
-                }
-                return;
-            }
-        };
-        let so = match unitstate::bind_unit_state(&self.gl, first) {
-            Ok(so) => so,
-            Err(e) => {
-                for (ci, _) in &group {
-                    st.fail(*ci, e.to_string());
-                }
-                self.gl.delete_texture(tex);
-                return;
-            }
+        let Some((tex, so)) = self.bind_group_texture(first, group.iter().map(|(ci, _)| *ci), st)
+        else {
+            return;
         };
         // Batchable (case, plan) pairs by program, in first-appearance order. A batchable path is
         // always drawn batched, even alone, so the driver compiles one variant per (program,
@@ -136,12 +119,6 @@ impl Renderer {
         unitstate::unbind_unit_state(&self.gl, first, so);
         let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
         self.retire(cases, st, tex, group[0].0, sharing);
-        if let Err(e) = texture::check(&self.gl, "drawing") {
-            for (ci, _) in &group {
-                if st.answers[*ci].is_none() {
-                    st.fail(*ci, e.to_string());
-                }
-            }
-        }
+        self.check_group(group.iter().map(|(ci, _)| *ci), st);
     }
 }

@@ -92,6 +92,15 @@ impl BatchState {
         self.results[ci].clear();
         self.answers[ci] = Some(Answer::Error(msg));
     }
+
+    /// Every case of `cis` not answered yet fails with `msg`.
+    pub(super) fn fail_unanswered(&mut self, cis: impl IntoIterator<Item = usize>, msg: &str) {
+        for ci in cis {
+            if self.answers[ci].is_none() {
+                self.fail(ci, msg.to_string());
+            }
+        }
+    }
 }
 
 impl Renderer {
@@ -429,6 +438,43 @@ impl Renderer {
         }
     }
 
+    /// Creates `first`'s texture and binds its unit state, for a group of cases `cis` sharing
+    /// them; on an error those cases fail and `None` is returned (nothing left bound).
+    pub(super) unsafe fn bind_group_texture(
+        &mut self,
+        first: &Case,
+        cis: impl IntoIterator<Item = usize>,
+        st: &mut BatchState,
+    ) -> Option<(glow::Texture, Option<glow::Sampler>)> {
+        while self.gl.get_error() != glow::NO_ERROR {}
+        let tex = match texture::create(&self.gl, &self.info, first) {
+            Ok(t) => t,
+            Err(e) => {
+                st.fail_unanswered(cis, &e.to_string());
+                return None;
+            }
+        };
+        match unitstate::bind_unit_state(&self.gl, first) {
+            Ok(so) => Some((tex, so)),
+            Err(e) => {
+                self.gl.delete_texture(tex);
+                st.fail_unanswered(cis, &e.to_string());
+                None
+            }
+        }
+    }
+
+    /// After a group's draws: a GL error makes the cases `cis` not answered yet fail.
+    pub(super) unsafe fn check_group(
+        &self,
+        cis: impl IntoIterator<Item = usize>,
+        st: &mut BatchState,
+    ) {
+        if let Err(e) = texture::check(&self.gl, "drawing") {
+            st.fail_unanswered(cis, &e.to_string());
+        }
+    }
+
     /// Takes `n` consecutive slots, reading back and clearing first when the framebuffer cannot
     /// hold them; returns the first.
     pub(super) unsafe fn take_slots(&mut self, st: &mut BatchState, n: usize) -> usize {
@@ -475,25 +521,10 @@ impl Renderer {
             if users.is_empty() {
                 continue;
             }
-            while self.gl.get_error() != glow::NO_ERROR {}
-            let tex = match texture::create(&self.gl, &self.info, first) {
-                Ok(t) => t,
-                Err(e) => {
-                    for (ci, _) in &users {
-                        st.fail(*ci, e.to_string());
-                    }
-                    continue;
-                }
-            };
-            let so = match unitstate::bind_unit_state(&self.gl, first) {
-                Ok(so) => so,
-                Err(e) => {
-                    self.gl.delete_texture(tex);
-                    for (ci, _) in &users {
-                        st.fail(*ci, e.to_string());
-                    }
-                    continue;
-                }
+            let Some((tex, so)) =
+                self.bind_group_texture(first, users.iter().map(|(ci, _)| *ci), st)
+            else {
+                continue;
             };
             for (ci, plan) in &users {
                 let slot = self.take_slots(st, 1);
@@ -518,13 +549,7 @@ impl Renderer {
             } else {
                 self.gl.delete_texture(tex);
             }
-            if let Err(e) = texture::check(&self.gl, "drawing") {
-                for (ci, _) in &users {
-                    if st.answers[*ci].is_none() {
-                        st.fail(*ci, e.to_string());
-                    }
-                }
-            }
+            self.check_group(users.iter().map(|(ci, _)| *ci), st);
         }
     }
 

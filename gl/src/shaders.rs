@@ -308,6 +308,21 @@ pub fn arbfp(key: &ShaderKey) -> String {
 mod tests {
     use super::*;
 
+    /// A context of `api` with `version` and GLSL `glsl` (x100), no extensions.
+    fn info(api: crate::names::ContextApi, version: (u32, u32), glsl: u32) -> GlInfo {
+        GlInfo {
+            api,
+            es: api == crate::names::ContextApi::Es3,
+            compat: api == crate::names::ContextApi::Compat,
+            version,
+            glsl,
+            renderer: String::new(),
+            version_string: String::new(),
+            extensions: Default::default(),
+            form: Default::default(),
+        }
+    }
+
     #[test]
     fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
         let k = ShaderKey {
@@ -379,17 +394,7 @@ mod tests {
             gather: None,
         };
         assert_eq!(modern_call(&k), "textureLod(u_tex, p, u_x, u_dx.x)");
-        let info = GlInfo {
-            api: crate::names::ContextApi::Es3,
-            es: true,
-            compat: false,
-            version: (3, 2),
-            glsl: 320,
-            renderer: String::new(),
-            version_string: String::new(),
-            extensions: Default::default(),
-            form: crate::names::LookupForm::Lod,
-        };
+        let info = info(crate::names::ContextApi::Es3, (3, 2), 320);
         let (_, fs) = glsl(&info, &k, None);
         assert!(
             fs.starts_with("#version 320 es\n#extension GL_EXT_texture_shadow_lod : require\n"),
@@ -443,17 +448,7 @@ mod tests {
 
     #[test]
     fn batched_programs_find_their_case_by_pixel_quad_and_vary_p_across_it_when_implicit() {
-        let info = GlInfo {
-            api: crate::names::ContextApi::Core,
-            es: false,
-            compat: false,
-            version: (4, 5),
-            glsl: 450,
-            renderer: String::new(),
-            version_string: String::new(),
-            extensions: Default::default(),
-            form: crate::names::LookupForm::Implicit,
-        };
+        let info = info(crate::names::ContextApi::Core, (4, 5), 450);
         let k = ShaderKey {
             path: ApiPath::GlslCore,
             target: Target::T2d,

@@ -2,7 +2,8 @@
 
 use super::{ids, targets, targets17, Goal, Measurement, Target};
 use shadowcheck_model::{
-    ApiPath, Case, Channel, Expectation, Filter, PointExpectation, Profile, Spec,
+    Acceptance, ApiPath, Case, Channel, Expectation, Filter, KeyMap, PointExpectation, Profile,
+    Spec,
 };
 use shadowcheck_soft::bench::Workload;
 use std::hint::black_box;
@@ -27,16 +28,7 @@ pub fn repeat_for(min: Duration, mut f: impl FnMut()) -> (u64, f64) {
 /// strict interval) placed per the expectation's layout; `None` without a layout.
 pub fn exact_rgba(e: &Expectation, api: ApiPath) -> Option<[f64; 4]> {
     let layout = e.layout.get(&api)?;
-    let r = e
-        .spec_value
-        .or_else(|| {
-            e.accept
-                .values()
-                .next()
-                .and_then(|a| a.0.first())
-                .map(|i| (i.lo + i.hi) / 2.0)
-        })
-        .unwrap_or(0.0);
+    let r = exact_r(e.spec_value, &e.accept);
     Some(layout.map(|c| {
         match c {
             Channel::R | Channel::ROrZero => r,
@@ -51,18 +43,24 @@ pub fn exact_rgba(e: &Expectation, api: ApiPath) -> Option<[f64; 4]> {
     }))
 }
 
-/// What an exact implementation returns for a sweep point read through `layout`: its spec value
-/// (or the middle of its first strict interval) in the R channels, the constants elsewhere.
-fn exact_point_rgba(pe: &PointExpectation, layout: &[Channel; 4]) -> [f64; 4] {
-    let r = pe
-        .spec_value
+/// r of an exact implementation: the spec value, else the middle of the first interval of the
+/// strictest profile present.
+fn exact_r(spec_value: Option<f64>, accept: &KeyMap<Profile, Acceptance>) -> f64 {
+    spec_value
         .or_else(|| {
-            pe.accept
-                .get(&Profile::strictest())
+            accept
+                .values()
+                .next()
                 .and_then(|a| a.0.first())
                 .map(|i| (i.lo + i.hi) / 2.0)
         })
-        .unwrap_or(0.0);
+        .unwrap_or(0.0)
+}
+
+/// What an exact implementation returns for a sweep point read through `layout`: r (as
+/// [`exact_r`]) in the R channels, the constants elsewhere.
+fn exact_point_rgba(pe: &PointExpectation, layout: &[Channel; 4]) -> [f64; 4] {
+    let r = exact_r(pe.spec_value, &pe.accept);
     layout.map(|c| match c {
         Channel::One => 1.0,
         Channel::Zero | Channel::Unused => 0.0,
@@ -181,8 +179,7 @@ pub fn soft_rows(lookups: usize, min: Duration) -> Result<Vec<Measurement>, Stri
 #[cfg(test)]
 mod tests {
     use super::*;
-    use shadowcheck_model::KeyMap;
-    use shadowcheck_model::{Acceptance, Interval};
+    use shadowcheck_model::Interval;
 
     #[test]
     fn exact_rgba_follows_the_layout_and_is_judged_strict() {
