@@ -7,6 +7,11 @@
 //! derivatives the driver takes within the quad are the case's (GL 4.6 §15.2.3 / ES 3.2 §14.2.3
 //! leave the neighbours open; every implementation this project runs forms quads at even window
 //! coordinates, as dEQP also assumes). The other paths draw one pixel per case.
+//!
+//! The values of every batched draw of a worker batch are staged first ([`batches_of`]) and
+//! uploaded at once ([`Renderer::upload_staged`]) before the first draw: a texture written while
+//! queued draws read it makes the driver finish them first (llvmpipe flushes its scene), and one
+//! upload per batch instead of one per draw saves a texture update per group.
 
 use super::draw::{BatchState, Pending, Renderer};
 use super::paths::{Plan, ShaderKey};
@@ -15,43 +20,111 @@ use super::unitstate;
 use glow::HasContext;
 use shadowcheck_model::Case;
 
-impl Renderer {
-    /// Uploads the values of `plans` to the next parameter texture of the ring (case k at texels
-    /// 4k..4k+3) and binds it to unit 1.
-    unsafe fn upload_params(&mut self, plans: &[&Plan]) {
-        let texels = plans.len() as i32 * PARAM_TEXELS;
-        let rows = (texels + PARAM_WIDTH - 1) / PARAM_WIDTH;
-        let mut data: Vec<f32> = Vec::with_capacity((rows * PARAM_WIDTH * 4) as usize);
-        for p in plans {
+/// One batched draw: a program, the (case, plan) pairs it serves (slot k of the draw is item k),
+/// and where item 0's values are: parameter texture `texture`, case index `first` in it.
+pub(super) struct Batch<'p> {
+    key: ShaderKey,
+    items: Vec<(usize, &'p Plan)>,
+    texture: usize,
+    first: usize,
+}
+
+/// The parameter values of a worker batch, per parameter texture (four RGBA texels per case).
+#[derive(Default)]
+pub(super) struct ParamStaging {
+    textures: Vec<Vec<f32>>,
+}
+
+impl ParamStaging {
+    /// Stages the values of `plans` (at most [`PARAM_CASES`]) in one texture; returns (texture,
+    /// index of the first case in it).
+    fn stage(&mut self, plans: &[(usize, &Plan)]) -> (usize, usize) {
+        let per_case = (PARAM_TEXELS * 4) as usize;
+        let fits = |d: &Vec<f32>| d.len() / per_case + plans.len() <= PARAM_CASES;
+        if !self.textures.last().is_some_and(fits) {
+            self.textures.push(Vec::new());
+        }
+        let texture = self.textures.len() - 1;
+        let data = &mut self.textures[texture];
+        let first = data.len() / per_case;
+        for (_, p) in plans {
             data.extend_from_slice(&p.p);
             data.extend_from_slice(&p.dx);
             data.extend_from_slice(&p.dy);
             data.extend_from_slice(&[p.x, 0.0, 0.0, 0.0]);
         }
-        data.resize((rows * PARAM_WIDTH * 4) as usize, 0.0);
-        let bytes: Vec<u8> = data.iter().flat_map(|f| f.to_ne_bytes()).collect();
-        let tex = self.next_param_texture();
-        self.gl.active_texture(glow::TEXTURE1);
-        self.gl.bind_texture(glow::TEXTURE_2D, Some(tex));
-        self.gl.tex_sub_image_2d(
-            glow::TEXTURE_2D,
-            0,
-            0,
-            0,
-            PARAM_WIDTH,
-            rows,
-            glow::RGBA,
-            glow::FLOAT,
-            glow::PixelUnpackData::Slice(Some(&bytes)),
-        );
-        self.gl.active_texture(glow::TEXTURE0);
+        (texture, first)
+    }
+}
+
+/// The batched draws of `group`: batchable (case, plan) pairs by program in first-appearance
+/// order, at most [`PARAM_CASES`] a draw, their values staged in `staging`. A batchable path is
+/// always drawn batched, even alone, so the driver compiles one variant per (program, state), not
+/// a batched and a single-pixel one.
+pub(super) fn batches_of<'p>(
+    group: &'p [(usize, Vec<Plan>)],
+    staging: &mut ParamStaging,
+) -> Vec<Batch<'p>> {
+    let mut by_key: Vec<(ShaderKey, Vec<(usize, &Plan)>)> = Vec::new();
+    for (ci, plans) in group {
+        for plan in plans.iter().filter(|p| shaders::batchable(&p.key)) {
+            match by_key.iter_mut().find(|(k, _)| *k == plan.key) {
+                Some((_, v)) => v.push((*ci, plan)),
+                None => by_key.push((plan.key, vec![(*ci, plan)])),
+            }
+        }
+    }
+    let mut out = Vec::new();
+    for (key, items) in by_key {
+        for chunk in items.chunks(PARAM_CASES) {
+            let (texture, first) = staging.stage(chunk);
+            out.push(Batch {
+                key,
+                items: chunk.to_vec(),
+                texture,
+                first,
+            });
+        }
+    }
+    out
+}
+
+impl Renderer {
+    /// Uploads the staged values, texture k of `staging` to parameter texture k (created when
+    /// there are fewer), only the rows that hold values.
+    pub(super) unsafe fn upload_staged(&mut self, staging: &ParamStaging) -> Result<(), String> {
+        for (k, data) in staging.textures.iter().enumerate() {
+            let tex = self.param_texture(k)?;
+            let row = (PARAM_WIDTH * 4) as usize;
+            let rows = data.len().div_ceil(row);
+            let mut bytes: Vec<u8> = Vec::with_capacity(rows * row * 4);
+            bytes.extend(data.iter().flat_map(|f| f.to_ne_bytes()));
+            bytes.resize(rows * row * 4, 0);
+            self.gl.active_texture(glow::TEXTURE1);
+            self.gl.bind_texture(glow::TEXTURE_2D, Some(tex));
+            self.gl.tex_sub_image_2d(
+                glow::TEXTURE_2D,
+                0,
+                0,
+                0,
+                PARAM_WIDTH,
+                rows as i32,
+                glow::RGBA,
+                glow::FLOAT,
+                glow::PixelUnpackData::Slice(Some(&bytes)),
+            );
+            self.gl.active_texture(glow::TEXTURE0);
+        }
+        Ok(())
     }
 
-    /// Runs a group of cases sharing texture and sampler state.
+    /// Runs a group of cases sharing texture and sampler state: the paths that cannot be batched
+    /// one pixel each, then `batches` (the group's, from [`batches_of`], values uploaded).
     pub(super) unsafe fn run_group(
         &mut self,
         cases: &[Case],
-        group: Vec<(usize, Vec<Plan>)>,
+        group: &[(usize, Vec<Plan>)],
+        batches: Vec<Batch<'_>>,
         st: &mut BatchState,
     ) {
         let first = &cases[group[0].0];
@@ -59,47 +132,31 @@ impl Renderer {
         else {
             return;
         };
-        // Batchable (case, plan) pairs by program, in first-appearance order. A batchable path is
-        // always drawn batched, even alone, so the driver compiles one variant per (program,
-        // state), not a batched and a single-pixel one.
-        let mut batches: Vec<(ShaderKey, Vec<(usize, &Plan)>)> = Vec::new();
-        for (ci, plans) in &group {
-            for plan in plans {
-                if shaders::batchable(&plan.key) {
-                    match batches.iter_mut().find(|(k, _)| *k == plan.key) {
-                        Some((_, v)) => v.push((*ci, plan)),
-                        None => batches.push((plan.key, vec![(*ci, plan)])),
-                    }
-                } else {
-                    let slot = self.take_slots(st, 1);
-                    match self.draw(plan, first.texture.target, slot) {
-                        Ok(()) => st.pending.push(Pending {
-                            case: *ci,
-                            path: plan.key.path,
-                            slot,
-                            note: plan.note.clone(),
-                        }),
-                        Err(e) => st.fail(*ci, format!("{}: {e}", plan.key.path)),
-                    }
+        for (ci, plans) in group {
+            for plan in plans.iter().filter(|p| !shaders::batchable(&p.key)) {
+                let slot = self.take_slots(st, 1);
+                match self.draw(plan, first.texture.target, slot) {
+                    Ok(()) => st.pending.push(Pending {
+                        case: *ci,
+                        path: plan.key.path,
+                        slot,
+                        note: plan.note.clone(),
+                    }),
+                    Err(e) => st.fail(*ci, format!("{}: {e}", plan.key.path)),
                 }
             }
         }
-        for (key, items) in batches {
-            for chunk in items.chunks(PARAM_CASES) {
-                let live: Vec<(usize, &Plan)> = chunk
-                    .iter()
-                    .filter(|(ci, _)| st.answers[*ci].is_none())
-                    .copied()
-                    .collect();
-                if live.is_empty() {
-                    continue;
-                }
-                let slot0 = self.take_slots(st, live.len());
-                let plans: Vec<&Plan> = live.iter().map(|(_, p)| *p).collect();
-                self.upload_params(&plans);
-                match self.draw_batched(&key, slot0, live.len()) {
-                    Ok(()) => {
-                        for (k, (ci, p)) in live.iter().enumerate() {
+        for b in batches {
+            // A case that failed on another path is drawn with the others (its values are in
+            // place) but not read back.
+            if b.items.iter().all(|(ci, _)| st.answers[*ci].is_some()) {
+                continue;
+            }
+            let slot0 = self.take_slots(st, b.items.len());
+            match self.draw_batched(&b.key, slot0, b.items.len(), (b.texture, b.first)) {
+                Ok(()) => {
+                    for (k, (ci, p)) in b.items.iter().enumerate() {
+                        if st.answers[*ci].is_none() {
                             st.pending.push(Pending {
                                 case: *ci,
                                 path: p.key.path,
@@ -108,9 +165,11 @@ impl Renderer {
                             });
                         }
                     }
-                    Err(e) => {
-                        for (ci, _) in &live {
-                            st.fail(*ci, format!("{}: {e}", key.path));
+                }
+                Err(e) => {
+                    for (ci, _) in &b.items {
+                        if st.answers[*ci].is_none() {
+                            st.fail(*ci, format!("{}: {e}", b.key.path));
                         }
                     }
                 }

@@ -15,7 +15,7 @@ use super::programs::{Compiled, ProgramCache};
 use super::shaders;
 use super::texture;
 use super::unitstate;
-use super::GlError;
+use super::{batch, GlError};
 use glow::HasContext;
 use shadowcheck_model::{ApiPath, Case, Target, Texels};
 use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
@@ -26,11 +26,6 @@ pub(super) const FB_SIZE: i32 = 256;
 pub(super) const QUADS_PER_ROW: i32 = FB_SIZE / 2;
 /// (case, path) results the framebuffer holds.
 pub(super) const CAPACITY: usize = (QUADS_PER_ROW * QUADS_PER_ROW) as usize;
-/// Parameter textures batched draws take turns with: writing one the queued draws still read
-/// would make the driver finish them first (llvmpipe flushes its scene), so consecutive batches
-/// write different ones.
-const PARAM_RING: usize = 16;
-
 /// The pixel holding slot `slot`'s result: the lower-left pixel of its quad.
 pub(super) fn pixel(slot: usize) -> (i32, i32) {
     let s = slot as i32;
@@ -55,9 +50,11 @@ pub struct Renderer {
     pub(super) legacy: Option<Legacy>,
     fbo: glow::Framebuffer,
     vao: glow::VertexArray,
-    /// RGBA32F case values for batched draws (unit 1), used in turn.
+    /// RGBA32F case values for batched draws (unit 1), [`shaders::PARAM_CASES`] cases each;
+    /// created as a batch needs them.
     params: Vec<glow::Texture>,
-    next_params: usize,
+    /// Slots drawn since the framebuffer was last cleared (their quad rows are cleared next).
+    drawn: usize,
     programs: ProgramCache,
 }
 
@@ -142,13 +139,6 @@ impl Renderer {
         gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
         gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
         gl.disable(glow::DITHER);
-        gl.active_texture(glow::TEXTURE1);
-        let rows = shaders::PARAM_CASES as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
-        let mut params = Vec::with_capacity(PARAM_RING);
-        for _ in 0..PARAM_RING {
-            params.push(texture::rgba32f(&gl, shaders::PARAM_WIDTH, rows).map_err(GlError::Gl)?);
-        }
-        gl.active_texture(glow::TEXTURE0);
         texture::check(&gl, "framebuffer setup")?;
         Ok(Renderer {
             gl,
@@ -156,27 +146,35 @@ impl Renderer {
             legacy,
             fbo,
             vao,
-            params,
-            next_params: 0,
+            params: Vec::new(),
+            // The colour texture's contents are undefined until the first clear.
+            drawn: CAPACITY,
             programs: ProgramCache::default(),
         })
     }
 
-    /// The parameter texture for the next batched draw (the ring's next one).
-    pub(super) fn next_param_texture(&mut self) -> glow::Texture {
-        let t = self.params[self.next_params % self.params.len()];
-        self.next_params = self.next_params.wrapping_add(1);
-        t
+    /// Parameter texture `k`, created (with those before it) when missing.
+    pub(super) unsafe fn param_texture(&mut self, k: usize) -> Result<glow::Texture, String> {
+        let rows = shaders::PARAM_CASES as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
+        while self.params.len() <= k {
+            self.gl.active_texture(glow::TEXTURE1);
+            let t = texture::rgba32f(&self.gl, shaders::PARAM_WIDTH, rows);
+            self.gl.active_texture(glow::TEXTURE0);
+            self.params.push(t?);
+        }
+        Ok(self.params[k])
     }
 
-    /// One batched draw: cases' values are in the parameter texture bound to unit 1, their
-    /// results go to slots `slot0..slot0+n`.
+    /// One batched draw: the values of its `n` cases are in parameter texture `param.0` from case
+    /// `param.1` on, their results go to slots `slot0..slot0+n`.
     pub(super) unsafe fn draw_batched(
         &mut self,
         key: &ShaderKey,
         slot0: usize,
         n: usize,
+        param: (usize, usize),
     ) -> Result<(), String> {
+        let params = self.param_texture(param.0)?;
         let compiled = self.programs.get(
             &self.gl,
             &self.info,
@@ -188,12 +186,22 @@ impl Renderer {
             return Err("batched program is not GLSL".into());
         };
         let gl = &self.gl;
-        let (_, y0) = pixel(slot0);
-        let (_, y1) = pixel(slot0 + n - 1);
-        gl.viewport(0, y0, FB_SIZE, y1 + 2 - y0);
+        // Only the quads of the draw's slots are rasterized: the rows they span, and within a
+        // single row only its columns (quads stay at even window coordinates).
+        let (x0, y0) = pixel(slot0);
+        let (x1, y1) = pixel(slot0 + n - 1);
+        if y0 == y1 {
+            gl.viewport(x0, y0, x1 + 2 - x0, 2);
+        } else {
+            gl.viewport(0, y0, FB_SIZE, y1 + 2 - y0);
+        }
+        gl.active_texture(glow::TEXTURE1);
+        gl.bind_texture(glow::TEXTURE_2D, Some(params));
+        gl.active_texture(glow::TEXTURE0);
         gl.use_program(Some(p.program));
         gl.uniform_1_i32(p.u_base.as_ref(), slot0 as i32);
         gl.uniform_1_i32(p.u_count.as_ref(), n as i32);
+        gl.uniform_1_i32(p.u_param0.as_ref(), param.1 as i32);
         gl.bind_vertex_array(Some(self.vao));
         gl.draw_arrays(glow::TRIANGLES, 0, 3);
         Ok(())
@@ -322,12 +330,22 @@ impl Renderer {
             .collect()
     }
 
-    pub(super) unsafe fn clear(&self) {
+    /// Clears the quad rows drawn since the last clear (only those: clearing the whole
+    /// framebuffer before every batch cost llvmpipe a 1 MiB fill per batch).
+    pub(super) unsafe fn clear(&mut self) {
+        let rows = (2 * self.drawn.div_ceil(QUADS_PER_ROW as usize)).min(FB_SIZE as usize) as i32;
+        self.drawn = 0;
         self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(self.fbo));
         self.gl.viewport(0, 0, FB_SIZE, FB_SIZE);
+        if rows == 0 {
+            return;
+        }
         // A pixel no draw wrote reads back as -1, which no path can return.
         self.gl.clear_color(-1.0, -1.0, -1.0, -1.0);
+        self.gl.enable(glow::SCISSOR_TEST);
+        self.gl.scissor(0, 0, FB_SIZE, rows);
         self.gl.clear(glow::COLOR_BUFFER_BIT);
+        self.gl.disable(glow::SCISSOR_TEST);
     }
 
     /// Runs a batch and answers every case, in order.
@@ -380,11 +398,27 @@ impl Renderer {
                 _ => groups.push(vec![item]),
             }
         }
-        for group in groups {
-            if self.info.compat {
-                self.run_compat_group(cases, &group, &mut st);
-            } else {
-                self.run_group(cases, group, &mut st);
+        if self.info.compat {
+            for group in &groups {
+                self.run_compat_group(cases, group, &mut st);
+            }
+        } else {
+            // Every batched draw's values in place before the first draw.
+            let mut staging = batch::ParamStaging::default();
+            let batches: Vec<Vec<batch::Batch>> = groups
+                .iter()
+                .map(|g| batch::batches_of(g, &mut staging))
+                .collect();
+            match self.upload_staged(&staging) {
+                Ok(()) => {
+                    for (group, batches) in groups.iter().zip(batches) {
+                        self.run_group(cases, group, batches, &mut st);
+                    }
+                }
+                Err(e) => {
+                    let all = groups.iter().flatten().map(|(ci, _)| *ci);
+                    st.fail_unanswered(all, &format!("parameter texture: {e}"));
+                }
             }
         }
         let mut pending = std::mem::take(&mut st.pending);
@@ -486,6 +520,7 @@ impl Renderer {
         }
         let first = st.next_slot;
         st.next_slot += n;
+        self.drawn = self.drawn.max(st.next_slot);
         first
     }
 

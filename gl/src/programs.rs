@@ -20,6 +20,7 @@ pub(super) struct Program {
     pub(super) u_c: Option<glow::UniformLocation>,
     pub(super) u_base: Option<glow::UniformLocation>,
     pub(super) u_count: Option<glow::UniformLocation>,
+    pub(super) u_param0: Option<glow::UniformLocation>,
 }
 
 /// What a [`ShaderKey`] compiles to on one path.
@@ -87,6 +88,7 @@ unsafe fn compile(
                 u_c: u("u_c"),
                 u_base: u("u_base"),
                 u_count: u("u_count"),
+                u_param0: u("u_param0"),
             }))
         }
     }

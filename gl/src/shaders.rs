@@ -133,7 +133,7 @@ fn legacy_call(key: &ShaderKey) -> String {
 pub const PARAM_TEXELS: i32 = 4;
 /// Width of the parameter texture.
 pub const PARAM_WIDTH: i32 = 1024;
-/// Most cases one batched draw serves (the parameter texture's size).
+/// Cases one parameter texture holds: the most one batched draw serves.
 pub const PARAM_CASES: usize = 1024;
 
 /// Can this key draw many cases at once, each in its own pixel quad, reading its values from the
@@ -146,7 +146,7 @@ pub fn batchable(key: &ShaderKey) -> bool {
 }
 
 /// (vertex source, fragment source) for a GLSL path. `batched`: the case values come from the
-/// parameter texture (unit 1) at index `slot - u_base`, where slot is the index of the pixel's
+/// parameter texture (unit 1) at index `u_param0 + slot - u_base`, where slot is the index of the pixel's
 /// 2x2 quad in the framebuffer (`fb_width` pixels wide); quads outside [0, u_count) are
 /// discarded. An implicit-derivative lookup's P varies across its quad by the case's gradients
 /// and is the case's P at the quad's lower-left pixel, whose result is read.
@@ -237,7 +237,7 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
             // texture (SwiftShader's GLES crashed on the resulting cube lookups).
             let quads = fb_width / 2;
             let mut l = format!(
-                "ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  int k = q.y * {quads} + q.x - u_base;\n  if (k < 0 || k >= u_count) discard;\n  int t = clamp(k, 0, u_count - 1) * {PARAM_TEXELS};\n  vec4 p = texelFetch(u_params, ivec2(t % {PARAM_WIDTH}, t / {PARAM_WIDTH}), 0);\n  vec4 u_dx = texelFetch(u_params, ivec2((t + 1) % {PARAM_WIDTH}, (t + 1) / {PARAM_WIDTH}), 0);\n  vec4 u_dy = texelFetch(u_params, ivec2((t + 2) % {PARAM_WIDTH}, (t + 2) / {PARAM_WIDTH}), 0);\n  float u_x = texelFetch(u_params, ivec2((t + 3) % {PARAM_WIDTH}, (t + 3) / {PARAM_WIDTH}), 0).x;"
+                "ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  int k = q.y * {quads} + q.x - u_base;\n  if (k < 0 || k >= u_count) discard;\n  int t = (u_param0 + clamp(k, 0, u_count - 1)) * {PARAM_TEXELS};\n  vec4 p = texelFetch(u_params, ivec2(t % {PARAM_WIDTH}, t / {PARAM_WIDTH}), 0);\n  vec4 u_dx = texelFetch(u_params, ivec2((t + 1) % {PARAM_WIDTH}, (t + 1) / {PARAM_WIDTH}), 0);\n  vec4 u_dy = texelFetch(u_params, ivec2((t + 2) % {PARAM_WIDTH}, (t + 2) / {PARAM_WIDTH}), 0);\n  float u_x = texelFetch(u_params, ivec2((t + 3) % {PARAM_WIDTH}, (t + 3) / {PARAM_WIDTH}), 0).x;"
             );
             if implicit {
                 l += "\n  vec2 c = vec2(q * 2) + 0.5;\n  p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;";
@@ -251,7 +251,7 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
         (None, _) => "vec4 p = u_p;".to_string(),
     };
     let uniforms = if batched.is_some() {
-        format!("uniform {prec}sampler2D u_params;\nuniform int u_base;\nuniform int u_count;\n")
+        format!("uniform {prec}sampler2D u_params;\nuniform int u_base;\nuniform int u_count;\nuniform int u_param0;\n")
     } else {
         "uniform vec4 u_p;\nuniform float u_x;\nuniform vec4 u_dx;\nuniform vec4 u_dy;\nuniform vec2 u_c;\n".to_string()
     };
