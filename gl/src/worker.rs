@@ -246,9 +246,9 @@ impl Worker {
 
     /// Whether a case runs here: the declared capabilities decide, by the same
     /// [`Capabilities::support`] the runner applies before sending (so a case the runner sends is
-    /// never refused here), and the case must be valid. `Ok` holds the case as drawn (only the
-    /// supported API paths) and the paths left out, each with the reason.
-    fn admit(&self, case: &Case) -> Result<(Case, Vec<PathSkip>), String> {
+    /// never refused here), and the case must be valid. `Ok` holds the API paths to draw (the
+    /// supported ones) and the paths left out, each with the reason.
+    fn admit(&self, case: &Case) -> Result<(Vec<ApiPath>, Vec<PathSkip>), String> {
         let (apis, others) = match self.caps.support(case) {
             Support::Skip(reason) | Support::NotApplicable(reason) => return Err(reason),
             Support::Run { apis, others } => (apis, others),
@@ -291,20 +291,19 @@ impl Worker {
             })
             .chain(missing)
             .collect();
-        let mut drawn = case.clone();
-        drawn.api = apis;
-        Ok((drawn, left_out))
+        Ok((apis, left_out))
     }
 
     /// Answers a batch in order.
-    pub fn run_batch(&mut self, cases: &[Case]) -> Vec<Answer> {
+    pub fn run_batch(&mut self, cases: Vec<Case>) -> Vec<Answer> {
         let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
         let mut runnable: Vec<Case> = Vec::with_capacity(cases.len());
         let mut left_out: Vec<Vec<PathSkip>> = Vec::with_capacity(cases.len());
-        for c in cases {
-            match self.admit(c) {
-                Ok((case, skips)) => {
-                    runnable.push(case);
+        for mut c in cases {
+            match self.admit(&c) {
+                Ok((apis, skips)) => {
+                    c.api = apis;
+                    runnable.push(c);
                     left_out.push(skips);
                     answers.push(None);
                 }
@@ -448,7 +447,7 @@ fn flush_batch(
     }
     let (cases, points) = super::sweep::expand(cases);
     let mut points = points.into_iter();
-    let mut answers = worker.run_batch(&cases)?.into_iter();
+    let mut answers = worker.run_batch(cases)?.into_iter();
     let mut next = || {
         answers
             .next()
@@ -478,7 +477,7 @@ fn flush_batch(
 /// the implementation itself is gone, e.g. a browser that died).
 pub trait Serve {
     fn hello(&self) -> Hello;
-    fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>>;
+    fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>>;
     /// The answer to a state case. An implementation that does not declare the `tex_parameter`
     /// feature is never sent one; if it is, it answers Skip.
     fn run_state(&mut self, case: &StateCase) -> Reply {
@@ -499,7 +498,7 @@ impl Serve for Worker {
             wants_expect: false,
         }
     }
-    fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>> {
+    fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
         Ok(Worker::run_batch(self, cases))
     }
     fn run_state(&mut self, case: &StateCase) -> Reply {

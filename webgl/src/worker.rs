@@ -204,10 +204,10 @@ impl Serve for WebglWorker {
         }
     }
 
-    fn run_batch(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>> {
+    fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
         let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
         let mut runnable: Vec<Case> = Vec::new();
-        for c in cases {
+        for c in &cases {
             match self.admit(c) {
                 Ok(d) => {
                     runnable.push(d);
