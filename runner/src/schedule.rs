@@ -232,7 +232,7 @@ pub fn run_backends(
 mod tests {
     use super::*;
     use crate::backend::CaseOutcome;
-    use shadowcheck_model::Case;
+    use crate::backend::Sent;
     use shadowcheck_protocol::Capabilities;
 
     struct Idle {
@@ -247,7 +247,7 @@ mod tests {
         fn capabilities(&self) -> &Capabilities {
             &self.caps
         }
-        fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
+        fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
             cases
                 .iter()
                 .map(|_| CaseOutcome::Skip("idle".into()))

@@ -6,7 +6,8 @@ use super::{ApiOutcome, CaseOutcome};
 use shadowcheck_model::{ApiPath, Case, StateCase};
 use shadowcheck_protocol::{PathResult, PathSkip, Reply, StateResult};
 
-pub fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
+/// The outcome of `case`, sent with API paths `api`, from its answer.
+pub fn to_outcome(case: &Case, api: &[ApiPath], a: Reply) -> CaseOutcome {
     match a {
         Reply::Observation { results, .. }
             if results.iter().any(|r| r.sweep.len() != case.sweep.len()) =>
@@ -22,7 +23,7 @@ pub fn to_outcome(case: &Case, a: Reply) -> CaseOutcome {
         Reply::Observation {
             results, skipped, ..
         } => collect(
-            &case.api,
+            api,
             results
                 .into_iter()
                 .map(
@@ -141,7 +142,7 @@ mod tests {
     fn skipped_paths_become_skip_with_the_implementations_reason() {
         let case = compat_case();
         let line = r#"{"type":"observation","case_id":"x","results":[{"api":"glsl120","rgba":[1,1,1,1],"note":"shadow2D"}],"skipped":[{"api":"ff","reason":"fixed-function has no cube arrays"}]}"#;
-        let out = to_outcome(&case, Reply::parse_answer(line).unwrap());
+        let out = to_outcome(&case, &case.api, Reply::parse_answer(line).unwrap());
         let CaseOutcome::Observed(v) = out else {
             panic!("{out:?}")
         };
@@ -156,12 +157,14 @@ mod tests {
         // A skipped path the case does not have is the implementation's error, as a stray result is.
         let bad = r#"{"type":"observation","case_id":"x","results":[],"skipped":[{"api":"core","reason":"no"}]}"#;
         assert!(matches!(
-            to_outcome(&case, Reply::parse_answer(bad).unwrap()),
+            to_outcome(&case, &case.api, Reply::parse_answer(bad).unwrap()),
             CaseOutcome::Error(_)
         ));
         // An answered path that is also listed keeps its result.
         let both = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}],"skipped":[{"api":"ff","reason":"no"},{"api":"glsl120","reason":"no"}]}"#;
-        let CaseOutcome::Observed(v) = to_outcome(&case, Reply::parse_answer(both).unwrap()) else {
+        let CaseOutcome::Observed(v) =
+            to_outcome(&case, &case.api, Reply::parse_answer(both).unwrap())
+        else {
             panic!()
         };
         assert_eq!(v.len(), 2);
@@ -171,10 +174,11 @@ mod tests {
     #[test]
     fn two_results_for_one_path_and_paths_left_out_are_the_implementations_error() {
         let case = compat_case();
-        let error = |line: &str| match to_outcome(&case, Reply::parse_answer(line).unwrap()) {
-            CaseOutcome::Error(m) => m,
-            other => panic!("{other:?}"),
-        };
+        let error =
+            |line: &str| match to_outcome(&case, &case.api, Reply::parse_answer(line).unwrap()) {
+                CaseOutcome::Error(m) => m,
+                other => panic!("{other:?}"),
+            };
         let dup = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]},{"api":"glsl120","rgba":[0,0,0,1]},{"api":"ff","rgba":[1,1,1,1]}]}"#;
         assert_eq!(error(dup), "two results for API path `ff`");
         let empty = r#"{"type":"observation","case_id":"x","results":[]}"#;

@@ -13,8 +13,8 @@
 //! interrupted run stops waiting within [`POLL`]. Answers become outcomes in `answer.rs`.
 
 pub use super::command::{split_command, ProcessCommand};
-use super::{Backend, BackendError, Capabilities, CaseOutcome, Options, Sendable};
-use shadowcheck_model::{Case, StateCase};
+use super::{Backend, BackendError, Capabilities, CaseOutcome, Options, Sendable, Sent};
+use shadowcheck_model::StateCase;
 use shadowcheck_protocol::{Hello, Reply, Request};
 use std::collections::{HashSet, VecDeque};
 use std::io::{BufRead, BufReader, BufWriter, Write};
@@ -202,8 +202,9 @@ pub struct ExecBackend {
     give_up: usize,
     /// Cases that ended in Timeout since the last answer or crash.
     timeouts_in_a_row: usize,
-    /// Ids the current process has answered (to recognize a second answer for one of them).
-    answered: HashSet<String>,
+    /// Ids the current process has answered, by [`id_key`] (to recognize a second answer for
+    /// one of them without keeping a copy of every id of the run).
+    answered: HashSet<u64>,
     /// Answered cases found misbehaving later (see [`Backend::take_faults`]).
     faults: Vec<(String, String)>,
     /// The hello's `name`.
@@ -355,7 +356,8 @@ impl ExecBackend {
                 Ok(a) if a.case_id() == Some(c.id()) => out.push(c.outcome(a)),
                 Ok(a)
                     if a.case_id().is_some_and(|id| {
-                        group[..i].iter().any(|g| g.id() == id) || self.answered.contains(id)
+                        group[..i].iter().any(|g| g.id() == id)
+                            || self.answered.contains(&id_key(id))
                     }) =>
                 {
                     let id = a.case_id().unwrap_or_default().to_string();
@@ -380,8 +382,7 @@ impl ExecBackend {
                 }
             }
         }
-        self.answered
-            .extend(group.iter().map(|c| c.id().to_string()));
+        self.answered.extend(group.iter().map(|c| id_key(c.id())));
         self.check_stray_lines();
         (out, None)
     }
@@ -401,7 +402,7 @@ impl ExecBackend {
                 .ok()
                 .and_then(|a| a.case_id().map(str::to_string))
             {
-                Some(id) if self.answered.contains(&id) => self.fault(id),
+                Some(id) if self.answered.contains(&id_key(&id)) => self.fault(id),
                 _ => self.push_diag(format!(
                     "{}: ignored a line nobody asked for: {}",
                     self.name,
@@ -523,6 +524,15 @@ impl ExecBackend {
     }
 }
 
+/// The key of a case id in [`ExecBackend::answered`]: a 64-bit hash (two of a run's ids share
+/// one with odds of about 2^-64 per pair).
+fn id_key(id: &str) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    id.hash(&mut h);
+    h.finish()
+}
+
 fn clip(s: &str) -> String {
     if s.len() > 200 {
         let mut end = 200;
@@ -548,11 +558,13 @@ impl Backend for ExecBackend {
     fn batch_size(&self) -> usize {
         self.group
     }
-    fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
-        if self.sweeps || cases.iter().all(|c| c.sweep.is_empty()) {
-            self.run_group(cases)
+    fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
+        if self.sweeps || cases.iter().all(|c| c.case.sweep.is_empty()) {
+            self.run_group(&cases.iter().collect::<Vec<_>>())
         } else {
-            super::sweep::run_expanded(cases, |flat| self.run_group(flat))
+            super::sweep::run_expanded(cases, |flat| {
+                self.run_group(&flat.iter().collect::<Vec<_>>())
+            })
         }
     }
     fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {

@@ -47,15 +47,34 @@ pub trait Sendable: Sync {
     fn outcome(&self, reply: Reply) -> CaseOutcome;
 }
 
-impl Sendable for Case {
+/// A lookup case as a backend is sent it: the fixture's case and the API paths it is a test of
+/// on that backend (those the backend implements, less any skipped by name), so that narrowing
+/// the paths copies nothing.
+#[derive(Debug, Clone, Copy)]
+pub struct Sent<'a> {
+    pub case: &'a Case,
+    pub api: &'a [ApiPath],
+}
+
+impl<'a> Sent<'a> {
+    /// `case` with all its API paths.
+    pub fn whole(case: &'a Case) -> Sent<'a> {
+        Sent {
+            case,
+            api: &case.api,
+        }
+    }
+}
+
+impl Sendable for Sent<'_> {
     fn id(&self) -> &str {
-        &self.id
+        &self.case.id
     }
     fn write(&self, buf: &mut Vec<u8>, with_expect: bool) {
-        Request::write_case(buf, self, with_expect)
+        Request::write_case_on(buf, self.case, self.api, with_expect)
     }
     fn outcome(&self, reply: Reply) -> CaseOutcome {
-        answer::to_outcome(self, reply)
+        answer::to_outcome(self.case, self.api, reply)
     }
 }
 
@@ -92,12 +111,13 @@ pub enum BackendError {
 }
 
 /// A backend. `run_batch` answers `cases.len()` outcomes in order; the cases it receives are
-/// already inside its capabilities (the runner filtered them) and carry only supported API paths.
+/// already inside its capabilities (the runner filtered them) and name only supported API paths
+/// ([`Sent::api`]; the case's own list may name more).
 /// `Send`: backends may run in parallel threads (`--jobs`).
 pub trait Backend: Send {
     fn name(&self) -> &str;
     fn capabilities(&self) -> &Capabilities;
-    fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome>;
+    fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome>;
     /// Runs TexParameter state cases (only sent when the capabilities list the `tex_parameter`
     /// feature, or declare no feature list). A backend without them answers Skip.
     fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {

@@ -5,8 +5,8 @@
 //! `soft` runs each case under its own spec's variant. In-process and allocation-light: one
 //! `SoftUnit` per spec, built once; each lookup returns four f32 channels.
 
-use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome};
-use shadowcheck_model::{Case, Spec, StateCase};
+use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome, Sent};
+use shadowcheck_model::{Spec, StateCase};
 use shadowcheck_soft::SoftUnit;
 
 pub struct SoftBackend {
@@ -48,14 +48,15 @@ impl SoftBackend {
         self.units[i].get_or_insert_with(|| SoftUnit::new(spec))
     }
 
-    fn run_one(&mut self, case: &Case) -> CaseOutcome {
+    fn run_one(&mut self, sent: Sent<'_>) -> CaseOutcome {
+        let case = sent.case;
         if let Some(only) = self.only {
             if case.spec != only {
                 return CaseOutcome::Skip(format!("case is for spec {}", case.spec));
             }
         }
         let unit = self.unit(case.spec);
-        let results = case
+        let results = sent
             .api
             .iter()
             .map(|&api| {
@@ -92,8 +93,8 @@ impl Backend for SoftBackend {
     fn batch_size(&self) -> usize {
         1024
     }
-    fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
-        cases.iter().map(|c| self.run_one(c)).collect()
+    fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
+        cases.iter().map(|c| self.run_one(*c)).collect()
     }
     /// The soft unit's own TexParameter state (`shadowcheck_soft::tex_param`).
     fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {

@@ -4,19 +4,20 @@
 //! `sweep`. A point that does not come back observed on every path its case was observed on
 //! decides the case's outcome, naming the point.
 
-use super::{ApiOutcome, CaseOutcome};
+use super::{ApiOutcome, CaseOutcome, Sent};
 use shadowcheck_model::Case;
 
 /// Runs `cases` through `run`, sweeps expanded, and folds the outcomes back (one per case, in
 /// order).
 pub fn run_expanded(
-    cases: &[&Case],
-    run: impl FnOnce(&[&Case]) -> Vec<CaseOutcome>,
+    cases: &[Sent<'_>],
+    run: impl FnOnce(&[Sent<'_>]) -> Vec<CaseOutcome>,
 ) -> Vec<CaseOutcome> {
     // Owned cases for every case with a sweep (itself without it, then its points).
     let owned: Vec<Vec<Case>> = cases
         .iter()
         .map(|c| {
+            let c = c.case;
             if c.sweep.is_empty() {
                 return vec![];
             }
@@ -26,14 +27,14 @@ pub fn run_expanded(
             v
         })
         .collect();
-    let flat: Vec<&Case> = cases
+    let flat: Vec<Sent<'_>> = cases
         .iter()
         .zip(&owned)
         .flat_map(|(c, o)| {
             if o.is_empty() {
                 vec![*c]
             } else {
-                o.iter().collect()
+                o.iter().map(|case| Sent { case, api: c.api }).collect()
             }
         })
         .collect();
@@ -47,7 +48,7 @@ pub fn run_expanded(
         .iter()
         .map(|c| {
             let main = next();
-            let points: Vec<CaseOutcome> = (0..c.sweep.len()).map(|_| next()).collect();
+            let points: Vec<CaseOutcome> = (0..c.case.sweep.len()).map(|_| next()).collect();
             merge(main, points)
         })
         .collect()

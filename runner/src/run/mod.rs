@@ -11,7 +11,7 @@
 //! answer for a case) make that case Crash, re-sent as a new record. Once the run is interrupted
 //! ([`crate::interrupt`]) no batch is sent, the batch in flight is dropped and no re-run is made.
 
-use crate::backend::{ApiOutcome, Backend, CaseOutcome, Support};
+use crate::backend::{ApiOutcome, Backend, CaseOutcome, Sent, Support};
 use crate::baseline::Lists;
 use crate::events::{Event, Fanout, Sink, Timing};
 use crate::interrupt;
@@ -234,15 +234,16 @@ fn base_result(backend: &str, case: &Case, api: ApiPath, fixtures: Option<&str>)
 /// The raw outcome of each API path of `sent` from the backend's answer.
 fn judge_outcome(
     backend: &str,
-    sent: &Case,
+    sent: Sent<'_>,
     outcome: &CaseOutcome,
     duration: f64,
     fixtures: Option<&str>,
 ) -> Vec<TestResult> {
+    let case = sent.case;
     sent.api
         .iter()
         .map(|&api| {
-            let mut r = base_result(backend, sent, api, fixtures);
+            let mut r = base_result(backend, case, api, fixtures);
             r.duration = duration;
             let (o, reason) = match outcome {
                 CaseOutcome::Skip(m) => (Outcome::Skip, Some(m.clone())),
@@ -268,7 +269,7 @@ fn judge_outcome(
                         sweep,
                     }) => {
                         let (j, shown) =
-                            verdict::judge_sweep(sent, api, *rgba, stored.as_ref(), sweep);
+                            verdict::judge_sweep(case, api, *rgba, stored.as_ref(), sweep);
                         r.observed = Some(Rgba(shown));
                         r.expected = j.expected;
                         r.footprint = j.footprint;
@@ -310,7 +311,8 @@ pub fn run_backend(
             .explicit_fixtures
             .then(|| set.files[l.file].as_str())
     };
-    let mut to_send: Vec<(Cow<'_, Case>, Option<&str>)> = Vec::new();
+    // Each case to send, with the API paths it is a test of here (borrowed when all of them).
+    let mut to_send = Vec::new();
     for l in &set.cases {
         let case = &l.case;
         let fixtures = file_of(l);
@@ -353,15 +355,9 @@ pub fn run_backend(
             continue;
         }
         if apis.len() == case.api.len() {
-            to_send.push((Cow::Borrowed(case), fixtures));
+            to_send.push((case, Cow::Borrowed(case.api.as_slice()), fixtures));
         } else {
-            to_send.push((
-                Cow::Owned(Case {
-                    api: apis,
-                    ..case.clone()
-                }),
-                fixtures,
-            ));
+            to_send.push((case, Cow::Owned(apis), fixtures));
         }
     }
     let batch = backend.batch_size().max(1);
@@ -369,7 +365,10 @@ pub fn run_backend(
         if interrupt::requested() {
             break;
         }
-        let refs: Vec<&Case> = chunk.iter().map(|(c, _)| c.as_ref()).collect();
+        let refs: Vec<Sent<'_>> = chunk
+            .iter()
+            .map(|(case, api, _)| Sent { case, api })
+            .collect();
         let t0 = Instant::now();
         let mut outcomes = backend.run_batch(&refs);
         if interrupt::requested() {
@@ -386,11 +385,12 @@ pub fn run_backend(
         let per_case = dt / refs.len() as f64;
         let t1 = Instant::now();
         let missing = CaseOutcome::Crash("the backend gave no answer".into());
-        for ((case, fixtures), outcome) in chunk
+        for ((sent, (_, _, fixtures)), outcome) in refs
             .iter()
+            .zip(chunk)
             .zip(outcomes.iter().chain(std::iter::repeat(&missing)))
         {
-            for mut r in judge_outcome(&name, case, outcome, per_case, *fixtures) {
+            for mut r in judge_outcome(&name, *sent, outcome, per_case, *fixtures) {
                 let (status, note) = lists.status(&name, &r.test, r.outcome);
                 r.status = status;
                 if let Some(n) = note {
@@ -429,9 +429,9 @@ pub fn run_backend(
 }
 
 /// Makes the cases of `refs` that a fault names Crash, with the fault's message.
-fn blame_in_batch(refs: &[&Case], outcomes: &mut [CaseOutcome], faults: &[(String, String)]) {
-    for (case, outcome) in refs.iter().zip(outcomes.iter_mut()) {
-        if let Some((_, msg)) = faults.iter().find(|(id, _)| *id == case.id) {
+fn blame_in_batch(refs: &[Sent<'_>], outcomes: &mut [CaseOutcome], faults: &[(String, String)]) {
+    for (sent, outcome) in refs.iter().zip(outcomes.iter_mut()) {
+        if let Some((_, msg)) = faults.iter().find(|(id, _)| *id == sent.case.id) {
             *outcome = CaseOutcome::Crash(msg.clone());
         }
     }
@@ -440,9 +440,9 @@ fn blame_in_batch(refs: &[&Case], outcomes: &mut [CaseOutcome], faults: &[(Strin
 /// Makes the tests of earlier batches that a fault names Crash (a later answer line showed their
 /// implementation misbehaving), and sends them again with that status (the last record of a test in
 /// results.jsonl wins).
-fn blame_earlier(ctx: &mut Ctx<'_>, backend: &str, refs: &[&Case], faults: &[(String, String)]) {
+fn blame_earlier(ctx: &mut Ctx<'_>, backend: &str, refs: &[Sent<'_>], faults: &[(String, String)]) {
     for (id, msg) in faults {
-        if refs.iter().any(|c| c.id == *id) {
+        if refs.iter().any(|c| c.case.id == *id) {
             continue;
         }
         for i in 0..ctx.results.len() {
@@ -484,27 +484,23 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
         return;
     }
     // The same narrowing as the first run: only the API paths that regressed.
-    let cases: Vec<(Case, Vec<usize>, Option<&str>)> = set
+    let cases: Vec<_> = set
         .cases
         .iter()
         .filter_map(|l| {
             let idx = by_case.get(l.case.id.as_str())?;
-            let apis = idx.iter().map(|&i| ctx.results[i].api).collect();
+            let apis: Vec<ApiPath> = idx.iter().map(|&i| ctx.results[i].api).collect();
             let file = ctx
                 .settings
                 .explicit_fixtures
                 .then(|| set.files[l.file].as_str());
-            Some((
-                Case {
-                    api: apis,
-                    ..l.case.clone()
-                },
-                idx.clone(),
-                file,
-            ))
+            Some((&l.case, apis, idx.clone(), file))
         })
         .collect();
-    let refs: Vec<&Case> = cases.iter().map(|(c, _, _)| c).collect();
+    let refs: Vec<Sent<'_>> = cases
+        .iter()
+        .map(|(case, api, _, _)| Sent { case, api })
+        .collect();
     let mut outcomes = Vec::with_capacity(refs.len());
     for chunk in refs.chunks(backend.batch_size().max(1)) {
         let mut got = backend.run_batch(chunk);
@@ -515,7 +511,7 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
         return;
     }
     let recurred = refs.iter().zip(&outcomes).find_map(|(c, o)| {
-        matches!(o, CaseOutcome::Crash(_) | CaseOutcome::Timeout(_)).then_some(c.id.as_str())
+        matches!(o, CaseOutcome::Crash(_) | CaseOutcome::Timeout(_)).then_some(c.case.id.as_str())
     });
     for d in backend.take_diagnostics() {
         ctx.fanout.emit(&Event::Diagnostic {
@@ -523,8 +519,8 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
             message: &d,
         });
     }
-    for ((case, idx, file), outcome) in cases.iter().zip(outcomes.iter()) {
-        let again = judge_outcome(&name, case, outcome, 0.0, *file);
+    for ((sent, (_, _, idx, file)), outcome) in refs.iter().zip(&cases).zip(outcomes.iter()) {
+        let again = judge_outcome(&name, *sent, outcome, 0.0, *file);
         for (&i, second) in idx.iter().zip(again) {
             let r = &mut ctx.results[i];
             r.rerun = Some(second.outcome);

@@ -19,11 +19,11 @@ impl Backend for Fake {
     fn capabilities(&self) -> &Capabilities {
         &self.caps
     }
-    fn run_batch(&mut self, cases: &[&Case]) -> Vec<CaseOutcome> {
+    fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
         cases
             .iter()
             .map(|c| {
-                self.sent.push((c.id.clone(), c.api.clone()));
+                self.sent.push((c.case.id.clone(), c.api.to_vec()));
                 CaseOutcome::Observed(
                     c.api
                         .iter()
