@@ -181,3 +181,60 @@ impl Renderer {
         self.check_group(group.iter().map(|(ci, _)| *ci), st);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::paths;
+    use shadowcheck_model::{ApiPath, Target};
+
+    /// `n` cases of one program, case k with P.x = k + offset (so each value names its case).
+    fn group(n: usize, first_ci: usize, offset: f32) -> Vec<(usize, Vec<Plan>)> {
+        let case = crate::test_case::case(Target::T2d, 2, 2, 1);
+        (0..n)
+            .map(|k| {
+                let mut p = paths::plan(ApiPath::GlslCore, &case).expect("core plan");
+                p.p[0] = k as f32 + offset;
+                (first_ci + k, vec![p])
+            })
+            .collect()
+    }
+
+    #[test]
+    fn staged_values_sit_where_each_draw_reads_them() {
+        let per_case = (PARAM_TEXELS * 4) as usize;
+        let a = group(PARAM_CASES + 10, 0, 0.0);
+        let b = group(30, PARAM_CASES + 10, 5000.0);
+        let mut staging = ParamStaging::default();
+        let ba = batches_of(&a, &mut staging);
+        let bb = batches_of(&b, &mut staging);
+        assert!(shaders::batchable(&a[0].1[0].key));
+        // A group larger than one texture is split at PARAM_CASES; a batch never straddles
+        // textures, so the second group's 30 start a texture only where the rest does not fit.
+        assert_eq!(
+            ba.iter()
+                .map(|b| (b.items.len(), b.texture, b.first))
+                .collect::<Vec<_>>(),
+            vec![(PARAM_CASES, 0, 0), (10, 1, 0)]
+        );
+        assert_eq!(
+            bb.iter()
+                .map(|b| (b.items.len(), b.texture, b.first))
+                .collect::<Vec<_>>(),
+            vec![(30, 1, 10)]
+        );
+        assert_eq!(staging.textures[0].len(), PARAM_CASES * per_case);
+        assert_eq!(staging.textures[1].len(), 40 * per_case);
+        // Item k of a draw is read at case index first + k of its texture: P, dx, dy, (x, 0, 0, 0).
+        for batch in ba.iter().chain(&bb) {
+            let data = &staging.textures[batch.texture];
+            for (k, (_, plan)) in batch.items.iter().enumerate() {
+                let at = (batch.first + k) * per_case;
+                assert_eq!(data[at..at + 4], plan.p);
+                assert_eq!(data[at + 4..at + 8], plan.dx);
+                assert_eq!(data[at + 8..at + 12], plan.dy);
+                assert_eq!(data[at + 12..at + 16], [plan.x, 0.0, 0.0, 0.0]);
+            }
+        }
+    }
+}
