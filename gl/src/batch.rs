@@ -14,8 +14,11 @@
 //! upload per batch instead of one per draw saves a texture update per group.
 
 use super::draw::{BatchState, Pending, Renderer};
+use super::framebuffer::{pixel, FB_SIZE};
 use super::paths::{Plan, ShaderKey};
+use super::programs::Compiled;
 use super::shaders::{self, PARAM_CASES, PARAM_TEXELS, PARAM_WIDTH};
+use super::texture;
 use super::unitstate;
 use glow::HasContext;
 use shadowcheck_model::Case;
@@ -90,6 +93,60 @@ pub(super) fn batches_of<'p>(
 }
 
 impl Renderer {
+    /// Parameter texture `k`, created (with those before it) when missing.
+    pub(super) unsafe fn param_texture(&mut self, k: usize) -> Result<glow::Texture, String> {
+        let rows = shaders::PARAM_CASES as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
+        while self.params.len() <= k {
+            self.gl.active_texture(glow::TEXTURE1);
+            let t = texture::rgba32f(&self.gl, shaders::PARAM_WIDTH, rows);
+            self.gl.active_texture(glow::TEXTURE0);
+            self.params.push(t?);
+        }
+        Ok(self.params[k])
+    }
+
+    /// One batched draw: the values of its `n` cases are in parameter texture `param.0` from case
+    /// `param.1` on, their results go to slots `slot0..slot0+n`.
+    pub(super) unsafe fn draw_batched(
+        &mut self,
+        key: &ShaderKey,
+        slot0: usize,
+        n: usize,
+        param: (usize, usize),
+    ) -> Result<(), String> {
+        let params = self.param_texture(param.0)?;
+        let compiled = self.programs.get(
+            &self.gl,
+            &self.info,
+            self.legacy.as_ref(),
+            key,
+            Some(FB_SIZE),
+        )?;
+        let Compiled::Glsl(p) = compiled else {
+            return Err("batched program is not GLSL".into());
+        };
+        let gl = &self.gl;
+        // Only the quads of the draw's slots are rasterized: the rows they span, and within a
+        // single row only its columns (quads stay at even window coordinates).
+        let (x0, y0) = pixel(slot0);
+        let (x1, y1) = pixel(slot0 + n - 1);
+        if y0 == y1 {
+            gl.viewport(x0, y0, x1 + 2 - x0, 2);
+        } else {
+            gl.viewport(0, y0, FB_SIZE, y1 + 2 - y0);
+        }
+        gl.active_texture(glow::TEXTURE1);
+        gl.bind_texture(glow::TEXTURE_2D, Some(params));
+        gl.active_texture(glow::TEXTURE0);
+        gl.use_program(Some(p.program));
+        gl.uniform_1_i32(p.u_base.as_ref(), slot0 as i32);
+        gl.uniform_1_i32(p.u_count.as_ref(), n as i32);
+        gl.uniform_1_i32(p.u_param0.as_ref(), param.1 as i32);
+        gl.bind_vertex_array(Some(self.vao));
+        gl.draw_arrays(glow::TRIANGLES, 0, 3);
+        Ok(())
+    }
+
     /// Uploads the staged values, texture k of `staging` to parameter texture k (created when
     /// there are fewer), only the rows that hold values.
     pub(super) unsafe fn upload_staged(&mut self, staging: &ParamStaging) -> Result<(), String> {

@@ -1,7 +1,8 @@
 //! Drawing a batch of cases: each (case, API path) owns one 2x2 pixel quad of an RGBA32F
 //! framebuffer and its result is the quad's lower-left pixel, so results are not quantized, all
 //! four channels are observed, and a batched draw of implicit-derivative lookups gives every case
-//! a quad of its own (derivatives are differences within a quad); the batch is read back at once.
+//! a quad of its own (derivatives are differences within a quad); the batch is read back at once
+//! (slots, clearing and read-back: `framebuffer.rs`).
 //!
 //! Consecutive cases with the same texture and sampler state (a case and its sweep points, or
 //! the grid's neighbours: only the reference or the coordinate changes) share one texture object,
@@ -9,28 +10,17 @@
 //! values from a parameter texture (see `batch.rs`). Compatibility contexts give each API path of
 //! such a group a texture of its own (see `run_compat_group`).
 
+use super::framebuffer::{pixel, CAPACITY, FB_SIZE};
 use super::legacy::{self, Legacy};
-use super::paths::{self, GlInfo, LodForm, Plan, ShaderKey};
+use super::paths::{self, GlInfo, LodForm, Plan};
 use super::programs::{Compiled, ProgramCache};
-use super::shaders;
 use super::texture;
 use super::unitstate;
 use super::{batch, GlError};
 use glow::HasContext;
 use shadowcheck_model::{ApiPath, Case, Target, Texels};
-use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
+use shadowcheck_protocol::{PathResult, PathSkip};
 
-/// Width and height of the result framebuffer in pixels.
-pub(super) const FB_SIZE: i32 = 256;
-/// Quads (2x2 pixels, one per (case, path)) in a row of the framebuffer.
-pub(super) const QUADS_PER_ROW: i32 = FB_SIZE / 2;
-/// (case, path) results the framebuffer holds.
-pub(super) const CAPACITY: usize = (QUADS_PER_ROW * QUADS_PER_ROW) as usize;
-/// The pixel holding slot `slot`'s result: the lower-left pixel of its quad.
-pub(super) fn pixel(slot: usize) -> (i32, i32) {
-    let s = slot as i32;
-    (2 * (s % QUADS_PER_ROW), 2 * (s / QUADS_PER_ROW))
-}
 /// Most textures kept alive for a deferred read-back.
 const MAX_DEFERRED: usize = 4096;
 
@@ -48,14 +38,14 @@ pub struct Renderer {
     pub gl: glow::Context,
     pub info: GlInfo,
     pub(super) legacy: Option<Legacy>,
-    fbo: glow::Framebuffer,
-    vao: glow::VertexArray,
+    pub(super) fbo: glow::Framebuffer,
+    pub(super) vao: glow::VertexArray,
     /// RGBA32F case values for batched draws (unit 1), [`shaders::PARAM_CASES`] cases each;
     /// created as a batch needs them.
-    params: Vec<glow::Texture>,
+    pub(super) params: Vec<glow::Texture>,
     /// Slots drawn since the framebuffer was last cleared (their quad rows are cleared next).
-    drawn: usize,
-    programs: ProgramCache,
+    pub(super) drawn: usize,
+    pub(super) programs: ProgramCache,
 }
 
 /// A drawn path waiting for read-back.
@@ -151,60 +141,6 @@ impl Renderer {
             drawn: CAPACITY,
             programs: ProgramCache::default(),
         })
-    }
-
-    /// Parameter texture `k`, created (with those before it) when missing.
-    pub(super) unsafe fn param_texture(&mut self, k: usize) -> Result<glow::Texture, String> {
-        let rows = shaders::PARAM_CASES as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
-        while self.params.len() <= k {
-            self.gl.active_texture(glow::TEXTURE1);
-            let t = texture::rgba32f(&self.gl, shaders::PARAM_WIDTH, rows);
-            self.gl.active_texture(glow::TEXTURE0);
-            self.params.push(t?);
-        }
-        Ok(self.params[k])
-    }
-
-    /// One batched draw: the values of its `n` cases are in parameter texture `param.0` from case
-    /// `param.1` on, their results go to slots `slot0..slot0+n`.
-    pub(super) unsafe fn draw_batched(
-        &mut self,
-        key: &ShaderKey,
-        slot0: usize,
-        n: usize,
-        param: (usize, usize),
-    ) -> Result<(), String> {
-        let params = self.param_texture(param.0)?;
-        let compiled = self.programs.get(
-            &self.gl,
-            &self.info,
-            self.legacy.as_ref(),
-            key,
-            Some(FB_SIZE),
-        )?;
-        let Compiled::Glsl(p) = compiled else {
-            return Err("batched program is not GLSL".into());
-        };
-        let gl = &self.gl;
-        // Only the quads of the draw's slots are rasterized: the rows they span, and within a
-        // single row only its columns (quads stay at even window coordinates).
-        let (x0, y0) = pixel(slot0);
-        let (x1, y1) = pixel(slot0 + n - 1);
-        if y0 == y1 {
-            gl.viewport(x0, y0, x1 + 2 - x0, 2);
-        } else {
-            gl.viewport(0, y0, FB_SIZE, y1 + 2 - y0);
-        }
-        gl.active_texture(glow::TEXTURE1);
-        gl.bind_texture(glow::TEXTURE_2D, Some(params));
-        gl.active_texture(glow::TEXTURE0);
-        gl.use_program(Some(p.program));
-        gl.uniform_1_i32(p.u_base.as_ref(), slot0 as i32);
-        gl.uniform_1_i32(p.u_count.as_ref(), n as i32);
-        gl.uniform_1_i32(p.u_param0.as_ref(), param.1 as i32);
-        gl.bind_vertex_array(Some(self.vao));
-        gl.draw_arrays(glow::TRIANGLES, 0, 3);
-        Ok(())
     }
 
     pub(super) unsafe fn draw(
@@ -305,47 +241,6 @@ impl Renderer {
             }
         }
         Ok(())
-    }
-
-    /// The framebuffer's pixels up to the quad row of slot `used - 1`, row by row.
-    pub(super) unsafe fn read(&self, used: usize) -> Vec<[f32; 4]> {
-        let rows = 2 * used.div_ceil(QUADS_PER_ROW as usize).max(1) as i32;
-        let mut buf = vec![0u8; (FB_SIZE * rows) as usize * 16];
-        self.gl
-            .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
-        self.gl.read_pixels(
-            0,
-            0,
-            FB_SIZE,
-            rows,
-            glow::RGBA,
-            glow::FLOAT,
-            glow::PixelPackData::Slice(Some(&mut buf)),
-        );
-        buf.chunks_exact(16)
-            .map(|c| {
-                let f = |i: usize| f32::from_ne_bytes([c[i], c[i + 1], c[i + 2], c[i + 3]]);
-                [f(0), f(4), f(8), f(12)]
-            })
-            .collect()
-    }
-
-    /// Clears the quad rows drawn since the last clear (only those: clearing the whole
-    /// framebuffer before every batch cost llvmpipe a 1 MiB fill per batch).
-    pub(super) unsafe fn clear(&mut self) {
-        let rows = (2 * self.drawn.div_ceil(QUADS_PER_ROW as usize)).min(FB_SIZE as usize) as i32;
-        self.drawn = 0;
-        self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(self.fbo));
-        self.gl.viewport(0, 0, FB_SIZE, FB_SIZE);
-        if rows == 0 {
-            return;
-        }
-        // A pixel no draw wrote reads back as -1, which no path can return.
-        self.gl.clear_color(-1.0, -1.0, -1.0, -1.0);
-        self.gl.enable(glow::SCISSOR_TEST);
-        self.gl.scissor(0, 0, FB_SIZE, rows);
-        self.gl.clear(glow::COLOR_BUFFER_BIT);
-        self.gl.disable(glow::SCISSOR_TEST);
     }
 
     /// Runs a batch and answers every case, in order.
@@ -509,21 +404,6 @@ impl Renderer {
         }
     }
 
-    /// Takes `n` consecutive slots, reading back and clearing first when the framebuffer cannot
-    /// hold them; returns the first.
-    pub(super) unsafe fn take_slots(&mut self, st: &mut BatchState, n: usize) -> usize {
-        if st.next_slot + n > CAPACITY {
-            let mut pending = std::mem::take(&mut st.pending);
-            self.collect(&mut pending, &mut st.results);
-            self.clear();
-            st.next_slot = 0;
-        }
-        let first = st.next_slot;
-        st.next_slot += n;
-        self.drawn = self.drawn.max(st.next_slot);
-        first
-    }
-
     /// A group of consecutive compatibility-context cases with equal texture and sampler state
     /// (a case and its sweep points, or the grid's neighbours): each API path on a fresh texture
     /// that every case of the group naming that path is drawn with. Mesa keeps per-texture
@@ -586,46 +466,5 @@ impl Renderer {
             }
             self.check_group(users.iter().map(|(ci, _)| *ci), st);
         }
-    }
-
-    /// Reads back the pending pixels into `results`.
-    pub(super) unsafe fn collect(
-        &self,
-        pending: &mut Vec<Pending>,
-        results: &mut [Vec<PathResult>],
-    ) {
-        if pending.is_empty() {
-            return;
-        }
-        let used = pending.iter().map(|p| p.slot + 1).max().unwrap_or(1);
-        let px = self.read(used);
-        for p in pending.drain(..) {
-            let (x, y) = pixel(p.slot);
-            let v = px
-                .get((y * FB_SIZE + x) as usize)
-                .copied()
-                .unwrap_or([f32::NAN; 4]);
-            results[p.case].push(PathResult {
-                sweep: vec![],
-                api: p.path.key().to_string(),
-                rgba: Rgba(v.map(|c| c as f64)),
-                stored: None,
-                note: Some(p.note),
-            });
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn slots_are_the_lower_left_pixels_of_quads_row_by_row() {
-        assert_eq!(pixel(0), (0, 0));
-        assert_eq!(pixel(1), (2, 0));
-        assert_eq!(pixel(QUADS_PER_ROW as usize - 1), (FB_SIZE - 2, 0));
-        assert_eq!(pixel(QUADS_PER_ROW as usize), (0, 2));
-        assert_eq!(pixel(CAPACITY - 1), (FB_SIZE - 2, FB_SIZE - 2));
     }
 }

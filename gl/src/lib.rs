@@ -16,6 +16,7 @@ mod batch;
 pub mod context;
 pub mod draw;
 pub mod egl;
+mod framebuffer;
 pub mod legacy;
 pub mod libdir;
 pub mod names;

@@ -56,16 +56,6 @@ pub struct Sent<'a> {
     pub api: &'a [ApiPath],
 }
 
-impl<'a> Sent<'a> {
-    /// `case` with all its API paths.
-    pub fn whole(case: &'a Case) -> Sent<'a> {
-        Sent {
-            case,
-            api: &case.api,
-        }
-    }
-}
-
 impl Sendable for Sent<'_> {
     fn id(&self) -> &str {
         &self.case.id

@@ -1,0 +1,118 @@
+//! The result framebuffer of a batch: an RGBA32F colour buffer of 2x2 pixel quads, one per (case,
+//! API path), whose lower-left pixel holds the result ("slots", taken in order and read back
+//! together). A pixel no draw wrote reads back as -1, which no path can return.
+
+use super::draw::{BatchState, Pending, Renderer};
+use glow::HasContext;
+use shadowcheck_protocol::{PathResult, Rgba};
+
+/// Width and height of the result framebuffer in pixels.
+pub(super) const FB_SIZE: i32 = 256;
+/// Quads (2x2 pixels, one per (case, path)) in a row of the framebuffer.
+pub(super) const QUADS_PER_ROW: i32 = FB_SIZE / 2;
+/// (case, path) results the framebuffer holds.
+pub(super) const CAPACITY: usize = (QUADS_PER_ROW * QUADS_PER_ROW) as usize;
+/// The pixel holding slot `slot`'s result: the lower-left pixel of its quad.
+pub(super) fn pixel(slot: usize) -> (i32, i32) {
+    let s = slot as i32;
+    (2 * (s % QUADS_PER_ROW), 2 * (s / QUADS_PER_ROW))
+}
+
+impl Renderer {
+    /// The framebuffer's pixels up to the quad row of slot `used - 1`, row by row.
+    pub(super) unsafe fn read(&self, used: usize) -> Vec<[f32; 4]> {
+        let rows = 2 * used.div_ceil(QUADS_PER_ROW as usize).max(1) as i32;
+        let mut buf = vec![0u8; (FB_SIZE * rows) as usize * 16];
+        self.gl
+            .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
+        self.gl.read_pixels(
+            0,
+            0,
+            FB_SIZE,
+            rows,
+            glow::RGBA,
+            glow::FLOAT,
+            glow::PixelPackData::Slice(Some(&mut buf)),
+        );
+        buf.chunks_exact(16)
+            .map(|c| {
+                let f = |i: usize| f32::from_ne_bytes([c[i], c[i + 1], c[i + 2], c[i + 3]]);
+                [f(0), f(4), f(8), f(12)]
+            })
+            .collect()
+    }
+
+    /// Clears the quad rows drawn since the last clear (only those: clearing the whole
+    /// framebuffer before every batch cost llvmpipe a 1 MiB fill per batch).
+    pub(super) unsafe fn clear(&mut self) {
+        let rows = (2 * self.drawn.div_ceil(QUADS_PER_ROW as usize)).min(FB_SIZE as usize) as i32;
+        self.drawn = 0;
+        self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(self.fbo));
+        self.gl.viewport(0, 0, FB_SIZE, FB_SIZE);
+        if rows == 0 {
+            return;
+        }
+        // A pixel no draw wrote reads back as -1, which no path can return.
+        self.gl.clear_color(-1.0, -1.0, -1.0, -1.0);
+        self.gl.enable(glow::SCISSOR_TEST);
+        self.gl.scissor(0, 0, FB_SIZE, rows);
+        self.gl.clear(glow::COLOR_BUFFER_BIT);
+        self.gl.disable(glow::SCISSOR_TEST);
+    }
+
+    /// Takes `n` consecutive slots, reading back and clearing first when the framebuffer cannot
+    /// hold them; returns the first.
+    pub(super) unsafe fn take_slots(&mut self, st: &mut BatchState, n: usize) -> usize {
+        if st.next_slot + n > CAPACITY {
+            let mut pending = std::mem::take(&mut st.pending);
+            self.collect(&mut pending, &mut st.results);
+            self.clear();
+            st.next_slot = 0;
+        }
+        let first = st.next_slot;
+        st.next_slot += n;
+        self.drawn = self.drawn.max(st.next_slot);
+        first
+    }
+
+    /// Reads back the pending pixels into `results`.
+    pub(super) unsafe fn collect(
+        &self,
+        pending: &mut Vec<Pending>,
+        results: &mut [Vec<PathResult>],
+    ) {
+        if pending.is_empty() {
+            return;
+        }
+        let used = pending.iter().map(|p| p.slot + 1).max().unwrap_or(1);
+        let px = self.read(used);
+        for p in pending.drain(..) {
+            let (x, y) = pixel(p.slot);
+            let v = px
+                .get((y * FB_SIZE + x) as usize)
+                .copied()
+                .unwrap_or([f32::NAN; 4]);
+            results[p.case].push(PathResult {
+                sweep: vec![],
+                api: p.path.key().to_string(),
+                rgba: Rgba(v.map(|c| c as f64)),
+                stored: None,
+                note: Some(p.note),
+            });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slots_are_the_lower_left_pixels_of_quads_row_by_row() {
+        assert_eq!(pixel(0), (0, 0));
+        assert_eq!(pixel(1), (2, 0));
+        assert_eq!(pixel(QUADS_PER_ROW as usize - 1), (FB_SIZE - 2, 0));
+        assert_eq!(pixel(QUADS_PER_ROW as usize), (0, 2));
+        assert_eq!(pixel(CAPACITY - 1), (FB_SIZE - 2, FB_SIZE - 2));
+    }
+}
