@@ -1,7 +1,8 @@
 //! `exec:` backends: an implementation in a child process speaking runner/PROTOCOL.md.
 //!
 //! Pipelined: a group of cases is written, then `flush`, then the answers are read (a reader
-//! thread drains stdout, so a process that answers while reading never blocks on a full pipe).
+//! thread drains stdout, so a process that answers while reading never blocks on a full pipe);
+//! the next group is written before the answers of the one before are read (two in flight).
 //! A process that dies, stalls or answers garbage is killed; the unanswered part of the group is
 //! bisected in fresh processes until the case that does it is alone (Crash or Timeout), and the
 //! run goes on. When the process was answering case by case, the first unanswered case is tried
@@ -205,6 +206,9 @@ pub struct ExecBackend {
     /// Ids the current process has answered, by [`id_key`] (to recognize a second answer for
     /// one of them without keeping a copy of every id of the run).
     answered: HashSet<u64>,
+    /// Groups written ahead ([`Backend::send_ahead`]) and not yet read: their [`group_key`] and
+    /// the process they went to (by [`ExecBackend::spawns`]).
+    ahead: VecDeque<(u64, usize)>,
     /// Answered cases found misbehaving later (see [`Backend::take_faults`]).
     faults: Vec<(String, String)>,
     /// The hello's `name`.
@@ -241,6 +245,7 @@ impl ExecBackend {
             give_up: opts.give_up,
             timeouts_in_a_row: 0,
             answered: HashSet::new(),
+            ahead: VecDeque::new(),
             faults: vec![],
             implementation: None,
             compiles_per_state: true,
@@ -322,19 +327,18 @@ impl ExecBackend {
         &mut self,
         group: &[&T],
     ) -> (Vec<CaseOutcome>, Option<Failure>) {
-        self.check_stray_lines();
+        // A group written ahead (`send_ahead`) to this process is only read here.
+        let written = self.take_ahead(group);
+        if !written {
+            self.check_stray_lines();
+        }
         let Some(p) = self.proc.as_mut() else {
             return (vec![], Some(Failure::Died));
         };
-        // The whole group in one buffer, then `flush`: one hand-over to the writer thread.
-        let mut buf = Vec::with_capacity(group.len() * 1024);
-        for c in group {
-            c.write(&mut buf, self.wants_expect);
-            buf.push(b'\n');
+        if !written {
+            // A failed hand-over means the process is gone: reading says so (Died).
+            let _ = p.send(group_frame(group, self.wants_expect));
         }
-        buf.extend_from_slice(Request::FLUSH_LINE);
-        // A failed hand-over means the process is gone: reading says so (Died).
-        let _ = p.send(buf);
         let deadline = Instant::now() + self.timeout;
         let mut out = Vec::with_capacity(group.len());
         for (i, c) in group.iter().enumerate() {
@@ -389,7 +393,11 @@ impl ExecBackend {
 
     /// Reads, without waiting, lines the process wrote after its last expected answer: a second
     /// answer for a case it answered is a fault of that case; anything else is a diagnostic.
+    /// Not while a group written ahead is in flight: its answers are not stray.
     fn check_stray_lines(&mut self) {
+        if !self.ahead.is_empty() {
+            return;
+        }
         let Some(p) = self.proc.as_mut() else { return };
         let mut stray = vec![];
         while let Ok(l) = p.lines.try_recv() {
@@ -425,8 +433,29 @@ impl ExecBackend {
         ));
     }
 
+    /// Whether `group` is the next group written ahead to the current process (taking it). A
+    /// written group that is not the one run next would have its answers taken for another
+    /// group's: the process is restarted instead.
+    fn take_ahead<T: Sendable + ?Sized>(&mut self, group: &[&T]) -> bool {
+        let Some(&(key, spawn)) = self.ahead.front() else {
+            return false;
+        };
+        if key == group_key(group) && spawn == self.spawns && self.proc.is_some() {
+            self.ahead.pop_front();
+            return true;
+        }
+        let how = self.kill_proc();
+        self.push_diag(format!(
+            "{}: a group written ahead was not the next one run; restarting ({how})",
+            self.name
+        ));
+        let _ = self.ensure();
+        false
+    }
+
     fn kill_proc(&mut self) -> String {
         self.answered.clear();
+        self.ahead.clear();
         self.proc
             .take()
             .map(|p| p.kill())
@@ -439,11 +468,7 @@ impl ExecBackend {
         while results.len() < cases.len() {
             let rest = &cases[results.len()..];
             if crate::interrupt::requested() {
-                // The runner drops this batch; `--resume` sends it again.
-                results.extend(
-                    rest.iter()
-                        .map(|_| CaseOutcome::Crash("interrupted".into())),
-                );
+                // Only the answered prefix comes back; `--resume` sends the rest again.
                 break;
             }
             if self.give_up > 0 && self.timeouts_in_a_row >= self.give_up {
@@ -467,6 +492,12 @@ impl ExecBackend {
             }
             results.extend(answers);
             let Some(failure) = failure else { break };
+            if crate::interrupt::requested() {
+                // Whatever stopped the answers (often the same signal), the rest is not blamed
+                // on a case: it is left unanswered.
+                self.kill_proc();
+                break;
+            }
             let rest = &cases[results.len()..];
             match failure {
                 Failure::Extra(id) => {
@@ -524,6 +555,27 @@ impl ExecBackend {
     }
 }
 
+/// A group's request lines followed by `flush`, in one buffer (one hand-over to the writer thread).
+fn group_frame<T: Sendable + ?Sized>(group: &[&T], with_expect: bool) -> Vec<u8> {
+    let mut buf = Vec::with_capacity(group.len() * 1024);
+    for c in group {
+        c.write(&mut buf, with_expect);
+        buf.push(b'\n');
+    }
+    buf.extend_from_slice(Request::FLUSH_LINE);
+    buf
+}
+
+/// The key of a group in [`ExecBackend::ahead`]: its ids, in order.
+fn group_key<T: Sendable + ?Sized>(group: &[&T]) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for c in group {
+        c.id().hash(&mut h);
+    }
+    h.finish()
+}
+
 /// The key of a case id in [`ExecBackend::answered`]: a 64-bit hash (two of a run's ids share
 /// one with odds of about 2^-64 per pair).
 fn id_key(id: &str) -> u64 {
@@ -557,6 +609,36 @@ impl Backend for ExecBackend {
     }
     fn batch_size(&self) -> usize {
         self.group
+    }
+    fn send_ahead(&mut self, current: &[Sent<'_>], next: &[Sent<'_>]) {
+        // Only batches sent as they are (not expanded into one case per sweep point), one group
+        // each, to a running process.
+        let whole = |b: &[Sent<'_>]| {
+            !b.is_empty()
+                && b.len() <= self.group
+                && (self.sweeps || b.iter().all(|c| c.case.sweep.is_empty()))
+        };
+        if !whole(current) || !whole(next) || crate::interrupt::requested() {
+            return;
+        }
+        let current: Vec<&Sent<'_>> = current.iter().collect();
+        let next: Vec<&Sent<'_>> = next.iter().collect();
+        let spawns = self.spawns;
+        let Some(p) = self.proc.as_mut() else { return };
+        // In order: the current batch first, unless it is already the next one written.
+        match self.ahead.front() {
+            Some(&(key, s)) if key == group_key(&current) && s == spawns => {}
+            Some(_) => return,
+            None => {
+                if p.send(group_frame(&current, self.wants_expect)).is_err() {
+                    return;
+                }
+                self.ahead.push_back((group_key(&current), spawns));
+            }
+        }
+        if self.ahead.len() == 1 && p.send(group_frame(&next, self.wants_expect)).is_ok() {
+            self.ahead.push_back((group_key(&next), spawns));
+        }
     }
     fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
         if self.sweeps || cases.iter().all(|c| c.case.sweep.is_empty()) {

@@ -100,7 +100,8 @@ pub enum BackendError {
     Setup { backend: String, msg: String },
 }
 
-/// A backend. `run_batch` answers `cases.len()` outcomes in order; the cases it receives are
+/// A backend. `run_batch` answers `cases.len()` outcomes in order (once the run is interrupted
+/// ([`crate::interrupt`]), possibly only those of a prefix: the cases it got answers for); the cases it receives are
 /// already inside its capabilities (the runner filtered them) and name only supported API paths
 /// ([`Sent::api`]; the case's own list may name more).
 /// `Send`: backends may run in parallel threads (`--jobs`).
@@ -108,6 +109,12 @@ pub trait Backend: Send {
     fn name(&self) -> &str;
     fn capabilities(&self) -> &Capabilities;
     fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome>;
+    /// Before `run_batch(current)`, the batch the runner will run after it: a backend whose
+    /// implementation works apart from the runner (a process) may send both now, `current`
+    /// first, so that the implementation never waits for the runner between batches. They are
+    /// then run by the next two `run_batch` calls, with exactly these cases; nothing is owed if
+    /// those calls never come.
+    fn send_ahead(&mut self, _current: &[Sent<'_>], _next: &[Sent<'_>]) {}
     /// Runs TexParameter state cases (only sent when the capabilities list the `tex_parameter`
     /// feature, or declare no feature list). A backend without them answers Skip.
     fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {

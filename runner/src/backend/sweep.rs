@@ -38,20 +38,27 @@ pub fn run_expanded(
             }
         })
         .collect();
-    let mut outcomes = run(&flat).into_iter();
+    let outcomes = run(&flat);
+    let mut answered = outcomes.len();
+    let mut outcomes = outcomes.into_iter();
     let mut next = || {
         outcomes
             .next()
             .unwrap_or_else(|| CaseOutcome::Error("internal: missing outcome".into()))
     };
-    cases
-        .iter()
-        .map(|c| {
-            let main = next();
-            let points: Vec<CaseOutcome> = (0..c.case.sweep.len()).map(|_| next()).collect();
-            merge(main, points)
-        })
-        .collect()
+    let mut folded = Vec::with_capacity(cases.len());
+    for c in cases {
+        let n = 1 + c.case.sweep.len();
+        if answered < n && crate::interrupt::requested() {
+            // An interrupted run gets the cases answered whole, a prefix (`Backend::run_batch`).
+            break;
+        }
+        answered = answered.saturating_sub(n);
+        let main = next();
+        let points: Vec<CaseOutcome> = (0..c.case.sweep.len()).map(|_| next()).collect();
+        folded.push(merge(main, points));
+    }
+    folded
 }
 
 /// Folds the outcomes of a case's points into the outcome of its own lookup.

@@ -284,6 +284,74 @@ fn judge_outcome(
         .collect()
 }
 
+/// A case to send, the API paths it is a test of on the backend (borrowed when all of its own),
+/// and its fixture file when named on the command line.
+type ToSend<'a> = (&'a Case, Cow<'a, [ApiPath]>, Option<&'a str>);
+
+/// What a backend is sent for `chunk`.
+fn sent<'a>(chunk: &'a [ToSend<'a>]) -> Vec<Sent<'a>> {
+    chunk
+        .iter()
+        .map(|(case, api, _)| Sent { case, api })
+        .collect()
+}
+
+/// A batch's results as judged on the judging thread, and the seconds that took.
+type Judged = (Vec<TestResult>, f64);
+
+/// Judges a batch: every test of every case sent, with its final status from the lists.
+fn judge_batch(
+    name: &str,
+    lists: &Lists,
+    refs: &[Sent<'_>],
+    chunk: &[ToSend<'_>],
+    outcomes: &[CaseOutcome],
+    per_case: f64,
+) -> Judged {
+    let t = Instant::now();
+    let missing = CaseOutcome::Crash("the backend gave no answer".into());
+    let mut out = Vec::with_capacity(refs.len() * 2);
+    for ((sent, (_, _, fixtures)), outcome) in refs
+        .iter()
+        .zip(chunk)
+        .zip(outcomes.iter().chain(std::iter::repeat(&missing)))
+    {
+        for mut r in judge_outcome(name, *sent, outcome, per_case, *fixtures) {
+            let (status, note) = lists.status(name, &r.test, r.outcome);
+            r.status = status;
+            if let Some(n) = note {
+                r.reason = Some(match r.reason.take() {
+                    Some(old) => format!("{old}; {n}"),
+                    None => n,
+                });
+            }
+            out.push(r);
+        }
+    }
+    (out, t.elapsed().as_secs_f64())
+}
+
+/// Finishes a judged batch in order (events, results), once its judging thread is done.
+fn finish_judged(
+    ctx: &mut Ctx<'_>,
+    name: &str,
+    judging: Option<std::thread::ScopedJoinHandle<'_, Judged>>,
+    timing: &mut Timing,
+) {
+    let Some(h) = judging else { return };
+    let t = Instant::now();
+    let (results, judge_s) = match h.join() {
+        Ok(j) => j,
+        // A panic while judging is a bug: it propagates as it would have on this thread.
+        Err(p) => std::panic::resume_unwind(p),
+    };
+    for r in results {
+        ctx.finish(r, false);
+    }
+    ctx.fanout.emit(&Event::BatchFinished { backend: name });
+    timing.verdict_s += judge_s + t.elapsed().as_secs_f64();
+}
+
 /// Runs the selected cases on one backend. `prior`: results of a resumed run (replayed, not re-run).
 pub fn run_backend(
     backend: &mut dyn Backend,
@@ -311,8 +379,7 @@ pub fn run_backend(
             .explicit_fixtures
             .then(|| set.files[l.file].as_str())
     };
-    // Each case to send, with the API paths it is a test of here (borrowed when all of them).
-    let mut to_send = Vec::new();
+    let mut to_send: Vec<ToSend<'_>> = Vec::new();
     for l in &set.cases {
         let case = &l.case;
         let fixtures = file_of(l);
@@ -360,57 +427,62 @@ pub fn run_backend(
             to_send.push((case, Cow::Owned(apis), fixtures));
         }
     }
+    // Each batch's answers are judged on a second thread while the backend runs the next batch
+    // (its process works meanwhile, with the batch after that already sent), then finished here
+    // in order: results and events come out as they would one batch at a time.
     let batch = backend.batch_size().max(1);
-    for chunk in to_send.chunks(batch) {
-        if interrupt::requested() {
-            break;
-        }
-        let refs: Vec<Sent<'_>> = chunk
-            .iter()
-            .map(|(case, api, _)| Sent { case, api })
-            .collect();
-        let t0 = Instant::now();
-        let mut outcomes = backend.run_batch(&refs);
-        if interrupt::requested() {
-            // Its processes may have been signalled too: these answers are not kept (`--resume`
-            // sends the batch again).
-            break;
-        }
-        let faults = backend.take_faults();
-        blame_in_batch(&refs, &mut outcomes, &faults);
-        blame_earlier(&mut ctx, &name, &refs, &faults);
-        let dt = t0.elapsed().as_secs_f64();
-        timing.backend_s += dt;
-        timing.cases_sent += refs.len();
-        let per_case = dt / refs.len() as f64;
-        let t1 = Instant::now();
-        let missing = CaseOutcome::Crash("the backend gave no answer".into());
-        for ((sent, (_, _, fixtures)), outcome) in refs
-            .iter()
-            .zip(chunk)
-            .zip(outcomes.iter().chain(std::iter::repeat(&missing)))
-        {
-            for mut r in judge_outcome(&name, *sent, outcome, per_case, *fixtures) {
-                let (status, note) = lists.status(&name, &r.test, r.outcome);
-                r.status = status;
-                if let Some(n) = note {
-                    r.reason = Some(match r.reason.take() {
-                        Some(old) => format!("{old}; {n}"),
-                        None => n,
-                    });
-                }
-                ctx.finish(r, false);
+    std::thread::scope(|scope| {
+        let mut judging: Option<std::thread::ScopedJoinHandle<'_, Judged>> = None;
+        let chunks: Vec<&[ToSend<'_>]> = to_send.chunks(batch).collect();
+        for (k, chunk) in chunks.iter().copied().enumerate() {
+            if interrupt::requested() {
+                break;
+            }
+            let mut refs = sent(chunk);
+            // The batch after this one is announced before this one runs (two in flight).
+            if let Some(next) = chunks.get(k + 1) {
+                backend.send_ahead(&refs, &sent(next));
+            }
+            let t0 = Instant::now();
+            let mut outcomes = backend.run_batch(&refs);
+            let interrupted = interrupt::requested();
+            let mut chunk = chunk;
+            if interrupted {
+                // Only the answers that came back are kept (once interrupted, a backend answers
+                // a prefix: its processes may have been signalled too); `--resume` sends the rest.
+                outcomes.truncate(refs.len());
+                refs.truncate(outcomes.len());
+                chunk = &chunk[..refs.len()];
+            }
+            let dt = t0.elapsed().as_secs_f64();
+            timing.backend_s += dt;
+            timing.cases_sent += refs.len();
+            if refs.is_empty() {
+                break;
+            }
+            // The batch before this one, judged meanwhile, is finished before any fault of this
+            // batch can name one of its cases.
+            finish_judged(&mut ctx, &name, judging.take(), &mut timing);
+            let faults = backend.take_faults();
+            blame_in_batch(&refs, &mut outcomes, &faults);
+            blame_earlier(&mut ctx, &name, &refs, &faults);
+            for d in backend.take_diagnostics() {
+                ctx.fanout.emit(&Event::Diagnostic {
+                    backend: &name,
+                    message: &d,
+                });
+            }
+            let per_case = dt / refs.len() as f64;
+            let name = name.as_str();
+            judging = Some(
+                scope.spawn(move || judge_batch(name, lists, &refs, chunk, &outcomes, per_case)),
+            );
+            if interrupted {
+                break;
             }
         }
-        for d in backend.take_diagnostics() {
-            ctx.fanout.emit(&Event::Diagnostic {
-                backend: &name,
-                message: &d,
-            });
-        }
-        ctx.fanout.emit(&Event::BatchFinished { backend: &name });
-        timing.verdict_s += t1.elapsed().as_secs_f64();
-    }
+        finish_judged(&mut ctx, &name, judging.take(), &mut timing);
+    });
     state::run_states(backend, set, prior, &mut ctx, &mut timing);
     if settings.rerun_regressions && !interrupt::requested() {
         rerun_regressions(backend, set, &mut ctx);
