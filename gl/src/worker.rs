@@ -506,20 +506,79 @@ impl Serve for Worker {
     }
 }
 
-/// Speaks the protocol on `input`/`output` until `bye` or end of input.
+/// A request line as the reader thread hands it over: parsed, or why not.
+enum Incoming {
+    Request(Request),
+    /// A case line that does not parse: it still gets its one answer, in order.
+    Bad {
+        id: String,
+        message: String,
+    },
+    /// Any other line that does not parse.
+    Unknown(String),
+}
+
+fn incoming(line: &str) -> Incoming {
+    match Request::parse(line) {
+        Ok(r) => Incoming::Request(r),
+        Err(e) => {
+            let v: Option<serde_json::Value> = serde_json::from_str(line).ok();
+            let is_case = v
+                .as_ref()
+                .and_then(|v| v.get("type"))
+                .and_then(|t| t.as_str())
+                .filter(|t| *t == "case" || *t == "state");
+            match is_case {
+                Some(ty) => Incoming::Bad {
+                    id: v
+                        .as_ref()
+                        .and_then(|v| v.pointer(&format!("/{ty}/id")))
+                        .and_then(|i| i.as_str())
+                        .unwrap_or("")
+                        .to_string(),
+                    message: format!("cannot parse case: {e}"),
+                },
+                None => Incoming::Unknown(e),
+            }
+        }
+    }
+}
+
+/// Groups parsed ahead of the loop that answers them, at most this many.
+const READ_AHEAD: usize = 8;
+
+/// Speaks the protocol on `input`/`output` until `bye` or end of input. Lines are read and parsed
+/// on a thread of their own, so that the next group is parsed while this one is drawn.
 pub fn serve(
     worker: &mut impl Serve,
-    input: impl BufRead,
+    input: impl BufRead + Send + 'static,
     mut output: impl Write,
 ) -> std::io::Result<()> {
-    let mut batch: Vec<Entry> = Vec::new();
-    for line in input.lines() {
-        let line = line?;
-        if line.trim().is_empty() {
-            continue;
+    // Handed over a group at a time (up to and including its `flush`): one wake-up per group.
+    let (tx, rx) = std::sync::mpsc::sync_channel::<Vec<std::io::Result<Incoming>>>(READ_AHEAD);
+    // Not joined: at `bye` the loop returns while the reader may still wait for end of input.
+    std::thread::spawn(move || {
+        let mut group = Vec::new();
+        for line in input.lines() {
+            let item = match line {
+                Ok(l) if l.trim().is_empty() => continue,
+                Ok(l) => Ok(incoming(&l)),
+                Err(e) => Err(e),
+            };
+            let end = !matches!(item, Ok(Incoming::Request(Request::Case { .. })))
+                && !matches!(item, Ok(Incoming::Request(Request::State { .. })));
+            let stop = item.is_err();
+            group.push(item);
+            if end && tx.send(std::mem::take(&mut group)).is_err() || stop {
+                return;
+            }
         }
-        match Request::parse(&line) {
-            Ok(Request::Hello { protocol }) => {
+        let _ = tx.send(group);
+    });
+    let mut batch: Vec<Entry> = Vec::new();
+    for item in rx.into_iter().flatten() {
+        match item? {
+            Incoming::Request(Request::Hello { protocol }) => {
                 if protocol != 0 && protocol != PROTOCOL_VERSION {
                     eprintln!(
                         "worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}"
@@ -533,33 +592,12 @@ pub fn serve(
                 write_line(&mut output, &hello)?;
                 output.flush()?;
             }
-            Ok(Request::Case { case }) => batch.push(Entry::Case(case)),
-            Ok(Request::State { case }) => batch.push(Entry::State(case)),
-            Ok(Request::Flush) => flush_batch(worker, &mut batch, &mut output)?,
-            Ok(Request::Bye) => break,
-            Err(e) => {
-                // A case line we cannot parse still gets its one answer, in order.
-                let v: Option<serde_json::Value> = serde_json::from_str(&line).ok();
-                let is_case = v
-                    .as_ref()
-                    .and_then(|v| v.get("type"))
-                    .and_then(|t| t.as_str())
-                    .filter(|t| *t == "case" || *t == "state");
-                if let Some(ty) = is_case {
-                    let id = v
-                        .as_ref()
-                        .and_then(|v| v.pointer(&format!("/{ty}/id")))
-                        .and_then(|i| i.as_str())
-                        .unwrap_or("")
-                        .to_string();
-                    batch.push(Entry::Bad {
-                        id,
-                        message: format!("cannot parse case: {e}"),
-                    });
-                } else {
-                    eprintln!("worker: ignoring unknown message: {e}");
-                }
-            }
+            Incoming::Request(Request::Case { case }) => batch.push(Entry::Case(case)),
+            Incoming::Request(Request::State { case }) => batch.push(Entry::State(case)),
+            Incoming::Request(Request::Flush) => flush_batch(worker, &mut batch, &mut output)?,
+            Incoming::Request(Request::Bye) => break,
+            Incoming::Bad { id, message } => batch.push(Entry::Bad { id, message }),
+            Incoming::Unknown(e) => eprintln!("worker: ignoring unknown message: {e}"),
         }
     }
     flush_batch(worker, &mut batch, &mut output)

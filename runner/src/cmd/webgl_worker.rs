@@ -24,6 +24,10 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     let mut w = WebglWorker::start()?;
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
-    serve(&mut w, stdin.lock(), std::io::BufWriter::new(stdout.lock()))?;
+    serve(
+        &mut w,
+        std::io::BufReader::with_capacity(1 << 16, stdin),
+        std::io::BufWriter::new(stdout.lock()),
+    )?;
     Ok(ExitCode::SUCCESS)
 }
