@@ -246,8 +246,8 @@ impl Worker {
 
     /// Whether a case runs here: the declared capabilities decide, by the same
     /// [`Capabilities::support`] the runner applies before sending (so a case the runner sends is
-    /// never refused here), and the case must be valid. `Ok` holds the API paths to draw (the
-    /// supported ones) and the paths left out, each with the reason.
+    /// never refused here); the case is valid (checked where it was read, [`serve`]). `Ok` holds
+    /// the API paths to draw (the supported ones) and the paths left out, each with the reason.
     fn admit(&self, case: &Case) -> Result<(Vec<ApiPath>, Vec<PathSkip>), String> {
         let (apis, others) = match self.caps.support(case) {
             Support::Skip(reason) | Support::NotApplicable(reason) => return Err(reason),
@@ -277,9 +277,6 @@ impl Worker {
                 .collect();
             return Err(why.join("; "));
         }
-        if let Err(e) = shadowcheck_model::validate::validate(case) {
-            return Err(format!("invalid case: {e}"));
-        }
         let unavailable: Vec<String> = missing.iter().map(|m| m.api.clone()).collect();
         let left_out = case
             .api
@@ -294,7 +291,8 @@ impl Worker {
         Ok((apis, left_out))
     }
 
-    /// Answers a batch in order.
+    /// Answers a batch in order. The cases must be valid (`validate`): [`serve`] checks each case
+    /// once, with its sweep, where it is read.
     pub fn run_batch(&mut self, cases: Vec<Case>) -> Vec<Answer> {
         let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
         let mut runnable: Vec<Case> = Vec::with_capacity(cases.len());
@@ -415,8 +413,7 @@ enum Entry {
 }
 
 fn write_line(out: &mut impl Write, msg: &Reply) -> std::io::Result<()> {
-    let s = serde_json::to_string(msg).map_err(std::io::Error::other)?;
-    out.write_all(s.as_bytes())?;
+    serde_json::to_writer(&mut *out, msg).map_err(std::io::Error::other)?;
     out.write_all(b"\n")
 }
 
@@ -520,6 +517,14 @@ enum Incoming {
 
 fn incoming(line: &str) -> Incoming {
     match Request::parse(line) {
+        // A case is checked here, once with its sweep (not once per point after expansion).
+        Ok(Request::Case { case }) => match shadowcheck_model::validate::validate(&case) {
+            Ok(()) => Incoming::Request(Request::Case { case }),
+            Err(e) => Incoming::Bad {
+                id: case.id.clone(),
+                message: format!("invalid case: {e}"),
+            },
+        },
         Ok(r) => Incoming::Request(r),
         Err(e) => {
             let v: Option<serde_json::Value> = serde_json::from_str(line).ok();

@@ -142,7 +142,6 @@ impl WebglWorker {
             Support::Skip(reason) | Support::NotApplicable(reason) => return Err(reason),
             Support::Run { apis, .. } => apis,
         };
-        shadowcheck_model::validate::validate(case).map_err(|e| format!("invalid case: {e}"))?;
         let mut drawn = case.clone();
         drawn.api = apis;
         Ok(drawn)
