@@ -20,7 +20,7 @@ fn label(id: &str) -> &'static str {
         GL_FLOOR_1T => "GL bare-draw floor, LP_NUM_THREADS=1",
         GL_E2E => "GL end to end, 2D NEAREST",
         GL_E2E_STEADY => "GL end to end, no load / worker start",
-        GL_E2E_WARM => "GL end to end, warm (2nd pass, same worker)",
+        GL_E2E_WARM => "GL end to end, warm (same worker again, median pass)",
         GL_E2E_CACHED => "GL end to end, new worker, shader cache filled",
         GL_RATIO => "GL end to end / floor",
         SUITE_WALL => "default suite: wall",

@@ -170,14 +170,14 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
                     Some(&name),
                     e.warm_per_s(),
                     "cases/s",
-                    format!("the same cases again on the same worker ({:.2} s): shader variants already compiled", e.warm_run_s),
+                    format!("the same cases again on the same worker ({:.3} s, the median of {} passes): shader variants already compiled", e.warm_run_s, e.warm_passes),
                 ));
                 let per_check = Measurement::new(
                     ids::HARNESS_PER_CHECK,
                     Some(&name),
                     e.warm_run_s / e.checks as f64 * 1e6,
                     "us/check",
-                    format!("the warm pass ({:.3} s for {} checks: {} tests and their sweep points): worker I/O, texture upload, draw, read-back and verdict once the variants exist", e.warm_run_s, e.checks, e.verified),
+                    format!("the warm pass ({:.3} s for {} checks: {} tests and their sweep points; the median of {} passes): worker I/O, texture upload, draw, read-back and verdict once the variants exist", e.warm_run_s, e.checks, e.verified, e.warm_passes),
                 );
                 rows.push(if name.contains(":llvmpipe:") {
                     per_check.with_target(Target::new(
