@@ -90,8 +90,22 @@ fn main() -> std::process::ExitCode {
     match result {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("shadowcheck: error: {e:#}");
+            eprintln!("shadowcheck: error: {}", message(&e));
             std::process::ExitCode::from(shadowcheck_runner::records::exit::SETUP)
         }
     }
+}
+
+/// The error and its causes, each cause once: a library error that already names its source in
+/// its message (`"{file}: {source}"`) does not get it printed twice.
+fn message(e: &anyhow::Error) -> String {
+    let mut msg = e.to_string();
+    for cause in e.chain().skip(1) {
+        let c = cause.to_string();
+        if !msg.contains(&c) {
+            msg.push_str(": ");
+            msg.push_str(&c);
+        }
+    }
+    msg
 }

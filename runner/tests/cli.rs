@@ -171,3 +171,22 @@ fn every_flag_has_help() {
         }
     }
 }
+
+#[test]
+fn a_missing_list_file_is_named_with_its_os_error_once() {
+    let dir = common::tmpdir("missing-flakes");
+    let missing = dir.join("no-such-flakes.txt");
+    let out = dir.join("out");
+    let (c, err) = code(&[
+        "run",
+        "-b",
+        "soft",
+        "--flakes",
+        missing.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(c, Some(96), "{err}");
+    assert!(err.contains("no-such-flakes.txt"), "{err}");
+    assert_eq!(err.matches("No such file or directory").count(), 1, "{err}");
+}
