@@ -1,8 +1,8 @@
 //! `exec:` backends: an implementation in a child process speaking runner/PROTOCOL.md.
 //!
-//! Pipelined: a group of cases is written, then `flush`, then the answers are read (a reader
-//! thread drains stdout, so a process that answers while reading never blocks on a full pipe);
-//! the next group is written before the answers of the one before are read (two in flight).
+//! Pipelined: a group of cases is written, then `flush`, then the answers are read (the process
+//! and its pipe threads: `process.rs`); the runner's next group is written before the answers of
+//! the one before are read ([`Backend::send_ahead`]: two in flight).
 //! A process that dies, stalls or answers garbage is killed; the unanswered part of the group is
 //! bisected in fresh processes until the case that does it is alone (Crash or Timeout), and the
 //! run goes on. When the process was answering case by case, the first unanswered case is tried
@@ -14,36 +14,14 @@
 //! interrupted run stops waiting within [`POLL`]. Answers become outcomes in `answer.rs`.
 
 pub use super::command::{split_command, ProcessCommand};
+use super::process::Proc;
 use super::{Backend, BackendError, Capabilities, CaseOutcome, Options, Sendable, Sent};
 use shadowcheck_model::StateCase;
 use shadowcheck_protocol::{Hello, Reply, Request};
 use std::collections::{HashSet, VecDeque};
-use std::io::{BufRead, BufReader, BufWriter, Write};
-use std::process::{Child, ChildStdin, Stdio};
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
+use std::sync::mpsc::RecvTimeoutError;
 use std::sync::{Arc, Mutex};
-use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
-
-/// The writer thread: writes queued messages to the child's stdin, flushing whenever the queue is
-/// empty; ends when the queue is closed (stdin is then closed) or the child stops reading.
-fn write_loop(stdin: ChildStdin, queue: Receiver<Vec<u8>>) {
-    let mut w = BufWriter::with_capacity(1 << 16, stdin);
-    while let Ok(msg) = queue.recv() {
-        if w.write_all(&msg).is_err() {
-            return;
-        }
-        while let Ok(more) = queue.try_recv() {
-            if w.write_all(&more).is_err() {
-                return;
-            }
-        }
-        if w.flush().is_err() {
-            return;
-        }
-    }
-    let _ = w.flush();
-}
 
 /// How often a wait for answers checks whether the run was interrupted.
 const POLL: Duration = Duration::from_millis(200);
@@ -51,127 +29,6 @@ const POLL: Duration = Duration::from_millis(200);
 /// Time allowed for the hello, at least (a GL worker creates its context first; zink starts a
 /// Vulkan device).
 const HANDSHAKE_MIN: Duration = Duration::from_secs(30);
-
-/// Keeps the last lines a process wrote to stderr.
-type Tail = Arc<Mutex<VecDeque<String>>>;
-const TAIL_LINES: usize = 8;
-
-/// One running implementation process.
-struct Proc {
-    child: Child,
-    /// Messages for the writer thread, which owns the child's stdin (so a child that stops
-    /// reading can never block the runner: the answer deadline still fires).
-    input: Option<Sender<Vec<u8>>>,
-    lines: Receiver<String>,
-    tail: Tail,
-    stderr_thread: Option<JoinHandle<()>>,
-}
-
-impl Proc {
-    fn spawn(cmd: &ProcessCommand, diags: &Arc<Mutex<Vec<String>>>) -> Result<Proc, String> {
-        let mut child = cmd
-            .to_command()
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|e| format!("cannot start `{}`: {e}", cmd.program.display()))?;
-        let (Some(stdin), Some(stdout), Some(stderr)) =
-            (child.stdin.take(), child.stdout.take(), child.stderr.take())
-        else {
-            let _ = child.kill();
-            return Err("child pipes missing".to_string());
-        };
-        let (tx, lines) = mpsc::channel();
-        std::thread::spawn(move || {
-            for line in BufReader::new(stdout).lines() {
-                match line {
-                    Ok(l) => {
-                        if tx.send(l).is_err() {
-                            break;
-                        }
-                    }
-                    Err(_) => break,
-                }
-            }
-        });
-        let tail: Tail = Arc::new(Mutex::new(VecDeque::new()));
-        let (t2, d2) = (tail.clone(), diags.clone());
-        let stderr_thread = std::thread::spawn(move || {
-            for line in BufReader::new(stderr).lines().map_while(Result::ok) {
-                if let Ok(mut t) = t2.lock() {
-                    if t.len() == TAIL_LINES {
-                        t.pop_front();
-                    }
-                    t.push_back(line.clone());
-                }
-                if let Ok(mut d) = d2.lock() {
-                    if d.len() < 10_000 {
-                        d.push(line);
-                    }
-                }
-            }
-        });
-        let (input, queue) = mpsc::channel::<Vec<u8>>();
-        std::thread::spawn(move || write_loop(stdin, queue));
-        Ok(Proc {
-            child,
-            input: Some(input),
-            lines,
-            tail,
-            stderr_thread: Some(stderr_thread),
-        })
-    }
-
-    /// Queues bytes (whole lines) for the child's stdin. Fails once the writer has stopped (the
-    /// child closed its stdin or died).
-    fn send(&mut self, bytes: Vec<u8>) -> std::io::Result<()> {
-        let tx = self.input.as_ref().ok_or(std::io::ErrorKind::BrokenPipe)?;
-        tx.send(bytes)
-            .map_err(|_| std::io::Error::from(std::io::ErrorKind::BrokenPipe))
-    }
-
-    /// Kills the process and says how it ended, with its last stderr lines.
-    fn kill(mut self) -> String {
-        let _ = self.child.kill();
-        let status = self
-            .child
-            .wait()
-            .map(|s| s.to_string())
-            .unwrap_or_else(|e| e.to_string());
-        // Give the stderr reader a moment to drain what the process wrote before dying.
-        if let Some(h) = self.stderr_thread.take() {
-            let t0 = Instant::now();
-            while !h.is_finished() && t0.elapsed() < Duration::from_millis(300) {
-                std::thread::sleep(Duration::from_millis(5));
-            }
-        }
-        let tail: Vec<String> = self
-            .tail
-            .lock()
-            .map(|t| t.iter().cloned().collect())
-            .unwrap_or_default();
-        if tail.is_empty() {
-            status
-        } else {
-            format!("{status}; stderr: {}", tail.join(" | "))
-        }
-    }
-
-    /// Ends the process politely (`bye`, stdin closed), killing it if it lingers.
-    fn finish(mut self) {
-        let _ = self.send(Request::BYE_LINE.to_vec());
-        drop(self.input.take());
-        let t0 = Instant::now();
-        while t0.elapsed() < Duration::from_secs(1) {
-            if let Ok(Some(_)) = self.child.try_wait() {
-                return;
-            }
-            std::thread::sleep(Duration::from_millis(5));
-        }
-        self.kill();
-    }
-}
 
 enum Failure {
     /// Unparsable or out-of-order answer: the case it should have answered is Crash.

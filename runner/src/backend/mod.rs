@@ -15,6 +15,7 @@ pub mod exec;
 pub mod gl;
 pub mod kinds;
 pub mod mock;
+mod process;
 pub mod soft;
 pub mod sweep;
 pub mod webgl;
