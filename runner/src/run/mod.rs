@@ -3,23 +3,24 @@
 //! For each backend: API paths (or whole cases) whose spec or path the backend does not implement
 //! are no tests of it (not applicable: counted apart, no record); cases already finished in a
 //! resumed run are replayed; the skips list and the backend's capabilities turn the rest into Skip
-//! (with the reason) or a case to send; cases go to
-//! the backend in batches, each answer is judged ([`crate::verdict`]), given its final status by
-//! the lists ([`crate::baseline`]) and sent as a `CaseFinished` event (results.jsonl is written by a
-//! reporter, written per batch). Regressions are then re-run once: a different outcome is a Flake,
-//! unless a Crash or Timeout recurred during the re-run. Faults a backend finds later (a second
-//! answer for a case) make that case Crash, re-sent as a new record. Once the run is interrupted
-//! ([`crate::interrupt`]) no batch is sent, the batch in flight is dropped and no re-run is made.
+//! (with the reason) or a case to send; cases go to the backend in batches (the next one sent
+//! ahead, [`Backend::send_ahead`]), each answer is judged ([`judge`], beside the next batch),
+//! given its final status by the lists ([`crate::baseline`]) and sent as a `CaseFinished` event
+//! (results.jsonl is written by a reporter, written per batch). Regressions are then re-run once:
+//! a different outcome is a Flake, unless a Crash or Timeout recurred during the re-run. Faults a
+//! backend finds later (a second answer for a case) make that case Crash, re-sent as a new record.
+//! Once the run is interrupted ([`crate::interrupt`]) no batch is sent, of the batch in flight
+//! only the cases answered whole are kept, and no re-run is made.
 
-use crate::backend::{ApiOutcome, Backend, CaseOutcome, Sent, Support};
+use crate::backend::{Backend, CaseOutcome, Sent, Support};
 use crate::baseline::Lists;
 use crate::events::{Event, Fanout, Sink, Timing};
 use crate::interrupt;
 use crate::records::{Counts, LoadError, Outcome, Results, Status, Summary, Tags, TestResult};
 use crate::shard::Shard;
-use crate::verdict;
+use judge::{finish_judged, judge_batch, judge_outcome, sent, Judged, ToSend};
 use shadowcheck_model::{ApiPath, Case, StateCase};
-use shadowcheck_protocol::{Capabilities, Rgba};
+use shadowcheck_protocol::Capabilities;
 use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -229,127 +230,6 @@ fn base_result(backend: &str, case: &Case, api: ApiPath, fixtures: Option<&str>)
         rerun: None,
         fixtures: fixtures.map(str::to_string),
     }
-}
-
-/// The raw outcome of each API path of `sent` from the backend's answer.
-fn judge_outcome(
-    backend: &str,
-    sent: Sent<'_>,
-    outcome: &CaseOutcome,
-    duration: f64,
-    fixtures: Option<&str>,
-) -> Vec<TestResult> {
-    let case = sent.case;
-    sent.api
-        .iter()
-        .map(|&api| {
-            let mut r = base_result(backend, case, api, fixtures);
-            r.duration = duration;
-            let (o, reason) = match outcome {
-                CaseOutcome::Skip(m) => (Outcome::Skip, Some(m.clone())),
-                CaseOutcome::Error(m) => {
-                    (Outcome::Fail, Some(format!("implementation error: {m}")))
-                }
-                CaseOutcome::Crash(m) => (Outcome::Crash, Some(m.clone())),
-                CaseOutcome::Timeout(m) => (Outcome::Timeout, Some(m.clone())),
-                CaseOutcome::Observed(v) => match v.iter().find(|(a, _)| *a == api).map(|(_, o)| o)
-                {
-                    None => (
-                        Outcome::Fail,
-                        Some("the backend returned no result for this API path".to_string()),
-                    ),
-                    Some(ApiOutcome::Skip(m)) => (Outcome::Skip, Some(m.clone())),
-                    Some(ApiOutcome::State(_)) => (
-                        Outcome::Fail,
-                        Some("the backend answered a lookup case with a state result".into()),
-                    ),
-                    Some(ApiOutcome::Rgba {
-                        rgba,
-                        stored,
-                        sweep,
-                    }) => {
-                        let (j, shown) =
-                            verdict::judge_sweep(case, api, *rgba, stored.as_ref(), sweep);
-                        r.observed = Some(Rgba(shown));
-                        r.expected = j.expected;
-                        r.footprint = j.footprint;
-                        (j.outcome, j.reason)
-                    }
-                },
-            };
-            r.outcome = o;
-            r.reason = reason;
-            r
-        })
-        .collect()
-}
-
-/// A case to send, the API paths it is a test of on the backend (borrowed when all of its own),
-/// and its fixture file when named on the command line.
-type ToSend<'a> = (&'a Case, Cow<'a, [ApiPath]>, Option<&'a str>);
-
-/// What a backend is sent for `chunk`.
-fn sent<'a>(chunk: &'a [ToSend<'a>]) -> Vec<Sent<'a>> {
-    chunk
-        .iter()
-        .map(|(case, api, _)| Sent { case, api })
-        .collect()
-}
-
-/// A batch's results as judged on the judging thread, and the seconds that took.
-type Judged = (Vec<TestResult>, f64);
-
-/// Judges a batch: every test of every case sent, with its final status from the lists.
-fn judge_batch(
-    name: &str,
-    lists: &Lists,
-    refs: &[Sent<'_>],
-    chunk: &[ToSend<'_>],
-    outcomes: &[CaseOutcome],
-    per_case: f64,
-) -> Judged {
-    let t = Instant::now();
-    let missing = CaseOutcome::Crash("the backend gave no answer".into());
-    let mut out = Vec::with_capacity(refs.len() * 2);
-    for ((sent, (_, _, fixtures)), outcome) in refs
-        .iter()
-        .zip(chunk)
-        .zip(outcomes.iter().chain(std::iter::repeat(&missing)))
-    {
-        for mut r in judge_outcome(name, *sent, outcome, per_case, *fixtures) {
-            let (status, note) = lists.status(name, &r.test, r.outcome);
-            r.status = status;
-            if let Some(n) = note {
-                r.reason = Some(match r.reason.take() {
-                    Some(old) => format!("{old}; {n}"),
-                    None => n,
-                });
-            }
-            out.push(r);
-        }
-    }
-    (out, t.elapsed().as_secs_f64())
-}
-
-/// Finishes a judged batch in order (events, results), once its judging thread is done.
-fn finish_judged(
-    ctx: &mut Ctx<'_>,
-    name: &str,
-    judging: Option<std::thread::ScopedJoinHandle<'_, Judged>>,
-    timing: &mut Timing,
-) {
-    let Some(h) = judging else { return };
-    let t = Instant::now();
-    let (results, judge_s) = match h.join() {
-        Ok(j) => j,
-        // A panic while judging is a bug: it propagates as it would have on this thread.
-        Err(p) => std::panic::resume_unwind(p),
-    };
-    for r in results {
-        ctx.finish(r, false);
-    }
-    ctx.fanout.emit(&Event::BatchFinished { backend: name });
-    timing.verdict_s += judge_s + t.elapsed().as_secs_f64();
 }
 
 /// Runs the selected cases on one backend. `prior`: results of a resumed run (replayed, not re-run).
@@ -648,6 +528,7 @@ pub fn finish(
     summary
 }
 
+mod judge;
 mod state;
 pub use state::tags as state_tags;
 

@@ -69,27 +69,14 @@ fn judge(
         .map(|&api| {
             let mut r = base(backend, case, api, fixtures);
             r.duration = duration;
-            let (o, reason) = match outcome {
-                CaseOutcome::Skip(m) => (Outcome::Skip, Some(m.clone())),
-                CaseOutcome::Error(m) => {
-                    (Outcome::Fail, Some(format!("implementation error: {m}")))
-                }
-                CaseOutcome::Crash(m) => (Outcome::Crash, Some(m.clone())),
-                CaseOutcome::Timeout(m) => (Outcome::Timeout, Some(m.clone())),
-                CaseOutcome::Observed(v) => match v.iter().find(|(a, _)| *a == api) {
-                    None => (
-                        Outcome::Fail,
-                        Some("the backend returned no result for this API path".to_string()),
-                    ),
-                    Some((_, ApiOutcome::Skip(m))) => (Outcome::Skip, Some(m.clone())),
-                    Some((_, ApiOutcome::State(obs))) => {
-                        crate::state_verdict::judge_state(case, obs)
-                    }
-                    Some((_, ApiOutcome::Rgba { .. })) => (
-                        Outcome::Fail,
-                        Some("the backend answered a state case with a lookup result".into()),
-                    ),
-                },
+            let (o, reason) = match super::judge::path_answer(outcome, api) {
+                Err(settled) => settled,
+                Ok(ApiOutcome::Skip(m)) => (Outcome::Skip, Some(m.clone())),
+                Ok(ApiOutcome::State(obs)) => crate::state_verdict::judge_state(case, obs),
+                Ok(ApiOutcome::Rgba { .. }) => (
+                    Outcome::Fail,
+                    Some("the backend answered a state case with a lookup result".into()),
+                ),
             };
             r.outcome = o;
             r.reason = reason;
