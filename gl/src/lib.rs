@@ -22,6 +22,7 @@ pub mod libdir;
 pub mod names;
 pub mod paths;
 mod programs;
+pub mod serve;
 pub mod shaders;
 pub mod state;
 pub mod sweep;

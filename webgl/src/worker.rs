@@ -1,5 +1,5 @@
 //! The `webgl:chromium` worker: starts the browser, loads the page, declares what WebGL 2.0 can
-//! run, and answers batches through the GL worker's protocol loop ([`shadowcheck_gl::worker::serve`]).
+//! run, and answers batches through the GL worker's protocol loop ([`shadowcheck_gl::serve::serve`]).
 
 use super::browser::Browser;
 use super::job;
@@ -8,7 +8,7 @@ use serde::Deserialize;
 use shadowcheck_gl::draw::Answer;
 use shadowcheck_gl::names::LookupForm;
 use shadowcheck_gl::paths::GlInfo;
-use shadowcheck_gl::worker::Serve;
+use shadowcheck_gl::serve::Serve;
 use shadowcheck_gl::ContextApi;
 use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase, StateObserved, Target};
 use shadowcheck_protocol::{Capabilities, Hello, Reply, Support, PROTOCOL_VERSION};
