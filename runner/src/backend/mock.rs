@@ -305,6 +305,9 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
                     .is_some_and(|r| r.is_match(&case.id))
                 {
                     signal_parent("INT");
+                    // The runner sees SIGINT on its handler thread; no answer is written until
+                    // it has surely done so, so that what it keeps does not depend on scheduling.
+                    std::thread::sleep(std::time::Duration::from_millis(500));
                 }
                 if script.slow_ms > 0 {
                     std::thread::sleep(std::time::Duration::from_millis(script.slow_ms));
