@@ -471,3 +471,31 @@ fn ctrl_c_on_the_whole_process_group_keeps_no_crash_of_the_signalled_worker() {
     assert_eq!(resumed.code, 0, "{}{}", resumed.stdout, resumed.stderr);
     assert_eq!(results(&out).len(), 400);
 }
+
+#[test]
+fn an_extra_answer_for_a_sweep_point_blames_its_case() {
+    // The mock runs no sweeps, so each point is sent as a case of its own
+    // (`<id>/sweep=<k>`); point 3 answers twice.
+    let dir = tmpdir("extra-point");
+    let out = dir.join("out");
+    let fx = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures/gl46/2d/nearest.json");
+    let id = "gl46/2d/d16/nearest/never/texel1/ref=0.3/dt=0.2_0.4_0.6_0.8";
+    let r = run(&[
+        "-b",
+        "mock:extra=/sweep=3$",
+        "--fixtures",
+        fx.to_str().unwrap(),
+        "--cases",
+        &format!("^{}$", regex::escape(id)),
+        "--no-rerun",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
+    let (status, reason) = result_of(&out, &format!("{id}@core"));
+    assert_eq!(status, "Crash", "{reason}");
+    assert!(
+        reason.contains("answered sweep point 3 of this case twice"),
+        "{reason}"
+    );
+}

@@ -278,15 +278,25 @@ impl ExecBackend {
     }
 
     /// Records a second answer for `id`, a case answered before.
+    /// A sweep point sent as a case of its own (`<case id>/sweep=<k>`, `sweep.rs`) is a fault of
+    /// its case, whose verdict it is part of.
     fn fault(&mut self, id: String) {
         self.push_diag(format!(
             "{}: protocol error: a second answer for `{id}`",
             self.name
         ));
+        let point = id
+            .rsplit_once(shadowcheck_model::SWEEP_ID_TAG)
+            .filter(|(_, k)| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()));
+        let (case, what) = match point {
+            Some((case, k)) => (case.to_string(), format!("sweep point {k} of this case")),
+            None => (id, "this case".to_string()),
+        };
         self.faults.push((
-            id,
-            "protocol error: the implementation answered this case twice (an extra answer line)"
-                .to_string(),
+            case,
+            format!(
+                "protocol error: the implementation answered {what} twice (an extra answer line)"
+            ),
         ));
     }
 
