@@ -52,8 +52,10 @@ fn sigkill_then_resume_gives_the_uninterrupted_report() {
         .unwrap()
         .results
         .len();
+    // Case 250 is in the fourth batch of 64, which is sent ahead once the second batch has come
+    // back; by then the first batch is surely on disk (the second is being judged).
     assert!(
-        (100..300).contains(&done),
+        (64..300).contains(&done),
         "{done} results on disk after the kill"
     );
     assert!(
