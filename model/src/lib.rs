@@ -26,7 +26,7 @@ pub use keymap::{KeyMap, Keyed};
 pub use state::{
     GlError, StateCall, StateCase, StateExpect, StateObserved, StatePname, StateType, StateValue,
 };
-pub use sweep::{PointExpectation, SweepPoint, MAX_SWEEP_POINTS, SWEEP_ID_TAG};
+pub use sweep::{split_point_id, PointExpectation, SweepPoint, MAX_SWEEP_POINTS, SWEEP_ID_TAG};
 
 /// Version of the on-disk formats (fixtures, observations, results). Bumped on breaking change.
 pub const SCHEMA_VERSION: u32 = 1;

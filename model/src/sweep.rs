@@ -19,6 +19,15 @@ use serde::{Deserialize, Serialize};
 /// What a sweep point's id adds to its case's id, before the point's index ([`Case::point_id`]).
 pub const SWEEP_ID_TAG: &str = "/sweep=";
 
+/// The case id and point index of a [`Case::point_id`], or `None` for any other id.
+pub fn split_point_id(id: &str) -> Option<(&str, usize)> {
+    let (case, k) = id.rsplit_once(SWEEP_ID_TAG)?;
+    if k.is_empty() || !k.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    Some((case, k.parse().ok()?))
+}
+
 /// Most points a case may carry (a bound on absurd input, far above what the grid writes).
 pub const MAX_SWEEP_POINTS: usize = 4096;
 
@@ -129,6 +138,23 @@ impl Case {
         Case {
             sweep: vec![],
             ..self.clone()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::split_point_id;
+
+    #[test]
+    fn a_point_id_splits_into_its_case_id_and_index_and_nothing_else_does() {
+        assert_eq!(
+            split_point_id("gl46/2d/d16/nearest/never/sweep=12"),
+            Some(("gl46/2d/d16/nearest/never", 12))
+        );
+        assert_eq!(split_point_id("a/sweep=3/sweep=4"), Some(("a/sweep=3", 4)));
+        for plain in ["gl46/2d/d16", "a/sweep=", "a/sweep=x1", "a/sweep=-1"] {
+            assert_eq!(split_point_id(plain), None, "{plain}");
         }
     }
 }

@@ -285,10 +285,7 @@ impl ExecBackend {
             "{}: protocol error: a second answer for `{id}`",
             self.name
         ));
-        let point = id
-            .rsplit_once(shadowcheck_model::SWEEP_ID_TAG)
-            .filter(|(_, k)| !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()));
-        let (case, what) = match point {
+        let (case, what) = match shadowcheck_model::split_point_id(&id) {
             Some((case, k)) => (case.to_string(), format!("sweep point {k} of this case")),
             None => (id, "this case".to_string()),
         };
@@ -298,6 +295,12 @@ impl ExecBackend {
                 "protocol error: the implementation answered {what} twice (an extra answer line)"
             ),
         ));
+    }
+
+    /// Whether `cases` go to the implementation as they are: it runs sweeps, or none has one
+    /// (otherwise each sweep point is sent as a case of its own, `sweep.rs`).
+    fn sent_whole(&self, cases: &[Sent<'_>]) -> bool {
+        self.sweeps || cases.iter().all(|c| c.case.sweep.is_empty())
     }
 
     /// Whether `group` is the next group written ahead to the current process (taking it). A
@@ -433,23 +436,24 @@ fn group_frame<T: Sendable + ?Sized>(group: &[&T], with_expect: bool) -> Vec<u8>
     buf
 }
 
-/// The key of a group in [`ExecBackend::ahead`]: its ids, in order.
-fn group_key<T: Sendable + ?Sized>(group: &[&T]) -> u64 {
+/// A 64-bit hash of ids in order: the key of a group in [`ExecBackend::ahead`] (its ids) and of
+/// a case in [`ExecBackend::answered`] (one id). Two of a run's keys are equal with odds of about
+/// 2^-64 per pair.
+fn ids_key<'a>(ids: impl IntoIterator<Item = &'a str>) -> u64 {
     use std::hash::{Hash, Hasher};
     let mut h = std::collections::hash_map::DefaultHasher::new();
-    for c in group {
-        c.id().hash(&mut h);
+    for id in ids {
+        id.hash(&mut h);
     }
     h.finish()
 }
 
-/// The key of a case id in [`ExecBackend::answered`]: a 64-bit hash (two of a run's ids share
-/// one with odds of about 2^-64 per pair).
+fn group_key<T: Sendable + ?Sized>(group: &[&T]) -> u64 {
+    ids_key(group.iter().map(|c| c.id()))
+}
+
 fn id_key(id: &str) -> u64 {
-    use std::hash::{Hash, Hasher};
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    id.hash(&mut h);
-    h.finish()
+    ids_key([id])
 }
 
 fn clip(s: &str) -> String {
@@ -480,11 +484,7 @@ impl Backend for ExecBackend {
     fn send_ahead(&mut self, current: &[Sent<'_>], next: &[Sent<'_>]) {
         // Only batches sent as they are (not expanded into one case per sweep point), one group
         // each, to a running process.
-        let whole = |b: &[Sent<'_>]| {
-            !b.is_empty()
-                && b.len() <= self.group
-                && (self.sweeps || b.iter().all(|c| c.case.sweep.is_empty()))
-        };
+        let whole = |b: &[Sent<'_>]| !b.is_empty() && b.len() <= self.group && self.sent_whole(b);
         if !whole(current) || !whole(next) || crate::interrupt::requested() {
             return;
         }
@@ -508,7 +508,7 @@ impl Backend for ExecBackend {
         }
     }
     fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
-        if self.sweeps || cases.iter().all(|c| c.case.sweep.is_empty()) {
+        if self.sent_whole(cases) {
             self.run_group(&cases.iter().collect::<Vec<_>>())
         } else {
             super::sweep::run_expanded(cases, |flat| {
