@@ -20,7 +20,8 @@ fn answer_message(case_id: String, a: Answer) -> Reply {
     }
 }
 
-/// An entry of the batch: a parsed case, or a line that should have been one.
+/// An entry of the batch: a parsed case, or a line that should have been one (unparsable, or
+/// a case that is not valid), which still gets its one answer (an error), in order.
 enum Entry {
     Case(Box<Case>),
     State(Box<StateCase>),
@@ -59,7 +60,13 @@ fn flush_batch(
     }
     let (cases, points) = super::sweep::expand(cases);
     let mut points = points.into_iter();
-    let mut answers = worker.run_batch(cases)?.into_iter();
+    // A batch with no lookup (state cases only, or the empty one at `bye`) draws nothing.
+    let answers = if cases.is_empty() {
+        vec![]
+    } else {
+        worker.run_batch(cases)?
+    };
+    let mut answers = answers.into_iter();
     let mut next = || {
         answers
             .next()
@@ -100,14 +107,15 @@ pub trait Serve {
     }
 }
 
-/// A request line as the reader thread hands it over: parsed, or why not.
+/// A request line as the reader thread hands it over.
 enum Incoming {
-    Request(Request),
-    /// A case line that does not parse: it still gets its one answer, in order.
-    Bad {
-        id: String,
-        message: String,
+    /// An entry of the batch: a case (validated here) or a line that should have been one.
+    Entry(Entry),
+    Hello {
+        protocol: u32,
     },
+    Flush,
+    Bye,
     /// Any other line that does not parse.
     Unknown(String),
 }
@@ -115,14 +123,19 @@ enum Incoming {
 fn incoming(line: &str) -> Incoming {
     match Request::parse(line) {
         // A case is checked here, once with its sweep (not once per point after expansion).
-        Ok(Request::Case { case }) => match shadowcheck_model::validate::validate(&case) {
-            Ok(()) => Incoming::Request(Request::Case { case }),
-            Err(e) => Incoming::Bad {
-                id: case.id.clone(),
-                message: format!("invalid case: {e}"),
-            },
-        },
-        Ok(r) => Incoming::Request(r),
+        Ok(Request::Case { case }) => {
+            Incoming::Entry(match shadowcheck_model::validate::validate(&case) {
+                Ok(()) => Entry::Case(case),
+                Err(e) => Entry::Bad {
+                    id: case.id.clone(),
+                    message: format!("invalid case: {e}"),
+                },
+            })
+        }
+        Ok(Request::State { case }) => Incoming::Entry(Entry::State(case)),
+        Ok(Request::Hello { protocol }) => Incoming::Hello { protocol },
+        Ok(Request::Flush) => Incoming::Flush,
+        Ok(Request::Bye) => Incoming::Bye,
         Err(e) => {
             let v: Option<serde_json::Value> = serde_json::from_str(line).ok();
             let is_case = v
@@ -131,7 +144,7 @@ fn incoming(line: &str) -> Incoming {
                 .and_then(|t| t.as_str())
                 .filter(|t| *t == "case" || *t == "state");
             match is_case {
-                Some(ty) => Incoming::Bad {
+                Some(ty) => Incoming::Entry(Entry::Bad {
                     id: v
                         .as_ref()
                         .and_then(|v| v.pointer(&format!("/{ty}/id")))
@@ -139,7 +152,7 @@ fn incoming(line: &str) -> Incoming {
                         .unwrap_or("")
                         .to_string(),
                     message: format!("cannot parse case: {e}"),
-                },
+                }),
                 None => Incoming::Unknown(e),
             }
         }
@@ -167,11 +180,11 @@ pub fn serve(
                 Ok(l) => Ok(incoming(&l)),
                 Err(e) => Err(e),
             };
-            let end = !matches!(item, Ok(Incoming::Request(Request::Case { .. })))
-                && !matches!(item, Ok(Incoming::Request(Request::State { .. })));
+            // A group ends at anything but an entry (`flush`, mostly) or a read error.
             let stop = item.is_err();
+            let end = !matches!(item, Ok(Incoming::Entry(_)));
             group.push(item);
-            if end && tx.send(std::mem::take(&mut group)).is_err() || stop {
+            if end && (tx.send(std::mem::take(&mut group)).is_err() || stop) {
                 return;
             }
         }
@@ -180,7 +193,8 @@ pub fn serve(
     let mut batch: Vec<Entry> = Vec::new();
     for item in rx.into_iter().flatten() {
         match item? {
-            Incoming::Request(Request::Hello { protocol }) => {
+            Incoming::Entry(e) => batch.push(e),
+            Incoming::Hello { protocol } => {
                 if protocol != 0 && protocol != PROTOCOL_VERSION {
                     eprintln!(
                         "worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}"
@@ -194,13 +208,89 @@ pub fn serve(
                 write_line(&mut output, &hello)?;
                 output.flush()?;
             }
-            Incoming::Request(Request::Case { case }) => batch.push(Entry::Case(case)),
-            Incoming::Request(Request::State { case }) => batch.push(Entry::State(case)),
-            Incoming::Request(Request::Flush) => flush_batch(worker, &mut batch, &mut output)?,
-            Incoming::Request(Request::Bye) => break,
-            Incoming::Bad { id, message } => batch.push(Entry::Bad { id, message }),
+            Incoming::Flush => flush_batch(worker, &mut batch, &mut output)?,
+            Incoming::Bye => break,
             Incoming::Unknown(e) => eprintln!("worker: ignoring unknown message: {e}"),
         }
     }
     flush_batch(worker, &mut batch, &mut output)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use shadowcheck_model::Target;
+    use shadowcheck_protocol::Capabilities;
+
+    /// Answers every case it is given with a skip naming it, and records the batches.
+    struct Echo(Vec<usize>);
+
+    impl Serve for Echo {
+        fn hello(&self) -> Hello {
+            Hello {
+                protocol: PROTOCOL_VERSION,
+                name: None,
+                capabilities: Capabilities::default(),
+                wants_expect: false,
+                sweeps: false,
+            }
+        }
+        fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
+            self.0.push(cases.len());
+            Ok(cases.into_iter().map(|c| Answer::Skip(c.id)).collect())
+        }
+    }
+
+    #[test]
+    fn each_line_of_a_group_gets_one_answer_in_order_invalid_and_unparsable_cases_included() {
+        let mut good = crate::test_case::case(Target::T2d, 2, 2, 1);
+        good.id = "good".into();
+        let mut invalid = good.clone();
+        invalid.id = "invalid".into();
+        invalid.api.clear();
+        let mut input = Request::hello_line().into_bytes();
+        input.push(b'\n');
+        for c in [&good, &invalid] {
+            Request::write_case_on(&mut input, c, &c.api, false);
+            input.push(b'\n');
+        }
+        input.extend_from_slice(b"{\"type\":\"case\",\"case\":{\"id\":\"broken\"}}\n");
+        input.extend_from_slice(b"{\"type\":\"no-such-message\"}\n");
+        input.extend_from_slice(Request::FLUSH_LINE);
+        input.extend_from_slice(Request::BYE_LINE);
+        let mut worker = Echo(vec![]);
+        let mut out = Vec::new();
+        serve(&mut worker, std::io::Cursor::new(input), &mut out).unwrap();
+        let lines: Vec<serde_json::Value> = String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        // The hello, then one answer per case line, in order; the unknown line gets none.
+        assert_eq!(lines.len(), 4, "{lines:?}");
+        assert_eq!(lines[0]["type"], "hello");
+        assert_eq!(lines[0]["sweeps"], true, "the loop expands sweeps");
+        assert_eq!(
+            (&lines[1]["type"], &lines[1]["case_id"]),
+            (&"skip".into(), &"good".into())
+        );
+        assert_eq!(
+            (&lines[2]["type"], &lines[2]["case_id"]),
+            (&"error".into(), &"invalid".into())
+        );
+        assert!(lines[2]["message"]
+            .as_str()
+            .unwrap()
+            .starts_with("invalid case:"));
+        assert_eq!(
+            (&lines[3]["type"], &lines[3]["case_id"]),
+            (&"error".into(), &"broken".into())
+        );
+        assert!(lines[3]["message"]
+            .as_str()
+            .unwrap()
+            .starts_with("cannot parse case:"));
+        // Only the valid case reached the worker, in one batch.
+        assert_eq!(worker.0, vec![1]);
+    }
 }
