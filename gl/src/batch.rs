@@ -13,7 +13,7 @@
 //! queued draws read it makes the driver finish them first (llvmpipe flushes its scene), and one
 //! upload per batch instead of one per draw saves a texture update per group.
 
-use super::draw::{BatchState, Pending, Renderer};
+use super::draw::{BatchState, Job, Pending, Renderer};
 use super::framebuffer::{pixel, FB_SIZE};
 use super::paths::{Plan, ShaderKey};
 use super::programs::Compiled;
@@ -21,7 +21,6 @@ use super::shaders::{self, PARAM_CASES, PARAM_TEXELS, PARAM_WIDTH};
 use super::texture;
 use super::unitstate;
 use glow::HasContext;
-use shadowcheck_model::Case;
 
 /// One batched draw: a program, the (case, plan) pairs it serves (slot k of the draw is item k),
 /// and where item 0's values are: parameter texture `texture`, case index `first` in it.
@@ -154,7 +153,8 @@ impl Renderer {
             let tex = self.param_texture(k)?;
             let row = (PARAM_WIDTH * 4) as usize;
             let rows = data.len().div_ceil(row);
-            let mut bytes: Vec<u8> = Vec::with_capacity(rows * row * 4);
+            let mut bytes = std::mem::take(&mut self.upload);
+            bytes.clear();
             bytes.extend(data.iter().flat_map(|f| f.to_ne_bytes()));
             bytes.resize(rows * row * 4, 0);
             self.gl.active_texture(glow::TEXTURE1);
@@ -171,6 +171,7 @@ impl Renderer {
                 glow::PixelUnpackData::Slice(Some(&bytes)),
             );
             self.gl.active_texture(glow::TEXTURE0);
+            self.upload = bytes;
         }
         Ok(())
     }
@@ -179,12 +180,12 @@ impl Renderer {
     /// one pixel each, then `batches` (the group's, from [`batches_of`], values uploaded).
     pub(super) unsafe fn run_group(
         &mut self,
-        cases: &[Case],
+        cases: &[Job],
         group: &[(usize, Vec<Plan>)],
         batches: Vec<Batch<'_>>,
         st: &mut BatchState,
     ) {
-        let first = &cases[group[0].0];
+        let first = cases[group[0].0].case;
         let Some((tex, so)) = self.bind_group_texture(first, group.iter().map(|(ci, _)| *ci), st)
         else {
             return;
@@ -214,11 +215,17 @@ impl Renderer {
                 Ok(()) => {
                     for (k, (ci, p)) in b.items.iter().enumerate() {
                         if st.answers[*ci].is_none() {
+                            // A sweep point's answer keeps only its RGBA (`sweep::merge`).
+                            let note = if cases[*ci].point {
+                                String::new()
+                            } else {
+                                format!("{}, batched", p.note)
+                            };
                             st.pending.push(Pending {
                                 case: *ci,
                                 path: p.key.path,
                                 slot: slot0 + k,
-                                note: format!("{}, batched", p.note),
+                                note,
                             });
                         }
                     }

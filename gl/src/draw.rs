@@ -18,7 +18,7 @@ use super::texture;
 use super::unitstate;
 use super::{batch, GlError};
 use glow::HasContext;
-use shadowcheck_model::{ApiPath, Case, Target, Texels};
+use shadowcheck_model::{ApiPath, Case, Lookup, Target, Texels};
 use shadowcheck_protocol::{PathResult, PathSkip};
 
 /// Most textures kept alive for a deferred read-back.
@@ -31,6 +31,34 @@ pub enum Answer {
     Observation(Vec<PathResult>, Vec<PathSkip>),
     Skip(String),
     Error(String),
+}
+
+/// One lookup to draw: a case's own, or one point of its sweep. A point is the case's lookup with
+/// the point's coordinates and reference ([`Case::point_lookup`]) on the case's texture, sampler
+/// and API paths, so a case and its points form one group (one texture, one batched draw).
+#[derive(Debug, Clone)]
+pub struct Job<'a> {
+    pub case: &'a Case,
+    pub lookup: Lookup,
+    /// A sweep point: its answer keeps only the RGBA of each path (no stored texels, no note).
+    pub point: bool,
+}
+
+impl<'a> Job<'a> {
+    /// The case's own lookup.
+    pub fn own(case: &'a Case) -> Job<'a> {
+        Job {
+            case,
+            lookup: case.lookup.clone(),
+            point: false,
+        }
+    }
+
+    /// Do `self` and `other` draw on equal textures with equal sampler state?
+    fn same_texture(&self, other: &Job) -> bool {
+        std::ptr::eq(self.case, other.case)
+            || (self.case.texture == other.case.texture && self.case.sampler == other.case.sampler)
+    }
 }
 
 /// The GL objects of a worker and its program cache.
@@ -46,6 +74,10 @@ pub struct Renderer {
     /// Slots drawn since the framebuffer was last cleared (their quad rows are cleared next).
     pub(super) drawn: usize,
     pub(super) programs: ProgramCache,
+    /// The last read-back of the framebuffer (`framebuffer.rs`) and the bytes of the last
+    /// parameter upload (`batch.rs`), kept so that a batch allocates neither.
+    pub(super) readback: Vec<u8>,
+    pub(super) upload: Vec<u8>,
 }
 
 /// A drawn path waiting for read-back.
@@ -140,6 +172,8 @@ impl Renderer {
             // The colour texture's contents are undefined until the first clear.
             drawn: CAPACITY,
             programs: ProgramCache::default(),
+            readback: Vec::new(),
+            upload: Vec::new(),
         })
     }
 
@@ -243,11 +277,11 @@ impl Renderer {
         Ok(())
     }
 
-    /// Runs a batch and answers every case, in order.
+    /// Runs a batch and answers every job, in order.
     ///
     /// # Safety
     /// The renderer's context must be current.
-    pub unsafe fn run_batch(&mut self, cases: &[Case]) -> Vec<Answer> {
+    pub unsafe fn run_batch(&mut self, cases: &[Job]) -> Vec<Answer> {
         let mut st = BatchState {
             answers: vec![None; cases.len()],
             results: vec![Vec::new(); cases.len()],
@@ -259,11 +293,11 @@ impl Renderer {
         };
         self.clear();
         let mut planned: Vec<(usize, Vec<Plan>)> = Vec::new();
-        for (ci, case) in cases.iter().enumerate() {
+        for (ci, job) in cases.iter().enumerate() {
             let mut plans = Vec::new();
             let mut skipped = Vec::new();
-            for &path in &case.api {
-                match paths::plan_for(&self.info, path, case) {
+            for &path in &job.case.api {
+                match paths::plan_for(&self.info, path, job.case, &job.lookup) {
                     Ok(p) => plans.push(p),
                     Err(reason) => skipped.push(PathSkip {
                         api: path.key().to_string(),
@@ -284,12 +318,7 @@ impl Renderer {
         let mut groups: Vec<Vec<(usize, Vec<Plan>)>> = Vec::new();
         for item in planned {
             match groups.last_mut() {
-                Some(group)
-                    if cases[group[0].0].texture == cases[item.0].texture
-                        && cases[group[0].0].sampler == cases[item.0].sampler =>
-                {
-                    group.push(item)
-                }
+                Some(group) if cases[group[0].0].same_texture(&cases[item.0]) => group.push(item),
                 _ => groups.push(vec![item]),
             }
         }
@@ -325,9 +354,9 @@ impl Renderer {
             .zip(st.stored)
             .zip(st.skipped)
             .zip(cases)
-            .map(|((((a, mut r), stored), skipped), case)| {
+            .map(|((((a, mut r), stored), skipped), job)| {
                 a.unwrap_or_else(|| {
-                    r.sort_by_key(|e| case.api.iter().position(|p| p.key() == e.api));
+                    r.sort_by_key(|e| job.case.api.iter().position(|p| p.key() == e.api));
                     for e in &mut r {
                         e.stored = stored.clone();
                     }
@@ -338,10 +367,10 @@ impl Renderer {
     }
 
     /// Reads back the deferred textures and deletes them.
-    pub(super) unsafe fn finish_readbacks(&mut self, cases: &[Case], st: &mut BatchState) {
+    pub(super) unsafe fn finish_readbacks(&mut self, cases: &[Job], st: &mut BatchState) {
         for (tex, ci, sharing) in std::mem::take(&mut st.readbacks) {
-            let stored = texture::read_back(&self.gl, tex, &cases[ci]).ok();
-            for c in sharing {
+            let stored = texture::read_back(&self.gl, tex, cases[ci].case).ok();
+            for c in sharing.into_iter().filter(|c| !cases[*c].point) {
                 st.stored[c] = stored.clone();
             }
             self.gl.delete_texture(tex);
@@ -351,7 +380,7 @@ impl Renderer {
     /// Queues `tex` for read-back (desktop GL) or deletes it (ES has no glGetTexImage).
     pub(super) unsafe fn retire(
         &mut self,
-        cases: &[Case],
+        cases: &[Job],
         st: &mut BatchState,
         tex: glow::Texture,
         ci: usize,
@@ -412,11 +441,11 @@ impl Renderer {
     /// core context.
     unsafe fn run_compat_group(
         &mut self,
-        cases: &[Case],
+        cases: &[Job],
         group: &[(usize, Vec<Plan>)],
         st: &mut BatchState,
     ) {
-        let first = &cases[group[0].0];
+        let first = cases[group[0].0].case;
         let mut paths: Vec<ApiPath> = Vec::new();
         for (_, plans) in group {
             for plan in plans {

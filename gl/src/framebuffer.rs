@@ -19,10 +19,12 @@ pub(super) fn pixel(slot: usize) -> (i32, i32) {
 }
 
 impl Renderer {
-    /// The framebuffer's pixels up to the quad row of slot `used - 1`, row by row.
-    pub(super) unsafe fn read(&self, used: usize) -> Vec<[f32; 4]> {
+    /// Reads the framebuffer's pixels up to the quad row of slot `used - 1`, row by row, into
+    /// `self.readback` (RGBA32F, 16 bytes a pixel; the buffer is kept from batch to batch).
+    pub(super) unsafe fn read(&mut self, used: usize) {
         let rows = 2 * used.div_ceil(QUADS_PER_ROW as usize).max(1) as i32;
-        let mut buf = vec![0u8; (FB_SIZE * rows) as usize * 16];
+        self.readback.clear();
+        self.readback.resize((FB_SIZE * rows) as usize * 16, 0);
         self.gl
             .bind_framebuffer(glow::READ_FRAMEBUFFER, Some(self.fbo));
         self.gl.read_pixels(
@@ -32,14 +34,20 @@ impl Renderer {
             rows,
             glow::RGBA,
             glow::FLOAT,
-            glow::PixelPackData::Slice(Some(&mut buf)),
+            glow::PixelPackData::Slice(Some(&mut self.readback)),
         );
-        buf.chunks_exact(16)
-            .map(|c| {
+    }
+
+    /// Pixel (x, y) of the last [`Renderer::read`], or NaN where it was not read.
+    fn read_pixel(&self, x: i32, y: i32) -> [f32; 4] {
+        let at = (y * FB_SIZE + x) as usize * 16;
+        match self.readback.get(at..at + 16) {
+            Some(c) => {
                 let f = |i: usize| f32::from_ne_bytes([c[i], c[i + 1], c[i + 2], c[i + 3]]);
                 [f(0), f(4), f(8), f(12)]
-            })
-            .collect()
+            }
+            None => [f32::NAN; 4],
+        }
     }
 
     /// Clears the quad rows drawn since the last clear (only those: clearing the whole
@@ -77,7 +85,7 @@ impl Renderer {
 
     /// Reads back the pending pixels into `results`.
     pub(super) unsafe fn collect(
-        &self,
+        &mut self,
         pending: &mut Vec<Pending>,
         results: &mut [Vec<PathResult>],
     ) {
@@ -85,13 +93,10 @@ impl Renderer {
             return;
         }
         let used = pending.iter().map(|p| p.slot + 1).max().unwrap_or(1);
-        let px = self.read(used);
+        self.read(used);
         for p in pending.drain(..) {
             let (x, y) = pixel(p.slot);
-            let v = px
-                .get((y * FB_SIZE + x) as usize)
-                .copied()
-                .unwrap_or([f32::NAN; 4]);
+            let v = self.read_pixel(x, y);
             results[p.case].push(PathResult {
                 sweep: vec![],
                 api: p.path.key().to_string(),

@@ -1,7 +1,8 @@
 //! The protocol loop of a worker process (runner/PROTOCOL.md): requests read and parsed on a
-//! thread of their own, a group at a time; cases batched until `flush`, their sweeps expanded
-//! ([`super::sweep`]) and run by the worker behind the loop ([`Serve`]: the GL worker, or the
-//! WebGL one); one answer per case, in order.
+//! thread of their own, a group at a time; cases batched until `flush` and run by the worker
+//! behind the loop ([`Serve`]: the GL worker, or the WebGL one), which answers each lookup, sweep
+//! points included; the points' answers folded into their case's ([`super::sweep::merge`]); one
+//! answer per case, in order.
 
 use super::draw::Answer;
 use shadowcheck_model::{Case, StateCase};
@@ -58,8 +59,11 @@ fn flush_batch(
             Entry::Bad { id, message } => slots.push(Slot::Bad(id, message)),
         }
     }
-    let (cases, points) = super::sweep::expand(cases);
-    let mut points = points.into_iter();
+    let mut points = cases
+        .iter()
+        .map(|c| c.sweep.len())
+        .collect::<Vec<_>>()
+        .into_iter();
     // A batch with no lookup (state cases only, or the empty one at `bye`) draws nothing.
     let answers = if cases.is_empty() {
         vec![]
@@ -96,6 +100,8 @@ fn flush_batch(
 /// the implementation itself is gone, e.g. a browser that died).
 pub trait Serve {
     fn hello(&self) -> Hello;
+    /// One answer per lookup, in order: each case's own, then each point of its sweep
+    /// ([`super::sweep::jobs`], or [`super::sweep::expand`] for a worker sent whole cases).
     fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>>;
     /// The answer to a state case. An implementation that does not declare the `tex_parameter`
     /// feature is never sent one; if it is, it answers Skip.
@@ -200,7 +206,7 @@ pub fn serve(
                         "worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}"
                     );
                 }
-                // Sweeps are expanded here, whatever the worker behind the loop.
+                // Every worker behind the loop runs sweeps (`Serve::run_batch`).
                 let hello = Reply::Hello(Hello {
                     sweeps: true,
                     ..worker.hello()
@@ -237,7 +243,10 @@ mod tests {
         }
         fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
             self.0.push(cases.len());
-            Ok(cases.into_iter().map(|c| Answer::Skip(c.id)).collect())
+            Ok(cases
+                .iter()
+                .flat_map(|c| (0..c.checks()).map(|_| Answer::Skip(c.id.clone())))
+                .collect())
         }
     }
 

@@ -1,25 +1,37 @@
-//! Sweep cases in a worker: each point of a case's sweep is run as a case of its own, right
-//! after the case's own lookup, so the renderer sees one group of cases sharing texture and
+//! Sweep cases in a worker: each point of a case's sweep is run as a lookup of its own, right
+//! after the case's own lookup, so the renderer sees one group of lookups sharing texture and
 //! sampler state (one texture, one batched draw where the path allows); the answers are then
 //! folded back into one answer per case, the points' RGBA in the `sweep` of each path's result.
 
-use super::draw::Answer;
+use super::draw::{Answer, Job};
 use shadowcheck_model::Case;
 
-/// The cases to run for `cases`, sweeps expanded, and how many points each input case has.
-pub fn expand(cases: Vec<Case>) -> (Vec<Case>, Vec<usize>) {
-    let total: usize = cases.iter().map(Case::checks).sum();
-    let mut flat = Vec::with_capacity(total);
-    let mut points = Vec::with_capacity(cases.len());
+/// The lookups to draw for `cases`: each case's own, then each point of its sweep (borrowing the
+/// case: a point is only its lookup).
+pub fn jobs(cases: &[Case]) -> Vec<Job<'_>> {
+    let mut out = Vec::with_capacity(cases.iter().map(Case::checks).sum());
+    for c in cases {
+        out.push(Job::own(c));
+        out.extend(c.sweep.iter().map(|p| Job {
+            case: c,
+            lookup: c.point_lookup(p),
+            point: true,
+        }));
+    }
+    out
+}
+
+/// `cases` with their sweeps expanded into cases of their own ([`Case::point_case`]), each case
+/// followed by its points: for a worker that is sent whole cases (the WebGL page).
+pub fn expand(cases: Vec<Case>) -> Vec<Case> {
+    let mut flat = Vec::with_capacity(cases.iter().map(Case::checks).sum());
     for mut c in cases {
-        let n = c.sweep.len();
-        points.push(n);
-        let expanded: Vec<Case> = (0..n).filter_map(|k| c.point_case(k)).collect();
+        let points: Vec<Case> = (0..c.sweep.len()).filter_map(|k| c.point_case(k)).collect();
         c.sweep.clear();
         flat.push(c);
-        flat.extend(expanded);
+        flat.extend(points);
     }
-    (flat, points)
+    flat
 }
 
 /// Folds the answers of a case's points into the answer for its own lookup. A point that was not
@@ -77,11 +89,17 @@ mod tests {
             })
             .collect();
         let plain = crate::test_case::case(Target::T2d, 2, 1, 1);
-        let (flat, n) = expand(vec![plain, c]);
-        assert_eq!(n, vec![0, 3]);
+        let both = vec![plain, c];
+        let j = jobs(&both);
+        assert_eq!(j.len(), 5);
+        assert!(j[0].case.sweep.is_empty() && !j[0].point);
+        assert!(std::ptr::eq(j[3].case, &both[1]) && j[3].point);
+        assert_eq!(j[1].lookup, both[1].lookup);
+        assert_eq!(j[3].lookup.dref, 0.25);
+        let flat = expand(both.clone());
         assert_eq!(flat.len(), 5);
         assert_eq!(flat[3].id, "t/sweep=1");
-        assert_eq!(flat[3].lookup.dref, 0.25);
+        assert_eq!(flat[3].lookup, j[3].lookup);
         assert!(flat.iter().all(|c| c.sweep.is_empty()));
 
         let obs = |v| Answer::Observation(vec![result(v)], vec![]);

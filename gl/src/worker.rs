@@ -291,8 +291,9 @@ impl Worker {
         Ok((apis, left_out))
     }
 
-    /// Answers a batch in order. The cases must be valid (`validate`): [`serve`] checks each case
-    /// once, with its sweep, where it is read.
+    /// Answers a batch in order: one answer per lookup, each case's own and then each point of its
+    /// sweep ([`super::sweep::jobs`]). The cases must be valid (`validate`): [`serve`] checks each
+    /// case once, with its sweep, where it is read.
     pub fn run_batch(&mut self, cases: Vec<Case>) -> Vec<Answer> {
         let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
         let mut runnable: Vec<Case> = Vec::with_capacity(cases.len());
@@ -301,26 +302,34 @@ impl Worker {
             match self.admit(&c) {
                 Ok((apis, skips)) => {
                     c.api = apis;
+                    answers.extend((0..c.checks()).map(|_| None));
                     runnable.push(c);
                     left_out.push(skips);
-                    answers.push(None);
                 }
-                Err(reason) => answers.push(Some(Answer::Skip(reason))),
+                Err(reason) => {
+                    answers.extend((0..c.checks()).map(|_| Some(Answer::Skip(reason.clone()))))
+                }
             }
         }
+        let jobs = super::sweep::jobs(&runnable);
         // SAFETY: the worker's context is current on this thread.
-        let mut drawn = unsafe { self.renderer.run_batch(&runnable) }
-            .into_iter()
-            .zip(left_out);
+        let mut drawn_jobs = unsafe { self.renderer.run_batch(&jobs) }.into_iter();
+        // The paths left out of a case are part of the answer for its own lookup.
+        let mut drawn = runnable.iter().zip(left_out).flat_map(|(c, skips)| {
+            let own = drawn_jobs.next().map(|answer| match answer {
+                Answer::Observation(results, mut skipped) => {
+                    skipped.extend(skips);
+                    Answer::Observation(results, skipped)
+                }
+                other => other,
+            });
+            let points: Vec<Option<Answer>> =
+                (0..c.sweep.len()).map(|_| drawn_jobs.next()).collect();
+            std::iter::once(own).chain(points)
+        });
         for a in answers.iter_mut() {
             if a.is_none() {
-                *a = drawn.next().map(|(answer, skips)| match answer {
-                    Answer::Observation(results, mut skipped) => {
-                        skipped.extend(skips);
-                        Answer::Observation(results, skipped)
-                    }
-                    other => other,
-                });
+                *a = drawn.next().flatten();
             }
         }
         answers

@@ -204,6 +204,8 @@ impl Serve for WebglWorker {
     }
 
     fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
+        // The page is sent whole cases: each sweep point as a case of its own.
+        let cases = shadowcheck_gl::sweep::expand(cases);
         let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
         let mut runnable: Vec<Case> = Vec::new();
         for c in &cases {

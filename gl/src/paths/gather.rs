@@ -4,12 +4,11 @@
 //! rectangle shadow samplers.
 
 use super::{gradients, sampler_kind, GatherCall, LodForm, Plan, SamplerKind, ShaderKey};
-use shadowcheck_model::{ApiPath, Case, Target};
+use shadowcheck_model::{ApiPath, Case, Lookup, Target};
 
 /// Plans a gather case on `path`, or says why it cannot run.
-pub(super) fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
+pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, String> {
     let t = case.texture.target;
-    let l = &case.lookup;
     if !matches!(path, ApiPath::GlslCore | ApiPath::Es300) {
         return Err(format!("{path} has no shadow textureGather"));
     }
@@ -65,7 +64,7 @@ pub(super) fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
         _ => [c[0], c[1], c[2], dref],
     };
     let (dx, dy) = if derivs {
-        gradients(case, lod)
+        gradients(case, l, lod)
     } else {
         ([0.0; 4], [0.0; 4])
     };

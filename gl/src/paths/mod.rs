@@ -15,7 +15,7 @@
 
 use super::names::{ContextApi, LookupForm};
 use shadowcheck_model::{
-    ApiPath, Case, CompareMode, DepthStencilMode, DepthTextureMode, Filter, Target,
+    ApiPath, Case, CompareMode, DepthStencilMode, DepthTextureMode, Filter, Lookup, Target,
 };
 use std::collections::HashSet;
 
@@ -261,10 +261,10 @@ fn switch_over(case: &Case) -> f64 {
 
 /// Is the fixed-function lookup (constant coordinates: lambda_base = -inf, so lambda' = min_lod)
 /// certain to give the same filter and level as the case's lambda?
-fn constant_coords_equivalent(case: &Case) -> bool {
+fn constant_coords_equivalent(case: &Case, l: &Lookup) -> bool {
     let s = case.sampler.in_effect();
     let f32r = |v: f64| v as f32 as f64;
-    let lam = (f32r(case.lookup.lod) + s.lod_bias as f64 + f32r(case.lookup.bias))
+    let lam = (f32r(l.lod) + s.lod_bias as f64 + f32r(l.bias))
         .clamp(s.min_lod as f64, (s.max_lod as f64).max(s.min_lod as f64));
     let lam_ff = s.min_lod as f64;
     let c = switch_over(case);
@@ -279,21 +279,23 @@ pub fn plan(path: ApiPath, case: &Case) -> Result<Plan, String> {
 /// [`plan`] with a preferred lookup function: the preferred form is tried first, then the usual
 /// order (the backend name's fourth part, see `names::LookupForm`).
 pub fn plan_with(path: ApiPath, case: &Case, prefer: LookupForm) -> Result<Plan, String> {
-    plan_in(path, case, prefer, false)
+    plan_in(path, case, &case.lookup, prefer, false)
 }
 
 /// The plan on a context: [`plan_with`] with the context's preferred form and, where it exposes
-/// EXT_texture_shadow_lod, that extension's overloads ([`GlInfo::shadow_lod`]).
-pub fn plan_for(info: &GlInfo, path: ApiPath, case: &Case) -> Result<Plan, String> {
-    let offsets = case
-        .lookup
-        .gather
-        .as_ref()
-        .is_some_and(|g| g.offsets.is_some());
+/// EXT_texture_shadow_lod, that extension's overloads ([`GlInfo::shadow_lod`]). `lookup` is the
+/// case's own or one of its sweep's ([`Case::point_lookup`]), on the case's texture and sampler.
+pub fn plan_for(
+    info: &GlInfo,
+    path: ApiPath,
+    case: &Case,
+    lookup: &Lookup,
+) -> Result<Plan, String> {
+    let offsets = lookup.gather.as_ref().is_some_and(|g| g.offsets.is_some());
     if offsets && info.es && info.glsl < 320 {
         return Err("textureGatherOffsets needs GLSL ES 3.20 (GLSL ES 3.10 has textureGather and textureGatherOffset only)".into());
     }
-    plan_in(path, case, info.form, info.shadow_lod())
+    plan_in(path, case, lookup, info.form, info.shadow_lod())
 }
 
 /// `shadow_lod`: the extension's overloads may be used, and only where the preferred form asks
@@ -302,15 +304,15 @@ pub fn plan_for(info: &GlInfo, path: ApiPath, case: &Case) -> Result<Plan, Strin
 pub fn plan_in(
     path: ApiPath,
     case: &Case,
+    l: &Lookup,
     prefer: LookupForm,
     shadow_lod: bool,
 ) -> Result<Plan, String> {
-    if case.lookup.gather.is_some() {
-        return gather::plan(path, case);
+    if l.gather.is_some() {
+        return gather::plan(path, case, l);
     }
     let kind = sampler_kind(case);
     let t = case.texture.target;
-    let l = &case.lookup;
     let offset = if l.offset == [0; 3] {
         [0, 0]
     } else if !matches!(path, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300) {
@@ -382,7 +384,7 @@ pub fn plan_in(
     // changes the filter or level, the coordinates vary across the pixel quad instead (by the
     // gradients, interpolated by the rasterizer) and the shader bias goes to the texture unit's
     // TEXTURE_LOD_BIAS (GL 4.6 compatibility §8.14.1: bias_texunit + bias_shader).
-    let (form, how) = if form == LodForm::Constant && !constant_coords_equivalent(case) {
+    let (form, how) = if form == LodForm::Constant && !constant_coords_equivalent(case, l) {
         (
             LodForm::Implicit(bias != 0.0),
             "fixed-function, coordinates varying 2^lod texels per pixel (interpolated), bias via TEXTURE_LOD_BIAS",
@@ -435,7 +437,7 @@ pub fn plan_in(
         LodForm::Implicit(true) => bias,
         _ => 0.0,
     };
-    let (mut dx, mut dy) = gradients(case, lod_eff);
+    let (mut dx, mut dy) = gradients(case, l, lod_eff);
     if shadow && t == Target::CubeArray && form == LodForm::Lod {
         // textureLod(samplerCubeArrayShadow, P, compare, lod): the compare value is in `x`, the
         // LOD goes in dx.x (the gradients are unused by textureLod).
@@ -476,7 +478,7 @@ pub fn plan_in(
 /// Screen-space gradients of the lookup coordinate giving a scale factor rho = 2^lod
 /// (GL 4.6 §8.14.1: u = s * w_base, rho = max of the lengths of the derivative vectors; cube maps
 /// measure the face coordinates sc/|ma|, tc/|ma| mapped to [0,1] by (x+1)/2, §8.13).
-pub fn gradients(case: &Case, lod: f32) -> ([f32; 4], [f32; 4]) {
+pub fn gradients(case: &Case, l: &Lookup, lod: f32) -> ([f32; 4], [f32; 4]) {
     let scale = (lod.clamp(-64.0, 64.0) as f64).exp2();
     let lvl = &case.texture.levels[0];
     let (w, h) = (lvl.width as f64, lvl.height as f64);
@@ -493,7 +495,7 @@ pub fn gradients(case: &Case, lod: f32) -> ([f32; 4], [f32; 4]) {
             dy[1] = scale as f32;
         }
         Target::Cube | Target::CubeArray => {
-            let c = &case.lookup.coord;
+            let c = &l.coord;
             let m = (0..3)
                 .max_by(|&a, &b| c[a].abs().total_cmp(&c[b].abs()))
                 .unwrap_or(2);

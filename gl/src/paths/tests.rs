@@ -129,11 +129,11 @@ fn a_preferred_lookup_form_goes_first_where_it_exists() {
 #[test]
 fn gradients_give_rho_two_to_the_lod() {
     let c = case(Target::T2d, 8, 4, 1);
-    let (dx, dy) = gradients(&c, 1.0);
+    let (dx, dy) = gradients(&c, &c.lookup, 1.0);
     assert_eq!((dx[0] * 8.0, dy[1] * 4.0), (2.0, 2.0));
     let mut cube = case(Target::Cube, 4, 4, 6);
     cube.lookup.coord = [0.1, -0.2, -2.0, 1.0];
-    let (dx, dy) = gradients(&cube, 0.0);
+    let (dx, dy) = gradients(&cube, &cube.lookup, 0.0);
     // major axis r (|ma| = 2): one texel of a 4-wide face is 2*|ma|/4 in direction units.
     assert_eq!((dx[0], dy[1], dx[2], dy[2]), (1.0, 1.0, 0.0, 0.0));
 }
@@ -244,7 +244,7 @@ fn ext_texture_shadow_lod_overloads_are_used_when_the_form_asks_for_them() {
     ] {
         let mut c = case(target, 4, 4, layers);
         c.lookup.lod = 1.0;
-        let with = plan_in(ApiPath::GlslCore, &c, LookupForm::Lod, true).unwrap();
+        let with = plan_in(ApiPath::GlslCore, &c, &c.lookup, LookupForm::Lod, true).unwrap();
         assert_eq!(with.key.form, LodForm::Lod, "{target}");
         assert!(uses_shadow_lod(&with.key));
         assert!(
@@ -253,9 +253,9 @@ fn ext_texture_shadow_lod_overloads_are_used_when_the_form_asks_for_them() {
             with.note
         );
         // Without the extension, or without asking for textureLod: the form of before.
-        let without = plan_in(ApiPath::GlslCore, &c, LookupForm::Lod, false).unwrap();
+        let without = plan_in(ApiPath::GlslCore, &c, &c.lookup, LookupForm::Lod, false).unwrap();
         assert_ne!(without.key.form, LodForm::Lod, "{target}");
-        let auto = plan_in(ApiPath::GlslCore, &c, LookupForm::Auto, true).unwrap();
+        let auto = plan_in(ApiPath::GlslCore, &c, &c.lookup, LookupForm::Auto, true).unwrap();
         assert_eq!(auto.key.form, without.key.form, "{target}");
         if target == Target::CubeArray {
             // textureLod(samplerCubeArrayShadow, P, compare, lod): compare in x, lod in dx.x.
@@ -264,17 +264,17 @@ fn ext_texture_shadow_lod_overloads_are_used_when_the_form_asks_for_them() {
     }
     let mut b = case(Target::T2dArray, 4, 4, 2);
     b.lookup.bias = 1.0;
-    let p = plan_in(ApiPath::Es300, &b, LookupForm::Implicit, true).unwrap();
+    let p = plan_in(ApiPath::Es300, &b, &b.lookup, LookupForm::Implicit, true).unwrap();
     assert_eq!(p.key.form, LodForm::Implicit(true));
     assert!(uses_shadow_lod(&p.key));
-    let p = plan_in(ApiPath::Es300, &b, LookupForm::Implicit, false).unwrap();
+    let p = plan_in(ApiPath::Es300, &b, &b.lookup, LookupForm::Implicit, false).unwrap();
     assert_ne!(
         p.key.form,
         LodForm::Implicit(true),
         "no bias form without the extension"
     );
     b.lookup.offset = [1, 0, 0];
-    let p = plan_in(ApiPath::GlslCore, &b, LookupForm::Implicit, true).unwrap();
+    let p = plan_in(ApiPath::GlslCore, &b, &b.lookup, LookupForm::Implicit, true).unwrap();
     assert_eq!(
         p.key.form,
         LodForm::Implicit(true),

@@ -115,7 +115,7 @@ pub fn program(s: &Subject) -> Result<String, String> {
     }
     // As the GL worker on a driver with EXT_texture_shadow_lod (`paths::plan_for`): a backend
     // name asking for `lod` / `implicit` gets that extension's overloads (the shader requires it).
-    let plan = paths::plan_in(s.api, &s.case, s.backend.form, true)?;
+    let plan = paths::plan_in(s.api, &s.case, &s.case.lookup, s.backend.form, true)?;
     let mut tok = Tokens::default();
     let mut body = String::new();
     let es = s.backend.api.is_es();
