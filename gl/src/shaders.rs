@@ -6,6 +6,16 @@
 //! `u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy`, which is exactly `u_p`
 //! at the written pixel and varies by the gradients across its 2x2 quad. A batched program reads
 //! the same values from the parameter texture, one case per pixel quad (see `glsl`).
+//!
+//! Every program can discard. A batched one discards the quads of other draws; a single-case one
+//! (GLSL and ARB) has a discard that never happens, because the pixel centre `u_c` is never
+//! negative. The discard changes no lookup: the branch depends on a uniform, so control flow
+//! stays uniform and derivatives are defined. It only changes what llvmpipe and lavapipe
+//! compile. A shader that cannot discard is "opaque" to them. For such a shader they compile a
+//! second fragment function for fully covered tiles, beside the one for partly covered tiles.
+//! These draws cover one pixel or a few 2x2 quads, so they only ever run the partial-tile
+//! function. Without the never-taken discard a cold run spent a sixth of its time compiling the
+//! whole-tile function it never uses (reports/BENCH.md). The fixed-function path cannot discard.
 
 use super::paths::{uses_shadow_lod, GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
 use shadowcheck_model::{ApiPath, Target};
@@ -244,11 +254,11 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
             }
             l
         }
+        // `u_c` is a pixel centre, never negative: the discard is never taken (module docs).
         (None, _) if implicit => {
-            "vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;"
-                .to_string()
+            format!("{NEVER_DISCARD}\n  vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;")
         }
-        (None, _) => "vec4 p = u_p;".to_string(),
+        (None, _) => format!("{NEVER_DISCARD}\n  vec4 p = u_p;"),
     };
     let uniforms = if batched.is_some() {
         format!("uniform {prec}sampler2D u_params;\nuniform int u_base;\nuniform int u_count;\nuniform int u_param0;\n")
@@ -274,8 +284,13 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
     (vs, fs)
 }
 
+/// The single-case GLSL program's discard that is never taken (`u_c`, the pixel centre, is never
+/// negative): see the module docs.
+const NEVER_DISCARD: &str = "if (u_c.x < 0.0) discard;";
+
 /// ARB fragment program text (ARB_fragment_program + ARB_fragment_program_shadow); the program
-/// locals are 0 = P, 1 = dx, 2 = dy, 3 = pixel centre.
+/// locals are 0 = P, 1 = dx, 2 = dy, 3 = pixel centre (x, y, 0, 0). `KIL c` kills where a
+/// component of `c` is negative, which none is: a kill that never happens (module docs).
 pub fn arbfp(key: &ShaderKey) -> String {
     let shadow = key.kind == SamplerKind::Shadow;
     let target = match key.target {
@@ -300,7 +315,7 @@ pub fn arbfp(key: &ShaderKey) -> String {
         target.to_string()
     };
     format!(
-        "!!ARBfp1.0\n{option}PARAM p = program.local[0];\nPARAM dx = program.local[1];\nPARAM dy = program.local[2];\nPARAM c = program.local[3];\nTEMP d, q;\nSUB d, fragment.position, c;\nMAD q, d.x, dx, p;\nMAD q, d.y, dy, q;\n{op} result.color, q, texture[0], {t};\nEND\n"
+        "!!ARBfp1.0\n{option}PARAM p = program.local[0];\nPARAM dx = program.local[1];\nPARAM dy = program.local[2];\nPARAM c = program.local[3];\nTEMP d, q;\nKIL c;\nSUB d, fragment.position, c;\nMAD q, d.x, dx, p;\nMAD q, d.y, dy, q;\n{op} result.color, q, texture[0], {t};\nEND\n"
     )
 }
 
@@ -484,6 +499,43 @@ mod tests {
             path: ApiPath::Es100Ext,
             ..k
         }));
+    }
+
+    #[test]
+    fn single_case_programs_can_discard_but_only_where_the_pixel_centre_is_negative() {
+        let k = ShaderKey {
+            path: ApiPath::Glsl120,
+            target: Target::T2d,
+            kind: SamplerKind::Shadow,
+            form: LodForm::Implicit(false),
+            proj: false,
+            mode: None,
+            offset: [0, 0],
+            gather: None,
+        };
+        let compat = info(crate::names::ContextApi::Compat, (4, 5), 450);
+        for key in [
+            k,
+            ShaderKey {
+                form: LodForm::Lod,
+                path: ApiPath::Glsl130,
+                ..k
+            },
+        ] {
+            let (_, fs) = glsl(&compat, &key, None);
+            // Before P is formed, on a uniform (control flow stays uniform).
+            let at = fs.find("if (u_c.x < 0.0) discard;").expect(&fs);
+            assert!(at < fs.find("vec4 p =").expect(&fs), "{fs}");
+            assert!(fs.contains("uniform vec2 u_c;"), "{fs}");
+        }
+        let arb = arbfp(&ShaderKey {
+            path: ApiPath::ArbFp,
+            ..k
+        });
+        assert!(
+            arb.contains("PARAM c = program.local[3];") && arb.contains("KIL c;"),
+            "{arb}"
+        );
     }
 
     #[test]
