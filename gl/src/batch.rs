@@ -1,68 +1,81 @@
 //! Drawing a group of cases that share one texture and sampler state (core and ES contexts).
 //!
-//! On the GLSL 1.30+ paths every case of the group that uses the same program is drawn by one
-//! full-screen draw: each case's values (P, gradients, LOD) go into an RGBA32F parameter texture,
-//! each fragment finds its case from its 2x2 pixel quad and reads them with texelFetch (exact). An
-//! implicit-derivative lookup varies P across its own quad by the case's gradients, so the
-//! derivatives the driver takes within the quad are the case's (GL 4.6 §15.2.3 / ES 3.2 §14.2.3
-//! leave the neighbours open; every implementation this project runs forms quads at even window
-//! coordinates, as dEQP also assumes). The other paths draw one pixel per case.
+//! On the GLSL 3.30 core and GLSL ES 3.00 paths every case of the group that uses the same
+//! program is drawn by one instanced draw: instance k draws the 2x2 pixel quad of its slot, and
+//! its values (P, gradients, LOD) come as per-instance vertex attributes, passed to the fragment
+//! shader as flat inputs (bit for bit). An implicit-derivative lookup varies P across its own quad
+//! by the case's gradients, so the derivatives the driver takes within the quad are the case's
+//! (GL 4.6 §15.2.3 / ES 3.2 §14.2.3 leave the neighbours open; every implementation this project
+//! runs forms quads at even window coordinates, as dEQP also assumes). The other paths draw one
+//! pixel per case.
 //!
 //! The values of every batched draw of a worker batch are staged first ([`batches_of`]) and
-//! uploaded at once ([`Renderer::upload_staged`]) before the first draw: a texture written while
-//! queued draws read it makes the driver finish them first (llvmpipe flushes its scene), and one
-//! upload per batch instead of one per draw saves a texture update per group.
+//! uploaded at once ([`Renderer::upload_staged`]) before the first draw: a buffer written while
+//! queued draws read it makes the driver finish them first (llvmpipe flushes its scene).
+//!
+//! The fragment shader reads nothing but its inputs. An earlier form drew a full-screen triangle
+//! and fetched each quad's values from a parameter texture with texelFetch; its variants took
+//! llvmpipe nearly twice as long to compile (reports/BENCH.md).
 
 use super::draw::{BatchState, Job, Pending, Renderer};
-use super::framebuffer::{pixel, FB_SIZE};
+use super::framebuffer::FB_SIZE;
 use super::paths::{Plan, ShaderKey};
 use super::programs::Compiled;
-use super::shaders::{self, PARAM_CASES, PARAM_TEXELS, PARAM_WIDTH};
-use super::texture;
+use super::shaders::{self, PARAM_ATTRIBS, PARAM_FLOATS};
 use super::unitstate;
 use glow::HasContext;
 
+/// Most cases one batched draw serves (its quads must fit the framebuffer: `CAPACITY`).
+pub(super) const DRAW_CASES: usize = 1024;
+
 /// One batched draw: a program, the (case, plan) pairs it serves (slot k of the draw is item k),
-/// and where item 0's values are: parameter texture `texture`, case index `first` in it.
+/// and where item 0's values are in the parameter buffer (in cases).
 pub(super) struct Batch<'p> {
     key: ShaderKey,
     items: Vec<(usize, &'p Plan)>,
-    texture: usize,
     first: usize,
 }
 
-/// The parameter values of a worker batch, per parameter texture (four RGBA texels per case).
+/// The parameter values of a worker batch: six vertices per case ([`PARAM_FLOATS`] each).
 #[derive(Default)]
 pub(super) struct ParamStaging {
-    textures: Vec<Vec<f32>>,
+    values: Vec<f32>,
 }
 
+/// Vertices per case: two triangles covering its quad.
+const CASE_VERTICES: usize = 6;
+/// The quad's corners, as two triangles of the same winding.
+const CORNERS: [[f32; 2]; CASE_VERTICES] = [
+    [0.0, 0.0],
+    [1.0, 0.0],
+    [0.0, 1.0],
+    [0.0, 1.0],
+    [1.0, 0.0],
+    [1.0, 1.0],
+];
+
 impl ParamStaging {
-    /// Stages the values of `plans` (at most [`PARAM_CASES`]) in one texture; returns (texture,
-    /// index of the first case in it).
-    fn stage(&mut self, plans: &[(usize, &Plan)]) -> (usize, usize) {
-        let per_case = (PARAM_TEXELS * 4) as usize;
-        let fits = |d: &Vec<f32>| d.len() / per_case + plans.len() <= PARAM_CASES;
-        if !self.textures.last().is_some_and(fits) {
-            self.textures.push(Vec::new());
+    /// Stages the values of one draw's `plans`; returns the index of the first in the buffer (in
+    /// cases). Each vertex of case k of the draw: corner, (x, k), P, dx, dy.
+    fn stage(&mut self, plans: &[(usize, &Plan)]) -> usize {
+        let first = self.values.len() / (PARAM_FLOATS * CASE_VERTICES);
+        for (k, (_, p)) in plans.iter().enumerate() {
+            for corner in CORNERS {
+                self.values.extend_from_slice(&corner);
+                self.values.extend_from_slice(&[p.x, k as f32]);
+                self.values.extend_from_slice(&p.p);
+                self.values.extend_from_slice(&p.dx);
+                self.values.extend_from_slice(&p.dy);
+            }
         }
-        let texture = self.textures.len() - 1;
-        let data = &mut self.textures[texture];
-        let first = data.len() / per_case;
-        for (_, p) in plans {
-            data.extend_from_slice(&p.p);
-            data.extend_from_slice(&p.dx);
-            data.extend_from_slice(&p.dy);
-            data.extend_from_slice(&[p.x, 0.0, 0.0, 0.0]);
-        }
-        (texture, first)
+        first
     }
 }
 
 /// The batched draws of `group`: batchable (case, plan) pairs by program in first-appearance
-/// order, at most [`PARAM_CASES`] a draw, their values staged in `staging`. A batchable path is
-/// always drawn batched, even alone, so the driver compiles one variant per (program, state), not
-/// a batched and a single-pixel one.
+/// order, at most [`DRAW_CASES`] a draw, their values staged in `staging`. A batchable path is always drawn batched, even
+/// alone, so the driver compiles one variant per (program, state), not a batched and a
+/// single-pixel one.
 pub(super) fn batches_of<'p>(
     group: &'p [(usize, Vec<Plan>)],
     staging: &mut ParamStaging,
@@ -78,12 +91,11 @@ pub(super) fn batches_of<'p>(
     }
     let mut out = Vec::new();
     for (key, items) in by_key {
-        for chunk in items.chunks(PARAM_CASES) {
-            let (texture, first) = staging.stage(chunk);
+        for chunk in items.chunks(DRAW_CASES) {
+            let first = staging.stage(chunk);
             out.push(Batch {
                 key,
                 items: chunk.to_vec(),
-                texture,
                 first,
             });
         }
@@ -92,28 +104,36 @@ pub(super) fn batches_of<'p>(
 }
 
 impl Renderer {
-    /// Parameter texture `k`, created (with those before it) when missing.
-    pub(super) unsafe fn param_texture(&mut self, k: usize) -> Result<glow::Texture, String> {
-        let rows = shaders::PARAM_CASES as i32 * shaders::PARAM_TEXELS / shaders::PARAM_WIDTH;
-        while self.params.len() <= k {
-            self.gl.active_texture(glow::TEXTURE1);
-            let t = texture::rgba32f(&self.gl, shaders::PARAM_WIDTH, rows);
-            self.gl.active_texture(glow::TEXTURE0);
-            self.params.push(t?);
+    /// The parameter buffer and the vertex array reading it, created on first use.
+    unsafe fn param_buffer(&mut self) -> Result<(glow::Buffer, glow::VertexArray), String> {
+        if let Some(p) = self.params {
+            return Ok(p);
         }
-        Ok(self.params[k])
+        let gl = &self.gl;
+        let buffer = gl.create_buffer()?;
+        let vao = gl.create_vertex_array()?;
+        gl.bind_vertex_array(Some(vao));
+        gl.bind_buffer(glow::ARRAY_BUFFER, Some(buffer));
+        let stride = (PARAM_FLOATS * 4) as i32;
+        for (loc, _, size, at) in PARAM_ATTRIBS {
+            gl.vertex_attrib_pointer_f32(loc, size, glow::FLOAT, false, stride, (at * 4) as i32);
+            gl.enable_vertex_attrib_array(loc);
+        }
+        gl.bind_vertex_array(Some(self.vao));
+        self.params = Some((buffer, vao));
+        Ok((buffer, vao))
     }
 
-    /// One batched draw: the values of its `n` cases are in parameter texture `param.0` from case
-    /// `param.1` on, their results go to slots `slot0..slot0+n`.
+    /// One batched draw: case k is the case in slot `slot0 + k`, its vertices from case
+    /// `first + k` of the parameter buffer on.
     pub(super) unsafe fn draw_batched(
         &mut self,
         key: &ShaderKey,
         slot0: usize,
         n: usize,
-        param: (usize, usize),
+        first: usize,
     ) -> Result<(), String> {
-        let params = self.param_texture(param.0)?;
+        let (_, vao) = self.param_buffer()?;
         let compiled = self.programs.get(
             &self.gl,
             &self.info,
@@ -125,54 +145,33 @@ impl Renderer {
             return Err("batched program is not GLSL".into());
         };
         let gl = &self.gl;
-        // Only the quads of the draw's slots are rasterized: the rows they span, and within a
-        // single row only its columns (quads stay at even window coordinates).
-        let (x0, y0) = pixel(slot0);
-        let (x1, y1) = pixel(slot0 + n - 1);
-        if y0 == y1 {
-            gl.viewport(x0, y0, x1 + 2 - x0, 2);
-        } else {
-            gl.viewport(0, y0, FB_SIZE, y1 + 2 - y0);
-        }
-        gl.active_texture(glow::TEXTURE1);
-        gl.bind_texture(glow::TEXTURE_2D, Some(params));
-        gl.active_texture(glow::TEXTURE0);
+        gl.viewport(0, 0, FB_SIZE, FB_SIZE);
         gl.use_program(Some(p.program));
         gl.uniform_1_i32(p.u_base.as_ref(), slot0 as i32);
-        gl.uniform_1_i32(p.u_count.as_ref(), n as i32);
-        gl.uniform_1_i32(p.u_param0.as_ref(), param.1 as i32);
+        gl.bind_vertex_array(Some(vao));
+        gl.draw_arrays(
+            glow::TRIANGLES,
+            (first * CASE_VERTICES) as i32,
+            (n * CASE_VERTICES) as i32,
+        );
         gl.bind_vertex_array(Some(self.vao));
-        gl.draw_arrays(glow::TRIANGLES, 0, 3);
         Ok(())
     }
 
-    /// Uploads the staged values, texture k of `staging` to parameter texture k (created when
-    /// there are fewer), only the rows that hold values.
+    /// Uploads the staged values to the parameter buffer (a new store each batch, so no queued
+    /// draw waits on it).
     pub(super) unsafe fn upload_staged(&mut self, staging: &ParamStaging) -> Result<(), String> {
-        for (k, data) in staging.textures.iter().enumerate() {
-            let tex = self.param_texture(k)?;
-            let row = (PARAM_WIDTH * 4) as usize;
-            let rows = data.len().div_ceil(row);
-            let mut bytes = std::mem::take(&mut self.upload);
-            bytes.clear();
-            bytes.extend(data.iter().flat_map(|f| f.to_ne_bytes()));
-            bytes.resize(rows * row * 4, 0);
-            self.gl.active_texture(glow::TEXTURE1);
-            self.gl.bind_texture(glow::TEXTURE_2D, Some(tex));
-            self.gl.tex_sub_image_2d(
-                glow::TEXTURE_2D,
-                0,
-                0,
-                0,
-                PARAM_WIDTH,
-                rows as i32,
-                glow::RGBA,
-                glow::FLOAT,
-                glow::PixelUnpackData::Slice(Some(&bytes)),
-            );
-            self.gl.active_texture(glow::TEXTURE0);
-            self.upload = bytes;
+        if staging.values.is_empty() {
+            return Ok(());
         }
+        let (buffer, _) = self.param_buffer()?;
+        let mut bytes = std::mem::take(&mut self.upload);
+        bytes.clear();
+        bytes.extend(staging.values.iter().flat_map(|f| f.to_ne_bytes()));
+        self.gl.bind_buffer(glow::ARRAY_BUFFER, Some(buffer));
+        self.gl
+            .buffer_data_u8_slice(glow::ARRAY_BUFFER, &bytes, glow::STREAM_DRAW);
+        self.upload = bytes;
         Ok(())
     }
 
@@ -211,7 +210,7 @@ impl Renderer {
                 continue;
             }
             let slot0 = self.take_slots(st, b.items.len());
-            match self.draw_batched(&b.key, slot0, b.items.len(), (b.texture, b.first)) {
+            match self.draw_batched(&b.key, slot0, b.items.len(), b.first) {
                 Ok(()) => {
                     for (k, (ci, p)) in b.items.iter().enumerate() {
                         if st.answers[*ci].is_none() {
@@ -266,38 +265,38 @@ mod tests {
 
     #[test]
     fn staged_values_sit_where_each_draw_reads_them() {
-        let per_case = (PARAM_TEXELS * 4) as usize;
-        let a = group(PARAM_CASES + 10, 0, 0.0);
-        let b = group(30, PARAM_CASES + 10, 5000.0);
+        let a = group(1500, 0, 0.0);
+        let b = group(30, 1500, 5000.0);
         let mut staging = ParamStaging::default();
         let ba = batches_of(&a, &mut staging);
         let bb = batches_of(&b, &mut staging);
         assert!(shaders::batchable(&a[0].1[0].key));
-        // A group larger than one texture is split at PARAM_CASES; a batch never straddles
-        // textures, so the second group's 30 start a texture only where the rest does not fit.
+        // A group is split at DRAW_CASES; the second group's values follow the first's.
         assert_eq!(
             ba.iter()
-                .map(|b| (b.items.len(), b.texture, b.first))
+                .chain(&bb)
+                .map(|b| (b.items.len(), b.first))
                 .collect::<Vec<_>>(),
-            vec![(PARAM_CASES, 0, 0), (10, 1, 0)]
+            vec![(DRAW_CASES, 0), (1500 - DRAW_CASES, DRAW_CASES), (30, 1500)]
         );
-        assert_eq!(
-            bb.iter()
-                .map(|b| (b.items.len(), b.texture, b.first))
-                .collect::<Vec<_>>(),
-            vec![(30, 1, 10)]
-        );
-        assert_eq!(staging.textures[0].len(), PARAM_CASES * per_case);
-        assert_eq!(staging.textures[1].len(), 40 * per_case);
-        // Item k of a draw is read at case index first + k of its texture: P, dx, dy, (x, 0, 0, 0).
+        assert_eq!(staging.values.len(), 1530 * CASE_VERTICES * PARAM_FLOATS);
+        // Every vertex of case k of a draw (case first + k of the buffer) carries its corner,
+        // (x, k), P, dx and dy where PARAM_ATTRIBS says.
+        let attrib = |name: &str| {
+            let (_, _, size, at) = PARAM_ATTRIBS.into_iter().find(|a| a.1 == name).expect(name);
+            at..at + size as usize
+        };
         for batch in ba.iter().chain(&bb) {
-            let data = &staging.textures[batch.texture];
             for (k, (_, plan)) in batch.items.iter().enumerate() {
-                let at = (batch.first + k) * per_case;
-                assert_eq!(data[at..at + 4], plan.p);
-                assert_eq!(data[at + 4..at + 8], plan.dx);
-                assert_eq!(data[at + 8..at + 12], plan.dy);
-                assert_eq!(data[at + 12..at + 16], [plan.x, 0.0, 0.0, 0.0]);
+                for (vi, corner) in CORNERS.iter().enumerate() {
+                    let at = ((batch.first + k) * CASE_VERTICES + vi) * PARAM_FLOATS;
+                    let v = &staging.values[at..at + PARAM_FLOATS];
+                    assert_eq!(v[attrib("a_pos")], corner[..]);
+                    assert_eq!(v[attrib("a_x")], [plan.x, k as f32]);
+                    assert_eq!(v[attrib("a_p")], plan.p);
+                    assert_eq!(v[attrib("a_dx")], plan.dx);
+                    assert_eq!(v[attrib("a_dy")], plan.dy);
+                }
             }
         }
     }

@@ -6,8 +6,8 @@
 //!
 //! Consecutive cases with the same texture and sampler state (a case and its sweep points, or
 //! the grid's neighbours: only the reference or the coordinate changes) share one texture object,
-//! and on the GLSL 1.30+ paths all of them are drawn with one full-screen draw reading their
-//! values from a parameter texture (see `batch.rs`). Compatibility contexts give each API path of
+//! and on the core and ES paths all of them are drawn with one instanced draw, each case's
+//! values as attributes of its instance (see `batch.rs`). Compatibility contexts give each API path of
 //! such a group a texture of its own (see `run_compat_group`).
 
 use super::framebuffer::{pixel, CAPACITY, FB_SIZE};
@@ -68,9 +68,9 @@ pub struct Renderer {
     pub(super) legacy: Option<Legacy>,
     pub(super) fbo: glow::Framebuffer,
     pub(super) vao: glow::VertexArray,
-    /// RGBA32F case values for batched draws (unit 1), [`shaders::PARAM_CASES`] cases each;
-    /// created as a batch needs them.
-    pub(super) params: Vec<glow::Texture>,
+    /// The per-case values of batched draws (`batch.rs`) and the vertex array reading them as
+    /// per-instance attributes; created when a batch first needs them.
+    pub(super) params: Option<(glow::Buffer, glow::VertexArray)>,
     /// Slots drawn since the framebuffer was last cleared (their quad rows are cleared next).
     pub(super) drawn: usize,
     pub(super) programs: ProgramCache,
@@ -168,7 +168,7 @@ impl Renderer {
             legacy,
             fbo,
             vao,
-            params: Vec::new(),
+            params: None,
             // The colour texture's contents are undefined until the first clear.
             drawn: CAPACITY,
             programs: ProgramCache::default(),
@@ -341,7 +341,7 @@ impl Renderer {
                 }
                 Err(e) => {
                     let all = groups.iter().flatten().map(|(ci, _)| *ci);
-                    st.fail_unanswered(all, &format!("parameter texture: {e}"));
+                    st.fail_unanswered(all, &format!("parameter buffer: {e}"));
                 }
             }
         }

@@ -19,8 +19,6 @@ pub(super) struct Program {
     pub(super) u_dy: Option<glow::UniformLocation>,
     pub(super) u_c: Option<glow::UniformLocation>,
     pub(super) u_base: Option<glow::UniformLocation>,
-    pub(super) u_count: Option<glow::UniformLocation>,
-    pub(super) u_param0: Option<glow::UniformLocation>,
 }
 
 /// What a [`ShaderKey`] compiles to on one path.
@@ -63,7 +61,10 @@ unsafe fn compile(
                 gl.attach_shader(program, sh);
                 gl.delete_shader(sh);
             }
-            gl.bind_attrib_location(program, 0, "a_pos");
+            // `a_pos` at 0 in both kinds of program; a batched one's other values after it.
+            for (loc, name, _, _) in shaders::PARAM_ATTRIBS {
+                gl.bind_attrib_location(program, loc, name);
+            }
             gl.link_program(program);
             if !gl.get_program_link_status(program) {
                 return Err(format!(
@@ -76,9 +77,6 @@ unsafe fn compile(
             if let Some(t) = u("u_tex") {
                 gl.uniform_1_i32(Some(&t), 0);
             }
-            if let Some(t) = u("u_params") {
-                gl.uniform_1_i32(Some(&t), 1);
-            }
             Ok(Compiled::Glsl(Program {
                 program,
                 u_p: u("u_p"),
@@ -87,8 +85,6 @@ unsafe fn compile(
                 u_dy: u("u_dy"),
                 u_c: u("u_c"),
                 u_base: u("u_base"),
-                u_count: u("u_count"),
-                u_param0: u("u_param0"),
             }))
         }
     }

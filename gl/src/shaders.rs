@@ -4,18 +4,18 @@
 //! `u_x` the LOD / bias / cube-array compare value, `u_dx`/`u_dy` the gradients and `u_c` the centre
 //! of the written pixel. With implicit derivatives the coordinate is
 //! `u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy`, which is exactly `u_p`
-//! at the written pixel and varies by the gradients across its 2x2 quad. A batched program reads
-//! the same values from the parameter texture, one case per pixel quad (see `glsl`).
+//! at the written pixel and varies by the gradients across its 2x2 quad. A batched program gets
+//! the same values as flat inputs, one instance (one 2x2 pixel quad) per case (see `glsl`).
 //!
-//! Every program can discard. A batched one discards the quads of other draws; a single-case one
-//! (GLSL and ARB) has a discard that never happens, because the pixel centre `u_c` is never
-//! negative. The discard changes no lookup: the branch depends on a uniform, so control flow
-//! stays uniform and derivatives are defined. It only changes what llvmpipe and lavapipe
-//! compile. A shader that cannot discard is "opaque" to them. For such a shader they compile a
+//! Every program can discard, but never does: a GLSL program discards where the slot index
+//! `u_base` (batched) or the pixel centre `u_c` (single case) is negative, an ARB program kills
+//! where the centre is, and neither ever is. The discard changes no lookup: the branch depends
+//! on a uniform, so control flow stays uniform and derivatives are defined. It only changes
+//! what llvmpipe and lavapipe compile. A shader that cannot discard is "opaque" to them. For such a shader they compile a
 //! second fragment function for fully covered tiles, beside the one for partly covered tiles.
 //! These draws cover one pixel or a few 2x2 quads, so they only ever run the partial-tile
-//! function. Without the never-taken discard a cold run spent a sixth of its time compiling the
-//! whole-tile function it never uses (reports/BENCH.md). The fixed-function path cannot discard.
+//! function. Without the never-taken discard a cold compatibility run spent a sixth of its time
+//! compiling the whole-tile function it never uses (reports/BENCH.md). The fixed-function path cannot discard.
 
 use super::paths::{uses_shadow_lod, GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
 use shadowcheck_model::{ApiPath, Target};
@@ -139,27 +139,35 @@ fn legacy_call(key: &ShaderKey) -> String {
     format!("{f}(u_tex, {p}{bias})")
 }
 
-/// Texels of the parameter texture per case in batched draws (P, dx, dy, (x,0,0,0)).
-pub const PARAM_TEXELS: i32 = 4;
-/// Width of the parameter texture.
-pub const PARAM_WIDTH: i32 = 1024;
-/// Cases one parameter texture holds: the most one batched draw serves.
-pub const PARAM_CASES: usize = 1024;
+/// Floats per vertex in the parameter buffer of batched draws (six vertices, two triangles, per
+/// case): the corner, (x, k), P, dx, dy ([`PARAM_ATTRIBS`]).
+pub const PARAM_FLOATS: usize = 16;
+/// A batched program's vertex attributes: (location, name, size, offset in floats). `a_pos` is
+/// the quad corner (0 or 1 in x and y; in a single-case program, the full-screen triangle), `a_x`
+/// is (x, k), k the case's index in its draw; P, dx and dy are the case's. Every vertex of a
+/// case carries the case's values, so the flat inputs are its values whatever the provoking
+/// vertex.
+pub const PARAM_ATTRIBS: [(u32, &str, i32, usize); 5] = [
+    (0, "a_pos", 2, 0),
+    (4, "a_x", 2, 2),
+    (1, "a_p", 4, 4),
+    (2, "a_dx", 4, 8),
+    (3, "a_dy", 4, 12),
+];
 
-/// Can this key draw many cases at once, each in its own pixel quad, reading its values from the
-/// parameter texture with texelFetch (GLSL 1.30+)?
+/// Can this key draw many cases at once, each an instance drawing its own pixel quad with its
+/// values as per-instance attributes (instanced arrays: GLSL 3.30 core, GLSL ES 3.00)? The
+/// compatibility contexts' paths draw one pixel per case (`draw::run_compat_group`).
 pub fn batchable(key: &ShaderKey) -> bool {
-    matches!(
-        key.path,
-        ApiPath::GlslCore | ApiPath::Glsl130 | ApiPath::Es300
-    ) && key.form != LodForm::Constant
+    matches!(key.path, ApiPath::GlslCore | ApiPath::Es300) && key.form != LodForm::Constant
 }
 
-/// (vertex source, fragment source) for a GLSL path. `batched`: the case values come from the
-/// parameter texture (unit 1) at index `u_param0 + slot - u_base`, where slot is the index of the pixel's
-/// 2x2 quad in the framebuffer (`fb_width` pixels wide); quads outside [0, u_count) are
-/// discarded. An implicit-derivative lookup's P varies across its quad by the case's gradients
-/// and is the case's P at the quad's lower-left pixel, whose result is read.
+/// (vertex source, fragment source) for a GLSL path. `batched`: case k of a draw is the case in
+/// slot `u_base + k`, drawn as two triangles covering that slot's 2x2 pixel quad of the
+/// framebuffer (`fb_width` pixels wide, the viewport); its values come as vertex attributes
+/// ([`PARAM_ATTRIBS`]) and reach the fragment shader as flat inputs, bit for bit. An implicit-derivative lookup's P
+/// varies across its quad by the case's gradients and is the case's P at the quad's lower-left
+/// pixel, whose result is read.
 pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, String) {
     let cube_array = key.target == Target::CubeArray;
     let rect = key.target == Target::Rect;
@@ -231,9 +239,17 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
     } else {
         header
     };
-    let vs = format!(
-        "{header}{vin} vec2 a_pos;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); }}\n"
-    );
+    let vs = match batched {
+        Some(fb_width) => {
+            let quads = fb_width / 2;
+            format!(
+                "{header}{vin} vec2 a_pos;\n{vin} vec4 a_p;\n{vin} vec4 a_dx;\n{vin} vec4 a_dy;\n{vin} vec2 a_x;\nuniform int u_base;\nflat out vec4 v_p;\nflat out vec4 v_dx;\nflat out vec4 v_dy;\nflat out float v_x;\nvoid main() {{\n  int s = u_base + int(a_x.y);\n  ivec2 corner = 2 * ivec2(s % {quads}, s / {quads}) + 2 * ivec2(a_pos);\n  gl_Position = vec4(vec2(corner) / {quads}.0 - 1.0, 0.0, 1.0);\n  v_p = a_p;\n  v_dx = a_dx;\n  v_dy = a_dy;\n  v_x = a_x.x;\n}}\n"
+            )
+        }
+        None => format!(
+            "{header}{vin} vec2 a_pos;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); }}\n"
+        ),
+    };
     let prec = if matches!(key.path, ApiPath::Es300 | ApiPath::Es100Ext) {
         "highp "
     } else {
@@ -241,16 +257,11 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
     };
     let implicit = matches!(key.form, LodForm::Implicit(_) | LodForm::Gather(true));
     let p_line = match (batched, key.form) {
-        (Some(fb_width), _) => {
-            // The fetch index is clamped: an implementation that runs a discarded quad on (SIMD
-            // lanes) must still read a real case's values, not a texel outside the parameter
-            // texture (SwiftShader's GLES crashed on the resulting cube lookups).
-            let quads = fb_width / 2;
-            let mut l = format!(
-                "ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  int k = q.y * {quads} + q.x - u_base;\n  if (k < 0 || k >= u_count) discard;\n  int t = (u_param0 + clamp(k, 0, u_count - 1)) * {PARAM_TEXELS};\n  vec4 p = texelFetch(u_params, ivec2(t % {PARAM_WIDTH}, t / {PARAM_WIDTH}), 0);\n  vec4 u_dx = texelFetch(u_params, ivec2((t + 1) % {PARAM_WIDTH}, (t + 1) / {PARAM_WIDTH}), 0);\n  vec4 u_dy = texelFetch(u_params, ivec2((t + 2) % {PARAM_WIDTH}, (t + 2) / {PARAM_WIDTH}), 0);\n  float u_x = texelFetch(u_params, ivec2((t + 3) % {PARAM_WIDTH}, (t + 3) / {PARAM_WIDTH}), 0).x;"
-            );
+        (Some(_), _) => {
+            // `u_base`, a slot index, is never negative: a discard never taken (module docs).
+            let mut l = "if (u_base < 0) discard;\n  vec4 p = v_p;\n  vec4 u_dx = v_dx;\n  vec4 u_dy = v_dy;\n  float u_x = v_x;".to_string();
             if implicit {
-                l += "\n  vec2 c = vec2(q * 2) + 0.5;\n  p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;";
+                l += "\n  ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  vec2 c = vec2(q * 2) + 0.5;\n  p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;";
             }
             l
         }
@@ -261,7 +272,7 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
         (None, _) => format!("{NEVER_DISCARD}\n  vec4 p = u_p;"),
     };
     let uniforms = if batched.is_some() {
-        format!("uniform {prec}sampler2D u_params;\nuniform int u_base;\nuniform int u_count;\nuniform int u_param0;\n")
+        "uniform int u_base;\nflat in vec4 v_p;\nflat in vec4 v_dx;\nflat in vec4 v_dy;\nflat in float v_x;\n".to_string()
     } else {
         "uniform vec4 u_p;\nuniform float u_x;\nuniform vec4 u_dx;\nuniform vec4 u_dy;\nuniform vec2 u_c;\n".to_string()
     };
@@ -462,7 +473,7 @@ mod tests {
     }
 
     #[test]
-    fn batched_programs_find_their_case_by_pixel_quad_and_vary_p_across_it_when_implicit() {
+    fn batched_programs_draw_each_case_as_an_instance_quad_and_vary_p_across_it_when_implicit() {
         let info = info(crate::names::ContextApi::Core, (4, 5), 450);
         let k = ShaderKey {
             path: ApiPath::GlslCore,
@@ -475,14 +486,22 @@ mod tests {
             gather: None,
         };
         assert!(batchable(&k));
-        let (_, fs) = glsl(&info, &k, Some(256));
+        let (vs, fs) = glsl(&info, &k, Some(256));
+        // Instance k draws the quad of slot u_base + k: 128 quads a row, NDC = pixel / 128 - 1.
         assert!(
-            fs.contains(
-                "ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  int k = q.y * 128 + q.x - u_base;"
-            ),
+            vs.contains("int s = u_base + int(a_x.y);\n  ivec2 corner = 2 * ivec2(s % 128, s / 128) + 2 * ivec2(a_pos);\n  gl_Position = vec4(vec2(corner) / 128.0 - 1.0, 0.0, 1.0);"),
+            "{vs}"
+        );
+        for (_, name, size, _) in PARAM_ATTRIBS {
+            let ty = format!("vec{size}");
+            assert!(vs.contains(&format!("in {ty} {name};")), "{vs}");
+        }
+        assert!(
+            fs.contains("flat in vec4 v_p;") && fs.contains("vec4 p = v_p;"),
             "{fs}"
         );
-        assert!(fs.contains("vec2 c = vec2(q * 2) + 0.5;\n  p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;"), "{fs}");
+        assert!(fs.contains("ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  vec2 c = vec2(q * 2) + 0.5;\n  p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;"), "{fs}");
+        assert!(fs.contains("if (u_base < 0) discard;"), "{fs}");
         // An explicit LOD reads P as stored: no variation across the quad.
         let lod = ShaderKey {
             form: LodForm::Lod,
@@ -490,9 +509,13 @@ mod tests {
         };
         assert!(batchable(&lod));
         assert!(!glsl(&info, &lod, Some(256)).1.contains("vec2 c ="));
-        // Fixed function and the GLSL 1.20 / ES 1.00 paths have no texelFetch: one pixel per case.
+        // The compatibility paths and ES 1.00 draw one pixel per case.
         assert!(!batchable(&ShaderKey {
             path: ApiPath::Glsl120,
+            ..k
+        }));
+        assert!(!batchable(&ShaderKey {
+            path: ApiPath::Glsl130,
             ..k
         }));
         assert!(!batchable(&ShaderKey {

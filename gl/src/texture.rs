@@ -243,7 +243,7 @@ pub fn error_name(e: u32) -> String {
 
 /// Turns a pending GL error into `GlError::Gl` naming `what`.
 /// A `w`×`h` RGBA32F texture with NEAREST filtering, bound to TEXTURE_2D of the active unit: the
-/// result framebuffer's colour buffer and the parameter texture of batched draws.
+/// result framebuffer's colour buffer.
 ///
 /// # Safety
 /// `gl` must be current on this thread.

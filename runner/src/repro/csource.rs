@@ -8,8 +8,9 @@
 //! values; `shaders::glsl` / `shaders::arbfp` give the program text, the same functions the worker
 //! compiles), and one draw into a 1x1 viewport of an RGBA32F framebuffer cleared to -1
 //! (`draw.rs`). One difference: the worker draws `textureLod`/`textureGrad` lookups of core and
-//! ES contexts batched, reading P, the gradients and the LOD from a parameter texture; the
-//! reproducer passes the same values as uniforms (the shader key and the lookup call are the same).
+//! ES contexts batched, each case an instance whose attributes carry P, the gradients and the
+//! LOD; the reproducer passes the same values as uniforms (the shader key and the lookup call
+//! are the same).
 
 use super::tokens::Tokens;
 use super::Subject;
