@@ -250,6 +250,80 @@ mod tests {
         }
     }
 
+    /// Answers lookup k of its life with R = k on the `core` path.
+    struct Numbered(f64);
+
+    impl Serve for Numbered {
+        fn hello(&self) -> Hello {
+            Echo(vec![]).hello()
+        }
+        fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
+            let n: usize = cases.iter().map(Case::checks).sum();
+            Ok((0..n)
+                .map(|_| {
+                    self.0 += 1.0;
+                    let r = shadowcheck_protocol::PathResult {
+                        api: "core".into(),
+                        rgba: shadowcheck_protocol::Rgba([self.0 - 1.0, 0.0, 0.0, 1.0]),
+                        stored: None,
+                        note: None,
+                        sweep: vec![],
+                    };
+                    Answer::Observation(vec![r], vec![])
+                })
+                .collect())
+        }
+    }
+
+    #[test]
+    fn a_workers_answers_for_sweep_points_fold_into_their_case_and_the_next_case_keeps_its_own() {
+        let mut swept = crate::test_case::case(Target::T2d, 2, 2, 1);
+        swept.id = "swept".into();
+        swept.sweep = (0..2)
+            .map(|k| shadowcheck_model::SweepPoint {
+                coord: [0.25, 0.5, 0.0, 1.0],
+                dref: 0.25 * k as f64,
+                expect: None,
+            })
+            .collect();
+        let mut plain = crate::test_case::case(Target::T2d, 2, 2, 1);
+        plain.id = "plain".into();
+        let mut input = Request::hello_line().into_bytes();
+        input.push(b'\n');
+        for c in [&swept, &plain] {
+            Request::write_case_on(&mut input, c, &c.api, false);
+            input.push(b'\n');
+        }
+        input.extend_from_slice(Request::FLUSH_LINE);
+        input.extend_from_slice(Request::BYE_LINE);
+        let mut out = Vec::new();
+        serve(&mut Numbered(0.0), std::io::Cursor::new(input), &mut out).unwrap();
+        let lines: Vec<serde_json::Value> = String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        assert_eq!(lines.len(), 3, "{lines:?}");
+        // Lookups 0 (the case's own), 1 and 2 (its points) are the first case's; 3 the next's.
+        let r = &lines[1]["results"][0];
+        assert_eq!(
+            (&lines[1]["case_id"], &r["rgba"][0]),
+            (&"swept".into(), &0.0.into())
+        );
+        let sweep: Vec<f64> = r["sweep"]
+            .as_array()
+            .expect("sweep")
+            .iter()
+            .map(|p| p[0].as_f64().unwrap_or(-1.0))
+            .collect();
+        assert_eq!(sweep, vec![1.0, 2.0]);
+        let r = &lines[2]["results"][0];
+        assert_eq!(
+            (&lines[2]["case_id"], &r["rgba"][0]),
+            (&"plain".into(), &3.0.into())
+        );
+    }
+
     #[test]
     fn each_line_of_a_group_gets_one_answer_in_order_invalid_and_unparsable_cases_included() {
         let mut good = crate::test_case::case(Target::T2d, 2, 2, 1);
@@ -278,7 +352,7 @@ mod tests {
         // The hello, then one answer per case line, in order; the unknown line gets none.
         assert_eq!(lines.len(), 4, "{lines:?}");
         assert_eq!(lines[0]["type"], "hello");
-        assert_eq!(lines[0]["sweeps"], true, "the loop expands sweeps");
+        assert_eq!(lines[0]["sweeps"], true, "the loop answers sweeps");
         assert_eq!(
             (&lines[1]["type"], &lines[1]["case_id"]),
             (&"skip".into(), &"good".into())
