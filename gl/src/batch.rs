@@ -1,9 +1,9 @@
 //! Drawing a group of cases that share one texture and sampler state (core and ES contexts).
 //!
 //! On the GLSL 3.30 core and GLSL ES 3.00 paths every case of the group that uses the same
-//! program is drawn by one instanced draw: instance k draws the 2x2 pixel quad of its slot, and
-//! its values (P, gradients, LOD) come as per-instance vertex attributes, passed to the fragment
-//! shader as flat inputs (bit for bit). An implicit-derivative lookup varies P across its own quad
+//! program is drawn by one draw: case k is two triangles over the 2x2 pixel quad of its slot,
+//! and its values (P, gradients, LOD) come as attributes of its six vertices, passed to the
+//! fragment shader as flat inputs (bit for bit). An implicit-derivative lookup varies P across its own quad
 //! by the case's gradients, so the derivatives the driver takes within the quad are the case's
 //! (GL 4.6 §15.2.3 / ES 3.2 §14.2.3 leave the neighbours open; every implementation this project
 //! runs forms quads at even window coordinates, as dEQP also assumes). The other paths draw one
@@ -179,12 +179,12 @@ impl Renderer {
     /// one pixel each, then `batches` (the group's, from [`batches_of`], values uploaded).
     pub(super) unsafe fn run_group(
         &mut self,
-        cases: &[Job],
+        jobs: &[Job],
         group: &[(usize, Vec<Plan>)],
         batches: Vec<Batch<'_>>,
         st: &mut BatchState,
     ) {
-        let first = cases[group[0].0].case;
+        let first = jobs[group[0].0].case;
         let Some((tex, so)) = self.bind_group_texture(first, group.iter().map(|(ci, _)| *ci), st)
         else {
             return;
@@ -215,7 +215,7 @@ impl Renderer {
                     for (k, (ci, p)) in b.items.iter().enumerate() {
                         if st.answers[*ci].is_none() {
                             // A sweep point's answer keeps only its RGBA (`sweep::merge`).
-                            let note = if cases[*ci].point {
+                            let note = if jobs[*ci].point {
                                 String::new()
                             } else {
                                 format!("{}, batched", p.note)
@@ -240,7 +240,7 @@ impl Renderer {
         }
         unitstate::unbind_unit_state(&self.gl, first, so);
         let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
-        self.retire(cases, st, tex, group[0].0, sharing);
+        self.retire(jobs, st, tex, group[0].0, sharing);
         self.check_group(group.iter().map(|(ci, _)| *ci), st);
     }
 }

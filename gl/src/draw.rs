@@ -6,9 +6,9 @@
 //!
 //! Consecutive cases with the same texture and sampler state (a case and its sweep points, or
 //! the grid's neighbours: only the reference or the coordinate changes) share one texture object,
-//! and on the core and ES paths all of them are drawn with one instanced draw, each case's
-//! values as attributes of its instance (see `batch.rs`). Compatibility contexts give each API path of
-//! such a group a texture of its own (see `run_compat_group`).
+//! and on the core and ES paths all of them are drawn with one draw, each case two triangles
+//! over its own quad with its values as vertex attributes (see `batch.rs`). Compatibility contexts
+//! give each API path of such a group a texture of its own (see `run_compat_group`).
 
 use super::framebuffer::{pixel, CAPACITY, FB_SIZE};
 use super::legacy::{self, Legacy};
@@ -69,7 +69,7 @@ pub struct Renderer {
     pub(super) fbo: glow::Framebuffer,
     pub(super) vao: glow::VertexArray,
     /// The per-case values of batched draws (`batch.rs`) and the vertex array reading them as
-    /// per-instance attributes; created when a batch first needs them.
+    /// vertex attributes; created when a batch first needs them.
     pub(super) params: Option<(glow::Buffer, glow::VertexArray)>,
     /// Slots drawn since the framebuffer was last cleared (their quad rows are cleared next).
     pub(super) drawn: usize,
@@ -281,19 +281,19 @@ impl Renderer {
     ///
     /// # Safety
     /// The renderer's context must be current.
-    pub unsafe fn run_batch(&mut self, cases: &[Job]) -> Vec<Answer> {
+    pub unsafe fn run_batch(&mut self, jobs: &[Job]) -> Vec<Answer> {
         let mut st = BatchState {
-            answers: vec![None; cases.len()],
-            results: vec![Vec::new(); cases.len()],
-            stored: vec![None; cases.len()],
+            answers: vec![None; jobs.len()],
+            results: vec![Vec::new(); jobs.len()],
+            stored: vec![None; jobs.len()],
             pending: Vec::new(),
             next_slot: 0,
             readbacks: Vec::new(),
-            skipped: vec![Vec::new(); cases.len()],
+            skipped: vec![Vec::new(); jobs.len()],
         };
         self.clear();
         let mut planned: Vec<(usize, Vec<Plan>)> = Vec::new();
-        for (ci, job) in cases.iter().enumerate() {
+        for (ci, job) in jobs.iter().enumerate() {
             let mut plans = Vec::new();
             let mut skipped = Vec::new();
             for &path in &job.case.api {
@@ -318,13 +318,13 @@ impl Renderer {
         let mut groups: Vec<Vec<(usize, Vec<Plan>)>> = Vec::new();
         for item in planned {
             match groups.last_mut() {
-                Some(group) if cases[group[0].0].same_texture(&cases[item.0]) => group.push(item),
+                Some(group) if jobs[group[0].0].same_texture(&jobs[item.0]) => group.push(item),
                 _ => groups.push(vec![item]),
             }
         }
         if self.info.compat {
             for group in &groups {
-                self.run_compat_group(cases, group, &mut st);
+                self.run_compat_group(jobs, group, &mut st);
             }
         } else {
             // Every batched draw's values in place before the first draw.
@@ -336,7 +336,7 @@ impl Renderer {
             match self.upload_staged(&staging) {
                 Ok(()) => {
                     for (group, batches) in groups.iter().zip(batches) {
-                        self.run_group(cases, group, batches, &mut st);
+                        self.run_group(jobs, group, batches, &mut st);
                     }
                 }
                 Err(e) => {
@@ -347,13 +347,13 @@ impl Renderer {
         }
         let mut pending = std::mem::take(&mut st.pending);
         self.collect(&mut pending, &mut st.results);
-        self.finish_readbacks(cases, &mut st);
+        self.finish_readbacks(jobs, &mut st);
         st.answers
             .into_iter()
             .zip(st.results)
             .zip(st.stored)
             .zip(st.skipped)
-            .zip(cases)
+            .zip(jobs)
             .map(|((((a, mut r), stored), skipped), job)| {
                 a.unwrap_or_else(|| {
                     r.sort_by_key(|e| job.case.api.iter().position(|p| p.key() == e.api));
@@ -367,10 +367,10 @@ impl Renderer {
     }
 
     /// Reads back the deferred textures and deletes them.
-    pub(super) unsafe fn finish_readbacks(&mut self, cases: &[Job], st: &mut BatchState) {
+    pub(super) unsafe fn finish_readbacks(&mut self, jobs: &[Job], st: &mut BatchState) {
         for (tex, ci, sharing) in std::mem::take(&mut st.readbacks) {
-            let stored = texture::read_back(&self.gl, tex, cases[ci].case).ok();
-            for c in sharing.into_iter().filter(|c| !cases[*c].point) {
+            let stored = texture::read_back(&self.gl, tex, jobs[ci].case).ok();
+            for c in sharing.into_iter().filter(|c| !jobs[*c].point) {
                 st.stored[c] = stored.clone();
             }
             self.gl.delete_texture(tex);
@@ -380,7 +380,7 @@ impl Renderer {
     /// Queues `tex` for read-back (desktop GL) or deletes it (ES has no glGetTexImage).
     pub(super) unsafe fn retire(
         &mut self,
-        cases: &[Job],
+        jobs: &[Job],
         st: &mut BatchState,
         tex: glow::Texture,
         ci: usize,
@@ -392,7 +392,7 @@ impl Renderer {
         }
         st.readbacks.push((tex, ci, sharing));
         if st.readbacks.len() >= MAX_DEFERRED {
-            self.finish_readbacks(cases, st);
+            self.finish_readbacks(jobs, st);
         }
     }
 
@@ -441,11 +441,11 @@ impl Renderer {
     /// core context.
     unsafe fn run_compat_group(
         &mut self,
-        cases: &[Job],
+        jobs: &[Job],
         group: &[(usize, Vec<Plan>)],
         st: &mut BatchState,
     ) {
-        let first = cases[group[0].0].case;
+        let first = jobs[group[0].0].case;
         let mut paths: Vec<ApiPath> = Vec::new();
         for (_, plans) in group {
             for plan in plans {
@@ -489,7 +489,7 @@ impl Renderer {
             unitstate::unbind_unit_state(&self.gl, first, so);
             if pi == 0 {
                 let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
-                self.retire(cases, st, tex, group[0].0, sharing);
+                self.retire(jobs, st, tex, group[0].0, sharing);
             } else {
                 self.gl.delete_texture(tex);
             }

@@ -5,7 +5,7 @@
 //! of the written pixel. With implicit derivatives the coordinate is
 //! `u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy`, which is exactly `u_p`
 //! at the written pixel and varies by the gradients across its 2x2 quad. A batched program gets
-//! the same values as flat inputs, one instance (one 2x2 pixel quad) per case (see `glsl`).
+//! the same values as flat inputs, two triangles over one 2x2 pixel quad per case (see `glsl`).
 //!
 //! Every program can discard, but never does: a GLSL program discards where the slot index
 //! `u_base` (batched) or the pixel centre `u_c` (single case) is negative, an ARB program kills
@@ -155,8 +155,8 @@ pub const PARAM_ATTRIBS: [(u32, &str, i32, usize); 5] = [
     (3, "a_dy", 4, 12),
 ];
 
-/// Can this key draw many cases at once, each an instance drawing its own pixel quad with its
-/// values as per-instance attributes (instanced arrays: GLSL 3.30 core, GLSL ES 3.00)? The
+/// Can this key draw many cases at once, each its own pixel quad with its values as vertex
+/// attributes read as flat inputs (GLSL 3.30 core, GLSL ES 3.00)? The
 /// compatibility contexts' paths draw one pixel per case (`draw::run_compat_group`).
 pub fn batchable(key: &ShaderKey) -> bool {
     matches!(key.path, ApiPath::GlslCore | ApiPath::Es300) && key.form != LodForm::Constant
@@ -473,7 +473,7 @@ mod tests {
     }
 
     #[test]
-    fn batched_programs_draw_each_case_as_an_instance_quad_and_vary_p_across_it_when_implicit() {
+    fn batched_programs_draw_each_case_as_its_own_quad_and_vary_p_across_it_when_implicit() {
         let info = info(crate::names::ContextApi::Core, (4, 5), 450);
         let k = ShaderKey {
             path: ApiPath::GlslCore,
@@ -487,7 +487,7 @@ mod tests {
         };
         assert!(batchable(&k));
         let (vs, fs) = glsl(&info, &k, Some(256));
-        // Instance k draws the quad of slot u_base + k: 128 quads a row, NDC = pixel / 128 - 1.
+        // Case k draws the quad of slot u_base + k: 128 quads a row, NDC = pixel / 128 - 1.
         assert!(
             vs.contains("int s = u_base + int(a_x.y);\n  ivec2 corner = 2 * ivec2(s % 128, s / 128) + 2 * ivec2(a_pos);\n  gl_Position = vec4(vec2(corner) / 128.0 - 1.0, 0.0, 1.0);"),
             "{vs}"
