@@ -1,4 +1,4 @@
-//! Programs per [`ShaderKey`]: GLSL (the lookup as a fragment shader, see `shaders.rs`), ARB
+//! Programs per [`ShaderKey`]: GLSL (the lookup as a fragment shader, see `shaders/mod.rs`), ARB
 //! fragment programs, or nothing for fixed function; compiled on first use and cached in a
 //! [`ProgramCache`] (the renderer's) for the worker's life. Knows nothing of the renderer: it is
 //! handed the GL context, what the context offers and the result framebuffer's size.

@@ -250,6 +250,17 @@ mod tests {
         }
     }
 
+    /// What the loop writes for `input`, a JSON value per line.
+    fn answer_lines(worker: &mut impl Serve, input: Vec<u8>) -> Vec<serde_json::Value> {
+        let mut out = Vec::new();
+        serve(worker, std::io::Cursor::new(input), &mut out).unwrap();
+        String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect()
+    }
+
     /// Answers lookup k of its life with R = k on the `core` path.
     struct Numbered(f64);
 
@@ -296,13 +307,7 @@ mod tests {
         }
         input.extend_from_slice(Request::FLUSH_LINE);
         input.extend_from_slice(Request::BYE_LINE);
-        let mut out = Vec::new();
-        serve(&mut Numbered(0.0), std::io::Cursor::new(input), &mut out).unwrap();
-        let lines: Vec<serde_json::Value> = String::from_utf8(out)
-            .unwrap()
-            .lines()
-            .map(|l| serde_json::from_str(l).unwrap())
-            .collect();
+        let lines = answer_lines(&mut Numbered(0.0), input);
         assert_eq!(lines.len(), 3, "{lines:?}");
         // Lookups 0 (the case's own), 1 and 2 (its points) are the first case's; 3 the next's.
         let r = &lines[1]["results"][0];
@@ -342,13 +347,7 @@ mod tests {
         input.extend_from_slice(Request::FLUSH_LINE);
         input.extend_from_slice(Request::BYE_LINE);
         let mut worker = Echo(vec![]);
-        let mut out = Vec::new();
-        serve(&mut worker, std::io::Cursor::new(input), &mut out).unwrap();
-        let lines: Vec<serde_json::Value> = String::from_utf8(out)
-            .unwrap()
-            .lines()
-            .map(|l| serde_json::from_str(l).unwrap())
-            .collect();
+        let lines = answer_lines(&mut worker, input);
         // The hello, then one answer per case line, in order; the unknown line gets none.
         assert_eq!(lines.len(), 4, "{lines:?}");
         assert_eq!(lines[0]["type"], "hello");

@@ -1,0 +1,249 @@
+//! Tests of the shader and ARB program text.
+
+use super::*;
+
+/// A context of `api` with `version` and GLSL `glsl` (x100), no extensions.
+fn info(api: crate::names::ContextApi, version: (u32, u32), glsl: u32) -> GlInfo {
+    GlInfo {
+        api,
+        es: api == crate::names::ContextApi::Es3,
+        compat: api == crate::names::ContextApi::Compat,
+        version,
+        glsl,
+        renderer: String::new(),
+        version_string: String::new(),
+        extensions: Default::default(),
+        form: Default::default(),
+    }
+}
+
+/// A plain 2D shadow lookup on `path` with `form` (no projection, offset, depth mode or gather).
+fn shadow_2d(path: ApiPath, form: LodForm) -> ShaderKey {
+    ShaderKey {
+        path,
+        target: Target::T2d,
+        kind: SamplerKind::Shadow,
+        form,
+        proj: false,
+        mode: None,
+        offset: [0, 0],
+        gather: None,
+    }
+}
+
+#[test]
+fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
+    let k = shadow_2d(ApiPath::GlslCore, LodForm::Lod);
+    assert_eq!(modern_call(&k), "textureLod(u_tex, p.xyz, u_x)");
+    let k = ShaderKey {
+        target: Target::CubeArray,
+        form: LodForm::Implicit(false),
+        ..k
+    };
+    assert_eq!(modern_call(&k), "texture(u_tex, p, u_x)");
+    let k = ShaderKey {
+        target: Target::Rect,
+        form: LodForm::Grad,
+        proj: true,
+        ..k
+    };
+    assert_eq!(
+        modern_call(&k),
+        "textureProjGrad(u_tex, p, u_dx.xy, u_dy.xy)"
+    );
+    // *Offset forms: the offset after P / LOD / gradients, before the bias.
+    let k = ShaderKey {
+        target: Target::T2d,
+        offset: [-8, 7],
+        ..k
+    };
+    assert_eq!(
+        modern_call(&k),
+        "textureProjGradOffset(u_tex, p, u_dx.xy, u_dy.xy, ivec2(-8, 7))"
+    );
+    let k = ShaderKey {
+        form: LodForm::Lod,
+        proj: false,
+        ..k
+    };
+    assert_eq!(
+        modern_call(&k),
+        "textureLodOffset(u_tex, p.xyz, u_x, ivec2(-8, 7))"
+    );
+    let k = ShaderKey {
+        form: LodForm::Implicit(true),
+        ..k
+    };
+    assert_eq!(
+        modern_call(&k),
+        "textureOffset(u_tex, p.xyz, ivec2(-8, 7), u_x)"
+    );
+}
+
+#[test]
+fn shadow_lod_overloads_enable_the_extension() {
+    let k = ShaderKey {
+        path: ApiPath::Es300,
+        target: Target::CubeArray,
+        kind: SamplerKind::Shadow,
+        form: LodForm::Lod,
+        proj: false,
+        mode: None,
+        offset: [0, 0],
+        gather: None,
+    };
+    assert_eq!(modern_call(&k), "textureLod(u_tex, p, u_x, u_dx.x)");
+    let info = info(crate::names::ContextApi::Es3, (3, 2), 320);
+    let (_, fs) = glsl(&info, &k, None);
+    assert!(
+        fs.starts_with("#version 320 es\n#extension GL_EXT_texture_shadow_lod : require\n"),
+        "{fs}"
+    );
+    let k = ShaderKey {
+        target: Target::T2d,
+        ..k
+    };
+    assert!(!glsl(&info, &k, None).1.contains("#extension"));
+}
+
+#[test]
+fn gather_calls_split_p_and_ref_z() {
+    let k = ShaderKey {
+        path: ApiPath::GlslCore,
+        target: Target::T2d,
+        kind: SamplerKind::Shadow,
+        form: LodForm::Gather(false),
+        proj: false,
+        mode: None,
+        offset: [0, 0],
+        gather: Some(GatherCall::Single),
+    };
+    assert_eq!(modern_call(&k), "textureGather(u_tex, p.xy, p.z)");
+    let k = ShaderKey {
+        offset: [-8, 7],
+        ..k
+    };
+    assert_eq!(
+        modern_call(&k),
+        "textureGatherOffset(u_tex, p.xy, p.z, ivec2(-8, 7))"
+    );
+    let k = ShaderKey {
+        target: Target::T2dArray,
+        offset: [0, 0],
+        gather: Some(GatherCall::Offsets([[0, 1], [1, 1], [1, 0], [0, 0]])),
+        ..k
+    };
+    assert_eq!(
+        modern_call(&k),
+        "textureGatherOffsets(u_tex, p.xyz, p.w, ivec2[4](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0)))"
+    );
+    let k = ShaderKey {
+        target: Target::CubeArray,
+        gather: Some(GatherCall::Single),
+        ..k
+    };
+    assert_eq!(modern_call(&k), "textureGather(u_tex, p, u_x)");
+}
+
+#[test]
+fn batched_programs_draw_each_case_as_its_own_quad_and_vary_p_across_it_when_implicit() {
+    let info = info(crate::names::ContextApi::Core, (4, 5), 450);
+    let k = shadow_2d(ApiPath::GlslCore, LodForm::Implicit(false));
+    assert!(batchable(&k));
+    let (vs, fs) = glsl(&info, &k, Some(256));
+    // Case k draws the quad of slot u_base + k: 128 quads a row, NDC = pixel / 128 - 1.
+    assert!(
+        vs.contains("int s = u_base + int(a_x.y);\n  ivec2 corner = 2 * ivec2(s % 128, s / 128) + 2 * ivec2(a_pos);\n  gl_Position = vec4(vec2(corner) / 128.0 - 1.0, 0.0, 1.0);"),
+        "{vs}"
+    );
+    for (_, name, size, _) in PARAM_ATTRIBS {
+        let ty = format!("vec{size}");
+        assert!(vs.contains(&format!("in {ty} {name};")), "{vs}");
+    }
+    assert!(
+        fs.contains("flat in vec4 v_p;") && fs.contains("vec4 p = v_p;"),
+        "{fs}"
+    );
+    assert!(fs.contains("ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  vec2 c = vec2(q * 2) + 0.5;\n  p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;"), "{fs}");
+    assert!(fs.contains("if (u_base < 0) discard;"), "{fs}");
+    // An explicit LOD reads P as stored: no variation across the quad.
+    let lod = ShaderKey {
+        form: LodForm::Lod,
+        ..k
+    };
+    assert!(batchable(&lod));
+    assert!(!glsl(&info, &lod, Some(256)).1.contains("vec2 c ="));
+    // The compatibility paths and ES 1.00 draw one pixel per case.
+    assert!(!batchable(&ShaderKey {
+        path: ApiPath::Glsl120,
+        ..k
+    }));
+    assert!(!batchable(&ShaderKey {
+        path: ApiPath::Glsl130,
+        ..k
+    }));
+    assert!(!batchable(&ShaderKey {
+        path: ApiPath::Es100Ext,
+        ..k
+    }));
+}
+
+#[test]
+fn single_case_programs_can_discard_but_only_where_the_pixel_centre_is_negative() {
+    let k = shadow_2d(ApiPath::Glsl120, LodForm::Implicit(false));
+    let compat = info(crate::names::ContextApi::Compat, (4, 5), 450);
+    for key in [
+        k,
+        ShaderKey {
+            form: LodForm::Lod,
+            path: ApiPath::Glsl130,
+            ..k
+        },
+    ] {
+        let (_, fs) = glsl(&compat, &key, None);
+        // Before P is formed, on a uniform (control flow stays uniform).
+        let at = fs.find("if (u_c.x < 0.0) discard;").expect(&fs);
+        assert!(at < fs.find("vec4 p =").expect(&fs), "{fs}");
+        assert!(fs.contains("uniform vec2 u_c;"), "{fs}");
+    }
+    let arb = arbfp(&ShaderKey {
+        path: ApiPath::ArbFp,
+        ..k
+    });
+    assert!(
+        arb.contains("PARAM c = program.local[3];") && arb.contains("KIL c;"),
+        "{arb}"
+    );
+}
+
+#[test]
+fn legacy_calls_use_the_glsl_120_names() {
+    let k = ShaderKey {
+        path: ApiPath::Glsl120,
+        target: Target::Rect,
+        kind: SamplerKind::Shadow,
+        form: LodForm::Implicit(false),
+        proj: true,
+        mode: None,
+        offset: [0, 0],
+        gather: None,
+    };
+    assert_eq!(legacy_call(&k), "shadow2DRectProj(u_tex, p)");
+    let k = ShaderKey {
+        path: ApiPath::Es100Ext,
+        target: Target::T2d,
+        ..k
+    };
+    assert_eq!(legacy_call(&k), "shadow2DProjEXT(u_tex, p)");
+}
+
+#[test]
+fn arb_program_uses_the_shadow_target_and_txb_for_bias() {
+    let k = shadow_2d(ApiPath::ArbFp, LodForm::Implicit(true));
+    let s = arbfp(&k);
+    assert!(
+        s.contains("OPTION ARB_fragment_program_shadow;")
+            && s.contains("TXB result.color, q, texture[0], SHADOW2D;"),
+        "{s}"
+    );
+}
