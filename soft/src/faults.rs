@@ -146,6 +146,18 @@ faults! {
     SeamlessIgnored = "seamless-ignored",
     /// A bound sampler object's state ignored in favour of the texture's own parameters.
     SamplerObjectIgnored = "sampler-object-ignored",
+    /// Shadow gather returns the unswizzled comparisons: TEXTURE_SWIZZLE_R not applied to each
+    /// texel's (Rt, 0, 0, 1) before its R component is gathered (GL 4.6 §8.14.2) — a unit that
+    /// routes textureGather around the swizzle stage, or follows only GLSL 4.60 §8.9.4's wording.
+    GatherIgnoresSwizzle = "gather-ignores-swizzle",
+    /// The swizzle ignored on the fixed-function / GLSL 1.20 paths (compatibility): the
+    /// DEPTH_TEXTURE_MODE vec4 returned as is, as by a driver that swizzles only in its GLSL
+    /// 1.30+ sampler code.
+    CompatSwizzleDropped = "compat-swizzle-dropped",
+    /// The sampler object's rectangle-illegal state (wrap S/T REPEAT, MIRRORED_REPEAT,
+    /// MIRROR_CLAMP_TO_EDGE or a mipmap min filter) used as if legal instead of making the
+    /// texture incomplete (GL 4.6 §8.2): the unit samples a rectangle texture with REPEAT.
+    SamplerObjectRectComplete = "sampler-object-rect-complete",
     // --- storage ---
     /// Unorm conversion c / 2^b instead of c / (2^b - 1).
     UnormDividedByPowerOfTwo = "unorm-divided-by-power-of-two",

@@ -176,8 +176,8 @@ impl SoftUnit {
         case: &Case,
         tex: &PreparedTexture,
     ) -> Result<SamplerState, SoftError> {
-        let s = unitstate::effective(self.spec, case, self.faults)?;
-        SamplerState::new(self.spec, &s, tex, self.faults)
+        let (s, source) = unitstate::effective(self.spec, case, self.faults)?;
+        SamplerState::resolve(self.spec, &s, source, tex, self.faults)
     }
 
     /// The lookup coordinates of `case` as f32, after the projective divide (s, t, (r) and Dref
@@ -252,12 +252,14 @@ impl SoftUnit {
             });
         }
         let s = &case.sampler;
-        if s.swizzle.is_some()
-            && !matches!(api, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300)
-        {
+        // The swizzle (gl46 / gles32 state) applies on every GL 4.6 path that reads a texture
+        // source colour (`unitstate::swizzle`), fixed function and GLSL 1.20 included (GL 4.6
+        // compatibility §16.1 + §15.2.1). ARB_fragment_program is refused: how its TEX result
+        // meets TEXTURE_SWIZZLE_* is for ARB_fragment_program's own text, outside the spec pack.
+        if s.swizzle.is_some() && api == ApiPath::ArbFp {
             return Err(SoftError::Undefined {
                 spec: self.spec,
-                what: "the texture swizzle on a path other than GLSL 1.30+ / ES 3.00",
+                what: "the texture swizzle on the ARB_fragment_program path",
             });
         }
         if api == ApiPath::GlslCore && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::Clamp) {
@@ -397,8 +399,8 @@ impl SoftUnit {
         shadowcheck_model::validate::validate(case)
             .map_err(|e| SoftError::Invalid(e.to_string()))?;
         tex.prepare_into(&case.texture, self.faults)?;
-        let s = unitstate::effective(self.spec, case, self.faults)?;
-        let st = SamplerState::new(self.spec, &s, tex, self.faults)?;
+        let (s, source) = unitstate::effective(self.spec, case, self.faults)?;
+        let st = SamplerState::resolve(self.spec, &s, source, tex, self.faults)?;
         let coords = self.coords(case.texture.target, &case.lookup)?;
         Ok((st, coords))
     }
@@ -420,7 +422,12 @@ impl SoftUnit {
                 // ... for all four source texels" (GL 4.6 §8.14.2): R of each is 0.
                 return Ok([0.0; 4]);
             }
-            return Ok(tex.gather(st, c, g.offsets));
+            let results = tex.gather(st, c, g.offsets);
+            return Ok(unitstate::gather_swizzle(
+                &case.sampler,
+                results,
+                self.faults,
+            ));
         }
         let lay = layout::resolve(
             self.spec,

@@ -8,10 +8,9 @@ use crate::compare::{self, ClampRule, CompareOp};
 use crate::faults::{Fault, Faults};
 use crate::lod::LodParams;
 use crate::storage::{clamp01, PreparedTexture};
+use crate::unitstate::StateSource;
 use crate::SoftError;
-use shadowcheck_model::{
-    CompareMode, DepthStencilMode, Filter, Format, Sampler, Spec, Target, Wrap,
-};
+use shadowcheck_model::{CompareMode, DepthStencilMode, Filter, Format, Sampler, Spec, Wrap};
 
 /// What a fetched texel turns into before filtering.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -59,18 +58,15 @@ fn is_es(spec: Spec) -> bool {
     matches!(spec, Spec::Es2Ext | Spec::Gles32)
 }
 
-/// Wrap modes the spec accepts (GL 4.6 Table 8.17, ES 3.2 Table 8.19, ES 2.0 Table 3.10); for
-/// rectangle textures only the clamping modes exist.
-fn check_wrap(spec: Spec, target: Target, w: Wrap) -> Result<(), SoftError> {
+/// Wrap modes the spec accepts (GL 4.6 Table 8.17, ES 3.2 Table 8.19, ES 2.0 Table 3.10). What a
+/// rectangle texture rejects besides is [`crate::unitstate::rect_rejects`].
+fn check_wrap(spec: Spec, w: Wrap) -> Result<(), SoftError> {
     let ok = match spec {
         Spec::Es2Ext => matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat),
         Spec::Gles32 => !matches!(w, Wrap::MirrorClampToEdge | Wrap::Clamp),
         _ => true,
     };
     if !ok {
-        return Err(SoftError::Wrap { spec, wrap: w });
-    }
-    if target.is_rect() && !matches!(w, Wrap::ClampToEdge | Wrap::ClampToBorder | Wrap::Clamp) {
         return Err(SoftError::Wrap { spec, wrap: w });
     }
     Ok(())
@@ -98,36 +94,65 @@ pub fn is_nearest_only(s: &Sampler) -> bool {
 }
 
 impl SamplerState {
-    /// Resolves `s` for `tex` under `spec`. Errors name state the spec does not define.
+    /// Resolves `s` (the texture's own parameters) for `tex` under `spec`. Errors name state the
+    /// spec does not define.
     pub fn new(
         spec: Spec,
         s: &Sampler,
         tex: &PreparedTexture,
         faults: Faults,
     ) -> Result<SamplerState, SoftError> {
+        SamplerState::resolve(spec, s, StateSource::Texture, tex, faults)
+    }
+
+    /// Resolves `s` for `tex` under `spec`, `s` coming from `source` (the texture's parameters or
+    /// a bound sampler object, see [`crate::unitstate::effective`]).
+    pub fn resolve(
+        spec: Spec,
+        s: &Sampler,
+        source: StateSource,
+        tex: &PreparedTexture,
+        faults: Faults,
+    ) -> Result<SamplerState, SoftError> {
         let format = tex.format();
         let target = tex.target();
         check_format(spec, format)?;
-        check_wrap(spec, target, s.wrap_s)?;
-        check_wrap(spec, target, s.wrap_t)?;
-        // Only s and t address a rectangle; wrap_r is still checked against the spec's enums.
-        check_wrap(
-            spec,
-            if target.is_rect() {
-                Target::T2d
-            } else {
-                target
-            },
-            s.wrap_r,
-        )?;
+        // Only s and t address a rectangle; wrap_r is checked against the spec's enums only.
+        check_wrap(spec, s.wrap_s)?;
+        check_wrap(spec, s.wrap_t)?;
+        check_wrap(spec, s.wrap_r)?;
         if !matches!(s.mag_filter, Filter::Nearest | Filter::Linear) {
             return Err(undefined(spec, "a mipmap TEXTURE_MAG_FILTER"));
         }
-        if target.is_rect() && s.min_filter.is_mipmap() {
-            return Err(undefined(
-                spec,
-                "mipmap minification on rectangle textures (§8.14.3)",
-            ));
+        // State a rectangle texture rejects (GL 4.6 §8.10, `rect_rejects`). Set on the texture it
+        // is an INVALID_ENUM error: the case cannot be set up (refused). Held by a bound sampler
+        // object it is no error but, GL 4.6 §8.2: "If state is present in a sampler object bound
+        // to a texture unit that would have been rejected by a call to TexParameter* for the
+        // texture bound to that unit, the behavior of the implementation is as if the texture
+        // were incomplete. For example, if TEXTURE_WRAP_S or TEXTURE_WRAP_T is set to REPEAT,
+        // MIRRORED_REPEAT, or MIRROR_CLAMP_TO_EDGE on the sampler object bound to a texture unit
+        // and the texture bound to that unit is a rectangle texture, the texture will be
+        // considered incomplete."
+        let rect_rejected = if target.is_rect() {
+            crate::unitstate::rect_rejects(s)
+        } else {
+            None
+        };
+        let mut sampler_object_incomplete = false;
+        match (rect_rejected, source) {
+            (None, _) => {}
+            (Some(Some(wrap)), StateSource::Texture) => {
+                return Err(SoftError::Wrap { spec, wrap });
+            }
+            (Some(None), StateSource::Texture) => {
+                return Err(undefined(
+                    spec,
+                    "a mipmap TEXTURE_MIN_FILTER on a rectangle texture (§8.10)",
+                ));
+            }
+            (Some(_), StateSource::SamplerObject) => {
+                sampler_object_incomplete = !faults.has(Fault::SamplerObjectRectComplete);
+            }
         }
         if is_es(spec) && s.lod_bias != 0.0 {
             return Err(undefined(spec, "TEXTURE_LOD_BIAS (not in OpenGL ES)"));
@@ -234,6 +259,9 @@ impl SamplerState {
             // ES 3.2 §8.17: sized depth format, TEXTURE_COMPARE_MODE NONE, non-NEAREST filtering.
             complete = false;
         }
+        if sampler_object_incomplete {
+            complete = false;
+        }
         if faults.has(Fault::IncompleteNotZero) {
             complete = true;
         }
@@ -268,7 +296,7 @@ impl SamplerState {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use shadowcheck_model::{CompareFunc, Level, Texels, Texture};
+    use shadowcheck_model::{CompareFunc, Level, Target, Texels, Texture};
 
     fn tex(format: Format, sizes: &[(u32, u32)]) -> PreparedTexture {
         let levels = sizes

@@ -376,6 +376,41 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
             c.sampler.sampler_object = Some(o);
             c
         }
+        Fault::GatherIgnoresSwizzle => {
+            // `gather4` compares to (1, 1, 0, 0); TEXTURE_SWIZZLE_R = ALPHA takes the post-swizzle
+            // R of each texel's (Rt, 0, 0, 1), i.e. 1 for every texel (GL 4.6 §8.14.2): (1, 1, 1, 1).
+            // The faulty unit returns the unswizzled (1, 1, 0, 0).
+            let mut c = gather4();
+            c.sampler.swizzle = Some([
+                Swizzle::Alpha,
+                Swizzle::Green,
+                Swizzle::Blue,
+                Swizzle::Alpha,
+            ]);
+            c
+        }
+        Fault::CompatSwizzleDropped => {
+            // Fixed function, DEPTH_TEXTURE_MODE ALPHA, the texel passes: Table 16.1 gives
+            // (0, 0, 0, 1); swizzle (ALPHA, ONE, RED, ZERO) makes it (1, 1, 0, 0) (§15.2.1). The
+            // faulty unit returns (0, 0, 0, 1).
+            let mut c = with_api(gl(vec![65535], 1, C::Lequal), ApiPath::FixedFunction);
+            c.sampler.depth_texture_mode = Some(DepthTextureMode::Alpha);
+            c.sampler.swizzle = Some([Swizzle::Alpha, Swizzle::One, Swizzle::Red, Swizzle::Zero]);
+            c
+        }
+        Fault::SamplerObjectRectComplete => {
+            // A 2x1 rectangle [Dt 1, Dt 0] (texture wrap CLAMP_TO_EDGE) with a sampler object
+            // whose wrap S is REPEAT, looked up at s = 2.5: the texture is incomplete (GL 4.6
+            // §8.2), core returns 0 → (0, 0, 0, 1). Sampling with REPEAT reads texel 2.5 mod 2 → 0
+            // (Dt 1 passes LEQUAL 0.5) → (1, 0, 0, 1).
+            let mut c = gl(vec![65535, 0], 2, C::Lequal);
+            c.texture.target = Target::Rect;
+            let mut o = SamplerObject::from_sampler(&c.sampler);
+            o.wrap_s = Wrap::Repeat;
+            c.sampler.sampler_object = Some(o);
+            c.lookup.coord[0] = 2.5;
+            c
+        }
         Fault::UnormDividedByPowerOfTwo => {
             let mut c = gl(vec![65535], 1, C::Lequal);
             c.lookup.dref = 1.0;
@@ -436,5 +471,9 @@ mod tests {
         assert_eq!(r(Fault::SwizzleBeforeCompare)[0], 0.0);
         assert!((r(Fault::SeamlessIgnored)[0] - 0.4).abs() < 1e-6);
         assert_eq!(r(Fault::SamplerObjectIgnored)[0], 0.0);
+        // Gather swizzle, compatibility swizzle, sampler object on a rectangle (§8.14.2, §16.1, §8.2).
+        assert_eq!(r(Fault::GatherIgnoresSwizzle), [1.0; 4]);
+        assert_eq!(r(Fault::CompatSwizzleDropped), [1.0, 1.0, 0.0, 0.0]);
+        assert_eq!(r(Fault::SamplerObjectRectComplete), [0.0, 0.0, 0.0, 1.0]);
     }
 }

@@ -107,6 +107,15 @@ pub fn about(f: Fault) -> &'static str {
         F::SamplerObjectIgnored => {
             "a bound sampler object's compare / filter / wrap / LOD state ignored in favour of the texture's"
         }
+        F::GatherIgnoresSwizzle => {
+            "shadow gather returns the unswizzled comparisons, not the post-swizzle R of each texel's (Rt,0,0,1) (GL 4.6 §8.14.2)"
+        }
+        F::CompatSwizzleDropped => {
+            "the swizzle ignored on the fixed-function / GLSL 1.20 paths (the Table 16.1 vec4 returned unswizzled)"
+        }
+        F::SamplerObjectRectComplete => {
+            "a sampler object's rectangle-illegal state (REPEAT / MIRRORED_REPEAT / MIRROR_CLAMP_TO_EDGE, mipmap min filter) used as if legal instead of making the texture incomplete (GL 4.6 §8.2)"
+        }
         #[allow(unreachable_patterns)]
         _ => "",
     }
