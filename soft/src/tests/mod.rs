@@ -6,6 +6,7 @@ use shadowcheck_model::*;
 
 mod addressing;
 mod comparison;
+mod unit_state;
 
 /// A 2D case on `spec` with one level of `w`×`h` unorm texels.
 pub(super) fn case2d(
