@@ -343,7 +343,8 @@ fn entries_of(rs: &[&TestResult], min_units: usize) -> Vec<Entry> {
                     .len();
                 (n, a, members)
             })
-            // The first of equals: max_by_key keeps the last, so compare reversed positions.
+            // Among equals the earliest anchor wins (max_by keeps the last maximum, hence the
+            // reversed comparison of positions), so the result does not depend on ties.
             .max_by(|x, y| x.0.cmp(&y.0).then(y.1.cmp(&x.1)));
         let Some((n, anchor, members)) = best else {
             break;
@@ -527,6 +528,15 @@ fn expected_text(e: &Option<ExpectedSummary>) -> String {
     )
 }
 
+/// The first citation and how many follow (the class's section lists them all).
+fn citations_brief(c: &[String]) -> String {
+    match c {
+        [] => "(none found)".into(),
+        [one] => one.clone(),
+        [first, rest @ ..] => format!("{first} (+{} more)", rest.len()),
+    }
+}
+
 /// Markdown table cells may not hold `|` or line breaks.
 fn cell(s: &str) -> String {
     s.replace('|', "\\|").replace('\n', " ")
@@ -596,7 +606,7 @@ pub fn markdown(q: &Queue) -> String {
             i + 1,
             cell(&c.family),
             c.tests.len(),
-            cell(&c.citations.join("; "))
+            cell(&citations_brief(&c.citations))
         ));
     }
     for (i, c) in q.classes.iter().enumerate() {
@@ -634,7 +644,11 @@ pub fn markdown(q: &Queue) -> String {
                         .iter()
                         .map(|b| format!("`{}` ({})", cell(&b.backend), b.outcome))
                         .collect();
-                    format!("{}: {}", cell(&u.unit), bs.join(", "))
+                    match u.backends.as_slice() {
+                        // A unit of its own: the backend names it.
+                        [b] if b.backend == u.unit => bs.join(", "),
+                        _ => format!("{}: {}", cell(&u.unit), bs.join(", ")),
+                    }
                 })
                 .collect();
             line(format!(
