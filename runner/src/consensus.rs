@@ -12,7 +12,8 @@
 //! - two answers agree when every compared channel differs by at most [`TOLERANCE`] (2^-16, the
 //!   `quality` profile's reference precision; NaN agrees with NaN, an infinity with itself).
 //!   Channels the expectation's layout marks unused (`-`) are not compared; when the records give
-//!   no layout all four are;
+//!   no layout all four are. Closeness is not transitive: a group is every answer within 2^-16 of
+//!   one returned answer (the one with the widest support), so two members may differ by 2^-15;
 //! - a unit supports an answer when any of its backends returned it, so a unit counts once however
 //!   many backends it has;
 //! - a test is listed when some answer is supported by at least `min_units` units and at least one
