@@ -8,6 +8,7 @@
 pub mod backend;
 pub mod baseline;
 pub mod bench;
+pub mod consensus;
 pub mod events;
 pub mod interrupt;
 pub mod mutants;

@@ -51,6 +51,15 @@ enum Command {
     /// here (gcc and the GL dev packages needed), and writes REPORT.md only for a Fail. Exit 0
     /// written, 1 the test is not a Fail here (no report; --allow-pass: 0), 96 bad input or setup.
     Repro(cmd::repro::Args),
+    /// The oracle's review queue: tests where at least three independent texture units return the
+    /// same answer and the oracle rejects it (Fail).
+    ///
+    /// Reads RUN_DIR/results.jsonl of each run (several backends per run are fine); backends that
+    /// share texture-unit code (llvmpipe, lavapipe under zink; SwiftShader's GLES, its Vulkan
+    /// under zink, ANGLE on it) count as one unit. Only results with an observed value (Fail,
+    /// Warn) are compared. Markdown on stdout (or JSON with --json); exit 0 when it ran, queue
+    /// empty or not; 96 on bad input.
+    Consensus(cmd::consensus::Args),
     /// (internal) A GL worker process speaking runner/PROTOCOL.md on stdin/stdout.
     #[command(hide = true)]
     GlWorker(cmd::gl_worker::Args),
@@ -83,6 +92,7 @@ fn main() -> std::process::ExitCode {
         Command::Report(a) => cmd::report::main(a),
         Command::Summarize(a) => cmd::summarize::main(a),
         Command::Repro(a) => cmd::repro::main(a),
+        Command::Consensus(a) => cmd::consensus::main(a),
         Command::GlWorker(a) => cmd::gl_worker::main(a),
         Command::WebglWorker(a) => cmd::webgl_worker::main(a),
         Command::MockWorker(a) => cmd::mock_worker::main(a),

@@ -49,7 +49,7 @@ fn help_and_version_exit_zero() {
 
 #[test]
 fn markdown_outputs_have_their_own_flag() {
-    for sub in ["bench", "mutants"] {
+    for sub in ["bench", "mutants", "consensus"] {
         let o = bin().args([sub, "--help"]).output().unwrap();
         let help = String::from_utf8_lossy(&o.stdout);
         assert!(help.contains("--markdown <FILE>"), "{sub} --help:\n{help}");
@@ -155,6 +155,7 @@ fn every_flag_has_help() {
         "bench",
         "mutants",
         "explain",
+        "consensus",
     ] {
         let o = bin().args([sub, "--help"]).output().unwrap();
         let help = String::from_utf8_lossy(&o.stdout);
@@ -189,4 +190,14 @@ fn a_missing_list_file_is_named_with_its_os_error_once() {
     assert_eq!(c, Some(96), "{err}");
     assert!(err.contains("no-such-flakes.txt"), "{err}");
     assert_eq!(err.matches("No such file or directory").count(), 1, "{err}");
+}
+
+#[test]
+fn consensus_of_a_missing_run_directory_is_a_setup_error() {
+    let dir = common::tmpdir("consensus-missing");
+    let missing = dir.join("no-such-run");
+    let (c, err) = code(&["consensus", missing.to_str().unwrap()]);
+    assert_eq!(c, Some(96), "{err}");
+    assert!(err.contains("no-such-run"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
 }

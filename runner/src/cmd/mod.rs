@@ -1,5 +1,6 @@
 //! One module per subcommand. Each has `Args` (clap) and `main(Args) -> anyhow::Result<ExitCode>`.
 pub mod bench;
+pub mod consensus;
 pub mod explain;
 pub mod gen;
 pub mod gl_worker;

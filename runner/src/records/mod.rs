@@ -9,8 +9,8 @@
 //!   one [`Passed`] line ([`passed`]: the compact form, unless `--full-report`);
 //! - [`Counts`] and [`Summary`]: the totals of a run and the exit code they give ([`exit`], the
 //!   documented exit codes, runner/README.md#exit-codes);
-//! - [`reader`]: the one reader of `results.jsonl` (for `--resume`, `merge`, `report` and
-//!   `summarize`): a truncated last line is dropped, the last record of a (backend, test) wins,
+//! - [`reader`]: the one reader of `results.jsonl` (for `--resume`, `merge`, `report`,
+//!   `summarize` and `consensus`): a truncated last line is dropped, the last record of a (backend, test) wins,
 //!   load errors are de-duplicated.
 //!
 //! Nothing here runs a test: the runner core ([`crate::run`]) makes these records and sends them

@@ -1,5 +1,5 @@
 //! The one reader of `results.jsonl`, shared by `run --resume` (skip what is done), `merge`,
-//! `report` and `summarize`.
+//! `report`, `summarize` and `consensus`.
 //!
 //! The rules:
 //! - a run killed mid-write may leave a truncated last line (no newline at its end): it is dropped
