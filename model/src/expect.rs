@@ -77,6 +77,11 @@ pub struct Expectation {
     pub accept: KeyMap<Profile, Acceptance>,
     /// How r appears in the observed RGBA, per API path the case applies to.
     pub layout: KeyMap<ApiPath, [Channel; 4]>,
+    /// Where the texts give a path's result two readings that place r differently (e.g. the
+    /// swizzled and the unswizzled shadow gather), the other readings, each named: an observation
+    /// that any of them accepts is accepted as `layout` would accept it. Empty for most cases.
+    #[serde(default, skip_serializing_if = "KeyMap::is_empty")]
+    pub other_layouts: KeyMap<ApiPath, Vec<OtherLayout>>,
     /// Shadow textureGather: the acceptable values of the four result components (τi0j1, τi1j1,
     /// τi1j0, τi0j0) per profile, read by the layout's `g0`..`g3` channels; `accept` and
     /// `spec_value` then describe component 0. `None` for every other lookup.
@@ -87,6 +92,14 @@ pub struct Expectation {
     pub implementation_defined: Option<String>,
     /// The sections the result rests on, e.g. "GL 4.6 §8.23.1 Table 8.23".
     pub citations: Vec<String>,
+}
+
+/// Another reading of where r appears on one API path ([`Expectation::other_layouts`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct OtherLayout {
+    /// The name of the reading (a contradiction key of the oracle, shown by `shadowcheck explain`).
+    pub reading: String,
+    pub layout: [Channel; 4],
 }
 
 /// The outcome of checking one observation against an expectation: the strictest profile (in
@@ -106,7 +119,28 @@ impl Expectation {
     /// Channels marked `Unused` are ignored; `Zero`/`One` must be exact.
     /// Returns `None` when the expectation has no layout for that API path.
     pub fn accepts(&self, profile: Profile, api: ApiPath, rgba: [f64; 4]) -> Option<bool> {
-        self.accepts_through(profile, self.layout.get(&api)?, rgba)
+        let main = self.accepts_through(profile, self.layout.get(&api)?, rgba)?;
+        Some(main || self.other_accepts(profile, api, rgba))
+    }
+
+    /// The layouts of `api`: the spec's reading first, then the others ([`Expectation::other_layouts`]).
+    pub fn layouts(&self, api: ApiPath) -> impl Iterator<Item = &[Channel; 4]> + '_ {
+        self.layout.get(&api).into_iter().chain(
+            self.other_layouts
+                .get(&api)
+                .into_iter()
+                .flatten()
+                .map(|o| &o.layout),
+        )
+    }
+
+    /// Does one of the other readings of `api`'s layout accept `rgba` under `profile`?
+    fn other_accepts(&self, profile: Profile, api: ApiPath, rgba: [f64; 4]) -> bool {
+        self.other_layouts
+            .get(&api)
+            .into_iter()
+            .flatten()
+            .any(|o| self.accepts_through(profile, &o.layout, rgba) == Some(true))
     }
 
     /// [`Expectation::accepts`] with the layout already looked up: r's set is fetched once, not
@@ -142,12 +176,13 @@ impl Expectation {
         channel_ok(ch, self.channel_acceptance(profile, ch), v)
     }
 
-    /// The strictest profile accepting one observation, trying the profiles strictest first.
+    /// The strictest profile accepting one observation, trying the profiles strictest first (a
+    /// profile accepts when the path's layout or one of its other readings does).
     /// `None` when the layout or a profile tried is missing.
     pub fn judge(&self, api: ApiPath, rgba: [f64; 4]) -> Option<Judgement> {
         let layout = self.layout.get(&api)?;
         for &p in Profile::ALL {
-            if self.accepts_through(p, layout, rgba)? {
+            if self.accepts_through(p, layout, rgba)? || self.other_accepts(p, api, rgba) {
                 return Some(if p == Profile::strictest() {
                     Judgement::Strictest
                 } else {
@@ -236,6 +271,7 @@ mod tests {
             spec_value: Some(1.0),
             accept: set(1.0),
             layout: [(ApiPath::GlslCore, Channel::GATHER)].into_iter().collect(),
+            other_layouts: Default::default(),
             gather: Some([set(1.0), set(1.0), set(0.0), set(0.0)]),
             implementation_defined: None,
             citations: vec![],

@@ -114,6 +114,7 @@ impl Case {
                 spec_value: pe.spec_value,
                 accept: pe.accept.clone(),
                 layout: e.layout.clone(),
+                other_layouts: e.other_layouts.clone(),
                 gather: None,
                 implementation_defined: pe.implementation_defined.clone(),
                 citations: e.citations.clone(),

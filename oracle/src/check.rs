@@ -6,7 +6,7 @@
 use crate::rules::Rules;
 use crate::state::{self, Ctx, GlErrorKind, Value};
 use crate::OracleError;
-use shadowcheck_model::{ApiPath, Case, CompareMode, Filter, Spec, Target, Wrap};
+use shadowcheck_model::{ApiPath, Case, CompareMode, Filter, Sampler, Spec, Target, Wrap};
 
 /// The context an API path runs in.
 pub fn ctx_of(api: ApiPath) -> Ctx {
@@ -55,11 +55,19 @@ fn not_applicable(case: &Case, rules: &Rules, why: String) -> OracleError {
     }
 }
 
-/// API paths whose result the texture swizzle is modelled on: the GLSL 1.30+ and GLSL ES 3.00
-/// shader lookups of GL 4.6 §15.2.1 / §11.1.3.5 (ES 3.2 §14.2.1).
-pub const SWIZZLE_PATHS: &[ApiPath] = &[ApiPath::Glsl130, ApiPath::GlslCore, ApiPath::Es300];
+/// API paths whose result the texture swizzle is modelled on: the GLSL 1.20, GLSL 1.30+ and GLSL
+/// ES 3.00 shader lookups of GL 4.6 §15.2.1 / §11.1.3.5 (ES 3.2 §14.2.1), and fixed function
+/// (compatibility §16.1: the source colour of Table 16.1, then the swizzle). Not ARB fragment
+/// programs: ARB_fragment_program's own texture-access text is outside the spec pack.
+pub const SWIZZLE_PATHS: &[ApiPath] = &[
+    ApiPath::FixedFunction,
+    ApiPath::Glsl120,
+    ApiPath::Glsl130,
+    ApiPath::GlslCore,
+    ApiPath::Es300,
+];
 
-/// Whether the state that issue 16 adds (swizzle, seamless enable, sampler object) exists under
+/// Whether the unit state of GL 3.3 / ES 3.0 (swizzle, seamless enable, sampler object) exists under
 /// the spec and on the case's paths: a case setting state its spec does not have is not applicable.
 fn check_lookup_state(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     let s = &case.sampler;
@@ -75,15 +83,7 @@ fn check_lookup_state(case: &Case, rules: &Rules) -> Result<(), OracleError> {
             return Err(not_applicable(
                 case,
                 rules,
-                format!("the swizzle is modelled on GLSL 1.30+ / ES 3.00 shader lookups (GL 4.6 §15.2.1), not on `{api}`"),
-            ));
-        }
-        let shadow = s.in_effect().compare_mode != CompareMode::None;
-        if shadow && case.api.contains(&ApiPath::Glsl130) {
-            return Err(not_applicable(
-                case,
-                rules,
-                "a swizzled GLSL 1.30 shadow lookup in a compatibility context: the two readings of contradiction `compat-float-alpha` give Cb = (Rt,0,0,1) (§11.1.3.5) or Cb by DEPTH_TEXTURE_MODE (§8.23.1, Table 16.1: LUMINANCE (r,r,r,1) by default), whose swizzled Cs[0] differ".into(),
+                format!("the swizzle is modelled on fixed function (compatibility §16.1) and GLSL shader lookups (GL 4.6 §15.2.1), not on `{api}`: ARB_fragment_program's texture-access text is outside the spec pack"),
             ));
         }
     }
@@ -104,8 +104,43 @@ fn check_lookup_state(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     Ok(())
 }
 
+/// What TexParameter refuses for a rectangle texture's sampling state, if anything. GL 4.6 §8.10:
+/// "An INVALID_ENUM error is generated if the effective target is TEXTURE_RECTANGLE and either of
+/// pnames TEXTURE_WRAP_S or TEXTURE_WRAP_T is set to either MIRROR_CLAMP_TO_EDGE, MIRRORED_REPEAT
+/// or REPEAT." ... "if the effective target is TEXTURE_RECTANGLE and pname TEXTURE_MIN_FILTER is
+/// set to a value other than NEAREST or LINEAR (no mipmap filtering is permitted)."
+pub fn rect_rejects(s: &Sampler) -> Option<String> {
+    for (name, w) in [("S", s.wrap_s), ("T", s.wrap_t)] {
+        if matches!(
+            w,
+            Wrap::MirrorClampToEdge | Wrap::MirroredRepeat | Wrap::Repeat
+        ) {
+            return Some(format!(
+                "TEXTURE_WRAP_{name} `{w}` on a rectangle texture (GL 4.6 §8.10)"
+            ));
+        }
+    }
+    s.min_filter.is_mipmap().then(|| {
+        format!(
+            "TEXTURE_MIN_FILTER `{}` on a rectangle texture (GL 4.6 §8.10: no mipmap filtering)",
+            s.min_filter
+        )
+    })
+}
+
 /// Checks state legality and applicability; Ok when the lookup is defined.
 pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
+    check_state(case, rules, false)
+}
+
+/// [`check`] of the effective state, a bound sampler object's sampling state in place of the
+/// texture's: state a rectangle texture would refuse raises no error there (SamplerParameter knows
+/// no target) but makes the texture incomplete (`engine::inputs::effective`, GL 4.6 §8.2).
+pub fn check_effective(case: &Case, rules: &Rules) -> Result<(), OracleError> {
+    check_state(case, rules, true)
+}
+
+fn check_state(case: &Case, rules: &Rules, effective: bool) -> Result<(), OracleError> {
     check_lookup_state(case, rules)?;
     let s = &case.sampler;
     let t = &case.texture;
@@ -251,30 +286,8 @@ pub fn check(case: &Case, rules: &Rules) -> Result<(), OracleError> {
         check_gather(case, rules)?;
     }
     if t.target == Target::Rect {
-        // GL 4.6 §8.10: "An INVALID_ENUM error is generated if the effective target is
-        // TEXTURE_RECTANGLE and either of pnames TEXTURE_WRAP_S or TEXTURE_WRAP_T is set to either
-        // MIRROR_CLAMP_TO_EDGE, MIRRORED_REPEAT or REPEAT." ... "TEXTURE_MIN_FILTER is set to a value
-        // other than NEAREST or LINEAR".
-        for w in [s.wrap_s, s.wrap_t] {
-            if matches!(
-                w,
-                Wrap::MirrorClampToEdge | Wrap::MirroredRepeat | Wrap::Repeat
-            ) {
-                return Err(gl_error(
-                    case,
-                    rules,
-                    GlErrorKind::InvalidEnum,
-                    format!("wrap `{w}` on a rectangle texture (GL 4.6 §8.10)"),
-                ));
-            }
-        }
-        if s.min_filter.is_mipmap() {
-            return Err(gl_error(
-                case,
-                rules,
-                GlErrorKind::InvalidEnum,
-                "mipmap filter on a rectangle texture (GL 4.6 §8.10)".into(),
-            ));
+        if let Some(why) = rect_rejects(s).filter(|_| !effective) {
+            return Err(gl_error(case, rules, GlErrorKind::InvalidEnum, why));
         }
         if t.base_level != 0 {
             return Err(gl_error(

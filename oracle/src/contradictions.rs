@@ -61,6 +61,20 @@ pub const ALL: &[Contradiction] = &[
         sources: "GL 4.6 compatibility §8.23.1, §11.1.3.5, Table 16.1",
     },
     Contradiction {
+        id: "compat-depth-cb",
+        title: "Base colour of a GLSL 1.30 depth lookup in a compatibility context",
+        defended: "Both readings are accepted, each named. A shadow lookup's spec value follows §11.1.3.5 (Cs[0] of the swizzled Cb = (Rt, 0, 0, 1)); a non-shadow read's follows §8.23.1 with Table 16.1 (Cb by DEPTH_TEXTURE_MODE, then swizzled), as the legacy vec4 paths do. Without a swizzle the shadow lookups differ only for ALPHA (contradiction `compat-float-alpha`, layout `r|0`).",
+        other: "The other sentence: §11.1.3.5, \"Texture lookups involving textures with depth component data generate a texture base color Cb either using depth data directly or by performing a comparison ... and expanding the resulting value Rt to a color Cb = (Rt, 0, 0, 1)\", against §8.23.1, \"The resulting r is assigned to Rt, Lt, It, or At if the value of DEPTH_TEXTURE_MODE is respectively RED, LUMINANCE, INTENSITY, or ALPHA\" with Table 16.1. With a swizzle such as R = GREEN the two give different values for every mode.",
+        sources: "GL 4.6 compatibility §8.23.1, §11.1.3.5, §15.2.1, Table 16.1",
+    },
+    Contradiction {
+        id: "gather-swizzle",
+        title: "Texture swizzle on a shadow textureGather",
+        defended: "GL 4.6 / ES 3.2 §8.14.2: \"Each texel is then converted to a texture source color (Rs,Gs,Bs,As) according to table 15.1 and then swizzled as described in section 15.2.1\"; Figure 8.4: \"each component is taken from the post-swizzle R component\". A comparison result Rt is Cb = (Rt, 0, 0, 1), so TEXTURE_SWIZZLE_R decides: RED the comparison, GREEN/BLUE/ZERO 0, ALPHA/ONE 1. The spec value follows it.",
+        other: "GLSL 4.60 / GLSL ES 3.20 §8.9.4: each of the four texel lookups \"returns the result of that comparison in the appropriate component of the result vector\", read without the swizzle: the four comparisons whatever TEXTURE_SWIZZLE_R says. Accepted too, named.",
+        sources: "GL 4.6 / ES 3.2 §8.14.2 and Figure 8.4; GLSL 4.60 / GLSL ES 3.20 §8.9.4",
+    },
+    Contradiction {
         id: "incomplete",
         title: "Result of an incomplete texture",
         defended: "GL 4.6 / ES 3.2: 0 for a shadow sampler; GL 2.1 / ARB_fragment_program_shadow / ES 2.0: (0,0,0,1).",
@@ -118,6 +132,16 @@ pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
                 compare
                     && case.api.contains(&shadowcheck_model::ApiPath::Glsl130)
                     && s.depth_texture_mode == Some(shadowcheck_model::DepthTextureMode::Alpha)
+            }
+            "compat-depth-cb" => {
+                case.api.contains(&shadowcheck_model::ApiPath::Glsl130)
+                    && case.texture.format.is_depth()
+                    && (s.swizzle.is_some() || !compare)
+            }
+            "gather-swizzle" => {
+                case.lookup.gather.is_some()
+                    && s.swizzle
+                        .is_some_and(|sw| sw[0] != shadowcheck_model::Swizzle::Red)
             }
             "bad-operator-error" => false,
             "es2-greater-row" => {

@@ -90,6 +90,16 @@ pub fn render(case: &Case, result: &Result<Evaluation, OracleError>) -> String {
             for (api, l) in &x.layout {
                 let l: Vec<&str> = l.iter().map(|c: &Channel| c.key()).collect();
                 let _ = writeln!(o, "  {:<8} ({})", api.key(), l.join(", "));
+                for other in x.other_layouts.get(api).into_iter().flatten() {
+                    let l: Vec<&str> = other.layout.iter().map(|c| c.key()).collect();
+                    let _ = writeln!(
+                        o,
+                        "  {:<8} ({})   also accepted: the other reading, contradiction `{}`",
+                        "",
+                        l.join(", "),
+                        other.reading
+                    );
+                }
             }
             let _ = writeln!(o, "derivation:");
             for (i, st) in ev.steps.iter().enumerate() {

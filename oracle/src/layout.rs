@@ -96,13 +96,7 @@ pub fn layout(
                 // GL 2.1 §3.8.14 / compatibility §8.23.1: "The resulting r is assigned to Rt, Lt, It, or At
                 // if the value of DEPTH_TEXTURE_MODE is respectively RED, LUMINANCE, INTENSITY, or ALPHA";
                 // Table 3.20 / 16.1 then give the source colour.
-                let m = depth_mode(rules, mode);
-                let cs = match m {
-                    DepthTextureMode::Luminance => [R, R, R, One],
-                    DepthTextureMode::Intensity => [R, R, R, R],
-                    DepthTextureMode::Alpha => [Zero, Zero, Zero, R],
-                    DepthTextureMode::Red => [R, Zero, Zero, One],
-                };
+                let cs = by_depth_mode(depth_mode(rules, mode));
                 if ff {
                     return (cs, FF_READ_OUT);
                 }
@@ -152,11 +146,102 @@ pub fn layout(
     }
 }
 
+/// Contradiction `compat-depth-cb`: the texture base colour of a GLSL 1.30 lookup of depth data in
+/// a compatibility context. Compatibility §11.1.3.5: "Texture lookups involving textures with depth
+/// component data generate a texture base color Cb either using depth data directly or by
+/// performing a comparison ... and expanding the resulting value Rt to a color Cb = (Rt, 0, 0, 1)";
+/// §8.23.1 with Table 16.1: "The resulting r is assigned to Rt, Lt, It, or At if the value of
+/// DEPTH_TEXTURE_MODE is respectively RED, LUMINANCE, INTENSITY, or ALPHA", Cb then by Table 16.1.
+pub const COMPAT_DEPTH_CB: &str = "compat-depth-cb";
+/// Contradiction `gather-swizzle`: whether a shadow gather's components are swizzled.
+pub const GATHER_SWIZZLE: &str = "gather-swizzle";
+
+/// Compatibility Table 16.1 (GL 2.1 Table 3.20): the source colour (Cb, Ab) of r assigned to Rt,
+/// Lt, It or At by DEPTH_TEXTURE_MODE (§8.23.1).
+pub fn by_depth_mode(m: DepthTextureMode) -> [Channel; 4] {
+    match m {
+        DepthTextureMode::Luminance => [R, R, R, One],
+        DepthTextureMode::Intensity => [R, R, R, R],
+        DepthTextureMode::Alpha => [Zero, Zero, Zero, R],
+        DepthTextureMode::Red => [R, Zero, Zero, One],
+    }
+}
+
+/// The layouts of one API path: the reading the oracle's spec value follows, the layout it had
+/// before the swizzle (for the derivation), and the other readings the texts allow.
+pub struct Readings {
+    pub main: [Channel; 4],
+    pub cite: &'static str,
+    /// The unswizzled layout, where a swizzle was applied.
+    pub unswizzled: Option<[Channel; 4]>,
+    /// Other readings: (contradiction id, layout), each different from `main`.
+    pub others: Vec<(&'static str, [Channel; 4])>,
+}
+
+/// Every reading of the layout of r on `api` (see [`layout`] for the spec's own), with the texture
+/// swizzle `sw` applied where the path has one (§15.2.1; not to an incomplete texture's result,
+/// which §11.1.3.5 names outright).
+pub fn readings(
+    rules: &Rules,
+    api: ApiPath,
+    kind: Kind,
+    mode: Option<DepthTextureMode>,
+    sw: Option<[Swizzle; 4]>,
+    incomplete: bool,
+) -> Readings {
+    let (l, cite) = layout(rules, api, kind, mode, incomplete);
+    let sw = sw.filter(|_| rules.swizzle.is_some() && !incomplete);
+    let mut out = Readings {
+        main: l,
+        cite,
+        unswizzled: None,
+        others: Vec::new(),
+    };
+    if incomplete {
+        return out;
+    }
+    let compat130 = api == ApiPath::Glsl130 && matches!(kind, Kind::Compare | Kind::Depth);
+    if let Some(sw) = sw {
+        out.unswizzled = Some(l);
+        out.main = if compat130 && kind == Kind::Compare {
+            // §11.1.3.5's reading: Cs[0] of the swizzled (Rt, 0, 0, 1).
+            [
+                sw[0].pick([R, Zero, Zero, One], Zero, One),
+                Unused,
+                Unused,
+                Unused,
+            ]
+        } else {
+            swizzled(l, sw)
+        };
+    }
+    let sw = sw.unwrap_or(Swizzle::IDENTITY);
+    if compat130 {
+        let table = by_depth_mode(depth_mode(rules, mode));
+        let other = match kind {
+            // The shadow lookup's other reading: Cs[0] of the swizzled Table 16.1 colour. Without a
+            // swizzle it differs only for ALPHA, which `layout` already gives as `r|0`
+            // (contradiction `compat-float-alpha`, this reading's instance at the identity swizzle).
+            Kind::Compare => [sw[0].pick(table, Zero, One), Unused, Unused, Unused],
+            // A non-shadow read's other reading: the swizzled (Rt, 0, 0, 1) of §11.1.3.5, the
+            // `main` layout being Table 16.1's.
+            _ => sw.map(|c| c.pick([R, Zero, Zero, One], Zero, One)),
+        };
+        let same_as_alpha_pair = out.main[0] == ROrZero;
+        if other != out.main && !same_as_alpha_pair {
+            out.others.push((COMPAT_DEPTH_CB, other));
+        }
+    }
+    out
+}
+
 /// The texture swizzle applied to the layout `l` of a complete lookup (GL 4.6 §15.2.1; ES 3.2
 /// §14.2.1): Cs[i] is Cb[0], Cb[1], Cb[2], Ab, 0 or 1 by TEXTURE_SWIZZLE_R/G/B/A. A float shadow
 /// lookup returns Cs[0] only (§11.1.3.5: "swizzling of Cb is then performed as described above,
 /// but only the first component Cs[0] is returned to the shader"), its Cb being (Rt, 0, 0, 1).
-/// Only the paths of `check::SWIZZLE_PATHS` reach here.
+/// On the vec4 paths (fixed function, GLSL 1.20, a non-shadow read) all four channels are the
+/// swizzled source colour: compatibility §16.1 (Table 16.1, then the swizzle of §15.2.1) for fixed
+/// function; §15.2.1 for shaders. Only the paths of `check::SWIZZLE_PATHS` reach here.
 pub fn swizzled(l: [Channel; 4], sw: [Swizzle; 4]) -> [Channel; 4] {
     if l[1..] == [Unused; 3] {
         let cs0 = sw[0].pick([l[0], Zero, Zero, One], Zero, One);

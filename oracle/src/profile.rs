@@ -27,11 +27,15 @@ pub struct ProfileSpec {
     /// Reference precision in bits: a texel whose |Dref − Dt| <= 2^-bits may compare either way.
     /// `None`: only f32 rounding of Dref (projective divide) and of Dt (unorm → float) can flip a texel.
     pub ref_bits: Option<u32>,
-    /// Each bilinear weight (α, β) and the mip blend weight frac(λ) may be off by this much.
+    /// Each bilinear weight (α, β) and the mip blend weight frac(λ) may be off by this much. A
+    /// shadow gather's 2x2 block (i0 = ⌊u′ − ½⌋, from the same u′ − ½ as α) may therefore be the
+    /// neighbouring block within this many texels of a block boundary (`engine::gather`;
+    /// oracle/README.md's tier table).
     pub weight_tol: f64,
     /// λ may be off by this much (level selection, the mag/min switch and frac(λ)).
     pub lod_tol: f64,
-    /// Texture coordinates may be off by this many texels (texel selection at a NEAREST boundary).
+    /// Texture coordinates may be off by this many texels (texel selection at a NEAREST boundary;
+    /// a gather block takes the larger of this and `weight_tol`).
     pub coord_tol: f64,
     /// A filtered comparison whose footprint holds both a texel that may pass and one that may fail
     /// returns any value between the fail value and 1, where the spec leaves filtering

@@ -60,23 +60,22 @@ fn swizzle_of_non_shadow_reads_and_depth_texture_mode() {
 fn swizzle_only_where_it_exists() {
     let mut c = one(Spec::Gl46, Format::D24, CompareFunc::Lequal, 0.5, 0.8);
     c.sampler.swizzle = Some([S::One, S::Green, S::Blue, S::Alpha]);
-    c.api = vec![ApiPath::FixedFunction];
-    assert!(
-        not_applicable(&c),
-        "fixed function is not a modelled swizzle path"
-    );
-    // GLSL 1.30 shadow lookups: Cb = (Rt,0,0,1) (§11.1.3.5) or by DEPTH_TEXTURE_MODE (§8.23.1,
-    // Table 16.1): two readings whose swizzled Cs[0] differ.
-    c.api = vec![ApiPath::Glsl130];
-    assert!(not_applicable(&c), "two readings on glsl130 shadow lookups");
-    c.sampler.compare_mode = CompareMode::None;
-    assert!(
-        !not_applicable(&c),
-        "a non-shadow glsl130 read has one reading"
-    );
+    // ARB fragment programs: their texture-access text is outside the pack.
+    c.api = vec![ApiPath::ArbFp];
+    assert!(not_applicable(&c), "ARB fp is not a modelled swizzle path");
+    // Fixed function (compatibility §16.1) and GLSL 1.30 shadow lookups are modelled (their
+    // readings: oracle/tests/audit_round2.rs).
+    for api in [ApiPath::FixedFunction, ApiPath::Glsl120, ApiPath::Glsl130] {
+        c.api = vec![api];
+        assert!(!not_applicable(&c), "{api} has a swizzle");
+    }
     let mut e = one(Spec::Es2Ext, Format::D16, CompareFunc::Lequal, 0.5, 0.8);
     e.sampler.swizzle = Some([S::One, S::Green, S::Blue, S::Alpha]);
     assert!(not_applicable(&e), "ES 2.0 has no swizzle");
+    let mut a = one(Spec::Arb, Format::D16, CompareFunc::Lequal, 0.5, 0.8);
+    a.sampler.swizzle = Some([S::One, S::Green, S::Blue, S::Alpha]);
+    a.api = vec![ApiPath::FixedFunction];
+    assert!(not_applicable(&a), "ARB_shadow (GL 1.4) has no swizzle");
 }
 
 /// A 2x2 cube: +X holds 0 (fails at Dref 0.5), +Z holds 1 (passes); LINEAR near their edge.

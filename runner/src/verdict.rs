@@ -355,6 +355,7 @@ mod tests {
                 spec_value: Some(0.0),
                 accept,
                 layout,
+                other_layouts: Default::default(),
                 gather: None,
                 implementation_defined: None,
                 citations: vec![],

@@ -116,6 +116,45 @@ pub fn gather(d: &SpecDims) -> Vec<Draft> {
     out.extend(wraps(d, &targets));
     out.extend(offsets(d, &targets));
     out.extend(lod_ignored(d));
+    out.extend(swizzles(d, &targets));
+    out
+}
+
+/// TEXTURE_SWIZZLE_R on a gather: each texel's post-swizzle R component (GL 4.6 / ES 3.2 §8.14.2,
+/// Figure 8.4), so RED gives the comparisons, GREEN / BLUE / ZERO 0 and ALPHA / ONE 1; the
+/// unswizzled comparisons are the named other reading (contradiction `gather-swizzle`). The middle
+/// reference gives the mixed pattern (1,1,0,0), so every reading is told apart from the others.
+fn swizzles(d: &SpecDims, targets: &[Target]) -> Vec<Draft> {
+    use Swizzle::*;
+    const SW: [[Swizzle; 4]; 4] = [
+        [Zero, Green, Blue, Alpha],
+        [Alpha, Red, Red, Red],
+        [Green, Red, Blue, Alpha],
+        [Red, One, Zero, Green],
+    ];
+    let mut out = Vec::new();
+    for &t in targets
+        .iter()
+        .filter(|t| matches!(t, Target::T2d | Target::Cube))
+    {
+        let c = cell(d, t, fixed_fmt(d), Filter::Linear, main_func(d));
+        let (lvl, n) = level(&c);
+        let tex = texture(&c, vec![lvl]);
+        let r = refs(image(t).2, n)[1];
+        for sw in SW {
+            let key: Vec<&str> = sw.iter().map(|c| c.key()).collect();
+            let mut x = draft(
+                c,
+                tex.clone(),
+                1.75,
+                2.25,
+                r,
+                format!("swizzle={}/uv=1.75_2.25/ref={}", key.join("_"), build::num(r)),
+            );
+            x.sampler.swizzle = Some(sw);
+            out.push(x);
+        }
+    }
     out
 }
 

@@ -176,14 +176,9 @@ pub fn filter_allowed(target: Target, filter: Filter) -> bool {
 pub fn apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
     let mut v = state_apis(spec, target, sampler);
     if sampler.swizzle.is_some() {
-        // The swizzle is modelled on the GLSL 1.30+ / ES 3.00 shader lookups (GL 4.6 §15.2.1);
-        // a swizzled GLSL 1.30 shadow lookup has two readings (oracle `check`), so not there.
-        let shadow = sampler.in_effect().compare_mode != CompareMode::None;
-        v.retain(|a| match a {
-            ApiPath::Glsl130 => !shadow,
-            ApiPath::GlslCore | ApiPath::Es300 => true,
-            _ => false,
-        });
+        // The swizzle is modelled on fixed function (compatibility §16.1) and the GLSL lookups
+        // (GL 4.6 §15.2.1), not on ARB fragment programs (their text is outside the spec pack).
+        v.retain(|a| *a != ApiPath::ArbFp);
     }
     v
 }

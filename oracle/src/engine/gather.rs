@@ -16,8 +16,9 @@
 //! coordinate offset to the coordinates coord, identifying the four-texel LINEAR footprint, and then
 //! selecting the texel τi0j0 of that footprint" (GL 4.6 §8.14.2).
 
-use super::{geometry, inputs, Eval, Layouts};
+use super::{channels, geometry, inputs, Eval, Layouts};
 use crate::accept::{self, Taps};
+use crate::layout::GATHER_SWIZZLE;
 use crate::lod::Pick;
 use crate::profile::PROFILES;
 use crate::rules::Rules;
@@ -26,13 +27,14 @@ use crate::select::{build, Geo};
 use crate::{Evaluation, Step};
 use shadowcheck_model::{
     Acceptance, Case, Channel, Expectation, Footprint, FootprintTexel, Interval, KeyMap, Profile,
-    Target,
+    Swizzle, Target,
 };
 
 /// The sentence of the rule, cited by every gather evaluation.
 pub const GATHER_CITE: &str = "GL 4.6 / ES 3.2 §8.14.2 (textureGather: LINEAR footprint of level base, order τi0j1, τi1j1, τi1j0, τi0j0); GLSL 4.60 §8.9.4 (shadow gather: four comparisons against refZ, filters ignored)";
 const OFFSETS_CITE: &str =
     "GL 4.6 / ES 3.2 §8.14.2 (textureGatherOffsets: τi0j0 of each offset's LINEAR footprint)";
+const GATHER_SWIZZLE_CITE: &str = "GL 4.6 / ES 3.2 §8.14.2 (each texel converted by Table 15.1, then swizzled, §15.2.1; Figure 8.4: \"the post-swizzle R component\")";
 const INCOMPLETE_CITE: &str = "GL 4.6 / ES 3.2 §8.14.2 (gather on an incomplete texture: source colour (0,0,0,1) for all four texels)";
 
 /// Which texel of the 2x2 LINEAR footprint `Taps::Lin2([i0j0, i1j0, i0j1, i1j1])` each result
@@ -41,15 +43,56 @@ pub const COMPONENT_TAP: [usize; 4] = [2, 3, 1, 0];
 /// The components' texel names, for the derivation.
 const COMPONENT_NAME: [&str; 4] = ["R = τi0j1", "G = τi1j1", "B = τi1j0", "A = τi0j0"];
 
-/// The gather layout on every API path of the case.
-fn gather_layouts(e: &mut Eval, case: &Case) -> Layouts {
-    let mut layouts = KeyMap::new();
+/// The gather layout on every API path of the case. Each texel's comparison result Rt is expanded
+/// to Cb = (Rt, 0, 0, 1) (§11.1.3.5) and swizzled (§15.2.1) before its R component is taken: "Each
+/// texel is then converted to a texture source color (Rs,Gs,Bs,As) according to table 15.1 and then
+/// swizzled as described in section 15.2.1" (GL 4.6 / ES 3.2 §8.14.2); Figure 8.4: "each component
+/// is taken from the post-swizzle R component of the corresponding texel". So TEXTURE_SWIZZLE_R
+/// alone decides: RED the comparison, GREEN / BLUE / ZERO 0, ALPHA / ONE 1. GLSL 4.60 §8.9.4 ("returns
+/// the result of that comparison in the appropriate component of the result vector") can be read
+/// without the swizzle: that reading (contradiction `gather-swizzle`) is accepted too. An incomplete
+/// texture's texels are "considered to return a texture source color of (0.0, 0.0, 0.0, 1.0)": a
+/// source colour, already swizzled, so its R is 0 whatever the swizzle.
+fn gather_layouts(e: &mut Eval, rules: &Rules, case: &Case, incomplete: bool) -> Layouts {
+    let mut layouts = Layouts::default();
+    let sw_r = case
+        .sampler
+        .swizzle
+        .filter(|_| rules.swizzle.is_some() && !incomplete)
+        .map(|sw| sw[0]);
     for &api in &case.api {
+        let main = match sw_r {
+            None | Some(Swizzle::Red) => Channel::GATHER,
+            Some(c) => {
+                [c.pick(
+                    [Channel::R, Channel::Zero, Channel::Zero, Channel::One],
+                    Channel::Zero,
+                    Channel::One,
+                ); 4]
+            }
+        };
         e.step(
-            format!("layout on `{api}`: (g0,g1,g2,g3), one comparison per component"),
+            format!(
+                "layout on `{api}`: ({}), one comparison per component",
+                channels(&main)
+            ),
             GATHER_CITE,
         );
-        layouts.insert(api, Channel::GATHER);
+        if let Some(c) = sw_r.filter(|&c| c != Swizzle::Red) {
+            e.step(
+                format!(
+                    "TEXTURE_SWIZZLE_R = {} takes each texel's post-swizzle R component from (Rt, 0, 0, 1)",
+                    c.key()
+                ),
+                GATHER_SWIZZLE_CITE,
+            );
+        }
+        let others = if main == Channel::GATHER {
+            Vec::new()
+        } else {
+            vec![(GATHER_SWIZZLE, Channel::GATHER)]
+        };
+        layouts.add(api, main, others, e);
     }
     layouts
 }
@@ -62,7 +105,7 @@ pub(super) fn run(
     incomplete: Option<String>,
 ) -> Evaluation {
     let kind = inputs::kind(&mut e, rules, case);
-    let layouts = gather_layouts(&mut e, case);
+    let layouts = gather_layouts(&mut e, rules, case, incomplete.is_some());
     e.cite(GATHER_CITE);
     if let Some(why) = incomplete {
         e.step(
@@ -270,7 +313,8 @@ fn finish(
         expect: Expectation {
             spec_value: spec_values[0],
             accept: maps[0].clone(),
-            layout,
+            layout: layout.main,
+            other_layouts: layout.others,
             gather: Some(maps),
             implementation_defined,
             citations: e.cites,

@@ -6,7 +6,7 @@ use super::Eval;
 use crate::rules::{RefClamp, Rules};
 use crate::sample::{Kind, TexelCtx};
 use crate::unorm::{f32_candidates, f32r, Exact};
-use shadowcheck_model::{Case, CompareFunc, CompareMode, DepthStencilMode, Sampler, Spec};
+use shadowcheck_model::{Case, CompareFunc, CompareMode, DepthStencilMode, Sampler, Spec, Target};
 use std::borrow::Cow;
 
 /// The coordinates as the API passes them (f32) and the projective divisor q (1 when not projective).
@@ -19,8 +19,17 @@ pub(super) struct Coords {
 /// parameters replace the texture's (GL 4.6 §8.17.1, ES 3.2 §8.17.1), while DEPTH_TEXTURE_MODE,
 /// DEPTH_STENCIL_TEXTURE_MODE, the swizzle, TEXTURE_MAX_LEVEL and the fail value remain texture
 /// state (§8.2: not in Table 23.18); and the cube seamless rule of the context (§8.13.1: the
-/// enable when the case sets it, otherwise the spec's default).
-pub(super) fn effective<'a>(e: &mut Eval, rules: Rules, case: &'a Case) -> (Cow<'a, Case>, Rules) {
+/// enable when the case sets it, otherwise the spec's default). The third value says why the
+/// texture is incomplete when the sampler object holds state that TexParameter would refuse for the
+/// bound texture, GL 4.6 §8.2: "If state is present in a sampler object bound to a texture unit that
+/// would have been rejected by a call to TexParameter* for the texture bound to that unit, the
+/// behavior of the implementation is as if the texture were incomplete" (its example: REPEAT wraps
+/// on a rectangle texture).
+pub(super) fn effective<'a>(
+    e: &mut Eval,
+    rules: Rules,
+    case: &'a Case,
+) -> (Cow<'a, Case>, Rules, Option<String>) {
     let mut rules = rules;
     if let (Some(on), Some(cite)) = (case.sampler.seamless, rules.seamless_enable) {
         rules.seamless_cube = on;
@@ -30,7 +39,7 @@ pub(super) fn effective<'a>(e: &mut Eval, rules: Rules, case: &'a Case) -> (Cow<
         }
     }
     let (Some(o), Some(cite)) = (&case.sampler.sampler_object, rules.sampler_objects) else {
-        return (Cow::Borrowed(case), rules);
+        return (Cow::Borrowed(case), rules, None);
     };
     let t = &case.sampler;
     let s = Sampler {
@@ -94,9 +103,15 @@ pub(super) fn effective<'a>(e: &mut Eval, rules: Rules, case: &'a Case) -> (Cow<
         format!("a sampler object is bound: its sampling state is used: {list}"),
         cite,
     );
+    let refused = (case.texture.target == Target::Rect)
+        .then(|| crate::check::rect_rejects(&s))
+        .flatten()
+        .map(|why| {
+            format!("the sampler object holds {why}, which TexParameter would refuse: the texture is treated as incomplete (GL 4.6 §8.2)")
+        });
     let mut eff = case.clone();
     eff.sampler = s;
-    (Cow::Owned(eff), rules)
+    (Cow::Owned(eff), rules, refused)
 }
 
 /// Which computation: §8.23.1 "If the base internal format is DEPTH_STENCIL and the value of

@@ -19,9 +19,10 @@ use crate::profile::PROFILES;
 use crate::rules::{Incomplete, Rules};
 use crate::sample::{Kind, TexelCtx};
 use crate::select::build;
-use crate::{check, layout, lod, Evaluation, OracleError, Step};
+use crate::{check, contradictions, layout, lod, Evaluation, OracleError, Step};
 use shadowcheck_model::{
-    Acceptance, ApiPath, Case, Channel, Expectation, Footprint, Interval, KeyMap, Profile,
+    Acceptance, ApiPath, Case, Channel, Expectation, Footprint, Interval, KeyMap, OtherLayout,
+    Profile,
 };
 
 /// The derivation so far: steps, citations and notes (implementation-defined choices), in order.
@@ -52,8 +53,6 @@ impl Eval {
     }
 }
 
-type Layouts = KeyMap<ApiPath, [Channel; 4]>;
-
 /// Evaluates `case` under `rules` (the spec's own, or an alternative reading from `contradictions`).
 pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     check::check(case, &rules)?;
@@ -63,16 +62,20 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
         notes: Vec::new(),
     };
     // The effective sampling state (sampler object, seamless enable); it must be legal too.
-    let (case, rules) = inputs::effective(&mut e, rules, case);
+    let (case, rules, object_refused) = inputs::effective(&mut e, rules, case);
     let case: &Case = &case;
-    check::check(case, &rules)?;
+    check::check_effective(case, &rules)?;
+    // Completeness (§8.17), or a sampler object's state the texture would refuse (§8.2).
+    let incomplete = |stencil: bool| {
+        object_refused
+            .clone()
+            .or_else(|| lod::incomplete(&rules, &case.texture, &case.sampler, stencil))
+    };
     if case.lookup.gather.is_some() {
-        let incomplete = lod::incomplete(&rules, &case.texture, &case.sampler, false);
-        return Ok(gather::run(e, &rules, case, incomplete));
+        return Ok(gather::run(e, &rules, case, incomplete(false)));
     }
     let kind = inputs::kind(&mut e, &rules, case);
-    // Completeness (§8.17).
-    let incomplete = lod::incomplete(&rules, &case.texture, &case.sampler, kind == Kind::Stencil);
+    let incomplete = incomplete(kind == Kind::Stencil);
     let layouts = layouts(&mut e, &rules, case, kind, incomplete.is_some());
     if let Some(why) = incomplete {
         return Ok(incomplete_texture(e, &rules, &why, layouts));
@@ -126,44 +129,93 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     Ok(finish(e, spec_value, acc, layouts, fp))
 }
 
-/// The layout of r on each of the case's API paths, with a step each.
+/// The layout of r on each of the case's API paths, with a step each, and the other readings of
+/// it the texts allow.
 fn layouts(e: &mut Eval, rules: &Rules, case: &Case, kind: Kind, incomplete: bool) -> Layouts {
-    let mut layouts = KeyMap::new();
+    let mut layouts = Layouts::default();
     for &api in &case.api {
-        let (mut l, cite) = layout::layout(
+        let r = layout::readings(
             rules,
             api,
             kind,
             case.sampler.depth_texture_mode,
+            case.sampler.swizzle,
             incomplete,
         );
-        if let (Some(sw), Some(sw_cite), false) = (case.sampler.swizzle, rules.swizzle, incomplete)
+        if let (Some(sw), Some(before), Some(sw_cite)) =
+            (case.sampler.swizzle, r.unswizzled, rules.swizzle)
         {
-            let before = l;
-            l = layout::swizzled(l, sw);
             e.step(
                 format!(
                     "TEXTURE_SWIZZLE_RGBA ({}) on `{api}`: ({}) → ({})",
                     sw.iter().map(|c| c.key()).collect::<Vec<_>>().join(","),
-                    before.iter().map(|c| c.key()).collect::<Vec<_>>().join(","),
-                    l.iter().map(|c| c.key()).collect::<Vec<_>>().join(",")
+                    channels(&before),
+                    channels(&r.main)
                 ),
                 sw_cite,
             );
         }
         e.step(
-            format!(
-                "layout on `{api}`: ({})",
-                l.iter().map(|c| c.key()).collect::<Vec<_>>().join(",")
-            ),
-            cite,
+            format!("layout on `{api}`: ({})", channels(&r.main)),
+            r.cite,
         );
-        if l.contains(&Channel::ROrZero) {
-            e.note(format!("on `{api}` the texts give two readings: the result is r or 0 (contradiction `compat-float-alpha`: {cite})"));
+        if r.main.contains(&Channel::ROrZero) {
+            e.note(format!("on `{api}` the texts give two readings: the result is r or 0 (contradiction `compat-float-alpha`: {})", r.cite));
         }
-        layouts.insert(api, l);
+        layouts.add(api, r.main, r.others, e);
     }
     layouts
+}
+
+/// A layout as its channel keys, e.g. `r,0,0,1`.
+fn channels(l: &[Channel; 4]) -> String {
+    l.iter().map(|c| c.key()).collect::<Vec<_>>().join(",")
+}
+
+/// The layouts of a case: the spec's reading per API path and the other readings.
+#[derive(Default)]
+struct Layouts {
+    main: KeyMap<ApiPath, [Channel; 4]>,
+    others: KeyMap<ApiPath, Vec<OtherLayout>>,
+}
+
+impl Layouts {
+    /// Records `api`'s layout and its other readings, each as a step and a note naming it.
+    fn add(
+        &mut self,
+        api: ApiPath,
+        main: [Channel; 4],
+        others: Vec<(&'static str, [Channel; 4])>,
+        e: &mut Eval,
+    ) {
+        self.main.insert(api, main);
+        if others.is_empty() {
+            return;
+        }
+        let mut v = Vec::new();
+        for (id, l) in others {
+            let c = contradictions::get(id);
+            let cite = c.map(|c| c.sources).unwrap_or("");
+            e.step(
+                format!(
+                    "other reading on `{api}` (contradiction `{id}`): ({})",
+                    channels(&l)
+                ),
+                cite,
+            );
+            e.note(format!(
+                "on `{api}` the texts give two readings: ({}) or ({}) (contradiction `{id}`{})",
+                channels(&main),
+                channels(&l),
+                c.map(|c| format!(": {}", c.title)).unwrap_or_default()
+            ));
+            v.push(OtherLayout {
+                reading: id.to_string(),
+                layout: l,
+            });
+        }
+        self.others.insert(api, v);
+    }
 }
 
 /// An incomplete texture: r = 0 under every profile.
@@ -230,7 +282,8 @@ fn finish(
         expect: Expectation {
             spec_value,
             accept,
-            layout,
+            layout: layout.main,
+            other_layouts: layout.others,
             gather: None,
             implementation_defined,
             citations: e.cites,

@@ -196,6 +196,7 @@ mod tests {
             spec_value: Some(1.0),
             accept,
             layout,
+            other_layouts: Default::default(),
             gather: None,
             implementation_defined: None,
             citations: vec![],

@@ -117,6 +117,7 @@ fn case(id: &str, spec: Spec, api: Vec<ApiPath>) -> Case {
             spec_value: Some(1.0),
             accept,
             layout,
+            other_layouts: Default::default(),
             gather: None,
             implementation_defined: None,
             citations: vec![],

@@ -128,6 +128,7 @@ pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
             spec_value: Some(r),
             accept,
             layout,
+            other_layouts: Default::default(),
             gather: None,
             implementation_defined: None,
             citations: vec!["GL 4.6 §8.23.1 Table 8.23".into()],

@@ -291,6 +291,7 @@ pub fn sampler_object(d: &SpecDims) -> Vec<Draft> {
         x.sampler.sampler_object = Some(o);
         out.push(x);
     }
+    out.extend(rect_sampler_object(d));
     // LOD state of the sampler object: level 0 holds 0.2, level 1 0.8 (NEAREST_MIPMAP_NEAREST).
     let c = cell(d, Target::T2d, fmt, Filter::NearestMipmapNearest, leq);
     let tex = texture(
@@ -318,6 +319,56 @@ pub fn sampler_object(d: &SpecDims) -> Vec<Draft> {
         );
         let mut o = SamplerObject::from_sampler(&x.sampler);
         apply(&mut o);
+        x.sampler.sampler_object = Some(o);
+        out.push(x);
+    }
+    out
+}
+
+/// A sampler object holding state that TexParameter refuses for the bound rectangle texture (GL
+/// 4.6 §8.10: wrap S/T REPEAT, MIRRORED_REPEAT or MIRROR_CLAMP_TO_EDGE; a mipmap minification
+/// filter): no error, the texture is "as if ... incomplete" (§8.2), r = 0. The 2x1 rectangle
+/// 0.8 | 0.6 passes everywhere at R = 0.5 (LEQUAL), so any texel a wrap mode reads at u = 2.5 (past
+/// the right edge) gives 1: only the incompleteness gives 0. The CLAMP_TO_EDGE and
+/// CLAMP_TO_BORDER (border 1.0) variants are the legal controls.
+fn rect_sampler_object(d: &SpecDims) -> Vec<Draft> {
+    let mut out = Vec::new();
+    if !d.targets.contains(&Target::Rect) {
+        return out;
+    }
+    let fmt = fixed_fmt(d);
+    let [leq, _] = func_pair(d);
+    let c = cell(d, Target::Rect, fmt, Filter::Nearest, leq);
+    let tex = texture(&c, vec![build::level(c.format, 2, 1, 1, &[0.8, 0.6])]);
+    let mut variants: Vec<(String, Wrap, Filter)> = [
+        Wrap::Repeat,
+        Wrap::MirroredRepeat,
+        Wrap::MirrorClampToEdge,
+        Wrap::ClampToEdge,
+        Wrap::ClampToBorder,
+    ]
+    .into_iter()
+    .filter(|w| d.wraps.contains(w))
+    .map(|w| (format!("so_rect_wrap={w}"), w, Filter::Nearest))
+    .collect();
+    variants.push((
+        "so_rect_min=nmn".to_string(),
+        Wrap::ClampToEdge,
+        Filter::NearestMipmapNearest,
+    ));
+    for (name, wrap, min) in variants {
+        let mut x = Draft::new(
+            "sampler_object",
+            c,
+            tex.clone(),
+            lookup(Target::Rect, At::st(1.25, 0.5), 2, 1, 0.5),
+            format!("{name}/u=2.5/ref=0.5"),
+        );
+        (x.sampler.wrap_s, x.sampler.wrap_t) = (Wrap::ClampToEdge, Wrap::ClampToEdge);
+        let mut o = SamplerObject::from_sampler(&x.sampler);
+        o.wrap_s = wrap;
+        o.min_filter = min;
+        o.border = [1.0, 0.0, 0.0, 0.0];
         x.sampler.sampler_object = Some(o);
         out.push(x);
     }
