@@ -295,10 +295,10 @@ impl Coverage {
     pub fn with_states<'a>(mut self, states: impl IntoIterator<Item = &'a StateCase>) -> Coverage {
         for c in states {
             for &api in &c.api {
-                let ext = c
-                    .expect
-                    .as_ref()
-                    .is_some_and(|e| !e.with_extension.is_empty());
+                // A pname only an extension the context may expose adds (filled or not).
+                use shadowcheck_oracle::state as ostate;
+                let ext =
+                    !ostate::pname_extensions(c.spec, ostate::ctx_of(api), c.pname.gl()).is_empty();
                 let e = self
                     .state
                     .entry((api, c.pname))
