@@ -45,8 +45,8 @@ pub struct Coverage {
     /// Shadow gather tests (case x path) per (spec, API path, target, function).
     pub gather: BTreeMap<GatherKey, usize>,
     /// State cases per (API path standing for the context kind, pname): (cases, whether the pname
-    /// exists there, i.e. is read back).
-    pub state: BTreeMap<(ApiPath, StatePname), (usize, bool)>,
+    /// is read back there, whether it exists only with an extension the context may expose).
+    pub state: BTreeMap<(ApiPath, StatePname), (usize, bool, bool)>,
     /// Per API path: tests per unit-state column ([`UNIT_STATE`]).
     pub unit_state: BTreeMap<ApiPath, [usize; UNIT_STATE.len()]>,
 }
@@ -295,16 +295,25 @@ impl Coverage {
     pub fn with_states<'a>(mut self, states: impl IntoIterator<Item = &'a StateCase>) -> Coverage {
         for c in states {
             for &api in &c.api {
-                let e = self.state.entry((api, c.pname)).or_insert((0, c.read_back));
+                // A pname only an extension the context may expose adds (filled or not).
+                use shadowcheck_oracle::state as ostate;
+                let ext =
+                    !ostate::pname_extensions(c.spec, ostate::ctx_of(api), c.pname.gl()).is_empty();
+                let e = self
+                    .state
+                    .entry((api, c.pname))
+                    .or_insert((0, c.read_back, ext));
                 e.0 += 1;
                 e.1 |= c.read_back;
+                e.2 |= ext;
             }
         }
         self
     }
 
     /// The state cases per pname and context kind (`n`: cases; `n (absent)`: the pname does not
-    /// exist there, so the cases check INVALID_ENUM).
+    /// exist there, so the cases check INVALID_ENUM; `n (extension)`: it exists only where the
+    /// context exposes an extension that adds it, INVALID_ENUM otherwise).
     pub fn state_markdown(&self) -> String {
         let mut s = String::from("#### TexParameter / GetTexParameter state cases\n\n");
         let apis: Vec<ApiPath> = {
@@ -317,7 +326,7 @@ impl Coverage {
         let total: usize = self.state.values().map(|v| v.0).sum();
         let _ = writeln!(
             s,
-            "Tests per pname and context kind (by its API path: `core` core profile, `ff` compatibility, `es300` ES 3); `absent`: the pname does not exist there (INVALID_ENUM). {total} tests.\n"
+            "Tests per pname and context kind (by its API path: `core` core profile, `ff` compatibility, `es300` ES 3); `absent`: the pname does not exist there (INVALID_ENUM); `extension`: it exists only with an extension the context may expose (INVALID_ENUM without it). {total} tests.\n"
         );
         let names: Vec<&str> = apis.iter().map(|a| a.key()).collect();
         let _ = writeln!(s, "| pname | {} |", names.join(" | "));
@@ -326,8 +335,9 @@ impl Coverage {
             let cells: Vec<String> = apis
                 .iter()
                 .map(|a| match self.state.get(&(*a, p)) {
-                    Some((n, true)) => n.to_string(),
-                    Some((n, false)) => format!("{n} (absent)"),
+                    Some((n, _, true)) => format!("{n} (extension)"),
+                    Some((n, true, false)) => n.to_string(),
+                    Some((n, false, false)) => format!("{n} (absent)"),
                     None => "0".into(),
                 })
                 .collect();

@@ -133,7 +133,15 @@ pub(crate) fn check_state(
             format!("{:?}", derived.value),
         ))
     } else {
-        None
+        // What a context exposing an extension must do: the same extensions, errors and values.
+        let outline = |e: &shadowcheck_model::StateExpect| -> Vec<String> {
+            e.with_extension
+                .iter()
+                .map(|w| format!("{}: {:?} {:?}", w.extension, w.error, w.value))
+                .collect()
+        };
+        let (w, d) = (outline(written), outline(&derived));
+        (w != d).then(|| ("expect.with_extension", format!("{w:?}"), format!("{d:?}")))
     };
     match differs {
         None => Ok(()),

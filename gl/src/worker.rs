@@ -14,7 +14,10 @@ use shadowcheck_protocol::{
 };
 use std::ffi::c_void;
 
-/// Extensions reported in the handshake (those that matter for depth comparison).
+/// Extensions reported in the handshake (those that matter for depth comparison). The runner judges
+/// state cases by them: GL_ARB_shadow_ambient, GL_SGIX_shadow and GL_SGIX_shadow_ambient add
+/// TexParameter pnames GL 4.6 lacks (`shadowcheck_oracle::state::PNAME_EXTENSIONS`), so a context
+/// that lists one is held to the extension's rules for them instead of INVALID_ENUM.
 const RELEVANT_EXTENSIONS: &[&str] = &[
     "GL_ARB_depth_texture",
     "GL_ARB_shadow",
@@ -438,6 +441,13 @@ mod tests {
         assert_eq!(parse_version("OpenGL ES 3.2 Mesa 22.3.6"), (3, 2));
         assert_eq!(parse_version("OpenGL ES GLSL ES 3.20"), (3, 20));
         assert_eq!(parse_version("4.50"), (4, 50));
+    }
+
+    #[test]
+    fn the_hello_reports_every_extension_a_state_expectation_depends_on() {
+        for ext in shadowcheck_oracle::state::PNAME_EXTENSIONS {
+            assert!(RELEVANT_EXTENSIONS.contains(&ext.name), "{}", ext.name);
+        }
     }
 }
 

@@ -24,7 +24,8 @@ pub use enums::*;
 pub use expect::*;
 pub use keymap::{KeyMap, Keyed};
 pub use state::{
-    GlError, StateCall, StateCase, StateExpect, StateObserved, StatePname, StateType, StateValue,
+    AppliedExpect, ExtensionExpect, GlError, StateCall, StateCase, StateExpect, StateObserved,
+    StatePname, StateType, StateValue,
 };
 pub use sweep::{split_point_id, PointExpectation, SweepPoint, MAX_SWEEP_POINTS, SWEEP_ID_TAG};
 

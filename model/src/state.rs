@@ -159,6 +159,58 @@ pub struct StateExpect {
     pub value: Option<StateValue>,
     /// The sentences that decide it.
     pub citations: Vec<String>,
+    /// What is expected instead on a context that exposes a named extension defining the pname
+    /// the spec under test lacks (e.g. TEXTURE_COMPARE_FAIL_VALUE_ARB with
+    /// `GL_ARB_shadow_ambient`); the first whose extension the context reports applies
+    /// ([`StateExpect::for_extensions`]). Empty when no extension changes the expectation.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub with_extension: Vec<ExtensionExpect>,
+}
+
+/// The expectation of a state case on a context exposing `extension`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ExtensionExpect {
+    /// The extension name as the context's extension string lists it, e.g. `GL_ARB_shadow_ambient`.
+    pub extension: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error: Option<GlError>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub value: Option<StateValue>,
+    /// The sentences that decide it (the extension's own).
+    pub citations: Vec<String>,
+}
+
+/// The expectation that applies on one context: the base one or one extension's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AppliedExpect<'a> {
+    /// The extension whose expectation applies (`None`: the base expectation).
+    pub extension: Option<&'a str>,
+    pub error: Option<GlError>,
+    pub value: Option<StateValue>,
+    pub citations: &'a [String],
+}
+
+impl StateExpect {
+    /// The expectation on a context whose extension string lists `extensions`: the first
+    /// [`StateExpect::with_extension`] entry whose extension is listed, else the base one (so a
+    /// backend that reports no extensions is judged against the base expectation).
+    pub fn for_extensions<S: AsRef<str>>(&self, extensions: &[S]) -> AppliedExpect<'_> {
+        let exposed = |name: &str| extensions.iter().any(|e| e.as_ref() == name);
+        match self.with_extension.iter().find(|w| exposed(&w.extension)) {
+            Some(w) => AppliedExpect {
+                extension: Some(&w.extension),
+                error: w.error,
+                value: w.value,
+                citations: &w.citations,
+            },
+            None => AppliedExpect {
+                extension: None,
+                error: self.error,
+                value: self.value,
+                citations: &self.citations,
+            },
+        }
+    }
 }
 
 /// What an implementation observed for one state case on one API path (context kind).
@@ -188,8 +240,9 @@ pub struct StateCase {
     pub target: Target,
     pub pname: StatePname,
     pub call: StateCall,
-    /// Whether GetTexParameter reads the value back after the call (false when the pname does
-    /// not exist in the context: the read would only raise INVALID_ENUM again).
+    /// Whether GetTexParameter reads the value back after the call (false when the pname cannot
+    /// exist in the context, neither in its spec nor in an extension it may expose: the read would
+    /// only raise INVALID_ENUM again).
     pub read_back: bool,
     /// The oracle's expectation (present in fixtures).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -246,6 +299,7 @@ mod tests {
                 error: Some(GlError::InvalidEnum),
                 value: Some(StateValue::Enum(0)),
                 citations: vec!["x".into()],
+                with_extension: vec![],
             }),
         };
         let s = serde_json::to_string(&c).unwrap_or_default();
@@ -271,5 +325,53 @@ mod tests {
             ..c
         };
         assert!(validate_state(&bad).is_err());
+    }
+
+    #[test]
+    fn the_first_exposed_extension_expectation_applies_else_the_base_one() {
+        let e = StateExpect {
+            error: Some(GlError::InvalidEnum),
+            value: None,
+            citations: vec!["base".into()],
+            with_extension: vec![
+                ExtensionExpect {
+                    extension: "GL_ARB_shadow_ambient".into(),
+                    error: None,
+                    value: Some(StateValue::Float(0.0)),
+                    citations: vec!["arb".into()],
+                },
+                ExtensionExpect {
+                    extension: "GL_SGIX_shadow_ambient".into(),
+                    error: None,
+                    value: Some(StateValue::Float(0.0)),
+                    citations: vec!["sgix".into()],
+                },
+            ],
+        };
+        let none: [&str; 0] = [];
+        let base = e.for_extensions(&none);
+        assert_eq!(
+            (base.extension, base.error, base.citations),
+            (None, Some(GlError::InvalidEnum), &["base".to_string()][..])
+        );
+        let sgix = e.for_extensions(&["GL_ARB_shadow", "GL_SGIX_shadow_ambient"]);
+        assert_eq!(sgix.extension, Some("GL_SGIX_shadow_ambient"));
+        assert_eq!(sgix.value, Some(StateValue::Float(0.0)));
+        let both = e.for_extensions(&["GL_SGIX_shadow_ambient", "GL_ARB_shadow_ambient"]);
+        assert_eq!(both.extension, Some("GL_ARB_shadow_ambient"));
+        // The field is left out of the JSON when empty, so older fixtures read the same.
+        let plain = StateExpect {
+            with_extension: vec![],
+            ..e.clone()
+        };
+        let s = serde_json::to_string(&plain).unwrap_or_default();
+        assert_eq!(s, r#"{"error":"invalid_enum","citations":["base"]}"#);
+        let s = serde_json::to_string(&e).unwrap_or_default();
+        assert!(
+            s.contains(r#""with_extension":[{"extension":"GL_ARB_shadow_ambient","#),
+            "{s}"
+        );
+        let back: StateExpect = serde_json::from_str(&s).unwrap_or_else(|err| panic!("{err}"));
+        assert_eq!(back, e);
     }
 }

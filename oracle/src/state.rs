@@ -232,6 +232,94 @@ pub fn ctx_of(api: shadowcheck_model::ApiPath) -> Ctx {
     }
 }
 
+/// An extension that adds depth-comparison pnames to TexParameter / GetTexParameter: a context
+/// exposing it accepts them although the spec under test (GL 4.6) has none of them. Its rules are
+/// those of `spec`'s own table (`arb::params`, `sgix::params`), restricted to the pnames the
+/// extension itself adds (the other rows of those tables, e.g. ARB_shadow's two compare functions,
+/// are not the extension's and never replace the context's own).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PnameExtension {
+    /// The name in the extension string, e.g. `GL_ARB_shadow_ambient`.
+    pub name: &'static str,
+    /// The spec whose `params` table holds the extension's rules.
+    pub spec: Spec,
+    /// The pnames it adds.
+    pub pnames: &'static [u32],
+    /// The extension's sentence that adds them ("New Tokens").
+    pub accepts: &'static str,
+}
+
+/// The extensions that add a depth-comparison pname, in the order their expectations are listed
+/// (the first a context exposes applies; for 0x80BF both ambient extensions agree: issue 6 of
+/// ARB_shadow_ambient makes TEXTURE_COMPARE_FAIL_VALUE_ARB "an alias for GL_SHADOW_AMBIENT_SGIX").
+///
+/// Only compatibility contexts can expose them ([`extension_ctx`]).
+pub const PNAME_EXTENSIONS: &[PnameExtension] = &[
+    // ARB_shadow_ambient, New Tokens: "Accepted by the <pname> parameter of TexParameterf,
+    // TexParameteri, TexParameterfv, TexParameteriv, GetTexParameterfv, and GetTexParameteriv:
+    // TEXTURE_COMPARE_FAIL_VALUE_ARB 0x80BF"; §3.8.4 (table 3.19): "float, any value in [0, 1]",
+    // "The value set by TEXTURE_COMPARE_FAIL_VALUE_ARB is clamped to lie in [0, 1]"; Errors:
+    // "None."; New State: initial 0.0. The rules: `arb::params(Spec::ArbAmbient, ..)`.
+    PnameExtension {
+        name: "GL_ARB_shadow_ambient",
+        spec: Spec::ArbAmbient,
+        pnames: &[TEXTURE_COMPARE_FAIL_VALUE_ARB],
+        accepts: "ARB_shadow_ambient, New Tokens: \"Accepted by the <pname> parameter of TexParameterf, TexParameteri, TexParameterfv, TexParameteriv, GetTexParameterfv, and GetTexParameteriv: TEXTURE_COMPARE_FAIL_VALUE_ARB 0x80BF\"",
+    },
+    // SGIX_shadow, New Tokens: "Accepted by the <pname> parameter of TexParameterf,
+    // TexParameteri, TexParameterfv, TexParameteriv, GetTexParameterfv, and GetTexParameteriv, with
+    // the <pname> parameter of TRUE or FALSE: TEXTURE_COMPARE_SGIX" and "...:
+    // TEXTURE_COMPARE_OPERATOR_SGIX"; Table 3.8: "TEXTURE_COMPARE_SGIX boolean TRUE or FALSE",
+    // "TEXTURE_COMPARE_OPERATOR_SGIX integer TEXTURE_LEQUAL_R_SGIX, TEXTURE_GEQUAL_R_SGIX";
+    // Errors: "INVALID_OPERATION is generated if TexParameter[if] parameter <pname> is
+    // TEXTURE_COMPARE_OPERATOR_SGIX and parameter <param> is not TEXTURE_LEQUAL_R_SGIX,or
+    // TEXTURE_GEQUAL_R_SGIX"; New State: initial False, TEXTURE_LEQUAL_R_SGIX. The rules:
+    // `sgix::params(Spec::Sgix, ..)`.
+    PnameExtension {
+        name: "GL_SGIX_shadow",
+        spec: Spec::Sgix,
+        pnames: &[TEXTURE_COMPARE_SGIX, TEXTURE_COMPARE_OPERATOR_SGIX],
+        accepts: "SGIX_shadow, New Tokens: \"Accepted by the <pname> parameter of TexParameterf, TexParameteri, TexParameterfv, TexParameteriv, GetTexParameterfv, and GetTexParameteriv\": TEXTURE_COMPARE_SGIX, TEXTURE_COMPARE_OPERATOR_SGIX",
+    },
+    // SGIX_shadow_ambient, New Tokens: "Accepted by the <pname> parameter of TexParameterf,
+    // TexParameteri, TexParameterfv, TexParameteriv, GetTexParameterfv, and GetTexParameteriv:
+    // SHADOW_AMBIENT_SGIX 0x80BF"; Notes: "When SHADOW_AMBIENT_SGIX is set, the <param> value is
+    // clamped to the range [0.0, 1.0]"; Errors: "None"; New State: initial 0.0. The rules:
+    // `sgix::params(Spec::SgixAmbient, ..)`.
+    PnameExtension {
+        name: "GL_SGIX_shadow_ambient",
+        spec: Spec::SgixAmbient,
+        pnames: &[SHADOW_AMBIENT_SGIX],
+        accepts: "SGIX_shadow_ambient, New Tokens: \"Accepted by the <pname> parameter of TexParameterf, TexParameteri, TexParameterfv, TexParameteriv, GetTexParameterfv, and GetTexParameteriv: SHADOW_AMBIENT_SGIX 0x80BF\"",
+    },
+];
+
+/// Whether a context of kind `ctx` can expose the extensions of [`PNAME_EXTENSIONS`]:
+/// compatibility contexts only. ARB_shadow_ambient is "written against the OpenGL 1.3
+/// Specification" and requires ARB_shadow and ARB_depth_texture, SGIX_shadow and
+/// SGIX_shadow_ambient amend the OpenGL 1.0 Table 3.8: they modify the fixed-function-era texture
+/// parameter table that the compatibility profile keeps (GL 4.6 compatibility Table 8.25, with
+/// DEPTH_TEXTURE_MODE), and say nothing of a core profile, whose parameter list is closed (GL 4.6
+/// core §8.10, Table 8.17: "An INVALID_ENUM error is generated if pname is not one of the
+/// parameter names in table 8.17"). OpenGL ES has its own extensions (EXT_shadow_samplers); none of
+/// these is an OpenGL ES extension. So a core or ES context that accepts these pnames is judged
+/// against its spec alone, whatever its extension string says.
+pub fn extension_ctx(ctx: Ctx) -> bool {
+    ctx == Ctx::Compat
+}
+
+/// The extensions that could make `pname` exist in a `ctx` context of `spec` where the spec itself
+/// does not define it (none where it does: the spec's own rule stands).
+pub fn pname_extensions(spec: Spec, ctx: Ctx, pname: u32) -> Vec<&'static PnameExtension> {
+    if !extension_ctx(ctx) || param(spec, ctx, pname).is_ok() {
+        return Vec::new();
+    }
+    PNAME_EXTENSIONS
+        .iter()
+        .filter(|e| e.pnames.contains(&pname))
+        .collect()
+}
+
 /// GL 4.6 §2.3.1 (ES 3.2 §2.3.1 alike), the rule for every error below.
 pub const ERROR_IGNORED: &str = "GL 4.6 §2.3.1: \"the command which generates the error is ignored so that it has no effect on GL state\"";
 /// GL 4.6 §8.10 Errors (ES 3.2 §8.10 alike): a pname the context does not have.
@@ -257,52 +345,91 @@ fn error_to_model(e: GlErrorKind) -> shadowcheck_model::GlError {
     }
 }
 
+/// What `call` on `pname` leaves under the table of `spec` in `ctx` (the pname must exist there):
+/// the error, the value then read back (stored, or initial after an error) and the citations.
+fn expect_call(
+    spec: Spec,
+    ctx: Ctx,
+    prm: Param,
+    call: shadowcheck_model::StateCall,
+) -> (Option<GlErrorKind>, Stored, Vec<String>) {
+    use shadowcheck_model::StateCall;
+    let mut citations = vec![format!("{}: {}", prm.name, prm.cite)];
+    let v = match call {
+        StateCall::Initial => return (None, prm.default, citations),
+        StateCall::SetFloat(f) => Value::Float(f as f64),
+        StateCall::SetInt(i) => Value::Int(i as i64),
+    };
+    match set_param(spec, ctx, prm.pname, v) {
+        Ok(s) => (None, s, citations),
+        Err(e) => {
+            if matches!(prm.kind, ParamKind::Enum(_, GlErrorKind::InvalidEnum)) {
+                citations.push(VALUE_ILLEGAL.into());
+            }
+            citations.push(ERROR_IGNORED.into());
+            (Some(e), prm.default, citations)
+        }
+    }
+}
+
+/// The single context kind of a state case's API paths.
+fn case_ctx(case: &shadowcheck_model::StateCase) -> Result<Ctx, String> {
+    let ctxs: Vec<Ctx> = case.api.iter().map(|a| ctx_of(*a)).collect();
+    match ctxs.first() {
+        Some(c) if ctxs.iter().all(|d| d == c) => Ok(*c),
+        _ => Err("a state case needs API paths of exactly one context kind".into()),
+    }
+}
+
+/// Whether a state case on `pname` reads the value back after its call: wherever the pname exists
+/// under `spec` in `ctx` or an extension the context may expose adds it ([`pname_extensions`]).
+pub fn reads_back(spec: Spec, ctx: Ctx, pname: u32) -> bool {
+    param(spec, ctx, pname).is_ok() || !pname_extensions(spec, ctx, pname).is_empty()
+}
+
 /// The oracle's expectation of a state case on its (single) context kind: the error of the call
 /// and the value GetTexParameter reads afterwards (the stored value, or the initial one after an
-/// error). `Err` when the case names no API path or several of different context kinds.
+/// error). Where the spec lacks the pname but an extension of [`PNAME_EXTENSIONS`] adds it, the
+/// expectation on a context exposing that extension is listed beside the base one
+/// (`with_extension`), from the extension's own rules. `Err` when the case names no API path or
+/// several of different context kinds.
 pub fn expect_state(
     case: &shadowcheck_model::StateCase,
 ) -> Result<shadowcheck_model::StateExpect, String> {
-    use shadowcheck_model::{StateCall, StateExpect};
-    let ctxs: Vec<Ctx> = case.api.iter().map(|a| ctx_of(*a)).collect();
-    let ctx = match ctxs.first() {
-        Some(c) if ctxs.iter().all(|d| d == c) => *c,
-        _ => return Err("a state case needs API paths of exactly one context kind".into()),
-    };
+    use shadowcheck_model::{ExtensionExpect, StateExpect};
+    let ctx = case_ctx(case)?;
     let pname = case.pname.gl();
     let Ok(prm) = param(case.spec, ctx, pname) else {
-        // Neither TexParameter nor GetTexParameter knows the pname: INVALID_ENUM, nothing stored.
+        // Neither TexParameter nor GetTexParameter knows the pname: INVALID_ENUM, nothing stored;
+        // unless the context exposes an extension that adds it, whose rules then apply.
+        let with_extension = pname_extensions(case.spec, ctx, pname)
+            .into_iter()
+            .filter_map(|ext| {
+                let prm = param(ext.spec, Ctx::Compat, pname).ok()?;
+                let (error, value, cites) = expect_call(ext.spec, Ctx::Compat, prm, case.call);
+                let mut citations = vec![ext.accepts.to_string()];
+                citations.extend(cites);
+                Some(ExtensionExpect {
+                    extension: ext.name.to_string(),
+                    error: error.map(error_to_model),
+                    value: case.read_back.then(|| to_model(value)),
+                    citations,
+                })
+            })
+            .collect();
         return Ok(StateExpect {
             error: Some(shadowcheck_model::GlError::InvalidEnum),
             value: None,
             citations: vec![PNAME_UNKNOWN.into(), ERROR_IGNORED.into()],
+            with_extension,
         });
     };
-    let mut citations = vec![format!("{}: {}", prm.name, prm.cite)];
-    let (error, value) = match case.call {
-        StateCall::Initial => (None, prm.default),
-        call => {
-            let v = match call {
-                StateCall::SetFloat(f) => Value::Float(f as f64),
-                StateCall::SetInt(i) => Value::Int(i as i64),
-                StateCall::Initial => Value::Int(0),
-            };
-            match set_param(case.spec, ctx, pname, v) {
-                Ok(s) => (None, s),
-                Err(e) => {
-                    if matches!(prm.kind, ParamKind::Enum(_, GlErrorKind::InvalidEnum)) {
-                        citations.push(VALUE_ILLEGAL.into());
-                    }
-                    citations.push(ERROR_IGNORED.into());
-                    (Some(error_to_model(e)), prm.default)
-                }
-            }
-        }
-    };
+    let (error, value, citations) = expect_call(case.spec, ctx, prm, case.call);
     Ok(StateExpect {
-        error,
+        error: error.map(error_to_model),
         value: case.read_back.then(|| to_model(value)),
         citations,
+        with_extension: Vec::new(),
     })
 }
 

@@ -21,7 +21,9 @@ pub struct Capabilities {
     /// needs one not listed is Skip. `None`: every feature.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub features: Option<Vec<String>>,
-    /// Extensions the implementation exposes (informational: reports show them).
+    /// Extensions the implementation exposes: reports show them, and a state case whose pname only
+    /// an extension defines is judged by that extension's rules where it is listed
+    /// (`StateExpect::with_extension`); empty (or absent): none.
     #[serde(default)]
     pub extensions: Vec<String>,
 }

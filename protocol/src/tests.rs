@@ -233,6 +233,7 @@ fn state_requests_and_answers_round_trip() {
             error: Some(GlError::InvalidEnum),
             value: Some(StateValue::Enum(0)),
             citations: vec![],
+            with_extension: vec![],
         }),
     };
     let mut buf = Vec::new();

@@ -170,6 +170,10 @@ faults! {
     WrongInitialCompareFunc = "wrong-initial-compare-func",
     /// An illegal enum value for a depth-comparison pname is stored instead of raising INVALID_ENUM.
     IllegalValueStored = "illegal-value-stored",
+    /// A pname an exposed extension adds (TEXTURE_COMPARE_FAIL_VALUE_ARB with ARB_shadow_ambient,
+    /// the SGIX_shadow pnames) rejected with INVALID_ENUM, as if the extension string did not list
+    /// the extension (seen only by a context that exposes it).
+    ExtensionPnameRejected = "extension-pname-rejected",
 }
 
 impl Fault {
@@ -178,7 +182,9 @@ impl Fault {
     pub fn is_state(self) -> bool {
         matches!(
             self,
-            Fault::WrongInitialCompareFunc | Fault::IllegalValueStored
+            Fault::WrongInitialCompareFunc
+                | Fault::IllegalValueStored
+                | Fault::ExtensionPnameRejected
         )
     }
 }

@@ -165,6 +165,17 @@ impl SoftUnit {
         tex_param::observe(self.spec, self.faults, case, api)
     }
 
+    /// The same on a context whose extension string lists `exposed`
+    /// ([`tex_param::STATE_EXTENSIONS`] add pnames on compatibility contexts).
+    pub fn tex_parameter_exposing(
+        &self,
+        case: &shadowcheck_model::StateCase,
+        api: ApiPath,
+        exposed: &[&str],
+    ) -> shadowcheck_model::StateObserved {
+        tex_param::observe_exposing(self.spec, self.faults, case, api, exposed)
+    }
+
     /// Converts the case's texture (allocates; see [`PreparedTexture::prepare_into`] to reuse).
     pub fn prepare_texture(&self, case: &Case) -> Result<PreparedTexture, SoftError> {
         PreparedTexture::new(&case.texture, self.faults)

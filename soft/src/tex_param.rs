@@ -53,10 +53,97 @@ fn table(spec: Spec, ctx: Context, pname: StatePname, faults: Faults) -> Option<
     })
 }
 
-/// One state case on a fresh texture object, in the context kind of `api`.
+/// The extensions the soft unit can expose on a compatibility context (only when asked:
+/// [`crate::SoftUnit::tex_parameter_exposing`]; the soft backend's hello lists none), each adding
+/// TexParameter pnames GL 4.6 lacks. Written from the extension texts:
+/// - ARB_shadow_ambient: TEXTURE_COMPARE_FAIL_VALUE_ARB (0x80BF) "float, any value in [0, 1]",
+///   "clamped to lie in [0, 1]", initial 0.0, no errors;
+/// - SGIX_shadow: TEXTURE_COMPARE_SGIX boolean, initially False; TEXTURE_COMPARE_OPERATOR_SGIX
+///   TEXTURE_LEQUAL_R_SGIX or TEXTURE_GEQUAL_R_SGIX, initially TEXTURE_LEQUAL_R_SGIX, any other
+///   value INVALID_OPERATION (its Errors section);
+/// - SGIX_shadow_ambient: SHADOW_AMBIENT_SGIX (the same 0x80BF) clamped to [0.0, 1.0], initial 0.0.
+pub const STATE_EXTENSIONS: &[&str] = &[
+    "GL_ARB_shadow_ambient",
+    "GL_SGIX_shadow",
+    "GL_SGIX_shadow_ambient",
+];
+
+/// A state case on a pname that an exposed extension adds, on a compatibility context of a spec
+/// whose own table lacks it; `None` when no exposed extension adds it.
+fn observe_extension(case: &StateCase, exposed: &[&str], faults: Faults) -> Option<StateObserved> {
+    let has = |e: &str| exposed.contains(&e);
+    let as_int = |call: StateCall| match call {
+        StateCall::SetInt(i) => i as i64,
+        StateCall::SetFloat(f) => f.round() as i64,
+        StateCall::Initial => 0,
+    };
+    let (error, value) = match case.pname {
+        StatePname::CompareFailValue
+            if has("GL_ARB_shadow_ambient") || has("GL_SGIX_shadow_ambient") =>
+        {
+            let v = match case.call {
+                StateCall::Initial => 0.0,
+                StateCall::SetInt(i) => (i as f32).clamp(0.0, 1.0),
+                StateCall::SetFloat(f) => f.clamp(0.0, 1.0),
+            };
+            (None, StateValue::Float(v))
+        }
+        StatePname::CompareSgix if has("GL_SGIX_shadow") => {
+            let v = match case.call {
+                StateCall::Initial => false,
+                StateCall::SetInt(i) => i != 0,
+                StateCall::SetFloat(f) => f != 0.0,
+            };
+            (None, StateValue::Bool(v))
+        }
+        StatePname::CompareOperatorSgix if has("GL_SGIX_shadow") => {
+            const LEQUAL_R: u32 = 0x819C;
+            const GEQUAL_R: u32 = 0x819D;
+            match case.call {
+                StateCall::Initial => (None, StateValue::Enum(LEQUAL_R)),
+                call => match u32::try_from(as_int(call)) {
+                    Ok(e) if e == LEQUAL_R || e == GEQUAL_R => (None, StateValue::Enum(e)),
+                    _ => (Some(GlError::InvalidOperation), StateValue::Enum(LEQUAL_R)),
+                },
+            }
+        }
+        _ => return None,
+    };
+    if faults.has(Fault::ExtensionPnameRejected) {
+        return Some(StateObserved {
+            error: Some(GlError::InvalidEnum),
+            other_error: None,
+            value: None,
+        });
+    }
+    Some(StateObserved {
+        error,
+        other_error: None,
+        value: case.read_back.then_some(value),
+    })
+}
+
+/// One state case on a fresh texture object, in the context kind of `api`, exposing no extension.
 pub fn observe(spec: Spec, faults: Faults, case: &StateCase, api: ApiPath) -> StateObserved {
+    observe_exposing(spec, faults, case, api, &[])
+}
+
+/// One state case on a fresh texture object, in the context kind of `api`, whose extension string
+/// lists `exposed` (those of [`STATE_EXTENSIONS`] count, on compatibility contexts only).
+pub fn observe_exposing(
+    spec: Spec,
+    faults: Faults,
+    case: &StateCase,
+    api: ApiPath,
+    exposed: &[&str],
+) -> StateObserved {
     let ctx = context(api);
     let Some((initial, legal)) = table(spec, ctx, case.pname, faults) else {
+        if ctx == Context::Compat {
+            if let Some(o) = observe_extension(case, exposed, faults) {
+                return o;
+            }
+        }
         return StateObserved {
             error: Some(GlError::InvalidEnum),
             other_error: None,

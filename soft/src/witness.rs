@@ -418,7 +418,9 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         }
         // TexParameter state faults: no lookup shows them (a case's sampler state is always set
         // explicitly); their witnesses are state cases (`tex_param`). A plain lookup here.
-        Fault::WrongInitialCompareFunc | Fault::IllegalValueStored => gl(vec![65535], 1, C::Lequal),
+        Fault::WrongInitialCompareFunc
+        | Fault::IllegalValueStored
+        | Fault::ExtensionPnameRejected => gl(vec![65535], 1, C::Lequal),
     };
     let api = c.api[0];
     (c, api)

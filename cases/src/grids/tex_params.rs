@@ -3,7 +3,10 @@
 //! depth-comparison pname of `shadowcheck_model::StatePname`: its initial value, every candidate
 //! value set through TexParameteri (legal ones stored, illegal ones an error with the state
 //! unchanged), TexParameterf on the float pname, and the pnames the context does not have
-//! (INVALID_ENUM on GetTexParameter and TexParameter). On 2D textures all of that; on the other
+//! (INVALID_ENUM on GetTexParameter and TexParameter). A pname the spec lacks but an extension a
+//! compatibility context may expose adds (ARB_shadow_ambient, SGIX_shadow, SGIX_shadow_ambient) gets
+//! every call of a pname that exists, read back: INVALID_ENUM without the extension, the
+//! extension's rules with it (`StateExpect::with_extension`). On 2D textures all of that; on the other
 //! targets the context has, the initial values and one legal value of TEXTURE_COMPARE_MODE and
 //! _FUNC (the state is per texture object, whatever the target).
 //!
@@ -70,7 +73,7 @@ fn calls(pname: StatePname) -> Vec<StateCall> {
 pub fn cases_of(spec: Spec) -> Vec<StateCase> {
     let mut out = Vec::new();
     for &(s, ctx, api, tag) in CONTEXTS.iter().filter(|c| c.0 == spec) {
-        let mut push = |target: Target, pname: StatePname, call: StateCall, exists: bool| {
+        let mut push = |target: Target, pname: StatePname, call: StateCall, read_back: bool| {
             out.push(StateCase {
                 id: format!(
                     "state/{}/{tag}/{}/{}/{}",
@@ -84,13 +87,15 @@ pub fn cases_of(spec: Spec) -> Vec<StateCase> {
                 target,
                 pname,
                 call,
-                read_back: exists,
+                read_back,
                 expect: None,
             })
         };
         for &pname in StatePname::ALL {
-            let exists = ostate::param(s, ctx, pname.gl()).is_ok();
-            if exists {
+            // A pname of this context, or one an extension the context may expose adds
+            // (`ostate::PNAME_EXTENSIONS`, compatibility only): every call, read back, so that a
+            // context exposing the extension is checked against the extension's rules.
+            if ostate::reads_back(s, ctx, pname.gl()) {
                 for call in calls(pname) {
                     push(Target::T2d, pname, call, true);
                 }

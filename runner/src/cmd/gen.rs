@@ -78,8 +78,8 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
             for (k, n) in cov.counts {
                 *coverage.counts.entry(k).or_default() += n;
             }
-            for (k, (n, exists)) in cov.state {
-                let e = coverage.state.entry(k).or_insert((0, exists));
+            for (k, (n, read_back, ext)) in cov.state {
+                let e = coverage.state.entry(k).or_insert((0, read_back, ext));
                 e.0 += n;
             }
             coverage.total += cov.total;

@@ -97,6 +97,9 @@ pub fn about(f: Fault) -> &'static str {
         F::IllegalValueStored => {
             "an illegal TexParameter enum value stored instead of INVALID_ENUM (GL 4.6 §8.10): seen by state cases"
         }
+        F::ExtensionPnameRejected => {
+            "a pname the exposed extension adds rejected with INVALID_ENUM (ARB_shadow_ambient / SGIX_shadow New Tokens): seen by state cases on a context exposing it"
+        }
         F::SwizzleIgnored => "TEXTURE_SWIZZLE_* not applied to the depth / shadow result",
         F::SwizzleBeforeCompare => {
             "swizzle applied to the stored depth before the comparison, not to Cb = (Rt,0,0,1) (a translation layer swizzling the texel)"

@@ -57,8 +57,11 @@ fn base(backend: &str, case: &StateCase, api: ApiPath, fixtures: Option<&str>) -
     }
 }
 
+/// The test results of `case`'s API paths, judged against the expectation that applies on a
+/// backend exposing `extensions` (its hello's `capabilities.extensions`).
 fn judge(
     backend: &str,
+    extensions: &[String],
     case: &StateCase,
     outcome: &CaseOutcome,
     duration: f64,
@@ -72,7 +75,9 @@ fn judge(
             let (o, reason) = match super::judge::path_answer(outcome, api) {
                 Err(settled) => settled,
                 Ok(ApiOutcome::Skip(m)) => (Outcome::Skip, Some(m.clone())),
-                Ok(ApiOutcome::State(obs)) => crate::state_verdict::judge_state(case, obs),
+                Ok(ApiOutcome::State(obs)) => {
+                    crate::state_verdict::judge_state(case, obs, extensions)
+                }
                 Ok(ApiOutcome::Rgba { .. }) => (
                     Outcome::Fail,
                     Some("the backend answered a state case with a lookup result".into()),
@@ -94,6 +99,9 @@ pub(super) fn run_states(
     timing: &mut Timing,
 ) {
     let name = backend.name().to_string();
+    // The extensions the backend reported: they decide which of a state case's expectations
+    // applies (`StateExpect::with_extension`).
+    let extensions = backend.capabilities().extensions.clone();
     let lists = &ctx.settings.lists;
     let file_of = |l: &LoadedState| {
         ctx.settings
@@ -165,7 +173,14 @@ pub(super) fn run_states(
             .iter()
             .zip(outcomes.iter().chain(std::iter::repeat(&missing)))
         {
-            for mut r in judge(&name, case, outcome, per_case, fixtures.as_deref()) {
+            for mut r in judge(
+                &name,
+                &extensions,
+                case,
+                outcome,
+                per_case,
+                fixtures.as_deref(),
+            ) {
                 let (status, note) = ctx.settings.lists.status(&name, &r.test, r.outcome);
                 r.status = status;
                 if let Some(n) = note {
