@@ -150,6 +150,11 @@ faults! {
     /// texel's (Rt, 0, 0, 1) before its R component is gathered (GL 4.6 §8.14.2) — a unit that
     /// routes textureGather around the swizzle stage, or follows only GLSL 4.60 §8.9.4's wording.
     GatherIgnoresSwizzle = "gather-ignores-swizzle",
+    /// Shadow gather with the whole swizzle applied to the gathered vector, as to a filtered
+    /// colour (component i = the swizzle's i-th pick of (τi0j1, τi1j1, τi1j0, τi0j0)), instead of
+    /// TEXTURE_SWIZZLE_R to each texel's (Rt, 0, 0, 1): a unit that runs its ordinary post-filter
+    /// swizzle on the result of textureGather.
+    GatherSwizzlesVector = "gather-swizzles-vector",
     /// The swizzle ignored on the fixed-function / GLSL 1.20 paths (compatibility): the
     /// DEPTH_TEXTURE_MODE vec4 returned as is, as by a driver that swizzles only in its GLSL
     /// 1.30+ sampler code.

@@ -184,5 +184,8 @@ pub fn gather_swizzle(s: &Sampler, results: [f32; 4], faults: Faults) -> [f32; 4
     if faults.has(Fault::SwizzleIgnored) || faults.has(Fault::GatherIgnoresSwizzle) {
         return results;
     }
+    if faults.has(Fault::GatherSwizzlesVector) {
+        return sw.map(|c| c.pick(results, 0.0, 1.0));
+    }
     results.map(|rt| sw[0].pick([rt, 0.0, 0.0, 1.0], 0.0, 1.0))
 }

@@ -389,6 +389,14 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
             ]);
             c
         }
+        Fault::GatherSwizzlesVector => {
+            // `gather4` compares to (1, 1, 0, 0); TEXTURE_SWIZZLE_R = ZERO gives 0 for every texel
+            // (GL 4.6 §8.14.2), the unswizzled reading (1, 1, 0, 0). The faulty unit swizzles the
+            // gathered vector by (ZERO, RED, ONE, GREEN): (0, 1, 1, 1), neither reading.
+            let mut c = gather4();
+            c.sampler.swizzle = Some([Swizzle::Zero, Swizzle::Red, Swizzle::One, Swizzle::Green]);
+            c
+        }
         Fault::CompatSwizzleDropped => {
             // Fixed function, DEPTH_TEXTURE_MODE ALPHA, the texel passes: Table 16.1 gives
             // (0, 0, 0, 1); swizzle (ALPHA, ONE, RED, ZERO) makes it (1, 1, 0, 0) (§15.2.1). The
@@ -475,6 +483,7 @@ mod tests {
         assert_eq!(r(Fault::SamplerObjectIgnored)[0], 0.0);
         // Gather swizzle, compatibility swizzle, sampler object on a rectangle (§8.14.2, §16.1, §8.2).
         assert_eq!(r(Fault::GatherIgnoresSwizzle), [1.0; 4]);
+        assert_eq!(r(Fault::GatherSwizzlesVector), [0.0; 4]);
         assert_eq!(r(Fault::CompatSwizzleDropped), [1.0, 1.0, 0.0, 0.0]);
         assert_eq!(r(Fault::SamplerObjectRectComplete), [0.0, 0.0, 0.0, 1.0]);
     }

@@ -149,7 +149,11 @@ fn swizzles(d: &SpecDims, targets: &[Target]) -> Vec<Draft> {
                 1.75,
                 2.25,
                 r,
-                format!("swizzle={}/uv=1.75_2.25/ref={}", key.join("_"), build::num(r)),
+                format!(
+                    "swizzle={}/uv=1.75_2.25/ref={}",
+                    key.join("_"),
+                    build::num(r)
+                ),
             );
             x.sampler.swizzle = Some(sw);
             out.push(x);

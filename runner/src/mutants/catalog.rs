@@ -113,6 +113,9 @@ pub fn about(f: Fault) -> &'static str {
         F::GatherIgnoresSwizzle => {
             "shadow gather returns the unswizzled comparisons, not the post-swizzle R of each texel's (Rt,0,0,1) (GL 4.6 §8.14.2)"
         }
+        F::GatherSwizzlesVector => {
+            "the whole swizzle applied to the gathered vector as to a filtered colour, not TEXTURE_SWIZZLE_R to each texel's (Rt,0,0,1) (GL 4.6 §8.14.2)"
+        }
         F::CompatSwizzleDropped => {
             "the swizzle ignored on the fixed-function / GLSL 1.20 paths (the Table 16.1 vec4 returned unswizzled)"
         }
@@ -140,6 +143,13 @@ pub fn unobservable(f: Fault) -> Option<&'static str> {
              texts: compatibility §11.1.3.5 returns Cs[0] of Cb = (Rt, 0, 0, 1) (r), while §8.23.1 with Table 16.1 assigns \
              r to At for ALPHA, so Cs[0] = 0; the oracle accepts both (contradiction `compat-float-alpha`), so returning 0 \
              is one of the two conforming readings"
+        }
+        Fault::GatherIgnoresSwizzle => {
+            "a shadow gather's swizzle has two readings in the texts: GL 4.6 / ES 3.2 §8.14.2 gathers each texel's \
+             post-swizzle R component (Figure 8.4), while GLSL 4.60 §8.9.4 says each comparison's result is returned \
+             \"in the appropriate component of the result vector\"; the oracle accepts both (contradiction \
+             `gather-swizzle`), so the unswizzled comparisons are one of the two conforming readings (the fault \
+             `gather-swizzles-vector`, which neither reading allows, stands for a defect here)"
         }
         Fault::StencilCompared => {
             "a stencil read with TEXTURE_COMPARE_MODE not NONE has undefined results: GL 4.6 §11.1.3.5 \"the results of a \
