@@ -47,6 +47,10 @@ pub const DEFAULT_MIN_UNITS: usize = 3;
 pub struct Lineage {
     pub prefix: &'static str,
     pub unit: &'static str,
+    /// The API front end above the unit (the code that validates state, decides completeness,
+    /// routes DEPTH_TEXTURE_MODE and runs fixed function): `mesa` for every Mesa driver, zink on
+    /// any Vulkan driver included; `""` where there is none (a Vulkan driver driven directly).
+    pub front_end: &'static str,
     /// Why the backend samples with that unit's code.
     pub why: &'static str,
 }
@@ -66,56 +70,67 @@ pub const LINEAGE: &[Lineage] = &[
     Lineage {
         prefix: "soft",
         unit: "soft",
+        front_end: "soft",
         why: "the project's own texture unit (soft/), written from the specifications",
     },
     Lineage {
         prefix: "egl:llvmpipe",
         unit: "gallivm",
+        front_end: "mesa",
         why: "llvmpipe samples with gallivm's code generator (lp_bld_sample)",
     },
     Lineage {
         prefix: "osmesa:llvmpipe",
         unit: "gallivm",
+        front_end: "mesa",
         why: "llvmpipe, only the context comes from OSMesa",
     },
     Lineage {
         prefix: "egl:zink",
         unit: "gallivm",
+        front_end: "mesa",
         why: "zink over lavapipe: lavapipe is llvmpipe's Vulkan driver and shares gallivm's sampler",
     },
     Lineage {
         prefix: "vk:lavapipe",
         unit: "gallivm",
+        front_end: "",
         why: "lavapipe shares llvmpipe's gallivm sampler",
     },
     Lineage {
         prefix: "egl:softpipe",
         unit: "softpipe",
+        front_end: "mesa",
         why: "softpipe's own C sampler (sp_tex_sample.c)",
     },
     Lineage {
         prefix: "osmesa:softpipe",
         unit: "softpipe",
+        front_end: "mesa",
         why: "softpipe, only the context comes from OSMesa",
     },
     Lineage {
         prefix: "egl:swiftshader",
         unit: "swiftshader",
+        front_end: "swiftshader-gles",
         why: "SwiftShader's own OpenGL ES driver",
     },
     Lineage {
         prefix: "egl:zink+swiftshader",
         unit: "swiftshader",
+        front_end: "mesa",
         why: "zink over SwiftShader's Vulkan driver, whose sampler descends from the same code as its GLES driver",
     },
     Lineage {
         prefix: "vk:swiftshader",
         unit: "swiftshader",
+        front_end: "",
         why: "SwiftShader's Vulkan driver, whose sampler descends from the same code as its GLES driver",
     },
     Lineage {
         prefix: "webgl:chromium",
         unit: "swiftshader",
+        front_end: "angle",
         why: "ANGLE over SwiftShader: ANGLE translates, the lookups are SwiftShader's",
     },
 ];
@@ -138,6 +153,15 @@ pub fn lineage_of(backend: &str) -> Option<&'static Lineage> {
 /// The texture unit `backend` samples with: its lineage's unit, else the backend itself.
 pub fn unit_of(backend: &str) -> String {
     lineage_of(backend).map_or_else(|| backend.to_string(), |l| l.unit.to_string())
+}
+
+/// The API front end `backend` runs under: its lineage's, else the backend itself (unknown code
+/// is assumed to have a front end of its own).
+pub fn front_end_of(backend: &str) -> String {
+    match lineage_of(backend) {
+        Some(l) if !l.front_end.is_empty() => l.front_end.to_string(),
+        _ => backend.to_string(),
+    }
 }
 
 /// What to look for.
@@ -208,6 +232,12 @@ pub struct Entry {
     /// The channels compared (`rgba`, or those the layout does not mark unused).
     pub compared: String,
     pub units: Vec<UnitSupport>,
+    /// The API front ends of the backends that returned the answer. One front end for several
+    /// units (Mesa's, under llvmpipe, softpipe and zink on SwiftShader) means the units are
+    /// independent in their sampling only: completeness, state validation, DEPTH_TEXTURE_MODE
+    /// routing and fixed function are one piece of code, so a shared defect there is the first
+    /// suspect, before the oracle.
+    pub front_ends: Vec<String>,
     /// What the oracle expected, as the failing record holds it.
     pub expected: Option<ExpectedSummary>,
     /// The sentences the oracle used.
@@ -384,6 +414,12 @@ fn entries_of(rs: &[&TestResult], min_units: usize) -> Vec<Entry> {
                 .zip(mask)
                 .filter(|(_, m)| *m)
                 .map(|(c, _)| *c)
+                .collect(),
+            front_ends: members
+                .iter()
+                .map(|&j| front_end_of(&rs[j].backend))
+                .collect::<BTreeSet<_>>()
+                .into_iter()
                 .collect(),
             units: support
                 .into_iter()
@@ -570,7 +606,7 @@ pub fn markdown(q: &Queue) -> String {
         q.classes.len()
     ));
     line("## Units (backends that share texture-unit code count once)\n".into());
-    line("| unit | backends | why they share code |\n|---|---|---|".into());
+    line("| unit | backends | API front ends | why they share code |\n|---|---|---|---|".into());
     let mut units: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
     for (b, u) in &q.backends {
         units.entry(u).or_default().push(b);
@@ -587,26 +623,41 @@ pub fn markdown(q: &Queue) -> String {
             why.join("; ")
         };
         let names: Vec<String> = bs.iter().map(|b| format!("`{}`", cell(b))).collect();
+        let fronts: BTreeSet<String> = bs.iter().map(|b| front_end_of(b)).collect();
+        let fronts: Vec<String> = fronts.into_iter().collect();
         line(format!(
-            "| {} | {} | {} |",
+            "| {} | {} | {} | {} |",
             cell(u),
             names.join(", "),
+            cell(&fronts.join(", ")),
             cell(&why)
         ));
     }
-    line(String::new());
+    line(
+        "\nUnits are independent in their sampling code. Several Mesa drivers share Mesa's GL front \
+         end (state validation, completeness, DEPTH_TEXTURE_MODE routing, fixed function): an \
+         entry whose answer comes through one front end only (column `front ends`) is first a \
+         suspected shared front-end defect, then a suspected oracle error.\n"
+            .into(),
+    );
     if q.is_empty() {
         line("No test on the queue.".into());
         return o;
     }
     line("## Classes\n".into());
-    line("| # | grid family | tests | citations |\n|---:|---|---:|---|".into());
+    line("| # | grid family | tests | front ends | citations |\n|---:|---|---:|---|---|".into());
     for (i, c) in q.classes.iter().enumerate() {
+        let fronts: BTreeSet<&str> = c
+            .tests
+            .iter()
+            .flat_map(|e| e.front_ends.iter().map(|f| f.as_str()))
+            .collect();
         line(format!(
-            "| {} | `{}` | {} | {} |",
+            "| {} | `{}` | {} | {} | {} |",
             i + 1,
             cell(&c.family),
             c.tests.len(),
+            cell(&fronts.into_iter().collect::<Vec<_>>().join(", ")),
             cell(&citations_brief(&c.citations))
         ));
     }
@@ -634,7 +685,7 @@ pub fn markdown(q: &Queue) -> String {
                 "\n(citations from the case in {f}; the records had none)"
             ));
         }
-        line("\n| test | agreed answer (r, g, b, a) | units: backends | oracle expected |\n|---|---|---|---|".into());
+        line("\n| test | agreed answer (r, g, b, a) | units: backends | front ends | oracle expected |\n|---|---|---|---|---|".into());
         for e in &c.tests {
             let units: Vec<String> = e
                 .units
@@ -653,10 +704,11 @@ pub fn markdown(q: &Queue) -> String {
                 })
                 .collect();
             line(format!(
-                "| `{}` | {} | {} | {} |",
+                "| `{}` | {} | {} | {} | {} |",
                 cell(&e.test),
                 rgba_text(&e.answer, &e.compared),
                 units.join("<br>"),
+                cell(&e.front_ends.join(", ")),
                 cell(&expected_text(&e.expected))
             ));
         }

@@ -303,3 +303,43 @@ fn lineage_maps_shared_samplers_to_one_unit_and_the_rest_to_themselves() {
         "arb/rect/d32/linear/gequal/rand/seed=*/*"
     );
 }
+
+#[test]
+fn front_ends_say_which_units_share_the_gl_front_end() {
+    for (b, f) in [
+        ("egl:llvmpipe:core", "mesa"),
+        ("osmesa:softpipe:compat", "mesa"),
+        ("egl:zink:es3", "mesa"),
+        ("egl:zink+swiftshader:compat", "mesa"),
+        ("egl:swiftshader:es3", "swiftshader-gles"),
+        ("webgl:chromium", "angle"),
+        ("soft", "soft"),
+        // A Vulkan driver driven directly has no GL front end: its own name stands for it.
+        ("vk:lavapipe", "vk:lavapipe"),
+        ("exec:python3 x.py", "exec:python3 x.py"),
+    ] {
+        assert_eq!(front_end_of(b), f, "{b}");
+    }
+}
+
+#[test]
+fn an_entry_names_the_front_ends_its_answer_came_through() {
+    let wrong = [1.0, 0.0, 0.0, 1.0];
+    // Three units, one GL front end (Mesa's): the entry says so.
+    let mesa = vec![
+        rec("egl:llvmpipe:core", Outcome::Fail, wrong),
+        rec("egl:softpipe:core", Outcome::Fail, wrong),
+        rec("egl:zink+swiftshader:core", Outcome::Fail, wrong),
+    ];
+    let q = queue_of("front-mesa", &[mesa.clone()], DEFAULT_MIN_UNITS);
+    assert_eq!(q.classes[0].tests[0].front_ends, vec!["mesa".to_string()]);
+    assert!(markdown(&q).contains("| mesa |"));
+    // SwiftShader's own GLES joins: two front ends.
+    let mut two = mesa;
+    two.push(rec("egl:swiftshader:es3", Outcome::Fail, wrong));
+    let q = queue_of("front-two", &[two], DEFAULT_MIN_UNITS);
+    assert_eq!(
+        q.classes[0].tests[0].front_ends,
+        vec!["mesa".to_string(), "swiftshader-gles".to_string()]
+    );
+}

@@ -42,11 +42,13 @@ fn every_fault_is_described_and_only_the_spec_open_faults_are_called_unobservabl
         .collect();
     // A NaN reference (no ordered result) and a stencil read with the comparison on (§11.1.3.5:
     // undefined): no conforming result tells the faulty unit from the correct one.
-    // A GLSL 1.30 ALPHA-mode shadow lookup has two accepted readings (r or 0).
+    // A GLSL 1.30 ALPHA-mode shadow lookup has two accepted readings (r or 0), and so has a
+    // swizzled shadow gather (the post-swizzle R of each texel, or the comparisons unswizzled).
     let mut want = vec![
         Fault::NanOrderedNotequal,
         Fault::StencilCompared,
         Fault::AlphaModeZeroOnGlsl130,
+        Fault::GatherIgnoresSwizzle,
     ];
     want.sort_by_key(|f| Fault::ALL.iter().position(|x| x == f));
     assert_eq!(un, want);
