@@ -331,7 +331,7 @@ fn an_entry_names_the_front_ends_its_answer_came_through() {
         rec("egl:softpipe:core", Outcome::Fail, wrong),
         rec("egl:zink+swiftshader:core", Outcome::Fail, wrong),
     ];
-    let q = queue_of("front-mesa", &[mesa.clone()], DEFAULT_MIN_UNITS);
+    let q = queue_of("front-mesa", std::slice::from_ref(&mesa), DEFAULT_MIN_UNITS);
     assert_eq!(q.classes[0].tests[0].front_ends, vec!["mesa".to_string()]);
     assert!(markdown(&q).contains("| mesa |"));
     // SwiftShader's own GLES joins: two front ends.
