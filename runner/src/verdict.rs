@@ -73,6 +73,29 @@ fn channel_misses(
     out.join(", ")
 }
 
+/// For a Fail on a path whose layout has other readings ([`Expectation::other_layouts`]): what each
+/// of them found wrong too, e.g. `; under the other reading `gather-swizzle` (g0,g1,g2,g3): ...`.
+fn other_readings_missed(
+    e: &Expectation,
+    api: shadowcheck_model::ApiPath,
+    profile: Profile,
+    rgba: [f64; 4],
+) -> String {
+    e.other_layouts
+        .get(&api)
+        .into_iter()
+        .flatten()
+        .map(|o| {
+            format!(
+                "; under the other reading `{}` ({}): {}",
+                o.reading,
+                layout_text(&o.layout),
+                channel_misses(e, &o.layout, profile, rgba)
+            )
+        })
+        .collect()
+}
+
 fn summary(e: &Expectation, layout: &[Channel; 4], profile: Profile) -> ExpectedSummary {
     let get = |p| {
         e.accept
@@ -239,8 +262,9 @@ pub fn judge(
                 )
             }
             _ => format!(
-                "outside the {profile} acceptance set: {}",
-                channel_misses(&expect, &layout, profile, rgba)
+                "outside the {profile} acceptance set: {}{}",
+                channel_misses(&expect, &layout, profile, rgba),
+                other_readings_missed(&expect, api, profile, rgba)
             ),
         });
         let ev = match evaluation {
@@ -416,6 +440,35 @@ mod tests {
         assert_eq!(
             judge(&c, ApiPath::FixedFunction, [0.0; 4], None).outcome,
             Outcome::Skip
+        );
+    }
+
+    #[test]
+    fn either_reading_of_a_two_reading_layout_passes_and_a_fail_names_both() {
+        // The case's expectation with a second reading on `core`: (r,-,-,-) or (0,0,0,0), as a
+        // swizzled gather's or a compatibility depth read's readings are (`other_layouts`).
+        let mut c = case(true);
+        if let Some(e) = c.expect.as_mut() {
+            e.other_layouts.insert(
+                ApiPath::GlslCore,
+                vec![shadowcheck_model::OtherLayout {
+                    reading: "gather-swizzle".into(),
+                    layout: [Channel::One; 4],
+                }],
+            );
+        }
+        let judge_core = |rgba| judge(&c, ApiPath::GlslCore, rgba, None);
+        assert_eq!(judge_core([0.0, 7.0, 7.0, 7.0]).outcome, Outcome::Pass);
+        assert_eq!(judge_core([1.0; 4]).outcome, Outcome::Pass);
+        let f = judge_core([0.5, 1.0, 1.0, 1.0]);
+        assert_eq!(f.outcome, Outcome::Fail);
+        let why = f.reason.unwrap_or_default();
+        assert!(
+            why.contains("r = 0.5 (expected r in [0, 0.1])")
+                && why.contains(
+                    "under the other reading `gather-swizzle` (1,1,1,1): r = 0.5 (expected 1)"
+                ),
+            "{why}"
         );
     }
 
