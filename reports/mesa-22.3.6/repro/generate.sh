@@ -22,3 +22,7 @@ gen cause9-linear-layer-tie-core egl:llvmpipe:core 'gl46/2darray/d24/linear/lequ
 gen i16-cause7-swizzle-alpha egl:llvmpipe:compat 'gl46/2d/d24/nearest/none/swizzle/swizzle=zero_green_blue_alpha/dtm=alpha/texel1/ref=0.5@glsl130'
 gen i16-cause2-sampler-object-none egl:llvmpipe:es3 'gles32/2d/d24/linear/lequal/sampler_object/so_none_linear/s=0.5/ref=0.5@es300'
 gen i16-cause6-zink-sampler-object egl:zink:compat 'gl46/2d/d24/nearest/lequal/sampler_object/so_func/s=0.75/ref=0.5@glsl120'
+# The second audit (oracle round two): a sampler object's rectangle-illegal state (GL 4.6 §8.2), and
+# cause 6 reached through the swizzle on zink's compatibility paths.
+gen cause11-rect-sampler-object-incomplete egl:llvmpipe:core 'gl46/rect/d24/nearest/lequal/sampler_object/so_rect_wrap=repeat/u=2.5/ref=0.5@core'
+gen r2-cause6-zink-swizzle egl:zink:compat 'gl46/2d/d24/nearest/lequal/swizzle/swizzle=zero_green_blue_alpha/texel1/ref=0.5@glsl120'
