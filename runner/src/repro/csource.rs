@@ -160,16 +160,29 @@ fn expectation(s: &Subject) -> String {
     let e = &s.expect;
     let (quality, nq) = intervals(e.accept.get(&Profile::loosest()));
     let (strict, ns) = intervals(e.accept.get(&Profile::strictest()));
+    let chars = |l: &[Channel; 4]| {
+        l.iter()
+            .map(|c| format!("'{}'", layout_char(*c)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     let layout: String = e
         .layout
         .get(&s.api)
-        .map(|l| {
-            l.iter()
-                .map(|c| format!("'{}'", layout_char(*c)))
-                .collect::<Vec<_>>()
-                .join(", ")
-        })
+        .map(chars)
         .unwrap_or_else(|| "'-', '-', '-', '-'".into());
+    // The other readings of the layout the texts allow (`Expectation::other_layouts`): a result any
+    // of them accepts is accepted, as shadowcheck's verdict does.
+    let others: Vec<&shadowcheck_model::OtherLayout> =
+        e.other_layouts.get(&s.api).into_iter().flatten().collect();
+    let mut layouts = vec![format!("{{{layout}}}")];
+    layouts.extend(others.iter().map(|o| format!("{{{}}}", chars(&o.layout))));
+    let mut readings = vec!["\"the spec value's\"".to_string()];
+    readings.extend(
+        others
+            .iter()
+            .map(|o| format!("\"{}\"", o.reading.replace('"', "'"))),
+    );
     let spec_value = e
         .spec_value
         .map(|v| format!("r = {v}"))
@@ -181,12 +194,15 @@ fn expectation(s: &Subject) -> String {
             .unwrap_or_else(|| "(none)".into())
     };
     format!(
-        "/* Expected, from shadowcheck's oracle (`shadowcheck explain` shows the derivation). The accepted\n * set is what a conforming implementation may return for r (the `{q}` tier: outside it a \"shall\"\n * is violated); inside the `{st}` tier too is a plain pass. Layout per channel: 'r' the result,\n * '0'/'1' exactly that, 'z' r or 0, '-' not produced by this path. */\nstatic const char *TEST = \"{test}\";\nstatic const char *SPEC_VALUE = \"{spec_value}\";\nstatic const char *ACCEPTED_TEXT = \"{qt}\";\nstatic const char *STRICT_TEXT = \"{stt}\";\nstatic const double ACCEPTED[][2] = {quality};\nstatic const int N_ACCEPTED = {nq};\nstatic const double STRICT[][2] = {strict};\nstatic const int N_STRICT = {ns};\nstatic const char LAYOUT[4] = {{{layout}}};\n\n",
+        "/* Expected, from shadowcheck's oracle (`shadowcheck explain` shows the derivation). The accepted\n * set is what a conforming implementation may return for r (the `{q}` tier: outside it a \"shall\"\n * is violated); inside the `{st}` tier too is a plain pass. Layout per channel: 'r' the result,\n * '0'/'1' exactly that, 'z' r or 0, '-' not produced by this path. */\nstatic const char *TEST = \"{test}\";\nstatic const char *SPEC_VALUE = \"{spec_value}\";\nstatic const char *ACCEPTED_TEXT = \"{qt}\";\nstatic const char *STRICT_TEXT = \"{stt}\";\nstatic const double ACCEPTED[][2] = {quality};\nstatic const int N_ACCEPTED = {nq};\nstatic const double STRICT[][2] = {strict};\nstatic const int N_STRICT = {ns};\nstatic const char LAYOUT[4] = {{{layout}}};\n/* Every reading of the layout the texts allow, the spec value's first (READINGS names each). */\nstatic const char LAYOUTS[][4] = {{{layouts}}};\nstatic const char *READINGS[] = {{{readings}}};\nstatic const int N_LAYOUTS = {n_layouts};\n\n",
         q = Profile::loosest(),
         st = Profile::strictest(),
         test = s.test(),
         qt = show(Profile::loosest()).replace('"', "'"),
         stt = show(Profile::strictest()).replace('"', "'"),
+        layouts = layouts.join(", "),
+        readings = readings.join(", "),
+        n_layouts = layouts.len(),
     )
 }
 

@@ -80,3 +80,32 @@ fn float_literals_read_back_exactly() {
     assert_eq!(cf(f32::INFINITY), "INFINITY");
     assert_eq!(cd(0.4000000059604645), "0.4000000059604645");
 }
+
+#[test]
+fn every_reading_of_the_layout_goes_into_the_program() {
+    let mut s = subject();
+    let c = program(&s).unwrap();
+    assert!(
+        c.contains("static const char LAYOUTS[][4] = {{'r', '-', '-', '-'}};"),
+        "{c}"
+    );
+    assert!(c.contains("static const int N_LAYOUTS = 1;"), "{c}");
+    // A second reading (as a compatibility GLSL 1.30 depth read has, `compat-depth-cb`): the
+    // program accepts a result either reading accepts and names both.
+    s.expect.other_layouts.insert(
+        ApiPath::GlslCore,
+        vec![OtherLayout {
+            reading: "compat-depth-cb".into(),
+            layout: [Channel::R, Channel::Zero, Channel::Zero, Channel::One],
+        }],
+    );
+    let c = program(&s).unwrap();
+    for want in [
+        "static const char LAYOUTS[][4] = {{'r', '-', '-', '-'}, {'r', '0', '0', '1'}};",
+        "static const char *READINGS[] = {\"the spec value's\", \"compat-depth-cb\"};",
+        "static const int N_LAYOUTS = 2;",
+        "ok |= a;",
+    ] {
+        assert!(c.contains(want), "missing `{want}` in\n{c}");
+    }
+}
