@@ -15,6 +15,9 @@ pub(super) struct Coords {
     pub q: f64,
 }
 
+/// GL 4.6 §8.2 (outside the spec pack, quoted from the specification).
+const SAMPLER_STATE_REFUSED: &str = "GL 4.6 §8.2: \"If state is present in a sampler object bound to a texture unit that would have been rejected by a call to TexParameter* for the texture bound to that unit, the behavior of the implementation is as if the texture were incomplete.\"";
+
 /// The state the lookup uses (the "effective" state): with a sampler object bound, its sampling
 /// parameters replace the texture's (GL 4.6 §8.17.1, ES 3.2 §8.17.1), while DEPTH_TEXTURE_MODE,
 /// DEPTH_STENCIL_TEXTURE_MODE, the swizzle, TEXTURE_MAX_LEVEL and the fail value remain texture
@@ -109,6 +112,9 @@ pub(super) fn effective<'a>(
         .map(|why| {
             format!("the sampler object holds {why}, which TexParameter would refuse: the texture is treated as incomplete (GL 4.6 §8.2)")
         });
+    if let Some(why) = &refused {
+        e.step(why.clone(), SAMPLER_STATE_REFUSED);
+    }
     let mut eff = case.clone();
     eff.sampler = s;
     (Cow::Owned(eff), rules, refused)
