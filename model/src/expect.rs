@@ -123,17 +123,6 @@ impl Expectation {
         Some(main || self.other_accepts(profile, api, rgba))
     }
 
-    /// The layouts of `api`: the spec's reading first, then the others ([`Expectation::other_layouts`]).
-    pub fn layouts(&self, api: ApiPath) -> impl Iterator<Item = &[Channel; 4]> + '_ {
-        self.layout.get(&api).into_iter().chain(
-            self.other_layouts
-                .get(&api)
-                .into_iter()
-                .flatten()
-                .map(|o| &o.layout),
-        )
-    }
-
     /// Does one of the other readings of `api`'s layout accept `rgba` under `profile`?
     fn other_accepts(&self, profile: Profile, api: ApiPath, rgba: [f64; 4]) -> bool {
         self.other_layouts

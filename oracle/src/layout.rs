@@ -227,8 +227,9 @@ pub fn readings(
             // `main` layout being Table 16.1's.
             _ => sw.map(|c| c.pick([R, Zero, Zero, One], Zero, One)),
         };
-        let same_as_alpha_pair = out.main[0] == ROrZero;
-        if other != out.main && !same_as_alpha_pair {
+        // `r|0` already accepts the unswizzled ALPHA case's other reading (0).
+        let covered_by_r_or_zero = out.main[0] == ROrZero;
+        if other != out.main && !covered_by_r_or_zero {
             out.others.push((COMPAT_DEPTH_CB, other));
         }
     }

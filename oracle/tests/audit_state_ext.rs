@@ -1,6 +1,6 @@
 //! State cases whose pname only an extension defines: on a GL 4.6 compatibility context the
 //! oracle lists, beside INVALID_ENUM, what a context exposing the extension must do, from the
-//! extension's own rules (texts in ../shared/specs/registry). Core and ES contexts get no such
+//! extension's own rules (the ARB_shadow_ambient, SGIX_shadow and SGIX_shadow_ambient specifications). Core and ES contexts get no such
 //! alternative (`shadowcheck_oracle::state::extension_ctx`).
 
 use shadowcheck_model::{
@@ -42,7 +42,7 @@ fn alt<'a>(e: &'a StateExpect, ext: &str) -> &'a ExtensionExpect {
 /// TexParameteri, TexParameterfv, TexParameteriv, GetTexParameterfv, and GetTexParameteriv:
 /// TEXTURE_COMPARE_FAIL_VALUE_ARB 0x80BF"; §3.8.4: "The value set by
 /// TEXTURE_COMPARE_FAIL_VALUE_ARB is clamped to lie in [0, 1]."; New State: initial 0.0.
-/// SGIX_shadow_ambient (the same token, ARB_shadow_ambient issue 6): "When SHADOW_AMBIENT_SGIX is
+/// SGIX_shadow_ambient (the same token, ARB_shadow_ambient Issues item 6): "When SHADOW_AMBIENT_SGIX is
 /// set, the <param> value is clamped to the range [0.0, 1.0]"; initial 0.0.
 #[test]
 fn fail_value_is_invalid_enum_in_gl46_compat_unless_an_ambient_extension_is_exposed() {

@@ -1,0 +1,187 @@
+//! The review queue as Markdown: the units table, the classes table and one section per class.
+
+use super::{front_end_of, lineage_of, CitationSource, Queue};
+use crate::records::ExpectedSummary;
+use shadowcheck_protocol::Rgba;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// An answer as `(r, g, b, a)`, unused channels as `-`.
+fn rgba_text(v: &Rgba, compared: &str) -> String {
+    let parts: Vec<String> = ['r', 'g', 'b', 'a']
+        .iter()
+        .zip(v.0)
+        .map(|(c, x)| {
+            if compared.contains(*c) {
+                format!("{x}")
+            } else {
+                "-".to_string()
+            }
+        })
+        .collect();
+    format!("({})", parts.join(", "))
+}
+
+fn expected_text(e: &Option<ExpectedSummary>) -> String {
+    let Some(e) = e else {
+        return "(not recorded)".into();
+    };
+    let spec = e
+        .spec_value
+        .map(|v| format!("spec value {v}; "))
+        .unwrap_or_default();
+    format!(
+        "{spec}quality {}, strict {}; layout {}",
+        e.quality, e.strict, e.layout
+    )
+}
+
+/// The first citation and how many follow (the class's section lists them all).
+fn citations_brief(c: &[String]) -> String {
+    match c {
+        [] => "(none found)".into(),
+        [one] => one.clone(),
+        [first, rest @ ..] => format!("{first} (+{} more)", rest.len()),
+    }
+}
+
+/// Markdown table cells may not hold `|` or line breaks.
+fn cell(s: &str) -> String {
+    s.replace('|', "\\|").replace('\n', " ")
+}
+
+/// The queue as Markdown.
+pub fn markdown(q: &Queue) -> String {
+    let mut o = String::new();
+    let mut line = |s: String| {
+        o.push_str(&s);
+        o.push('\n');
+    };
+    line("# Oracle review queue\n".into());
+    line(format!(
+        "Tests where at least {} independent texture units return the same answer and the oracle \
+         rejects it (outcome Fail). When independent implementations agree against the oracle, \
+         suspect the oracle first: start from the sentences cited.\n",
+        q.min_units
+    ));
+    line(format!(
+        "- inputs: {}\n- answers agree when every compared channel differs by at most 2^-16 \
+         (the `quality` reference precision); channels the layout marks unused (`-`) are not \
+         compared\n- only results that carry an observed value are compared: Fail and Warn \
+         (passes only under `run --full-report`); a unit whose backends passed a test supports \
+         no rejected answer\n- {} tests had a comparable answer; {} are on the queue, in {} \
+         classes (same grid family and citations)\n",
+        q.runs.join(", "),
+        q.tests_compared,
+        q.len(),
+        q.classes.len()
+    ));
+    line("## Units (backends that share texture-unit code count once)\n".into());
+    line("| unit | backends | API front ends | why they share code |\n|---|---|---|---|".into());
+    let mut units: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
+    for (b, u) in &q.backends {
+        units.entry(u).or_default().push(b);
+    }
+    for (u, bs) in &units {
+        let mut why: Vec<&str> = bs
+            .iter()
+            .filter_map(|b| lineage_of(b).map(|l| l.why))
+            .collect();
+        why.dedup();
+        let why = if why.is_empty() {
+            "its own unit (no shared lineage known)".to_string()
+        } else {
+            why.join("; ")
+        };
+        let names: Vec<String> = bs.iter().map(|b| format!("`{}`", cell(b))).collect();
+        let fronts: BTreeSet<String> = bs.iter().map(|b| front_end_of(b)).collect();
+        let fronts: Vec<String> = fronts.into_iter().collect();
+        line(format!(
+            "| {} | {} | {} | {} |",
+            cell(u),
+            names.join(", "),
+            cell(&fronts.join(", ")),
+            cell(&why)
+        ));
+    }
+    line(
+        "\nUnits are independent in their sampling code. Several Mesa drivers share Mesa's GL front \
+         end (state validation, completeness, DEPTH_TEXTURE_MODE routing, fixed function): an \
+         entry whose answer comes through one front end only (column `front ends`) is first a \
+         suspected shared front-end defect, then a suspected oracle error.\n"
+            .into(),
+    );
+    if q.is_empty() {
+        line("No test on the queue.".into());
+        return o;
+    }
+    line("## Classes\n".into());
+    line("| # | grid family | tests | front ends | citations |\n|---:|---|---:|---|---|".into());
+    for (i, c) in q.classes.iter().enumerate() {
+        let fronts: BTreeSet<&str> = c
+            .tests
+            .iter()
+            .flat_map(|e| e.front_ends.iter().map(|f| f.as_str()))
+            .collect();
+        line(format!(
+            "| {} | `{}` | {} | {} | {} |",
+            i + 1,
+            cell(&c.family),
+            c.tests.len(),
+            cell(&fronts.into_iter().collect::<Vec<_>>().join(", ")),
+            cell(&citations_brief(&c.citations))
+        ));
+    }
+    for (i, c) in q.classes.iter().enumerate() {
+        let n = c.tests.len();
+        line(format!(
+            "\n## Class {}: `{}`: {n} test{}, one cause?\n",
+            i + 1,
+            c.family,
+            if n == 1 { "" } else { "s" }
+        ));
+        line("The oracle's sentences:\n".into());
+        if c.citations.is_empty() {
+            let why = match c.tests.first().map(|e| &e.citations_from) {
+                Some(CitationSource::Missing(w)) => w.clone(),
+                _ => String::new(),
+            };
+            line(format!("- (no citations found: {why})"));
+        }
+        for s in &c.citations {
+            line(format!("- {s}"));
+        }
+        if let Some(CitationSource::Fixtures(f)) = c.tests.first().map(|e| &e.citations_from) {
+            line(format!(
+                "\n(citations from the case in {f}; the records had none)"
+            ));
+        }
+        line("\n| test | agreed answer (r, g, b, a) | units: backends | front ends | oracle expected |\n|---|---|---|---|---|".into());
+        for e in &c.tests {
+            let units: Vec<String> = e
+                .units
+                .iter()
+                .map(|u| {
+                    let bs: Vec<String> = u
+                        .backends
+                        .iter()
+                        .map(|b| format!("`{}` ({})", cell(&b.backend), b.outcome))
+                        .collect();
+                    match u.backends.as_slice() {
+                        // A unit of its own: the backend names it.
+                        [b] if b.backend == u.unit => bs.join(", "),
+                        _ => format!("{}: {}", cell(&u.unit), bs.join(", ")),
+                    }
+                })
+                .collect();
+            line(format!(
+                "| `{}` | {} | {} | {} | {} |",
+                cell(&e.test),
+                rgba_text(&e.answer, &e.compared),
+                units.join("<br>"),
+                cell(&e.front_ends.join(", ")),
+                cell(&expected_text(&e.expected))
+            ));
+        }
+    }
+    o
+}
