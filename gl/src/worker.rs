@@ -181,6 +181,20 @@ impl Worker {
         }
     }
 
+    /// Why no case can run on this context, when the driver exposes none of the specs its kind
+    /// implements; `None` when at least one can run.
+    pub fn runs_nothing(&self) -> Option<String> {
+        if !self.specs().is_empty() {
+            return None;
+        }
+        let mut why: Vec<String> = implemented_specs(self.info().api)
+            .into_iter()
+            .filter_map(|s| self.unexposed(s))
+            .collect();
+        why.dedup();
+        Some(why.join("; "))
+    }
+
     pub fn formats(&self) -> Vec<Format> {
         formats(self.info())
     }
@@ -424,9 +438,15 @@ impl Serve for Worker {
 }
 
 /// `--probe`: create the context and print `ok ...` or `unavailable: reason` on stdout.
+/// The probe's one line: `ok <name>`; `nothing: <reason>` for a context that starts but exposes
+/// none of the specs its kind implements (an ES 2.0 context without GL_EXT_shadow_samplers: every
+/// case it would be sent is a Skip); `unavailable: <reason>` for one that does not start.
 pub fn probe_line(name: BackendName) -> (bool, String) {
     match Worker::start(name) {
-        Ok(w) => (true, format!("ok {}", w.display_name())),
+        Ok(w) => match w.runs_nothing() {
+            Some(why) => (true, format!("nothing: {why}")),
+            None => (true, format!("ok {}", w.display_name())),
+        },
         Err(e) => (false, format!("unavailable: {e}")),
     }
 }

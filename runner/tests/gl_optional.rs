@@ -8,7 +8,12 @@ fn absent_optional_backends_are_announced_not_missing() {
     std::env::set_var(gl::WORKER_EXE_ENV, env!("CARGO_BIN_EXE_shadowcheck"));
     std::env::set_var("SHADOWCHECK_SWIFTSHADER_DIR", "/no/such/swiftshader");
     std::env::set_var("SHADOWCHECK_VK_SWIFTSHADER_ICD", "/no/such/icd.json");
-    let (run, missing, absent) = backend::default_backends();
+    let backend::Defaults {
+        run,
+        missing,
+        absent,
+        ..
+    } = backend::default_backends();
     for name in [
         "egl:swiftshader:es3",
         "egl:swiftshader:es2",

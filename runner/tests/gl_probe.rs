@@ -12,9 +12,9 @@ fn probe_reports_every_backend_with_reasons() {
     for (name, res) in &report {
         let b: BackendName = name.parse().unwrap();
         match (b.static_unavailability(), res) {
-            (Some(_), Ok(())) => panic!("{name} cannot work, yet probed available"),
+            (Some(_), Ok(_)) => panic!("{name} cannot work, yet probed available"),
             (Some(why), Err(e)) => assert_eq!(&why, e),
-            (None, Ok(())) => {}
+            (None, Ok(_)) => {}
             (None, Err(e)) if ci => panic!("{name} unavailable under CI=true: {e}"),
             (None, Err(e)) => eprintln!("SKIPPED (not a pass): {name} unavailable: {e}"),
         }
@@ -25,9 +25,9 @@ fn probe_reports_every_backend_with_reasons() {
         .unwrap();
     assert!(osmesa_zink.1.as_ref().unwrap_err().contains("segfault"));
     let available = gl::probe();
-    assert!(available
+    assert!(available.iter().all(|n| report
         .iter()
-        .all(|n| report.iter().any(|(m, r)| m == n && r.is_ok())));
+        .any(|(m, r)| m == n && r == &Ok(gl::Probed::Runs))));
 }
 
 #[test]
@@ -72,4 +72,51 @@ fn a_missing_library_is_reported_with_the_install_command() {
             "{backend}: {stdout}"
         );
     }
+}
+
+/// A backend the probe calls `RunsNothing` (it starts but exposes none of its specs: left out of
+/// the default run as not applicable) really runs nothing: named with `-b`, every test of its spec
+/// is a Skip with the probe's reason, and the run exits 4 as before.
+#[test]
+fn a_backend_that_runs_nothing_skips_every_case_when_named() {
+    std::env::set_var(gl::WORKER_EXE_ENV, env!("CARGO_BIN_EXE_shadowcheck"));
+    let nothing: Vec<(String, String)> = gl::probe_report()
+        .into_iter()
+        .filter_map(|(n, r)| match r {
+            Ok(gl::Probed::RunsNothing(why)) => Some((n, why)),
+            _ => None,
+        })
+        .collect();
+    if nothing.is_empty() {
+        eprintln!("SKIPPED (not a pass): no backend here starts without exposing a spec");
+        return;
+    }
+    let (name, why) = &nothing[0];
+    let b: BackendName = name.parse().unwrap();
+    let spec = match b.api {
+        shadowcheck_gl::ContextApi::Es2 => "es2_ext",
+        _ => panic!("{name}: only an ES 2.0 context can expose none of its specs ({why})"),
+    };
+    let dir = std::env::temp_dir().join(format!("sc-runs-nothing-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_shadowcheck"))
+        .args(["run", "-b", name, "--cases", &format!("^{spec}/2d/")])
+        .arg("--fixtures")
+        .arg(concat!(env!("CARGO_MANIFEST_DIR"), "/../cases/fixtures"))
+        .arg("-o")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(4), "{stderr}");
+    let csv = std::fs::read_to_string(dir.join("results.csv")).unwrap();
+    let rows: Vec<&str> = csv.lines().filter(|l| !l.is_empty()).collect();
+    assert!(!rows.is_empty(), "no test of {spec}/2d on {name}");
+    assert!(rows.iter().all(|l| l.contains(",Skip,")), "{csv}");
+    let jsonl = std::fs::read_to_string(dir.join("results.jsonl")).unwrap();
+    assert!(
+        jsonl.contains(why.as_str()),
+        "the Skip reason is not the probe's: {why}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
 }

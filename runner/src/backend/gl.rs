@@ -79,24 +79,35 @@ pub fn compiles_per_state(backend: &str) -> bool {
         .is_none_or(|n| n.driver != Driver::Softpipe)
 }
 
-/// Backend names that can run here (each probed in a child process).
+/// Backend names that can run here (each probed in a child process): those that start and expose
+/// at least one spec.
 pub fn probe() -> Vec<String> {
     probe_report()
         .into_iter()
-        .filter(|(_, r)| r.is_ok())
+        .filter(|(_, r)| matches!(r, Ok(Probed::Runs)))
         .map(|(n, _)| n)
         .collect()
+}
+
+/// What the probe of a backend that starts found.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Probed {
+    /// The context starts and exposes a spec its kind implements.
+    Runs,
+    /// The context starts but exposes none of the specs its kind implements (why): every case it
+    /// would be sent is a Skip, so a default run leaves it out as not applicable.
+    RunsNothing(String),
 }
 
 /// Longest a probe child may take (context creation on zink starts a Vulkan device).
 const PROBE_TIMEOUT: Duration = Duration::from_secs(60);
 
-/// Every backend name with `Ok` or the reason it cannot run here. Probes run in parallel, one child
-/// each (`gl-worker --probe`): the child creates the context, checks GL_RENDERER names the driver,
-/// and prints one line; a crash is reported with its signal.
-pub fn probe_report() -> Vec<(String, Result<(), String>)> {
+/// Every backend name with what its probe found or the reason it cannot run here. Probes run in
+/// parallel, one child each (`gl-worker --probe`): the child creates the context, checks
+/// GL_RENDERER names the driver, and prints one line; a crash is reported with its signal.
+pub fn probe_report() -> Vec<(String, Result<Probed, String>)> {
     let mut running = Vec::new();
-    let mut out: Vec<(String, Result<(), String>)> = Vec::new();
+    let mut out: Vec<(String, Result<Probed, String>)> = Vec::new();
     for name in BackendName::all() {
         let key = name.to_string();
         if let Some(why) = name.static_unavailability() {
@@ -145,7 +156,7 @@ pub fn probe_report() -> Vec<(String, Result<(), String>)> {
     out
 }
 
-fn probe_result(child: std::process::Child) -> Result<(), String> {
+fn probe_result(child: std::process::Child) -> Result<Probed, String> {
     let o = child.wait_with_output().map_err(|e| e.to_string())?;
     let stdout = String::from_utf8_lossy(&o.stdout);
     let line = stdout
@@ -155,7 +166,13 @@ fn probe_result(child: std::process::Child) -> Result<(), String> {
         .unwrap_or("")
         .to_string();
     if o.status.success() && line.starts_with("ok") {
-        return Ok(());
+        return Ok(Probed::Runs);
+    }
+    if let Some(why) = line
+        .strip_prefix("nothing: ")
+        .filter(|_| o.status.success())
+    {
+        return Ok(Probed::RunsNothing(why.to_string()));
     }
     if let Some(msg) = line.strip_prefix("unavailable: ") {
         return Err(msg.to_string());

@@ -189,37 +189,54 @@ pub fn gl_backends() -> Vec<String> {
 /// A backend name and why it does not run here.
 pub type Unavailable = (String, String);
 
-/// Backends run when none is named: `soft`, every GL backend a machine with Mesa offers and
-/// `webgl:chromium` when Chromium is installed. The
-/// second list holds those that cannot start here, each with the reason (a driver not installed or
-/// hidden); combinations that can never work (OSMesa with ES, OSMesa with zink) are in neither. The
-/// third holds the optional implementations beyond Mesa whose files are not installed
-/// (SwiftShader's Vulkan ICD, SwiftShader's GLES, Chromium), each with the command that installs it: announced,
-/// not an error.
-pub fn default_backends() -> (Vec<String>, Vec<Unavailable>, Vec<Unavailable>) {
-    let mut run = vec!["soft".to_string()];
-    let mut missing = vec![];
-    let mut absent = vec![];
+/// The backends of a run that names none, and those left out of it, each list with the reason.
+#[derive(Debug, Default)]
+pub struct Defaults {
+    /// Run: `soft`, every GL backend a machine with Mesa offers and `webgl:chromium` when
+    /// Chromium is installed.
+    pub run: Vec<String>,
+    /// Cannot start here (a driver not installed or hidden): the run goes on without them and exits
+    /// 96 unless `--skip-missing`. Combinations that can never work (OSMesa with ES, OSMesa with
+    /// zink) are in no list.
+    pub missing: Vec<Unavailable>,
+    /// The optional implementations beyond Mesa whose files are not installed (SwiftShader's
+    /// Vulkan ICD, SwiftShader's GLES, Chromium), each with the command that installs it:
+    /// announced, not an error.
+    pub absent: Vec<Unavailable>,
+    /// Start here but can run no case (the context exposes none of the specs its kind implements,
+    /// e.g. an ES 2.0 context without GL_EXT_shadow_samplers): not applicable, said once in the
+    /// run's summary. Named with `-b`, such a backend runs, every test a Skip (exit 4).
+    pub not_applicable: Vec<Unavailable>,
+}
+
+/// Backends run when none is named, and those left out with the reason ([`Defaults`]).
+pub fn default_backends() -> Defaults {
+    let mut d = Defaults {
+        run: vec!["soft".to_string()],
+        ..Defaults::default()
+    };
     for (name, probed) in gl::probe_report() {
         let parsed = name.parse::<shadowcheck_gl::BackendName>().ok();
         let impossible = parsed.and_then(|b| b.static_unavailability()).is_some();
         let not_installed = parsed.and_then(|b| b.missing_file());
         match probed {
             _ if impossible => {}
-            Ok(()) => run.push(name),
+            Ok(gl::Probed::Runs) => d.run.push(name),
+            Ok(gl::Probed::RunsNothing(why)) => d.not_applicable.push((name, why)),
             Err(_) if not_installed.is_some() => {
                 if let Some((file, install)) = not_installed {
-                    absent.push((name, format!("{} not found; `{install}`", file.display())));
+                    d.absent
+                        .push((name, format!("{} not found; `{install}`", file.display())));
                 }
             }
-            Err(why) => missing.push((name, why)),
+            Err(why) => d.missing.push((name, why)),
         }
     }
     match webgl::installed() {
-        Ok(()) => run.push("webgl:chromium".to_string()),
-        Err(why) => absent.push(("webgl:chromium".to_string(), why)),
+        Ok(()) => d.run.push("webgl:chromium".to_string()),
+        Err(why) => d.absent.push(("webgl:chromium".to_string(), why)),
     }
-    (run, missing, absent)
+    d
 }
 
 /// Opens the backend called `name` (starting and greeting its process, if any); the kind comes

@@ -8,7 +8,8 @@ pub struct Args {
     /// Backend name: egl|osmesa : llvmpipe|softpipe|zink : core|compat|es3|es2.
     #[arg(long)]
     backend: String,
-    /// Only create the context and print `ok <name>` or `unavailable: <reason>`, then exit.
+    /// Only create the context and print `ok <name>`, `nothing: <reason>` (it starts but exposes
+    /// none of its specs) or `unavailable: <reason>`, then exit.
     #[arg(long)]
     probe: bool,
 }

@@ -161,10 +161,18 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
 
     // Backends that cannot start here: named with the reason and the install hint; the run goes on
     // without them and exits 96 unless --skip-missing.
-    let (requested, mut missing, absent) = if a.backends.is_empty() {
+    let backend::Defaults {
+        run: requested,
+        mut missing,
+        absent,
+        not_applicable,
+    } = if a.backends.is_empty() {
         backend::default_backends()
     } else {
-        (a.backends.clone(), vec![], vec![])
+        backend::Defaults {
+            run: a.backends.clone(),
+            ..backend::Defaults::default()
+        }
     };
     for (n, how) in &absent {
         eprintln!("shadowcheck: note: optional backend `{n}` is not installed here: {how}");
@@ -345,6 +353,16 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             resume_command(&out_dir)
         );
         ending.add(exit::INTERRUPTED, "interrupted");
+    }
+    if !not_applicable.is_empty() {
+        let list: Vec<String> = not_applicable
+            .iter()
+            .map(|(n, why)| format!("`{n}` ({why})"))
+            .collect();
+        eprintln!(
+            "shadowcheck: not applicable here, left out of this default run: {}: these contexts start but expose none of the specs they implement, so every case would be a Skip",
+            list.join(", ")
+        );
     }
     terminal::print_final_line(&summary, &ending);
     Ok(ExitCode::from(ending.code))
