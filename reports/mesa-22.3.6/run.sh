@@ -30,7 +30,7 @@ done
 # and SUMMARY.md over all backends x API paths (`shadowcheck summarize --help`).
 # The exact Debian package versions go into every summary (the folder name says only 22.3.6).
 PKGS=$(dpkg-query -W -f '${Package} ${Version}, ' libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers 2>/dev/null | sed 's/, $//')
-target/release/shadowcheck summarize -o reports/mesa-22.3.6 "$OUT"/r-* --platform "Mesa 22.3.6 (Debian 12: ${PKGS:-package versions unknown})"
+target/release/shadowcheck summarize -o reports/mesa-22.3.6 "$OUT"/r-* --platform "Mesa 22.3.6 (Debian 12: ${PKGS:-package versions unknown})" --update-readme README.md
 # The ARB fp DEPTH_TEXTURE_MODE=ALPHA results flip between runs on llvmpipe/softpipe: those tests
 # are kept out of the baselines and listed in flakes.txt (committed by hand, see ../README.md).
 for b in egl-llvmpipe-compat osmesa-llvmpipe-compat egl-softpipe-compat osmesa-softpipe-compat; do

@@ -14,6 +14,6 @@ HERE=reports/swiftshader-4.0.0.3
 b=egl:swiftshader:es3
 # exit code 100 (failures) is expected: this run makes the baseline
 /usr/bin/time -f "$b %e s" target/release/shadowcheck run --backend "$b" --out "$OUT/r-egl-swiftshader-es3" || true
-target/release/shadowcheck summarize -o "$HERE" "$OUT"/r-* --platform "SwiftShader 4.0.0.3 GLES 3.0 (cefpython3 66.0 wheel, 2018-08-20 libraries)"
+target/release/shadowcheck summarize -o "$HERE" "$OUT"/r-* --platform "SwiftShader 4.0.0.3 GLES 3.0 (cefpython3 66.0 wheel, 2018-08-20 libraries)" --update-readme README.md
 # Check: the backend passes with its own baseline (exit 0).
 target/release/shadowcheck run --backend "$b" --baseline "$HERE/egl-swiftshader-es3/failures.csv" --out "$OUT/check"

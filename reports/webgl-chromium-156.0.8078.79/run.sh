@@ -15,6 +15,6 @@ HERE=reports/webgl-chromium-156.0.8078.79
 # exit code 100 (failures) is expected: this run makes the baseline
 /usr/bin/time -f "webgl:chromium %e s" target/release/shadowcheck run --backend webgl:chromium --out "$OUT/r-webgl-chromium" || true
 PKGS=$(dpkg-query -W -f '${Package} ${Version}, ' chromium chromium-common 2>/dev/null | sed 's/, $//')
-target/release/shadowcheck summarize -o "$HERE" "$OUT"/r-webgl-chromium --platform "Chromium 156 (results first committed with 156.0.8078.79; the packages below are those of the last run), WebGL 2.0 on ANGLE Vulkan / SwiftShader (Debian 12: ${PKGS:-package versions unknown})"
+target/release/shadowcheck summarize -o "$HERE" "$OUT"/r-webgl-chromium --platform "Chromium 156 (results first committed with 156.0.8078.79; the packages below are those of the last run), WebGL 2.0 on ANGLE Vulkan / SwiftShader (Debian 12: ${PKGS:-package versions unknown})" --update-readme README.md
 # Check: the backend passes with its own baseline (exit 0).
 target/release/shadowcheck run --backend webgl:chromium --baseline "$HERE/webgl-chromium/failures.csv" --out "$OUT/check-webgl-chromium"

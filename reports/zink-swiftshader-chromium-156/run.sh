@@ -16,7 +16,7 @@ for b in egl:zink+swiftshader:core egl:zink+swiftshader:compat egl:zink+swiftsha
   /usr/bin/time -f "$b %e s" target/release/shadowcheck run --backend "$b" --out "$OUT/r-$slug" || true
 done
 PKGS=$(dpkg-query -W -f '${Package} ${Version}, ' chromium-common libvulkan1 libegl-mesa0 libgl1-mesa-dri 2>/dev/null | sed 's/, $//')
-target/release/shadowcheck summarize -o "$HERE" "$OUT"/r-* --platform "zink (Mesa 22.3.6) on SwiftShader Vulkan (Debian 12: ${PKGS:-package versions unknown})"
+target/release/shadowcheck summarize -o "$HERE" "$OUT"/r-* --platform "zink (Mesa 22.3.6) on SwiftShader Vulkan (Debian 12: ${PKGS:-package versions unknown})" --update-readme README.md
 # Check: every backend passes with its own baseline (exit 0).
 for d in "$HERE"/*/; do
   [ -f "$d/failures.csv" ] || continue   # repro/ is not a backend

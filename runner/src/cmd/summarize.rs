@@ -10,12 +10,14 @@
 //! - `report.md`: the run's report.md, cut at the last line break before [`REPORT_CAP`] characters.
 //!
 //! DIR/SUMMARY.md gets one table over every backend x API path (rows where everything was
-//! skipped are left out). Only results.jsonl (read by the shared reader, `records::read_results`:
+//! skipped are left out). `--update-readme README.md` (alone or after the above) regenerates
+//! README's headline result tables from the committed summaries (`report::headline`). Only results.jsonl (read by the shared reader, `records::read_results`:
 //! the last record of a test wins), failures.csv and report.md of each run are read.
 
 use anyhow::Context;
 use shadowcheck_runner::records::{self, exit, TestResult, RESULTS_FILE};
 use shadowcheck_runner::report::csv::field;
+use shadowcheck_runner::report::headline;
 use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -41,14 +43,19 @@ const SKIP_REASONS: usize = 12;
 #[derive(clap::Args)]
 pub struct Args {
     /// Folder to write: DIR/<backend>/ per run directory, and DIR/SUMMARY.md.
-    #[arg(short = 'o', long = "out", value_name = "DIR")]
-    outroot: PathBuf,
+    #[arg(short = 'o', long = "out", value_name = "DIR", required_unless_present = "update_readme", requires_all = ["runs", "platform"])]
+    outroot: Option<PathBuf>,
     /// `shadowcheck run --out` directories, one backend each, named r-<backend with ':' as '-'>.
-    #[arg(required = true, value_name = "RUN_DIR")]
+    #[arg(value_name = "RUN_DIR", requires = "outroot")]
     runs: Vec<PathBuf>,
     /// What the runs ran on, for the headings (e.g. "Mesa 22.3.6").
-    #[arg(long, value_name = "NAME")]
-    platform: String,
+    #[arg(long, value_name = "NAME", requires = "outroot")]
+    platform: Option<String>,
+    /// Then regenerate FILE's headline result tables (between its `results:NAME:begin` /
+    /// `results:NAME:end` markers) from reports/headline.json and the committed
+    /// reports/*/SUMMARY.md beside FILE; alone, only that.
+    #[arg(long, value_name = "FILE")]
+    update_readme: Option<PathBuf>,
 }
 
 /// Status counts per API path: api → status → tests.
@@ -58,10 +65,32 @@ type Counts = BTreeMap<String, BTreeMap<String, usize>>;
 type Group = (String, String, String);
 
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
+    if let (Some(outroot), Some(platform)) = (&a.outroot, &a.platform) {
+        summarize_runs(outroot, &a.runs, platform)?;
+    }
+    if let Some(readme) = &a.update_readme {
+        let reports = readme
+            .parent()
+            .unwrap_or_else(|| Path::new("."))
+            .join("reports");
+        let new = headline::regenerate(readme, &reports)?;
+        shadowcheck_runner::report::atomic::write(readme, new.as_bytes())
+            .with_context(|| format!("writing {}", readme.display()))?;
+        eprintln!(
+            "summarize: updated the result tables in {} from {}",
+            readme.display(),
+            reports.join("headline.json").display()
+        );
+    }
+    Ok(ExitCode::from(exit::SUCCESS))
+}
+
+/// Writes `outroot`/<backend>/ for every run and `outroot`/SUMMARY.md.
+fn summarize_runs(outroot: &Path, runs: &[PathBuf], platform: &str) -> anyhow::Result<()> {
     let mut all_cols: Vec<String> = STATUSES.iter().map(|s| s.to_string()).collect();
     let mut rows = vec![];
-    for run in &a.runs {
-        let (backend, counts, cols) = summarize(&a.outroot, run, &a.platform)
+    for run in runs {
+        let (backend, counts, cols) = summarize(outroot, run, platform)
             .with_context(|| format!("summarizing {}", run.display()))?;
         for c in cols {
             if !all_cols.contains(&c) {
@@ -71,7 +100,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         rows.push((backend, counts));
     }
     let mut out = vec![
-        format!("# {} reference results (default fixtures)\n", a.platform),
+        format!("# {platform} reference results (default fixtures)\n"),
         "One row per backend x API path; a test is one case on one API path. See ../README.md for the causes.\n".to_string(),
         format!("| backend | API path | {} |", all_cols.join(" | ")),
         format!("|---|---|{}", "---:|".repeat(all_cols.len())),
@@ -86,10 +115,9 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             out.push(format!("| {backend} | {api} | {} |", cells.join(" | ")));
         }
     }
-    let path = a.outroot.join("SUMMARY.md");
+    let path = outroot.join("SUMMARY.md");
     shadowcheck_runner::report::atomic::write(&path, (out.join("\n") + "\n").as_bytes())
-        .with_context(|| format!("writing {}", path.display()))?;
-    Ok(ExitCode::from(exit::SUCCESS))
+        .with_context(|| format!("writing {}", path.display()))
 }
 
 /// The backend a run directory is named for: its name without the `r-` prefix.

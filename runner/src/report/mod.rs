@@ -13,6 +13,7 @@
 
 pub mod atomic;
 pub mod csv;
+pub mod headline;
 pub mod html;
 pub mod json;
 pub mod jsonl;
