@@ -51,4 +51,4 @@ done
 # The HTML report (reports/index.html): every backend of this machine in one run (the main job),
 # then `shadowcheck report` over its results.
 /usr/bin/time -f "all backends %e s" target/release/shadowcheck run --out "$OUT/all" || true
-target/release/shadowcheck report "$OUT/all" -o reports --title "shadowcheck — Mesa 22.3.6 (Debian 12): EGL and OSMesa drivers, with the soft reference"
+target/release/shadowcheck report "$OUT/all" -o reports

@@ -34,9 +34,10 @@ pub struct Args {
     /// Tests drawn per acceptance plot (warnings and failures first).
     #[arg(long, value_name = "N", default_value_t = 48)]
     max_plot_points: usize,
-    /// Title of the page.
-    #[arg(long, default_value = "shadowcheck report")]
-    title: String,
+    /// Title of the page. Default: made from what the inputs hold (the backends by kind, the Mesa
+    /// versions their implementations name).
+    #[arg(long)]
+    title: Option<String>,
 }
 
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {

@@ -11,6 +11,7 @@
 
 use crate::records::{self, LoadError, TestResult, RESULTS_FILE};
 use crate::report::json::JsonReport;
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// Why an input could not be read.
@@ -41,6 +42,8 @@ pub struct ReportInput {
     pub load_errors: Vec<LoadError>,
     /// Fixture paths named by the runs' metadata (as the runs wrote them).
     pub fixtures: Vec<String>,
+    /// Per backend, what its implementation called itself (the runs' metadata).
+    pub implementations: BTreeMap<String, String>,
     /// Records that a later input replaced with a different result.
     pub replaced: usize,
 }
@@ -67,8 +70,15 @@ pub fn resolve(path: &Path) -> Result<PathBuf, InputError> {
     Err(InputError::EmptyDir(path.display().to_string()))
 }
 
-/// One input file's records: (backends named by its metadata, fixtures, results, load errors).
-type FileRecords = (Vec<String>, Vec<String>, Vec<TestResult>, Vec<LoadError>);
+/// One input file's records.
+struct FileRecords {
+    /// Backends named by its metadata.
+    backends: Vec<String>,
+    fixtures: Vec<String>,
+    implementations: BTreeMap<String, String>,
+    results: Vec<TestResult>,
+    load_errors: Vec<LoadError>,
+}
 
 /// Reads one results file: JSON lines (`.jsonl`, or a first line with a `"kind"` key), else a
 /// report.json document.
@@ -83,16 +93,17 @@ fn read_file(path: &Path) -> Result<FileRecords, InputError> {
         || serde_json::from_str::<serde_json::Value>(first).is_ok_and(|v| v.get("kind").is_some());
     if is_jsonl {
         let read = records::Results::parse(&file, &text)?;
-        let (backends, fixtures) = read
+        let (backends, fixtures, implementations) = read
             .meta
-            .map(|m| (m.backends, m.fixtures))
+            .map(|m| (m.backends, m.fixtures, m.implementations))
             .unwrap_or_default();
-        return Ok((
+        return Ok(FileRecords {
             backends,
             fixtures,
-            read.results,
-            read.load_errors.into_iter().collect(),
-        ));
+            implementations,
+            results: read.results,
+            load_errors: read.load_errors.into_iter().collect(),
+        });
     }
     // As for JSON lines: results whose footprint does not read back lose only the footprint.
     let doc: JsonReport = serde_json::from_str(&text)
@@ -112,7 +123,13 @@ fn read_file(path: &Path) -> Result<FileRecords, InputError> {
             file,
             msg: e.to_string(),
         })?;
-    Ok((doc.summary.backends, vec![], doc.results, doc.load_errors))
+    Ok(FileRecords {
+        backends: doc.summary.backends,
+        fixtures: vec![],
+        implementations: BTreeMap::new(),
+        results: doc.results,
+        load_errors: doc.load_errors,
+    })
 }
 
 /// Reads and merges `paths` (files or run directories), in order.
@@ -121,8 +138,15 @@ pub fn read_inputs(paths: &[PathBuf]) -> Result<ReportInput, InputError> {
     let mut merged = records::Results::default();
     for p in paths {
         let file = resolve(p)?;
-        let (backends, fixtures, results, load_errors) = read_file(&file)?;
+        let FileRecords {
+            backends,
+            fixtures,
+            implementations,
+            results,
+            load_errors,
+        } = read_file(&file)?;
         input.sources.push(file.display().to_string());
+        input.implementations.extend(implementations);
         for b in &backends {
             input.add_backend(b);
         }

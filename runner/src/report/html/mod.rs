@@ -34,7 +34,8 @@ pub const INDEX: &str = "index.html";
 /// What to show and how much.
 #[derive(Debug, Clone)]
 pub struct PageOptions {
-    pub title: String,
+    /// The page's title; `None`: made from what the inputs hold ([`default_title`]).
+    pub title: Option<String>,
     pub details: DetailCaps,
     /// Tests drawn per acceptance plot (every warning / failure first, then an even sample).
     pub plot_points: usize,
@@ -43,7 +44,7 @@ pub struct PageOptions {
 impl Default for PageOptions {
     fn default() -> Self {
         PageOptions {
-            title: "shadowcheck report".into(),
+            title: None,
             details: DetailCaps {
                 per_cell: 50,
                 total: 600,
@@ -224,33 +225,96 @@ fn render_pictures(input: &ReportInput, geo: &Geometry, opts: &PageOptions, out:
     }
 }
 
+/// A title from what the page holds: the backends grouped by kind (`egl: llvmpipe, zink`), with
+/// the Mesa versions the implementations name.
+pub fn default_title(input: &ReportInput) -> String {
+    let mut kinds: Vec<(String, Vec<String>)> = vec![];
+    for b in &input.backends {
+        let mut parts = b.splitn(3, ':');
+        let kind = parts.next().unwrap_or_default().to_string();
+        let what = parts.next().map(str::to_string);
+        match kinds.iter_mut().find(|(k, _)| *k == kind) {
+            Some((_, w)) => {
+                if let Some(x) = what.filter(|x| !w.contains(x)) {
+                    w.push(x);
+                }
+            }
+            None => kinds.push((kind, what.into_iter().collect())),
+        }
+    }
+    let groups: Vec<String> = kinds
+        .iter()
+        .map(|(k, w)| {
+            if w.is_empty() {
+                k.clone()
+            } else {
+                format!("{k}: {}", w.join(", "))
+            }
+        })
+        .collect();
+    let mut versions: Vec<&str> = input
+        .implementations
+        .values()
+        .filter_map(|i| {
+            let at = i.find("Mesa ")?;
+            let rest = &i[at..];
+            let end = rest[5..]
+                .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+                .map_or(rest.len(), |e| e + 5);
+            Some(rest[..end].trim_end_matches('.'))
+        })
+        .filter(|v| v.len() > 5)
+        .collect();
+    versions.sort();
+    versions.dedup();
+    let versions = if versions.is_empty() {
+        String::new()
+    } else {
+        format!(" ({})", versions.join(", "))
+    };
+    format!(
+        "shadowcheck: {} backend{}{versions}: {}",
+        input.backends.len(),
+        if input.backends.len() == 1 { "" } else { "s" },
+        groups.join("; ")
+    )
+}
+
 /// The whole page.
 pub fn render(input: &ReportInput, geo: &Geometry, opts: &PageOptions) -> String {
     let mut o = String::with_capacity(1 << 20);
+    let title = opts.title.clone().unwrap_or_else(|| default_title(input));
     let _ = write!(
         o,
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{}</title>\
          <meta name=\"viewport\" content=\"width=device-width\"><style>{}</style></head><body>\n",
-        esc(&opts.title),
+        esc(&title),
         page::STYLE
     );
-    let _ = writeln!(o, "<h1>{}</h1>", esc(&opts.title));
+    let _ = writeln!(o, "<h1>{}</h1>", esc(&title));
+    // The inputs are counted, not named: their paths are the machine's that made the page.
+    let implementations: Vec<String> = input
+        .backends
+        .iter()
+        .filter_map(|b| {
+            let i = input.implementations.get(b)?;
+            Some(format!("<li><code>{}</code>: {}</li>", esc(b), esc(i)))
+        })
+        .collect();
     let _ = writeln!(
         o,
-        "<div class=\"note\">shadowcheck {} · {} tests on {} backends · from {}</div>",
+        "<div class=\"note\">shadowcheck {} · {} tests on {} backends · from {} input(s){}</div>",
         env!("CARGO_PKG_VERSION"),
         input.results.len(),
         input.backends.len(),
-        if input.sources.len() <= 2 {
-            esc(&input.sources.join(", "))
+        input.sources.len(),
+        if implementations.is_empty() {
+            String::new()
         } else {
-            // Many inputs: a count, and the list folded away.
-            let items: Vec<String> = input
-                .sources
-                .iter()
-                .map(|s| format!("<li>{}</li>", esc(s)))
-                .collect();
-            format!("<details style=\"display:inline\"><summary>{} inputs</summary><ul>{}</ul></details>", input.sources.len(), items.join(""))
+            format!(
+                " · <details style=\"display:inline\"><summary>implementations</summary><ul>{}</ul></details>",
+                implementations.join("")
+            )
         }
     );
     o.push_str("<nav><a href=\"#s-summary\">Summary</a><a href=\"#s-matrix\">Matrix</a><a href=\"#s-pictures\">Pictures</a><a href=\"#s-details\">Details</a></nav>\n");
@@ -314,6 +378,47 @@ mod tests {
     use crate::records::{ExpectedSummary, Outcome, Status, Tags};
     use shadowcheck_model::ApiPath;
     use shadowcheck_protocol::Rgba;
+
+    #[test]
+    fn the_default_title_says_what_the_page_holds_and_no_input_path_is_shown() {
+        let mut input = ReportInput {
+            backends: vec![
+                "soft".into(),
+                "egl:llvmpipe:core".into(),
+                "egl:zink:es3".into(),
+                "osmesa:llvmpipe:compat".into(),
+                "webgl:chromium".into(),
+            ],
+            sources: vec!["/tmp/machine-only/run/results.jsonl".into()],
+            ..ReportInput::default()
+        };
+        input.implementations.insert(
+            "egl:llvmpipe:core".into(),
+            "egl:llvmpipe:core (4.5 (Core Profile) Mesa 22.3.6; llvmpipe)".into(),
+        );
+        input.implementations.insert(
+            "webgl:chromium".into(),
+            "webgl:chromium (WebGL 2.0 (OpenGL ES 3.0 Chromium))".into(),
+        );
+        assert_eq!(
+            default_title(&input),
+            "shadowcheck: 5 backends (Mesa 22.3.6): soft; egl: llvmpipe, zink; osmesa: llvmpipe; webgl: chromium"
+        );
+        let page = render(&input, &Geometry::default(), &PageOptions::default());
+        assert!(page.contains("<title>shadowcheck: 5 backends (Mesa 22.3.6)"));
+        assert!(
+            !page.contains("/tmp/machine-only"),
+            "an input path on the page"
+        );
+        assert!(
+            page.contains("from 1 input(s)") && page.contains("WebGL 2.0 (OpenGL ES 3.0 Chromium)")
+        );
+        let named = PageOptions {
+            title: Some("given".into()),
+            ..PageOptions::default()
+        };
+        assert!(render(&input, &Geometry::default(), &named).contains("<h1>given</h1>"));
+    }
 
     fn result(backend: &str, id: &str, outcome: Outcome, r: f64) -> TestResult {
         TestResult {

@@ -1,5 +1,7 @@
-//! README.md's headline result tables are those of the committed reference results: regenerating
-//! them from reports/headline.json and reports/*/SUMMARY.md changes nothing.
+//! What is committed under reports/ and README.md's result tables: the tables are those of the
+//! committed reference results (regenerating them from reports/headline.json and
+//! reports/*/SUMMARY.md changes nothing), and no report shadowcheck wrote names a path of the
+//! machine that made it.
 use shadowcheck_runner::report::headline;
 use std::path::Path;
 
@@ -87,4 +89,58 @@ fn summarize_update_readme_rewrites_a_stale_table() {
     assert!(stderr.contains("claims equal counts"), "{stderr}");
     assert_eq!(std::fs::read_to_string(dir.join("README.md")).unwrap(), new);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The files shadowcheck writes into reports/ (summaries, reports, the HTML page, the review
+/// queues, the benchmark and mutant reports, the reproducers' REPORT.md) name no absolute path of
+/// the machine that made them: a reader's checkout has none of them.
+#[test]
+fn committed_reports_name_no_machine_path() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let generated = |name: &str| {
+        matches!(
+            name,
+            "index.html"
+                | "SUMMARY.md"
+                | "summary.md"
+                | "report.md"
+                | "REPORT.md"
+                | "CONSENSUS.md"
+                | "MUTANTS.md"
+                | "BENCH.md"
+        )
+    };
+    let mut stack = vec![root.join("reports")];
+    let mut checked = 0;
+    let mut found = vec![];
+    while let Some(dir) = stack.pop() {
+        for e in std::fs::read_dir(&dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+                continue;
+            }
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            if !generated(&name) {
+                continue;
+            }
+            let text = std::fs::read_to_string(&p).unwrap();
+            checked += 1;
+            for bad in ["/tmp/", "/root/", "/home/", "/work/", "/var/tmp/"] {
+                if let Some(at) = text.find(bad) {
+                    let end = (at + 60).min(text.len());
+                    let end = (end..text.len())
+                        .find(|&i| text.is_char_boundary(i))
+                        .unwrap_or(text.len());
+                    found.push(format!("{}: {}", p.display(), &text[at..end]));
+                }
+            }
+        }
+    }
+    assert!(checked >= 10, "only {checked} generated reports found");
+    assert!(
+        found.is_empty(),
+        "machine paths in committed reports:\n{}",
+        found.join("\n")
+    );
 }
