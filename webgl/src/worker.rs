@@ -199,7 +199,8 @@ impl WebglWorker {
             .evaluate(&format!("shadowcheck.run({arg}, {{\"lose\": {lose}}})"))
         {
             Ok(v) => v,
-            // The page threw (with its context): every case of the job answers with the message.
+            // The page threw with its context intact (page.js answers a loss instead): every
+            // case of the job answers with the message.
             Err(WebglError::Page(msg)) => {
                 return Ok(vec![Answer::Error(format!("page: {msg}")); cases.len()])
             }
