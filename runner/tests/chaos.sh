@@ -2,8 +2,9 @@
 # The attacks of issue 14 ("the run's contract with CI") against a release build, one line each:
 #   attack | what was seen | exit code | OK (contract kept) or BROKEN
 # Usage, from the repository root:  bash runner/tests/chaos.sh [path/to/shadowcheck]
-# Needs python3; the GL attacks need Mesa (as installed by .ci/run) and are SKIPPED without it; the
-# full-disk attack needs a tmpfs mount (root) and is SKIPPED without one. Takes a few minutes.
+# Needs python3; the GL attacks need Mesa (as installed by .ci/run) and are SKIPPED without it, the
+# WebGL kills need Chromium and are SKIPPED without it; the full-disk attack needs a tmpfs mount
+# (root) and is SKIPPED without one. Takes a few minutes.
 # It only reports: its exit status is the number of BROKEN lines.
 set -u
 SC=${1:-target/release/shadowcheck}
