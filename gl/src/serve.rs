@@ -78,7 +78,7 @@ fn flush_batch(
     };
     for slot in slots {
         let msg = match slot {
-            Slot::State(c) => worker.run_state(&c),
+            Slot::State(c) => worker.answer_state(&c)?,
             Slot::Lookup(id) => {
                 let main = next();
                 let n = points.next().unwrap_or(0);
@@ -110,6 +110,12 @@ pub trait Serve {
             case_id: case.id.clone(),
             reason: "this implementation runs no state cases".into(),
         }
+    }
+    /// What the loop answers to a state case: [`Serve::run_state`]'s reply. A worker that can
+    /// lose its implementation during a state case (the WebGL worker's lost context) overrides
+    /// this one: an `Err` ends the loop without answering, as from [`Serve::run_batch`].
+    fn answer_state(&mut self, case: &StateCase) -> std::io::Result<Reply> {
+        Ok(self.run_state(case))
     }
 }
 

@@ -2,8 +2,9 @@
 # The attacks of issue 14 ("the run's contract with CI") against a release build, one line each:
 #   attack | what was seen | exit code | OK (contract kept) or BROKEN
 # Usage, from the repository root:  bash runner/tests/chaos.sh [path/to/shadowcheck]
-# Needs python3; the GL attacks need Mesa (as installed by .ci/run) and are SKIPPED without it; the
-# full-disk attack needs a tmpfs mount (root) and is SKIPPED without one. Takes a few minutes.
+# Needs python3; the GL attacks need Mesa (as installed by .ci/run) and are SKIPPED without it, the
+# WebGL kills need Chromium and are SKIPPED without it; the full-disk attack needs a tmpfs mount
+# (root) and is SKIPPED without one. Takes a few minutes.
 # It only reports: its exit status is the number of BROKEN lines.
 set -u
 SC=${1:-target/release/shadowcheck}
@@ -200,6 +201,72 @@ open(p, "w").write(head + "\n" + json.dumps(c1) + ",\n" + json.dumps(c2) + "\n]}
 EOF
 "$SC" run -b soft --fixtures "$T/badfx" -o "$T/a22" >"$T/a22.out" 2>&1; c=$?
 line "fixture: id with a comma, API path twice" "$(grep -c "in the id" "$T/a22.out") comma error, $(grep -c 'duplicate API path' "$T/a22.out") duplicate error" $c "$(ok_if "[ $c = 96 ] && grep -q 'in the id' $T/a22.out && grep -q 'duplicate API path' $T/a22.out")"
+
+# WebGL backend (webgl:chromium): Chromium's GPU process and the page's renderer killed by PID
+# during a run, a browser that cannot start, one that ignores Browser.close, a worker killed with
+# SIGKILL (its profile folder). The kills need Chromium and are SKIPPED without it.
+descendants() { # pid: every descendant's "pid args"
+  local k
+  for k in $(ps -o pid= --ppid "$1" 2>/dev/null); do
+    ps -o pid=,args= -p "$k" 2>/dev/null; descendants "$k"
+  done
+}
+# kill_in_run DIR WHAT: `run -v -b webgl:chromium` on the GLES 3.2 2D fixtures into DIR (the
+# clean run's failures as baseline); once its first batch is written, SIGKILL every descendant
+# process whose arguments match WHAT (once).
+kill_in_run() {
+  "$SC" run -v -b webgl:chromium --fixtures cases/fixtures/gles32/2d --baseline "$T/w0/failures.csv" \
+    -o "$1" >"$1.out" 2>&1 &
+  local p=$! i victims=""
+  for i in $(seq 600); do
+    [ "$(cat "$1/results.jsonl" 2>/dev/null | wc -l)" -gt 1 ] && break
+    sleep 0.05
+  done
+  victims=$(descendants $p | grep -- "$2" | grep -v -- '--top-chrome' | awk '{print $1}')
+  [ -n "$victims" ] && kill -9 $victims
+  wait $p; echo "$? $(echo $victims | wc -w)"
+}
+statuses() { cut -d, -f1,2 "$1/results.csv" | sed 's/,ExpectedFail$/,Fail/' | sort; }
+if "$SC" webgl-worker --probe >/dev/null 2>&1; then
+  "$SC" run -b webgl:chromium --fixtures cases/fixtures/gles32/2d -o "$T/w0" >/dev/null 2>&1
+  read -r c n <<<"$(kill_in_run "$T/w1" '--type=gpu-process')"
+  lost=$(grep -c 'the WebGL context was lost' "$T/w1.out")
+  same=$(cmp -s <(statuses "$T/w0") <(statuses "$T/w1") && echo same || echo different)
+  line "webgl: kill -9 Chromium's GPU process" "$n killed, $lost context-lost exits, verdicts $same as a clean run's" $c "$(ok_if "[ $c = 0 ] && [ $n -ge 1 ] && [ $lost -ge 1 ] && [ $same = same ]")"
+  read -r c n <<<"$(kill_in_run "$T/w2" '--type=renderer')"
+  died=$(grep -c "the page's renderer process died" "$T/w2.out")
+  same=$(cmp -s <(statuses "$T/w0") <(statuses "$T/w2") && echo same || echo different)
+  line "webgl: kill -9 the page's renderer" "$n killed, $died renderer-died exits, verdicts $same, $(grep -c ',Timeout,' "$T/w2/results.csv") Timeout" $c "$(ok_if "[ $c = 0 ] && [ $n -ge 1 ] && [ $died -ge 1 ] && [ $same = same ]")"
+  # The worker killed once its first batch is answered: the runner restarts it, and the next
+  # worker's start removes the killed one's profile folder.
+  mkdir -p "$T/w3tmp"
+  TMPDIR="$T/w3tmp" "$SC" run -b webgl:chromium --fixtures cases/fixtures/gles32/2d --baseline "$T/w0/failures.csv" \
+    -o "$T/w3" >"$T/w3.out" 2>&1 &
+  p=$!; w=""
+  for i in $(seq 600); do
+    [ "$(cat "$T/w3/results.jsonl" 2>/dev/null | wc -l)" -gt 1 ] && break
+    sleep 0.05
+  done
+  w=$(descendants $p | grep -- 'webgl-worker' | awk '{print $1}' | head -1)
+  had=$(ls "$T/w3tmp" | grep -c "^shadowcheck-chromium-$w-")
+  [ -n "$w" ] && kill -9 "$w"; wait $p; c=$?
+  left=$(ls "$T/w3tmp" | grep -c '^shadowcheck-chromium-')
+  line "webgl: kill -9 the worker (profile folder)" "worker ${w:-not found} killed with $had folder, $left folders left" $c "$(ok_if "[ -n '$w' ] && [ $had = 1 ] && [ $left = 0 ]")"
+else
+  line "webgl: kill -9 Chromium's GPU process" "SKIPPED (no Chromium)" - SKIPPED
+  line "webgl: kill -9 the page's renderer" "SKIPPED (no Chromium)" - SKIPPED
+  line "webgl: kill -9 the worker (profile folder)" "SKIPPED (no Chromium)" - SKIPPED
+fi
+printf '#!/bin/sh\necho "chaos-chromium: error while loading shared libraries" >&2\nsleep 40 &\nexit 127\n' >"$T/nochrome"
+chmod +x "$T/nochrome"
+s0=$(date +%s)
+SHADOWCHECK_CHROMIUM="$T/nochrome" "$SC" run -b webgl:chromium --fixtures "$FX" -o "$T/w4" >"$T/w4.out" 2>&1; c=$?
+line "webgl: browser exits at start (pipe kept)" "$(( $(date +%s) - s0 )) s, $(grep -o 'exit status: 127' "$T/w4.out" | head -1), $(grep -c 'no hello within' "$T/w4.out") 'no hello'" $c "$(ok_if "[ $c = 96 ] && grep -q 'exit status: 127; its last stderr lines: chaos-chromium' $T/w4.out && ! grep -q 'no hello within' $T/w4.out")"
+printf '#!/bin/sh\nexec python3 %s hang-close "$@"\n' "$(pwd)/webgl/tests/fake_chromium.py" >"$T/hangclose"
+chmod +x "$T/hangclose"
+s0=$(date +%s)
+printf '{"type":"hello","protocol":2}\n{"type":"bye"}\n' | SHADOWCHECK_CHROMIUM="$T/hangclose" timeout 60 "$SC" webgl-worker >/dev/null 2>&1; c=$?
+line "webgl: browser ignores Browser.close" "worker ended after $(( $(date +%s) - s0 )) s" $c "$(ok_if "[ $c = 0 ] && [ $(( $(date +%s) - s0 )) -lt 10 ]")"
 
 echo "($T kept; $BROKEN BROKEN)"
 exit $BROKEN

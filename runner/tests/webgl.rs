@@ -317,3 +317,208 @@ fn a_rejected_tex_parameter_is_an_error_answer_naming_the_call() {
         "glTexParameteri(TEXTURE_WRAP_S) raised GL_INVALID_ENUM"
     );
 }
+
+/// A browser for `SHADOWCHECK_CHROMIUM` in `dir`: `webgl/tests/fake_chromium.py MODE` (a
+/// DevTools pipe speaker standing in for Chromium).
+fn fake_chromium(dir: &std::path::Path, mode: &str) -> PathBuf {
+    use std::os::unix::fs::PermissionsExt;
+    let py = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .join("webgl/tests/fake_chromium.py");
+    let p = dir.join(format!("chromium-{mode}"));
+    std::fs::write(
+        &p,
+        format!("#!/bin/sh\nexec python3 {} {mode} \"$@\"\n", py.display()),
+    )
+    .unwrap();
+    std::fs::set_permissions(&p, std::fs::Permissions::from_mode(0o755)).unwrap();
+    p
+}
+
+/// One lookup (r = 1: a context lost before the read-back reads (0,0,0,0), a Fail) and one state
+/// case of the committed GLES 3.2 fixtures.
+const ONE_LOOKUP: &str =
+    "^gles32/2d/d16/nearest/notequal/texel1/ref=0\\.5/dt=0\\.2_0\\.4_0\\.6_0\\.8$";
+const ONE_STATE: &str = "^state/gles32/es/2d/compare_mode/initial$";
+
+/// `run -b webgl:chromium` on the two committed fixture files of [`ONE_LOOKUP`] and
+/// [`ONE_STATE`] with the worker's test fault `fault`.
+fn run_with_fault(dir: &str, pattern: &str, fault: &str, extra: &[&str]) -> (Run, PathBuf) {
+    let tmp = tmpdir(dir);
+    let r = Run::of(
+        bin()
+            .args(["run", "-v", "--backend", "webgl:chromium", "--fixtures"])
+            .arg(fixtures().join("gles32/2d/nearest.json"))
+            .arg("--fixtures")
+            .arg(fixtures().join("state/gles32.json"))
+            .args(["--cases", pattern])
+            .args(extra)
+            .arg("--out")
+            .arg(&tmp)
+            .env(shadowcheck_webgl::worker::TEST_FAULT_ENV, fault)
+            .output()
+            .unwrap(),
+    );
+    (r, tmp)
+}
+
+#[test]
+fn a_lost_webgl_context_is_a_crash_of_the_cases_in_flight_never_a_verdict() {
+    // WEBGL_lose_context's loseContext() in the real page, in every worker: once the lookup's
+    // texture group is drawn (before the read-back), and before the state case's call. What the
+    // page would read then ((0,0,0,0); CONTEXT_LOST_WEBGL from getError) is never an answer.
+    if !chromium_or_skip("the webgl:chromium lost-context test") {
+        return;
+    }
+    let pattern = format!("{ONE_LOOKUP}|{ONE_STATE}");
+    let (r, tmp) = run_with_fault("webgl-lost", &pattern, "lose-context", &[]);
+    assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
+    let res = results(&tmp);
+    assert_eq!(res.len(), 2, "{res:?}");
+    for (test, (status, reason)) in &res {
+        let reason = reason.as_deref().unwrap_or("");
+        assert_eq!(status, "Crash", "{test}: {status} {reason}");
+        assert!(
+            reason.contains("the WebGL context was lost (")
+                && reason.contains("the cases in flight are not answered"),
+            "{test}: {reason}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&tmp);
+}
+
+#[test]
+fn a_dead_renderer_is_a_crash_with_the_reason_not_a_timeout() {
+    // Page.crash before each job: the page's renderer process dies and Chromium never answers
+    // the job's Runtime.evaluate (it sends Inspector.targetCrashed). --timeout 60: waiting for
+    // the answer would be a Timeout a minute later.
+    if !chromium_or_skip("the webgl:chromium dead-renderer test") {
+        return;
+    }
+    let (r, tmp) = run_with_fault(
+        "webgl-renderer",
+        ONE_LOOKUP,
+        "crash-renderer",
+        &["--timeout", "60"],
+    );
+    assert_eq!(r.code, 100, "{}{}", r.stdout, r.stderr);
+    let res = results(&tmp);
+    assert_eq!(res.len(), 1, "{res:?}");
+    for (test, (status, reason)) in &res {
+        let reason = reason.as_deref().unwrap_or("");
+        assert_eq!(status, "Crash", "{test}: {status} {reason}");
+        assert!(
+            reason.contains("the page's renderer process died"),
+            "{test}: {reason}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&tmp);
+}
+
+#[test]
+fn a_browser_that_cannot_start_says_why_not_no_hello_within_30_s() {
+    // The browser exits at once with a message, but a child of its keeps the DevTools pipe open
+    // (no end of file): the reason is its exit status and stderr, given at once.
+    use std::os::unix::fs::PermissionsExt;
+    let (dir, fx) = cases_dir("webgl-nostart", 2);
+    let exe = dir.join("chromium");
+    std::fs::write(
+        &exe,
+        "#!/bin/sh\necho 'fake-chromium: error while loading shared libraries: libfoo.so' >&2\nsleep 40 &\nexit 127\n",
+    )
+    .unwrap();
+    std::fs::set_permissions(&exe, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let t0 = std::time::Instant::now();
+    let r = Run::of(
+        bin()
+            .args(["run", "-b", "webgl:chromium", "--fixtures", &fx, "--out"])
+            .arg(dir.join("out"))
+            .env(shadowcheck_webgl::browser::CHROMIUM_ENV, &exe)
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(r.code, 96, "{}{}", r.stdout, r.stderr);
+    assert!(
+        r.stderr
+            .contains("backend `webgl:chromium` cannot start here")
+            && r.stderr.contains("exit status: 127")
+            && r.stderr
+                .contains("error while loading shared libraries: libfoo.so"),
+        "{}",
+        r.stderr
+    );
+    assert!(!r.stderr.contains("no hello within"), "{}", r.stderr);
+    assert!(t0.elapsed().as_secs() < 25, "{:?}", t0.elapsed());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_killed_workers_profile_folder_is_removed_by_the_next_worker() {
+    // SIGKILL leaves the worker no exit path: its browser dies with it (PR_SET_PDEATHSIG), its
+    // profile folder stays, named by its pid; the next worker's start removes it. A worker that
+    // ends by itself removes its own, also when its page cannot start.
+    let (dir, _) = cases_dir("webgl-profile", 1);
+    let tmp = dir.join("tmp");
+    std::fs::create_dir_all(&tmp).unwrap();
+    let profiles = || -> Vec<String> {
+        std::fs::read_dir(&tmp)
+            .unwrap()
+            .flatten()
+            .map(|e| e.file_name().to_string_lossy().to_string())
+            .filter(|n| n.starts_with(shadowcheck_webgl::browser::PROFILE_PREFIX))
+            .collect()
+    };
+    let worker = |mode: &str| {
+        let mut c = bin();
+        c.arg("webgl-worker")
+            .env("TMPDIR", &tmp)
+            .env(
+                shadowcheck_webgl::browser::CHROMIUM_ENV,
+                fake_chromium(&dir, mode),
+            )
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped());
+        c
+    };
+    let mut w = worker("page").spawn().unwrap();
+    {
+        use std::io::{BufRead, Write};
+        let mut stdin = w.stdin.take().unwrap();
+        stdin
+            .write_all(b"{\"type\":\"hello\",\"protocol\":2}\n")
+            .unwrap();
+        let mut line = String::new();
+        std::io::BufReader::new(w.stdout.take().unwrap())
+            .read_line(&mut line)
+            .unwrap();
+        assert!(line.contains("\"hello\""), "{line}");
+        // The worker runs, with its browser and page: kill it.
+        let pid = w.id();
+        assert_eq!(
+            profiles()
+                .iter()
+                .filter(|n| n.contains(&format!("-{pid}-")))
+                .count(),
+            1,
+            "{:?}",
+            profiles()
+        );
+        w.kill().unwrap();
+        w.wait().unwrap();
+        drop(stdin);
+    }
+    assert_eq!(profiles().len(), 1, "{:?}", profiles());
+    // The next worker (here one whose page has no context: it exits at start) removes it, and
+    // its own.
+    let out = worker("ok").output().unwrap();
+    assert!(!out.status.success());
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("fake: no WebGL 2.0 context"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(profiles(), Vec::<String>::new());
+    let _ = std::fs::remove_dir_all(&dir);
+}

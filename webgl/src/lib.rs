@@ -24,4 +24,8 @@ pub enum WebglError {
     /// The page has no usable WebGL 2.0 context.
     #[error("WebGL: {0}")]
     Context(String),
+    /// The page's WebGL context was lost while it ran (the page says why): nothing it read
+    /// is an observation.
+    #[error("the WebGL context was lost ({0})")]
+    ContextLost(String),
 }

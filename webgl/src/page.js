@@ -3,12 +3,46 @@
 // needs is decided on the Rust side by the GL worker's own code (texture bytes, TexParameter list,
 // es300 shader text, uniform values); this page only makes the WebGL calls, one pixel of an
 // RGBA32F framebuffer per (case, path), and reads the pixels back once per job.
+//
+// A lost context (WebGL 1.0 §5.15.2, "The Context Lost Event", and §5.14.13, "Detecting context
+// lost events", which WebGL 2.0 keeps: the calls then do nothing and getError reports
+// CONTEXT_LOST_WEBGL once) draws nothing and reads nothing back, so run() and state() then answer
+// {lost: why} instead of values: the worker never sends them.
 globalThis.shadowcheck = (() => {
   const FB = 256;
   let gl = null;
   let fbo = null;
   let vao = null;
   const programs = new Map();
+  // Why the context is lost, once seen: the webglcontextlost event, isContextLost(), or
+  // CONTEXT_LOST_WEBGL from getError.
+  let lost = null;
+  const CONTEXT_LOST_WEBGL = 0x9242;
+
+  // getError, noting a lost context.
+  function err() {
+    const e = gl.getError();
+    if (e === CONTEXT_LOST_WEBGL && !lost) lost = "getError() returned CONTEXT_LOST_WEBGL";
+    return e;
+  }
+
+  // Why the context is lost, or null.
+  function lostNow() {
+    if (!lost && gl && gl.isContextLost()) lost = "isContextLost() is true";
+    return lost;
+  }
+
+  // Clears pending errors (none are left once the context is lost).
+  function drain() {
+    while (err() !== gl.NO_ERROR && !gl.isContextLost()) {}
+  }
+
+  // Test fault (SHADOWCHECK_WEBGL_TEST_FAULT=lose-context): WEBGL_lose_context's loseContext().
+  function loseForTest() {
+    const ext = gl.getExtension("WEBGL_lose_context");
+    if (!ext) throw new Error("test fault lose-context: no WEBGL_lose_context");
+    ext.loseContext();
+  }
 
   const ERRORS = {
     0x0500: "GL_INVALID_ENUM",
@@ -22,9 +56,9 @@ globalThis.shadowcheck = (() => {
 
   // Throws "<what> raised <error>" for a pending error, as the GL worker's texture::check does.
   function check(what) {
-    const e = gl.getError();
+    const e = err();
     if (e !== gl.NO_ERROR) {
-      while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+      drain();
       throw new Error(what + " raised " + errorName(e));
     }
   }
@@ -63,6 +97,9 @@ globalThis.shadowcheck = (() => {
     canvas.height = 1;
     gl = canvas.getContext("webgl2", { antialias: false, depth: false, stencil: false });
     if (!gl) return { error: "no WebGL 2.0 context" };
+    canvas.addEventListener("webglcontextlost", (ev) => {
+      if (!lost) lost = "webglcontextlost event" + (ev.statusMessage ? ": " + ev.statusMessage : "");
+    });
     const enabled = [];
     for (const e of ["EXT_color_buffer_float", "WEBGL_stencil_texturing", "WEBGL_debug_renderer_info"]) {
       if (gl.getExtension(e)) enabled.push(e);
@@ -94,6 +131,7 @@ globalThis.shadowcheck = (() => {
     gl.pixelStorei(gl.PACK_ALIGNMENT, 1);
     gl.disable(gl.DITHER);
     check("framebuffer setup");
+    if (lostNow()) return { error: "the WebGL context was lost at start (" + lost + ")" };
     const dbg = enabled.includes("WEBGL_debug_renderer_info") ? gl.getExtension("WEBGL_debug_renderer_info") : null;
     return {
       version: gl.getParameter(gl.VERSION),
@@ -168,9 +206,9 @@ globalThis.shadowcheck = (() => {
       }
     };
     setParams(false);
-    const e = gl.getError();
+    const e = err();
     if (e !== gl.NO_ERROR) {
-      while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+      drain();
       setParams(true);
       throw new Error("glTexParameter* raised " + errorName(e));
     }
@@ -211,15 +249,28 @@ globalThis.shadowcheck = (() => {
 
   // job: {programs: [[vs, fs]], slots, groups: [{cases: [i], texture: {...}, draws: [{case, api,
   // slot, program, p, x, dx, dy}]}]}. Answer: {pixels: base64 of slots x RGBA32F, errors: {case:
-  // message}}; a pixel no draw wrote stays -1.
-  function run(job) {
+  // message}}; a pixel no draw wrote stays -1. With a lost context (before, during or after the
+  // job, an exception it caused included): {lost: why}. opts.lose: the test fault, the context
+  // lost once the first group is drawn.
+  function run(job, opts) {
+    try {
+      const answer = runJob(job, opts || {});
+      return lostNow() ? { lost } : answer;
+    } catch (e) {
+      if (lostNow()) return { lost };
+      throw e;
+    }
+  }
+
+  function runJob(job, opts) {
+    if (lostNow()) return { lost };
     const errors = {};
     gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
     gl.viewport(0, 0, FB, FB);
     gl.clearColor(-1, -1, -1, -1);
     gl.clear(gl.COLOR_BUFFER_BIT);
     for (const g of job.groups) {
-      while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+      drain();
       let tex;
       let so = null;
       try {
@@ -249,6 +300,10 @@ globalThis.shadowcheck = (() => {
         gl.bindSampler(0, null);
         gl.deleteSampler(so);
       }
+      if (opts.lose) {
+        opts.lose = false;
+        loseForTest();
+      }
     }
     const rows = Math.max(1, Math.ceil(job.slots / FB));
     const px = new Float32Array(FB * rows * 4);
@@ -259,8 +314,10 @@ globalThis.shadowcheck = (() => {
 
   // A state case (state.rs): the call on a fresh texture bound to unit 0, glGetError after it, and
   // (read_back) getTexParameter and glGetError after that; the GL worker's state.rs, in WebGL.
-  function state(s) {
-    while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+  function state(s, opts) {
+    if (opts && opts.lose) loseForTest();
+    if (lostNow()) return { lost };
+    drain();
     const tex = gl.createTexture();
     gl.activeTexture(gl.TEXTURE0);
     gl.bindTexture(s.target, tex);
@@ -274,20 +331,21 @@ globalThis.shadowcheck = (() => {
     let readError = 0;
     if (s.call === "initial") {
       value = get();
-      error = gl.getError();
+      error = err();
     } else {
       if (s.call === "int") gl.texParameteri(s.target, s.pname, Number(s.value));
       else gl.texParameterf(s.target, s.pname, Number(s.value));
-      error = gl.getError();
+      error = err();
       if (s.read_back) {
-        while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+        drain();
         value = get();
-        readError = gl.getError();
+        readError = err();
       }
     }
     gl.bindTexture(s.target, null);
     gl.deleteTexture(tex);
-    while (gl.getError() !== gl.NO_ERROR && !gl.isContextLost()) {}
+    drain();
+    if (lostNow()) return { lost };
     return { error, value, read_error: readError };
   }
 

@@ -38,8 +38,13 @@ fn js_number(v: f64) -> String {
     }
 }
 
-/// Runs `case` in the page.
-pub fn observe(browser: &mut Browser, case: &StateCase) -> Result<StateObserved, WebglError> {
+/// Runs `case` in the page (`lose`: the test fault, the context lost before the call). A lost
+/// context is [`WebglError::ContextLost`], never an observation.
+pub fn observe(
+    browser: &mut Browser,
+    case: &StateCase,
+    lose: bool,
+) -> Result<StateObserved, WebglError> {
     let (call, value) = match case.call {
         StateCall::Initial => ("initial", 0.0),
         StateCall::SetInt(i) => ("int", i as f64),
@@ -53,7 +58,12 @@ pub fn observe(browser: &mut Browser, case: &StateCase) -> Result<StateObserved,
         read_back: case.read_back,
     };
     let arg = serde_json::to_string(&req).map_err(|e| WebglError::Page(e.to_string()))?;
-    let v = browser.evaluate(&format!("shadowcheck.state({arg})"))?;
+    let v = browser.evaluate(&format!("shadowcheck.state({arg}, {{\"lose\": {lose}}})"))?;
+    if let Some(why) = v.get("lost") {
+        return Err(WebglError::ContextLost(
+            why.as_str().unwrap_or("").to_string(),
+        ));
+    }
     let page: PageState = serde_json::from_value(v.clone())
         .map_err(|e| WebglError::Page(format!("state answered {v}: {e}")))?;
     let (error, other_error) = GlError::classify(page.error);

@@ -57,12 +57,49 @@ pub struct PageInfo {
     pub enabled: Vec<String>,
 }
 
+/// Environment variable of the worker's test faults (the tests of the runner and the crate): a
+/// fault made in the real browser at every page call, `lose-context` (WEBGL_lose_context's
+/// loseContext() once the job's first texture group is drawn, or before a state case's call) or
+/// `crash-renderer` (the page's renderer process crashed by `Page.crash` before each job).
+pub const TEST_FAULT_ENV: &str = "SHADOWCHECK_WEBGL_TEST_FAULT";
+
+/// A fault of [`TEST_FAULT_ENV`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TestFault {
+    LoseContext,
+    CrashRenderer,
+}
+
+impl TestFault {
+    /// The fault asked for by [`TEST_FAULT_ENV`], if any.
+    pub fn from_env() -> Result<Option<TestFault>, WebglError> {
+        match std::env::var(TEST_FAULT_ENV).ok().as_deref() {
+            None | Some("") => Ok(None),
+            Some("lose-context") => Ok(Some(TestFault::LoseContext)),
+            Some("crash-renderer") => Ok(Some(TestFault::CrashRenderer)),
+            Some(other) => Err(WebglError::Browser(format!(
+                "{TEST_FAULT_ENV}={other}: expected lose-context or crash-renderer"
+            ))),
+        }
+    }
+}
+
 /// A browser with the page loaded.
 pub struct WebglWorker {
     browser: Browser,
     pub page: PageInfo,
     info: GlInfo,
     caps: Capabilities,
+    fault: Option<TestFault>,
+}
+
+/// The error that ends the protocol loop when the implementation is gone (the browser, the page's
+/// renderer, or the WebGL context): the cases in flight get no answer, so the runner's crash
+/// handling decides them (runner/PROTOCOL.md, "Failures"), never an observation read from it.
+fn gone(e: WebglError) -> std::io::Error {
+    std::io::Error::other(format!(
+        "{e}; the cases in flight are not answered (nothing read from a lost context is an observation)"
+    ))
 }
 
 /// The capabilities of a page that enabled `enabled` (WebGL extension names).
@@ -94,6 +131,7 @@ pub fn capabilities(enabled: &[String], extensions: &[String]) -> Capabilities {
 impl WebglWorker {
     /// Starts the browser, loads the page and creates its WebGL 2.0 context.
     pub fn start() -> Result<WebglWorker, WebglError> {
+        let fault = TestFault::from_env()?;
         let mut browser = Browser::start()?;
         browser.evaluate(PAGE_JS)?;
         let v = browser.evaluate("shadowcheck.init()")?;
@@ -119,6 +157,7 @@ impl WebglWorker {
             page,
             info,
             caps,
+            fault,
         })
     }
 
@@ -151,15 +190,28 @@ impl WebglWorker {
     fn run_job(&mut self, cases: &[Case]) -> std::io::Result<Vec<Answer>> {
         let built = job::build(&self.info, cases);
         let arg = serde_json::to_string(&built.job).map_err(std::io::Error::other)?;
-        let v = match self.browser.evaluate(&format!("shadowcheck.run({arg})")) {
+        if self.fault == Some(TestFault::CrashRenderer) {
+            self.browser.crash_renderer().map_err(gone)?;
+        }
+        let lose = self.fault == Some(TestFault::LoseContext);
+        let v = match self
+            .browser
+            .evaluate(&format!("shadowcheck.run({arg}, {{\"lose\": {lose}}})"))
+        {
             Ok(v) => v,
-            // The page threw: every case of the job answers with the message.
+            // The page threw with its context intact (page.js answers a loss instead): every
+            // case of the job answers with the message.
             Err(WebglError::Page(msg)) => {
                 return Ok(vec![Answer::Error(format!("page: {msg}")); cases.len()])
             }
-            // The browser is gone: so is this worker (the runner finds the case that did it).
-            Err(e) => return Err(std::io::Error::other(e.to_string())),
+            // The browser or the page's renderer is gone: so is this worker (the runner finds
+            // the case that did it).
+            Err(e) => return Err(gone(e)),
         };
+        if let Some(why) = v.get("lost") {
+            let why = why.as_str().unwrap_or("").to_string();
+            return Err(gone(WebglError::ContextLost(why)));
+        }
         let page: job::PageAnswer = serde_json::from_value(v)
             .map_err(|e| std::io::Error::other(format!("page answer: {e}")))?;
         Ok(job::answers(built, cases, page))
@@ -177,15 +229,16 @@ impl Serve for WebglWorker {
         }
     }
 
-    fn run_state(&mut self, case: &StateCase) -> Reply {
+    fn answer_state(&mut self, case: &StateCase) -> std::io::Result<Reply> {
         let caps = self.caps.clone();
+        let lose = self.fault == Some(TestFault::LoseContext);
         let mut failed = None;
         let reply =
             shadowcheck_gl::state::answer(&caps, None, case, |c| {
-                match super::state::observe(&mut self.browser, c) {
+                match super::state::observe(&mut self.browser, c, lose) {
                     Ok(o) => o,
                     Err(e) => {
-                        failed = Some(e.to_string());
+                        failed = Some(e);
                         StateObserved {
                             error: None,
                             other_error: None,
@@ -195,11 +248,14 @@ impl Serve for WebglWorker {
                 }
             });
         match failed {
-            Some(m) => Reply::Error {
+            // The page threw: an error answer, as for a lookup.
+            Some(WebglError::Page(m)) => Ok(Reply::Error {
                 case_id: case.id.clone(),
                 message: format!("page: {m}"),
-            },
-            None => reply,
+            }),
+            // A lost context, a dead renderer or browser: no answer.
+            Some(e) => Err(gone(e)),
+            None => Ok(reply),
         }
     }
 
