@@ -40,19 +40,31 @@ pub fn observed_text(o: &StateObserved) -> String {
 }
 
 /// The verdict on one observation of `case` on a backend whose extension string lists
-/// `extensions` (Fail with both sides and the citations when it differs; a case without an
-/// expectation cannot be judged: Fail saying so). The reason names the extension whose
-/// expectation was used, if any: a Pass under an extension's expectation says so too.
+/// `extensions` (Fail with both sides and the citations when it differs). A case without an
+/// expectation (a fixture without `expect`) is judged against the oracle's, as a lookup case
+/// is ([`crate::verdict::judge`]); one the oracle cannot evaluate is Skip with its reason. The
+/// reason names the extension whose expectation was used, if any: a Pass under an extension's
+/// expectation says so too.
 pub fn judge_state<S: AsRef<str>>(
     case: &StateCase,
     o: &StateObserved,
     extensions: &[S],
 ) -> (Outcome, Option<String>) {
-    let Some(e) = &case.expect else {
-        return (
-            Outcome::Fail,
-            Some("the state case carries no expectation (fixture without `expect`)".into()),
-        );
+    let evaluated;
+    let e = match &case.expect {
+        Some(e) => e,
+        None => match shadowcheck_oracle::state::expect_state(case) {
+            Ok(e) => {
+                evaluated = e;
+                &evaluated
+            }
+            Err(msg) => {
+                return (
+                    Outcome::Skip,
+                    Some(format!("no expectation for this state case: {msg}")),
+                )
+            }
+        },
     };
     let AppliedExpect {
         extension,
@@ -163,6 +175,36 @@ mod tests {
         };
         assert_eq!(judge_state(&c, &other, NONE).0, Outcome::Fail);
     }
+    #[test]
+    fn a_case_without_expect_is_judged_by_the_oracle() {
+        // GL 4.6 §8.10: TEXTURE_COMPARE_MODE takes NONE or COMPARE_REF_TO_TEXTURE; any other
+        // value is INVALID_ENUM (Errors of TexParameter) and the call is ignored (§2.3.1), so the
+        // initial NONE (Table 23.15) is read back.
+        let mut c = case(None, None);
+        c.expect = None;
+        let right = StateObserved {
+            error: Some(GlError::InvalidEnum),
+            other_error: None,
+            value: Some(StateValue::Enum(0)),
+        };
+        assert_eq!(judge_state(&c, &right, NONE), (Outcome::Pass, None));
+        let stored = StateObserved {
+            error: None,
+            other_error: None,
+            value: Some(StateValue::Enum(0x1234)),
+        };
+        let (o, why) = judge_state(&c, &stored, NONE);
+        assert_eq!(o, Outcome::Fail);
+        assert!(why
+            .unwrap_or_default()
+            .contains("expected GL_INVALID_ENUM, value 0x0000"),);
+        // A case the oracle cannot place (no API path, so no context kind): Skip, not Fail.
+        c.api.clear();
+        let (o, why) = judge_state(&c, &right, NONE);
+        assert_eq!(o, Outcome::Skip);
+        assert!(why.unwrap_or_default().starts_with("no expectation"));
+    }
+
     /// A GL 4.6 compatibility case on a pname only an extension defines, with the oracle's
     /// expectation (base INVALID_ENUM, and the extension's rules beside it).
     fn ext_case(pname: StatePname, call: StateCall) -> StateCase {

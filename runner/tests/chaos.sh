@@ -268,5 +268,43 @@ s0=$(date +%s)
 printf '{"type":"hello","protocol":2}\n{"type":"bye"}\n' | SHADOWCHECK_CHROMIUM="$T/hangclose" timeout 60 "$SC" webgl-worker >/dev/null 2>&1; c=$?
 line "webgl: browser ignores Browser.close" "worker ended after $(( $(date +%s) - s0 )) s" $c "$(ok_if "[ $c = 0 ] && [ $(( $(date +%s) - s0 )) -lt 10 ]")"
 
+# --- Run pipeline: state phase, give-up, stderr, unreadable answers, Ctrl-C count -----------------
+ONE='^gl46/1d/d16/nearest/none/texel1/read/'
+"$SC" run -b 'mock:extra=compare_mode/set=0x0205$' --fixtures "$FX" --cases '^state/gl46/core/' -o "$T/b1" >"$T/b1.out" 2>&1; c=$?
+line "second answer to a state case" "$(count_status "$T/b1" Crash) Crash, $(count_status "$T/b1" Pass) Pass" $c "$(ok_if "[ $c = 100 ] && [ $(count_status "$T/b1" Crash) = 1 ]")"
+
+"$SC" run -b 'mock:previous=compare_mode/set=0x0207$' --fixtures "$FX" --cases '^state/gl46/core/' -o "$T/b2" >"$T/b2.out" 2>&1; c=$?
+line "state answer naming the previous case" "$(count_status "$T/b2" Crash) Crash ($(grep -c 'set=0x0206@core,Crash' "$T/b2/results.csv") the named one)" $c "$(ok_if "[ $c = 100 ] && grep -q 'set=0x0206@core,Crash' $T/b2/results.csv")"
+
+"$SC" run -b "mock:late=$ONE" --fixtures "$FX" --cases "$ONE|^state/gl46/core/" -o "$T/b3" >"$T/b3.out" 2>&1; c=$?
+line "lookup's extra answer read with state cases" "$(count_status "$T/b3" Crash) Crash, $(count_status "$T/b3" Pass) Pass" $c "$(ok_if "[ $c = 100 ] && [ $(count_status "$T/b3" Crash) = 4 ]")"
+
+s=$(date +%s)
+timeout 300 "$SC" run -b 'mock:hang=^gl46/1d/d16/nearest/never/texel1/ref=0\.3/' --fixtures "$FX" --cases '^gl46/1d/' --timeout 0.2 --no-rerun -o "$T/b4" >"$T/b4.out" 2>&1; c=$?
+w=$(( $(date +%s) - s ))
+line "hang on one case of 28 sweep points" "$(count_status "$T/b4" Timeout) Timeout, $(count_status "$T/b4" Pass) Pass in ${w} s" $c "$(ok_if "[ $c = 100 ] && [ $(count_status "$T/b4" Timeout) = 4 ] && [ $(count_status "$T/b4" Pass) -gt 0 ] && [ $w -le 20 ]")"
+
+"$SC" run -b "mock:spew=$ONE" --fixtures "$FX" --cases '^gl46/1d/' --no-rerun -o "$T/b5" >"$T/b5.out" 2>&1; c=$?
+bytes=$(du -sb "$T/b5" | cut -f1)
+line "4 MiB stderr line, then a crash" "$(count_status "$T/b5" Crash) Crash; $bytes bytes of reports" $c "$(ok_if "[ $c = 100 ] && [ $bytes -lt 1000000 ] && grep -q 'bytes of this line not kept' $T/b5/report.json")"
+
+"$SC" run -b "mock:notutf8=$ONE" --fixtures "$FX" --cases '^gl46/1d/' -o "$T/b6" >"$T/b6.out" 2>&1; c=$?
+line "answer line not UTF-8" "$(grep -c 'bad answer line: not UTF-8' "$T/b6/report.json") reasons say not UTF-8; $(grep -c SIGKILL "$T/b6/report.json") SIGKILL" $c "$(ok_if "[ $c = 100 ] && grep -q 'not UTF-8' $T/b6/report.json && ! grep -q SIGKILL $T/b6/report.json")"
+
+"$SC" run -b mock: --fixtures "$FX" --cases '^gl46/1d/' -o "$T/b7n" >/dev/null 2>&1
+n=$(wc -l <"$T/b7n/results.csv")
+SHADOWCHECK_MOCK_INTERRUPT_RUNNER='^gl46/1d/d16/nearest/greater/texel1/ref=0\.3/dt=0\.2_0\.4_0\.6_0\.8$' \
+  "$SC" run -b mock: -b soft:sgix --fixtures "$FX" --cases '^gl46/1d/' -o "$T/b7" >"$T/b7.out" 2>&1; c=$?
+said=$(grep -o 'of [0-9]* tests finished' "$T/b7.out")
+line "Ctrl-C count, soft:sgix has no test of gl46" "said '${said:-nothing}' ($n tests)" $c "$(ok_if "[ $c = 130 ] && [ '$said' = 'of $n tests finished' ]")"
+
+SHADOWCHECK_MOCK_SEEN="$T/b8.seen" "$SC" run -b "mock:once,extra=$ONE" --fixtures "$FX" --cases '^gl46/1d/' -o "$T/b8" >"$T/b8.out" 2>&1; c=$?
+line "one-off extra answer line, re-run on" "$(count_status "$T/b8" Crash) Crash, $(count_status "$T/b8" Flake) Flake" $c "$(ok_if "[ $c = 100 ] && [ $(count_status "$T/b8" Flake) = 0 ]")"
+
+mkdir -p "$T/noexpect"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); [c.pop("expect", None) for c in d["state_cases"]]; json.dump(d, open(sys.argv[2], "w"))' "$FX/state/gl46.json" "$T/noexpect/state.json"
+"$SC" run -b soft --fixtures "$T/noexpect" -o "$T/b9" >"$T/b9.out" 2>&1; c=$?
+line "state cases without expect, correct impl" "$(count_status "$T/b9" Pass) Pass, $(count_status "$T/b9" Fail) Fail" $c "$(ok_if "[ $c = 0 ] && [ $(count_status "$T/b9" Fail) = 0 ]")"
+
 echo "($T kept; $BROKEN BROKEN)"
 exit $BROKEN

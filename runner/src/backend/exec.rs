@@ -23,6 +23,10 @@ use std::sync::mpsc::RecvTimeoutError;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
+/// How the reason of a Crash for a protocol violation starts (an unreadable answer line, an
+/// answer for another case, a second answer): the run never re-runs these as possible flakes.
+pub const PROTOCOL_ERROR: &str = "protocol error";
+
 /// How often a wait for answers checks whether the run was interrupted.
 const POLL: Duration = Duration::from_millis(200);
 
@@ -58,8 +62,13 @@ pub struct ExecBackend {
     pub spawns: usize,
     /// Give up after this many Timeouts in a row (0: never).
     give_up: usize,
-    /// Cases that ended in Timeout since the last answer or crash.
+    /// Cases that ended in Timeout since the last answer or crash; a case counts once, however
+    /// many parts (its lookup, its sweep points sent as cases of their own) timed out.
     timeouts_in_a_row: usize,
+    /// The case (id without a sweep point's suffix) whose lookup or sweep point timed out last in
+    /// this batch: its other parts are Timeout without being sent, as the case's outcome is
+    /// that Timeout whatever they answer (`sweep::merge`).
+    timed_out_case: Option<String>,
     /// Ids the current process has answered, by [`id_key`] (to recognize a second answer for
     /// one of them without keeping a copy of every id of the run).
     answered: HashSet<u64>,
@@ -101,6 +110,7 @@ impl ExecBackend {
             spawns: 0,
             give_up: opts.give_up,
             timeouts_in_a_row: 0,
+            timed_out_case: None,
             answered: HashSet::new(),
             ahead: VecDeque::new(),
             faults: vec![],
@@ -166,7 +176,8 @@ impl ExecBackend {
                 return Err(format!("exited before its hello ({how})"));
             }
         };
-        match Reply::parse_hello(&line) {
+        let parsed = line.and_then(|l| Reply::parse_hello(&l));
+        match parsed {
             Ok(h) => {
                 self.proc = Some(p);
                 Ok(Some(h))
@@ -203,8 +214,16 @@ impl ExecBackend {
                 let left = deadline.saturating_duration_since(Instant::now());
                 // Waits in slices, so that an interrupted run stops waiting.
                 match p.lines.recv_timeout(left.min(POLL)) {
-                    Ok(l) if l.trim().is_empty() => continue,
-                    Ok(l) => break l,
+                    Ok(Ok(l)) if l.trim().is_empty() => continue,
+                    Ok(Ok(l)) => break l,
+                    // A line the protocol cannot read (not UTF-8, too long) is the parse error
+                    // it is, on the case whose answer was expected.
+                    Ok(Err(why)) => {
+                        return (
+                            out,
+                            Some(Failure::Protocol(format!("bad answer line: {why}"))),
+                        )
+                    }
                     Err(RecvTimeoutError::Timeout) if crate::interrupt::requested() => {
                         return (out, Some(Failure::Died))
                     }
@@ -258,8 +277,10 @@ impl ExecBackend {
         let Some(p) = self.proc.as_mut() else { return };
         let mut stray = vec![];
         while let Ok(l) = p.lines.try_recv() {
-            if !l.trim().is_empty() {
-                stray.push(l);
+            match l {
+                Ok(l) if l.trim().is_empty() => {}
+                Ok(l) => stray.push(l),
+                Err(why) => stray.push(why),
             }
         }
         for l in stray {
@@ -292,7 +313,7 @@ impl ExecBackend {
         self.faults.push((
             case,
             format!(
-                "protocol error: the implementation answered {what} twice (an extra answer line)"
+                "{PROTOCOL_ERROR}: the implementation answered {what} twice (an extra answer line)"
             ),
         ));
     }
@@ -341,6 +362,12 @@ impl ExecBackend {
                 // Only the answered prefix comes back; `--resume` sends the rest again.
                 break;
             }
+            if self.timed_out_case.as_deref() == Some(case_of(rest[0].id())) {
+                results.push(CaseOutcome::Timeout(
+                    "not sent: another part of this case (its lookup or a sweep point) gave no answer".into(),
+                ));
+                continue;
+            }
             if self.give_up > 0 && self.timeouts_in_a_row >= self.give_up {
                 let msg = format!(
                     "not sent: the implementation gave no answer to {} cases in a row, so it was given up (--give-up-after {})",
@@ -359,6 +386,7 @@ impl ExecBackend {
             let streamed = !answers.is_empty();
             if streamed {
                 self.timeouts_in_a_row = 0;
+                self.timed_out_case = None;
             }
             results.extend(answers);
             let Some(failure) = failure else { break };
@@ -386,17 +414,22 @@ impl ExecBackend {
                         self.name,
                         rest[0].id()
                     ));
-                    results.push(CaseOutcome::Crash(format!("protocol error: {msg}")));
+                    results.push(CaseOutcome::Crash(format!("{PROTOCOL_ERROR}: {msg}")));
                 }
                 Failure::Died | Failure::Stalled => {
                     let stalled = matches!(failure, Failure::Stalled);
                     let how = self.kill_proc();
                     if rest.len() == 1 {
                         let what = if stalled {
-                            self.timeouts_in_a_row += 1;
+                            let case = case_of(rest[0].id());
+                            if self.timed_out_case.as_deref() != Some(case) {
+                                self.timeouts_in_a_row += 1;
+                                self.timed_out_case = Some(case.to_string());
+                            }
                             CaseOutcome::Timeout(format!("no answer within {:?}", self.timeout))
                         } else {
                             self.timeouts_in_a_row = 0;
+                            self.timed_out_case = None;
                             CaseOutcome::Crash(format!("the process died on this case: {how}"))
                         };
                         self.push_diag(format!(
@@ -423,6 +456,12 @@ impl ExecBackend {
         }
         results
     }
+}
+
+/// The case a sent id belongs to: a sweep point sent as a case of its own (`<case id>/sweep=<k>`,
+/// `sweep.rs`) belongs to its case; any other id is its case's.
+fn case_of(id: &str) -> &str {
+    shadowcheck_model::split_point_id(id).map_or(id, |(case, _)| case)
 }
 
 /// A group's request lines followed by `flush`, in one buffer (one hand-over to the writer thread).
@@ -456,7 +495,7 @@ fn id_key(id: &str) -> u64 {
     ids_key([id])
 }
 
-fn clip(s: &str) -> String {
+pub(super) fn clip(s: &str) -> String {
     if s.len() > 200 {
         let mut end = 200;
         while !s.is_char_boundary(end) {
@@ -508,6 +547,8 @@ impl Backend for ExecBackend {
         }
     }
     fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
+        // A case sent again (a flake re-run) is sent whole again.
+        self.timed_out_case = None;
         if self.sent_whole(cases) {
             self.run_group(&cases.iter().collect::<Vec<_>>())
         } else {
@@ -517,6 +558,7 @@ impl Backend for ExecBackend {
         }
     }
     fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {
+        self.timed_out_case = None;
         self.run_group(cases)
     }
     fn implementation(&self) -> Option<String> {

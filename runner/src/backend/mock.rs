@@ -14,12 +14,25 @@
 //! - `flaky`: fails the first time it sees the case in this process, passes afterwards;
 //! - `extra`: answers the case (as `pass`) twice;
 //! - `dup`: one observation with two results for each API path;
-//! - `empty`: an observation with `results: []` (and nothing skipped).
+//! - `empty`: an observation with `results: []` (and nothing skipped);
+//! - `previous`: answers (as `pass`) under the id of the case read before it in this process
+//!   (as `pass` when it is the first);
+//! - `late`: answers the case (as `pass`), and again just before its answer to the next case it
+//!   reads (a second answer that arrives late, e.g. while the state cases are read);
+//! - `notutf8`: answers a line that is not UTF-8;
+//! - `spew`: writes a 4 MiB line to stderr, then exits as `crash` does.
+//!
+//! State cases are answered with their expectation; `crash`, `hang`, `garbage`, `extra`,
+//! `late`, `previous`, `notutf8` and `spew` act on them as on lookups.
 //!
 //! Options (same list): `buffer` answers only at `flush` (like a GPU implementation; default is to
 //! answer each case as it is read); `slow=MS` sleeps MS milliseconds per case; `crashevery=N`
 //! exits on every N-th case it reads, counting across the worker's restarts when
-//! `SHADOWCHECK_MOCK_COUNTER=FILE` names a file to keep the count in (else per process).
+//! `SHADOWCHECK_MOCK_COUNTER=FILE` names a file to keep the count in (else per process);
+//! `once` makes `extra`, `late`, `previous`, `garbage` and `notutf8` act only the first time a case
+//! arrives (answering as `pass` afterwards), remembered across restarts when
+//! `SHADOWCHECK_MOCK_SEEN=FILE` names a file to keep the ids in (else per process): a one-off
+//! protocol violation.
 //! Environment: `SHADOWCHECK_MOCK_KILL_RUNNER=REGEX` makes the worker SIGKILL its parent (the
 //! runner) on the first case whose id matches, to test that a killed run can be resumed;
 //! `SHADOWCHECK_MOCK_INTERRUPT_RUNNER=REGEX` sends it SIGINT instead (each time a matching case
@@ -47,6 +60,10 @@ pub enum Action {
     Extra,
     Dup,
     Empty,
+    Previous,
+    Late,
+    NotUtf8,
+    Spew,
 }
 
 /// A parsed mock script.
@@ -57,6 +74,8 @@ pub struct Script {
     pub slow_ms: u64,
     /// Exit on every N-th case read (0: never).
     pub crash_every: u64,
+    /// Protocol violations only the first time a case arrives.
+    pub once: bool,
 }
 
 impl Script {
@@ -66,6 +85,7 @@ impl Script {
             buffer: false,
             slow_ms: 0,
             crash_every: 0,
+            once: false,
         };
         for item in s.split(',').map(str::trim).filter(|i| !i.is_empty()) {
             let (key, val) = match item.split_once('=') {
@@ -75,6 +95,10 @@ impl Script {
             let action = match key {
                 "buffer" => {
                     script.buffer = true;
+                    continue;
+                }
+                "once" => {
+                    script.once = true;
                     continue;
                 }
                 "slow" => {
@@ -102,6 +126,10 @@ impl Script {
                 "extra" => Action::Extra,
                 "dup" => Action::Dup,
                 "empty" => Action::Empty,
+                "previous" => Action::Previous,
+                "late" => Action::Late,
+                "notutf8" => Action::NotUtf8,
+                "spew" => Action::Spew,
                 other => return Err(format!("unknown mock action `{other}`")),
             };
             let re = val
@@ -235,15 +263,112 @@ fn signal_parent(signal: &str) {
         .status();
 }
 
+/// A line that is not UTF-8 (0xFF never occurs in UTF-8), for `notutf8`.
+const NOT_UTF8: &[u8] = b"{\"type\":\"skip\",\"case_id\":\"\xff\xfe\"}";
+
+/// Whether a case arrives for the first time (for `once`): in the file `seen` names when set
+/// (one id a line, kept across the worker's restarts), else in this process's `seen_here`.
+fn first_time(
+    id: &str,
+    seen: Option<&std::path::Path>,
+    seen_here: &mut HashSet<String>,
+) -> std::io::Result<bool> {
+    let Some(f) = seen else {
+        return Ok(seen_here.insert(id.to_string()));
+    };
+    let known = std::fs::read_to_string(f).unwrap_or_default();
+    if known.lines().any(|l| l == id) {
+        return Ok(false);
+    }
+    let mut w = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(f)?;
+    writeln!(w, "{id}")?;
+    Ok(true)
+}
+
+/// What the worker does with a case (lookup or state) whose action is `action`, besides
+/// answering: `Some(status)` when it exits with that status instead.
+fn misbehave(
+    action: Action,
+    id: &str,
+    answer: String,
+    previous: Option<&str>,
+    pending: &mut Vec<Vec<u8>>,
+    deferred: &mut Option<Vec<u8>>,
+) -> Option<i32> {
+    // A late second answer of the case before goes out just before this case's answer.
+    if let Some(late) = deferred.take() {
+        pending.push(late);
+    }
+    match action {
+        Action::Crash => {
+            eprintln!("mock: crashing on {id}");
+            return Some(3);
+        }
+        Action::Spew => {
+            let mut err = std::io::stderr().lock();
+            let _ = err.write_all(&vec![b'x'; 4 << 20]);
+            let _ = writeln!(err, " mock: spewed 4 MiB on {id}");
+            return Some(3);
+        }
+        Action::Hang => loop {
+            std::thread::sleep(std::time::Duration::from_secs(3600));
+        },
+        Action::Garbage => pending.push(b"this is not json".to_vec()),
+        Action::NotUtf8 => pending.push(NOT_UTF8.to_vec()),
+        Action::Extra => {
+            pending.push(answer.clone().into_bytes());
+            pending.push(answer.into_bytes());
+        }
+        Action::Late => {
+            pending.push(answer.clone().into_bytes());
+            *deferred = Some(answer.into_bytes());
+        }
+        Action::Previous => {
+            let line = match previous {
+                Some(p) => answer.replacen(
+                    &serde_json::to_string(id).unwrap_or_default(),
+                    &serde_json::to_string(p).unwrap_or_default(),
+                    1,
+                ),
+                None => answer,
+            };
+            pending.push(line.into_bytes());
+        }
+        _ => pending.push(answer.into_bytes()),
+    }
+    None
+}
+
 /// The worker loop: reads requests from `input`, answers on `output`. Returns the exit status.
 pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> std::io::Result<i32> {
     let env_regex = |name| std::env::var(name).ok().and_then(|r| Regex::new(&r).ok());
     let kill_runner = env_regex("SHADOWCHECK_MOCK_KILL_RUNNER");
     let interrupt_runner = env_regex("SHADOWCHECK_MOCK_INTERRUPT_RUNNER");
     let mut seen = HashSet::new();
-    let mut pending: Vec<String> = vec![];
+    let mut pending: Vec<Vec<u8>> = vec![];
     let counter = std::env::var_os("SHADOWCHECK_MOCK_COUNTER").map(std::path::PathBuf::from);
+    let seen_file = std::env::var_os("SHADOWCHECK_MOCK_SEEN").map(std::path::PathBuf::from);
+    let mut seen_once = HashSet::new();
+    // The id of the case read before the current one (for `previous`).
+    let mut previous: Option<String> = None;
+    // The second answer of a `late` case, written before the next case's answer.
+    let mut deferred: Option<Vec<u8>> = None;
     let mut read: u64 = 0;
+    // The action for a case: a protocol violation under `once` only the first time it arrives.
+    let mut action_of = |id: &str| -> std::io::Result<Action> {
+        let a = script.action(id);
+        let violation = matches!(
+            a,
+            Action::Extra | Action::Late | Action::Previous | Action::Garbage | Action::NotUtf8
+        );
+        if script.once && violation && !first_time(id, seen_file.as_deref(), &mut seen_once)? {
+            return Ok(Action::Pass);
+        }
+        Ok(a)
+    };
     for line in input.lines() {
         let line = line?;
         if line.trim().is_empty() {
@@ -288,12 +413,21 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
                         .collect(),
                     skipped: vec![],
                 };
-                pending.push(serde_json::to_string(&reply)?);
+                let action = action_of(&case.id)?;
+                let answer = serde_json::to_string(&reply)?;
+                let prev = previous.replace(case.id.clone());
+                if let Some(status) = misbehave(
+                    action,
+                    &case.id,
+                    answer,
+                    prev.as_deref(),
+                    &mut pending,
+                    &mut deferred,
+                ) {
+                    return Ok(status);
+                }
                 if !script.buffer {
-                    for l in pending.drain(..) {
-                        writeln!(output, "{l}")?;
-                    }
-                    output.flush()?;
+                    write_pending(&mut output, &mut pending)?;
                 }
             }
             Request::Case { case } => {
@@ -328,40 +462,37 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
                     eprintln!("mock: crashing on case number {read} ({})", case.id);
                     return Ok(3);
                 }
-                let action = script.action(&case.id);
-                match action {
-                    Action::Crash => {
-                        eprintln!("mock: crashing on {}", case.id);
-                        return Ok(3);
-                    }
-                    Action::Hang => loop {
-                        std::thread::sleep(std::time::Duration::from_secs(3600));
-                    },
-                    Action::Garbage => pending.push("this is not json".to_string()),
-                    Action::Extra => {
-                        let line = serde_json::to_string(&answer(&case, action, &mut seen))?;
-                        pending.push(line.clone());
-                        pending.push(line);
-                    }
-                    _ => pending.push(serde_json::to_string(&answer(&case, action, &mut seen))?),
+                let action = action_of(&case.id)?;
+                let answer = serde_json::to_string(&answer(&case, action, &mut seen))?;
+                let prev = previous.replace(case.id.clone());
+                if let Some(status) = misbehave(
+                    action,
+                    &case.id,
+                    answer,
+                    prev.as_deref(),
+                    &mut pending,
+                    &mut deferred,
+                ) {
+                    return Ok(status);
                 }
                 if !script.buffer {
-                    for l in pending.drain(..) {
-                        writeln!(output, "{l}")?;
-                    }
-                    output.flush()?;
+                    write_pending(&mut output, &mut pending)?;
                 }
             }
-            Request::Flush => {
-                for l in pending.drain(..) {
-                    writeln!(output, "{l}")?;
-                }
-                output.flush()?;
-            }
+            Request::Flush => write_pending(&mut output, &mut pending)?,
             Request::Bye => break,
         }
     }
     Ok(0)
+}
+
+/// Writes the answer lines held back, each followed by a newline, and flushes.
+fn write_pending(output: &mut impl Write, pending: &mut Vec<Vec<u8>>) -> std::io::Result<()> {
+    for l in pending.drain(..) {
+        output.write_all(&l)?;
+        output.write_all(b"\n")?;
+    }
+    output.flush()
 }
 
 #[cfg(test)]

@@ -323,6 +323,12 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         &out_dir,
         jobs,
     );
+    // The tests of the run: on each backend, those of its cases it implements (not-applicable
+    // ones are no tests of it, as in the summary).
+    let total: usize = backends
+        .iter()
+        .map(|b| set.tests_on(b.capabilities()).0)
+        .sum();
     drop(backends);
     // Baseline entries that excuse nothing: said on stderr (and in report.md), not ignored.
     if let Some(b) = &baseline {
@@ -344,7 +350,6 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         ending.add(exit::SETUP, e.to_string());
     }
     if interrupt::requested() {
-        let total = set.tests() * names.len();
         eprintln!(
             "shadowcheck: interrupted: {} of {total} tests finished; they are kept in {} and the reports in {} cover them. Resume with:\n  {}",
             results.len(),

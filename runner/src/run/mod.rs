@@ -344,8 +344,9 @@ pub fn run_backend(
             // batch can name one of its cases.
             finish_judged(&mut ctx, &name, judging.take(), &mut timing);
             let faults = backend.take_faults();
-            blame_in_batch(&refs, &mut outcomes, &faults);
-            blame_earlier(&mut ctx, &name, &refs, &faults);
+            let ids: Vec<&str> = refs.iter().map(|c| c.case.id.as_str()).collect();
+            blame_in_batch(&ids, &mut outcomes, &faults);
+            blame_earlier(&mut ctx, &name, &ids, &faults);
             for d in backend.take_diagnostics() {
                 ctx.fanout.emit(&Event::Diagnostic {
                     backend: &name,
@@ -364,8 +365,12 @@ pub fn run_backend(
         finish_judged(&mut ctx, &name, judging.take(), &mut timing);
     });
     state::run_states(backend, set, prior, &mut ctx, &mut timing);
+    // A fault found after the last batch (an extra answer line read since) is a Crash before the
+    // re-run, so it is not re-run as a flake; one found during the re-run, after it.
+    collect_late_faults(backend, &mut ctx);
     if settings.rerun_regressions && !interrupt::requested() {
         rerun_regressions(backend, set, &mut ctx);
+        collect_late_faults(backend, &mut ctx);
     }
     let mut counts = Counts::default();
     for r in &ctx.results {
@@ -380,21 +385,51 @@ pub fn run_backend(
     (ctx.results, timing)
 }
 
-/// Makes the cases of `refs` that a fault names Crash, with the fault's message.
-fn blame_in_batch(refs: &[Sent<'_>], outcomes: &mut [CaseOutcome], faults: &[(String, String)]) {
-    for (sent, outcome) in refs.iter().zip(outcomes.iter_mut()) {
-        if let Some((_, msg)) = faults.iter().find(|(id, _)| *id == sent.case.id) {
+/// Makes the cases of a batch (`ids`, in the order of `outcomes`) that a fault names Crash, with
+/// the fault's message.
+fn blame_in_batch(ids: &[&str], outcomes: &mut [CaseOutcome], faults: &[(String, String)]) {
+    for (sent, outcome) in ids.iter().zip(outcomes.iter_mut()) {
+        if let Some((_, msg)) = faults.iter().find(|(id, _)| id == sent) {
             *outcome = CaseOutcome::Crash(msg.clone());
         }
     }
 }
 
+/// Faults the backend found since its last batch (a stray line read after the answers it
+/// expected): the tests they name, lookups or state cases, become Crash.
+fn collect_late_faults(backend: &mut dyn Backend, ctx: &mut Ctx<'_>) {
+    let faults = backend.take_faults();
+    if faults.is_empty() {
+        return;
+    }
+    let name = backend.name().to_string();
+    blame_earlier(ctx, &name, &[], &faults);
+    for d in backend.take_diagnostics() {
+        ctx.fanout.emit(&Event::Diagnostic {
+            backend: &name,
+            message: &d,
+        });
+    }
+    ctx.fanout.emit(&Event::BatchFinished { backend: &name });
+}
+
+/// Whether a Crash's reason is a protocol violation of the implementation (an extra answer line,
+/// an answer that cannot be read or answers another case; also of one sweep point of the case):
+/// a fact about what it wrote, which a re-run that goes well does not undo.
+fn is_protocol_violation(reason: Option<&str>) -> bool {
+    let Some(mut r) = reason else { return false };
+    if let Some(rest) = r.strip_prefix("sweep point ") {
+        r = rest.split_once(": ").map_or(rest, |(_, after)| after);
+    }
+    r.starts_with(crate::backend::exec::PROTOCOL_ERROR)
+}
+
 /// Makes the tests of earlier batches that a fault names Crash (a later answer line showed their
 /// implementation misbehaving), and sends them again with that status (the last record of a test in
-/// results.jsonl wins).
-fn blame_earlier(ctx: &mut Ctx<'_>, backend: &str, refs: &[Sent<'_>], faults: &[(String, String)]) {
+/// results.jsonl wins). `ids`: the cases of the current batch, blamed there instead.
+fn blame_earlier(ctx: &mut Ctx<'_>, backend: &str, ids: &[&str], faults: &[(String, String)]) {
     for (id, msg) in faults {
-        if refs.iter().any(|c| c.case.id == *id) {
+        if ids.contains(&id.as_str()) {
             continue;
         }
         for i in 0..ctx.results.len() {
@@ -428,7 +463,9 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
     let name = backend.name().to_string();
     let mut by_case: HashMap<&str, Vec<usize>> = HashMap::new();
     for (i, r) in ctx.results.iter().enumerate() {
-        if r.status.is_regression() && r.rerun.is_none() {
+        // A protocol violation is never a flake: it happened, whatever a re-run answers.
+        let violation = r.outcome == Outcome::Crash && is_protocol_violation(r.reason.as_deref());
+        if r.status.is_regression() && r.rerun.is_none() && !violation {
             by_case.entry(r.case_id.as_str()).or_default().push(i);
         }
     }
@@ -454,9 +491,17 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
         .map(|(case, api, _, _)| Sent { case, api })
         .collect();
     let mut outcomes = Vec::with_capacity(refs.len());
+    let mut earlier = Vec::new();
     for chunk in refs.chunks(backend.batch_size().max(1)) {
         let mut got = backend.run_batch(chunk);
-        blame_in_batch(chunk, &mut got, &backend.take_faults());
+        let ids: Vec<&str> = chunk.iter().map(|c| c.case.id.as_str()).collect();
+        let faults = backend.take_faults();
+        blame_in_batch(&ids, &mut got, &faults);
+        earlier.extend(
+            faults
+                .into_iter()
+                .filter(|(id, _)| !ids.contains(&id.as_str())),
+        );
         outcomes.extend(got);
     }
     if interrupt::requested() {
@@ -498,6 +543,8 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
             });
         }
     }
+    // Faults the re-run found on cases it did not send (their extra answers came late).
+    blame_earlier(ctx, &name, &[], &earlier);
     ctx.fanout.emit(&Event::BatchFinished { backend: &name });
 }
 

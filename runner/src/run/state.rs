@@ -160,10 +160,17 @@ pub(super) fn run_states(
         }
         let refs: Vec<&StateCase> = chunk.iter().map(|(c, _)| c).collect();
         let t0 = Instant::now();
-        let outcomes = backend.run_state_batch(&refs);
+        let mut outcomes = backend.run_state_batch(&refs);
         if interrupt::requested() {
             break;
         }
+        // Faults found while this batch was read count as a lookup batch's do: a second answer
+        // for a state case of this batch makes it Crash; one for a test finished earlier (a state
+        // case, or a lookup whose extra answer came late) makes that test Crash again.
+        let faults = backend.take_faults();
+        let ids: Vec<&str> = refs.iter().map(|c| c.id.as_str()).collect();
+        super::blame_in_batch(&ids, &mut outcomes, &faults);
+        super::blame_earlier(ctx, &name, &ids, &faults);
         let dt = t0.elapsed().as_secs_f64();
         timing.backend_s += dt;
         timing.cases_sent += refs.len();
