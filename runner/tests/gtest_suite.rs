@@ -227,3 +227,131 @@ fn deqp_runner_suite_runs_two_backends_through_the_gtest_interface() {
     assert_eq!(rows, expected(false));
     assert_eq!(code, 1, "n=0001 fails and the baseline does not list it");
 }
+
+fn gtest(args: &[&str], env: &[(&str, &str)]) -> Run {
+    let mut c = bin();
+    c.arg("gtest").args(args).env_remove("SHADOWCHECK_BACKEND");
+    c.env_remove("SHADOWCHECK_FIXTURES");
+    for (k, v) in env {
+        c.env(k, v);
+    }
+    Run::of(c.output().unwrap())
+}
+
+/// Without deqp-runner: the listing, the backend from the environment, a filter, a hang that
+/// ends the output on its RUN line (a crash to a gtest runner) and stops the run, bad fixtures.
+#[test]
+fn gtest_lists_filters_and_ends_on_a_hang() {
+    let (dir, fx) = cases_dir("gtest-direct", 12);
+    let list = gtest(
+        &["-b", "mock:pass", "--fixtures", &fx, "--gtest_list_tests"],
+        &[],
+    );
+    assert_eq!(list.code, 0, "{}", list.stderr);
+    let mut want: Vec<String> = (0..12).map(gtest_name).collect();
+    want.sort();
+    let mut expect = String::from("gl46.\n");
+    for n in &want {
+        expect.push_str(&format!("  {}\n", n.trim_start_matches("gl46.")));
+    }
+    assert_eq!(list.stdout, expect);
+    let env = gtest(
+        &["--gtest_list_tests"],
+        &[
+            ("SHADOWCHECK_BACKEND", "mock:pass"),
+            ("SHADOWCHECK_FIXTURES", &fx),
+        ],
+    );
+    assert_eq!((env.code, env.stdout), (0, expect));
+
+    // Exact names, a wildcard and a negative pattern (n=0000 is lequal), as googletest reads a
+    // filter; the tests run in listing order.
+    let filter = format!(
+        "{}:{}:{}:gl46.*/n=0003@core-*lequal*",
+        gtest_name(7),
+        gtest_name(1),
+        gtest_name(0)
+    );
+    let two = gtest(
+        &[
+            "-b",
+            "mock:fail=n=0001",
+            "--fixtures",
+            &fx,
+            "--gtest_filter",
+            &filter,
+        ],
+        &[],
+    );
+    let runs: Vec<&str> = two
+        .stdout
+        .lines()
+        .filter(|l| l.starts_with("[ RUN"))
+        .collect();
+    assert_eq!(
+        runs,
+        vec![
+            format!("[ RUN      ] {}", gtest_name(1)),
+            format!("[ RUN      ] {}", gtest_name(3)),
+            format!("[ RUN      ] {}", gtest_name(7)),
+        ]
+    );
+    assert!(
+        two.stdout
+            .contains(&format!("[  FAILED  ] {} (", gtest_name(1))),
+        "{}",
+        two.stdout
+    );
+    assert_eq!(two.code, 1, "a test failed: googletest's exit code");
+
+    // n=0002 hangs: the output ends on its RUN line and a note; what sorts before it passed.
+    let t0 = std::time::Instant::now();
+    let hang = gtest(
+        &[
+            "-b",
+            "mock:hang=n=0002",
+            "--fixtures",
+            &fx,
+            "--timeout",
+            "0.5",
+            "--group",
+            "1",
+        ],
+        &[],
+    );
+    let status_lines: Vec<&str> = hang.stdout.lines().filter(|l| l.starts_with('[')).collect();
+    let at = want.iter().position(|n| *n == gtest_name(2)).unwrap();
+    assert_eq!(status_lines.len(), 1 + 2 * at + 1, "{}", hang.stdout);
+    assert_eq!(
+        status_lines.last().copied(),
+        Some(format!("[ RUN      ] {}", gtest_name(2)).as_str())
+    );
+    let last = hang.stdout.lines().last().unwrap_or("");
+    assert!(last.starts_with("shadowcheck: Timeout"), "{last}");
+    assert_eq!(hang.code, 1);
+    // One timeout, then the run stops: the gtest runner runs the rest in a new process.
+    assert!(t0.elapsed().as_secs_f64() < 20.0);
+
+    // A bad fixture file: the listing refuses it, naming it (exit 96).
+    std::fs::write(dir.join("fixtures/bad.json"), "{").unwrap();
+    let dir_fx = dir.join("fixtures").display().to_string();
+    let bad = gtest(
+        &[
+            "-b",
+            "mock:pass",
+            "--fixtures",
+            &dir_fx,
+            "--gtest_list_tests",
+        ],
+        &[],
+    );
+    assert_eq!(bad.code, 96, "{}", bad.stderr);
+    assert!(bad.stderr.contains("bad.json"), "{}", bad.stderr);
+    let none = gtest(&["--fixtures", &fx, "--gtest_list_tests"], &[]);
+    assert_eq!(none.code, 96);
+    assert!(
+        none.stderr.contains("SHADOWCHECK_BACKEND"),
+        "{}",
+        none.stderr
+    );
+}
