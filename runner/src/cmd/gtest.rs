@@ -43,8 +43,8 @@ const NOTE_MAX: usize = 2000;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The backend to run (one; as `run -b`). Default: the environment variable SHADOWCHECK_BACKEND.
-    #[arg(long = "backend", short = 'b', value_name = "B", help = backend::kinds::help())]
+    /// The one backend to run, named as for `run -b`; default: SHADOWCHECK_BACKEND.
+    #[arg(long = "backend", short = 'b', value_name = "B", help = backend_help())]
     backend: Option<String>,
     /// Fixture file or directory (repeatable), as for `run`. Default: SHADOWCHECK_FIXTURES
     /// (`:`-separated), else cases/fixtures.
@@ -80,6 +80,14 @@ pub struct Args {
     /// of gtest names with `*` and `?` wildcards.
     #[arg(long = "gtest_filter", value_name = "PATTERNS")]
     gtest_filter: Option<String>,
+}
+
+/// The `-b` help: one backend, the patterns of `run -b`.
+fn backend_help() -> String {
+    format!(
+        "The one backend to run ({}), named as for `run -b`. Default: the environment variable {BACKEND_ENV}.",
+        backend::kinds::patterns()
+    )
 }
 
 /// Bytes a gtest name keeps as they are: none of them means anything to a gtest filter or to
@@ -297,9 +305,10 @@ fn test_lines(gtest: &str, r: &TestResult) -> (Vec<String>, bool) {
     (lines, false)
 }
 
-/// Prints the results in the order of the tests selected, each once its result is settled: it
-/// came before the last two batch ends (an answer found later, a case answered twice, can still
-/// turn an earlier case into a Crash), or the run is over.
+/// Prints the results in the order of the tests selected, each once its result is settled: two
+/// batch ends have passed since it came, i.e. the two batches after its own have come back (an
+/// answer found later, a case answered twice, can still turn an earlier case into a Crash), or
+/// the run is over. deqp-runner's per-test timer restarts at each RUN line.
 struct Printer {
     gtest: Vec<String>,
     index: HashMap<String, usize>,
