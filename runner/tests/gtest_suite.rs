@@ -332,6 +332,32 @@ fn gtest_lists_filters_and_ends_on_a_hang() {
     // One timeout, then the run stops: the gtest runner runs the rest in a new process.
     assert!(t0.elapsed().as_secs_f64() < 20.0);
 
+    // n=0002 answered twice, one case per group: the extra line is read with the next group,
+    // after n=0002 was judged a Pass; its result is held back until then, so it is printed as the
+    // Crash it is, never OK first.
+    let extra = gtest(
+        &["-b", "mock:extra=n=0002", "--fixtures", &fx, "--group", "1"],
+        &[],
+    );
+    let mut lines = extra.stdout.lines().filter(|l| l.starts_with('['));
+    assert!(
+        !extra
+            .stdout
+            .contains(&format!("[       OK ] {}", gtest_name(2))),
+        "{}",
+        extra.stdout
+    );
+    assert_eq!(
+        lines.next_back(),
+        Some(format!("[ RUN      ] {}", gtest_name(2)).as_str())
+    );
+    assert!(
+        extra.stdout.contains("answered this case twice"),
+        "{}",
+        extra.stdout
+    );
+    assert_eq!(extra.code, 1);
+
     // A bad fixture file: the listing refuses it, naming it (exit 96).
     std::fs::write(dir.join("fixtures/bad.json"), "{").unwrap();
     let dir_fx = dir.join("fixtures").display().to_string();
