@@ -25,6 +25,15 @@ enum Command {
     Gen(cmd::gen::Args),
     /// Run fixtures against backends and report verdicts.
     Run(cmd::run::Args),
+    /// googletest's interface for one backend (`--gtest_list_tests`, `--gtest_filter=A:B`), so a
+    /// gtest runner such as deqp-runner's `[[gtest]]` suite block runs shadowcheck.
+    ///
+    /// The backend comes from -b or SHADOWCHECK_BACKEND, the fixtures from --fixtures or
+    /// SHADOWCHECK_FIXTURES. Test names map reversibly to gtest names (`.` and other characters a
+    /// gtest runner reads are written %XX); Warn prints OK with a note, Crash and Timeout end the
+    /// output after the test's RUN line (a crash to the runner). Exit 0 all passed or skipped, 1
+    /// a test failed or crashed, 96 setup error or bad input.
+    Gtest(cmd::gtest::Args),
     /// Merge result files of shards into one.
     Merge(cmd::merge::Args),
     /// Measure throughput: oracle, soft implementation, GL backends end to end against the bare-draw floor.
@@ -87,6 +96,7 @@ fn main() -> std::process::ExitCode {
         Command::Gen(a) => cmd::gen::main(a),
         Command::Run(a) => cmd::run::main(a),
         Command::Merge(a) => cmd::merge::main(a),
+        Command::Gtest(a) => cmd::gtest::main(a),
         Command::Bench(a) => cmd::bench::main(a),
         Command::Mutants(a) => cmd::mutants::main(a),
         Command::Report(a) => cmd::report::main(a),

@@ -306,5 +306,15 @@ python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); [c.pop("expect",
 "$SC" run -b soft --fixtures "$T/noexpect" -o "$T/b9" >"$T/b9.out" 2>&1; c=$?
 line "state cases without expect, correct impl" "$(count_status "$T/b9" Pass) Pass, $(count_status "$T/b9" Fail) Fail" $c "$(ok_if "[ $c = 0 ] && [ $(count_status "$T/b9" Fail) = 0 ]")"
 
+# --- shadowcheck gtest (googletest's interface for deqp-runner's [[gtest]] blocks) ------------
+"$SC" gtest -b soft --fixtures "$FX" --gtest_list_tests >"$T/g1.out" 2>"$T/g1.err"; c=$?
+dots=$(grep -v '\.$' "$T/g1.out" | grep -c '\.')
+line "gtest: list of names holding '.'" "$(grep -c '^ ' "$T/g1.out") tests, $dots test lines with a '.'" $c "$(ok_if "[ $c = 0 ] && [ $dots = 0 ] && [ \$(grep -c '^ ' $T/g1.out) -gt 0 ]")"
+"$SC" gtest -b 'mock:crash=^gles32/' --fixtures "$FX" --cases '^(gl46|gles32)/' >"$T/g2.out" 2>&1; c=$?
+last=$(grep -v '^shadowcheck: ' "$T/g2.out" | tail -1 | cut -c1-14)
+line "gtest: a crash mid-group" "last line '$last', $(grep -c 'OK \]' "$T/g2.out") OK before it" $c "$(ok_if "[ $c = 1 ] && [ '$last' = '[ RUN      ] g' ] && ! grep -q panicked $T/g2.out")"
+env -u SHADOWCHECK_BACKEND "$SC" gtest --fixtures "$FX" --gtest_list_tests >"$T/g3.out" 2>&1; c=$?
+line "gtest: no backend named" "$(grep -o 'no backend[^:]*' "$T/g3.out" | head -1)" $c "$(ok_if "[ $c = 96 ]")"
+
 echo "($T kept; $BROKEN BROKEN)"
 exit $BROKEN

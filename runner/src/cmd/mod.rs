@@ -4,6 +4,7 @@ pub mod consensus;
 pub mod explain;
 pub mod gen;
 pub mod gl_worker;
+pub mod gtest;
 pub mod merge;
 pub mod mock_worker;
 pub mod mutants;

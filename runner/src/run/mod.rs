@@ -154,6 +154,29 @@ impl CaseSet {
         }
         n
     }
+    /// The names (`<case id>@<api>`) of the tests of this set on a backend with `caps`, with the
+    /// id of their case, in set order: the tests [`CaseSet::tests_on`] counts (Skips by
+    /// capabilities included), the not-applicable ones left out.
+    pub fn test_names_on(&self, caps: &Capabilities) -> Vec<(&str, String)> {
+        let mut out = Vec::new();
+        for l in &self.cases {
+            if let Some((apis, _)) = applicable_apis(caps, &l.case) {
+                out.extend(
+                    apis.iter()
+                        .map(|&a| (l.case.id.as_str(), TestResult::name(&l.case.id, a))),
+                );
+            }
+        }
+        for l in &self.states {
+            if let Some((apis, _)) = state::applicable(caps, &l.case) {
+                out.extend(
+                    apis.iter()
+                        .map(|&a| (l.case.id.as_str(), TestResult::name(&l.case.id, a))),
+                );
+            }
+        }
+        out
+    }
 }
 
 impl CaseSet {

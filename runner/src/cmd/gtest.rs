@@ -1,0 +1,813 @@
+//! `shadowcheck gtest`: googletest's command-line interface for one backend, so that a gtest
+//! runner (deqp-runner's `[[gtest]]` suite block, `gtest-runner`) runs shadowcheck as it runs any
+//! googletest binary: `--gtest_list_tests` lists the backend's tests (a line `Suite.`, then the
+//! test names indented), `--gtest_filter=A:B:C` runs those tests through the run core and prints
+//! `[ RUN      ]` / `[       OK ]` / `[  FAILED  ]` / `[  SKIPPED ]` lines.
+//!
+//! Names: deqp-runner's list parser takes any `.` in a line for the suite separator, and a gtest
+//! filter gives `:`, `-`, `*` and `?` meanings, so a test name (`<case id>@<api>`) is mapped
+//! reversibly ([`to_gtest`], [`from_gtest`]): the part before its first `/` is the suite, the rest
+//! the test, and in each every byte other than ASCII letters, digits and `/ = _ + ^ @` is written
+//! `%XX` (upper-case hex), `%` included: `gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25@core` is
+//! `gl46.2d/d16/nearest/lequal/ref=0%2E5/dt=0%2E25@core`. A name without `/` gets the suite `%2F`.
+//!
+//! Statuses (the raw outcome: deqp-runner applies its own baseline, skips and flakes, and detects
+//! flakes by running a group again, so this command applies no list and re-runs nothing): Pass →
+//! OK; Warn → OK after a note line (a pass with a note, as dEQP's QualityWarning is for
+//! deqp-runner); Fail → FAILED; Skip → SKIPPED. Crash and Timeout have no googletest status:
+//! their `[ RUN      ]` line is followed by a note and nothing else, and the process exits 1,
+//! which deqp-runner's parser reads as a Crash of that test (a test without its end line); it
+//! then runs the rest of the group in a new process. Exit code as googletest's: 0 when every
+//! test printed passed or was skipped, 1 when one failed or the output ended on a crash; 96 on a
+//! setup error or bad input (no backend, unreadable fixtures).
+
+use anyhow::{bail, Context};
+use shadowcheck_runner::backend::{self, BackendError, Options};
+use shadowcheck_runner::events::{Event, Sink};
+use shadowcheck_runner::interrupt;
+use shadowcheck_runner::records::{Outcome, Results, TestResult};
+use shadowcheck_runner::run::{self, Settings};
+use std::collections::{HashMap, HashSet};
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Duration;
+
+/// The environment variable that names the backend when `-b` is not given.
+pub const BACKEND_ENV: &str = "SHADOWCHECK_BACKEND";
+/// The environment variable that names the fixtures (`:`-separated) when `--fixtures` is not given.
+pub const FIXTURES_ENV: &str = "SHADOWCHECK_FIXTURES";
+
+/// The longest note printed for one test (a reason quoting an implementation's stderr is cut).
+const NOTE_MAX: usize = 2000;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// The one backend to run, named as for `run -b`; default: SHADOWCHECK_BACKEND.
+    #[arg(long = "backend", short = 'b', value_name = "B", help = backend_help())]
+    backend: Option<String>,
+    /// Fixture file or directory (repeatable), as for `run`. Default: SHADOWCHECK_FIXTURES
+    /// (`:`-separated), else cases/fixtures.
+    #[arg(long, value_name = "PATH")]
+    fixtures: Vec<PathBuf>,
+    /// Only cases whose id matches this regular expression (as for `run`).
+    #[arg(long, value_name = "PATTERN")]
+    cases: Option<String>,
+    /// Seconds an external implementation may take for one group of cases (as for `run`).
+    #[arg(
+        long,
+        value_name = "SECS",
+        default_value_t = 10.0,
+        allow_negative_numbers = true
+    )]
+    timeout: f64,
+    /// Cases written to an implementation process before each flush (as for `run`).
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    group: usize,
+    /// After this many cases in a row end in Timeout, the rest are Timeout without being sent.
+    #[arg(long, value_name = "K", default_value_t = backend::GIVE_UP_AFTER)]
+    give_up_after: usize,
+    /// GL workers run with GALLIVM_PERF=nopt (as for `run`).
+    #[arg(long)]
+    fast_compile: bool,
+    /// Show implementations' stderr lines and restarts (on stderr).
+    #[arg(long, short = 'v')]
+    verbose: bool,
+    /// googletest: list the tests (`Suite.` lines, then the test names indented) and exit.
+    #[arg(long = "gtest_list_tests")]
+    gtest_list_tests: bool,
+    /// googletest: run only the tests matching `POSITIVE[-NEGATIVE]`, each a `:`-separated list
+    /// of gtest names with `*` and `?` wildcards.
+    #[arg(long = "gtest_filter", value_name = "PATTERNS")]
+    gtest_filter: Option<String>,
+}
+
+/// The `-b` help: one backend, the patterns of `run -b`.
+fn backend_help() -> String {
+    format!(
+        "The one backend to run ({}), named as for `run -b`. Default: the environment variable {BACKEND_ENV}.",
+        backend::kinds::patterns()
+    )
+}
+
+/// Bytes a gtest name keeps as they are: none of them means anything to a gtest filter or to
+/// deqp-runner's list parser.
+fn plain(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || b"/=_+^@".contains(&b)
+}
+
+/// Writes every byte that is not [`plain`] as `%XX`.
+fn encode(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for &b in s.as_bytes() {
+        if plain(b) {
+            out.push(char::from(b));
+        } else {
+            out.push_str(&format!("%{b:02X}"));
+        }
+    }
+    out
+}
+
+/// The inverse of [`encode`]; `None` for text `encode` never writes (a byte that should have been
+/// escaped, an escape of a plain byte, a malformed escape, bytes that are not UTF-8).
+fn decode(s: &str) -> Option<String> {
+    let bytes = s.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        let b = bytes[i];
+        if b == b'%' {
+            let hex = bytes.get(i + 1..i + 3)?;
+            if !hex
+                .iter()
+                .all(|h| h.is_ascii_digit() || (b'A'..=b'F').contains(h))
+            {
+                return None;
+            }
+            let v = u8::from_str_radix(std::str::from_utf8(hex).ok()?, 16).ok()?;
+            if plain(v) {
+                return None;
+            }
+            out.push(v);
+            i += 3;
+        } else if plain(b) {
+            out.push(b);
+            i += 1;
+        } else {
+            return None;
+        }
+    }
+    String::from_utf8(out).ok()
+}
+
+/// The suite of a test name without `/` (a name with one never has this suite: its first part
+/// holds no `/`, so its encoding holds no `%2F`).
+const NO_SLASH_SUITE: &str = "%2F";
+
+/// A test name (`<case id>@<api>`) as a gtest name `Suite.Test` (see the module comment).
+pub fn to_gtest(test: &str) -> String {
+    match test.split_once('/') {
+        Some((suite, rest)) => format!("{}.{}", encode(suite), encode(rest)),
+        None => format!("{NO_SLASH_SUITE}.{}", encode(test)),
+    }
+}
+
+/// The test name a gtest name written by [`to_gtest`] stands for; `None` for any other text.
+pub fn from_gtest(name: &str) -> Option<String> {
+    let (suite, test) = name.split_once('.')?;
+    let rest = decode(test)?;
+    if suite == NO_SLASH_SUITE {
+        return (!rest.contains('/')).then_some(rest);
+    }
+    let first = decode(suite)?;
+    if first.contains('/') {
+        return None;
+    }
+    Some(format!("{first}/{rest}"))
+}
+
+/// googletest's `--gtest_filter`: `POSITIVE[-NEGATIVE]`, each `:`-separated patterns with `*` (any
+/// text) and `?` (one character); an empty positive part means `*`.
+struct Filter {
+    positive: Vec<String>,
+    negative: Vec<String>,
+}
+
+impl Filter {
+    fn parse(text: &str) -> Filter {
+        let (pos, neg) = text.split_once('-').unwrap_or((text, ""));
+        let split = |s: &str| -> Vec<String> {
+            s.split(':')
+                .filter(|p| !p.is_empty())
+                .map(str::to_string)
+                .collect()
+        };
+        let mut positive = split(pos);
+        if positive.is_empty() {
+            positive.push("*".into());
+        }
+        Filter {
+            positive,
+            negative: split(neg),
+        }
+    }
+
+    /// The indices of `names` (gtest names) the filter selects, in the order of `names`.
+    fn select(&self, names: &[String]) -> Vec<usize> {
+        let wild = |p: &String| p.contains(['*', '?']);
+        let exact: HashSet<&str> = self
+            .positive
+            .iter()
+            .filter(|p| !wild(p))
+            .map(String::as_str)
+            .collect();
+        let globs: Vec<&String> = self.positive.iter().filter(|p| wild(p)).collect();
+        (0..names.len())
+            .filter(|&i| {
+                let n = names[i].as_str();
+                (exact.contains(n) || globs.iter().any(|g| glob(g, n)))
+                    && !self.negative.iter().any(|g| glob(g, n))
+            })
+            .collect()
+    }
+}
+
+/// Whether `text` matches `pattern` (`*` any text, `?` one character), as googletest matches.
+fn glob(pattern: &str, text: &str) -> bool {
+    let p: Vec<char> = pattern.chars().collect();
+    let t: Vec<char> = text.chars().collect();
+    let (mut pi, mut ti) = (0, 0);
+    let mut star: Option<(usize, usize)> = None;
+    while ti < t.len() {
+        if pi < p.len() && (p[pi] == '?' || p[pi] == t[ti]) {
+            pi += 1;
+            ti += 1;
+        } else if pi < p.len() && p[pi] == '*' {
+            star = Some((pi, ti));
+            pi += 1;
+        } else if let Some((sp, st)) = star {
+            pi = sp + 1;
+            ti = st + 1;
+            star = Some((sp, st + 1));
+        } else {
+            return false;
+        }
+    }
+    p[pi..].iter().all(|&c| c == '*')
+}
+
+/// A note line under a test: never read as a status line by a gtest parser (deqp-runner takes any
+/// `[ X ] Y` in a line for one), so brackets become parentheses and control characters spaces.
+fn note_lines(kind: &str, reason: &str) -> Vec<String> {
+    let mut text: String = reason
+        .chars()
+        .map(|c| match c {
+            '[' => '(',
+            ']' => ')',
+            '\n' => '\n',
+            c if c.is_control() => ' ',
+            c => c,
+        })
+        .collect();
+    if text.len() > NOTE_MAX {
+        let mut cut = NOTE_MAX;
+        while !text.is_char_boundary(cut) {
+            cut -= 1;
+        }
+        text.truncate(cut);
+        text.push_str(" ... (cut)");
+    }
+    text.lines()
+        .enumerate()
+        .map(|(i, l)| {
+            if i == 0 {
+                format!("shadowcheck: {kind}: {l}")
+            } else {
+                format!("shadowcheck:   {l}")
+            }
+        })
+        .collect()
+}
+
+/// The lines of one test in googletest's format and whether the output must end after them (a
+/// Crash or Timeout: the test is left without its end line).
+fn test_lines(gtest: &str, r: &TestResult) -> (Vec<String>, bool) {
+    let mut lines = vec![format!("[ RUN      ] {gtest}")];
+    let ms = (r.duration * 1000.0).round().max(0.0);
+    let reason = r.reason.as_deref().unwrap_or("");
+    let end = match r.outcome {
+        Outcome::Pass => format!("[       OK ] {gtest} ({ms} ms)"),
+        Outcome::Warn => {
+            let what = "Warn (a quality warning: inside the `quality` acceptance, outside `strict`; a pass)";
+            lines.extend(note_lines(what, reason));
+            format!("[       OK ] {gtest} ({ms} ms)")
+        }
+        Outcome::Fail => {
+            lines.extend(note_lines("Fail", reason));
+            lines.extend(note_lines("re-run alone", &r.rerun_command()));
+            format!("[  FAILED  ] {gtest} ({ms} ms)")
+        }
+        Outcome::Skip => {
+            lines.extend(note_lines("Skip", reason));
+            format!("[  SKIPPED ] {gtest} ({ms} ms)")
+        }
+        Outcome::Crash | Outcome::Timeout => {
+            let what = format!(
+                "{} (googletest has no such status: this test is left without its end line, which a gtest runner reads as a crash)",
+                r.outcome
+            );
+            lines.extend(note_lines(&what, reason));
+            return (lines, true);
+        }
+    };
+    lines.push(end);
+    (lines, false)
+}
+
+/// Prints the results in the order of the tests selected, each once its result is settled: two
+/// batch ends have passed since it came, i.e. the two batches after its own have come back (an
+/// answer found later, a case answered twice, can still turn an earlier case into a Crash), or
+/// the run is over. deqp-runner's per-test timer restarts at each RUN line.
+struct Printer {
+    gtest: Vec<String>,
+    index: HashMap<String, usize>,
+    results: Vec<Option<TestResult>>,
+    settled: Vec<bool>,
+    fresh: Vec<usize>,
+    older: Vec<usize>,
+    next: usize,
+    /// The output ended on a Crash or Timeout: nothing more is printed.
+    stopped: bool,
+    failed: Vec<String>,
+    skipped: Vec<String>,
+    passed: usize,
+    /// Tests printed, then given another outcome (a fault found later).
+    revised: Vec<String>,
+    verbose: bool,
+    /// stdout was closed: the reader went away.
+    closed: bool,
+}
+
+impl Printer {
+    fn new(tests: Vec<String>, gtest: Vec<String>, verbose: bool) -> Printer {
+        let n = tests.len();
+        Printer {
+            index: tests.into_iter().enumerate().map(|(i, t)| (t, i)).collect(),
+            gtest,
+            results: vec![None; n],
+            settled: vec![false; n],
+            fresh: vec![],
+            older: vec![],
+            next: 0,
+            stopped: false,
+            failed: vec![],
+            skipped: vec![],
+            passed: 0,
+            revised: vec![],
+            verbose,
+            closed: false,
+        }
+    }
+
+    fn out(&mut self, lines: &[String]) {
+        if self.closed {
+            return;
+        }
+        let mut o = std::io::stdout().lock();
+        let mut text = lines.join("\n");
+        text.push('\n');
+        if o.write_all(text.as_bytes())
+            .and_then(|_| o.flush())
+            .is_err()
+        {
+            self.closed = true;
+        }
+    }
+
+    fn record(&mut self, r: &TestResult) {
+        let Some(&i) = self.index.get(&r.test) else {
+            return;
+        };
+        if i < self.next {
+            let was = self.results[i].as_ref().map(|p| p.outcome);
+            if was != Some(r.outcome) {
+                self.revised.push(format!(
+                    "{} was printed as {} but is {} ({})",
+                    self.gtest[i],
+                    was.map_or("-".into(), |o| o.to_string()),
+                    r.outcome,
+                    r.reason.as_deref().unwrap_or("")
+                ));
+            }
+            return;
+        }
+        self.results[i] = Some(r.clone());
+        self.settled[i] = false;
+        self.fresh.push(i);
+    }
+
+    /// A batch ended: results from before the previous batch end are settled.
+    fn batch_end(&mut self) {
+        for i in std::mem::take(&mut self.older) {
+            self.settled[i] = true;
+        }
+        self.older = std::mem::take(&mut self.fresh);
+        self.print_ready();
+    }
+
+    fn print_ready(&mut self) {
+        while !self.stopped && self.next < self.gtest.len() && self.settled[self.next] {
+            let i = self.next;
+            let Some(r) = self.results[i].take() else {
+                break;
+            };
+            let (lines, stop) = test_lines(&self.gtest[i], &r);
+            match r.outcome {
+                Outcome::Pass | Outcome::Warn => self.passed += 1,
+                Outcome::Skip => self.skipped.push(self.gtest[i].clone()),
+                Outcome::Fail => self.failed.push(self.gtest[i].clone()),
+                Outcome::Crash | Outcome::Timeout => {}
+            }
+            self.results[i] = Some(r);
+            self.out(&lines);
+            self.next += 1;
+            if stop {
+                self.stopped = true;
+                // No more cases are sent: the gtest runner runs the rest in a new process.
+                interrupt::request();
+            }
+        }
+    }
+
+    /// The run is over: `results` are the final ones (the last of a test wins).
+    fn finish(&mut self, results: &[TestResult]) {
+        for r in results {
+            if let Some(&i) = self.index.get(&r.test) {
+                if i >= self.next {
+                    self.results[i] = Some(r.clone());
+                } else {
+                    self.record(r);
+                }
+            }
+        }
+        for s in &mut self.settled {
+            *s = true;
+        }
+        self.print_ready();
+    }
+}
+
+impl Sink for Printer {
+    fn emit(&mut self, ev: &Event<'_>) {
+        match ev {
+            Event::CaseFinished { result, .. } => self.record(result),
+            Event::BatchFinished { .. } => self.batch_end(),
+            Event::Diagnostic { backend, message } if self.verbose => {
+                eprintln!("shadowcheck: {backend}: {message}");
+            }
+            _ => {}
+        }
+    }
+}
+
+/// The suite part of a gtest name.
+fn suite_of(gtest: &str) -> &str {
+    gtest.split_once('.').map_or(gtest, |(s, _)| s)
+}
+
+pub fn main(a: Args) -> anyhow::Result<ExitCode> {
+    let env_backend = std::env::var(BACKEND_ENV).ok().filter(|s| !s.is_empty());
+    let Some(name) = a.backend.clone().or(env_backend) else {
+        bail!("gtest: no backend: give -b B or set {BACKEND_ENV}");
+    };
+    let pattern = a
+        .cases
+        .as_deref()
+        .map(regex::Regex::new)
+        .transpose()
+        .context("--cases")?;
+    if !(a.timeout > 0.0 && a.timeout <= 365.0 * 86400.0) {
+        bail!("--timeout must be a positive number of seconds, at most 31536000 (a year)");
+    }
+    if a.group == 0 {
+        bail!("--group must be at least 1");
+    }
+    let fixtures: Vec<PathBuf> = if !a.fixtures.is_empty() {
+        a.fixtures.clone()
+    } else if let Some(env) = std::env::var_os(FIXTURES_ENV).filter(|v| !v.is_empty()) {
+        std::env::split_paths(&env).collect()
+    } else {
+        vec![PathBuf::from(crate::cmd::run::DEFAULT_FIXTURES)]
+    };
+    let shown: Vec<String> = fixtures.iter().map(|p| p.display().to_string()).collect();
+
+    let mut set = run::load_cases(&fixtures);
+    let loaded_any = !set.files.is_empty();
+    set.select(pattern.as_ref(), None);
+    for e in &set.errors {
+        let case = e
+            .case
+            .as_deref()
+            .map_or(String::new(), |c| format!(" ({c})"));
+        eprintln!("shadowcheck: error: {}{case}: {}", e.file, e.message);
+    }
+    if !loaded_any && set.cases.is_empty() && set.states.is_empty() {
+        bail!("no fixture could be loaded from {}", shown.join(", "));
+    }
+    // A listing is what the gtest runner plans from: a bad fixture stops it, loudly, rather than
+    // leaving tests out of every later run without a word.
+    if a.gtest_list_tests && !set.errors.is_empty() {
+        bail!(
+            "{} bad fixture file(s) or case(s) in {} (listed above)",
+            set.errors.len(),
+            shown.join(", ")
+        );
+    }
+
+    let opts = Options {
+        timeout: Duration::from_secs_f64(a.timeout),
+        group: a.group,
+        give_up: a.give_up_after,
+        fast_compile: a.fast_compile,
+    };
+    let mut backend = match backend::open(&name, &opts) {
+        Ok(b) => b,
+        Err(e @ BackendError::Unknown(_)) => return Err(e.into()),
+        Err(BackendError::Setup { msg, .. }) => {
+            bail!("backend `{name}` cannot start here: {msg}")
+        }
+    };
+
+    // Every test of this backend, by gtest name.
+    let mut tests: Vec<(String, String, String)> = set
+        .test_names_on(backend.capabilities())
+        .into_iter()
+        .map(|(case, test)| (to_gtest(&test), test, case.to_string()))
+        .collect();
+    tests.sort();
+
+    if a.gtest_list_tests {
+        let mut lines = Vec::with_capacity(tests.len() * 2);
+        let mut suite = None;
+        for (g, _, _) in &tests {
+            let (s, t) = g.split_once('.').unwrap_or((g.as_str(), ""));
+            if suite != Some(s) {
+                lines.push(format!("{s}."));
+                suite = Some(s);
+            }
+            lines.push(format!("  {t}"));
+        }
+        let mut text = lines.join("\n");
+        if !text.is_empty() {
+            text.push('\n');
+        }
+        crate::cmd::print_out(&text).context("writing the test list")?;
+        return Ok(ExitCode::SUCCESS);
+    }
+
+    let filter = Filter::parse(a.gtest_filter.as_deref().unwrap_or("*"));
+    let names: Vec<String> = tests.iter().map(|t| t.0.clone()).collect();
+    let chosen = filter.select(&names);
+    // Exact names that are no test of this backend: said on stderr (googletest is silent).
+    let known: HashSet<&str> = names.iter().map(String::as_str).collect();
+    for p in &filter.positive {
+        if !p.contains(['*', '?']) && !known.contains(p.as_str()) {
+            let what = match from_gtest(p) {
+                Some(t) => format!("test `{t}`"),
+                None => "a name this command never lists".into(),
+            };
+            eprintln!(
+                "shadowcheck: warning: --gtest_filter names `{p}` ({what}), which is no test of `{name}` with these fixtures"
+            );
+        }
+    }
+    let chosen: Vec<&(String, String, String)> = chosen.iter().map(|&i| &tests[i]).collect();
+
+    // Only the chosen cases are sent, in the order their tests are printed.
+    let mut first: HashMap<&str, usize> = HashMap::new();
+    for (k, t) in chosen.iter().enumerate() {
+        first.entry(t.2.as_str()).or_insert(k);
+    }
+    set.cases.retain(|l| first.contains_key(l.case.id.as_str()));
+    set.states
+        .retain(|l| first.contains_key(l.case.id.as_str()));
+    let pos = |id: &str| first.get(id).copied().unwrap_or(usize::MAX);
+    set.cases.sort_by_key(|l| pos(&l.case.id));
+    set.states.sort_by_key(|l| pos(&l.case.id));
+
+    let suites: HashSet<&str> = chosen.iter().map(|t| suite_of(&t.0)).collect();
+    let mut printer = Printer::new(
+        chosen.iter().map(|t| t.1.clone()).collect(),
+        chosen.iter().map(|t| t.0.clone()).collect(),
+        a.verbose,
+    );
+    printer.out(&[format!(
+        "[==========] Running {} tests from {} test suites ({}).",
+        chosen.len(),
+        suites.len(),
+        name
+    )]);
+    let settings = Settings {
+        rerun_regressions: false,
+        explicit_fixtures: !a.fixtures.is_empty(),
+        ..Settings::default()
+    };
+    let t0 = std::time::Instant::now();
+    let results = if chosen.is_empty() {
+        vec![]
+    } else {
+        run::run_backend(
+            backend.as_mut(),
+            &set,
+            &Results::default(),
+            &settings,
+            &mut printer,
+        )
+        .0
+    };
+    drop(backend);
+    printer.finish(&results);
+    for r in &printer.revised {
+        eprintln!("shadowcheck: warning: {r}");
+    }
+    if printer.stopped {
+        return Ok(ExitCode::from(1));
+    }
+    let missing = chosen.len() - printer.next;
+    if missing > 0 {
+        // Not expected: every test selected gets a result. The runner reruns the rest.
+        eprintln!("shadowcheck: error: {missing} selected test(s) got no result");
+        return Ok(ExitCode::from(1));
+    }
+    let mut footer = vec![
+        format!(
+            "[==========] {} tests from {} test suites ran. ({} ms total)",
+            chosen.len(),
+            suites.len(),
+            t0.elapsed().as_millis()
+        ),
+        format!("[  PASSED  ] {} tests.", printer.passed),
+    ];
+    if !printer.skipped.is_empty() {
+        footer.push(format!(
+            "[  SKIPPED ] {} tests, listed below:",
+            printer.skipped.len()
+        ));
+        footer.extend(printer.skipped.iter().map(|n| format!("[  SKIPPED ] {n}")));
+    }
+    if !printer.failed.is_empty() {
+        footer.push(format!(
+            "[  FAILED  ] {} tests, listed below:",
+            printer.failed.len()
+        ));
+        footer.extend(printer.failed.iter().map(|n| format!("[  FAILED  ] {n}")));
+    }
+    printer.out(&footer);
+    Ok(ExitCode::from(u8::from(!printer.failed.is_empty())))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use shadowcheck_runner::records::{Status, Tags};
+
+    #[test]
+    fn names_round_trip_on_real_fixture_ids() {
+        for name in [
+            "gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25@core",
+            "sgix_ambient/2d/d24/nearest/lequal_r_sgix/clamp/dt=0.5/ref=-inf@ff",
+            "arb/rect/depth/linear/none/a=0.25_0.5/read/dt=0.2_0.4_0.6_0.8@glsl120",
+            "gles32/2d/d24/linear/none/a=0.25_0.5/read/dt=0.2_0.4_0.6_0.8@es300",
+            "sgix_ambient/1d/depth/nmn/lequal_r_sgix/lod=1/ref=0.5/levels=0.2_0.8_0.4@arbfp",
+            "gl46/cube/d32f/linear/lequal/u=2.5/face=+x@core",
+            "noslash@core",
+            "/leading@core",
+            "odd:chars*?%2E-%@x.y",
+            "ünïcode/ok@core",
+        ] {
+            let g = to_gtest(name);
+            // One `.`, the suite separator; nothing a gtest filter or list parser reads.
+            assert_eq!(g.matches('.').count(), 1, "{g}");
+            assert!(!g.contains([':', '-', '*', '?', ' ']), "{g}");
+            assert_eq!(from_gtest(&g).as_deref(), Some(name), "{g}");
+        }
+        assert_eq!(
+            to_gtest("gl46/2d/d16/nearest/lequal/ref=0.5/dt=0.25@core"),
+            "gl46.2d/d16/nearest/lequal/ref=0%2E5/dt=0%2E25@core"
+        );
+        assert_eq!(
+            to_gtest("sgix/2d/d16/nearest/lequal/dt=0/ref=-0.1@ff"),
+            "sgix.2d/d16/nearest/lequal/dt=0/ref=%2D0%2E1@ff"
+        );
+    }
+
+    #[test]
+    fn names_round_trip_on_every_committed_fixture_id() {
+        // The ids read from the files' text (loading the cases checks each against the oracle,
+        // which takes minutes in a debug build); every API path key, since the name holds one.
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures");
+        let id = regex::Regex::new(r#""id": *"([^"]*)""#).unwrap();
+        let mut n = 0;
+        let mut seen = HashSet::new();
+        for f in shadowcheck_cases::fixtures::fixture_paths(&root).unwrap() {
+            let text = std::fs::read_to_string(&f).unwrap();
+            for c in id.captures_iter(&text) {
+                let name = format!("{}@core", &c[1]);
+                let g = to_gtest(&name);
+                assert_eq!(from_gtest(&g).as_deref(), Some(name.as_str()), "{g}");
+                assert!(seen.insert(g), "{name}");
+                n += 1;
+            }
+        }
+        assert!(n > 10_000, "cases/fixtures holds {n} ids: missing?");
+    }
+
+    #[test]
+    fn text_the_mapping_never_writes_is_refused() {
+        for g in [
+            "nodot",
+            "a.b.c",
+            "gl46.ref=0.5",
+            "gl46.ref=%2e5",
+            "gl46.a%41",
+            "gl46.a%4",
+            "gl46.ref=-1",
+            "a/b.c",
+            "%2F.a/b",
+            "gl46.%FF",
+        ] {
+            assert_eq!(from_gtest(g), None, "{g}");
+        }
+    }
+
+    #[test]
+    fn filter_follows_googletest() {
+        let names: Vec<String> = ["a.x1", "a.x2", "b.y", "b.yy"]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        let sel = |f: &str| Filter::parse(f).select(&names);
+        assert_eq!(sel("a.x1:b.y"), vec![0, 2]);
+        assert_eq!(sel("*"), vec![0, 1, 2, 3]);
+        assert_eq!(sel(""), vec![0, 1, 2, 3]);
+        assert_eq!(sel("a.*"), vec![0, 1]);
+        assert_eq!(sel("b.y?"), vec![3]);
+        assert_eq!(sel("*-a.x2:b.*"), vec![0]);
+        assert_eq!(sel("-a.*"), vec![2, 3]);
+        assert_eq!(sel("c.z"), Vec::<usize>::new());
+        assert!(glob("*x*2", "a.x12"));
+        assert!(!glob("a.x", "a.x1"));
+    }
+
+    fn result(outcome: Outcome, reason: &str) -> TestResult {
+        TestResult {
+            backend: "mock:pass".into(),
+            test: "gl46/x/ref=0.5@core".into(),
+            case_id: "gl46/x/ref=0.5".into(),
+            api: shadowcheck_model::ApiPath::GlslCore,
+            status: Status::Plain(outcome),
+            outcome,
+            reason: Some(reason.into()),
+            duration: 0.002,
+            tags: Tags {
+                spec: "gl46".into(),
+                target: "2d".into(),
+                format: "d16".into(),
+                func: "lequal".into(),
+                filter: "nearest".into(),
+            },
+            observed: None,
+            expected: None,
+            footprint: None,
+            rerun: None,
+            fixtures: None,
+        }
+    }
+
+    /// deqp-runner 0.24's gtest result parser (src/gtest_command.rs): once a test has begun, any
+    /// line matching this is its status line.
+    fn deqp_status_line(line: &str) -> Option<String> {
+        let re = regex::Regex::new(r"\[\s*(\S*)\s*\]\s(\S*)").unwrap();
+        re.captures(line).map(|c| c[1].to_string())
+    }
+
+    #[test]
+    fn every_outcome_prints_what_a_gtest_parser_expects() {
+        let g = "gl46.x/ref=0%2E5@core";
+        let tricky = "observed [0.5] outside {1}\nsecond line [ OK ] x";
+        for (o, end, stops) in [
+            (Outcome::Pass, Some("OK"), false),
+            (Outcome::Warn, Some("OK"), false),
+            (Outcome::Fail, Some("FAILED"), false),
+            (Outcome::Skip, Some("SKIPPED"), false),
+            (Outcome::Crash, None, true),
+            (Outcome::Timeout, None, true),
+        ] {
+            let (lines, stop) = test_lines(g, &result(o, tricky));
+            assert_eq!(stop, stops, "{o}");
+            assert_eq!(lines[0], format!("[ RUN      ] {g}"));
+            // Between the RUN line and the end, nothing reads as a status line.
+            let body = &lines[1..lines.len() - usize::from(end.is_some())];
+            for l in body {
+                assert_eq!(deqp_status_line(l), None, "{o}: {l}");
+            }
+            if let Some(end) = end {
+                let last = lines.last().unwrap();
+                assert_eq!(deqp_status_line(last).as_deref(), Some(end), "{o}");
+                assert!(last.contains(&format!(" {g} ")), "{last}");
+            } else {
+                assert!(!body.is_empty(), "a crash says why");
+            }
+            if o != Outcome::Pass {
+                assert!(body.iter().any(|l| l.contains("observed (0.5)")), "{o}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_long_reason_is_cut() {
+        let (lines, _) = test_lines("a.b", &result(Outcome::Crash, &"x".repeat(3_000_000)));
+        assert!(lines.iter().map(String::len).sum::<usize>() < 3 * NOTE_MAX);
+    }
+}
