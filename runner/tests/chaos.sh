@@ -163,8 +163,10 @@ na=$(grep -o '[0-9]* not applicable' "$T/a16.out" | tail -1); sk=$(count_status 
 line "cases a backend cannot run (soft:gl46)" "${na:-no not-applicable count}; $sk Skip in results.csv" $c "$(ok_if "[ -n '$na' ] && [ $sk = 0 ]")"
 
 "$SC" run -b soft -o "$T/a17" >/dev/null 2>&1; c=$?
-tests=$(wc -l <"$T/a17/results.csv"); bytes=$(du -sb "$T/a17" | cut -f1)
-line "output size, run -b soft (default fixtures)" "$bytes bytes for $tests tests: $((bytes / tests)) B/test" $c "$(ok_if "[ $((bytes / tests)) -le 150 ]")"
+# results.csv is deqp-runner's format: a line per test, its length the test name's. What the run
+# adds beside it (results.jsonl, reports) is held to 100 bytes per test.
+tests=$(wc -l <"$T/a17/results.csv"); bytes=$(du -sb "$T/a17" | cut -f1); csv=$(stat -c %s "$T/a17/results.csv")
+line "output size, run -b soft (default fixtures)" "$bytes bytes for $tests tests: $(((bytes - csv) / tests)) B/test beside results.csv" $c "$(ok_if "[ $(((bytes - csv) / tests)) -le 100 ]")"
 
 "$SC" run -b 'mock:fail=lequal' -b 'mock:fail=gequal' --fixtures "$FX" -o "$T/a18" >/dev/null 2>&1; c=$?
 quoted=$(grep -c '^"' "$T/a18/results.csv"); dups=$(cut -d, -f1 "$T/a18/results.csv" | sort | uniq -d | wc -l)
