@@ -156,6 +156,8 @@ fn every_flag_has_help() {
         "mutants",
         "explain",
         "consensus",
+        "gtest",
+        "repro",
     ] {
         let o = bin().args([sub, "--help"]).output().unwrap();
         let help = String::from_utf8_lossy(&o.stdout);
