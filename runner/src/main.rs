@@ -55,6 +55,8 @@ enum Command {
     /// exits 1 when the observation is outside the accepted set. The command builds and runs it
     /// here (gcc and the GL dev packages needed), and writes REPORT.md only for a Fail. Exit 0
     /// written, 1 the test is not a Fail here (no report; --allow-pass: 0), 96 bad input or setup.
+    /// `--all-failures RESULTS_DIR`: 0 when a reproducer was written, 4 when the results hold no
+    /// Fail to reproduce, 96 when no class's reproducer could be written.
     Repro(cmd::repro::Args),
     /// The oracle's review queue: tests where at least three independent texture units return the
     /// same answer and the oracle rejects it (Fail).
