@@ -1,6 +1,9 @@
 //! `shadowcheck`: the command-line edge. Each subcommand lives in `cmd/`; the library crate
 //! (`shadowcheck_runner`) does the work and never prints.
 
+// A closed stdout (`shadowcheck repro ... | head -1`) must not panic: print with `cmd::outln!`.
+#![deny(clippy::print_stdout)]
+
 use clap::{Parser, Subcommand};
 
 mod cmd;
@@ -44,12 +47,14 @@ enum Command {
     Report(cmd::report::Args),
     /// Condense `shadowcheck run --out` directories into reference-results files (as reports/mesa-22.3.6/).
     ///
-    /// Each RUN_DIR holds one backend's run and is named r-<backend with ':' as '-'>. Writes, per
-    /// run, OUTROOT/<backend>/: failures.csv (copied: the baseline), warnings.csv (`test,Warn`),
-    /// summary.md (status counts per API path, skip reasons, non-pass groups with an example test)
-    /// and report.md (the run's, capped at 150000 characters); and OUTROOT/SUMMARY.md, one table
-    /// over every backend x API path. Reads results.jsonl (the last record of a test wins),
-    /// failures.csv and report.md of each run. Exit 0 when written, 96 on bad input.
+    /// Each RUN_DIR holds one finished run of one backend (by convention r-<backend with ':' as
+    /// '-'>; the backend and its implementation's name come from the run's meta line, not from the
+    /// folder's name). Writes, per run, OUTROOT/<backend with ':' as '-'>/: failures.csv (copied:
+    /// the baseline), warnings.csv (`test,Warn`), summary.md (status counts per API path, skip
+    /// reasons, non-pass groups with an example test) and report.md (the run's, capped at 150000
+    /// characters); and OUTROOT/SUMMARY.md, one table over every backend x API path. Reads
+    /// results.jsonl (the last record of a test wins), failures.csv and report.md of each run.
+    /// Exit 0 when written, 96 on bad input (a run that did not finish included).
     Summarize(cmd::summarize::Args),
     /// Write a standalone C reproducer (repro.c, build.sh) and a bug report (REPORT.md) for a test
     /// that fails on a GL backend, or one per failure class of a results directory.
@@ -59,6 +64,8 @@ enum Command {
     /// exits 1 when the observation is outside the accepted set. The command builds and runs it
     /// here (gcc and the GL dev packages needed), and writes REPORT.md only for a Fail. Exit 0
     /// written, 1 the test is not a Fail here (no report; --allow-pass: 0), 96 bad input or setup.
+    /// `--all-failures RESULTS_DIR`: 0 when a reproducer was written, 4 when the results hold no
+    /// Fail to reproduce, 96 when no class's reproducer could be written.
     Repro(cmd::repro::Args),
     /// The oracle's review queue: tests where at least three independent texture units return the
     /// same answer and the oracle rejects it (Fail).

@@ -274,6 +274,46 @@ fn passing_test_gives_exit_0_and_no_report() {
     assert!(!b.dir.join("REPORT.md").exists());
 }
 
+/// `repro ... | head -1`: a stdout whose reader has gone away ends the output quietly; it used to
+/// panic (exit 101) on the second line.
+#[test]
+fn a_closed_stdout_is_not_a_panic() {
+    let backend = "egl:llvmpipe:compat";
+    let test = "arb/2d/d24/linear/lequal/wrap/wrap=clamp/st=-0.25_0.25/border=1/ref=0.5@glsl120";
+    if let Err(e) = shadowcheck_runner::backend::gl::worker_command(backend) {
+        gl_support::unavailable(backend, &e.to_string());
+        return;
+    }
+    if !can_build(backend) {
+        return;
+    }
+    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
+    let out = common::tmpdir("repro-closed-stdout");
+    let (reader, writer) = std::io::pipe().unwrap();
+    drop(reader);
+    let r = common::Run::of(
+        common::bin()
+            .args([
+                "repro",
+                "--backend",
+                backend,
+                "--case",
+                test,
+                "--allow-pass",
+            ])
+            .arg("--fixtures")
+            .arg(fixture_file(&id))
+            .arg("--out")
+            .arg(&out)
+            .stdout(writer)
+            .output()
+            .unwrap(),
+    );
+    assert!(!r.stderr.contains("panicked"), "{}", r.stderr);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(out.join("repro.c").is_file());
+}
+
 /// Bad arguments exit 96 with a message naming the problem (no GL needed).
 #[test]
 fn bad_arguments_exit_96() {

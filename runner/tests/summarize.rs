@@ -26,10 +26,18 @@ fn write_run(dir: &Path, backend: &str, records: &[String], report: &str) {
     );
     let error = r#"{"kind":"load_error","file":"f.json","message":"bad"}"#;
     let mut text = format!("{meta}\n{error}\n");
+    let mut tests = std::collections::BTreeSet::new();
     for r in records {
         text += r;
         text += "\n";
+        let v: serde_json::Value = serde_json::from_str(r).unwrap();
+        tests.insert(v["test"].to_string());
     }
+    // A finished run ends with its closing record (tests per backend).
+    text += &format!(
+        "{}\n",
+        serde_json::json!({"kind": "end", "tests": {backend: tests.len()}})
+    );
     std::fs::write(dir.join("results.jsonl"), text).unwrap();
     std::fs::write(
         dir.join("failures.csv"),

@@ -50,7 +50,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             a.floor_size.clamp(1, 4096),
             Duration::from_secs_f64(a.floor_seconds.clamp(0.0, 600.0)),
         );
-        println!("{}", serde_json::to_string(&r)?);
+        super::outln!("{}", serde_json::to_string(&r)?)?;
         return Ok(ExitCode::SUCCESS);
     }
     for b in &a.backends {

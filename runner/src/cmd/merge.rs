@@ -6,8 +6,14 @@
 //!
 //! Refused (exit 96, saying why), as nextest refuses to merge archives of other builds: inputs
 //! whose selection differs (fixtures, `--cases`, baseline: unrelated runs), an input without
-//! its meta line, and shards that do not make a whole (`K/N` with some K missing, or with
-//! different N, among the inputs of the same backends).
+//! its meta line, an input whose run did not finish (no closing record, a cut-off last line, fewer
+//! tests than the run has: `records::Results::unfinished`; its missing tests would vanish from
+//! the totals, and its Fails with them), and shards that do not make a whole (`K/N` with some K
+//! missing, or with different N, among the inputs of the same backends).
+//!
+//! Writing: a results.jsonl or report that cannot be written (a full disk) does not hide the
+//! regressions read: as `run`, the exit code is decided once by [`Ending`] (`exit code 100
+//! (regressions; also 96: ...)`).
 
 use anyhow::{bail, Context};
 use shadowcheck_runner::events::{Event, Fanout, Reporter};
@@ -40,6 +46,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let mut meta: Option<RunMeta> = None;
     let mut metas: Vec<(String, RunMeta)> = vec![];
     let mut read = vec![];
+    let mut unfinished = vec![];
     for input in &a.inputs {
         let path = if input.is_dir() {
             input.join(RESULTS_FILE)
@@ -55,7 +62,16 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
                 path.display()
             ),
         }
+        if let Some(why) = p.unfinished() {
+            unfinished.push(format!("{}: the run did not finish: {why}", path.display()));
+        }
         read.push((path, p));
+    }
+    if !unfinished.is_empty() {
+        bail!(
+            "{}\nfinish each with the same `shadowcheck run` command plus `--out DIR --resume`, then merge again",
+            unfinished.join("\n")
+        );
     }
     // Before anything is combined: unrelated runs and missing shards are refused.
     check_related(&metas)?;
@@ -106,24 +122,22 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     fanout
         .reporters
         .push(Box::new(TerminalReporter::new(false, false)));
-    let mut jsonl = JsonlReporter::create(&a.out.join(RESULTS_FILE), &meta, a.full_report)?;
     let errors: Vec<_> = merged.load_errors.iter().cloned().collect();
     let mut results = merged.results;
-    for e in &errors {
-        jsonl.event(&Event::LoadError(e))?;
-    }
-    for (b, n) in &merged.not_applicable {
-        jsonl.not_applicable(b, *n)?;
-    }
     let not_applicable = merged.not_applicable.values().sum();
     run::sort_results(&mut results);
-    for r in &results {
-        jsonl.event(&Event::CaseFinished {
-            result: r,
-            replayed: false,
-        })?;
-    }
-    jsonl.finish()?;
+    // A results.jsonl that cannot be written is said at the end, beside the regressions read.
+    let results_path = a.out.join(RESULTS_FILE);
+    let jsonl_error = write_results(
+        &results_path,
+        &meta,
+        a.full_report,
+        &merged.not_applicable,
+        &errors,
+        &results,
+    )
+    .err()
+    .map(|e| format!("writing {}: {e}", results_path.display()));
     fanout.reporters.extend(report::file_reporters(
         &a.out,
         &FileReports {
@@ -133,12 +147,44 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     ));
     let summary = run::finish(backends, &mut results, &errors, not_applicable, &mut fanout);
     let mut ending = Ending::new(summary.exit_code);
+    if let Some(e) = jsonl_error {
+        eprintln!("shadowcheck: error: {e}");
+        ending.add(exit::SETUP, e);
+    }
     if let Some((_, e)) = &fanout.error {
         eprintln!("shadowcheck: error: {e} (in {})", a.out.display());
         ending.add(exit::SETUP, e.to_string());
     }
     terminal::print_final_line(&summary, &ending);
     Ok(ExitCode::from(ending.code))
+}
+
+/// Writes the merged results.jsonl: the meta line, load errors, not-applicable counts (with each
+/// backend's tests), the records in report order, and the closing record.
+fn write_results(
+    path: &std::path::Path,
+    meta: &RunMeta,
+    full: bool,
+    not_applicable: &std::collections::BTreeMap<String, usize>,
+    errors: &[records::LoadError],
+    results: &[records::TestResult],
+) -> std::io::Result<()> {
+    let mut jsonl = JsonlReporter::create(path, meta, full)?;
+    for e in errors {
+        jsonl.event(&Event::LoadError(e))?;
+    }
+    for b in &meta.backends {
+        let tests = results.iter().filter(|r| &r.backend == b).count();
+        let cases = not_applicable.get(b).copied().unwrap_or(0);
+        jsonl.not_applicable(b, cases, tests)?;
+    }
+    for r in results {
+        jsonl.event(&Event::CaseFinished {
+            result: r,
+            replayed: false,
+        })?;
+    }
+    jsonl.end(results)
 }
 
 /// The inputs come from one run: the same selection, and for each set of backends either one

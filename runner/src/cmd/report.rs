@@ -91,7 +91,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let path = a.out.join(html::INDEX);
     shadowcheck_runner::report::atomic::write(&path, page.as_bytes())
         .with_context(|| format!("writing {}", path.display()))?;
-    println!(
+    super::outln!(
         "wrote {} ({} KiB): {} tests on {} backends ({}) from {} input(s); heatmap geometry from {}",
         path.display(),
         page.len().div_ceil(1024),
@@ -100,6 +100,6 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         input.backends.join(", "),
         input.sources.len(),
         if geo.fixtures.is_empty() { "the records' footprints only (no fixtures found)".to_string() } else { geo.fixtures.join(", ") }
-    );
+    )?;
     Ok(ExitCode::SUCCESS)
 }

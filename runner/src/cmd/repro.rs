@@ -5,9 +5,14 @@
 //! Exit codes: 0 written (a Fail reproduced: REPORT.md beside repro.c; or `--allow-pass`);
 //! 1 the test is not a Fail on this backend (Pass or Warn: no bug report; repro.c, build.sh and
 //! output.txt are kept); 96 bad arguments or setup (no compiler, no driver, unknown case).
+//!
+//! `--all-failures`: 0 when at least one class's reproducer was written (index.md says why any
+//! other was not, and links only the folders written); 4 when the results hold no Fail to
+//! reproduce (nothing is written); 96 when there are Fails but no reproducer could be written for
+//! any of their classes (a backend repro does not write, no compiler: each reason on stderr).
 
 use anyhow::{bail, Context};
-use shadowcheck_runner::records::{read_results, Outcome, RESULTS_FILE};
+use shadowcheck_runner::records::{exit, read_results, Outcome, RESULTS_FILE};
 use shadowcheck_runner::repro::{self, classes, report, RunOutput, Subject};
 use shadowcheck_runner::verdict::{self, Judged};
 use std::fmt::Write as _;
@@ -65,6 +70,11 @@ fn slug(s: &str) -> String {
 /// Builds and runs the reproducer of `s` in `dir` and judges what it observed as the runner does.
 fn reproduce(s: &Subject, dir: &Path) -> anyhow::Result<(RunOutput, Judged)> {
     repro::write_sources(s, dir)?;
+    run_written(s, dir)
+}
+
+/// Builds and runs the reproducer already written in `dir`, and judges what it observed.
+fn run_written(s: &Subject, dir: &Path) -> anyhow::Result<(RunOutput, Judged)> {
     let run = repro::build_and_run(s, dir)?;
     let Some(observed) = run.observed() else {
         bail!(
@@ -99,17 +109,17 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             .join(slug(&s.test()))
     });
     let (run, judged) = reproduce(&s, &dir)?;
-    println!("{}", run.stdout.trim_end());
+    super::outln!("{}", run.stdout.trim_end())?;
     if judged.outcome == Outcome::Fail {
         write_report(&s, &dir, &run, &judged)?;
-        println!(
+        super::outln!(
             "wrote {}/{{{},{},{},{}}}",
             dir.display(),
             repro::REPRO_C,
             repro::BUILD_SH,
             repro::OUTPUT_TXT,
             repro::REPORT_MD
-        );
+        )?;
         return Ok(ExitCode::SUCCESS);
     }
     let what = format!(
@@ -123,7 +133,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         dir.display()
     );
     if a.allow_pass {
-        println!("{what}");
+        super::outln!("{what}")?;
         Ok(ExitCode::SUCCESS)
     } else {
         eprintln!("shadowcheck repro: {what}; --allow-pass keeps a passing reproducer with exit 0");
@@ -149,6 +159,14 @@ fn all_failures(
         .iter()
         .filter(|r| classes::is_reproducible_fail(r))
         .count();
+    if cs.is_empty() {
+        eprintln!(
+            "shadowcheck repro: no Fail to reproduce in {} ({} results; only Fails count, not Crash, Timeout, Flake or KnownFlake): nothing written",
+            file.display(),
+            res.results.len()
+        );
+        return Ok(ExitCode::from(exit::NOTHING));
+    }
     let mut index = format!(
         "# Reproducers: {} failure classes of {fails} Fails in `{}`\n\nOne reproducer per class. Class key: backend, API path, compare or not, the channels that missed and the rule broken (the expectation's citations, under \"Tests per class\"); see `runner/src/repro/classes.rs`. Flaky failures are left out.\n\n| class | backend | API path | compare | missed | targets | tests | representative | result here |\n|---|---|---|---|---|---|--:|---|---|\n",
         cs.len(),
@@ -156,6 +174,8 @@ fn all_failures(
     );
     let mut details = String::from("\n## Tests per class\n");
     let mut reproduced = 0;
+    let mut written = 0;
+    let mut not_written = vec![];
     for (i, c) in cs.iter().enumerate() {
         let r = &c.representative;
         let dir = out.join(classes::slug(i, c));
@@ -164,10 +184,13 @@ fn all_failures(
         if fixtures.is_empty() {
             fixtures.push(PathBuf::from(super::run::DEFAULT_FIXTURES));
         }
+        let mut sources = false;
         let result = repro::subject(&r.backend, &r.test, &fixtures)
             .map_err(anyhow::Error::from)
             .and_then(|s| {
-                let (run, judged) = reproduce(&s, &dir)?;
+                repro::write_sources(&s, &dir)?;
+                sources = true;
+                let (run, judged) = run_written(&s, &dir)?;
                 if judged.outcome == Outcome::Fail {
                     write_report(&s, &dir, &run, &judged)?;
                 }
@@ -182,19 +205,23 @@ fn all_failures(
                 )
             }
             Ok(o) => format!("did not reproduce: {} (no REPORT.md)", o.as_str()),
-            Err(e) => format!(
-                "no reproducer: {}",
-                e.to_string()
-                    .lines()
-                    .next()
-                    .unwrap_or_default()
-                    .replace('|', "/")
-            ),
+            Err(e) => {
+                let first = e.to_string().lines().next().unwrap_or_default().to_string();
+                not_written.push(format!("{}: {first}", classes::slug(i, c)));
+                format!("no reproducer: {}", first.replace('|', "/"))
+            }
         };
         let slug = classes::slug(i, c);
+        // Only a folder that holds a reproducer is linked.
+        let name = if sources {
+            written += 1;
+            format!("[{slug}]({slug}/)")
+        } else {
+            slug.clone()
+        };
         let _ = writeln!(
             index,
-            "| [{slug}]({slug}/) | `{}` | {} | {} | {} | {} | {} | `{}` | {cell} |",
+            "| {name} | `{}` | {} | {} | {} | {} | {} | `{}` | {cell} |",
             c.parts[0],
             c.parts[1],
             c.parts[2],
@@ -210,10 +237,22 @@ fn all_failures(
     }
     std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
     std::fs::write(out.join("index.md"), index + &details).context("writing index.md")?;
-    println!(
-        "{} classes, {reproduced} reproduced as Fail; index: {}",
+    for n in &not_written {
+        eprintln!("shadowcheck repro: no reproducer for class {n}");
+    }
+    if written == 0 {
+        eprintln!(
+            "shadowcheck repro: no reproducer could be written for any of the {} classes of {} (index: {})",
+            cs.len(),
+            file.display(),
+            out.join("index.md").display()
+        );
+        return Ok(ExitCode::from(exit::SETUP));
+    }
+    super::outln!(
+        "{} classes, {written} reproducers written, {reproduced} reproduced as Fail; index: {}",
         cs.len(),
         out.join("index.md").display()
-    );
+    )?;
     Ok(ExitCode::SUCCESS)
 }

@@ -268,14 +268,18 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let (prior, jsonl) = if a.resume && results_path.exists() {
         records::truncate_partial_line(&results_path)?;
         let prior = records::read_results(&results_path)?;
-        if let Some(m) = &prior.meta {
-            if m.selection() != meta.selection() {
-                bail!(
-                    "--resume: {} was written by a different selection ({:?}); give the same --backend/--fixtures/--cases/--shard/--baseline, or drop --resume",
-                    results_path.display(),
-                    m
-                );
-            }
+        match &prior.meta {
+            Some(m) if m.selection() != meta.selection() => bail!(
+                "--resume: {} was written by a different selection ({:?}); give the same --backend/--fixtures/--cases/--shard/--baseline, or drop --resume",
+                results_path.display(),
+                m
+            ),
+            Some(_) => {}
+            // Without its selection nothing says these records belong to this run.
+            None => bail!(
+                "--resume: {} has no meta line (the run's selection), so it cannot be continued: not a results.jsonl written by shadowcheck run; drop --resume to start afresh",
+                results_path.display()
+            ),
         }
         (prior, JsonlReporter::append(&results_path, a.full_report)?)
     } else {

@@ -1,8 +1,14 @@
 //! `shadowcheck summarize -o DIR RUN_DIR... --platform NAME`: condenses `shadowcheck run --out`
 //! directories into a reference-results folder (what reports/mesa-22.3.6/run.sh commits).
 //!
-//! Each RUN_DIR holds one backend's run and is named `r-<backend with ':' as '-'>`; the part after
-//! `r-` names the folder DIR/<backend>/, which gets:
+//! Each RUN_DIR holds one backend's run (by convention named `r-<backend with ':' as '-'>`). The
+//! backend, and so its label and its folder DIR/<backend with ':' as '-'>/, comes from the run's
+//! meta line, never from the folder's name (a renamed folder would label another driver's
+//! results); the implementation's own name and version (its protocol hello, e.g. GL_VERSION and
+//! GL_RENDERER) heads its summary.md and is listed under SUMMARY.md's table. A run that did not
+//! finish (no closing record, a cut-off last line, fewer tests than the run has:
+//! `records::Results::unfinished`) is refused with its file named: its counts would be wrong.
+//! The folder gets:
 //! - `failures.csv`: copied as the run wrote it (the baseline);
 //! - `warnings.csv`: `test,Warn` for every test whose final status is Warn, sorted;
 //! - `summary.md`: status counts per API path, the most frequent skip reasons, and the non-pass
@@ -14,8 +20,8 @@
 //! README's headline result tables from the committed summaries (`report::headline`). Only results.jsonl (read by the shared reader, `records::read_results`:
 //! the last record of a test wins), failures.csv and report.md of each run are read.
 
-use anyhow::Context;
-use shadowcheck_runner::records::{self, exit, TestResult, RESULTS_FILE};
+use anyhow::{bail, Context};
+use shadowcheck_runner::records::{self, exit, Results, TestResult, RESULTS_FILE};
 use shadowcheck_runner::report::csv::field;
 use shadowcheck_runner::report::headline;
 use std::collections::{BTreeMap, HashMap};
@@ -90,14 +96,17 @@ fn summarize_runs(outroot: &Path, runs: &[PathBuf], platform: &str) -> anyhow::R
     let mut all_cols: Vec<String> = STATUSES.iter().map(|s| s.to_string()).collect();
     let mut rows = vec![];
     for run in runs {
-        let (backend, counts, cols) = summarize(outroot, run, platform)
+        let (backend, implementation, counts, cols) = summarize(outroot, run, platform)
             .with_context(|| format!("summarizing {}", run.display()))?;
         for c in cols {
             if !all_cols.contains(&c) {
                 all_cols.push(c);
             }
         }
-        rows.push((backend, counts));
+        if rows.iter().any(|(b, _, _)| *b == backend) {
+            bail!("two run directories hold the runs of `{backend}`; give one per backend");
+        }
+        rows.push((backend, implementation, counts));
     }
     let mut out = vec![
         format!("# {platform} reference results (default fixtures)\n"),
@@ -105,7 +114,7 @@ fn summarize_runs(outroot: &Path, runs: &[PathBuf], platform: &str) -> anyhow::R
         format!("| backend | API path | {} |", all_cols.join(" | ")),
         format!("|---|---|{}", "---:|".repeat(all_cols.len())),
     ];
-    for (backend, counts) in &rows {
+    for (backend, _, counts) in &rows {
         for (api, c) in counts {
             let n = |s: &String| c.get(s).copied().unwrap_or(0);
             if all_cols.iter().filter(|s| *s != "Skip").all(|s| n(s) == 0) {
@@ -115,33 +124,71 @@ fn summarize_runs(outroot: &Path, runs: &[PathBuf], platform: &str) -> anyhow::R
             out.push(format!("| {backend} | {api} | {} |", cells.join(" | ")));
         }
     }
+    let named: Vec<String> = rows
+        .iter()
+        .filter_map(|(b, i, _)| Some(format!("- {b}: {}", i.as_deref()?)))
+        .collect();
+    if !named.is_empty() {
+        out.push("\nImplementations (as each run's meta line names them):\n".to_string());
+        out.extend(named);
+    }
     let path = outroot.join("SUMMARY.md");
     shadowcheck_runner::report::atomic::write(&path, (out.join("\n") + "\n").as_bytes())
         .with_context(|| format!("writing {}", path.display()))
 }
 
-/// The backend a run directory is named for: its name without the `r-` prefix.
-fn backend_of(run: &Path) -> String {
-    let name = run
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    match name.strip_prefix("r-") {
-        Some(b) => b.to_string(),
-        None => name,
-    }
+/// The label and folder name of a backend: its name with ':' as '-' (`egl-llvmpipe-es3`).
+fn label_of(backend: &str) -> String {
+    backend.replace(['/', '\\'], "_").replace(':', "-")
 }
 
-/// Writes DIR/<backend>/ for one run; returns the backend, its counts and its status columns.
+/// The one backend of a run and its implementation's name, from the meta line of `results`
+/// (`file` names it in errors); a run that did not finish is refused.
+fn backend_of(file: &Path, results: &Results) -> anyhow::Result<(String, Option<String>)> {
+    let Some(meta) = &results.meta else {
+        bail!(
+            "{}: no meta line (not a results.jsonl written by shadowcheck run)",
+            file.display()
+        );
+    };
+    if let Some(why) = results.unfinished() {
+        bail!(
+            "{}: the run did not finish: {why}; finish it with the same `shadowcheck run` command plus `--resume`, then summarize",
+            file.display()
+        );
+    }
+    let [backend] = meta.backends.as_slice() else {
+        bail!(
+            "{}: a run of {} backends ({}); summarize takes one backend's run per directory",
+            file.display(),
+            meta.backends.len(),
+            meta.backends.join(", ")
+        );
+    };
+    Ok((backend.clone(), meta.implementations.get(backend).cloned()))
+}
+
+/// Writes DIR/<backend>/ for one run; returns the backend's label, its implementation's name,
+/// its counts and its status columns.
 fn summarize(
     outroot: &Path,
     run: &Path,
     platform: &str,
-) -> anyhow::Result<(String, Counts, Vec<String>)> {
-    let backend = backend_of(run);
+) -> anyhow::Result<(String, Option<String>, Counts, Vec<String>)> {
+    let file = run.join(RESULTS_FILE);
+    let read = records::read_results(&file)?;
+    let (name, implementation) = backend_of(&file, &read)?;
+    let backend = label_of(&name);
+    let dir_name = run.file_name().map(|n| n.to_string_lossy().into_owned());
+    if dir_name.as_deref() != Some(&format!("r-{backend}")) {
+        eprintln!(
+            "shadowcheck summarize: note: {} holds the run of `{name}` (its meta line): summarized as {backend}",
+            run.display()
+        );
+    }
     let dst = outroot.join(&backend);
     std::fs::create_dir_all(&dst).with_context(|| format!("creating {}", dst.display()))?;
-    let results = records::read_results(&run.join(RESULTS_FILE))?.results;
+    let results = read.results;
     let mut counts = Counts::new();
     // Per API path, skip reasons in order of first appearance (ties keep that order).
     let mut skips: BTreeMap<String, Vec<(String, usize)>> = BTreeMap::new();
@@ -209,12 +256,15 @@ fn summarize(
         .map(|s| s.to_string())
         .chain(extra)
         .collect();
-    let mut lines = vec![
-        format!("# {backend} on {platform}\n"),
+    let mut lines = vec![format!("# {backend} on {platform}\n")];
+    if let Some(i) = &implementation {
+        lines.push(format!("Implementation (the run's meta line): {i}\n"));
+    }
+    lines.extend([
         "Status per API path (tests = case x API path):\n".to_string(),
         format!("| API path | {} | total |", cols.join(" | ")),
         format!("|---|{}", "---:|".repeat(cols.len() + 1)),
-    ];
+    ]);
     for (api, c) in &counts {
         let cells: Vec<String> = cols
             .iter()
@@ -248,7 +298,7 @@ fn summarize(
         }
     }
     write(&dst.join("summary.md"), &(lines.join("\n") + "\n"))?;
-    Ok((backend, counts, cols))
+    Ok((backend, implementation, counts, cols))
 }
 
 /// `spec/target/format/filter/func` of a record.
@@ -304,11 +354,12 @@ mod tests {
     }
 
     #[test]
-    fn the_backend_is_the_run_directory_name_without_r() {
+    fn a_backend_is_labelled_with_colons_as_dashes() {
+        assert_eq!(label_of("egl:llvmpipe:es3"), "egl-llvmpipe-es3");
         assert_eq!(
-            backend_of(Path::new("out/r-egl-llvmpipe-es3/")),
-            "egl-llvmpipe-es3"
+            label_of("egl:zink+swiftshader:core"),
+            "egl-zink+swiftshader-core"
         );
-        assert_eq!(backend_of(Path::new("out/soft")), "soft");
+        assert_eq!(label_of("egl@/opt/x:native:es3"), "egl@_opt_x-native-es3");
     }
 }

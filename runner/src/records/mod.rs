@@ -6,7 +6,8 @@
 //!   [`ExpectedSummary`];
 //! - [`Line`]: one line of `results.jsonl`: the run's [`RunMeta`] first, then one [`TestResult`]
 //!   or [`LoadError`] per line, plain passes of a backend's cases with the same tags together on
-//!   one [`Passed`] line ([`passed`]: the compact form, unless `--full-report`);
+//!   one [`Passed`] line ([`passed`]: the compact form, unless `--full-report`), and last, when
+//!   the run finished, the closing [`Line::End`];
 //! - [`Counts`] and [`Summary`]: the totals of a run and the exit code they give ([`exit`], the
 //!   documented exit codes, runner/README.md#exit-codes);
 //! - [`reader`]: the one reader of `results.jsonl` (for `--resume`, `merge`, `report`,
@@ -212,6 +213,16 @@ pub enum Line {
     NotApplicable {
         backend: String,
         cases: usize,
+        /// The tests the backend has in this selection (absent in files of older builds): what a
+        /// finished run holds a record of ([`reader::Results::unfinished`]).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        tests: Option<usize>,
+    },
+    /// The closing record: the run finished (not interrupted, not killed, results.jsonl written
+    /// whole) with this many tests per backend. Written once every backend has a record of each
+    /// of its tests; a file without it is a run that did not finish.
+    End {
+        tests: BTreeMap<String, usize>,
     },
 }
 

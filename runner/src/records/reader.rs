@@ -3,8 +3,14 @@
 //!
 //! The rules:
 //! - a run killed mid-write may leave a truncated last line (no newline at its end): it is dropped
-//!   when read, and cut off before `--resume` appends ([`truncate_partial_line`]); any other line
-//!   that does not parse is an error naming the file and line;
+//!   when read (and [`Results::truncated`] says so), and cut off before `--resume` appends
+//!   ([`truncate_partial_line`]); any other line that does not parse is an error naming the file
+//!   and line;
+//! - a meta line of another `schema_version` than [`SCHEMA_VERSION`] is an error naming the file:
+//!   its records may mean something else;
+//! - a run that finished ends with a closing record ([`Line::End`], the tests per backend); what a
+//!   file without it, or with fewer tests than it says, lacks is [`Results::unfinished`] (`merge`
+//!   and `summarize` refuse such a file: its missing tests would vanish from the totals);
 //! - a `passed` line (the compact form of passing tests) stands for one record per test it lists;
 //! - for each (backend, test) the last record wins (a flake re-run appends the final record of a
 //!   test after its first one), kept at the place of the first;
@@ -19,6 +25,7 @@
 //! later one and counts it.
 
 use super::{Line, LoadError, RunMeta, TestResult};
+use shadowcheck_model::SCHEMA_VERSION;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::io::{BufRead, BufReader, Seek, SeekFrom};
 use std::path::Path;
@@ -53,6 +60,12 @@ pub struct Results {
     pub load_errors: BTreeSet<LoadError>,
     /// Per backend, the cases that are not tests of it (the last count written for it).
     pub not_applicable: BTreeMap<String, usize>,
+    /// Per backend, the tests it has in the run's selection (from its `not_applicable` line).
+    pub tests: BTreeMap<String, usize>,
+    /// The closing record's tests per backend, when the file ends with one.
+    pub end: Option<BTreeMap<String, usize>>,
+    /// The last line was cut off (no newline, not a whole record) and dropped.
+    pub truncated: bool,
 }
 
 impl Results {
@@ -76,6 +89,49 @@ impl Results {
         }
     }
 
+    /// Why this is not the record of a finished run (each reason, with what is missing), or `None`
+    /// when it is: the last line cut off, no closing record (killed, interrupted, or a write that
+    /// failed), or fewer tests of a backend than the run has.
+    pub fn unfinished(&self) -> Option<String> {
+        let mut why = vec![];
+        if self.truncated {
+            why.push("its last line is cut off (the run was killed while writing it)".to_string());
+        }
+        let mut have: BTreeMap<&str, usize> = BTreeMap::new();
+        for r in &self.results {
+            *have.entry(r.backend.as_str()).or_default() += 1;
+        }
+        let backends = self
+            .meta
+            .as_ref()
+            .map_or(&[][..], |m| m.backends.as_slice());
+        let count = |b: &str| have.get(b).copied().unwrap_or(0);
+        match &self.end {
+            None => {
+                why.push("no closing record (the run was killed or interrupted, or results.jsonl could not be written whole)".to_string());
+                for b in backends {
+                    match self.tests.get(b) {
+                        Some(&n) => why.push(format!("`{b}`: {} of {n} tests written", count(b))),
+                        None if count(b) == 0 => why.push(format!("`{b}`: never started")),
+                        None => why.push(format!("`{b}`: {} tests written", count(b))),
+                    }
+                }
+            }
+            Some(end) => {
+                for b in backends {
+                    match end.get(b) {
+                        Some(&n) if count(b) < n => {
+                            why.push(format!("`{b}`: {} of {n} tests written", count(b)))
+                        }
+                        Some(_) => {}
+                        None => why.push(format!("`{b}`: not in the closing record")),
+                    }
+                }
+            }
+        }
+        (!why.is_empty()).then(|| why.join("; "))
+    }
+
     /// Parses the text of a results.jsonl; `file` names it in errors.
     pub fn parse(file: &str, text: &str) -> Result<Results, ReadError> {
         let mut out = Results::default();
@@ -85,15 +141,38 @@ impl Results {
             if line.trim().is_empty() {
                 continue;
             }
-            match parse_line(line) {
+            let parsed = parse_line(line);
+            // Records after a closing record: a resumed run that has not finished again.
+            if !matches!(parsed, Ok(Line::End { .. }) | Err(_)) {
+                out.end = None;
+            }
+            match parsed {
+                Ok(Line::Meta(m)) if m.schema_version != SCHEMA_VERSION => {
+                    return Err(ReadError::Bad {
+                        file: file.to_string(),
+                        line: i + 1,
+                        msg: format!(
+                            "schema_version {} is not one this shadowcheck reads (it reads {SCHEMA_VERSION}): written by another version of shadowcheck, or not by shadowcheck",
+                            m.schema_version
+                        ),
+                    })
+                }
                 Ok(Line::Meta(m)) => out.meta = Some(m),
+                Ok(Line::End { tests }) => out.end = Some(tests),
                 Ok(Line::LoadError(e)) => {
                     out.load_errors.insert(e);
                 }
                 Ok(Line::Result(r)) => {
                     out.insert(*r);
                 }
-                Ok(Line::NotApplicable { backend, cases }) => {
+                Ok(Line::NotApplicable {
+                    backend,
+                    cases,
+                    tests,
+                }) => {
+                    if let Some(t) = tests {
+                        out.tests.insert(backend.clone(), t);
+                    }
                     out.not_applicable.insert(backend, cases);
                 }
                 Ok(Line::Passed(p)) => match p.results() {
@@ -110,7 +189,7 @@ impl Results {
                         })
                     }
                 },
-                Err(_) if i + 1 == lines.len() && !complete => {}
+                Err(_) if i + 1 == lines.len() && !complete => out.truncated = true,
                 Err(e) => {
                     return Err(ReadError::Bad {
                         file: file.to_string(),
@@ -237,5 +316,57 @@ mod tests {
         assert_eq!(read.results[0].outcome, Outcome::Pass);
         assert!(read.results[0].footprint.is_none());
         assert!(Results::parse("x.jsonl", &format!("{meta}\nnot json\n{rec}\n")).is_err());
+    }
+
+    /// The closing record, the test counts and a cut-off last line say whether a run finished.
+    #[test]
+    fn a_run_without_its_closing_record_or_with_fewer_tests_is_unfinished() {
+        let meta = serde_json::to_string(&Line::Meta(RunMeta {
+            backends: vec!["b".into()],
+            ..RunMeta::new()
+        }))
+        .unwrap();
+        let na = r#"{"kind":"not_applicable","backend":"b","cases":0,"tests":2}"#;
+        let rec = |t: &str| {
+            serde_json::to_string(&Line::Result(Box::new(TestResult::sample(
+                t,
+                crate::records::Status::Plain(Outcome::Pass),
+            ))))
+            .unwrap()
+        };
+        let (x, y) = (rec("x@core"), rec("y@core"));
+        let end = r#"{"kind":"end","tests":{"b":2}}"#;
+        let read = |text: String| Results::parse("r.jsonl", &text).unwrap();
+
+        let whole = read(format!("{meta}\n{na}\n{x}\n{y}\n{end}\n"));
+        assert_eq!(whole.unfinished(), None);
+        let killed = read(format!("{meta}\n{na}\n{x}\n"));
+        let why = killed.unfinished().unwrap();
+        assert!(
+            why.contains("no closing record") && why.contains("`b`: 1 of 2 tests written"),
+            "{why}"
+        );
+        let cut = read(format!("{meta}\n{na}\n{x}\n{y}\n{}", &end[..12]));
+        let why = cut.unfinished().unwrap();
+        assert!(why.contains("last line is cut off"), "{why}");
+        let fewer = read(format!("{meta}\n{na}\n{y}\n{end}\n"));
+        assert_eq!(fewer.unfinished().unwrap(), "`b`: 1 of 2 tests written");
+        // A resumed run appending after an earlier closing record has not finished again.
+        let resumed = read(format!("{meta}\n{na}\n{x}\n{y}\n{end}\n{na}\n{y}\n"));
+        assert!(resumed.unfinished().is_some());
+        let never = read(format!("{meta}\n"));
+        assert!(never.unfinished().unwrap().contains("`b`: never started"));
+    }
+
+    #[test]
+    fn an_unknown_schema_version_is_an_error_naming_the_file() {
+        let meta = r#"{"kind":"meta","schema_version":99,"backends":["b"],"fixtures":["f"]}"#;
+        let e = Results::parse("x.jsonl", &format!("{meta}\n"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("x.jsonl:1: schema_version 99 is not one"),
+            "{e}"
+        );
     }
 }

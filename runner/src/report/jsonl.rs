@@ -10,9 +10,14 @@
 //! reporter is asked for full records (`--full-report`). A backend's open compact line is written
 //! before any full record of that backend, so the reader's "last record wins" still sees records in
 //! the order they were made (a crash re-emits a case's earlier passes as Crash).
+//!
+//! A run that finishes (not interrupted, every backend with a record of each of its tests) ends
+//! the file with the closing record ([`Line::End`]); `merge` and `summarize` refuse a file
+//! without it ([`crate::records::Results::unfinished`]).
 
 use crate::events::{Event, Reporter};
 use crate::records::{Line, Passed, RunMeta, TestResult};
+use std::collections::BTreeMap;
 use std::fs::{File, OpenOptions};
 use std::io::Write;
 use std::path::Path;
@@ -49,6 +54,8 @@ pub struct JsonlReporter<S: Store = File> {
     full: bool,
     /// Per backend, the compact line of passing tests being filled (at most one per backend).
     open: Vec<Passed>,
+    /// Per backend started, its tests in the selection (what the closing record needs).
+    started: BTreeMap<String, usize>,
 }
 
 impl JsonlReporter<File> {
@@ -84,6 +91,7 @@ impl<S: Store> JsonlReporter<S> {
             failed: false,
             full,
             open: vec![],
+            started: BTreeMap::new(),
         }
     }
 
@@ -109,12 +117,40 @@ impl<S: Store> JsonlReporter<S> {
         self.push(&Line::Result(Box::new(r.clone())))
     }
 
-    /// Records how many cases are not tests of `backend` (a `not_applicable` line) and writes it.
-    pub fn not_applicable(&mut self, backend: &str, cases: usize) -> std::io::Result<()> {
+    /// Records how many cases are not tests of `backend` and how many tests it has (a
+    /// `not_applicable` line) and writes it.
+    pub fn not_applicable(
+        &mut self,
+        backend: &str,
+        cases: usize,
+        tests: usize,
+    ) -> std::io::Result<()> {
+        self.started.insert(backend.to_string(), tests);
         self.push(&Line::NotApplicable {
             backend: backend.to_string(),
             cases,
+            tests: Some(tests),
         })?;
+        self.close_and_flush()
+    }
+
+    /// Writes the closing record ([`Line::End`]) when every backend started has a record of each
+    /// of its tests among `results` (the run's final records); otherwise the file stays without
+    /// one, the mark of a run that did not finish.
+    pub fn end(&mut self, results: &[TestResult]) -> std::io::Result<()> {
+        let mut have: BTreeMap<String, usize> =
+            self.started.keys().map(|b| (b.clone(), 0)).collect();
+        for r in results {
+            *have.entry(r.backend.clone()).or_default() += 1;
+        }
+        let whole = self
+            .started
+            .iter()
+            .all(|(b, n)| have.get(b).is_some_and(|h| h >= n));
+        if whole {
+            self.close_and_flush()?;
+            self.push(&Line::End { tests: have })?;
+        }
         self.close_and_flush()
     }
 
@@ -181,8 +217,12 @@ impl<S: Store> Reporter for JsonlReporter<S> {
             Event::BackendStarted {
                 backend,
                 not_applicable,
-                ..
-            } => self.not_applicable(backend, *not_applicable),
+                tests,
+            } => self.not_applicable(backend, *not_applicable, *tests),
+            // An interrupted run has not finished: no flake re-run was made, `--resume` goes on.
+            Event::RunFinished { results, .. } if !crate::interrupt::requested() => {
+                self.end(results)
+            }
             Event::BatchFinished { .. }
             | Event::BackendFinished { .. }
             | Event::RunFinished { .. } => self.close_and_flush(),
@@ -250,5 +290,47 @@ mod tests {
         }
         // Less than the room: the batch that did not fit is gone entirely.
         assert!(text.len() < 300);
+    }
+
+    /// A store that keeps everything.
+    impl Store for Vec<u8> {
+        fn append(&mut self, bytes: &[u8]) -> std::io::Result<()> {
+            self.extend_from_slice(bytes);
+            Ok(())
+        }
+        fn truncate(&mut self, len: u64) -> std::io::Result<()> {
+            Vec::truncate(self, len as usize);
+            Ok(())
+        }
+    }
+
+    /// The closing record is written when every backend started has a record of each of its
+    /// tests, and not when one lacks some (a run that stopped early).
+    #[test]
+    fn the_closing_record_is_written_only_when_every_test_has_a_record() {
+        use crate::records::{Outcome, Results, Status};
+        let pass = |t: &str| TestResult::sample(t, Status::Plain(Outcome::Pass));
+        let (x, y) = (pass("x@core"), pass("y@core"));
+        for (results, whole) in [(vec![x.clone(), y.clone()], true), (vec![x.clone()], false)] {
+            let mut r = JsonlReporter::over(Vec::new(), 0, false);
+            r.push(&Line::Meta(RunMeta {
+                backends: vec!["b".into()],
+                ..RunMeta::new()
+            }))
+            .unwrap();
+            r.not_applicable("b", 0, 2).unwrap();
+            for t in &results {
+                r.result(t).unwrap();
+            }
+            r.end(&results).unwrap();
+            let text = String::from_utf8(r.store.clone()).unwrap();
+            assert_eq!(
+                text.contains(r#"{"kind":"end","tests":{"b":2}}"#),
+                whole,
+                "{text}"
+            );
+            let read = Results::parse("r", &text).unwrap();
+            assert_eq!(read.unfinished().is_none(), whole, "{text}");
+        }
     }
 }
