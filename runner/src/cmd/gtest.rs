@@ -22,7 +22,7 @@
 //! setup error or bad input (no backend, unreadable fixtures).
 
 use anyhow::{bail, Context};
-use shadowcheck_runner::backend::{self, BackendError, Options};
+use shadowcheck_runner::backend::{self, BackendError};
 use shadowcheck_runner::events::{Event, Sink};
 use shadowcheck_runner::interrupt;
 use shadowcheck_runner::records::{Outcome, Results, TestResult};
@@ -31,7 +31,6 @@ use std::collections::{HashMap, HashSet};
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Duration;
 
 /// The environment variable that names the backend when `-b` is not given.
 pub const BACKEND_ENV: &str = "SHADOWCHECK_BACKEND";
@@ -53,26 +52,8 @@ pub struct Args {
     /// Only cases whose id matches this regular expression (as for `run`).
     #[arg(long, value_name = "PATTERN")]
     cases: Option<String>,
-    /// Seconds an external implementation may take for one group of cases (as for `run`).
-    #[arg(
-        long,
-        value_name = "SECS",
-        default_value_t = 10.0,
-        allow_negative_numbers = true
-    )]
-    timeout: f64,
-    /// Cases written to an implementation process before each flush (as for `run`).
-    #[arg(long, value_name = "N", default_value_t = 64)]
-    group: usize,
-    /// After this many cases in a row end in Timeout, the rest are Timeout without being sent.
-    #[arg(long, value_name = "K", default_value_t = backend::GIVE_UP_AFTER)]
-    give_up_after: usize,
-    /// GL workers run with GALLIVM_PERF=nopt (as for `run`).
-    #[arg(long)]
-    fast_compile: bool,
-    /// Show implementations' stderr lines and restarts (on stderr).
-    #[arg(long, short = 'v')]
-    verbose: bool,
+    #[command(flatten)]
+    exchange: super::run::Exchange,
     /// googletest: list the tests (`Suite.` lines, then the test names indented) and exit.
     #[arg(long = "gtest_list_tests")]
     gtest_list_tests: bool,
@@ -467,12 +448,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .map(regex::Regex::new)
         .transpose()
         .context("--cases")?;
-    if !(a.timeout > 0.0 && a.timeout <= 365.0 * 86400.0) {
-        bail!("--timeout must be a positive number of seconds, at most 31536000 (a year)");
-    }
-    if a.group == 0 {
-        bail!("--group must be at least 1");
-    }
+    let opts = a.exchange.options()?;
     let fixtures: Vec<PathBuf> = if !a.fixtures.is_empty() {
         a.fixtures.clone()
     } else if let Some(env) = std::env::var_os(FIXTURES_ENV).filter(|v| !v.is_empty()) {
@@ -505,12 +481,6 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         );
     }
 
-    let opts = Options {
-        timeout: Duration::from_secs_f64(a.timeout),
-        group: a.group,
-        give_up: a.give_up_after,
-        fast_compile: a.fast_compile,
-    };
     let mut backend = match backend::open(&name, &opts) {
         Ok(b) => b,
         Err(e @ BackendError::Unknown(_)) => return Err(e.into()),
@@ -580,7 +550,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let mut printer = Printer::new(
         chosen.iter().map(|t| t.1.clone()).collect(),
         chosen.iter().map(|t| t.0.clone()).collect(),
-        a.verbose,
+        a.exchange.verbose,
     );
     printer.out(&[format!(
         "[==========] Running {} tests from {} test suites ({}).",

@@ -58,18 +58,8 @@ pub struct Args {
     /// compact line per case; results.csv lists every test either way).
     #[arg(long)]
     full_report: bool,
-    /// Seconds an external implementation may take for one group of cases.
-    #[arg(
-        long,
-        value_name = "SECS",
-        default_value_t = 10.0,
-        allow_negative_numbers = true
-    )]
-    timeout: f64,
-    /// Cases written to an implementation process before each flush (a GPU implementation draws
-    /// one batch per group; the timeout applies per group).
-    #[arg(long, value_name = "N", default_value_t = 64)]
-    group: usize,
+    #[command(flatten)]
+    exchange: Exchange,
     /// Backends run at once, each on its own thread (default: the number of CPUs).
     #[arg(long, short = 'j', value_name = "N")]
     jobs: Option<usize>,
@@ -83,18 +73,54 @@ pub struct Args {
     /// instead of exiting 96 at the end.
     #[arg(long)]
     skip_missing: bool,
+}
+
+/// How the runner talks to an implementation: the flags `run` and `gtest` share, with one meaning.
+#[derive(clap::Args)]
+pub struct Exchange {
+    /// Seconds an external implementation may take for one group of cases.
+    #[arg(
+        long,
+        value_name = "SECS",
+        default_value_t = 10.0,
+        allow_negative_numbers = true
+    )]
+    pub timeout: f64,
+    /// Cases written to an implementation process before each flush (a GPU implementation draws
+    /// one batch per group; the timeout applies per group).
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    pub group: usize,
     /// After this many cases in a row end in Timeout, the rest of that implementation's cases are
     /// Timeout without being sent (0: never give up).
     #[arg(long, value_name = "K", default_value_t = backend::GIVE_UP_AFTER)]
-    give_up_after: usize,
+    pub give_up_after: usize,
     /// Show implementations' stderr lines and restarts.
     #[arg(long, short = 'v')]
-    verbose: bool,
+    pub verbose: bool,
     /// Cold runs in about half the time: GL workers run with GALLIVM_PERF=nopt, so llvmpipe and
     /// lavapipe (zink) skip LLVM's optimisation passes when compiling shader variants. It changes
     /// the driver's code generation, so it is never the default; the run's meta records it.
     #[arg(long)]
-    fast_compile: bool,
+    pub fast_compile: bool,
+}
+
+impl Exchange {
+    /// The backend options these flags give, or why they are out of range.
+    pub fn options(&self) -> anyhow::Result<Options> {
+        // At most a year: Duration cannot hold 1e20 s, and no run waits that long on purpose.
+        if !(self.timeout > 0.0 && self.timeout <= 365.0 * 86400.0) {
+            bail!("--timeout must be a positive number of seconds, at most 31536000 (a year)");
+        }
+        if self.group == 0 {
+            bail!("--group must be at least 1");
+        }
+        Ok(Options {
+            timeout: Duration::from_secs_f64(self.timeout),
+            group: self.group,
+            give_up: self.give_up_after,
+            fast_compile: self.fast_compile,
+        })
+    }
 }
 
 /// `out/<backends>` with characters unfit for a file name replaced.
@@ -148,10 +174,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .map(regex::Regex::new)
         .transpose()
         .context("--cases")?;
-    // At most a year: Duration cannot hold 1e20 s, and no run waits that long on purpose.
-    if !(a.timeout > 0.0 && a.timeout <= 365.0 * 86400.0) {
-        bail!("--timeout must be a positive number of seconds, at most 31536000 (a year)");
-    }
+    let opts = a.exchange.options()?;
     let lists = lists(&a)?;
     let fixtures = if a.fixtures.is_empty() {
         vec![PathBuf::from(DEFAULT_FIXTURES)]
@@ -182,16 +205,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             bail!("backend `{n}` is named twice");
         }
     }
-    if a.group == 0 {
-        bail!("--group must be at least 1");
-    }
-    let opts = Options {
-        timeout: Duration::from_secs_f64(a.timeout),
-        group: a.group,
-        give_up: a.give_up_after,
-        fast_compile: a.fast_compile,
-    };
-    if a.fast_compile {
+    if a.exchange.fast_compile {
         eprintln!("shadowcheck: --fast-compile: GL workers run with GALLIVM_PERF=nopt (LLVM's optimisation passes off); the results are of that code generation");
     }
     let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(requested.len());
@@ -240,7 +254,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
                 let i = b.implementation()?;
                 let gl = backend::kinds::kind_of(b.name())
                     .is_some_and(|k| k.prefix == "egl" || k.prefix == "osmesa");
-                let i = if a.fast_compile && gl {
+                let i = if a.exchange.fast_compile && gl {
                     format!("{i} [--fast-compile: GALLIVM_PERF=nopt]")
                 } else {
                     i
@@ -295,9 +309,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     }
 
     let mut fanout = Fanout::default();
-    fanout
-        .reporters
-        .push(Box::new(TerminalReporter::new(a.timings, a.verbose)));
+    fanout.reporters.push(Box::new(TerminalReporter::new(
+        a.timings,
+        a.exchange.verbose,
+    )));
     fanout.reporters.push(Box::new(jsonl));
     fanout.reporters.extend(report::file_reporters(
         &out_dir,
