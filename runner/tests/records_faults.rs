@@ -357,3 +357,26 @@ fn repro_all_failures_with_nothing_it_can_reproduce_says_so_and_links_nothing_mi
         );
     }
 }
+
+/// `report` and `consensus` read a run that did not finish (killed by the mock worker), and say
+/// so: a partial run's answers are worth a look, its missing tests are not in what they show.
+#[test]
+fn report_and_consensus_say_when_a_run_did_not_finish() {
+    let (dir, fx) = cases_dir("partial-read", 200);
+    let out = dir.join("killed");
+    killed_run(SCRIPT, &fx, &out, &[], "n=0150");
+    let r = shadowcheck(&["consensus", &s(&out)]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("the run did not finish") && r.stderr.contains("no closing record"),
+        "{}",
+        r.stderr
+    );
+    let html = dir.join("html");
+    let r = shadowcheck(&["report", &s(&out), "-o", &s(&html), "--fixtures", &fx]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(r.stderr.contains("a partial run"), "{}", r.stderr);
+    let page = std::fs::read_to_string(html.join("index.html")).unwrap();
+    assert!(page.contains("<b>Partial run</b>: input 1: "));
+    let _ = std::fs::remove_dir_all(&dir);
+}

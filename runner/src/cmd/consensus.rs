@@ -38,7 +38,15 @@ pub struct Args {
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let mut runs = vec![];
     for p in &a.runs {
-        runs.push(consensus::read_run(p).with_context(|| format!("reading run {}", p.display()))?);
+        let run = consensus::read_run(p).with_context(|| format!("reading run {}", p.display()))?;
+        // A partial run still has answers worth a look; its missing tests are not on the queue.
+        if let Some(why) = run.results.unfinished() {
+            eprintln!(
+                "shadowcheck consensus: warning: {}: the run did not finish, so its missing tests are not on the queue: {why}",
+                run.path
+            );
+        }
+        runs.push(run);
     }
     let q = consensus::queue(
         &runs,

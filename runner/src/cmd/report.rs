@@ -62,6 +62,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         anyhow::bail!("no inputs left once the output directory is left out");
     }
     let input = load::read_inputs(&inputs)?;
+    for why in &input.unfinished {
+        eprintln!(
+            "shadowcheck report: warning: a partial run: {why}; the page shows the tests it holds"
+        );
+    }
     let fixtures: Vec<PathBuf> = if !a.fixtures.is_empty() {
         a.fixtures.clone()
     } else {

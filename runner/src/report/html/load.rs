@@ -42,6 +42,9 @@ pub struct ReportInput {
     pub load_errors: Vec<LoadError>,
     /// Fixture paths named by the runs' metadata (as the runs wrote them).
     pub fixtures: Vec<String>,
+    /// Inputs that are not the record of a finished run, each with what it lacks
+    /// ([`records::Results::unfinished`]): the page shows what they hold and says so.
+    pub unfinished: Vec<String>,
     /// Per backend, what its implementation called itself (the runs' metadata).
     pub implementations: BTreeMap<String, String>,
     /// Records that a later input replaced with a different result.
@@ -72,6 +75,8 @@ pub fn resolve(path: &Path) -> Result<PathBuf, InputError> {
 
 /// One input file's records.
 struct FileRecords {
+    /// Why the file is not a finished run's record (JSON lines only).
+    unfinished: Option<String>,
     /// Backends named by its metadata.
     backends: Vec<String>,
     fixtures: Vec<String>,
@@ -93,11 +98,13 @@ fn read_file(path: &Path) -> Result<FileRecords, InputError> {
         || serde_json::from_str::<serde_json::Value>(first).is_ok_and(|v| v.get("kind").is_some());
     if is_jsonl {
         let read = records::Results::parse(&file, &text)?;
+        let unfinished = read.unfinished();
         let (backends, fixtures, implementations) = read
             .meta
             .map(|m| (m.backends, m.fixtures, m.implementations))
             .unwrap_or_default();
         return Ok(FileRecords {
+            unfinished,
             backends,
             fixtures,
             implementations,
@@ -124,6 +131,7 @@ fn read_file(path: &Path) -> Result<FileRecords, InputError> {
             msg: e.to_string(),
         })?;
     Ok(FileRecords {
+        unfinished: None,
         backends: doc.summary.backends,
         fixtures: vec![],
         implementations: BTreeMap::new(),
@@ -139,12 +147,18 @@ pub fn read_inputs(paths: &[PathBuf]) -> Result<ReportInput, InputError> {
     for p in paths {
         let file = resolve(p)?;
         let FileRecords {
+            unfinished,
             backends,
             fixtures,
             implementations,
             results,
             load_errors,
         } = read_file(&file)?;
+        if let Some(why) = unfinished {
+            input
+                .unfinished
+                .push(format!("input {}: {why}", input.sources.len() + 1));
+        }
         input.sources.push(file.display().to_string());
         input.implementations.extend(implementations);
         for b in &backends {
@@ -193,9 +207,38 @@ mod tests {
             format!("{{\"kind\":\"result\",{}\n", &other[1..]),
         )
         .unwrap();
-        let input = read_inputs(&[dir.join("run"), dir.join("other.jsonl")]).unwrap();
-        assert_eq!(input.backends, vec!["b".to_string(), "b2".to_string()]);
-        assert_eq!(input.results.len(), 2);
+        let finished = other.replace("\"b2\"", "\"b3\"");
+        std::fs::write(
+            dir.join("finished.jsonl"),
+            format!(
+                "{{\"kind\":\"result\",{}\n{{\"kind\":\"end\",\"tests\":{{\"b3\":1}}}}\n",
+                &finished[1..]
+            ),
+        )
+        .unwrap();
+        let input = read_inputs(&[
+            dir.join("run"),
+            dir.join("other.jsonl"),
+            dir.join("finished.jsonl"),
+        ])
+        .unwrap();
+        assert_eq!(input.backends, vec!["b", "b2", "b3"]);
+        assert_eq!(input.results.len(), 3);
+        // The JSON lines without a closing record are a partial run, said on the page (numbered,
+        // not by path); report.json and the finished run are not.
+        assert_eq!(input.unfinished.len(), 1, "{:?}", input.unfinished);
+        assert!(
+            input.unfinished[0].starts_with("input 2: ")
+                && input.unfinished[0].contains("no closing record"),
+            "{:?}",
+            input.unfinished
+        );
+        let page = super::super::render(
+            &input,
+            &super::super::Geometry::default(),
+            &super::super::PageOptions::default(),
+        );
+        assert!(page.contains("<b>Partial run</b>: input 2: "));
         assert!(matches!(
             read_inputs(&[dir.join("missing")]),
             Err(InputError::Io { .. })

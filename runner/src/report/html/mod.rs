@@ -317,6 +317,13 @@ pub fn render(input: &ReportInput, geo: &Geometry, opts: &PageOptions) -> String
             )
         }
     );
+    for why in &input.unfinished {
+        let _ = writeln!(
+            o,
+            "<p class=\"note\"><b>Partial run</b>: {}. The page shows the tests it holds.</p>",
+            esc(why)
+        );
+    }
     o.push_str("<nav><a href=\"#s-summary\">Summary</a><a href=\"#s-matrix\">Matrix</a><a href=\"#s-pictures\">Pictures</a><a href=\"#s-details\">Details</a></nav>\n");
 
     o.push_str("<h2 id=\"s-summary\">Summary per backend</h2>\n");
