@@ -5,6 +5,20 @@
 //! The library never prints; reporters own every byte of output. What a run leaves on disk (the
 //! result records, statuses, exit codes) and the one reader of results.jsonl are in [`records`].
 
+// A stderr whose reader has gone (`shadowcheck run 2>&1 | head -1`) must not panic: write to it
+// with `errln!`.
+#![deny(clippy::print_stderr)]
+
+/// `eprintln!` that does not panic: a stderr that cannot be written (its reader gone) loses the
+/// line, and nothing else happens.
+#[macro_export]
+macro_rules! errln {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($arg)*);
+    }};
+}
+
 pub mod backend;
 pub mod baseline;
 pub mod bench;

@@ -3,6 +3,8 @@
 
 // A closed stdout (`shadowcheck repro ... | head -1`) must not panic: print with `cmd::outln!`.
 #![deny(clippy::print_stdout)]
+// Nor a stderr whose reader has gone (`... 2>&1 | head -1`): write to it with `errln!`.
+#![deny(clippy::print_stderr)]
 
 use clap::{Parser, Subcommand};
 
@@ -117,7 +119,7 @@ fn main() -> std::process::ExitCode {
     match result {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("shadowcheck: error: {}", message(&e));
+            shadowcheck_runner::errln!("shadowcheck: error: {}", message(&e));
             std::process::ExitCode::from(shadowcheck_runner::records::exit::SETUP)
         }
     }

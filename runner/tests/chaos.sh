@@ -86,6 +86,8 @@ line "explain ... | head" "$(panicked "$T/a2.err")" $c "$(ok_if "[ $c != 101 ] &
 
 bash -c "'$SC' run -b 'mock:fail=lequal' --fixtures '$FX' -o '$T/a3' 2>'$T/a3.err' | head -1 >/dev/null; exit \${PIPESTATUS[0]}"; c=$?
 line "run ... | head, with regressions" "exit $c (100 documented)" $c "$(ok_if "[ $c = 100 ]")"
+bash -c "'$SC' run -b 'mock:fail=lequal' --fixtures '$FX' -o '$T/a3b' -v 2>&1 | head -1 >/dev/null; exit \${PIPESTATUS[0]}"; c=$?
+line "run ... 2>&1 | head (stderr's reader gone)" "exit $c (100 documented; a panic is 101)" $c "$(ok_if "[ $c = 100 ]")"
 
 mkdir -p "$T/full"
 if mount -t tmpfs -o size=200k tmpfs "$T/full" 2>/dev/null; then

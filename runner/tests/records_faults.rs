@@ -241,6 +241,37 @@ fn a_closed_stdout_is_not_a_panic_for_any_printing_subcommand() {
         assert_eq!(r.code, code, "{args:?}: {}", r.stderr);
     }
     assert!(html.join("index.html").is_file());
+    // `... 2>&1 | head -1` after head exited: stderr's reader is gone too. A panic would exit
+    // 101; each command ends with its own code, the lines it could not write lost.
+    for (args, code) in [
+        (
+            vec![
+                "run",
+                "-b",
+                SCRIPT,
+                "--fixtures",
+                &fx,
+                "--out",
+                &s(&dir.join("c")),
+                "-v",
+            ],
+            100,
+        ),
+        (vec!["merge", "-o", &s(&dir.join("m2")), &s(&a)], 100),
+        (vec!["report", &s(&a), "-o", &s(&dir.join("html2"))], 0),
+        (vec!["run", "-b", "no-such-backend"], 96),
+    ] {
+        let (reader, writer) = std::io::pipe().unwrap();
+        drop(reader);
+        let err = writer.try_clone().unwrap();
+        let o = bin()
+            .args(&args)
+            .stdout(writer)
+            .stderr(err)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(code), "{args:?}");
+    }
 }
 
 #[test]

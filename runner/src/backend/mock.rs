@@ -304,7 +304,7 @@ fn misbehave(
     }
     match action {
         Action::Crash => {
-            eprintln!("mock: crashing on {id}");
+            crate::errln!("mock: crashing on {id}");
             return Some(3);
         }
         Action::Spew => {
@@ -377,7 +377,7 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
         let req = match Request::parse(&line) {
             Ok(r) => r,
             Err(e) => {
-                eprintln!("mock: cannot read `{line}`: {e}");
+                crate::errln!("mock: cannot read `{line}`: {e}");
                 return Ok(2);
             }
         };
@@ -459,7 +459,7 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
                     None => read + 1,
                 };
                 if script.crash_every > 0 && read.is_multiple_of(script.crash_every) {
-                    eprintln!("mock: crashing on case number {read} ({})", case.id);
+                    crate::errln!("mock: crashing on case number {read} ({})", case.id);
                     return Ok(3);
                 }
                 let action = action_of(&case.id)?;

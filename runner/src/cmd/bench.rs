@@ -65,7 +65,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         fixtures: a.fixtures.clone(),
         exe,
     };
-    let mut progress = |m: &str| eprintln!("bench: {m}");
+    let mut progress = |m: &str| shadowcheck_runner::errln!("bench: {m}");
     let report = match &a.from_json {
         Some(p) => {
             let text =
@@ -83,7 +83,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             markdown::document(&report, old.as_deref()).as_bytes(),
         )
         .with_context(|| format!("writing {}", path.display()))?;
-        eprintln!("bench: wrote {}", path.display());
+        shadowcheck_runner::errln!("bench: wrote {}", path.display());
     }
     if a.json {
         super::print_out(&format!("{}\n", serde_json::to_string_pretty(&report)?))?;

@@ -41,7 +41,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         let run = consensus::read_run(p).with_context(|| format!("reading run {}", p.display()))?;
         // A partial run still has answers worth a look; its missing tests are not on the queue.
         if let Some(why) = run.results.unfinished() {
-            eprintln!(
+            shadowcheck_runner::errln!(
                 "shadowcheck consensus: warning: {}: the run did not finish, so its missing tests are not on the queue: {why}",
                 run.path
             );

@@ -167,9 +167,9 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     }
     if args.check && !differ.is_empty() {
         for d in &differ {
-            eprintln!("differs: {}", out.join(d).display());
+            shadowcheck_runner::errln!("differs: {}", out.join(d).display());
         }
-        eprintln!(
+        shadowcheck_runner::errln!(
             "{} file(s) differ; regenerate with `cargo run --release -- gen --grid {} -o {}`",
             differ.len(),
             args.grid,

@@ -425,7 +425,7 @@ impl Sink for Printer {
             Event::CaseFinished { result, .. } => self.record(result),
             Event::BatchFinished { .. } => self.batch_end(),
             Event::Diagnostic { backend, message } if self.verbose => {
-                eprintln!("shadowcheck: {backend}: {message}");
+                shadowcheck_runner::errln!("shadowcheck: {backend}: {message}");
             }
             _ => {}
         }
@@ -466,7 +466,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             .case
             .as_deref()
             .map_or(String::new(), |c| format!(" ({c})"));
-        eprintln!("shadowcheck: error: {}{case}: {}", e.file, e.message);
+        shadowcheck_runner::errln!("shadowcheck: error: {}{case}: {}", e.file, e.message);
     }
     if !loaded_any && set.cases.is_empty() && set.states.is_empty() {
         bail!("no fixture could be loaded from {}", shown.join(", "));
@@ -527,7 +527,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
                 Some(t) => format!("test `{t}`"),
                 None => "a name this command never lists".into(),
             };
-            eprintln!(
+            shadowcheck_runner::errln!(
                 "shadowcheck: warning: --gtest_filter names `{p}` ({what}), which is no test of `{name}` with these fixtures"
             );
         }
@@ -579,7 +579,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     drop(backend);
     printer.finish(&results);
     for r in &printer.revised {
-        eprintln!("shadowcheck: warning: {r}");
+        shadowcheck_runner::errln!("shadowcheck: warning: {r}");
     }
     if printer.stopped {
         return Ok(ExitCode::from(1));
@@ -587,7 +587,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let missing = chosen.len() - printer.next;
     if missing > 0 {
         // Not expected: every test selected gets a result. The runner reruns the rest.
-        eprintln!("shadowcheck: error: {missing} selected test(s) got no result");
+        shadowcheck_runner::errln!("shadowcheck: error: {missing} selected test(s) got no result");
         return Ok(ExitCode::from(1));
     }
     let mut footer = vec![

@@ -148,11 +148,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let summary = run::finish(backends, &mut results, &errors, not_applicable, &mut fanout);
     let mut ending = Ending::new(summary.exit_code);
     if let Some(e) = jsonl_error {
-        eprintln!("shadowcheck: error: {e}");
+        shadowcheck_runner::errln!("shadowcheck: error: {e}");
         ending.add(exit::SETUP, e);
     }
     if let Some((_, e)) = &fanout.error {
-        eprintln!("shadowcheck: error: {e} (in {})", a.out.display());
+        shadowcheck_runner::errln!("shadowcheck: error: {e} (in {})", a.out.display());
         ending.add(exit::SETUP, e.to_string());
     }
     terminal::print_final_line(&summary, &ending);

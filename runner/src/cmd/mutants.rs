@@ -114,7 +114,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
     };
     if !a.quiet {
-        eprintln!(
+        shadowcheck_runner::errln!(
             "mutants: {} cases from {source} loaded in {:.2} s; sampling the correct unit",
             cases.len(),
             t0.elapsed().as_secs_f64()
@@ -135,7 +135,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             } else {
                 m.warn_cases
             };
-            eprintln!(
+            shadowcheck_runner::errln!(
                 "[{done:>2}/{total}] {:<40} {:<9} {n:>6} cases  {:.2} s",
                 m.key,
                 m.status.as_str(),
@@ -156,7 +156,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         )
         .with_context(|| format!("writing {}", path.display()))?;
         if !a.quiet {
-            eprintln!("mutants: wrote {}", path.display());
+            shadowcheck_runner::errln!("mutants: wrote {}", path.display());
         }
     }
     if let Some(path) = &a.update_readme {
@@ -179,11 +179,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         shadowcheck_runner::report::atomic::write(path, new.as_bytes())
             .with_context(|| format!("writing {}", path.display()))?;
         if !a.quiet {
-            eprintln!("mutants: updated the kill matrix in {}", path.display());
+            shadowcheck_runner::errln!("mutants: updated the kill matrix in {}", path.display());
         }
     }
     Ok(if !report.unmutated.ok() {
-        eprintln!(
+        shadowcheck_runner::errln!(
             "mutants: the correct unit fails {} test(s); fix the unit or the fixtures first",
             report.unmutated.fail
         );

@@ -49,7 +49,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .filter(|p| {
             let same = out.is_some() && std::fs::canonicalize(p).ok() == out;
             if same {
-                eprintln!(
+                shadowcheck_runner::errln!(
                     "shadowcheck report: skipping input {}: it is the output directory",
                     p.display()
                 );
@@ -63,7 +63,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     }
     let input = load::read_inputs(&inputs)?;
     for why in &input.unfinished {
-        eprintln!(
+        shadowcheck_runner::errln!(
             "shadowcheck report: warning: a partial run: {why}; the page shows the tests it holds"
         );
     }

@@ -136,7 +136,9 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         super::outln!("{what}")?;
         Ok(ExitCode::SUCCESS)
     } else {
-        eprintln!("shadowcheck repro: {what}; --allow-pass keeps a passing reproducer with exit 0");
+        shadowcheck_runner::errln!(
+            "shadowcheck repro: {what}; --allow-pass keeps a passing reproducer with exit 0"
+        );
         Ok(ExitCode::from(1))
     }
 }
@@ -160,7 +162,7 @@ fn all_failures(
         .filter(|r| classes::is_reproducible_fail(r))
         .count();
     if cs.is_empty() {
-        eprintln!(
+        shadowcheck_runner::errln!(
             "shadowcheck repro: no Fail to reproduce in {} ({} results; only Fails count, not Crash, Timeout, Flake or KnownFlake): nothing written",
             file.display(),
             res.results.len()
@@ -238,10 +240,10 @@ fn all_failures(
     std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
     std::fs::write(out.join("index.md"), index + &details).context("writing index.md")?;
     for n in &not_written {
-        eprintln!("shadowcheck repro: no reproducer for class {n}");
+        shadowcheck_runner::errln!("shadowcheck repro: no reproducer for class {n}");
     }
     if written == 0 {
-        eprintln!(
+        shadowcheck_runner::errln!(
             "shadowcheck repro: no reproducer could be written for any of the {} classes of {} (index: {})",
             cs.len(),
             file.display(),

@@ -198,7 +198,9 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
     };
     for (n, how) in &absent {
-        eprintln!("shadowcheck: note: optional backend `{n}` is not installed here: {how}");
+        shadowcheck_runner::errln!(
+            "shadowcheck: note: optional backend `{n}` is not installed here: {how}"
+        );
     }
     for (i, n) in requested.iter().enumerate() {
         if requested[..i].contains(n) {
@@ -206,7 +208,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
     }
     if a.exchange.fast_compile {
-        eprintln!("shadowcheck: --fast-compile: GL workers run with GALLIVM_PERF=nopt (LLVM's optimisation passes off); the results are of that code generation");
+        shadowcheck_runner::errln!("shadowcheck: --fast-compile: GL workers run with GALLIVM_PERF=nopt (LLVM's optimisation passes off); the results are of that code generation");
     }
     let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(requested.len());
     for n in &requested {
@@ -222,16 +224,18 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         "error"
     };
     for (n, why) in &missing {
-        eprintln!("shadowcheck: {what}: backend `{n}` cannot start here: {why}");
+        shadowcheck_runner::errln!("shadowcheck: {what}: backend `{n}` cannot start here: {why}");
     }
     if missing
         .iter()
         .any(|(n, _)| n.starts_with("egl:") || n.starts_with("osmesa:"))
     {
-        eprintln!("shadowcheck: the GL backends need Mesa's drivers: {MESA_INSTALL}");
+        shadowcheck_runner::errln!(
+            "shadowcheck: the GL backends need Mesa's drivers: {MESA_INSTALL}"
+        );
     }
     if !missing.is_empty() && !a.skip_missing {
-        eprintln!("shadowcheck: the run goes on without {} backend(s) and will exit {}; pass --skip-missing to run without them", missing.len(), exit::SETUP);
+        shadowcheck_runner::errln!("shadowcheck: the run goes on without {} backend(s) and will exit {}; pass --skip-missing to run without them", missing.len(), exit::SETUP);
     }
     if backends.is_empty() {
         bail!("no backend could start");
@@ -270,7 +274,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     set.select(pattern.as_ref(), a.shard);
     if !loaded_any && set.cases.is_empty() {
         for e in &set.errors {
-            eprintln!("shadowcheck: error: {}: {}", e.file, e.message);
+            shadowcheck_runner::errln!("shadowcheck: error: {}: {}", e.file, e.message);
         }
         bail!(
             "no fixture could be loaded from {}",
@@ -352,7 +356,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     // Baseline entries that excuse nothing: said on stderr (and in report.md), not ignored.
     if let Some(b) = &baseline {
         for n in b.notes(&results, 10) {
-            eprintln!("shadowcheck: warning: {n}");
+            shadowcheck_runner::errln!("shadowcheck: warning: {n}");
         }
     }
     // The exit code, decided once, printed as it is returned.
@@ -365,11 +369,11 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         );
     }
     if let Some((_, e)) = &fanout.error {
-        eprintln!("shadowcheck: error: {e} (in {})", out_dir.display());
+        shadowcheck_runner::errln!("shadowcheck: error: {e} (in {})", out_dir.display());
         ending.add(exit::SETUP, e.to_string());
     }
     if interrupt::requested() {
-        eprintln!(
+        shadowcheck_runner::errln!(
             "shadowcheck: interrupted: {} of {total} tests finished; they are kept in {} and the reports in {} cover them. Resume with:\n  {}",
             results.len(),
             out_dir.join(RESULTS_FILE).display(),
@@ -383,7 +387,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             .iter()
             .map(|(n, why)| format!("`{n}` ({why})"))
             .collect();
-        eprintln!(
+        shadowcheck_runner::errln!(
             "shadowcheck: not applicable here, left out of this default run: {}: these contexts start but expose none of the specs they implement, so every case would be a Skip",
             list.join(", ")
         );
@@ -398,10 +402,10 @@ fn install_interrupt_handler() {
     // Only fails when a handler is already installed (a second run in one process): keep it.
     let _ = ctrlc::set_handler(|| {
         if interrupt::request() {
-            eprintln!("shadowcheck: interrupted again; stopping now (results.jsonl keeps every finished test; resume with --resume)");
+            shadowcheck_runner::errln!("shadowcheck: interrupted again; stopping now (results.jsonl keeps every finished test; resume with --resume)");
             std::process::exit(i32::from(exit::INTERRUPTED));
         }
-        eprintln!("shadowcheck: interrupted; finishing the batch in flight and writing the reports of the finished tests (Ctrl-C again stops at once)");
+        shadowcheck_runner::errln!("shadowcheck: interrupted; finishing the batch in flight and writing the reports of the finished tests (Ctrl-C again stops at once)");
     });
 }
 

@@ -82,7 +82,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         let new = headline::regenerate(readme, &reports)?;
         shadowcheck_runner::report::atomic::write(readme, new.as_bytes())
             .with_context(|| format!("writing {}", readme.display()))?;
-        eprintln!(
+        shadowcheck_runner::errln!(
             "summarize: updated the result tables in {} from {}",
             readme.display(),
             reports.join("headline.json").display()
@@ -181,7 +181,7 @@ fn summarize(
     let backend = label_of(&name);
     let dir_name = run.file_name().map(|n| n.to_string_lossy().into_owned());
     if dir_name.as_deref() != Some(&format!("r-{backend}")) {
-        eprintln!(
+        shadowcheck_runner::errln!(
             "shadowcheck summarize: note: {} holds the run of `{name}` (its meta line): summarized as {backend}",
             run.display()
         );

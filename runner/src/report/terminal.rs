@@ -38,7 +38,7 @@ impl TerminalReporter {
     fn err_line(&self, msg: &str) {
         match &self.bar {
             Some(b) => b.println(msg),
-            None => eprintln!("{msg}"),
+            None => crate::errln!("{msg}"),
         }
     }
 }
@@ -63,7 +63,7 @@ impl TerminalReporter {
                 tests,
                 out_dir,
             } => {
-                eprintln!(
+                crate::errln!(
                     "shadowcheck: {tests} tests on {} -> {}",
                     backends.join(", "),
                     out_dir.display()
