@@ -3,8 +3,8 @@
 //! driver, so never a GL error counted as Fail).
 use super::declared_capabilities;
 use crate::names::{ContextApi, LookupForm};
-use crate::paths::GlInfo;
 use shadowcheck_model::*;
+use shadowcheck_plan::GlInfo;
 use shadowcheck_protocol::Support;
 use std::collections::HashSet;
 
@@ -133,15 +133,16 @@ fn gather_needs_glsl_400_or_glsl_es_310_and_offsets_glsl_es_320() {
     let i31 = info(ContextApi::Es3, (3, 1), 310, &[]);
     let es31 = declared_capabilities(&i31);
     assert!(matches!(es31.support(&g), Support::Run { .. }));
-    assert!(crate::paths::plan_for(&i31, ApiPath::Es300, &g, &g.lookup).is_ok());
+    assert!(shadowcheck_plan::paths::plan_for(&i31, ApiPath::Es300, &g, &g.lookup).is_ok());
     let mut four = g.clone();
     four.lookup.gather = Some(Gather {
         offsets: Some([[0, 1], [1, 1], [1, 0], [0, 0]]),
     });
-    let why = crate::paths::plan_for(&i31, ApiPath::Es300, &four, &four.lookup).unwrap_err();
+    let why =
+        shadowcheck_plan::paths::plan_for(&i31, ApiPath::Es300, &four, &four.lookup).unwrap_err();
     assert!(why.contains("GLSL ES 3.20"), "{why}");
     let i32 = info(ContextApi::Es3, (3, 2), 320, &[]);
-    assert!(crate::paths::plan_for(&i32, ApiPath::Es300, &four, &four.lookup).is_ok());
+    assert!(shadowcheck_plan::paths::plan_for(&i32, ApiPath::Es300, &four, &four.lookup).is_ok());
     let es32 = declared_capabilities(&i32);
     assert!(matches!(es32.support(&g), Support::Run { .. }));
     g.spec = Spec::Gl46;

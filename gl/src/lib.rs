@@ -12,20 +12,14 @@
 //! Every library (libEGL, libOSMesa, the GL entry points) is loaded at run time, so a machine without
 //! Mesa builds fine and reports the backend unavailable with the apt-get command that fixes it.
 
-mod batch;
 pub mod context;
-pub mod draw;
 pub mod egl;
-mod framebuffer;
 pub mod legacy;
 pub mod libdir;
 pub mod names;
-pub mod paths;
 mod programs;
-pub mod serve;
-pub mod shaders;
+pub mod renderer;
 pub mod state;
-pub mod sweep;
 #[cfg(test)]
 mod test_case;
 pub mod texture;

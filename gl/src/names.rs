@@ -13,7 +13,7 @@ use super::libdir::{
     lib_dir_env, missing_lib, swiftshader_dir, SWIFTSHADER_FETCH, SWIFTSHADER_LIBS,
 };
 use super::GlError;
-use shadowcheck_model::ApiPath;
+pub use shadowcheck_plan::{ContextApi, LookupForm};
 
 /// The layer that creates the context.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -45,46 +45,6 @@ pub enum Driver {
     /// variables: a vendor's EGL driver. Never probed by the default run (on a Mesa machine it is
     /// one of Mesa's drivers again); named explicitly.
     Native,
-}
-
-/// The kind of context.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ContextApi {
-    /// Desktop GL core profile.
-    Core,
-    /// Desktop GL compatibility profile.
-    Compat,
-    /// OpenGL ES 3.x.
-    Es3,
-    /// OpenGL ES 2.0 (Mesa hands out an ES 3.x context; only ES 2.0 paths are run on it).
-    Es2,
-}
-
-/// Which GLSL lookup function realizes λ when the target has several (GLSL >= 1.30 / ES 3.00
-/// paths only; the legacy paths have one form each).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub enum LookupForm {
-    /// textureLod, else textureGrad, else texture() with derivatives (the default).
-    #[default]
-    Auto,
-    /// textureLod first.
-    Lod,
-    /// textureGrad first (λ from explicit gradients).
-    Grad,
-    /// texture() first (λ from the derivatives of the coordinates across the pixel quad).
-    Implicit,
-}
-
-impl LookupForm {
-    pub const NAMED: [LookupForm; 3] = [LookupForm::Lod, LookupForm::Grad, LookupForm::Implicit];
-    pub fn key(self) -> &'static str {
-        match self {
-            LookupForm::Auto => "auto",
-            LookupForm::Lod => "lod",
-            LookupForm::Grad => "grad",
-            LookupForm::Implicit => "implicit",
-        }
-    }
 }
 
 /// A parsed backend name.
@@ -160,41 +120,6 @@ pub const VK_SWIFTSHADER_ICD_ENV: &str = "SHADOWCHECK_VK_SWIFTSHADER_ICD";
 pub fn vk_swiftshader_icd() -> std::path::PathBuf {
     std::env::var_os(VK_SWIFTSHADER_ICD_ENV)
         .map_or_else(|| VK_SWIFTSHADER_ICD.into(), std::path::PathBuf::from)
-}
-
-impl ContextApi {
-    pub const ALL: [ContextApi; 4] = [
-        ContextApi::Core,
-        ContextApi::Compat,
-        ContextApi::Es3,
-        ContextApi::Es2,
-    ];
-    pub fn key(self) -> &'static str {
-        match self {
-            ContextApi::Core => "core",
-            ContextApi::Compat => "compat",
-            ContextApi::Es3 => "es3",
-            ContextApi::Es2 => "es2",
-        }
-    }
-    /// OpenGL ES (rather than desktop GL).
-    pub fn is_es(self) -> bool {
-        matches!(self, ContextApi::Es3 | ContextApi::Es2)
-    }
-    /// The API paths a context of this kind can run (before asking the driver what it exposes).
-    pub fn paths(self) -> &'static [ApiPath] {
-        match self {
-            ContextApi::Core => &[ApiPath::GlslCore],
-            ContextApi::Compat => &[
-                ApiPath::FixedFunction,
-                ApiPath::Glsl120,
-                ApiPath::Glsl130,
-                ApiPath::ArbFp,
-            ],
-            ContextApi::Es3 => &[ApiPath::Es300],
-            ContextApi::Es2 => &[ApiPath::Es100Ext],
-        }
-    }
 }
 
 impl BackendName {

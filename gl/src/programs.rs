@@ -4,10 +4,9 @@
 //! handed the GL context, what the context offers and the result framebuffer's size.
 
 use super::legacy::Legacy;
-use super::paths::{GlInfo, ShaderKey};
-use super::shaders;
 use glow::HasContext;
 use shadowcheck_model::ApiPath;
+use shadowcheck_plan::{shaders, GlInfo, ShaderKey};
 use std::collections::HashMap;
 
 /// A linked GLSL program and its uniform locations.

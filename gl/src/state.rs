@@ -4,49 +4,6 @@
 
 use glow::HasContext;
 use shadowcheck_model::{GlError, StateCall, StateCase, StateObserved, StateType, StateValue};
-use shadowcheck_protocol::{Capabilities, PathSkip, Reply, StateResult, Support};
-
-/// The answer to a state case on a context with `caps`: Skip (with the reason) when the case does
-/// not run here or its spec is not exposed (`unexposed`), else what `observe` saw, for each API path
-/// that runs here.
-pub fn answer(
-    caps: &Capabilities,
-    unexposed: Option<String>,
-    case: &StateCase,
-    observe: impl FnOnce(&StateCase) -> StateObserved,
-) -> Reply {
-    let case_id = case.id.clone();
-    let (apis, others) = match caps.support_state(case) {
-        Support::Skip(reason) | Support::NotApplicable(reason) => {
-            return Reply::Skip { case_id, reason }
-        }
-        Support::Run { apis, others } => (apis, others),
-    };
-    if let Some(reason) = unexposed {
-        return Reply::Skip { case_id, reason };
-    }
-    let observed = observe(case);
-    let skipped = case
-        .api
-        .iter()
-        .filter(|a| !apis.contains(a))
-        .map(|a| PathSkip {
-            api: a.key().to_string(),
-            reason: others.clone().unwrap_or_default(),
-        })
-        .collect();
-    Reply::StateObservation {
-        case_id,
-        results: apis
-            .iter()
-            .map(|a| StateResult {
-                api: a.key().to_string(),
-                observed: observed.clone(),
-            })
-            .collect(),
-        skipped,
-    }
-}
 
 /// The first pending GL error, then drains the rest (so the next call starts clean).
 unsafe fn take_error(gl: &glow::Context) -> (Option<GlError>, Option<u32>) {

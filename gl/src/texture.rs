@@ -1,161 +1,13 @@
-//! Texture creation with exact texel control, sampler state, and read-back of what was stored.
-//!
-//! Unorm formats are uploaded as integers at (or above) the format's bit depth so the stored value
-//! is the case's integer whatever rounding the driver does for floats (DESIGN.md: FLOAT uploads to
-//! DEPTH_COMPONENT24 truncate on Mesa). Desktop GL reads level 0 back with glGetTexImage so the
-//! verdict can use what was really stored.
+//! Textures on the GL context: created with the bytes and TexParameter calls of the plan
+//! (`shadowcheck_plan::texels`, `shadowcheck_plan::unit`), and level 0 read back (desktop GL, with
+//! glGetTexImage) so the verdict can use what was really stored.
 
-use super::paths::GlInfo;
 use super::GlError;
 use glow::HasContext;
-use shadowcheck_model::{Case, Format, Level, Spec, Target, Texels};
-
-const GL_DEPTH_TEXTURE_MODE: u32 = 0x884B;
-const GL_DEPTH_STENCIL_TEXTURE_MODE: u32 = 0x90EA;
-const GL_TEXTURE_COMPARE_FAIL_VALUE_ARB: u32 = 0x80BF;
-
-/// The transfer of a case's texture: the legacy specs (SGIX_shadow, ARB_shadow, EXT_shadow_funcs)
-/// know the colour texture as LUMINANCE8 (GL 2.1 Table 3.20), GL 3.0+ and ES as R8.
-pub fn transfer_for(case: &Case) -> (i32, u32, u32, usize) {
-    let legacy = matches!(
-        case.spec,
-        Spec::Sgix | Spec::SgixAmbient | Spec::Arb | Spec::ArbAmbient | Spec::ExtFuncs
-    );
-    if case.texture.format == Format::R8 && legacy {
-        const LUMINANCE8: i32 = 0x8040;
-        const LUMINANCE: u32 = 0x1909;
-        return (LUMINANCE8, LUMINANCE, glow::UNSIGNED_BYTE, 1);
-    }
-    transfer(case.texture.format)
-}
-
-/// Pixel transfer format/type for a texture format: (internal format, format, type, bytes/texel).
-pub fn transfer(format: Format) -> (i32, u32, u32, usize) {
-    match format {
-        Format::D16 => (
-            glow::DEPTH_COMPONENT16 as i32,
-            glow::DEPTH_COMPONENT,
-            glow::UNSIGNED_SHORT,
-            2,
-        ),
-        Format::DepthUnsized => (
-            glow::DEPTH_COMPONENT as i32,
-            glow::DEPTH_COMPONENT,
-            glow::UNSIGNED_SHORT,
-            2,
-        ),
-        Format::D24 => (
-            glow::DEPTH_COMPONENT24 as i32,
-            glow::DEPTH_COMPONENT,
-            glow::UNSIGNED_INT,
-            4,
-        ),
-        Format::D32 => (
-            glow::DEPTH_COMPONENT32 as i32,
-            glow::DEPTH_COMPONENT,
-            glow::UNSIGNED_INT,
-            4,
-        ),
-        Format::D32f => (
-            glow::DEPTH_COMPONENT32F as i32,
-            glow::DEPTH_COMPONENT,
-            glow::FLOAT,
-            4,
-        ),
-        Format::D24S8 => (
-            glow::DEPTH24_STENCIL8 as i32,
-            glow::DEPTH_STENCIL,
-            glow::UNSIGNED_INT_24_8,
-            4,
-        ),
-        Format::D32fS8 => (
-            glow::DEPTH32F_STENCIL8 as i32,
-            glow::DEPTH_STENCIL,
-            glow::FLOAT_32_UNSIGNED_INT_24_8_REV,
-            8,
-        ),
-        Format::R8 => (glow::R8 as i32, glow::RED, glow::UNSIGNED_BYTE, 1),
-    }
-}
-
-/// A 24-bit unorm integer as a 32-bit unorm integer that converts to it under every conversion a
-/// driver may use (GL 4.6 §2.3.5 allows either neighbour): the 32-bit value is c + 1/4 steps of
-/// 2^24-1 (c * (2^32-1)/(2^24-1) + (2^32-1)/(2^24-1)/4, rounded), so rounding and truncation both give c
-/// (Mesa truncates: plain bit replication stored 1..65535 as one less), and the low byte is
-/// clamped so that dropping it also gives c.
-fn widen24(c: u32) -> u32 {
-    const R: f64 = 4294967295.0 / 16777215.0;
-    let low = ((c as f64 + 0.25) * R - 256.0 * c as f64)
-        .round()
-        .clamp(0.0, 255.0) as u32;
-    (c << 8) | low
-}
-
-/// The bytes to upload for one level.
-pub fn level_bytes(format: Format, level: &Level) -> Result<Vec<u8>, GlError> {
-    let n = level.texel_count();
-    let stencil = |i: usize| {
-        level
-            .stencil
-            .as_ref()
-            .and_then(|s| s.get(i))
-            .copied()
-            .unwrap_or(0) as u32
-    };
-    let mut out = Vec::with_capacity(n * transfer(format).3);
-    match (&level.depth, format) {
-        (Texels::Unorm(v), Format::D16 | Format::DepthUnsized) => v
-            .iter()
-            .for_each(|&c| out.extend_from_slice(&(c as u16).to_ne_bytes())),
-        (Texels::Unorm(v), Format::D24) => v
-            .iter()
-            .for_each(|&c| out.extend_from_slice(&widen24(c).to_ne_bytes())),
-        (Texels::Unorm(v), Format::D32) => v
-            .iter()
-            .for_each(|&c| out.extend_from_slice(&c.to_ne_bytes())),
-        (Texels::Unorm(v), Format::D24S8) => v
-            .iter()
-            .enumerate()
-            .for_each(|(i, &c)| out.extend_from_slice(&((c << 8) | stencil(i)).to_ne_bytes())),
-        (Texels::Unorm(v), Format::R8) => v.iter().for_each(|&c| out.push(c as u8)),
-        (Texels::Float(v), Format::D32f) => v
-            .iter()
-            .for_each(|&f| out.extend_from_slice(&f.to_ne_bytes())),
-        (Texels::Float(v), Format::D32fS8) => v.iter().enumerate().for_each(|(i, &f)| {
-            out.extend_from_slice(&f.to_ne_bytes());
-            out.extend_from_slice(&stencil(i).to_ne_bytes());
-        }),
-        _ => {
-            return Err(GlError::Gl(format!(
-                "texel encoding does not match format {format}"
-            )))
-        }
-    }
-    Ok(out)
-}
-
-/// Decodes read-back bytes into the fixture's encoding.
-pub fn decode_stored(format: Format, bytes: &[u8]) -> Texels {
-    let u32s = |step: usize| {
-        bytes
-            .chunks_exact(step)
-            .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
-    };
-    match format {
-        Format::D16 | Format::DepthUnsized => Texels::Unorm(
-            bytes
-                .chunks_exact(2)
-                .map(|c| u16::from_ne_bytes([c[0], c[1]]) as u32)
-                .collect(),
-        ),
-        // UNSIGNED_INT from a 24-bit store: c * (2^32-1)/(2^24-1) rounded; the top 24 bits are c.
-        Format::D24 | Format::D24S8 => Texels::Unorm(u32s(4).map(|u| u >> 8).collect()),
-        Format::D32 => Texels::Unorm(u32s(4).collect()),
-        Format::D32f => Texels::Float(u32s(4).map(f32::from_bits).collect()),
-        Format::D32fS8 => Texels::Float(u32s(8).map(f32::from_bits).collect()),
-        Format::R8 => Texels::Unorm(bytes.iter().map(|&b| b as u32).collect()),
-    }
-}
+use shadowcheck_model::{Case, Target, Texels};
+use shadowcheck_plan::texels::{decode_stored, level_bytes, transfer_for};
+use shadowcheck_plan::unit::{tex_params, ParamValue};
+use shadowcheck_plan::GlInfo;
 
 fn face_targets(target: Target) -> Vec<u32> {
     if target == Target::Cube {
@@ -185,7 +37,7 @@ pub unsafe fn create(
     gl.bind_texture(target, Some(tex));
     for (i, lvl) in t.levels.iter().enumerate() {
         let level = (t.base_level as usize + i) as i32;
-        let bytes = level_bytes(t.format, lvl)?;
+        let bytes = level_bytes(t.format, lvl).map_err(|e| GlError::Gl(e.to_string()))?;
         let (w, h, l) = (lvl.width as i32, lvl.height as i32, lvl.layers as i32);
         let data = glow::PixelUnpackData::Slice(Some(&bytes));
         match t.target {
@@ -241,7 +93,6 @@ pub fn error_name(e: u32) -> String {
     }
 }
 
-/// Turns a pending GL error into `GlError::Gl` naming `what`.
 /// A `w`×`h` RGBA32F texture with NEAREST filtering, bound to TEXTURE_2D of the active unit: the
 /// result framebuffer's colour buffer.
 ///
@@ -267,6 +118,7 @@ pub unsafe fn rgba32f(gl: &glow::Context, w: i32, h: i32) -> Result<glow::Textur
     Ok(t)
 }
 
+/// Turns a pending GL error into `GlError::Gl` naming `what`.
 pub fn check(gl: &glow::Context, what: &str) -> Result<(), GlError> {
     match check_err(gl) {
         None => Ok(()),
@@ -277,142 +129,9 @@ pub fn check(gl: &glow::Context, what: &str) -> Result<(), GlError> {
     }
 }
 
-/// The value of one TexParameter call.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum ParamValue {
-    /// glTexParameteri.
-    Int(u32),
-    /// glTexParameterf.
-    Float(f32),
-    /// glTexParameterfv.
-    Floats([f32; 4]),
-}
-
-/// One TexParameter call of a case's sampler state: the parameter, its name (for error messages)
-/// and the value.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TexParam {
-    pub pname: u32,
-    pub name: &'static str,
-    pub value: ParamValue,
-}
-
-impl TexParam {
-    /// The call as an error message names it, e.g. `glTexParameteri(TEXTURE_COMPARE_MODE)`.
-    pub fn call(&self) -> String {
-        let f = match self.value {
-            ParamValue::Int(_) => "glTexParameteri",
-            ParamValue::Float(_) => "glTexParameterf",
-            ParamValue::Floats(_) => "glTexParameterfv",
-        };
-        format!("{f}({})", self.name)
-    }
-}
-
-/// The TexParameter calls that set `case`'s sampler state on its texture object, in the order
-/// they are made (state left at its default is not set). The GL worker makes them with glow; the
-/// WebGL page makes the same list (`shadowcheck-webgl`).
-pub fn tex_params(info: &GlInfo, case: &Case) -> Vec<TexParam> {
-    let s = &case.sampler;
-    let t = &case.texture;
-    let mut v = Vec::new();
-    let mut push =
-        |pname: u32, name: &'static str, value: ParamValue| v.push(TexParam { pname, name, value });
-    use ParamValue::{Float, Floats, Int};
-    if t.base_level != 0 {
-        push(
-            glow::TEXTURE_BASE_LEVEL,
-            "TEXTURE_BASE_LEVEL",
-            Int(t.base_level),
-        );
-    }
-    if let Some(m) = s.max_level {
-        push(glow::TEXTURE_MAX_LEVEL, "TEXTURE_MAX_LEVEL", Int(m));
-    }
-    push(
-        glow::TEXTURE_MIN_FILTER,
-        "TEXTURE_MIN_FILTER",
-        Int(s.min_filter.gl()),
-    );
-    push(
-        glow::TEXTURE_MAG_FILTER,
-        "TEXTURE_MAG_FILTER",
-        Int(s.mag_filter.gl()),
-    );
-    // Only the wraps of coordinates the target uses: a rectangle texture rejects REPEAT even for
-    // a coordinate it never wraps.
-    push(glow::TEXTURE_WRAP_S, "TEXTURE_WRAP_S", Int(s.wrap_s.gl()));
-    if t.target.dims() == 2 {
-        push(glow::TEXTURE_WRAP_T, "TEXTURE_WRAP_T", Int(s.wrap_t.gl()));
-    }
-    if t.target.is_cube() {
-        push(glow::TEXTURE_WRAP_R, "TEXTURE_WRAP_R", Int(s.wrap_r.gl()));
-    }
-    if s.border != [0.0; 4] {
-        push(
-            glow::TEXTURE_BORDER_COLOR,
-            "TEXTURE_BORDER_COLOR",
-            Floats(s.border),
-        );
-    }
-    if s.min_lod != -1000.0 {
-        push(glow::TEXTURE_MIN_LOD, "TEXTURE_MIN_LOD", Float(s.min_lod));
-    }
-    if s.max_lod != 1000.0 {
-        push(glow::TEXTURE_MAX_LOD, "TEXTURE_MAX_LOD", Float(s.max_lod));
-    }
-    if s.lod_bias != 0.0 {
-        push(
-            glow::TEXTURE_LOD_BIAS,
-            "TEXTURE_LOD_BIAS",
-            Float(s.lod_bias),
-        );
-    }
-    push(
-        glow::TEXTURE_COMPARE_MODE,
-        "TEXTURE_COMPARE_MODE",
-        Int(s.compare_mode.gl()),
-    );
-    push(
-        glow::TEXTURE_COMPARE_FUNC,
-        "TEXTURE_COMPARE_FUNC",
-        Int(s.compare_func.gl()),
-    );
-    if let (Some(m), true) = (s.depth_texture_mode, info.compat) {
-        push(GL_DEPTH_TEXTURE_MODE, "DEPTH_TEXTURE_MODE", Int(m.gl()));
-    }
-    if let Some(m) = s.depth_stencil_mode {
-        push(
-            GL_DEPTH_STENCIL_TEXTURE_MODE,
-            "DEPTH_STENCIL_TEXTURE_MODE",
-            Int(m.gl()),
-        );
-    }
-    if let Some(f) = s.fail_value {
-        push(
-            GL_TEXTURE_COMPARE_FAIL_VALUE_ARB,
-            "TEXTURE_COMPARE_FAIL_VALUE_ARB",
-            Float(f),
-        );
-    }
-    if let Some(sw) = s.swizzle {
-        // One call per component (the same state as TEXTURE_SWIZZLE_RGBA, GL 4.6 §8.10).
-        let names = [
-            (glow::TEXTURE_SWIZZLE_R, "TEXTURE_SWIZZLE_R"),
-            (glow::TEXTURE_SWIZZLE_G, "TEXTURE_SWIZZLE_G"),
-            (glow::TEXTURE_SWIZZLE_B, "TEXTURE_SWIZZLE_B"),
-            (glow::TEXTURE_SWIZZLE_A, "TEXTURE_SWIZZLE_A"),
-        ];
-        for ((pname, name), c) in names.into_iter().zip(sw) {
-            push(pname, name, Int(c.gl()));
-        }
-    }
-    v
-}
-
 unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<(), GlError> {
     let target = case.texture.target.gl();
-    for p in tex_params(info, case) {
+    for p in tex_params(info.compat, case) {
         match p.value {
             ParamValue::Int(v) => gl.tex_parameter_i32(target, p.pname, v as i32),
             ParamValue::Float(v) => gl.tex_parameter_f32(target, p.pname, v),
@@ -461,48 +180,59 @@ pub unsafe fn read_back(
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use shadowcheck_plan::gl;
 
+    /// The plan names GL enums by number (it has no GL binding); each must be the registry's,
+    /// which glow's constants are.
     #[test]
-    fn d24_widening_is_exact_under_rounding_truncation_and_shift() {
-        // GL 4.6 §2.3.5: f = c / (2^b - 1); a driver may round or truncate c32 * (2^24-1)/(2^32-1),
-        // or drop the low byte. Every 24-bit value must survive all three (exact integer arithmetic).
-        let (m24, m32) = ((1u64 << 24) - 1, (1u64 << 32) - 1);
-        for c in (0..=m24 as u32)
-            .step_by(97)
-            .chain([1, 2, 65535, 0xFFFFFE, 0xFFFFFF])
-        {
-            let u = widen24(c) as u64;
-            assert_eq!(u * m24 / m32, c as u64, "truncating {c}");
-            assert!(2 * u * m24 < (2 * c as u64 + 1) * m32, "rounding {c}");
-            assert_eq!(u >> 8, c as u64, "dropping the low byte {c}");
+    fn plan_enums_match_glow() {
+        let pairs = [
+            (gl::UNSIGNED_BYTE, glow::UNSIGNED_BYTE),
+            (gl::UNSIGNED_SHORT, glow::UNSIGNED_SHORT),
+            (gl::UNSIGNED_INT, glow::UNSIGNED_INT),
+            (gl::FLOAT, glow::FLOAT),
+            (gl::DEPTH_COMPONENT, glow::DEPTH_COMPONENT),
+            (gl::RED, glow::RED),
+            (gl::DEPTH_COMPONENT16, glow::DEPTH_COMPONENT16),
+            (gl::DEPTH_COMPONENT24, glow::DEPTH_COMPONENT24),
+            (gl::DEPTH_COMPONENT32, glow::DEPTH_COMPONENT32),
+            (gl::DEPTH_COMPONENT32F, glow::DEPTH_COMPONENT32F),
+            (gl::DEPTH_STENCIL, glow::DEPTH_STENCIL),
+            (gl::UNSIGNED_INT_24_8, glow::UNSIGNED_INT_24_8),
+            (gl::DEPTH24_STENCIL8, glow::DEPTH24_STENCIL8),
+            (gl::DEPTH32F_STENCIL8, glow::DEPTH32F_STENCIL8),
+            (
+                gl::FLOAT_32_UNSIGNED_INT_24_8_REV,
+                glow::FLOAT_32_UNSIGNED_INT_24_8_REV,
+            ),
+            (gl::R8, glow::R8),
+            (gl::TEXTURE_BORDER_COLOR, glow::TEXTURE_BORDER_COLOR),
+            (gl::TEXTURE_MAG_FILTER, glow::TEXTURE_MAG_FILTER),
+            (gl::TEXTURE_MIN_FILTER, glow::TEXTURE_MIN_FILTER),
+            (gl::TEXTURE_WRAP_S, glow::TEXTURE_WRAP_S),
+            (gl::TEXTURE_WRAP_T, glow::TEXTURE_WRAP_T),
+            (gl::TEXTURE_WRAP_R, glow::TEXTURE_WRAP_R),
+            (gl::TEXTURE_MIN_LOD, glow::TEXTURE_MIN_LOD),
+            (gl::TEXTURE_MAX_LOD, glow::TEXTURE_MAX_LOD),
+            (gl::TEXTURE_BASE_LEVEL, glow::TEXTURE_BASE_LEVEL),
+            (gl::TEXTURE_MAX_LEVEL, glow::TEXTURE_MAX_LEVEL),
+            (gl::TEXTURE_LOD_BIAS, glow::TEXTURE_LOD_BIAS),
+            (gl::TEXTURE_COMPARE_MODE, glow::TEXTURE_COMPARE_MODE),
+            (gl::TEXTURE_COMPARE_FUNC, glow::TEXTURE_COMPARE_FUNC),
+            (gl::TEXTURE_SWIZZLE_R, glow::TEXTURE_SWIZZLE_R),
+            (gl::TEXTURE_SWIZZLE_G, glow::TEXTURE_SWIZZLE_G),
+            (gl::TEXTURE_SWIZZLE_B, glow::TEXTURE_SWIZZLE_B),
+            (gl::TEXTURE_SWIZZLE_A, glow::TEXTURE_SWIZZLE_A),
+            (
+                gl::DEPTH_STENCIL_TEXTURE_MODE,
+                glow::DEPTH_STENCIL_TEXTURE_MODE,
+            ),
+        ];
+        for (i, (plan, glow)) in pairs.into_iter().enumerate() {
+            assert_eq!(plan, glow, "pair {i}");
         }
-    }
-
-    #[test]
-    fn level_bytes_pack_stencil_and_floats() {
-        let lvl = Level {
-            width: 2,
-            height: 1,
-            layers: 1,
-            depth: Texels::Unorm(vec![1, 0xFFFFFF]),
-            stencil: Some(vec![7, 9]),
-        };
-        let b = level_bytes(Format::D24S8, &lvl).unwrap();
-        assert_eq!(u32::from_ne_bytes([b[0], b[1], b[2], b[3]]), (1 << 8) | 7);
-        assert_eq!(
-            decode_stored(Format::D24S8, &b),
-            Texels::Unorm(vec![1, 0xFFFFFF])
-        );
-        let f = Level {
-            width: 1,
-            height: 1,
-            layers: 1,
-            depth: Texels::Float(vec![0.25]),
-            stencil: None,
-        };
-        let b = level_bytes(Format::D32fS8, &f).unwrap();
-        assert_eq!(b.len(), 8);
-        assert_eq!(decode_stored(Format::D32fS8, &b), Texels::Float(vec![0.25]));
+        // glow has no constants for the compatibility and extension pnames; their registry values:
+        assert_eq!(gl::DEPTH_TEXTURE_MODE, 0x884B);
+        assert_eq!(gl::TEXTURE_COMPARE_FAIL_VALUE_ARB, 0x80BF);
     }
 }

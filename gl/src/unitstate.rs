@@ -1,68 +1,12 @@
 //! Unit state a case sets besides its texture object: a bound sampler object (GL 4.6 §8.2) and
 //! the TEXTURE_CUBE_MAP_SEAMLESS enable (§8.13.1). The texture swizzle is texture state and is
-//! set with the other TexParameter calls (`texture::tex_params`).
+//! set with the other TexParameter calls (`shadowcheck_plan::unit::tex_params`).
 
-use super::texture::{check, ParamValue, TexParam};
+use super::texture::check;
 use super::GlError;
 use glow::HasContext;
 use shadowcheck_model::Case;
-
-/// The SamplerParameter calls that set a case's sampler object (the same pnames and values as
-/// the texture's, GL 4.6 §8.2), in the order they are made.
-pub fn sampler_params(case: &Case) -> Vec<TexParam> {
-    let Some(o) = &case.sampler.sampler_object else {
-        return Vec::new();
-    };
-    let t = case.texture.target;
-    let mut v = Vec::new();
-    let mut push =
-        |pname: u32, name: &'static str, value: ParamValue| v.push(TexParam { pname, name, value });
-    use ParamValue::{Float, Floats, Int};
-    push(
-        glow::TEXTURE_MIN_FILTER,
-        "TEXTURE_MIN_FILTER",
-        Int(o.min_filter.gl()),
-    );
-    push(
-        glow::TEXTURE_MAG_FILTER,
-        "TEXTURE_MAG_FILTER",
-        Int(o.mag_filter.gl()),
-    );
-    push(glow::TEXTURE_WRAP_S, "TEXTURE_WRAP_S", Int(o.wrap_s.gl()));
-    if t.dims() == 2 {
-        push(glow::TEXTURE_WRAP_T, "TEXTURE_WRAP_T", Int(o.wrap_t.gl()));
-    }
-    if t.is_cube() {
-        push(glow::TEXTURE_WRAP_R, "TEXTURE_WRAP_R", Int(o.wrap_r.gl()));
-    }
-    if o.border != [0.0; 4] {
-        push(
-            glow::TEXTURE_BORDER_COLOR,
-            "TEXTURE_BORDER_COLOR",
-            Floats(o.border),
-        );
-    }
-    push(glow::TEXTURE_MIN_LOD, "TEXTURE_MIN_LOD", Float(o.min_lod));
-    push(glow::TEXTURE_MAX_LOD, "TEXTURE_MAX_LOD", Float(o.max_lod));
-    if o.lod_bias != 0.0 {
-        push(
-            glow::TEXTURE_LOD_BIAS,
-            "TEXTURE_LOD_BIAS",
-            Float(o.lod_bias),
-        );
-    }
-    push(
-        glow::TEXTURE_COMPARE_MODE,
-        "TEXTURE_COMPARE_MODE",
-        Int(o.compare_mode.gl()),
-    );
-    push(
-        glow::TEXTURE_COMPARE_FUNC,
-        "TEXTURE_COMPARE_FUNC",
-        Int(o.compare_func.gl()),
-    );
-    v
-}
+use shadowcheck_plan::unit::{sampler_params, ParamValue};
 
 /// Unit state a case sets besides its texture: a sampler object bound to unit 0 and the
 /// TEXTURE_CUBE_MAP_SEAMLESS enable. Undo with [`unbind_unit_state`] after drawing.

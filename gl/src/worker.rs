@@ -1,14 +1,15 @@
 //! The GL worker: creates the context for one backend, declares what this context can check (its
-//! hello), then draws each batch of cases; the protocol loop around it is [`super::serve`].
+//! hello), then draws each batch of cases; the protocol loop around it is
+//! [`shadowcheck_plan::serve`].
 
 use super::context::GlContext;
-use super::draw::{Answer, Renderer};
 use super::legacy::Legacy;
 use super::names::{BackendName, ContextApi};
-use super::paths::GlInfo;
-use super::serve::Serve;
+use super::renderer::Renderer;
 use super::GlError;
 use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase};
+use shadowcheck_plan::serve::{state_reply, Serve};
+use shadowcheck_plan::{sweep, Answer, GlInfo};
 use shadowcheck_protocol::{
     Capabilities, Hello, PathSkip, Reply, Support, FEATURES, PROTOCOL_VERSION,
 };
@@ -144,7 +145,7 @@ impl Worker {
         let unexposed = self.unexposed(case.spec);
         let gl = &self.renderer.gl;
         // SAFETY: the worker's context is current on this thread.
-        super::state::answer(&self.caps, unexposed, case, |c| unsafe {
+        state_reply(&self.caps, unexposed, case, |c| unsafe {
             super::state::observe(gl, c)
         })
     }
@@ -328,7 +329,7 @@ impl Worker {
                 }
             }
         }
-        let jobs = super::sweep::jobs(&runnable);
+        let jobs = sweep::jobs(&runnable);
         // SAFETY: the worker's context is current on this thread.
         let mut drawn_jobs = unsafe { self.renderer.run_batch(&jobs) }.into_iter();
         // The paths left out of a case are part of the answer for its own lookup.

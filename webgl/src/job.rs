@@ -1,17 +1,16 @@
 //! A batch of cases as one job for the page (`page.js`), and the page's answer as protocol
-//! answers. Everything is decided here by the GL worker's own code, so the WebGL port runs the same
-//! es300 path: the lookup plan (`paths::plan_with`), the shader text (`shaders::glsl`), the bytes
-//! of every level (`texture::level_bytes`, `transfer_for`) and the TexParameter calls
-//! (`texture::tex_params`). Consecutive cases with equal texture and sampler share one texture
+//! answers. Everything is decided by the lookup plan (shadowcheck-plan), as for the GL worker, so
+//! the WebGL port runs the same es300 path: the lookup (`paths::plan_with`), the shader text
+//! (`shaders::glsl`), the bytes of every level (`texels::level_bytes`, `transfer_for`) and the
+//! TexParameter calls (`unit::tex_params`). Consecutive cases with equal texture and sampler share one texture
 //! object, as on the GL worker's ES contexts.
 
 use base64::Engine;
 use serde::Serialize;
-use shadowcheck_gl::draw::Answer;
-use shadowcheck_gl::paths::{self, GlInfo, Plan};
-use shadowcheck_gl::texture::{self, ParamValue};
-use shadowcheck_gl::{shaders, unitstate, GlError};
 use shadowcheck_model::{Case, Target};
+use shadowcheck_plan::texels::{level_bytes, transfer_for};
+use shadowcheck_plan::unit::{sampler_params, tex_params, ParamValue, TexParam};
+use shadowcheck_plan::{paths, shaders, Answer, GlInfo, Plan, PlanError};
 use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
 
 /// Most (case, path) pixels of one job (the page's framebuffer is 256 x 256).
@@ -39,7 +38,7 @@ struct Texture {
     upload: &'static str,
     levels: Vec<Level>,
     params: Vec<Param>,
-    /// SamplerParameter calls of a bound sampler object (`gl::unitstate::sampler_params`); empty:
+    /// SamplerParameter calls of a bound sampler object (`shadowcheck_plan::unit::sampler_params`); empty:
     /// no sampler object.
     sampler: Vec<Param>,
 }
@@ -122,12 +121,12 @@ pub struct Built {
     pub layout: Layout,
 }
 
-fn texture_of(info: &GlInfo, case: &Case) -> Result<Texture, GlError> {
+fn texture_of(info: &GlInfo, case: &Case) -> Result<Texture, PlanError> {
     let t = &case.texture;
-    let (ifmt, fmt, ty, bpt) = texture::transfer_for(case);
+    let (ifmt, fmt, ty, bpt) = transfer_for(case);
     let mut levels = Vec::with_capacity(t.levels.len());
     for (i, lvl) in t.levels.iter().enumerate() {
-        let bytes = texture::level_bytes(t.format, lvl)?;
+        let bytes = level_bytes(t.format, lvl)?;
         levels.push(Level {
             level: t.base_level + i as u32,
             ifmt,
@@ -140,7 +139,7 @@ fn texture_of(info: &GlInfo, case: &Case) -> Result<Texture, GlError> {
             data: base64::engine::general_purpose::STANDARD.encode(bytes),
         });
     }
-    let param = |p: texture::TexParam| {
+    let param = |p: TexParam| {
         let (int, float) = match p.value {
             ParamValue::Int(v) => (Some(v), None),
             ParamValue::Float(v) => (None, Some(Js(v))),
@@ -153,14 +152,11 @@ fn texture_of(info: &GlInfo, case: &Case) -> Result<Texture, GlError> {
             float,
         }
     };
-    let params = texture::tex_params(info, case)
+    let params = tex_params(info.compat, case)
         .into_iter()
         .map(param)
         .collect();
-    let sampler = unitstate::sampler_params(case)
-        .into_iter()
-        .map(param)
-        .collect();
+    let sampler = sampler_params(case).into_iter().map(param).collect();
     let upload = match t.target {
         Target::Cube => "cube",
         Target::T2dArray | Target::CubeArray => "3d",

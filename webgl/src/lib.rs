@@ -1,9 +1,9 @@
 //! shadowcheck-webgl: the `webgl:chromium` worker. WebGL 2.0 in headless Chromium (ANGLE's
 //! Vulkan back end on SwiftShader), driven over the Chrome DevTools Protocol pipe
-//! ([`browser`]), running the GL worker's `es300` path: the same lookup plans, shader text,
-//! texture bytes and TexParameter calls (shadowcheck-gl), made by a small page script
-//! (`page.js`) in batches ([`job`]). The [`worker`] answers runner/PROTOCOL.md through the GL
-//! worker's serve loop; the runner starts it as `shadowcheck webgl-worker`.
+//! ([`browser`]), running the `es300` path of the lookup plan: the same plans, shader text,
+//! texture bytes and TexParameter calls as the GL worker (shadowcheck-plan), made by a small page
+//! script (`page.js`) in batches ([`job`]). The [`worker`] answers runner/PROTOCOL.md through
+//! the plan's serve loop; the runner starts it as `shadowcheck webgl-worker`.
 
 pub mod browser;
 pub mod job;

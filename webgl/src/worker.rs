@@ -1,16 +1,13 @@
 //! The `webgl:chromium` worker: starts the browser, loads the page, declares what WebGL 2.0 can
-//! run, and answers batches through the GL worker's protocol loop ([`shadowcheck_gl::serve::serve`]).
+//! run, and answers batches through the plan's protocol loop ([`shadowcheck_plan::serve::serve`]).
 
 use super::browser::Browser;
 use super::job;
 use super::WebglError;
 use serde::Deserialize;
-use shadowcheck_gl::draw::Answer;
-use shadowcheck_gl::names::LookupForm;
-use shadowcheck_gl::paths::GlInfo;
-use shadowcheck_gl::serve::Serve;
-use shadowcheck_gl::ContextApi;
 use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase, StateObserved, Target};
+use shadowcheck_plan::serve::{state_reply, Serve};
+use shadowcheck_plan::{sweep, Answer, ContextApi, GlInfo, LookupForm};
 use shadowcheck_protocol::{Capabilities, Hello, Reply, Support, PROTOCOL_VERSION};
 
 /// The backend's name.
@@ -233,20 +230,19 @@ impl Serve for WebglWorker {
         let caps = self.caps.clone();
         let lose = self.fault == Some(TestFault::LoseContext);
         let mut failed = None;
-        let reply =
-            shadowcheck_gl::state::answer(&caps, None, case, |c| {
-                match super::state::observe(&mut self.browser, c, lose) {
-                    Ok(o) => o,
-                    Err(e) => {
-                        failed = Some(e);
-                        StateObserved {
-                            error: None,
-                            other_error: None,
-                            value: None,
-                        }
+        let reply = state_reply(&caps, None, case, |c| {
+            match super::state::observe(&mut self.browser, c, lose) {
+                Ok(o) => o,
+                Err(e) => {
+                    failed = Some(e);
+                    StateObserved {
+                        error: None,
+                        other_error: None,
+                        value: None,
                     }
                 }
-            });
+            }
+        });
         match failed {
             // The page threw: an error answer, as for a lookup.
             Some(WebglError::Page(m)) => Ok(Reply::Error {
@@ -261,7 +257,7 @@ impl Serve for WebglWorker {
 
     fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
         // The page is sent whole cases: each sweep point as a case of its own.
-        let cases = shadowcheck_gl::sweep::expand(cases);
+        let cases = sweep::expand(cases);
         let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
         let mut runnable: Vec<Case> = Vec::new();
         for c in &cases {

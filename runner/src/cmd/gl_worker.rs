@@ -28,7 +28,7 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     let mut w = worker::Worker::start(name)?;
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
-    shadowcheck_gl::serve::serve(
+    shadowcheck_plan::serve::serve(
         &mut w,
         std::io::BufReader::with_capacity(1 << 16, stdin),
         std::io::BufWriter::new(stdout.lock()),

@@ -1,6 +1,6 @@
 //! `shadowcheck webgl-worker`: headless Chromium with a WebGL 2.0 page, speaking runner/PROTOCOL.md
 //! on stdin/stdout (the `webgl:chromium` backend's child; `backend::webgl::worker_command`).
-use shadowcheck_gl::serve::serve;
+use shadowcheck_plan::serve::serve;
 use shadowcheck_webgl::worker::{probe_line, WebglWorker};
 use std::process::ExitCode;
 

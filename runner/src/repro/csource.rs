@@ -2,26 +2,54 @@
 //! GL worker (shadowcheck-gl) does, with nothing of shadowcheck linked in.
 //!
 //! What it mirrors, and from where: the context (`gl/src/context.rs`: EGL surfaceless or OSMesa,
-//! the same API and versions tried highest first), the texture (`texture.rs`: the bytes
-//! `texture::level_bytes` uploads, the transfer of `texture::transfer_for`, the sampler state in
-//! `set_state`'s order), the lookup (`paths::plan_with` gives the shader key and the uniform
-//! values; `shaders::glsl` / `shaders::arbfp` give the program text, the same functions the worker
+//! the same API and versions tried highest first), and from the lookup plan (shadowcheck-plan,
+//! which the worker draws too): the texture (the bytes `texels::level_bytes` uploads, the transfer
+//! of `texels::transfer_for`, the TexParameter and SamplerParameter calls of `unit` in their
+//! order), the lookup (`paths::plan_with` gives the shader key and the uniform values;
+//! `shaders::glsl` / `shaders::arbfp` give the program text, the same functions the worker
 //! compiles), and one draw into a 1x1 viewport of an RGBA32F framebuffer cleared to -1
-//! (`draw.rs`). One difference: the worker draws `textureLod`/`textureGrad` lookups of core and
+//! (the GL worker's `renderer`). One difference: the worker draws `textureLod`/`textureGrad` lookups of core and
 //! ES contexts batched, each case an instance whose attributes carry P, the gradients and the
 //! LOD; the reproducer passes the same values as uniforms (the shader key and the lookup call
 //! are the same).
 
 use super::tokens::Tokens;
 use super::Subject;
-use shadowcheck_gl::paths::{self, GlInfo, LodForm, Plan, SamplerKind};
-use shadowcheck_gl::{shaders, texture, unitstate, ContextApi, Platform};
+use shadowcheck_gl::Platform;
 use shadowcheck_model::{Acceptance, ApiPath, Channel, Format, Profile, Swizzle, Target};
+use shadowcheck_plan::texels::{level_bytes, transfer_for};
+use shadowcheck_plan::unit::{sampler_params, tex_params, ParamValue};
+use shadowcheck_plan::{gl, paths, shaders, ContextApi, GlInfo, LodForm, Plan, SamplerKind};
 use std::fmt::Write;
 
-const GL_DEPTH_TEXTURE_MODE: u32 = 0x884B;
-const GL_DEPTH_STENCIL_TEXTURE_MODE: u32 = 0x90EA;
-const GL_TEXTURE_COMPARE_FAIL_VALUE_ARB: u32 = 0x80BF;
+const SWIZZLE_PNAMES: [u32; 4] = [
+    gl::TEXTURE_SWIZZLE_R,
+    gl::TEXTURE_SWIZZLE_G,
+    gl::TEXTURE_SWIZZLE_B,
+    gl::TEXTURE_SWIZZLE_A,
+];
+
+/// The C name of a swizzle source (GL 4.6 Table 8.26's values).
+fn swizzle_source(v: u32) -> &'static str {
+    [
+        Swizzle::Red,
+        Swizzle::Green,
+        Swizzle::Blue,
+        Swizzle::Alpha,
+        Swizzle::Zero,
+        Swizzle::One,
+    ]
+    .into_iter()
+    .find(|c| c.gl() == v)
+    .map_or("GL_ZERO", |c| match c {
+        Swizzle::Red => "GL_RED",
+        Swizzle::Green => "GL_GREEN",
+        Swizzle::Blue => "GL_BLUE",
+        Swizzle::Alpha => "GL_ALPHA",
+        Swizzle::Zero => "GL_ZERO",
+        Swizzle::One => "GL_ONE",
+    })
+}
 
 /// A C `float` literal that reads back as exactly `v`.
 pub(super) fn cf(v: f32) -> String {
@@ -274,14 +302,14 @@ fn texel_array(ty: u32, bytes: &[u8]) -> (&'static str, Vec<String>) {
 
 fn texture_fn(s: &Subject, compat: bool, tok: &mut Tokens) -> Result<String, String> {
     let t = &s.case.texture;
-    let (ifmt, fmt, ty, bpt) = texture::transfer_for(&s.case);
+    let (ifmt, fmt, ty, bpt) = transfer_for(&s.case);
     let target = tok.name(t.target.gl());
     let (ifmt, fmt_n, ty_n) = (tok.name(ifmt as u32), tok.name(fmt), tok.name(ty));
     let mut data = String::new();
     let mut up = String::new();
     for (i, lvl) in t.levels.iter().enumerate() {
         let level = t.base_level as usize + i;
-        let bytes = texture::level_bytes(t.format, lvl).map_err(|e| e.to_string())?;
+        let bytes = level_bytes(t.format, lvl).map_err(|e| e.to_string())?;
         let (cty, vals) = texel_array(ty, &bytes);
         let rows: Vec<String> = vals
             .chunks(8)
@@ -320,106 +348,53 @@ fn texture_fn(s: &Subject, compat: bool, tok: &mut Tokens) -> Result<String, Str
             }
         };
     }
-    let sm = &s.case.sampler;
     let mut st = String::new();
-    let pi = |st: &mut String, tok: &mut Tokens, p: u32, v: u32| {
-        let (p, v) = (tok.name(p), tok.name(v));
-        let _ = writeln!(st, "    glTexParameteri({target}, {p}, {v});");
-    };
-    let pf = |st: &mut String, tok: &mut Tokens, p: u32, v: f32| {
-        let p = tok.name(p);
-        let _ = writeln!(st, "    glTexParameterf({target}, {p}, {});", cf(v));
-    };
-    // The order of texture.rs `set_state`.
-    if t.base_level != 0 {
-        let p = tok.name(glow::TEXTURE_BASE_LEVEL);
-        let _ = writeln!(st, "    glTexParameteri({target}, {p}, {});", t.base_level);
-    }
-    if let Some(m) = sm.max_level {
-        let p = tok.name(glow::TEXTURE_MAX_LEVEL);
-        let _ = writeln!(st, "    glTexParameteri({target}, {p}, {m});");
-    }
-    pi(&mut st, tok, glow::TEXTURE_MIN_FILTER, sm.min_filter.gl());
-    pi(&mut st, tok, glow::TEXTURE_MAG_FILTER, sm.mag_filter.gl());
-    pi(&mut st, tok, glow::TEXTURE_WRAP_S, sm.wrap_s.gl());
-    if t.target.dims() == 2 {
-        pi(&mut st, tok, glow::TEXTURE_WRAP_T, sm.wrap_t.gl());
-    }
-    if t.target.is_cube() {
-        pi(&mut st, tok, glow::TEXTURE_WRAP_R, sm.wrap_r.gl());
-    }
-    if sm.border != [0.0; 4] {
-        let p = tok.name(glow::TEXTURE_BORDER_COLOR);
-        let b: Vec<String> = sm.border.iter().map(|v| cf(*v)).collect();
-        let _ = writeln!(
-            st,
-            "    {{ static const GLfloat border[4] = {{{}}}; glTexParameterfv({target}, {p}, border); }}",
-            b.join(", ")
-        );
-    }
-    if sm.min_lod != -1000.0 {
-        pf(&mut st, tok, glow::TEXTURE_MIN_LOD, sm.min_lod);
-    }
-    if sm.max_lod != 1000.0 {
-        pf(&mut st, tok, glow::TEXTURE_MAX_LOD, sm.max_lod);
-    }
-    if sm.lod_bias != 0.0 {
-        pf(&mut st, tok, glow::TEXTURE_LOD_BIAS, sm.lod_bias);
-    }
-    pi(
-        &mut st,
-        tok,
-        glow::TEXTURE_COMPARE_MODE,
-        sm.compare_mode.gl(),
-    );
-    pi(
-        &mut st,
-        tok,
-        glow::TEXTURE_COMPARE_FUNC,
-        sm.compare_func.gl(),
-    );
-    if let (Some(m), true) = (sm.depth_texture_mode, compat) {
-        pi(&mut st, tok, GL_DEPTH_TEXTURE_MODE, m.gl());
-    }
-    if let Some(m) = sm.depth_stencil_mode {
-        pi(&mut st, tok, GL_DEPTH_STENCIL_TEXTURE_MODE, m.gl());
-    }
-    if let Some(v) = sm.fail_value {
-        pf(&mut st, tok, GL_TEXTURE_COMPARE_FAIL_VALUE_ARB, v);
+    // The worker's TexParameter calls, in its order (`unit::tex_params`).
+    for p in tex_params(compat, &s.case) {
+        let name = tok.name(p.pname);
+        let _ = match p.value {
+            // Levels as numbers, swizzle sources by their names, other enums as tokens.
+            ParamValue::Int(v)
+                if matches!(p.pname, gl::TEXTURE_BASE_LEVEL | gl::TEXTURE_MAX_LEVEL) =>
+            {
+                writeln!(st, "    glTexParameteri({target}, {name}, {v});")
+            }
+            ParamValue::Int(v) if SWIZZLE_PNAMES.contains(&p.pname) => {
+                writeln!(
+                    st,
+                    "    glTexParameteri({target}, {name}, {});",
+                    swizzle_source(v)
+                )
+            }
+            ParamValue::Int(v) => {
+                let v = tok.name(v);
+                writeln!(st, "    glTexParameteri({target}, {name}, {v});")
+            }
+            ParamValue::Float(v) => {
+                writeln!(st, "    glTexParameterf({target}, {name}, {});", cf(v))
+            }
+            ParamValue::Floats(v) => {
+                let b: Vec<String> = v.iter().map(|x| cf(*x)).collect();
+                writeln!(
+                    st,
+                    "    {{ static const GLfloat border[4] = {{{}}}; glTexParameterfv({target}, {name}, border); }}",
+                    b.join(", ")
+                )
+            }
+        };
     }
     unit_state(&mut st, s, tok);
     Ok(format!(
-        "/* The texture ({fmt} {tgt}): the integers shadowcheck's worker uploads (gl/src/texture.rs). */\n{data}\nstatic void make_texture(void) {{\n    GLuint tex;\n    glGenTextures(1, &tex);\n    glActiveTexture(GL_TEXTURE0);\n    glBindTexture({target}, tex);\n{up}    check(\"texture upload (glTexImage*)\");\n{st}    check(\"sampler state (glTexParameter*)\");\n}}\n\n",
+        "/* The texture ({fmt} {tgt}): the integers shadowcheck's worker uploads (plan/src/texels.rs). */\n{data}\nstatic void make_texture(void) {{\n    GLuint tex;\n    glGenTextures(1, &tex);\n    glActiveTexture(GL_TEXTURE0);\n    glBindTexture({target}, tex);\n{up}    check(\"texture upload (glTexImage*)\");\n{st}    check(\"sampler state (glTexParameter*)\");\n}}\n\n",
         fmt = t.format,
         tgt = t.target,
     ))
 }
 
-/// The swizzle (texture state), the seamless enable and the sampler object of the case, as
-/// the worker sets them (`texture::tex_params`, `unitstate::bind_unit_state`).
+/// The seamless enable and the sampler object of the case, as the worker sets them
+/// (`unit::sampler_params`, bound to unit 0).
 fn unit_state(st: &mut String, s: &Subject, tok: &mut Tokens) {
     let sm = &s.case.sampler;
-    let target = tok.name(s.case.texture.target.gl());
-    if let Some(sw) = sm.swizzle {
-        let pnames = [
-            glow::TEXTURE_SWIZZLE_R,
-            glow::TEXTURE_SWIZZLE_G,
-            glow::TEXTURE_SWIZZLE_B,
-            glow::TEXTURE_SWIZZLE_A,
-        ];
-        for (p, c) in pnames.into_iter().zip(sw) {
-            let v = match c {
-                Swizzle::Red => "GL_RED",
-                Swizzle::Green => "GL_GREEN",
-                Swizzle::Blue => "GL_BLUE",
-                Swizzle::Alpha => "GL_ALPHA",
-                Swizzle::Zero => "GL_ZERO",
-                Swizzle::One => "GL_ONE",
-            };
-            let p = tok.name(p);
-            let _ = writeln!(st, "    glTexParameteri({target}, {p}, {v});");
-        }
-    }
     if let Some(on) = sm.seamless {
         let cap = tok.name(glow::TEXTURE_CUBE_MAP_SEAMLESS);
         let f = if on { "glEnable" } else { "glDisable" };
@@ -436,17 +411,17 @@ fn unit_state(st: &mut String, s: &Subject, tok: &mut Tokens) {
         GLuint so;
         glGenSamplers(1, &so);"
         );
-        for p in unitstate::sampler_params(&s.case) {
+        for p in sampler_params(&s.case) {
             let name = tok.name(p.pname);
             let _ = match p.value {
-                texture::ParamValue::Int(v) => {
+                ParamValue::Int(v) => {
                     let v = tok.name(v);
                     writeln!(st, "        glSamplerParameteri(so, {name}, {v});")
                 }
-                texture::ParamValue::Float(v) => {
+                ParamValue::Float(v) => {
                     writeln!(st, "        glSamplerParameterf(so, {name}, {});", cf(v))
                 }
-                texture::ParamValue::Floats(v) => {
+                ParamValue::Floats(v) => {
                     let b: Vec<String> = v.iter().map(|x| cf(*x)).collect();
                     writeln!(
                         st,
@@ -581,7 +556,7 @@ fn glsl_draw(s: &Subject, plan: &Plan, centre: [f32; 2]) -> String {
         ""
     };
     format!(
-        "/* The shaders shadowcheck's worker compiles for this lookup (gl/src/shaders/mod.rs){uint}:\n * {{minimum GLSL version x 100, vertex, fragment}}. */\nstatic const struct {{ int min_glsl; const char *vs, *fs; }} PROGRAMS[] = {{\n{table}}};\n\nstatic GLuint shader(GLenum type, const char *src) {{\n    GLuint sh = glCreateShader(type);\n    glShaderSource(sh, 1, &src, NULL);\n    glCompileShader(sh);\n    GLint ok = 0;\n    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);\n    if (!ok) {{\n        char log[2048];\n        glGetShaderInfoLog(sh, sizeof log, NULL, log);\n        fprintf(stderr, \"shader compile failed: %s\\n%s\\n\", log, src);\n        exit(2);\n    }}\n    return sh;\n}}\n\nstatic void draw(int glsl) {{\n    unsigned v = 0;\n    while (v + 1 < sizeof PROGRAMS / sizeof PROGRAMS[0] && PROGRAMS[v].min_glsl > glsl) v++;\n    GLuint p = glCreateProgram();\n    glAttachShader(p, shader(GL_VERTEX_SHADER, PROGRAMS[v].vs));\n    glAttachShader(p, shader(GL_FRAGMENT_SHADER, PROGRAMS[v].fs));\n    glBindAttribLocation(p, 0, \"a_pos\");\n    glLinkProgram(p);\n    GLint ok = 0;\n    glGetProgramiv(p, GL_LINK_STATUS, &ok);\n    if (!ok) die(\"program link\");\n    glUseProgram(p);\n    glUniform1i(glGetUniformLocation(p, \"u_tex\"), 0);\n    glUniform4f(glGetUniformLocation(p, \"u_p\"), {p});\n    glUniform1f(glGetUniformLocation(p, \"u_x\"), {x});\n    glUniform4f(glGetUniformLocation(p, \"u_dx\"), {dx});\n    glUniform4f(glGetUniformLocation(p, \"u_dy\"), {dy});\n    glUniform2f(glGetUniformLocation(p, \"u_c\"), {cx}, {cy});\n    glDrawArrays(GL_TRIANGLES, 0, 3);\n    check(\"GLSL draw\");\n}}\n\n",
+        "/* The shaders shadowcheck's worker compiles for this lookup (plan/src/shaders/mod.rs){uint}:\n * {{minimum GLSL version x 100, vertex, fragment}}. */\nstatic const struct {{ int min_glsl; const char *vs, *fs; }} PROGRAMS[] = {{\n{table}}};\n\nstatic GLuint shader(GLenum type, const char *src) {{\n    GLuint sh = glCreateShader(type);\n    glShaderSource(sh, 1, &src, NULL);\n    glCompileShader(sh);\n    GLint ok = 0;\n    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);\n    if (!ok) {{\n        char log[2048];\n        glGetShaderInfoLog(sh, sizeof log, NULL, log);\n        fprintf(stderr, \"shader compile failed: %s\\n%s\\n\", log, src);\n        exit(2);\n    }}\n    return sh;\n}}\n\nstatic void draw(int glsl) {{\n    unsigned v = 0;\n    while (v + 1 < sizeof PROGRAMS / sizeof PROGRAMS[0] && PROGRAMS[v].min_glsl > glsl) v++;\n    GLuint p = glCreateProgram();\n    glAttachShader(p, shader(GL_VERTEX_SHADER, PROGRAMS[v].vs));\n    glAttachShader(p, shader(GL_FRAGMENT_SHADER, PROGRAMS[v].fs));\n    glBindAttribLocation(p, 0, \"a_pos\");\n    glLinkProgram(p);\n    GLint ok = 0;\n    glGetProgramiv(p, GL_LINK_STATUS, &ok);\n    if (!ok) die(\"program link\");\n    glUseProgram(p);\n    glUniform1i(glGetUniformLocation(p, \"u_tex\"), 0);\n    glUniform4f(glGetUniformLocation(p, \"u_p\"), {p});\n    glUniform1f(glGetUniformLocation(p, \"u_x\"), {x});\n    glUniform4f(glGetUniformLocation(p, \"u_dx\"), {dx});\n    glUniform4f(glGetUniformLocation(p, \"u_dy\"), {dy});\n    glUniform2f(glGetUniformLocation(p, \"u_c\"), {cx}, {cy});\n    glDrawArrays(GL_TRIANGLES, 0, 3);\n    check(\"GLSL draw\");\n}}\n\n",
         p = vec4(plan.p),
         x = cf(plan.x),
         dx = vec4(plan.dx),

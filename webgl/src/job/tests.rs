@@ -1,7 +1,6 @@
 use super::*;
 use crate::worker::capabilities;
-use shadowcheck_gl::names::LookupForm;
-use shadowcheck_gl::ContextApi;
+use shadowcheck_plan::{ContextApi, LookupForm};
 use shadowcheck_protocol::{Capabilities, Support};
 
 /// A GLES 3.2 2D D24 NEAREST LEQUAL case with texels 0 and 2^24-1 (`EXTRA` replaced by more
@@ -64,7 +63,7 @@ fn a_job_carries_the_gl_workers_texels_parameters_and_shader() {
     let bytes = base64::engine::general_purpose::STANDARD
         .decode(&lvl.data)
         .unwrap();
-    let want = texture::level_bytes(cases[0].texture.format, &cases[0].texture.levels[0]).unwrap();
+    let want = level_bytes(cases[0].texture.format, &cases[0].texture.levels[0]).unwrap();
     assert_eq!(bytes, want, "texel bytes are the GL worker's");
     assert_eq!(
         (lvl.ifmt, lvl.fmt, lvl.ty),

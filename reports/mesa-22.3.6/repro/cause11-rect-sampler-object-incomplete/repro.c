@@ -70,7 +70,7 @@ static void make_context(void) {
     die("eglCreateContext: no version of this context kind");
 }
 
-/* The texture (d24 rect): the integers shadowcheck's worker uploads (gl/src/texture.rs). */
+/* The texture (d24 rect): the integers shadowcheck's worker uploads (plan/src/texels.rs). */
 /* level 0: 2x1x1 (24-bit values c as 32-bit unorm (c << 8) | low byte: every conversion gives c) */
 static const GLuint LEVEL0[] = {
     3435973887u, 2576980441u
@@ -109,7 +109,7 @@ static void make_texture(void) {
 
 /* The lookup: core path, Shadow sampler, explicit gradients. P = (2.5f, 0.5f, 0.5f, 1.0f), x (LOD / bias / compare value) = 0.0f,
  * dx = (1.0f, 0.0f, 0.0f, 0.0f), dy = (0.0f, 1.0f, 0.0f, 0.0f). */
-/* The shaders shadowcheck's worker compiles for this lookup (gl/src/shaders/mod.rs):
+/* The shaders shadowcheck's worker compiles for this lookup (plan/src/shaders/mod.rs):
  * {minimum GLSL version x 100, vertex, fragment}. */
 static const struct { int min_glsl; const char *vs, *fs; } PROGRAMS[] = {
     {400,

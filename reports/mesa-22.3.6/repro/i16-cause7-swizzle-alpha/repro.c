@@ -70,7 +70,7 @@ static void make_context(void) {
     die("eglCreateContext: no version of this context kind");
 }
 
-/* The texture (d24 2d): the integers shadowcheck's worker uploads (gl/src/texture.rs). */
+/* The texture (d24 2d): the integers shadowcheck's worker uploads (plan/src/texels.rs). */
 /* level 0: 2x1x1 (24-bit values c as 32-bit unorm (c << 8) | low byte: every conversion gives c) */
 static const GLuint LEVEL0[] = {
     858993523u, 3435973887u

@@ -67,7 +67,7 @@ static void make_context(void) {
     die("eglCreateContext: no version of this context kind");
 }
 
-/* The texture (d16 2darray): the integers shadowcheck's worker uploads (gl/src/texture.rs). */
+/* The texture (d16 2darray): the integers shadowcheck's worker uploads (plan/src/texels.rs). */
 /* level 0: 2x2x2 */
 static const GLushort LEVEL0[] = {
     52428, 52428, 52428, 52428, 13107, 13107, 13107, 13107

@@ -70,7 +70,7 @@ static void make_context(void) {
     die("eglCreateContext: no version of this context kind");
 }
 
-/* The texture (d16 1d): the integers shadowcheck's worker uploads (gl/src/texture.rs). */
+/* The texture (d16 1d): the integers shadowcheck's worker uploads (plan/src/texels.rs). */
 /* level 0: 4x1x1 */
 static const GLushort LEVEL0[] = {
     13107, 26214, 39321, 52428

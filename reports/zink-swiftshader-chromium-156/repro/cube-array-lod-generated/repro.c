@@ -67,7 +67,7 @@ static void make_context(void) {
     die("eglCreateContext: no version of this context kind");
 }
 
-/* The texture (d16 cubearray): the integers shadowcheck's worker uploads (gl/src/texture.rs). */
+/* The texture (d16 cubearray): the integers shadowcheck's worker uploads (plan/src/texels.rs). */
 /* level 0: 2x2x12 */
 static const GLushort LEVEL0[] = {
     52428, 52428, 52428, 52428, 52428, 52428, 52428, 52428,

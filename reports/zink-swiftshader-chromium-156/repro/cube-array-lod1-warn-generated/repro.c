@@ -67,7 +67,7 @@ static void make_context(void) {
     die("eglCreateContext: no version of this context kind");
 }
 
-/* The texture (d24 cubearray): the integers shadowcheck's worker uploads (gl/src/texture.rs). */
+/* The texture (d24 cubearray): the integers shadowcheck's worker uploads (plan/src/texels.rs). */
 /* level 0: 2x2x12 (24-bit values c as 32-bit unorm (c << 8) | low byte: every conversion gives c) */
 static const GLuint LEVEL0[] = {
     3435973887u, 3435973887u, 3435973887u, 3435973887u, 3435973887u, 3435973887u, 3435973887u, 3435973887u,

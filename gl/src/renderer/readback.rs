@@ -2,26 +2,16 @@
 //! API path), whose lower-left pixel holds the result ("slots", taken in order and read back
 //! together). A pixel no draw wrote reads back as -1, which no path can return.
 
-use super::draw::{BatchState, Pending, Renderer};
+use super::{BatchState, Pending, Renderer};
 use glow::HasContext;
+use shadowcheck_plan::layout::pixel;
+use shadowcheck_plan::layout::{CAPACITY, FB_SIZE, QUADS_PER_ROW};
 use shadowcheck_protocol::{PathResult, Rgba};
-
-/// Width and height of the result framebuffer in pixels.
-pub(super) const FB_SIZE: i32 = 256;
-/// Quads (2x2 pixels, one per (case, path)) in a row of the framebuffer.
-pub(super) const QUADS_PER_ROW: i32 = FB_SIZE / 2;
-/// (case, path) results the framebuffer holds.
-pub(super) const CAPACITY: usize = (QUADS_PER_ROW * QUADS_PER_ROW) as usize;
-/// The pixel holding slot `slot`'s result: the lower-left pixel of its quad.
-pub(super) fn pixel(slot: usize) -> (i32, i32) {
-    let s = slot as i32;
-    (2 * (s % QUADS_PER_ROW), 2 * (s / QUADS_PER_ROW))
-}
 
 impl Renderer {
     /// Reads the framebuffer's pixels up to the quad row of slot `used - 1`, row by row, into
     /// `self.readback` (RGBA32F, 16 bytes a pixel; the buffer is kept from batch to batch).
-    pub(super) unsafe fn read(&mut self, used: usize) {
+    pub(crate) unsafe fn read(&mut self, used: usize) {
         let rows = 2 * used.div_ceil(QUADS_PER_ROW as usize).max(1) as i32;
         self.readback.clear();
         self.readback.resize((FB_SIZE * rows) as usize * 16, 0);
@@ -52,7 +42,7 @@ impl Renderer {
 
     /// Clears the quad rows drawn since the last clear (only those: clearing the whole
     /// framebuffer before every batch cost llvmpipe a 1 MiB fill per batch).
-    pub(super) unsafe fn clear(&mut self) {
+    pub(crate) unsafe fn clear(&mut self) {
         let rows = (2 * self.drawn.div_ceil(QUADS_PER_ROW as usize)).min(FB_SIZE as usize) as i32;
         self.drawn = 0;
         self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(self.fbo));
@@ -70,7 +60,7 @@ impl Renderer {
 
     /// Takes `n` consecutive slots, reading back and clearing first when the framebuffer cannot
     /// hold them; returns the first.
-    pub(super) unsafe fn take_slots(&mut self, st: &mut BatchState, n: usize) -> usize {
+    pub(crate) unsafe fn take_slots(&mut self, st: &mut BatchState, n: usize) -> usize {
         if st.next_slot + n > CAPACITY {
             let mut pending = std::mem::take(&mut st.pending);
             self.collect(&mut pending, &mut st.results);
@@ -84,7 +74,7 @@ impl Renderer {
     }
 
     /// Reads back the pending pixels into `results`.
-    pub(super) unsafe fn collect(
+    pub(crate) unsafe fn collect(
         &mut self,
         pending: &mut Vec<Pending>,
         results: &mut [Vec<PathResult>],
@@ -105,19 +95,5 @@ impl Renderer {
                 note: Some(p.note),
             });
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn slots_are_the_lower_left_pixels_of_quads_row_by_row() {
-        assert_eq!(pixel(0), (0, 0));
-        assert_eq!(pixel(1), (2, 0));
-        assert_eq!(pixel(QUADS_PER_ROW as usize - 1), (FB_SIZE - 2, 0));
-        assert_eq!(pixel(QUADS_PER_ROW as usize), (0, 2));
-        assert_eq!(pixel(CAPACITY - 1), (FB_SIZE - 2, FB_SIZE - 2));
     }
 }

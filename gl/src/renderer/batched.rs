@@ -17,91 +17,13 @@
 //! and fetched each quad's values from a parameter texture with texelFetch; its variants took
 //! llvmpipe nearly twice as long to compile (reports/BENCH.md).
 
-use super::draw::{BatchState, Job, Pending, Renderer};
-use super::framebuffer::FB_SIZE;
-use super::paths::{Plan, ShaderKey};
-use super::programs::Compiled;
-use super::shaders::{self, PARAM_ATTRIBS, PARAM_FLOATS};
-use super::unitstate;
+use super::{BatchState, Pending, Renderer};
+use crate::programs::Compiled;
+use crate::unitstate;
 use glow::HasContext;
-
-/// Most cases one batched draw serves (its quads must fit the framebuffer: `CAPACITY`).
-pub(super) const DRAW_CASES: usize = 1024;
-
-/// One batched draw: a program, the (case, plan) pairs it serves (slot k of the draw is item k),
-/// and where item 0's values are in the parameter buffer (in cases).
-pub(super) struct Batch<'p> {
-    key: ShaderKey,
-    items: Vec<(usize, &'p Plan)>,
-    first: usize,
-}
-
-/// The parameter values of a worker batch: six vertices per case ([`PARAM_FLOATS`] each).
-#[derive(Default)]
-pub(super) struct ParamStaging {
-    values: Vec<f32>,
-}
-
-/// Vertices per case: two triangles covering its quad.
-const CASE_VERTICES: usize = 6;
-/// The quad's corners, as two triangles of the same winding.
-const CORNERS: [[f32; 2]; CASE_VERTICES] = [
-    [0.0, 0.0],
-    [1.0, 0.0],
-    [0.0, 1.0],
-    [0.0, 1.0],
-    [1.0, 0.0],
-    [1.0, 1.0],
-];
-
-impl ParamStaging {
-    /// Stages the values of one draw's `plans`; returns the index of the first in the buffer (in
-    /// cases). Each vertex of case k of the draw: corner, (x, k), P, dx, dy.
-    fn stage(&mut self, plans: &[(usize, &Plan)]) -> usize {
-        let first = self.values.len() / (PARAM_FLOATS * CASE_VERTICES);
-        for (k, (_, p)) in plans.iter().enumerate() {
-            for corner in CORNERS {
-                self.values.extend_from_slice(&corner);
-                self.values.extend_from_slice(&[p.x, k as f32]);
-                self.values.extend_from_slice(&p.p);
-                self.values.extend_from_slice(&p.dx);
-                self.values.extend_from_slice(&p.dy);
-            }
-        }
-        first
-    }
-}
-
-/// The batched draws of `group`: batchable (case, plan) pairs by program in first-appearance
-/// order, at most [`DRAW_CASES`] a draw, their values staged in `staging`. A batchable path is always drawn batched, even
-/// alone, so the driver compiles one variant per (program, state), not a batched and a
-/// single-pixel one.
-pub(super) fn batches_of<'p>(
-    group: &'p [(usize, Vec<Plan>)],
-    staging: &mut ParamStaging,
-) -> Vec<Batch<'p>> {
-    let mut by_key: Vec<(ShaderKey, Vec<(usize, &Plan)>)> = Vec::new();
-    for (ci, plans) in group {
-        for plan in plans.iter().filter(|p| shaders::batchable(&p.key)) {
-            match by_key.iter_mut().find(|(k, _)| *k == plan.key) {
-                Some((_, v)) => v.push((*ci, plan)),
-                None => by_key.push((plan.key, vec![(*ci, plan)])),
-            }
-        }
-    }
-    let mut out = Vec::new();
-    for (key, items) in by_key {
-        for chunk in items.chunks(DRAW_CASES) {
-            let first = staging.stage(chunk);
-            out.push(Batch {
-                key,
-                items: chunk.to_vec(),
-                first,
-            });
-        }
-    }
-    out
-}
+use shadowcheck_plan::layout::{Batch, ParamStaging, CASE_VERTICES, FB_SIZE};
+use shadowcheck_plan::shaders::{self, PARAM_ATTRIBS, PARAM_FLOATS};
+use shadowcheck_plan::{Job, Plan, ShaderKey};
 
 impl Renderer {
     /// The parameter buffer and the vertex array reading it, created on first use.
@@ -126,7 +48,7 @@ impl Renderer {
 
     /// One batched draw: case k is the case in slot `slot0 + k`, its vertices from case
     /// `first + k` of the parameter buffer on.
-    pub(super) unsafe fn draw_batched(
+    pub(crate) unsafe fn draw_batched(
         &mut self,
         key: &ShaderKey,
         slot0: usize,
@@ -160,14 +82,14 @@ impl Renderer {
 
     /// Uploads the staged values to the parameter buffer (a new store each batch, so no queued
     /// draw waits on it).
-    pub(super) unsafe fn upload_staged(&mut self, staging: &ParamStaging) -> Result<(), String> {
-        if staging.values.is_empty() {
+    pub(crate) unsafe fn upload_staged(&mut self, staging: &ParamStaging) -> Result<(), String> {
+        if staging.values().is_empty() {
             return Ok(());
         }
         let (buffer, _) = self.param_buffer()?;
         let mut bytes = std::mem::take(&mut self.upload);
         bytes.clear();
-        bytes.extend(staging.values.iter().flat_map(|f| f.to_ne_bytes()));
+        bytes.extend(staging.values().iter().flat_map(|f| f.to_ne_bytes()));
         self.gl.bind_buffer(glow::ARRAY_BUFFER, Some(buffer));
         self.gl
             .buffer_data_u8_slice(glow::ARRAY_BUFFER, &bytes, glow::STREAM_DRAW);
@@ -177,7 +99,7 @@ impl Renderer {
 
     /// Runs a group of cases sharing texture and sampler state: the paths that cannot be batched
     /// one pixel each, then `batches` (the group's, from [`batches_of`], values uploaded).
-    pub(super) unsafe fn run_group(
+    pub(crate) unsafe fn run_group(
         &mut self,
         jobs: &[Job],
         group: &[(usize, Vec<Plan>)],
@@ -242,62 +164,5 @@ impl Renderer {
         let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
         self.retire(jobs, st, tex, group[0].0, sharing);
         self.check_group(group.iter().map(|(ci, _)| *ci), st);
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::paths;
-    use shadowcheck_model::{ApiPath, Target};
-
-    /// `n` cases of one program, case k with P.x = k + offset (so each value names its case).
-    fn group(n: usize, first_ci: usize, offset: f32) -> Vec<(usize, Vec<Plan>)> {
-        let case = crate::test_case::case(Target::T2d, 2, 2, 1);
-        (0..n)
-            .map(|k| {
-                let mut p = paths::plan(ApiPath::GlslCore, &case).expect("core plan");
-                p.p[0] = k as f32 + offset;
-                (first_ci + k, vec![p])
-            })
-            .collect()
-    }
-
-    #[test]
-    fn staged_values_sit_where_each_draw_reads_them() {
-        let a = group(1500, 0, 0.0);
-        let b = group(30, 1500, 5000.0);
-        let mut staging = ParamStaging::default();
-        let ba = batches_of(&a, &mut staging);
-        let bb = batches_of(&b, &mut staging);
-        assert!(shaders::batchable(&a[0].1[0].key));
-        // A group is split at DRAW_CASES; the second group's values follow the first's.
-        assert_eq!(
-            ba.iter()
-                .chain(&bb)
-                .map(|b| (b.items.len(), b.first))
-                .collect::<Vec<_>>(),
-            vec![(DRAW_CASES, 0), (1500 - DRAW_CASES, DRAW_CASES), (30, 1500)]
-        );
-        assert_eq!(staging.values.len(), 1530 * CASE_VERTICES * PARAM_FLOATS);
-        // Every vertex of case k of a draw (case first + k of the buffer) carries its corner,
-        // (x, k), P, dx and dy where PARAM_ATTRIBS says.
-        let attrib = |name: &str| {
-            let (_, _, size, at) = PARAM_ATTRIBS.into_iter().find(|a| a.1 == name).expect(name);
-            at..at + size as usize
-        };
-        for batch in ba.iter().chain(&bb) {
-            for (k, (_, plan)) in batch.items.iter().enumerate() {
-                for (vi, corner) in CORNERS.iter().enumerate() {
-                    let at = ((batch.first + k) * CASE_VERTICES + vi) * PARAM_FLOATS;
-                    let v = &staging.values[at..at + PARAM_FLOATS];
-                    assert_eq!(v[attrib("a_pos")], corner[..]);
-                    assert_eq!(v[attrib("a_x")], [plan.x, k as f32]);
-                    assert_eq!(v[attrib("a_p")], plan.p);
-                    assert_eq!(v[attrib("a_dx")], plan.dx);
-                    assert_eq!(v[attrib("a_dy")], plan.dy);
-                }
-            }
-        }
     }
 }

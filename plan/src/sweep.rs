@@ -3,8 +3,36 @@
 //! sampler state (one texture, one batched draw where the path allows); the answers are then
 //! folded back into one answer per case, the points' RGBA in the `sweep` of each path's result.
 
-use super::draw::{Answer, Job};
-use shadowcheck_model::Case;
+use crate::Answer;
+use shadowcheck_model::{Case, Lookup};
+
+/// One lookup to draw: a case's own, or one point of its sweep. A point is the case's lookup with
+/// the point's coordinates and reference ([`Case::point_lookup`]) on the case's texture, sampler
+/// and API paths, so a case and its points form one group (one texture, one batched draw).
+#[derive(Debug, Clone)]
+pub struct Job<'a> {
+    pub case: &'a Case,
+    pub lookup: Lookup,
+    /// A sweep point: its answer keeps only the RGBA of each path (no stored texels, no note).
+    pub point: bool,
+}
+
+impl<'a> Job<'a> {
+    /// The case's own lookup.
+    pub fn own(case: &'a Case) -> Job<'a> {
+        Job {
+            case,
+            lookup: case.lookup.clone(),
+            point: false,
+        }
+    }
+
+    /// Do `self` and `other` draw on equal textures with equal sampler state?
+    pub fn same_texture(&self, other: &Job) -> bool {
+        std::ptr::eq(self.case, other.case)
+            || (self.case.texture == other.case.texture && self.case.sampler == other.case.sampler)
+    }
+}
 
 /// The lookups to draw for `cases`: each case's own, then each point of its sweep (borrowing the
 /// case: a point is only its lookup).

@@ -17,7 +17,8 @@
 //! function. Without the never-taken discard a cold compatibility run spent a sixth of its time
 //! compiling the whole-tile function it never uses (reports/BENCH.md). The fixed-function path cannot discard.
 
-use super::paths::{uses_shadow_lod, GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
+use crate::paths::uses_shadow_lod;
+use crate::{GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
 use shadowcheck_model::{ApiPath, Target};
 
 fn sampler_type(kind: SamplerKind, target: Target) -> String {

@@ -1,12 +1,15 @@
 //! The protocol loop of a worker process (runner/PROTOCOL.md): requests read and parsed on a
 //! thread of their own, a group at a time; cases batched until `flush` and run by the worker
 //! behind the loop ([`Serve`]: the GL worker, or the WebGL one), which answers each lookup, sweep
-//! points included; the points' answers folded into their case's ([`super::sweep::merge`]); one
+//! points included; the points' answers folded into their case's ([`crate::sweep::merge`]); one
 //! answer per case, in order.
 
-use super::draw::Answer;
+use crate::Answer;
+use shadowcheck_model::StateObserved;
 use shadowcheck_model::{Case, StateCase};
-use shadowcheck_protocol::{Hello, Reply, Request, PROTOCOL_VERSION};
+use shadowcheck_protocol::{
+    Capabilities, Hello, PathSkip, Reply, Request, StateResult, Support, PROTOCOL_VERSION,
+};
 use std::io::{BufRead, Write};
 
 fn answer_message(case_id: String, a: Answer) -> Reply {
@@ -83,7 +86,7 @@ fn flush_batch(
                 let main = next();
                 let n = points.next().unwrap_or(0);
                 let swept: Vec<Answer> = (0..n).map(|_| next()).collect();
-                answer_message(id, super::sweep::merge(main, swept))
+                answer_message(id, crate::sweep::merge(main, swept))
             }
             Slot::Bad(id, message) => Reply::Error {
                 case_id: id,
@@ -101,7 +104,7 @@ fn flush_batch(
 pub trait Serve {
     fn hello(&self) -> Hello;
     /// One answer per lookup, in order: each case's own, then each point of its sweep
-    /// ([`super::sweep::jobs`], or [`super::sweep::expand`] for a worker sent whole cases).
+    /// ([`crate::sweep::jobs`], or [`crate::sweep::expand`] for a worker sent whole cases).
     fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>>;
     /// The answer to a state case. An implementation that does not declare the `tex_parameter`
     /// feature is never sent one; if it is, it answers Skip.
@@ -226,6 +229,48 @@ pub fn serve(
         }
     }
     flush_batch(worker, &mut batch, &mut output)
+}
+
+/// The answer to a state case on a context with `caps`: Skip (with the reason) when the case does
+/// not run here or its spec is not exposed (`unexposed`), else what `observe` saw, for each API path
+/// that runs here.
+pub fn state_reply(
+    caps: &Capabilities,
+    unexposed: Option<String>,
+    case: &StateCase,
+    observe: impl FnOnce(&StateCase) -> StateObserved,
+) -> Reply {
+    let case_id = case.id.clone();
+    let (apis, others) = match caps.support_state(case) {
+        Support::Skip(reason) | Support::NotApplicable(reason) => {
+            return Reply::Skip { case_id, reason }
+        }
+        Support::Run { apis, others } => (apis, others),
+    };
+    if let Some(reason) = unexposed {
+        return Reply::Skip { case_id, reason };
+    }
+    let observed = observe(case);
+    let skipped = case
+        .api
+        .iter()
+        .filter(|a| !apis.contains(a))
+        .map(|a| PathSkip {
+            api: a.key().to_string(),
+            reason: others.clone().unwrap_or_default(),
+        })
+        .collect();
+    Reply::StateObservation {
+        case_id,
+        results: apis
+            .iter()
+            .map(|a| StateResult {
+                api: a.key().to_string(),
+                observed: observed.clone(),
+            })
+            .collect(),
+        skipped,
+    }
 }
 
 #[cfg(test)]

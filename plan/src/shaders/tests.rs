@@ -3,11 +3,11 @@
 use super::*;
 
 /// A context of `api` with `version` and GLSL `glsl` (x100), no extensions.
-fn info(api: crate::names::ContextApi, version: (u32, u32), glsl: u32) -> GlInfo {
+fn info(api: crate::ContextApi, version: (u32, u32), glsl: u32) -> GlInfo {
     GlInfo {
         api,
-        es: api == crate::names::ContextApi::Es3,
-        compat: api == crate::names::ContextApi::Compat,
+        es: api == crate::ContextApi::Es3,
+        compat: api == crate::ContextApi::Compat,
         version,
         glsl,
         renderer: String::new(),
@@ -93,7 +93,7 @@ fn shadow_lod_overloads_enable_the_extension() {
         gather: None,
     };
     assert_eq!(modern_call(&k), "textureLod(u_tex, p, u_x, u_dx.x)");
-    let info = info(crate::names::ContextApi::Es3, (3, 2), 320);
+    let info = info(crate::ContextApi::Es3, (3, 2), 320);
     let (_, fs) = glsl(&info, &k, None);
     assert!(
         fs.starts_with("#version 320 es\n#extension GL_EXT_texture_shadow_lod : require\n"),
@@ -147,7 +147,7 @@ fn gather_calls_split_p_and_ref_z() {
 
 #[test]
 fn batched_programs_draw_each_case_as_its_own_quad_and_vary_p_across_it_when_implicit() {
-    let info = info(crate::names::ContextApi::Core, (4, 5), 450);
+    let info = info(crate::ContextApi::Core, (4, 5), 450);
     let k = shadow_2d(ApiPath::GlslCore, LodForm::Implicit(false));
     assert!(batchable(&k));
     let (vs, fs) = glsl(&info, &k, Some(256));
@@ -191,7 +191,7 @@ fn batched_programs_draw_each_case_as_its_own_quad_and_vary_p_across_it_when_imp
 #[test]
 fn single_case_programs_can_discard_but_only_where_the_pixel_centre_is_negative() {
     let k = shadow_2d(ApiPath::Glsl120, LodForm::Implicit(false));
-    let compat = info(crate::names::ContextApi::Compat, (4, 5), 450);
+    let compat = info(crate::ContextApi::Compat, (4, 5), 450);
     for key in [
         k,
         ShaderKey {

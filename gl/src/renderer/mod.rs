@@ -2,118 +2,84 @@
 //! framebuffer and its result is the quad's lower-left pixel, so results are not quantized, all
 //! four channels are observed, and a batched draw of implicit-derivative lookups gives every case
 //! a quad of its own (derivatives are differences within a quad); the batch is read back at once
-//! (slots, clearing and read-back: `framebuffer.rs`).
+//! (slots, clearing and read-back: `readback.rs`).
 //!
 //! Consecutive cases with the same texture and sampler state (a case and its sweep points, or
 //! the grid's neighbours: only the reference or the coordinate changes) share one texture object,
 //! and on the core and ES paths all of them are drawn with one draw, each case two triangles
-//! over its own quad with its values as vertex attributes (see `batch.rs`). Compatibility contexts
+//! over its own quad with its values as vertex attributes (see `batched.rs`). Compatibility contexts
 //! give each API path of such a group a texture of its own (see `run_compat_group`).
 
-use super::framebuffer::{pixel, CAPACITY, FB_SIZE};
-use super::legacy::{self, Legacy};
-use super::paths::{self, GlInfo, LodForm, Plan};
-use super::programs::{Compiled, ProgramCache};
-use super::texture;
-use super::unitstate;
-use super::{batch, GlError};
+mod batched;
+mod readback;
+
+use crate::legacy::{self, Legacy};
+use crate::programs::{Compiled, ProgramCache};
+use crate::texture;
+use crate::unitstate;
+use crate::GlError;
 use glow::HasContext;
-use shadowcheck_model::{ApiPath, Case, Lookup, Target, Texels};
+use shadowcheck_model::{ApiPath, Case, Target, Texels};
+use shadowcheck_plan::layout::{self, pixel, CAPACITY, FB_SIZE};
+use shadowcheck_plan::{paths, Answer, GlInfo, Job, LodForm, Plan};
 use shadowcheck_protocol::{PathResult, PathSkip};
 
 /// Most textures kept alive for a deferred read-back.
 const MAX_DEFERRED: usize = 4096;
 
-/// The answer for one case.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Answer {
-    /// The paths that ran, and why the others did not.
-    Observation(Vec<PathResult>, Vec<PathSkip>),
-    Skip(String),
-    Error(String),
-}
-
-/// One lookup to draw: a case's own, or one point of its sweep. A point is the case's lookup with
-/// the point's coordinates and reference ([`Case::point_lookup`]) on the case's texture, sampler
-/// and API paths, so a case and its points form one group (one texture, one batched draw).
-#[derive(Debug, Clone)]
-pub struct Job<'a> {
-    pub case: &'a Case,
-    pub lookup: Lookup,
-    /// A sweep point: its answer keeps only the RGBA of each path (no stored texels, no note).
-    pub point: bool,
-}
-
-impl<'a> Job<'a> {
-    /// The case's own lookup.
-    pub fn own(case: &'a Case) -> Job<'a> {
-        Job {
-            case,
-            lookup: case.lookup.clone(),
-            point: false,
-        }
-    }
-
-    /// Do `self` and `other` draw on equal textures with equal sampler state?
-    fn same_texture(&self, other: &Job) -> bool {
-        std::ptr::eq(self.case, other.case)
-            || (self.case.texture == other.case.texture && self.case.sampler == other.case.sampler)
-    }
-}
-
 /// The GL objects of a worker and its program cache.
 pub struct Renderer {
     pub gl: glow::Context,
     pub info: GlInfo,
-    pub(super) legacy: Option<Legacy>,
-    pub(super) fbo: glow::Framebuffer,
-    pub(super) vao: glow::VertexArray,
-    /// The per-case values of batched draws (`batch.rs`) and the vertex array reading them as
+    pub(crate) legacy: Option<Legacy>,
+    pub(crate) fbo: glow::Framebuffer,
+    pub(crate) vao: glow::VertexArray,
+    /// The per-case values of batched draws (`batched.rs`) and the vertex array reading them as
     /// vertex attributes; created when a batch first needs them.
-    pub(super) params: Option<(glow::Buffer, glow::VertexArray)>,
+    pub(crate) params: Option<(glow::Buffer, glow::VertexArray)>,
     /// Slots drawn since the framebuffer was last cleared (their quad rows are cleared next).
-    pub(super) drawn: usize,
-    pub(super) programs: ProgramCache,
-    /// The last read-back of the framebuffer (`framebuffer.rs`) and the bytes of the last
-    /// parameter upload (`batch.rs`), kept so that a batch allocates neither.
-    pub(super) readback: Vec<u8>,
-    pub(super) upload: Vec<u8>,
+    pub(crate) drawn: usize,
+    pub(crate) programs: ProgramCache,
+    /// The last read-back of the framebuffer (`readback.rs`) and the bytes of the last
+    /// parameter upload (`batched.rs`), kept so that a batch allocates neither.
+    pub(crate) readback: Vec<u8>,
+    pub(crate) upload: Vec<u8>,
 }
 
 /// A drawn path waiting for read-back.
-pub(super) struct Pending {
-    pub(super) case: usize,
-    pub(super) path: ApiPath,
-    pub(super) slot: usize,
-    pub(super) note: String,
+pub(crate) struct Pending {
+    pub(crate) case: usize,
+    pub(crate) path: ApiPath,
+    pub(crate) slot: usize,
+    pub(crate) note: String,
 }
 
 /// Answers and pixels of a batch in progress.
-pub(super) struct BatchState {
-    pub(super) answers: Vec<Option<Answer>>,
-    pub(super) results: Vec<Vec<PathResult>>,
-    pub(super) stored: Vec<Option<Texels>>,
-    pub(super) pending: Vec<Pending>,
+pub(crate) struct BatchState {
+    pub(crate) answers: Vec<Option<Answer>>,
+    pub(crate) results: Vec<Vec<PathResult>>,
+    pub(crate) stored: Vec<Option<Texels>>,
+    pub(crate) pending: Vec<Pending>,
     /// The next free slot of the framebuffer. Not `pending.len()`: a failed case's pixels leave
     /// `pending` but stay drawn, and a later draw must not reuse their slots.
-    pub(super) next_slot: usize,
+    pub(crate) next_slot: usize,
     /// Textures whose level 0 is read back after the batch is drawn (reading back between draws
     /// makes the driver finish the queued draws first): texture, its case, the cases sharing it.
-    pub(super) readbacks: Vec<(glow::Texture, usize, Vec<usize>)>,
+    pub(crate) readbacks: Vec<(glow::Texture, usize, Vec<usize>)>,
     /// Per case: the API paths it names that this context cannot run, with the reason.
-    pub(super) skipped: Vec<Vec<PathSkip>>,
+    pub(crate) skipped: Vec<Vec<PathSkip>>,
 }
 
 impl BatchState {
     /// Case `ci` fails: its drawn pixels are dropped and it answers `error`.
-    pub(super) fn fail(&mut self, ci: usize, msg: String) {
+    pub(crate) fn fail(&mut self, ci: usize, msg: String) {
         self.pending.retain(|p| p.case != ci);
         self.results[ci].clear();
         self.answers[ci] = Some(Answer::Error(msg));
     }
 
     /// Every case of `cis` not answered yet fails with `msg`.
-    pub(super) fn fail_unanswered(&mut self, cis: impl IntoIterator<Item = usize>, msg: &str) {
+    pub(crate) fn fail_unanswered(&mut self, cis: impl IntoIterator<Item = usize>, msg: &str) {
         for ci in cis {
             if self.answers[ci].is_none() {
                 self.fail(ci, msg.to_string());
@@ -177,7 +143,7 @@ impl Renderer {
         })
     }
 
-    pub(super) unsafe fn draw(
+    pub(crate) unsafe fn draw(
         &mut self,
         plan: &Plan,
         target: Target,
@@ -328,10 +294,10 @@ impl Renderer {
             }
         } else {
             // Every batched draw's values in place before the first draw.
-            let mut staging = batch::ParamStaging::default();
-            let batches: Vec<Vec<batch::Batch>> = groups
+            let mut staging = layout::ParamStaging::default();
+            let batches: Vec<Vec<layout::Batch>> = groups
                 .iter()
-                .map(|g| batch::batches_of(g, &mut staging))
+                .map(|g| layout::batches_of(g, &mut staging))
                 .collect();
             match self.upload_staged(&staging) {
                 Ok(()) => {
@@ -367,7 +333,7 @@ impl Renderer {
     }
 
     /// Reads back the deferred textures and deletes them.
-    pub(super) unsafe fn finish_readbacks(&mut self, jobs: &[Job], st: &mut BatchState) {
+    pub(crate) unsafe fn finish_readbacks(&mut self, jobs: &[Job], st: &mut BatchState) {
         for (tex, ci, sharing) in std::mem::take(&mut st.readbacks) {
             let stored = texture::read_back(&self.gl, tex, jobs[ci].case).ok();
             for c in sharing.into_iter().filter(|c| !jobs[*c].point) {
@@ -378,7 +344,7 @@ impl Renderer {
     }
 
     /// Queues `tex` for read-back (desktop GL) or deletes it (ES has no glGetTexImage).
-    pub(super) unsafe fn retire(
+    pub(crate) unsafe fn retire(
         &mut self,
         jobs: &[Job],
         st: &mut BatchState,
@@ -398,7 +364,7 @@ impl Renderer {
 
     /// Creates `first`'s texture and binds its unit state, for a group of cases `cis` sharing
     /// them; on an error those cases fail and `None` is returned (nothing left bound).
-    pub(super) unsafe fn bind_group_texture(
+    pub(crate) unsafe fn bind_group_texture(
         &mut self,
         first: &Case,
         cis: impl IntoIterator<Item = usize>,
@@ -423,7 +389,7 @@ impl Renderer {
     }
 
     /// After a group's draws: a GL error makes the cases `cis` not answered yet fail.
-    pub(super) unsafe fn check_group(
+    pub(crate) unsafe fn check_group(
         &self,
         cis: impl IntoIterator<Item = usize>,
         st: &mut BatchState,

@@ -1,0 +1,37 @@
+//! The one hand-built case the GL crate's unit tests start from (a D16 texture of zeros, GL 4.6 core,
+//! LEQUAL NEAREST, Dref 0.5 at the centre); each test changes what it is about.
+use shadowcheck_model::*;
+
+/// A `w` x `h` x `layers` D16 case of `target` on the core path.
+pub(crate) fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
+    Case {
+        sweep: vec![],
+        id: "t".into(),
+        spec: Spec::Gl46,
+        api: vec![ApiPath::GlslCore],
+        texture: Texture {
+            target,
+            format: Format::D16,
+            base_level: 0,
+            levels: vec![Level {
+                width: w,
+                height: h,
+                layers,
+                depth: Texels::Unorm(vec![0; (w * h * layers) as usize]),
+                stencil: None,
+            }],
+        },
+        sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
+        lookup: Lookup {
+            coord: [0.5, 0.5, 0.5, 1.0],
+            layer: 0.0,
+            dref: 0.5,
+            projective: false,
+            lod: 0.0,
+            bias: 0.0,
+            offset: [0; 3],
+            gather: None,
+        },
+        expect: None,
+    }
+}
