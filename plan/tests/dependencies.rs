@@ -6,8 +6,8 @@ use std::path::Path;
 
 /// The names in a manifest's `[dependencies]` table (not dev- or build-dependencies).
 fn dependencies(manifest: &Path) -> Vec<String> {
-    let text = std::fs::read_to_string(manifest)
-        .unwrap_or_else(|e| panic!("{}: {e}", manifest.display()));
+    let text =
+        std::fs::read_to_string(manifest).unwrap_or_else(|e| panic!("{}: {e}", manifest.display()));
     let mut in_deps = false;
     let mut out = Vec::new();
     for line in text.lines().map(str::trim) {
@@ -32,9 +32,16 @@ fn the_plan_depends_on_no_gl_browser_or_process_crate() {
         "serde_json.workspace",
         "thiserror.workspace",
     ];
-    assert!(!deps.is_empty(), "no [dependencies] read from {}", manifest.display());
+    assert!(
+        !deps.is_empty(),
+        "no [dependencies] read from {}",
+        manifest.display()
+    );
     for d in &deps {
-        assert!(allowed.contains(&d.as_str()), "shadowcheck-plan depends on `{d}`");
+        assert!(
+            allowed.contains(&d.as_str()),
+            "shadowcheck-plan depends on `{d}`"
+        );
     }
 }
 
@@ -42,6 +49,12 @@ fn the_plan_depends_on_no_gl_browser_or_process_crate() {
 fn the_webgl_worker_draws_from_the_plan_not_from_the_gl_worker() {
     let webgl = Path::new(env!("CARGO_MANIFEST_DIR")).join("../webgl/Cargo.toml");
     let deps = dependencies(&webgl);
-    assert!(deps.iter().any(|d| d == "shadowcheck-plan.workspace"), "{deps:?}");
-    assert!(!deps.iter().any(|d| d.starts_with("shadowcheck-gl")), "{deps:?}");
+    assert!(
+        deps.iter().any(|d| d == "shadowcheck-plan.workspace"),
+        "{deps:?}"
+    );
+    assert!(
+        !deps.iter().any(|d| d.starts_with("shadowcheck-gl")),
+        "{deps:?}"
+    );
 }

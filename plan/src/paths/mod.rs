@@ -164,22 +164,80 @@ pub fn plan_in(
         return gather::plan(path, case, l);
     }
     let kind = sampler_kind(case);
-    let t = case.texture.target;
-    let offset = if l.offset == [0; 3] {
-        [0, 0]
+    let offset = texel_offset(path, case.texture.target, l)?;
+    let (form, how) = choose_form(path, case, l, kind, offset, prefer, shadow_lod)?;
+    let key = ShaderKey {
+        path,
+        target: case.texture.target,
+        kind,
+        form,
+        proj: l.projective,
+        mode: case.sampler.depth_texture_mode,
+        offset,
+        gather: None,
+    };
+    let how = if uses_shadow_lod(&key) {
+        format!("{how} (EXT_texture_shadow_lod overload)")
+    } else {
+        how.to_string()
+    };
+    let (mut p, x, dx, dy) = shader_values(case, l, &key);
+    let bias = l.bias as f32;
+    if path == ApiPath::ArbFp && form == LodForm::Implicit(true) {
+        // TXB takes the bias in the fourth component.
+        p[3] = bias;
+        return Ok(Plan {
+            key,
+            p,
+            x,
+            dx,
+            dy,
+            note: format!("ARB fp TXB, {how}"),
+        });
+    }
+    Ok(Plan {
+        key,
+        p,
+        x,
+        dx,
+        dy,
+        note: how,
+    })
+}
+
+/// The lookup's texel offset as the shader writes it: none, or (u, v) on the paths whose
+/// functions take one (GLSL 1.30+ `*Offset`, §8.9.2), never on a cube map.
+fn texel_offset(path: ApiPath, t: Target, l: &Lookup) -> Result<[i8; 2], String> {
+    if l.offset == [0; 3] {
+        Ok([0, 0])
     } else if !matches!(path, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300) {
-        return Err(format!("{path} has no lookup function with a texel offset"));
+        Err(format!("{path} has no lookup function with a texel offset"))
     } else if t.is_cube() {
-        return Err("cube map lookups take no texel offset".to_string());
+        Err("cube map lookups take no texel offset".to_string())
     } else {
         match (i8::try_from(l.offset[0]), i8::try_from(l.offset[1])) {
-            (Ok(a), Ok(b)) => [a, b],
-            _ => return Err(format!("texel offset {:?} out of range", l.offset)),
+            (Ok(a), Ok(b)) => Ok([a, b]),
+            _ => Err(format!("texel offset {:?} out of range", l.offset)),
         }
-    };
+    }
+}
+
+/// How the path realizes the case's level of detail: the first form in order of preference (the
+/// backend's preferred one first) that the path's language has for this sampler, target, projection
+/// and offset, with the note that says how.
+fn choose_form(
+    path: ApiPath,
+    case: &Case,
+    l: &Lookup,
+    kind: SamplerKind,
+    offset: [i8; 2],
+    prefer: LookupForm,
+    shadow_lod: bool,
+) -> Result<(LodForm, &'static str), String> {
+    let t = case.texture.target;
     let proj = l.projective;
-    let (lod, bias) = (l.lod as f32, l.bias as f32);
-    let forms: Vec<(LodForm, &str)> = if path == ApiPath::FixedFunction {
+    let bias = l.bias as f32;
+    let mut forms: Vec<(LodForm, &'static str)> = if path == ApiPath::FixedFunction {
         vec![(LodForm::Constant, "constant texture coordinates")]
     } else if bias == 0.0 {
         vec![
@@ -194,7 +252,6 @@ pub fn plan_in(
             (LodForm::Grad, "gradients for lod + bias"),
         ]
     };
-    let mut forms = forms;
     let preferred = |f: &LodForm| match prefer {
         LookupForm::Auto => false,
         LookupForm::Lod => *f == LodForm::Lod,
@@ -236,29 +293,20 @@ pub fn plan_in(
     // changes the filter or level, the coordinates vary across the pixel quad instead (by the
     // gradients, interpolated by the rasterizer) and the shader bias goes to the texture unit's
     // TEXTURE_LOD_BIAS (GL 4.6 compatibility §8.14.1: bias_texunit + bias_shader).
-    let (form, how) = if form == LodForm::Constant && !constant_coords_equivalent(case, l) {
-        (
+    if form == LodForm::Constant && !constant_coords_equivalent(case, l) {
+        return Ok((
             LodForm::Implicit(bias != 0.0),
             "fixed-function, coordinates varying 2^lod texels per pixel (interpolated), bias via TEXTURE_LOD_BIAS",
-        )
-    } else {
-        (form, how)
-    };
-    let key = ShaderKey {
-        path,
-        target: t,
-        kind,
-        form,
-        proj,
-        mode: case.sampler.depth_texture_mode,
-        offset,
-        gather: None,
-    };
-    let how = if uses_shadow_lod(&key) {
-        format!("{how} (EXT_texture_shadow_lod overload)")
-    } else {
-        how.to_string()
-    };
+        ));
+    }
+    Ok((form, how))
+}
+
+/// The values the shader of `key` receives for lookup `l`: P, the extra scalar `x` (explicit LOD,
+/// shader bias, or a cube-array shadow lookup's reference) and the gradients dx, dy.
+fn shader_values(case: &Case, l: &Lookup, key: &ShaderKey) -> ([f32; 4], f32, [f32; 4], [f32; 4]) {
+    let (t, form, proj) = (key.target, key.form, key.proj);
+    let (lod, bias) = (l.lod as f32, l.bias as f32);
     let folded = matches!(form, LodForm::Lod | LodForm::Grad) && bias != 0.0;
     let lod_eff = if folded { lod + bias } else { lod };
     let c = [
@@ -269,7 +317,7 @@ pub fn plan_in(
     ];
     let q = if proj { c[3] } else { 1.0 };
     let dref = l.dref as f32;
-    let shadow = kind == SamplerKind::Shadow;
+    let shadow = key.kind == SamplerKind::Shadow;
     // P by target (see shaders::p_expr).
     let p = match t {
         Target::T1d | Target::T2d | Target::Rect => [
@@ -304,27 +352,7 @@ pub fn plan_in(
             }
         }
     }
-    if path == ApiPath::ArbFp && form == LodForm::Implicit(true) {
-        // TXB takes the bias in the fourth component.
-        let mut p = p;
-        p[3] = bias;
-        return Ok(Plan {
-            key,
-            p,
-            x,
-            dx,
-            dy,
-            note: format!("ARB fp TXB, {how}"),
-        });
-    }
-    Ok(Plan {
-        key,
-        p,
-        x,
-        dx,
-        dy,
-        note: how,
-    })
+    (p, x, dx, dy)
 }
 
 /// Screen-space gradients of the lookup coordinate giving a scale factor rho = 2^lod
