@@ -10,7 +10,7 @@ use super::{mock, soft, Backend, BackendError, Options};
 pub type Opener = fn(&str, &str, &Options) -> Result<Box<dyn Backend>, BackendError>;
 
 /// One kind of backend.
-pub struct Kind {
+pub struct BackendKind {
     /// The part of the name before the first `:`.
     pub prefix: &'static str,
     /// The names it answers to, as written in errors and help.
@@ -21,38 +21,38 @@ pub struct Kind {
 }
 
 /// Every backend kind, in the order help and errors list them.
-pub const KINDS: &[Kind] = &[
-    Kind {
+pub const KINDS: &[BackendKind] = &[
+    BackendKind {
         prefix: "soft",
         pattern: "soft, soft:<spec>",
         help: "the project's own texture unit (each case under its own spec, or one spec only)",
         open: open_soft,
     },
-    Kind {
+    BackendKind {
         prefix: "exec",
         pattern: "exec:<command>",
         help: "an external implementation speaking runner/PROTOCOL.md",
         open: open_exec,
     },
-    Kind {
+    BackendKind {
         prefix: "egl",
         pattern: "egl:*",
         help: "egl[@<lib-dir>]:<driver>:<api>[:<form>], a GL driver through EGL (surfaceless, or EGL 1.4 pbuffer) in a gl-worker child",
         open: open_gl,
     },
-    Kind {
+    BackendKind {
         prefix: "osmesa",
         pattern: "osmesa:*",
         help: "osmesa:<driver>:<api>[:<form>], a Mesa driver through OSMesa in a gl-worker child",
         open: open_gl,
     },
-    Kind {
+    BackendKind {
         prefix: "webgl",
         pattern: "webgl:chromium",
         help: "WebGL 2.0 in headless Chromium (ANGLE on SwiftShader), the es300 path, in a webgl-worker child",
         open: open_webgl,
     },
-    Kind {
+    BackendKind {
         prefix: "mock",
         pattern: "mock:<script>",
         help: "a scripted implementation for testing the runner itself",
@@ -61,7 +61,7 @@ pub const KINDS: &[Kind] = &[
 ];
 
 /// The kind a backend name belongs to.
-pub fn kind_of(name: &str) -> Option<&'static Kind> {
+pub fn kind_of(name: &str) -> Option<&'static BackendKind> {
     let prefix = name.split_once(':').map_or(name, |(k, _)| k);
     // `egl@<lib-dir>:...`: an EGL backend with its library directory.
     let prefix = prefix.split_once('@').map_or(prefix, |(k, _)| k);

@@ -1,7 +1,7 @@
 //! Backends: implementations of depth-comparison lookups that the runner tests.
 //!
 //! Each backend declares its [`Capabilities`] (the runner turns anything outside them into Skip
-//! with the reason before sending) and runs a batch of cases, answering one [`CaseOutcome`] per
+//! with the reason before sending) and runs a batch of cases, answering one [`CaseAnswer`] per
 //! case in order. Names (`--backend`):
 //! - `soft` / `soft:<spec>`: the project's own texture unit (shadowcheck-soft);
 //! - `exec:<command line>`: an external process speaking runner/PROTOCOL.md;
@@ -27,7 +27,7 @@ use std::time::Duration;
 
 /// What a backend returned for one API path of a case.
 #[derive(Debug, Clone, PartialEq)]
-pub enum ApiOutcome {
+pub enum ApiAnswer {
     Rgba {
         rgba: [f64; 4],
         stored: Option<Texels>,
@@ -44,8 +44,8 @@ pub trait Sendable: Sync {
     fn id(&self) -> &str;
     /// Appends the request line (without the newline).
     fn write(&self, buf: &mut Vec<u8>, with_expect: bool);
-    /// The outcome an answer line gives this case.
-    fn outcome(&self, reply: Reply) -> CaseOutcome;
+    /// The answer an answer line gives this case.
+    fn answer(&self, reply: Reply) -> CaseAnswer;
 }
 
 /// A lookup case as a backend is sent it: the fixture's case and the API paths it is a test of
@@ -64,8 +64,8 @@ impl Sendable for Sent<'_> {
     fn write(&self, buf: &mut Vec<u8>, with_expect: bool) {
         Request::write_case_on(buf, self.case, self.api, with_expect)
     }
-    fn outcome(&self, reply: Reply) -> CaseOutcome {
-        answer::to_outcome(self.case, self.api, reply)
+    fn answer(&self, reply: Reply) -> CaseAnswer {
+        answer::to_answer(self.case, self.api, reply)
     }
 }
 
@@ -76,16 +76,16 @@ impl Sendable for StateCase {
     fn write(&self, buf: &mut Vec<u8>, with_expect: bool) {
         Request::write_state(buf, self, with_expect)
     }
-    fn outcome(&self, reply: Reply) -> CaseOutcome {
-        answer::to_state_outcome(self, reply)
+    fn answer(&self, reply: Reply) -> CaseAnswer {
+        answer::to_state_answer(self, reply)
     }
 }
 
 /// The answer for one case.
 #[derive(Debug, Clone, PartialEq)]
-pub enum CaseOutcome {
+pub enum CaseAnswer {
     /// Per API path; paths of the case that are missing here are Skip.
-    Observed(Vec<(ApiPath, ApiOutcome)>),
+    Observed(Vec<(ApiPath, ApiAnswer)>),
     Skip(String),
     /// The implementation reported an error for this case (Fail with the message).
     Error(String),
@@ -101,7 +101,7 @@ pub enum BackendError {
     Setup { backend: String, msg: String },
 }
 
-/// A backend. `run_batch` answers `cases.len()` outcomes in order (once the run is interrupted
+/// A backend. `answer_batch` gives `cases.len()` answers in order (once the run is interrupted
 /// ([`crate::interrupt`]), possibly only those of a prefix: the cases it got answers for); the cases it receives are
 /// already inside its capabilities (the runner filtered them) and name only supported API paths
 /// ([`Sent::api`]; the case's own list may name more).
@@ -109,19 +109,19 @@ pub enum BackendError {
 pub trait Backend: Send {
     fn name(&self) -> &str;
     fn capabilities(&self) -> &Capabilities;
-    fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome>;
-    /// Before `run_batch(current)`, the batch the runner will run after it: a backend whose
+    fn answer_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseAnswer>;
+    /// Before `answer_batch(current)`, the batch the runner will run after it: a backend whose
     /// implementation works apart from the runner (a process) may send both now, `current`
     /// first, so that the implementation never waits for the runner between batches. They are
-    /// then run by the next two `run_batch` calls, with exactly these cases; nothing is owed if
+    /// then run by the next two `answer_batch` calls, with exactly these cases; nothing is owed if
     /// those calls never come.
     fn send_ahead(&mut self, _current: &[Sent<'_>], _next: &[Sent<'_>]) {}
     /// Runs TexParameter state cases (only sent when the capabilities list the `tex_parameter`
     /// feature, or declare no feature list). A backend without them answers Skip.
-    fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {
+    fn answer_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseAnswer> {
         cases
             .iter()
-            .map(|_| CaseOutcome::Skip("this backend runs no state cases".into()))
+            .map(|_| CaseAnswer::Skip("this backend runs no state cases".into()))
             .collect()
     }
     /// How many cases the runner hands over at once (streaming granularity of results.jsonl).

@@ -12,7 +12,7 @@
 //! Once the run is interrupted ([`crate::interrupt`]) no batch is sent, of the batch in flight
 //! only the cases answered whole are kept, and no re-run is made.
 
-use crate::backend::{Backend, CaseOutcome, Sent, Support};
+use crate::backend::{Backend, CaseAnswer, Sent, Support};
 use crate::baseline::Lists;
 use crate::events::{Event, Fanout, Sink, Timing};
 use crate::interrupt;
@@ -347,7 +347,7 @@ pub fn run_backend(
                 backend.send_ahead(&refs, &sent(next));
             }
             let t0 = Instant::now();
-            let mut outcomes = backend.run_batch(&refs);
+            let mut outcomes = backend.answer_batch(&refs);
             let interrupted = interrupt::requested();
             let mut chunk = chunk;
             if interrupted {
@@ -445,7 +445,7 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
     let mut outcomes = Vec::with_capacity(refs.len());
     let mut earlier = Vec::new();
     for chunk in refs.chunks(backend.batch_size().max(1)) {
-        let mut got = backend.run_batch(chunk);
+        let mut got = backend.answer_batch(chunk);
         let ids: Vec<&str> = chunk.iter().map(|c| c.case.id.as_str()).collect();
         let faults = backend.take_faults();
         blame_in_batch(&ids, &mut got, &faults);
@@ -460,7 +460,7 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
         return;
     }
     let recurred = refs.iter().zip(&outcomes).find_map(|(c, o)| {
-        matches!(o, CaseOutcome::Crash(_) | CaseOutcome::Timeout(_)).then_some(c.case.id.as_str())
+        matches!(o, CaseAnswer::Crash(_) | CaseAnswer::Timeout(_)).then_some(c.case.id.as_str())
     });
     for d in backend.take_diagnostics() {
         ctx.fanout.emit(&Event::Diagnostic {
