@@ -2,12 +2,10 @@
 //!
 //! Each backend declares its [`Capabilities`] (the runner turns anything outside them into Skip
 //! with the reason before sending) and runs a batch of cases, answering one [`CaseAnswer`] per
-//! case in order. Names (`--backend`):
-//! - `soft` / `soft:<spec>`: the project's own texture unit (shadowcheck-soft);
-//! - `exec:<command line>`: an external process speaking runner/PROTOCOL.md;
-//! - `egl:*`, `osmesa:*`: GL drivers, each in a `shadowcheck gl-worker` child speaking the protocol;
-//! - `webgl:chromium`: WebGL 2.0 in headless Chromium, in a `shadowcheck webgl-worker` child;
-//! - `mock:<script>`: a scripted implementation for testing the runner itself.
+//! case in order. The names (`--backend`) and everything else the runner knows about each kind of
+//! backend (how it opens, its default instances, its worker subcommand, its help) are one table,
+//! [`kinds::KINDS`]; each kind with code of its own has a module here (`soft`, `exec`, `gl`,
+//! `webgl`, `mock`).
 
 mod answer;
 pub mod command;
@@ -181,11 +179,6 @@ impl Default for Options {
     }
 }
 
-/// The GL backends this machine offers (`egl:...`, `osmesa:...`), from the GL helper's probe.
-pub fn gl_backends() -> Vec<String> {
-    gl::probe()
-}
-
 /// A backend name and why it does not run here.
 pub type Unavailable = (String, String);
 
@@ -193,7 +186,7 @@ pub type Unavailable = (String, String);
 #[derive(Debug, Default)]
 pub struct Defaults {
     /// Run: `soft`, every GL backend a machine with Mesa offers and `webgl:chromium` when
-    /// Chromium is installed.
+    /// Chromium is installed (each kind's [`kinds::DefaultInstances`]).
     pub run: Vec<String>,
     /// Cannot start here (a driver not installed or hidden): the run goes on without them and exits
     /// 96 unless `--skip-missing`. Combinations that can never work (OSMesa with ES, OSMesa with
@@ -209,32 +202,23 @@ pub struct Defaults {
     pub not_applicable: Vec<Unavailable>,
 }
 
-/// Backends run when none is named, and those left out with the reason ([`Defaults`]).
+/// Backends run when none is named, and those left out with the reason ([`Defaults`]): each kind's
+/// default instances ([`kinds::BackendKind::defaults`]), in table order.
 pub fn default_backends() -> Defaults {
-    let mut d = Defaults {
-        run: vec!["soft".to_string()],
-        ..Defaults::default()
-    };
-    for (name, probed) in gl::probe_report() {
-        let parsed = name.parse::<shadowcheck_gl::BackendName>().ok();
-        let impossible = parsed.and_then(|b| b.static_unavailability()).is_some();
-        let not_installed = parsed.and_then(|b| b.missing_file());
-        match probed {
-            _ if impossible => {}
-            Ok(gl::Probed::Runs) => d.run.push(name),
-            Ok(gl::Probed::RunsNothing(why)) => d.not_applicable.push((name, why)),
-            Err(_) if not_installed.is_some() => {
-                if let Some((file, install)) = not_installed {
-                    d.absent
-                        .push((name, format!("{} not found; `{install}`", file.display())));
-                }
-            }
-            Err(why) => d.missing.push((name, why)),
+    sort_defaults(kinds::probe_defaults())
+}
+
+/// Each default instance into its list by what its probe found (an impossible one into none).
+fn sort_defaults(found: Vec<(String, kinds::Found)>) -> Defaults {
+    let mut d = Defaults::default();
+    for (name, found) in found {
+        match found {
+            kinds::Found::Runs => d.run.push(name),
+            kinds::Found::RunsNothing(why) => d.not_applicable.push((name, why)),
+            kinds::Found::Missing(why) => d.missing.push((name, why)),
+            kinds::Found::Absent(how) => d.absent.push((name, how)),
+            kinds::Found::Impossible => {}
         }
-    }
-    match webgl::installed() {
-        Ok(()) => d.run.push("webgl:chromium".to_string()),
-        Err(why) => d.absent.push(("webgl:chromium".to_string(), why)),
     }
     d
 }
@@ -245,4 +229,30 @@ pub fn open(name: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError
     let kind = kinds::kind_of(name).ok_or_else(|| BackendError::Unknown(name.to_string()))?;
     let rest = name.split_once(':').map_or("", |(_, r)| r);
     (kind.open)(name, rest, opts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::kinds::Found;
+    use super::*;
+
+    #[test]
+    fn each_default_instance_goes_to_the_list_of_what_was_found() {
+        let d = sort_defaults(vec![
+            ("soft".into(), Found::Runs),
+            (
+                "egl:llvmpipe:es2".into(),
+                Found::RunsNothing("no shadow".into()),
+            ),
+            ("egl:zink:core".into(), Found::Missing("no device".into())),
+            ("osmesa:llvmpipe:es3".into(), Found::Impossible),
+            ("egl:llvmpipe:core".into(), Found::Runs),
+            ("webgl:chromium".into(), Found::Absent("apt".into())),
+        ]);
+        assert_eq!(d.run, ["soft", "egl:llvmpipe:core"]);
+        let pair = |n: &str, w: &str| (n.to_string(), w.to_string());
+        assert_eq!(d.not_applicable, [pair("egl:llvmpipe:es2", "no shadow")]);
+        assert_eq!(d.missing, [pair("egl:zink:core", "no device")]);
+        assert_eq!(d.absent, [pair("webgl:chromium", "apt")]);
+    }
 }

@@ -74,9 +74,7 @@ pub fn merge(main: CaseAnswer, points: Vec<CaseAnswer>) -> CaseAnswer {
             }
             CaseAnswer::Error(e) => return CaseAnswer::Error(format!("sweep point {k}: {e}")),
             CaseAnswer::Crash(e) => return CaseAnswer::Crash(format!("sweep point {k}: {e}")),
-            CaseAnswer::Timeout(e) => {
-                return CaseAnswer::Timeout(format!("sweep point {k}: {e}"))
-            }
+            CaseAnswer::Timeout(e) => return CaseAnswer::Timeout(format!("sweep point {k}: {e}")),
         };
         for (api, out) in paths.iter_mut() {
             let ApiAnswer::Rgba { sweep, .. } = out else {

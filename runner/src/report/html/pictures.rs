@@ -429,7 +429,10 @@ mod tests {
         };
         let s = heatmap(
             "lequal",
-            &[p(0.2, 0.5, CellShade::Pass, 0.0), p(0.8, 0.5, CellShade::Fail, 0.0)],
+            &[
+                p(0.2, 0.5, CellShade::Pass, 0.0),
+                p(0.8, 0.5, CellShade::Fail, 0.0),
+            ],
         );
         assert!(s.starts_with("<svg"));
         assert_eq!(s.matches(FAIL_COLOUR).count(), 1);
