@@ -474,7 +474,43 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
         .iter()
         .map(|(case, api, _, _)| Sent { case, api })
         .collect();
-    let mut outcomes = Vec::with_capacity(refs.len());
+    let (answers, earlier) = answer_again(backend, &refs);
+    if interrupt::requested() {
+        return;
+    }
+    let recurred = refs.iter().zip(&answers).find_map(|(c, o)| {
+        matches!(o, CaseAnswer::Crash(_) | CaseAnswer::Timeout(_)).then_some(c.case.id.as_str())
+    });
+    for d in backend.take_diagnostics() {
+        ctx.fanout.emit(&Event::Diagnostic {
+            backend: &name,
+            message: &d,
+        });
+    }
+    for ((sent, (_, _, idx, file)), answer) in refs.iter().zip(&cases).zip(answers.iter()) {
+        let again = judge_outcome(&name, *sent, answer, 0.0, *file);
+        for (&i, second) in idx.iter().zip(again) {
+            mark_rerun(&mut ctx.results[i], second.outcome, recurred);
+            let r = ctx.results[i].clone();
+            ctx.fanout.emit(&Event::CaseFinished {
+                result: &r,
+                replayed: false,
+            });
+        }
+    }
+    // Faults the re-run found on cases it did not send (their extra answers came late).
+    blame_earlier(ctx, &name, &[], &earlier);
+    ctx.fanout.emit(&Event::BatchFinished { backend: &name });
+}
+
+/// Sends `refs` to the backend again, in batches: the answers, with the faults found on each batch
+/// blamed on its cases, and the faults that name cases of earlier batches (extra answers that came
+/// late).
+fn answer_again(
+    backend: &mut dyn Backend,
+    refs: &[Sent<'_>],
+) -> (Vec<CaseAnswer>, Vec<(String, String)>) {
+    let mut answers = Vec::with_capacity(refs.len());
     let mut earlier = Vec::new();
     for chunk in refs.chunks(backend.batch_size().max(1)) {
         let mut got = backend.answer_batch(chunk);
@@ -486,50 +522,31 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
                 .into_iter()
                 .filter(|(id, _)| !ids.contains(&id.as_str())),
         );
-        outcomes.extend(got);
+        answers.extend(got);
     }
-    if interrupt::requested() {
-        return;
+    (answers, earlier)
+}
+
+/// Records the re-run's outcome `second` on the regression `r`: a changed outcome makes it a Flake,
+/// except a Crash or Timeout while the implementation crashed or hung again in the re-run (on the
+/// case `recurred`), which stays, with the reason saying so.
+fn mark_rerun(r: &mut TestResult, second: Outcome, recurred: Option<&str>) {
+    r.rerun = Some(second);
+    let died = matches!(r.outcome, Outcome::Crash | Outcome::Timeout);
+    if let (true, Some(on)) = (died && second != r.outcome, recurred) {
+        r.reason = Some(format!(
+            "{}; re-run gave {}, but the implementation crashed or hung again in the re-run (on `{on}`): not a flake",
+            r.reason.clone().unwrap_or_default(),
+            second
+        ));
+    } else if second != r.outcome {
+        r.status = Status::Flake;
+        r.reason = Some(format!(
+            "{}; re-run gave {}",
+            r.reason.clone().unwrap_or_default(),
+            second
+        ));
     }
-    let recurred = refs.iter().zip(&outcomes).find_map(|(c, o)| {
-        matches!(o, CaseAnswer::Crash(_) | CaseAnswer::Timeout(_)).then_some(c.case.id.as_str())
-    });
-    for d in backend.take_diagnostics() {
-        ctx.fanout.emit(&Event::Diagnostic {
-            backend: &name,
-            message: &d,
-        });
-    }
-    for ((sent, (_, _, idx, file)), outcome) in refs.iter().zip(&cases).zip(outcomes.iter()) {
-        let again = judge_outcome(&name, *sent, outcome, 0.0, *file);
-        for (&i, second) in idx.iter().zip(again) {
-            let r = &mut ctx.results[i];
-            r.rerun = Some(second.outcome);
-            let died = matches!(r.outcome, Outcome::Crash | Outcome::Timeout);
-            if let (true, Some(on)) = (died && second.outcome != r.outcome, recurred) {
-                r.reason = Some(format!(
-                    "{}; re-run gave {}, but the implementation crashed or hung again in the re-run (on `{on}`): not a flake",
-                    r.reason.clone().unwrap_or_default(),
-                    second.outcome
-                ));
-            } else if second.outcome != r.outcome {
-                r.status = Status::Flake;
-                r.reason = Some(format!(
-                    "{}; re-run gave {}",
-                    r.reason.clone().unwrap_or_default(),
-                    second.outcome
-                ));
-            }
-            let r = r.clone();
-            ctx.fanout.emit(&Event::CaseFinished {
-                result: &r,
-                replayed: false,
-            });
-        }
-    }
-    // Faults the re-run found on cases it did not send (their extra answers came late).
-    blame_earlier(ctx, &name, &[], &earlier);
-    ctx.fanout.emit(&Event::BatchFinished { backend: &name });
 }
 
 /// Results in report order: by backend, then by test name.
