@@ -91,7 +91,7 @@ impl Fanout {
 #[derive(Debug, Clone, Default)]
 pub struct Timing {
     pub cases_sent: usize,
-    /// Seconds inside the backend's `run_batch` (lookups, process I/O).
+    /// Seconds inside the backend's `answer_batch` (lookups, process I/O).
     pub backend_s: f64,
     /// Seconds judging answers and sending events (verdicts, reporters). Judging runs beside the
     /// backend's next batch, so `backend_s + verdict_s` may exceed the wall time.

@@ -78,15 +78,9 @@ enum Command {
     /// Warn) are compared. Markdown on stdout (or JSON with --json); exit 0 when it ran, queue
     /// empty or not; 96 on bad input.
     Consensus(cmd::consensus::Args),
-    /// (internal) A GL worker process speaking runner/PROTOCOL.md on stdin/stdout.
-    #[command(hide = true)]
-    GlWorker(cmd::gl_worker::Args),
-    /// (internal) The `webgl:chromium` worker: headless Chromium speaking runner/PROTOCOL.md.
-    #[command(hide = true)]
-    WebglWorker(cmd::webgl_worker::Args),
-    /// (internal) The `mock:` backend's process, speaking runner/PROTOCOL.md (runner self-tests).
-    #[command(hide = true)]
-    MockWorker(cmd::mock_worker::Args),
+    /// The backend kinds' worker children (hidden; `backend::kinds::KINDS` names them).
+    #[command(flatten)]
+    Worker(cmd::workers::WorkerCommand),
 }
 
 fn main() -> std::process::ExitCode {
@@ -112,9 +106,7 @@ fn main() -> std::process::ExitCode {
         Command::Summarize(a) => cmd::summarize::main(a),
         Command::Repro(a) => cmd::repro::main(a),
         Command::Consensus(a) => cmd::consensus::main(a),
-        Command::GlWorker(a) => cmd::gl_worker::main(a),
-        Command::WebglWorker(a) => cmd::webgl_worker::main(a),
-        Command::MockWorker(a) => cmd::mock_worker::main(a),
+        Command::Worker(w) => w.main(),
     };
     match result {
         Ok(code) => code,
@@ -137,4 +129,36 @@ fn message(e: &anyhow::Error) -> String {
         }
     }
     msg
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Cli;
+    use clap::CommandFactory;
+    use shadowcheck_runner::backend::kinds;
+
+    /// The hidden subcommands are exactly the worker children the table of backend kinds names,
+    /// each with the table's description: a kind whose worker is not wired here (or a worker no
+    /// kind names) fails.
+    #[test]
+    fn the_worker_subcommands_are_those_of_the_kinds_table() {
+        let cli = Cli::command();
+        let hidden: Vec<(String, String)> = cli
+            .get_subcommands()
+            .filter(|c| c.is_hide_set())
+            .map(|c| {
+                let about = c.get_about().map(|a| a.to_string()).unwrap_or_default();
+                (c.get_name().to_string(), about)
+            })
+            .collect();
+        let table: Vec<(String, String)> = kinds::workers()
+            .iter()
+            .map(|w| (w.subcommand.to_string(), w.about.to_string()))
+            .collect();
+        assert_eq!(hidden, table);
+        assert_eq!(
+            table.iter().map(|(s, _)| s.as_str()).collect::<Vec<_>>(),
+            ["gl-worker", "webgl-worker", "mock-worker"]
+        );
+    }
 }

@@ -231,7 +231,7 @@ pub fn run_backends(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::backend::CaseOutcome;
+    use crate::backend::CaseAnswer;
     use crate::backend::Sent;
     use shadowcheck_protocol::Capabilities;
 
@@ -247,10 +247,10 @@ mod tests {
         fn capabilities(&self) -> &Capabilities {
             &self.caps
         }
-        fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
+        fn answer_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseAnswer> {
             cases
                 .iter()
-                .map(|_| CaseOutcome::Skip("idle".into()))
+                .map(|_| CaseAnswer::Skip("idle".into()))
                 .collect()
         }
         fn compiles_per_state(&self) -> bool {

@@ -1,19 +1,19 @@
-//! From an implementation's answer line ([`Reply`]) to the [`CaseOutcome`] of the case it answers
+//! From an implementation's answer line ([`Reply`]) to the [`CaseAnswer`] of the case it answers
 //! (PROTOCOL.md "Answers"): every API path of the case gets exactly one result or skip; a path
 //! left out, given two results, or not in the case makes the case the implementation's error.
 
-use super::{ApiOutcome, CaseOutcome};
+use super::{ApiAnswer, CaseAnswer};
 use shadowcheck_model::{ApiPath, Case, StateCase};
 use shadowcheck_protocol::{PathResult, PathSkip, Reply, StateResult};
 
-/// The outcome of `case`, sent with API paths `api`, from its answer.
-pub fn to_outcome(case: &Case, api: &[ApiPath], a: Reply) -> CaseOutcome {
+/// The [`CaseAnswer`] for `case`, sent with API paths `api`, from its answer.
+pub fn to_answer(case: &Case, api: &[ApiPath], a: Reply) -> CaseAnswer {
     match a {
         Reply::Observation { results, .. }
             if results.iter().any(|r| r.sweep.len() != case.sweep.len()) =>
         {
             let r = results.iter().find(|r| r.sweep.len() != case.sweep.len());
-            CaseOutcome::Error(format!(
+            CaseAnswer::Error(format!(
                 "{} sweep results for API path `{}`; the case has {} points",
                 r.map_or(0, |r| r.sweep.len()),
                 r.map_or("", |r| r.api.as_str()),
@@ -34,7 +34,7 @@ pub fn to_outcome(case: &Case, api: &[ApiPath], a: Reply) -> CaseOutcome {
                          sweep,
                          ..
                      }| {
-                        let outcome = ApiOutcome::Rgba {
+                        let outcome = ApiAnswer::Rgba {
                             rgba: rgba.0,
                             stored,
                             sweep: sweep.into_iter().map(|p| p.0).collect(),
@@ -46,14 +46,14 @@ pub fn to_outcome(case: &Case, api: &[ApiPath], a: Reply) -> CaseOutcome {
             skipped,
         ),
         Reply::StateObservation { .. } => {
-            CaseOutcome::Error("a state observation answering a lookup case".into())
+            CaseAnswer::Error("a state observation answering a lookup case".into())
         }
         other => common(other),
     }
 }
 
-/// The outcome of a state case from its answer (`state_observation`), by the same rules.
-pub fn to_state_outcome(case: &StateCase, a: Reply) -> CaseOutcome {
+/// The [`CaseAnswer`] for a state case from its reply (`state_observation`), by the same rules.
+pub fn to_state_answer(case: &StateCase, a: Reply) -> CaseAnswer {
     match a {
         Reply::StateObservation {
             results, skipped, ..
@@ -61,42 +61,42 @@ pub fn to_state_outcome(case: &StateCase, a: Reply) -> CaseOutcome {
             &case.api,
             results
                 .into_iter()
-                .map(|StateResult { api, observed }| (api, ApiOutcome::State(observed)))
+                .map(|StateResult { api, observed }| (api, ApiAnswer::State(observed)))
                 .collect(),
             skipped,
         ),
         Reply::Observation { .. } => {
-            CaseOutcome::Error("a lookup observation answering a state case".into())
+            CaseAnswer::Error("a lookup observation answering a state case".into())
         }
         other => common(other),
     }
 }
 
 /// Answers that mean the same for both kinds of case.
-fn common(a: Reply) -> CaseOutcome {
+fn common(a: Reply) -> CaseAnswer {
     match a {
-        Reply::Skip { reason, .. } => CaseOutcome::Skip(reason),
-        Reply::Error { message, .. } => CaseOutcome::Error(message),
+        Reply::Skip { reason, .. } => CaseAnswer::Skip(reason),
+        Reply::Error { message, .. } => CaseAnswer::Error(message),
         // parse_answer never returns a hello.
-        _ => CaseOutcome::Error("a hello where an answer was expected".into()),
+        _ => CaseAnswer::Error("a hello where an answer was expected".into()),
     }
 }
 
 /// Every path of `case_api` gets exactly one result or skip.
 fn collect(
     case_api: &[ApiPath],
-    results: Vec<(String, ApiOutcome)>,
+    results: Vec<(String, ApiAnswer)>,
     skipped: Vec<PathSkip>,
-) -> CaseOutcome {
+) -> CaseAnswer {
     let mut v = Vec::with_capacity(results.len() + skipped.len());
     for (api, outcome) in results {
         match ApiPath::from_key(&api) {
             Some(a) if v.iter().any(|(p, _)| *p == a) => {
-                return CaseOutcome::Error(format!("two results for API path `{api}`"))
+                return CaseAnswer::Error(format!("two results for API path `{api}`"))
             }
             Some(a) if case_api.contains(&a) => v.push((a, outcome)),
             _ => {
-                return CaseOutcome::Error(format!(
+                return CaseAnswer::Error(format!(
                     "result for API path `{api}`, which the case does not have"
                 ))
             }
@@ -107,11 +107,11 @@ fn collect(
         match ApiPath::from_key(&api) {
             Some(a) if case_api.contains(&a) => {
                 if !v.iter().any(|(p, _)| *p == a) {
-                    v.push((a, ApiOutcome::Skip(reason)));
+                    v.push((a, ApiAnswer::Skip(reason)));
                 }
             }
             _ => {
-                return CaseOutcome::Error(format!(
+                return CaseAnswer::Error(format!(
                     "skipped API path `{api}`, which the case does not have"
                 ))
             }
@@ -120,12 +120,12 @@ fn collect(
     // Every path sent is answered or skipped: a path left out is the implementation's error
     // (never a silent Skip).
     if let Some(a) = case_api.iter().find(|a| !v.iter().any(|(p, _)| p == *a)) {
-        return CaseOutcome::Error(format!(
+        return CaseAnswer::Error(format!(
             "neither a result nor a skip for API path `{}`",
             a.key()
         ));
     }
-    CaseOutcome::Observed(v)
+    CaseAnswer::Observed(v)
 }
 
 #[cfg(test)]
@@ -142,41 +142,41 @@ mod tests {
     fn skipped_paths_become_skip_with_the_implementations_reason() {
         let case = compat_case();
         let line = r#"{"type":"observation","case_id":"x","results":[{"api":"glsl120","rgba":[1,1,1,1],"note":"shadow2D"}],"skipped":[{"api":"ff","reason":"fixed-function has no cube arrays"}]}"#;
-        let out = to_outcome(&case, &case.api, Reply::parse_answer(line).unwrap());
-        let CaseOutcome::Observed(v) = out else {
+        let out = to_answer(&case, &case.api, Reply::parse_answer(line).unwrap());
+        let CaseAnswer::Observed(v) = out else {
             panic!("{out:?}")
         };
         assert!(matches!(
             v.iter().find(|(a, _)| *a == ApiPath::Glsl120),
-            Some((_, ApiOutcome::Rgba { .. }))
+            Some((_, ApiAnswer::Rgba { .. }))
         ));
         match v.iter().find(|(a, _)| *a == ApiPath::FixedFunction) {
-            Some((_, ApiOutcome::Skip(m))) => assert_eq!(m, "fixed-function has no cube arrays"),
+            Some((_, ApiAnswer::Skip(m))) => assert_eq!(m, "fixed-function has no cube arrays"),
             other => panic!("{other:?}"),
         }
         // A skipped path the case does not have is the implementation's error, as a stray result is.
         let bad = r#"{"type":"observation","case_id":"x","results":[],"skipped":[{"api":"core","reason":"no"}]}"#;
         assert!(matches!(
-            to_outcome(&case, &case.api, Reply::parse_answer(bad).unwrap()),
-            CaseOutcome::Error(_)
+            to_answer(&case, &case.api, Reply::parse_answer(bad).unwrap()),
+            CaseAnswer::Error(_)
         ));
         // An answered path that is also listed keeps its result.
         let both = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]}],"skipped":[{"api":"ff","reason":"no"},{"api":"glsl120","reason":"no"}]}"#;
-        let CaseOutcome::Observed(v) =
-            to_outcome(&case, &case.api, Reply::parse_answer(both).unwrap())
+        let CaseAnswer::Observed(v) =
+            to_answer(&case, &case.api, Reply::parse_answer(both).unwrap())
         else {
             panic!()
         };
         assert_eq!(v.len(), 2);
-        assert!(matches!(v[0].1, ApiOutcome::Rgba { .. }));
+        assert!(matches!(v[0].1, ApiAnswer::Rgba { .. }));
     }
 
     #[test]
     fn two_results_for_one_path_and_paths_left_out_are_the_implementations_error() {
         let case = compat_case();
         let error =
-            |line: &str| match to_outcome(&case, &case.api, Reply::parse_answer(line).unwrap()) {
-                CaseOutcome::Error(m) => m,
+            |line: &str| match to_answer(&case, &case.api, Reply::parse_answer(line).unwrap()) {
+                CaseAnswer::Error(m) => m,
                 other => panic!("{other:?}"),
             };
         let dup = r#"{"type":"observation","case_id":"x","results":[{"api":"ff","rgba":[0,0,0,1]},{"api":"glsl120","rgba":[0,0,0,1]},{"api":"ff","rgba":[1,1,1,1]}]}"#;

@@ -15,7 +15,7 @@
 
 pub use super::command::{split_command, ProcessCommand};
 use super::process::Proc;
-use super::{Backend, BackendError, Capabilities, CaseOutcome, Options, Sendable, Sent};
+use super::{Backend, BackendError, Capabilities, CaseAnswer, Options, Sendable, Sent};
 use shadowcheck_model::StateCase;
 use shadowcheck_protocol::{Hello, Reply, Request};
 use std::collections::{HashSet, VecDeque};
@@ -194,7 +194,7 @@ impl ExecBackend {
     fn attempt<T: Sendable + ?Sized>(
         &mut self,
         group: &[&T],
-    ) -> (Vec<CaseOutcome>, Option<Failure>) {
+    ) -> (Vec<CaseAnswer>, Option<Failure>) {
         // A group written ahead (`send_ahead`) to this process is only read here.
         let written = self.take_ahead(group);
         if !written {
@@ -233,7 +233,7 @@ impl ExecBackend {
                 }
             };
             match Reply::parse_answer(&line) {
-                Ok(a) if a.case_id() == Some(c.id()) => out.push(c.outcome(a)),
+                Ok(a) if a.case_id() == Some(c.id()) => out.push(c.answer(a)),
                 Ok(a)
                     if a.case_id().is_some_and(|id| {
                         group[..i].iter().any(|g| g.id() == id)
@@ -354,7 +354,7 @@ impl ExecBackend {
     }
 
     /// Runs a group, bisecting whatever a dying or stalling process leaves unanswered.
-    fn run_group<T: Sendable + ?Sized>(&mut self, cases: &[&T]) -> Vec<CaseOutcome> {
+    fn run_group<T: Sendable + ?Sized>(&mut self, cases: &[&T]) -> Vec<CaseAnswer> {
         let mut results = Vec::with_capacity(cases.len());
         while results.len() < cases.len() {
             let rest = &cases[results.len()..];
@@ -363,7 +363,7 @@ impl ExecBackend {
                 break;
             }
             if self.timed_out_case.as_deref() == Some(case_of(rest[0].id())) {
-                results.push(CaseOutcome::Timeout(
+                results.push(CaseAnswer::Timeout(
                     "not sent: another part of this case (its lookup or a sweep point) gave no answer".into(),
                 ));
                 continue;
@@ -373,13 +373,13 @@ impl ExecBackend {
                     "not sent: the implementation gave no answer to {} cases in a row, so it was given up (--give-up-after {})",
                     self.timeouts_in_a_row, self.give_up
                 );
-                results.extend(rest.iter().map(|_| CaseOutcome::Timeout(msg.clone())));
+                results.extend(rest.iter().map(|_| CaseAnswer::Timeout(msg.clone())));
                 break;
             }
             if let Err(msg) = self.ensure() {
                 // The implementation cannot even start again: nothing more can run.
                 let msg = format!("cannot restart the implementation: {msg}");
-                results.extend(rest.iter().map(|_| CaseOutcome::Crash(msg.clone())));
+                results.extend(rest.iter().map(|_| CaseAnswer::Crash(msg.clone())));
                 break;
             }
             let (answers, failure) = self.attempt(rest);
@@ -414,7 +414,7 @@ impl ExecBackend {
                         self.name,
                         rest[0].id()
                     ));
-                    results.push(CaseOutcome::Crash(format!("{PROTOCOL_ERROR}: {msg}")));
+                    results.push(CaseAnswer::Crash(format!("{PROTOCOL_ERROR}: {msg}")));
                 }
                 Failure::Died | Failure::Stalled => {
                     let stalled = matches!(failure, Failure::Stalled);
@@ -426,11 +426,11 @@ impl ExecBackend {
                                 self.timeouts_in_a_row += 1;
                                 self.timed_out_case = Some(case.to_string());
                             }
-                            CaseOutcome::Timeout(format!("no answer within {:?}", self.timeout))
+                            CaseAnswer::Timeout(format!("no answer within {:?}", self.timeout))
                         } else {
                             self.timeouts_in_a_row = 0;
                             self.timed_out_case = None;
-                            CaseOutcome::Crash(format!("the process died on this case: {how}"))
+                            CaseAnswer::Crash(format!("the process died on this case: {how}"))
                         };
                         self.push_diag(format!(
                             "{}: `{}`: {}",
@@ -546,7 +546,7 @@ impl Backend for ExecBackend {
             self.ahead.push_back((group_key(&next), spawns));
         }
     }
-    fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
+    fn answer_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseAnswer> {
         // A case sent again (a flake re-run) is sent whole again.
         self.timed_out_case = None;
         if self.sent_whole(cases) {
@@ -557,7 +557,7 @@ impl Backend for ExecBackend {
             })
         }
     }
-    fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {
+    fn answer_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseAnswer> {
         self.timed_out_case = None;
         self.run_group(cases)
     }

@@ -4,6 +4,7 @@
 //! probing which backends this machine can run. The worker itself is the GL crate's.
 
 use super::exec::ProcessCommand;
+use super::kinds::{Found, GL_WORKER};
 use shadowcheck_gl::{libdir, BackendName, Driver, GlError};
 use std::path::PathBuf;
 use std::process::Stdio;
@@ -65,7 +66,11 @@ pub fn worker_command(backend: &str) -> Result<ProcessCommand, GlError> {
     }
     Ok(ProcessCommand {
         program: shadowcheck_exe()?,
-        args: vec!["gl-worker".into(), "--backend".into(), name.to_string()],
+        args: vec![
+            GL_WORKER.subcommand.into(),
+            "--backend".into(),
+            name.to_string(),
+        ],
         env,
     })
 }
@@ -89,6 +94,48 @@ pub fn probe() -> Vec<String> {
         .collect()
 }
 
+/// The instances of the GL kind `prefix` (`egl`, `osmesa`) for a run that names no backend
+/// ([`kinds::DefaultInstances::Probed`](super::kinds::DefaultInstances)): every driver and API of
+/// the platform, probed, with the optional implementations beyond Mesa whose files are not
+/// installed absent and the combinations that can never work impossible.
+pub fn probe_kind(prefix: &str) -> Vec<(String, Found)> {
+    let names: Vec<BackendName> = BackendName::all()
+        .into_iter()
+        .filter(|n| {
+            n.to_string()
+                .split_once(':')
+                .is_some_and(|(p, _)| p == prefix)
+        })
+        .collect();
+    probe_names(&names)
+        .into_iter()
+        .map(|(name, probed)| {
+            let parsed = name.parse::<BackendName>().ok();
+            let impossible = parsed.and_then(|b| b.static_unavailability()).is_some();
+            let not_installed = parsed.and_then(|b| b.missing_file());
+            let found = match (probed, not_installed) {
+                _ if impossible => Found::Impossible,
+                (Ok(Probed::Runs), _) => Found::Runs,
+                (Ok(Probed::RunsNothing(why)), _) => Found::RunsNothing(why),
+                (Err(_), Some((file, install))) => {
+                    Found::Absent(format!("{} not found; `{install}`", file.display()))
+                }
+                (Err(why), None) => Found::Missing(why),
+            };
+            (name, found)
+        })
+        .collect()
+}
+
+/// What to do when a GL backend cannot start: install Mesa's drivers (the Debian packages).
+pub const MESA_HINT: &str = "the GL backends need Mesa's drivers: apt-get install -y libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers";
+
+/// [`MESA_HINT`] for a GL backend name without a library directory (`egl@<lib-dir>:...` loads a
+/// libEGL of its own, which Mesa's packages do not provide).
+pub fn missing_hint(name: &str) -> Option<&'static str> {
+    matches!(libdir::split_lib_dir(name), Ok((None, _))).then_some(MESA_HINT)
+}
+
 /// What the probe of a backend that starts found.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Probed {
@@ -106,9 +153,14 @@ const PROBE_TIMEOUT: Duration = Duration::from_secs(60);
 /// parallel, one child each (`gl-worker --probe`): the child creates the context, checks
 /// GL_RENDERER names the driver, and prints one line; a crash is reported with its signal.
 pub fn probe_report() -> Vec<(String, Result<Probed, String>)> {
+    probe_names(&BackendName::all())
+}
+
+/// [`probe_report`] of some backend names, in their order.
+fn probe_names(names: &[BackendName]) -> Vec<(String, Result<Probed, String>)> {
     let mut running = Vec::new();
     let mut out: Vec<(String, Result<Probed, String>)> = Vec::new();
-    for name in BackendName::all() {
+    for &name in names {
         let key = name.to_string();
         if let Some(why) = name.static_unavailability() {
             out.push((key, Err(why)));
@@ -151,7 +203,7 @@ pub fn probe_report() -> Vec<(String, Result<Probed, String>)> {
         };
         out.push((key, res));
     }
-    let order: Vec<String> = BackendName::all().iter().map(|b| b.to_string()).collect();
+    let order: Vec<String> = names.iter().map(|b| b.to_string()).collect();
     out.sort_by_key(|(k, _)| order.iter().position(|o| o == k));
     out
 }

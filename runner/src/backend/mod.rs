@@ -1,13 +1,11 @@
 //! Backends: implementations of depth-comparison lookups that the runner tests.
 //!
 //! Each backend declares its [`Capabilities`] (the runner turns anything outside them into Skip
-//! with the reason before sending) and runs a batch of cases, answering one [`CaseOutcome`] per
-//! case in order. Names (`--backend`):
-//! - `soft` / `soft:<spec>`: the project's own texture unit (shadowcheck-soft);
-//! - `exec:<command line>`: an external process speaking runner/PROTOCOL.md;
-//! - `egl:*`, `osmesa:*`: GL drivers, each in a `shadowcheck gl-worker` child speaking the protocol;
-//! - `webgl:chromium`: WebGL 2.0 in headless Chromium, in a `shadowcheck webgl-worker` child;
-//! - `mock:<script>`: a scripted implementation for testing the runner itself.
+//! with the reason before sending) and runs a batch of cases, answering one [`CaseAnswer`] per
+//! case in order. The names (`--backend`) and everything else the runner knows about each kind of
+//! backend (how it opens, its default instances, its worker subcommand, its help) are one table,
+//! [`kinds::KINDS`]; each kind with code of its own has a module here (`soft`, `exec`, `gl`,
+//! `webgl`, `mock`).
 
 mod answer;
 pub mod command;
@@ -27,7 +25,7 @@ use std::time::Duration;
 
 /// What a backend returned for one API path of a case.
 #[derive(Debug, Clone, PartialEq)]
-pub enum ApiOutcome {
+pub enum ApiAnswer {
     Rgba {
         rgba: [f64; 4],
         stored: Option<Texels>,
@@ -44,8 +42,8 @@ pub trait Sendable: Sync {
     fn id(&self) -> &str;
     /// Appends the request line (without the newline).
     fn write(&self, buf: &mut Vec<u8>, with_expect: bool);
-    /// The outcome an answer line gives this case.
-    fn outcome(&self, reply: Reply) -> CaseOutcome;
+    /// The answer an answer line gives this case.
+    fn answer(&self, reply: Reply) -> CaseAnswer;
 }
 
 /// A lookup case as a backend is sent it: the fixture's case and the API paths it is a test of
@@ -64,8 +62,8 @@ impl Sendable for Sent<'_> {
     fn write(&self, buf: &mut Vec<u8>, with_expect: bool) {
         Request::write_case_on(buf, self.case, self.api, with_expect)
     }
-    fn outcome(&self, reply: Reply) -> CaseOutcome {
-        answer::to_outcome(self.case, self.api, reply)
+    fn answer(&self, reply: Reply) -> CaseAnswer {
+        answer::to_answer(self.case, self.api, reply)
     }
 }
 
@@ -76,16 +74,16 @@ impl Sendable for StateCase {
     fn write(&self, buf: &mut Vec<u8>, with_expect: bool) {
         Request::write_state(buf, self, with_expect)
     }
-    fn outcome(&self, reply: Reply) -> CaseOutcome {
-        answer::to_state_outcome(self, reply)
+    fn answer(&self, reply: Reply) -> CaseAnswer {
+        answer::to_state_answer(self, reply)
     }
 }
 
 /// The answer for one case.
 #[derive(Debug, Clone, PartialEq)]
-pub enum CaseOutcome {
+pub enum CaseAnswer {
     /// Per API path; paths of the case that are missing here are Skip.
-    Observed(Vec<(ApiPath, ApiOutcome)>),
+    Observed(Vec<(ApiPath, ApiAnswer)>),
     Skip(String),
     /// The implementation reported an error for this case (Fail with the message).
     Error(String),
@@ -101,7 +99,7 @@ pub enum BackendError {
     Setup { backend: String, msg: String },
 }
 
-/// A backend. `run_batch` answers `cases.len()` outcomes in order (once the run is interrupted
+/// A backend. `answer_batch` gives `cases.len()` answers in order (once the run is interrupted
 /// ([`crate::interrupt`]), possibly only those of a prefix: the cases it got answers for); the cases it receives are
 /// already inside its capabilities (the runner filtered them) and name only supported API paths
 /// ([`Sent::api`]; the case's own list may name more).
@@ -109,19 +107,19 @@ pub enum BackendError {
 pub trait Backend: Send {
     fn name(&self) -> &str;
     fn capabilities(&self) -> &Capabilities;
-    fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome>;
-    /// Before `run_batch(current)`, the batch the runner will run after it: a backend whose
+    fn answer_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseAnswer>;
+    /// Before `answer_batch(current)`, the batch the runner will run after it: a backend whose
     /// implementation works apart from the runner (a process) may send both now, `current`
     /// first, so that the implementation never waits for the runner between batches. They are
-    /// then run by the next two `run_batch` calls, with exactly these cases; nothing is owed if
+    /// then run by the next two `answer_batch` calls, with exactly these cases; nothing is owed if
     /// those calls never come.
     fn send_ahead(&mut self, _current: &[Sent<'_>], _next: &[Sent<'_>]) {}
     /// Runs TexParameter state cases (only sent when the capabilities list the `tex_parameter`
     /// feature, or declare no feature list). A backend without them answers Skip.
-    fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {
+    fn answer_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseAnswer> {
         cases
             .iter()
-            .map(|_| CaseOutcome::Skip("this backend runs no state cases".into()))
+            .map(|_| CaseAnswer::Skip("this backend runs no state cases".into()))
             .collect()
     }
     /// How many cases the runner hands over at once (streaming granularity of results.jsonl).
@@ -181,11 +179,6 @@ impl Default for Options {
     }
 }
 
-/// The GL backends this machine offers (`egl:...`, `osmesa:...`), from the GL helper's probe.
-pub fn gl_backends() -> Vec<String> {
-    gl::probe()
-}
-
 /// A backend name and why it does not run here.
 pub type Unavailable = (String, String);
 
@@ -193,7 +186,7 @@ pub type Unavailable = (String, String);
 #[derive(Debug, Default)]
 pub struct Defaults {
     /// Run: `soft`, every GL backend a machine with Mesa offers and `webgl:chromium` when
-    /// Chromium is installed.
+    /// Chromium is installed (each kind's [`kinds::DefaultInstances`]).
     pub run: Vec<String>,
     /// Cannot start here (a driver not installed or hidden): the run goes on without them and exits
     /// 96 unless `--skip-missing`. Combinations that can never work (OSMesa with ES, OSMesa with
@@ -209,32 +202,23 @@ pub struct Defaults {
     pub not_applicable: Vec<Unavailable>,
 }
 
-/// Backends run when none is named, and those left out with the reason ([`Defaults`]).
+/// Backends run when none is named, and those left out with the reason ([`Defaults`]): each kind's
+/// default instances ([`kinds::BackendKind::defaults`]), in table order.
 pub fn default_backends() -> Defaults {
-    let mut d = Defaults {
-        run: vec!["soft".to_string()],
-        ..Defaults::default()
-    };
-    for (name, probed) in gl::probe_report() {
-        let parsed = name.parse::<shadowcheck_gl::BackendName>().ok();
-        let impossible = parsed.and_then(|b| b.static_unavailability()).is_some();
-        let not_installed = parsed.and_then(|b| b.missing_file());
-        match probed {
-            _ if impossible => {}
-            Ok(gl::Probed::Runs) => d.run.push(name),
-            Ok(gl::Probed::RunsNothing(why)) => d.not_applicable.push((name, why)),
-            Err(_) if not_installed.is_some() => {
-                if let Some((file, install)) = not_installed {
-                    d.absent
-                        .push((name, format!("{} not found; `{install}`", file.display())));
-                }
-            }
-            Err(why) => d.missing.push((name, why)),
+    sort_defaults(kinds::probe_defaults())
+}
+
+/// Each default instance into its list by what its probe found (an impossible one into none).
+fn sort_defaults(found: Vec<(String, kinds::Found)>) -> Defaults {
+    let mut d = Defaults::default();
+    for (name, found) in found {
+        match found {
+            kinds::Found::Runs => d.run.push(name),
+            kinds::Found::RunsNothing(why) => d.not_applicable.push((name, why)),
+            kinds::Found::Missing(why) => d.missing.push((name, why)),
+            kinds::Found::Absent(how) => d.absent.push((name, how)),
+            kinds::Found::Impossible => {}
         }
-    }
-    match webgl::installed() {
-        Ok(()) => d.run.push("webgl:chromium".to_string()),
-        Err(why) => d.absent.push(("webgl:chromium".to_string(), why)),
     }
     d
 }
@@ -245,4 +229,30 @@ pub fn open(name: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError
     let kind = kinds::kind_of(name).ok_or_else(|| BackendError::Unknown(name.to_string()))?;
     let rest = name.split_once(':').map_or("", |(_, r)| r);
     (kind.open)(name, rest, opts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::kinds::Found;
+    use super::*;
+
+    #[test]
+    fn each_default_instance_goes_to_the_list_of_what_was_found() {
+        let d = sort_defaults(vec![
+            ("soft".into(), Found::Runs),
+            (
+                "egl:llvmpipe:es2".into(),
+                Found::RunsNothing("no shadow".into()),
+            ),
+            ("egl:zink:core".into(), Found::Missing("no device".into())),
+            ("osmesa:llvmpipe:es3".into(), Found::Impossible),
+            ("egl:llvmpipe:core".into(), Found::Runs),
+            ("webgl:chromium".into(), Found::Absent("apt".into())),
+        ]);
+        assert_eq!(d.run, ["soft", "egl:llvmpipe:core"]);
+        let pair = |n: &str, w: &str| (n.to_string(), w.to_string());
+        assert_eq!(d.not_applicable, [pair("egl:llvmpipe:es2", "no shadow")]);
+        assert_eq!(d.missing, [pair("egl:zink:core", "no device")]);
+        assert_eq!(d.absent, [pair("webgl:chromium", "apt")]);
+    }
 }

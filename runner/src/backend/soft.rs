@@ -5,7 +5,7 @@
 //! `soft` runs each case under its own spec's variant. In-process and allocation-light: one
 //! `SoftUnit` per spec, built once; each lookup returns four f32 channels.
 
-use super::{ApiOutcome, Backend, BackendError, Capabilities, CaseOutcome, Sent};
+use super::{ApiAnswer, Backend, BackendError, Capabilities, CaseAnswer, Sent};
 use shadowcheck_model::{Spec, StateCase};
 use shadowcheck_soft::SoftUnit;
 
@@ -48,11 +48,11 @@ impl SoftBackend {
         self.units[i].get_or_insert_with(|| SoftUnit::new(spec))
     }
 
-    fn run_one(&mut self, sent: Sent<'_>) -> CaseOutcome {
+    fn run_one(&mut self, sent: Sent<'_>) -> CaseAnswer {
         let case = sent.case;
         if let Some(only) = self.only {
             if case.spec != only {
-                return CaseOutcome::Skip(format!("case is for spec {}", case.spec));
+                return CaseAnswer::Skip(format!("case is for spec {}", case.spec));
             }
         }
         let unit = self.unit(case.spec);
@@ -66,17 +66,17 @@ impl SoftBackend {
                     unit.sample_sweep(case, api)
                 };
                 let out = match sampled {
-                    Ok(v) => ApiOutcome::Rgba {
+                    Ok(v) => ApiAnswer::Rgba {
                         rgba: v.first().map_or([f64::NAN; 4], |v| v.map(f64::from)),
                         stored: None,
                         sweep: v.iter().skip(1).map(|v| v.map(f64::from)).collect(),
                     },
-                    Err(e) => ApiOutcome::Skip(e.to_string()),
+                    Err(e) => ApiAnswer::Skip(e.to_string()),
                 };
                 (api, out)
             })
             .collect();
-        CaseOutcome::Observed(results)
+        CaseAnswer::Observed(results)
     }
 }
 
@@ -93,23 +93,23 @@ impl Backend for SoftBackend {
     fn batch_size(&self) -> usize {
         1024
     }
-    fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
+    fn answer_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseAnswer> {
         cases.iter().map(|c| self.run_one(*c)).collect()
     }
     /// The soft unit's own TexParameter state (`shadowcheck_soft::tex_param`).
-    fn run_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseOutcome> {
+    fn answer_state_batch(&mut self, cases: &[&StateCase]) -> Vec<CaseAnswer> {
         cases
             .iter()
             .map(|c| match self.only {
                 Some(only) if c.spec != only => {
-                    CaseOutcome::Skip(format!("case is for spec {}", c.spec))
+                    CaseAnswer::Skip(format!("case is for spec {}", c.spec))
                 }
                 _ => {
                     let unit = SoftUnit::new(c.spec);
-                    CaseOutcome::Observed(
+                    CaseAnswer::Observed(
                         c.api
                             .iter()
-                            .map(|&a| (a, ApiOutcome::State(unit.tex_parameter(c, a))))
+                            .map(|&a| (a, ApiAnswer::State(unit.tex_parameter(c, a))))
                             .collect(),
                     )
                 }

@@ -4,15 +4,15 @@
 //! `sweep`. A point that does not come back observed on every path its case was observed on
 //! decides the case's outcome, naming the point.
 
-use super::{ApiOutcome, CaseOutcome, Sent};
+use super::{ApiAnswer, CaseAnswer, Sent};
 use shadowcheck_model::Case;
 
 /// Runs `cases` through `run`, sweeps expanded, and folds the outcomes back (one per case, in
 /// order).
 pub fn run_expanded(
     cases: &[Sent<'_>],
-    run: impl FnOnce(&[Sent<'_>]) -> Vec<CaseOutcome>,
-) -> Vec<CaseOutcome> {
+    run: impl FnOnce(&[Sent<'_>]) -> Vec<CaseAnswer>,
+) -> Vec<CaseAnswer> {
     // Owned cases for every case with a sweep (itself without it, then its points).
     let owned: Vec<Vec<Case>> = cases
         .iter()
@@ -44,48 +44,46 @@ pub fn run_expanded(
     let mut next = || {
         outcomes
             .next()
-            .unwrap_or_else(|| CaseOutcome::Error("internal: missing outcome".into()))
+            .unwrap_or_else(|| CaseAnswer::Error("internal: missing outcome".into()))
     };
     let mut folded = Vec::with_capacity(cases.len());
     for c in cases {
         let n = 1 + c.case.sweep.len();
         if answered < n && crate::interrupt::requested() {
-            // An interrupted run gets the cases answered whole, a prefix (`Backend::run_batch`).
+            // An interrupted run gets the cases answered whole, a prefix (`Backend::answer_batch`).
             break;
         }
         answered = answered.saturating_sub(n);
         let main = next();
-        let points: Vec<CaseOutcome> = (0..c.case.sweep.len()).map(|_| next()).collect();
+        let points: Vec<CaseAnswer> = (0..c.case.sweep.len()).map(|_| next()).collect();
         folded.push(merge(main, points));
     }
     folded
 }
 
 /// Folds the outcomes of a case's points into the outcome of its own lookup.
-pub fn merge(main: CaseOutcome, points: Vec<CaseOutcome>) -> CaseOutcome {
-    let CaseOutcome::Observed(mut paths) = main else {
+pub fn merge(main: CaseAnswer, points: Vec<CaseAnswer>) -> CaseAnswer {
+    let CaseAnswer::Observed(mut paths) = main else {
         return main;
     };
     for (k, point) in points.into_iter().enumerate() {
         let observed = match point {
-            CaseOutcome::Observed(v) => v,
-            CaseOutcome::Skip(why) => {
-                return CaseOutcome::Error(format!("sweep point {k} skipped: {why}"))
+            CaseAnswer::Observed(v) => v,
+            CaseAnswer::Skip(why) => {
+                return CaseAnswer::Error(format!("sweep point {k} skipped: {why}"))
             }
-            CaseOutcome::Error(e) => return CaseOutcome::Error(format!("sweep point {k}: {e}")),
-            CaseOutcome::Crash(e) => return CaseOutcome::Crash(format!("sweep point {k}: {e}")),
-            CaseOutcome::Timeout(e) => {
-                return CaseOutcome::Timeout(format!("sweep point {k}: {e}"))
-            }
+            CaseAnswer::Error(e) => return CaseAnswer::Error(format!("sweep point {k}: {e}")),
+            CaseAnswer::Crash(e) => return CaseAnswer::Crash(format!("sweep point {k}: {e}")),
+            CaseAnswer::Timeout(e) => return CaseAnswer::Timeout(format!("sweep point {k}: {e}")),
         };
         for (api, out) in paths.iter_mut() {
-            let ApiOutcome::Rgba { sweep, .. } = out else {
+            let ApiAnswer::Rgba { sweep, .. } = out else {
                 continue;
             };
             match observed.iter().find(|(a, _)| a == api) {
-                Some((_, ApiOutcome::Rgba { rgba, .. })) => sweep.push(*rgba),
+                Some((_, ApiAnswer::Rgba { rgba, .. })) => sweep.push(*rgba),
                 _ => {
-                    return CaseOutcome::Error(format!(
+                    return CaseAnswer::Error(format!(
                         "sweep point {k}: not observed on API path `{}`",
                         api.key()
                     ))
@@ -93,7 +91,7 @@ pub fn merge(main: CaseOutcome, points: Vec<CaseOutcome>) -> CaseOutcome {
             }
         }
     }
-    CaseOutcome::Observed(paths)
+    CaseAnswer::Observed(paths)
 }
 
 #[cfg(test)]
@@ -101,10 +99,10 @@ mod tests {
     use super::*;
     use shadowcheck_model::ApiPath;
 
-    fn observed(v: f64) -> CaseOutcome {
-        CaseOutcome::Observed(vec![(
+    fn observed(v: f64) -> CaseAnswer {
+        CaseAnswer::Observed(vec![(
             ApiPath::GlslCore,
-            ApiOutcome::Rgba {
+            ApiAnswer::Rgba {
                 rgba: [v, 0.0, 0.0, 1.0],
                 stored: None,
                 sweep: vec![],
@@ -114,11 +112,11 @@ mod tests {
 
     #[test]
     fn points_fold_into_their_case_and_a_lost_point_names_itself() {
-        let CaseOutcome::Observed(paths) = merge(observed(1.0), vec![observed(0.0), observed(0.5)])
+        let CaseAnswer::Observed(paths) = merge(observed(1.0), vec![observed(0.0), observed(0.5)])
         else {
             panic!("not observed")
         };
-        let ApiOutcome::Rgba { rgba, sweep, .. } = &paths[0].1 else {
+        let ApiAnswer::Rgba { rgba, sweep, .. } = &paths[0].1 else {
             panic!("not rgba")
         };
         assert_eq!(rgba[0], 1.0);
@@ -129,13 +127,13 @@ mod tests {
         assert_eq!(
             merge(
                 observed(1.0),
-                vec![observed(0.0), CaseOutcome::Crash("SIGSEGV".into())]
+                vec![observed(0.0), CaseAnswer::Crash("SIGSEGV".into())]
             ),
-            CaseOutcome::Crash("sweep point 1: SIGSEGV".into())
+            CaseAnswer::Crash("sweep point 1: SIGSEGV".into())
         );
         assert_eq!(
-            merge(observed(1.0), vec![CaseOutcome::Observed(vec![])]),
-            CaseOutcome::Error("sweep point 0: not observed on API path `core`".into())
+            merge(observed(1.0), vec![CaseAnswer::Observed(vec![])]),
+            CaseAnswer::Error("sweep point 0: not observed on API path `core`".into())
         );
     }
 }

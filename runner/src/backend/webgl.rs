@@ -3,6 +3,7 @@
 //! whether the browser is installed.
 
 use super::exec::ProcessCommand;
+use super::kinds::{Found, WEBGL_WORKER};
 use shadowcheck_webgl::browser;
 
 /// The one browser this kind knows.
@@ -19,7 +20,7 @@ pub fn worker_command(browser: &str) -> Result<ProcessCommand, String> {
     let exe = super::gl::shadowcheck_exe().map_err(|e| e.to_string())?;
     Ok(ProcessCommand {
         program: exe,
-        args: vec!["webgl-worker".into()],
+        args: vec![WEBGL_WORKER.subcommand.into()],
         env: vec![],
     })
 }
@@ -30,4 +31,19 @@ pub fn installed() -> Result<(), String> {
     browser::chromium_exe()
         .map(|_| ())
         .map_err(|e| e.to_string())
+}
+
+/// The instances of the kind `prefix` (`webgl`) for a run that names no backend: one per browser,
+/// running when the browser is installed, else absent with the install command.
+pub fn probe_kind(prefix: &str) -> Vec<(String, Found)> {
+    BROWSERS
+        .iter()
+        .map(|b| {
+            let found = match installed() {
+                Ok(()) => Found::Runs,
+                Err(why) => Found::Absent(why),
+            };
+            (format!("{prefix}:{b}"), found)
+        })
+        .collect()
 }

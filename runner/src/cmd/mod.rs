@@ -16,6 +16,7 @@ pub mod run;
 pub mod summarize;
 #[allow(clippy::print_stdout)]
 pub mod webgl_worker;
+pub mod workers;
 
 /// Writes `text` to stdout. A reader that went away (`shadowcheck explain ... | head`) is not an
 /// error: the output was for it, and nothing else depends on it. Other write errors are.

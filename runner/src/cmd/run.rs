@@ -1,7 +1,7 @@
 //! `shadowcheck run`: fixtures → backends → verdicts → reports. Exit codes: runner/README.md.
 
 use anyhow::{bail, Context};
-use shadowcheck_runner::backend::{self, Backend, BackendError, Options};
+use shadowcheck_runner::backend::{self, kinds, Backend, BackendError, Options, Unavailable};
 use shadowcheck_runner::baseline::{Baseline, Lists, RegexList};
 use shadowcheck_runner::events::Fanout;
 use shadowcheck_runner::interrupt;
@@ -19,10 +19,6 @@ use std::time::Duration;
 
 /// The fixtures run when `--fixtures` is not given.
 pub const DEFAULT_FIXTURES: &str = "cases/fixtures";
-
-/// The Debian packages that provide the GL drivers the GL backends use.
-pub const MESA_INSTALL: &str =
-    "apt-get install -y libegl-mesa0 libgl1-mesa-dri libosmesa6 mesa-vulkan-drivers";
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -181,151 +177,24 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     } else {
         a.fixtures.clone()
     };
-
-    // Backends that cannot start here: named with the reason and the install hint; the run goes on
-    // without them and exits 96 unless --skip-missing.
-    let backend::Defaults {
-        run: requested,
-        mut missing,
-        absent,
+    let Chosen {
+        mut backends,
+        missing,
         not_applicable,
-    } = if a.backends.is_empty() {
-        backend::default_backends()
-    } else {
-        backend::Defaults {
-            run: a.backends.clone(),
-            ..backend::Defaults::default()
-        }
-    };
-    for (n, how) in &absent {
-        shadowcheck_runner::errln!(
-            "shadowcheck: note: optional backend `{n}` is not installed here: {how}"
-        );
-    }
-    for (i, n) in requested.iter().enumerate() {
-        if requested[..i].contains(n) {
-            bail!("backend `{n}` is named twice");
-        }
-    }
-    if a.exchange.fast_compile {
-        shadowcheck_runner::errln!("shadowcheck: --fast-compile: GL workers run with GALLIVM_PERF=nopt (LLVM's optimisation passes off); the results are of that code generation");
-    }
-    let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(requested.len());
-    for n in &requested {
-        match backend::open(n, &opts) {
-            Ok(b) => backends.push(b),
-            Err(e @ BackendError::Unknown(_)) => return Err(e.into()),
-            Err(BackendError::Setup { msg, .. }) => missing.push((n.clone(), msg)),
-        }
-    }
-    let what = if a.skip_missing {
-        "warning: left out (--skip-missing)"
-    } else {
-        "error"
-    };
-    for (n, why) in &missing {
-        shadowcheck_runner::errln!("shadowcheck: {what}: backend `{n}` cannot start here: {why}");
-    }
-    if missing
-        .iter()
-        .any(|(n, _)| n.starts_with("egl:") || n.starts_with("osmesa:"))
-    {
-        shadowcheck_runner::errln!(
-            "shadowcheck: the GL backends need Mesa's drivers: {MESA_INSTALL}"
-        );
-    }
-    if !missing.is_empty() && !a.skip_missing {
-        shadowcheck_runner::errln!("shadowcheck: the run goes on without {} backend(s) and will exit {}; pass --skip-missing to run without them", missing.len(), exit::SETUP);
-    }
-    if backends.is_empty() {
-        bail!("no backend could start");
-    }
-    let names: Vec<String> = backends.iter().map(|b| b.name().to_string()).collect();
+    } = choose_backends(&a, &opts)?;
     let out_dir = a.out.clone().unwrap_or_else(|| default_out(&a.backends));
     std::fs::create_dir_all(&out_dir).with_context(|| format!("creating {}", out_dir.display()))?;
     // Held until the process ends: a second run into this directory stops here (exit 96).
     let _lock = OutLock::acquire(&out_dir)?;
 
-    let meta = RunMeta {
-        backends: names.clone(),
-        fixtures: fixtures.iter().map(|p| p.display().to_string()).collect(),
-        cases: a.cases.clone(),
-        shard: a.shard.map(|s| s.to_string()),
-        baseline: a.baseline.as_ref().map(|p| p.display().to_string()),
-        implementations: backends
-            .iter()
-            .filter_map(|b| {
-                let i = b.implementation()?;
-                let gl = backend::kinds::kind_of(b.name())
-                    .is_some_and(|k| k.prefix == "egl" || k.prefix == "osmesa");
-                let i = if a.exchange.fast_compile && gl {
-                    format!("{i} [--fast-compile: GALLIVM_PERF=nopt]")
-                } else {
-                    i
-                };
-                Some((b.name().to_string(), i))
-            })
-            .collect(),
-        ..RunMeta::new()
-    };
-
-    let mut set = run::load_cases(&fixtures);
-    let loaded_any = !set.files.is_empty();
-    set.select(pattern.as_ref(), a.shard);
-    if !loaded_any && set.cases.is_empty() {
-        for e in &set.errors {
-            shadowcheck_runner::errln!("shadowcheck: error: {}: {}", e.file, e.message);
-        }
-        bail!(
-            "no fixture could be loaded from {}",
-            meta.fixtures.join(", ")
-        );
-    }
-
-    let results_path = out_dir.join(RESULTS_FILE);
-    let (prior, jsonl) = if a.resume && results_path.exists() {
-        records::truncate_partial_line(&results_path)?;
-        let prior = records::read_results(&results_path)?;
-        match &prior.meta {
-            Some(m) if m.selection() != meta.selection() => bail!(
-                "--resume: {} was written by a different selection ({:?}); give the same --backend/--fixtures/--cases/--shard/--baseline, or drop --resume",
-                results_path.display(),
-                m
-            ),
-            Some(_) => {}
-            // Without its selection nothing says these records belong to this run.
-            None => bail!(
-                "--resume: {} has no meta line (the run's selection), so it cannot be continued: not a results.jsonl written by shadowcheck run; drop --resume to start afresh",
-                results_path.display()
-            ),
-        }
-        (prior, JsonlReporter::append(&results_path, a.full_report)?)
-    } else {
-        (
-            records::Results::default(),
-            JsonlReporter::create(&results_path, &meta, a.full_report)?,
-        )
-    };
-
+    let meta = run_meta(&a, &backends, &fixtures);
+    let set = load_fixtures(&fixtures, pattern.as_ref(), a.shard)?;
+    let (prior, jsonl) = open_results(&a, &out_dir, &meta)?;
     // Final reports of an earlier run in this folder would be stale until this run ends.
     for f in report::FINAL_FILES {
         let _ = std::fs::remove_file(out_dir.join(f));
     }
-
-    let mut fanout = Fanout::default();
-    fanout.reporters.push(Box::new(TerminalReporter::new(
-        a.timings,
-        a.exchange.verbose,
-    )));
-    fanout.reporters.push(Box::new(jsonl));
-    fanout.reporters.extend(report::file_reporters(
-        &out_dir,
-        &FileReports {
-            full: a.full_report,
-            baseline: a.baseline.is_some().then(|| lists.baseline.clone()),
-            ..FileReports::default()
-        },
-    ));
+    let mut fanout = reporters(&a, &out_dir, jsonl, &lists);
     let baseline = a.baseline.is_some().then(|| lists.baseline.clone());
     let settings = Settings {
         lists,
@@ -359,31 +228,245 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             shadowcheck_runner::errln!("shadowcheck: warning: {n}");
         }
     }
-    // The exit code, decided once, printed as it is returned.
+    let ended = Ended {
+        missing: &missing,
+        not_applicable: &not_applicable,
+        finished: results.len(),
+        total,
+    };
+    let ending = ending(&a, &summary, &fanout, &out_dir, &ended);
+    terminal::print_final_line(&summary, &ending);
+    Ok(ExitCode::from(ending.code))
+}
+
+/// The cases of the fixture files under `fixtures`, selected by `--cases` and `--shard`. The errors
+/// of files that do not load stay in the set (the run reports them and they count in its exit
+/// code); none loading at all is an error here.
+fn load_fixtures(
+    fixtures: &[PathBuf],
+    pattern: Option<&regex::Regex>,
+    shard: Option<Shard>,
+) -> anyhow::Result<run::CaseSet> {
+    let mut set = run::load_cases(fixtures);
+    let loaded_any = !set.files.is_empty();
+    set.select(pattern, shard);
+    if !loaded_any && set.cases.is_empty() {
+        for e in &set.errors {
+            shadowcheck_runner::errln!("shadowcheck: error: {}: {}", e.file, e.message);
+        }
+        let names: Vec<String> = fixtures.iter().map(|p| p.display().to_string()).collect();
+        bail!("no fixture could be loaded from {}", names.join(", "));
+    }
+    Ok(set)
+}
+
+/// The backends of a run, opened, and those left out of it with the reason.
+struct Chosen {
+    backends: Vec<Box<dyn Backend>>,
+    /// Named or defaults that cannot start here ([`backend::Defaults::missing`]).
+    missing: Vec<Unavailable>,
+    /// Defaults that start but can run no case here ([`backend::Defaults::not_applicable`]).
+    not_applicable: Vec<Unavailable>,
+}
+
+/// The backends named with `-b`, or each kind's default instances ([`backend::default_backends`]),
+/// opened. Those that cannot start are named with the reason and what to install; the run goes on
+/// without them and exits 96 unless --skip-missing. An unknown name, a name given twice or no
+/// backend that starts is an error.
+fn choose_backends(a: &Args, opts: &Options) -> anyhow::Result<Chosen> {
+    let backend::Defaults {
+        run: requested,
+        mut missing,
+        absent,
+        not_applicable,
+    } = if a.backends.is_empty() {
+        backend::default_backends()
+    } else {
+        backend::Defaults {
+            run: a.backends.clone(),
+            ..backend::Defaults::default()
+        }
+    };
+    for (n, how) in &absent {
+        shadowcheck_runner::errln!(
+            "shadowcheck: note: optional backend `{n}` is not installed here: {how}"
+        );
+    }
+    for (i, n) in requested.iter().enumerate() {
+        if requested[..i].contains(n) {
+            bail!("backend `{n}` is named twice");
+        }
+    }
+    if a.exchange.fast_compile {
+        shadowcheck_runner::errln!("shadowcheck: --fast-compile: GL workers run with GALLIVM_PERF=nopt (LLVM's optimisation passes off); the results are of that code generation");
+    }
+    let mut backends: Vec<Box<dyn Backend>> = Vec::with_capacity(requested.len());
+    for n in &requested {
+        match backend::open(n, opts) {
+            Ok(b) => backends.push(b),
+            Err(e @ BackendError::Unknown(_)) => return Err(e.into()),
+            Err(BackendError::Setup { msg, .. }) => missing.push((n.clone(), msg)),
+        }
+    }
+    say_missing(&missing, a.skip_missing);
+    if backends.is_empty() {
+        bail!("no backend could start");
+    }
+    Ok(Chosen {
+        backends,
+        missing,
+        not_applicable,
+    })
+}
+
+/// Names each backend that cannot start with the reason, then, once each, what its kind says to
+/// install ([`kinds::BackendKind::missing_hint`]), and what the run will do about them.
+fn say_missing(missing: &[Unavailable], skip_missing: bool) {
+    let what = if skip_missing {
+        "warning: left out (--skip-missing)"
+    } else {
+        "error"
+    };
+    for (n, why) in missing {
+        shadowcheck_runner::errln!("shadowcheck: {what}: backend `{n}` cannot start here: {why}");
+    }
+    let mut hints: Vec<&str> = Vec::new();
+    for (n, _) in missing {
+        if let Some(h) = kinds::kind_of(n).and_then(|k| (k.missing_hint)(n)) {
+            if !hints.contains(&h) {
+                hints.push(h);
+            }
+        }
+    }
+    for h in hints {
+        shadowcheck_runner::errln!("shadowcheck: {h}");
+    }
+    if !missing.is_empty() && !skip_missing {
+        shadowcheck_runner::errln!("shadowcheck: the run goes on without {} backend(s) and will exit {}; pass --skip-missing to run without them", missing.len(), exit::SETUP);
+    }
+}
+
+/// The run's meta line: its selection and what each implementation called itself (marked when
+/// `--fast-compile` changed its code generation, [`kinds::BackendKind::fast_compile`]).
+fn run_meta(a: &Args, backends: &[Box<dyn Backend>], fixtures: &[PathBuf]) -> RunMeta {
+    RunMeta {
+        backends: backends.iter().map(|b| b.name().to_string()).collect(),
+        fixtures: fixtures.iter().map(|p| p.display().to_string()).collect(),
+        cases: a.cases.clone(),
+        shard: a.shard.map(|s| s.to_string()),
+        baseline: a.baseline.as_ref().map(|p| p.display().to_string()),
+        implementations: backends
+            .iter()
+            .filter_map(|b| {
+                let i = b.implementation()?;
+                let recompiled = kinds::kind_of(b.name()).is_some_and(|k| k.fast_compile);
+                let i = if a.exchange.fast_compile && recompiled {
+                    format!("{i} [--fast-compile: GALLIVM_PERF=nopt]")
+                } else {
+                    i
+                };
+                Some((b.name().to_string(), i))
+            })
+            .collect(),
+        ..RunMeta::new()
+    }
+}
+
+/// The results already in `out_dir` (with `--resume`, after checking they are of this selection)
+/// and the results.jsonl writer: appending to them, or a new file.
+fn open_results(
+    a: &Args,
+    out_dir: &Path,
+    meta: &RunMeta,
+) -> anyhow::Result<(records::Results, JsonlReporter)> {
+    let results_path = out_dir.join(RESULTS_FILE);
+    if !(a.resume && results_path.exists()) {
+        return Ok((
+            records::Results::default(),
+            JsonlReporter::create(&results_path, meta, a.full_report)?,
+        ));
+    }
+    records::truncate_partial_line(&results_path)?;
+    let prior = records::read_results(&results_path)?;
+    match &prior.meta {
+        Some(m) if m.selection() != meta.selection() => bail!(
+            "--resume: {} was written by a different selection ({:?}); give the same --backend/--fixtures/--cases/--shard/--baseline, or drop --resume",
+            results_path.display(),
+            m
+        ),
+        Some(_) => {}
+        // Without its selection nothing says these records belong to this run.
+        None => bail!(
+            "--resume: {} has no meta line (the run's selection), so it cannot be continued: not a results.jsonl written by shadowcheck run; drop --resume to start afresh",
+            results_path.display()
+        ),
+    }
+    Ok((prior, JsonlReporter::append(&results_path, a.full_report)?))
+}
+
+/// The run's reporters: the terminal, results.jsonl, and the files of `out_dir`.
+fn reporters(a: &Args, out_dir: &Path, jsonl: JsonlReporter, lists: &Lists) -> Fanout {
+    let mut fanout = Fanout::default();
+    fanout.reporters.push(Box::new(TerminalReporter::new(
+        a.timings,
+        a.exchange.verbose,
+    )));
+    fanout.reporters.push(Box::new(jsonl));
+    fanout.reporters.extend(report::file_reporters(
+        out_dir,
+        &FileReports {
+            full: a.full_report,
+            baseline: a.baseline.is_some().then(|| lists.baseline.clone()),
+            ..FileReports::default()
+        },
+    ));
+    fanout
+}
+
+/// What the end of a run needs besides the summary.
+struct Ended<'a> {
+    missing: &'a [Unavailable],
+    not_applicable: &'a [Unavailable],
+    /// Tests finished, and tests of the run.
+    finished: usize,
+    total: usize,
+}
+
+/// The exit code, decided once from the summary and what else happened (backends that could not
+/// start, a reporter's error, an interrupt), each said on stderr.
+fn ending(
+    a: &Args,
+    summary: &records::Summary,
+    fanout: &Fanout,
+    out_dir: &Path,
+    e: &Ended<'_>,
+) -> Ending {
     let mut ending = Ending::new(summary.exit_code);
-    if !missing.is_empty() && !a.skip_missing {
-        let list: Vec<&str> = missing.iter().map(|(n, _)| n.as_str()).collect();
+    if !e.missing.is_empty() && !a.skip_missing {
+        let list: Vec<&str> = e.missing.iter().map(|(n, _)| n.as_str()).collect();
         ending.add(
             exit::SETUP,
             format!("backends that could not start: {}", list.join(", ")),
         );
     }
-    if let Some((_, e)) = &fanout.error {
-        shadowcheck_runner::errln!("shadowcheck: error: {e} (in {})", out_dir.display());
-        ending.add(exit::SETUP, e.to_string());
+    if let Some((_, err)) = &fanout.error {
+        shadowcheck_runner::errln!("shadowcheck: error: {err} (in {})", out_dir.display());
+        ending.add(exit::SETUP, err.to_string());
     }
     if interrupt::requested() {
         shadowcheck_runner::errln!(
-            "shadowcheck: interrupted: {} of {total} tests finished; they are kept in {} and the reports in {} cover them. Resume with:\n  {}",
-            results.len(),
+            "shadowcheck: interrupted: {} of {} tests finished; they are kept in {} and the reports in {} cover them. Resume with:\n  {}",
+            e.finished,
+            e.total,
             out_dir.join(RESULTS_FILE).display(),
             out_dir.display(),
-            resume_command(&out_dir)
+            resume_command(out_dir)
         );
         ending.add(exit::INTERRUPTED, "interrupted");
     }
-    if !not_applicable.is_empty() {
-        let list: Vec<String> = not_applicable
+    if !e.not_applicable.is_empty() {
+        let list: Vec<String> = e
+            .not_applicable
             .iter()
             .map(|(n, why)| format!("`{n}` ({why})"))
             .collect();
@@ -392,8 +475,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
             list.join(", ")
         );
     }
-    terminal::print_final_line(&summary, &ending);
-    Ok(ExitCode::from(ending.code))
+    ending
 }
 
 /// SIGINT/SIGTERM: the first asks the run to stop after the batch in flight and write its reports;

@@ -3,7 +3,7 @@
 //! ones, and a protocol violation is never taken for a flake.
 
 use super::Ctx;
-use crate::backend::{Backend, CaseOutcome};
+use crate::backend::{Backend, CaseAnswer};
 use crate::events::Event;
 use crate::records::Outcome;
 
@@ -11,12 +11,12 @@ use crate::records::Outcome;
 /// the fault's message.
 pub(super) fn blame_in_batch(
     ids: &[&str],
-    outcomes: &mut [CaseOutcome],
+    outcomes: &mut [CaseAnswer],
     faults: &[(String, String)],
 ) {
     for (sent, outcome) in ids.iter().zip(outcomes.iter_mut()) {
         if let Some((_, msg)) = faults.iter().find(|(id, _)| id == sent) {
-            *outcome = CaseOutcome::Crash(msg.clone());
+            *outcome = CaseAnswer::Crash(msg.clone());
         }
     }
 }

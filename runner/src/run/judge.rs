@@ -3,7 +3,7 @@
 //! judged on a thread of its own while the backend runs the next one, and finished in order.
 
 use super::{base_result, Ctx};
-use crate::backend::{ApiOutcome, CaseOutcome, Sent};
+use crate::backend::{ApiAnswer, CaseAnswer, Sent};
 use crate::baseline::Lists;
 use crate::events::{Event, Timing};
 use crate::records::{Outcome, TestResult};
@@ -17,7 +17,7 @@ use std::time::Instant;
 pub(super) fn judge_outcome(
     backend: &str,
     sent: Sent<'_>,
-    outcome: &CaseOutcome,
+    outcome: &CaseAnswer,
     duration: f64,
     fixtures: Option<&str>,
 ) -> Vec<TestResult> {
@@ -29,12 +29,12 @@ pub(super) fn judge_outcome(
             r.duration = duration;
             let (o, reason) = match path_answer(outcome, api) {
                 Err(settled) => settled,
-                Ok(ApiOutcome::Skip(m)) => (Outcome::Skip, Some(m.clone())),
-                Ok(ApiOutcome::State(_)) => (
+                Ok(ApiAnswer::Skip(m)) => (Outcome::Skip, Some(m.clone())),
+                Ok(ApiAnswer::State(_)) => (
                     Outcome::Fail,
                     Some("the backend answered a lookup case with a state result".into()),
                 ),
-                Ok(ApiOutcome::Rgba {
+                Ok(ApiAnswer::Rgba {
                     rgba,
                     stored,
                     sweep,
@@ -57,15 +57,15 @@ pub(super) fn judge_outcome(
 /// settles: Skip, an implementation error (Fail), Crash, Timeout, or no result for the path
 /// (Fail). Lookup and state cases share it.
 pub(super) fn path_answer(
-    outcome: &CaseOutcome,
+    outcome: &CaseAnswer,
     api: ApiPath,
-) -> Result<&ApiOutcome, (Outcome, Option<String>)> {
+) -> Result<&ApiAnswer, (Outcome, Option<String>)> {
     match outcome {
-        CaseOutcome::Skip(m) => Err((Outcome::Skip, Some(m.clone()))),
-        CaseOutcome::Error(m) => Err((Outcome::Fail, Some(format!("implementation error: {m}")))),
-        CaseOutcome::Crash(m) => Err((Outcome::Crash, Some(m.clone()))),
-        CaseOutcome::Timeout(m) => Err((Outcome::Timeout, Some(m.clone()))),
-        CaseOutcome::Observed(v) => match v.iter().find(|(a, _)| *a == api).map(|(_, o)| o) {
+        CaseAnswer::Skip(m) => Err((Outcome::Skip, Some(m.clone()))),
+        CaseAnswer::Error(m) => Err((Outcome::Fail, Some(format!("implementation error: {m}")))),
+        CaseAnswer::Crash(m) => Err((Outcome::Crash, Some(m.clone()))),
+        CaseAnswer::Timeout(m) => Err((Outcome::Timeout, Some(m.clone()))),
+        CaseAnswer::Observed(v) => match v.iter().find(|(a, _)| *a == api).map(|(_, o)| o) {
             None => Err((
                 Outcome::Fail,
                 Some("the backend returned no result for this API path".to_string()),
@@ -96,11 +96,11 @@ pub(super) fn judge_batch(
     lists: &Lists,
     refs: &[Sent<'_>],
     chunk: &[ToSend<'_>],
-    outcomes: &[CaseOutcome],
+    outcomes: &[CaseAnswer],
     per_case: f64,
 ) -> Judged {
     let t = Instant::now();
-    let missing = CaseOutcome::Crash("the backend gave no answer".into());
+    let missing = CaseAnswer::Crash("the backend gave no answer".into());
     let mut out = Vec::with_capacity(refs.len() * 2);
     for ((sent, (_, _, fixtures)), outcome) in refs
         .iter()

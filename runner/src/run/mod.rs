@@ -12,7 +12,7 @@
 //! Once the run is interrupted ([`crate::interrupt`]) no batch is sent, of the batch in flight
 //! only the cases answered whole are kept, and no re-run is made.
 
-use crate::backend::{Backend, CaseOutcome, Sent, Support};
+use crate::backend::{Backend, CaseAnswer, Sent, Support};
 use crate::baseline::Lists;
 use crate::events::{Event, Fanout, Sink, Timing};
 use crate::interrupt;
@@ -276,117 +276,15 @@ pub fn run_backend(
         tests,
         not_applicable,
     });
-    let lists = &settings.lists;
-    let file_of = |l: &Loaded| {
-        settings
-            .explicit_fixtures
-            .then(|| set.files[l.file].as_str())
-    };
-    let mut to_send: Vec<ToSend<'_>> = Vec::new();
-    for l in &set.cases {
-        let case = &l.case;
-        let fixtures = file_of(l);
-        // Only the API paths this backend implements are tests of it.
-        let Some((applicable, skip_reason)) = applicable_apis(backend.capabilities(), case) else {
-            continue;
-        };
-        // Resumed: every test of the case already on disk.
-        let done: Vec<&TestResult> = applicable
-            .iter()
-            .filter_map(|&a| prior.get(&name, &TestResult::name(&case.id, a)))
-            .collect();
-        if done.len() == applicable.len() {
-            for r in done {
-                ctx.finish(r.clone(), true);
-            }
-            continue;
-        }
-        let mut apis = Vec::with_capacity(applicable.len());
-        for &api in &applicable {
-            let test = TestResult::name(&case.id, api);
-            match lists.skips.matching_for(&name, &test) {
-                Some(re) => {
-                    let mut r = base_result(&name, case, api, fixtures);
-                    r.reason = Some(format!("skips list: `{re}`"));
-                    ctx.finish(r, false);
-                }
-                None => apis.push(api),
-            }
-        }
-        if let Some(reason) = skip_reason {
-            for &api in &apis {
-                let mut r = base_result(&name, case, api, fixtures);
-                r.reason = Some(reason.clone());
-                ctx.finish(r, false);
-            }
-            continue;
-        }
-        if apis.is_empty() {
-            continue;
-        }
-        if apis.len() == case.api.len() {
-            to_send.push((case, Cow::Borrowed(case.api.as_slice()), fixtures));
-        } else {
-            to_send.push((case, Cow::Owned(apis), fixtures));
-        }
-    }
-    // Each batch's answers are judged on a second thread while the backend runs the next batch
-    // (its process works meanwhile, with the batch after that already sent), then finished here
-    // in order: results and events come out as they would one batch at a time.
-    let batch = backend.batch_size().max(1);
-    std::thread::scope(|scope| {
-        let mut judging: Option<std::thread::ScopedJoinHandle<'_, Judged>> = None;
-        let chunks: Vec<&[ToSend<'_>]> = to_send.chunks(batch).collect();
-        for (k, chunk) in chunks.iter().copied().enumerate() {
-            if interrupt::requested() {
-                break;
-            }
-            let mut refs = sent(chunk);
-            // The batch after this one is announced before this one runs (two in flight).
-            if let Some(next) = chunks.get(k + 1) {
-                backend.send_ahead(&refs, &sent(next));
-            }
-            let t0 = Instant::now();
-            let mut outcomes = backend.run_batch(&refs);
-            let interrupted = interrupt::requested();
-            let mut chunk = chunk;
-            if interrupted {
-                // Only the answers that came back are kept (once interrupted, a backend answers
-                // a prefix: its processes may have been signalled too); `--resume` sends the rest.
-                outcomes.truncate(refs.len());
-                refs.truncate(outcomes.len());
-                chunk = &chunk[..refs.len()];
-            }
-            let dt = t0.elapsed().as_secs_f64();
-            timing.backend_s += dt;
-            timing.cases_sent += refs.len();
-            if refs.is_empty() {
-                break;
-            }
-            // The batch before this one, judged meanwhile, is finished before any fault of this
-            // batch can name one of its cases.
-            finish_judged(&mut ctx, &name, judging.take(), &mut timing);
-            let faults = backend.take_faults();
-            let ids: Vec<&str> = refs.iter().map(|c| c.case.id.as_str()).collect();
-            blame_in_batch(&ids, &mut outcomes, &faults);
-            blame_earlier(&mut ctx, &name, &ids, &faults);
-            for d in backend.take_diagnostics() {
-                ctx.fanout.emit(&Event::Diagnostic {
-                    backend: &name,
-                    message: &d,
-                });
-            }
-            let per_case = dt / refs.len() as f64;
-            let name = name.as_str();
-            judging = Some(
-                scope.spawn(move || judge_batch(name, lists, &refs, chunk, &outcomes, per_case)),
-            );
-            if interrupted {
-                break;
-            }
-        }
-        finish_judged(&mut ctx, &name, judging.take(), &mut timing);
-    });
+    let to_send = cases_to_send(backend.capabilities(), &name, set, prior, &mut ctx);
+    send_and_judge(
+        backend,
+        &name,
+        &to_send,
+        &settings.lists,
+        &mut ctx,
+        &mut timing,
+    );
     state::run_states(backend, set, prior, &mut ctx, &mut timing);
     // A fault found after the last batch (an extra answer line read since) is a Crash before the
     // re-run, so it is not re-run as a flake; one found during the re-run, after it.
@@ -406,6 +304,140 @@ pub fn run_backend(
         timing: &timing,
     });
     (ctx.results, timing)
+}
+
+/// The lookup cases of `set` the backend `name` (with `caps`) is sent, each with the API paths it
+/// runs. The rest are finished here: tests already in `prior` are replayed, tests on the skips
+/// list and cases the backend implements but cannot run are Skip with the reason; a case of a spec
+/// or API path it does not implement is no test of it.
+fn cases_to_send<'a>(
+    caps: &Capabilities,
+    name: &str,
+    set: &'a CaseSet,
+    prior: &Results,
+    ctx: &mut Ctx<'_>,
+) -> Vec<ToSend<'a>> {
+    let settings = ctx.settings;
+    let lists = &settings.lists;
+    let mut to_send: Vec<ToSend<'a>> = Vec::new();
+    for l in &set.cases {
+        let case = &l.case;
+        let fixtures = settings
+            .explicit_fixtures
+            .then(|| set.files[l.file].as_str());
+        // Only the API paths this backend implements are tests of it.
+        let Some((applicable, skip_reason)) = applicable_apis(caps, case) else {
+            continue;
+        };
+        // Resumed: every test of the case already on disk.
+        let done: Vec<&TestResult> = applicable
+            .iter()
+            .filter_map(|&a| prior.get(name, &TestResult::name(&case.id, a)))
+            .collect();
+        if done.len() == applicable.len() {
+            for r in done {
+                ctx.finish(r.clone(), true);
+            }
+            continue;
+        }
+        let mut apis = Vec::with_capacity(applicable.len());
+        for &api in &applicable {
+            let test = TestResult::name(&case.id, api);
+            match lists.skips.matching_for(name, &test) {
+                Some(re) => {
+                    let mut r = base_result(name, case, api, fixtures);
+                    r.reason = Some(format!("skips list: `{re}`"));
+                    ctx.finish(r, false);
+                }
+                None => apis.push(api),
+            }
+        }
+        if let Some(reason) = skip_reason {
+            for &api in &apis {
+                let mut r = base_result(name, case, api, fixtures);
+                r.reason = Some(reason.clone());
+                ctx.finish(r, false);
+            }
+            continue;
+        }
+        if apis.is_empty() {
+            continue;
+        }
+        if apis.len() == case.api.len() {
+            to_send.push((case, Cow::Borrowed(case.api.as_slice()), fixtures));
+        } else {
+            to_send.push((case, Cow::Owned(apis), fixtures));
+        }
+    }
+    to_send
+}
+
+/// Sends `to_send` to the backend in batches and finishes each case's tests from its answer, in
+/// order. Each batch's answers are judged on a second thread while the backend runs the next batch
+/// (its process works meanwhile, with the batch after that already sent), then finished here in
+/// order: results and events come out as they would one batch at a time. Once the run is
+/// interrupted, the batch in flight keeps the answers that came back and nothing more is sent.
+fn send_and_judge(
+    backend: &mut dyn Backend,
+    name: &str,
+    to_send: &[ToSend<'_>],
+    lists: &Lists,
+    ctx: &mut Ctx<'_>,
+    timing: &mut Timing,
+) {
+    let batch = backend.batch_size().max(1);
+    std::thread::scope(|scope| {
+        let mut judging: Option<std::thread::ScopedJoinHandle<'_, Judged>> = None;
+        let chunks: Vec<&[ToSend<'_>]> = to_send.chunks(batch).collect();
+        for (k, chunk) in chunks.iter().copied().enumerate() {
+            if interrupt::requested() {
+                break;
+            }
+            let mut refs = sent(chunk);
+            // The batch after this one is announced before this one runs (two in flight).
+            if let Some(next) = chunks.get(k + 1) {
+                backend.send_ahead(&refs, &sent(next));
+            }
+            let t0 = Instant::now();
+            let mut answers = backend.answer_batch(&refs);
+            let interrupted = interrupt::requested();
+            let mut chunk = chunk;
+            if interrupted {
+                // Only the answers that came back are kept (once interrupted, a backend answers
+                // a prefix: its processes may have been signalled too); `--resume` sends the rest.
+                answers.truncate(refs.len());
+                refs.truncate(answers.len());
+                chunk = &chunk[..refs.len()];
+            }
+            let dt = t0.elapsed().as_secs_f64();
+            timing.backend_s += dt;
+            timing.cases_sent += refs.len();
+            if refs.is_empty() {
+                break;
+            }
+            // The batch before this one, judged meanwhile, is finished before any fault of this
+            // batch can name one of its cases.
+            finish_judged(ctx, name, judging.take(), timing);
+            let faults = backend.take_faults();
+            let ids: Vec<&str> = refs.iter().map(|c| c.case.id.as_str()).collect();
+            blame_in_batch(&ids, &mut answers, &faults);
+            blame_earlier(ctx, name, &ids, &faults);
+            for d in backend.take_diagnostics() {
+                ctx.fanout.emit(&Event::Diagnostic {
+                    backend: name,
+                    message: &d,
+                });
+            }
+            let per_case = dt / refs.len() as f64;
+            judging = Some(
+                scope.spawn(move || judge_batch(name, lists, &refs, chunk, &answers, per_case)),
+            );
+            if interrupted {
+                break;
+            }
+        }
+        finish_judged(ctx, name, judging.take(), timing);
+    });
 }
 
 /// Re-runs the cases of regressions not yet re-run; a test whose outcome changes is a Flake
@@ -442,25 +474,12 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
         .iter()
         .map(|(case, api, _, _)| Sent { case, api })
         .collect();
-    let mut outcomes = Vec::with_capacity(refs.len());
-    let mut earlier = Vec::new();
-    for chunk in refs.chunks(backend.batch_size().max(1)) {
-        let mut got = backend.run_batch(chunk);
-        let ids: Vec<&str> = chunk.iter().map(|c| c.case.id.as_str()).collect();
-        let faults = backend.take_faults();
-        blame_in_batch(&ids, &mut got, &faults);
-        earlier.extend(
-            faults
-                .into_iter()
-                .filter(|(id, _)| !ids.contains(&id.as_str())),
-        );
-        outcomes.extend(got);
-    }
+    let (answers, earlier) = answer_again(backend, &refs);
     if interrupt::requested() {
         return;
     }
-    let recurred = refs.iter().zip(&outcomes).find_map(|(c, o)| {
-        matches!(o, CaseOutcome::Crash(_) | CaseOutcome::Timeout(_)).then_some(c.case.id.as_str())
+    let recurred = refs.iter().zip(&answers).find_map(|(c, o)| {
+        matches!(o, CaseAnswer::Crash(_) | CaseAnswer::Timeout(_)).then_some(c.case.id.as_str())
     });
     for d in backend.take_diagnostics() {
         ctx.fanout.emit(&Event::Diagnostic {
@@ -468,27 +487,11 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
             message: &d,
         });
     }
-    for ((sent, (_, _, idx, file)), outcome) in refs.iter().zip(&cases).zip(outcomes.iter()) {
-        let again = judge_outcome(&name, *sent, outcome, 0.0, *file);
+    for ((sent, (_, _, idx, file)), answer) in refs.iter().zip(&cases).zip(answers.iter()) {
+        let again = judge_outcome(&name, *sent, answer, 0.0, *file);
         for (&i, second) in idx.iter().zip(again) {
-            let r = &mut ctx.results[i];
-            r.rerun = Some(second.outcome);
-            let died = matches!(r.outcome, Outcome::Crash | Outcome::Timeout);
-            if let (true, Some(on)) = (died && second.outcome != r.outcome, recurred) {
-                r.reason = Some(format!(
-                    "{}; re-run gave {}, but the implementation crashed or hung again in the re-run (on `{on}`): not a flake",
-                    r.reason.clone().unwrap_or_default(),
-                    second.outcome
-                ));
-            } else if second.outcome != r.outcome {
-                r.status = Status::Flake;
-                r.reason = Some(format!(
-                    "{}; re-run gave {}",
-                    r.reason.clone().unwrap_or_default(),
-                    second.outcome
-                ));
-            }
-            let r = r.clone();
+            mark_rerun(&mut ctx.results[i], second.outcome, recurred);
+            let r = ctx.results[i].clone();
             ctx.fanout.emit(&Event::CaseFinished {
                 result: &r,
                 replayed: false,
@@ -498,6 +501,52 @@ fn rerun_regressions(backend: &mut dyn Backend, set: &CaseSet, ctx: &mut Ctx<'_>
     // Faults the re-run found on cases it did not send (their extra answers came late).
     blame_earlier(ctx, &name, &[], &earlier);
     ctx.fanout.emit(&Event::BatchFinished { backend: &name });
+}
+
+/// Sends `refs` to the backend again, in batches: the answers, with the faults found on each batch
+/// blamed on its cases, and the faults that name cases of earlier batches (extra answers that came
+/// late).
+fn answer_again(
+    backend: &mut dyn Backend,
+    refs: &[Sent<'_>],
+) -> (Vec<CaseAnswer>, Vec<(String, String)>) {
+    let mut answers = Vec::with_capacity(refs.len());
+    let mut earlier = Vec::new();
+    for chunk in refs.chunks(backend.batch_size().max(1)) {
+        let mut got = backend.answer_batch(chunk);
+        let ids: Vec<&str> = chunk.iter().map(|c| c.case.id.as_str()).collect();
+        let faults = backend.take_faults();
+        blame_in_batch(&ids, &mut got, &faults);
+        earlier.extend(
+            faults
+                .into_iter()
+                .filter(|(id, _)| !ids.contains(&id.as_str())),
+        );
+        answers.extend(got);
+    }
+    (answers, earlier)
+}
+
+/// Records the re-run's outcome `second` on the regression `r`: a changed outcome makes it a Flake,
+/// except a Crash or Timeout while the implementation crashed or hung again in the re-run (on the
+/// case `recurred`), which stays, with the reason saying so.
+fn mark_rerun(r: &mut TestResult, second: Outcome, recurred: Option<&str>) {
+    r.rerun = Some(second);
+    let died = matches!(r.outcome, Outcome::Crash | Outcome::Timeout);
+    if let (true, Some(on)) = (died && second != r.outcome, recurred) {
+        r.reason = Some(format!(
+            "{}; re-run gave {}, but the implementation crashed or hung again in the re-run (on `{on}`): not a flake",
+            r.reason.clone().unwrap_or_default(),
+            second
+        ));
+    } else if second != r.outcome {
+        r.status = Status::Flake;
+        r.reason = Some(format!(
+            "{}; re-run gave {}",
+            r.reason.clone().unwrap_or_default(),
+            second
+        ));
+    }
 }
 
 /// Results in report order: by backend, then by test name.

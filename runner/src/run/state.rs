@@ -3,7 +3,7 @@
 //! [`crate::state_verdict`]. State calls are deterministic, so their regressions are not re-run.
 
 use super::{CaseSet, Ctx, LoadedState};
-use crate::backend::{ApiOutcome, Backend, CaseOutcome, Support};
+use crate::backend::{ApiAnswer, Backend, CaseAnswer, Support};
 use crate::events::{Event, Timing};
 use crate::interrupt;
 use crate::records::{Outcome, Results, Status, Tags, TestResult};
@@ -63,7 +63,7 @@ fn judge(
     backend: &str,
     extensions: &[String],
     case: &StateCase,
-    outcome: &CaseOutcome,
+    outcome: &CaseAnswer,
     duration: f64,
     fixtures: Option<&str>,
 ) -> Vec<TestResult> {
@@ -74,11 +74,11 @@ fn judge(
             r.duration = duration;
             let (o, reason) = match super::judge::path_answer(outcome, api) {
                 Err(settled) => settled,
-                Ok(ApiOutcome::Skip(m)) => (Outcome::Skip, Some(m.clone())),
-                Ok(ApiOutcome::State(obs)) => {
+                Ok(ApiAnswer::Skip(m)) => (Outcome::Skip, Some(m.clone())),
+                Ok(ApiAnswer::State(obs)) => {
                     crate::state_verdict::judge_state(case, obs, extensions)
                 }
-                Ok(ApiOutcome::Rgba { .. }) => (
+                Ok(ApiAnswer::Rgba { .. }) => (
                     Outcome::Fail,
                     Some("the backend answered a state case with a lookup result".into()),
                 ),
@@ -160,7 +160,7 @@ pub(super) fn run_states(
         }
         let refs: Vec<&StateCase> = chunk.iter().map(|(c, _)| c).collect();
         let t0 = Instant::now();
-        let mut outcomes = backend.run_state_batch(&refs);
+        let mut outcomes = backend.answer_state_batch(&refs);
         if interrupt::requested() {
             break;
         }
@@ -175,7 +175,7 @@ pub(super) fn run_states(
         timing.backend_s += dt;
         timing.cases_sent += refs.len();
         let per_case = dt / refs.len() as f64;
-        let missing = CaseOutcome::Crash("the backend gave no answer".into());
+        let missing = CaseAnswer::Crash("the backend gave no answer".into());
         for ((case, fixtures), outcome) in chunk
             .iter()
             .zip(outcomes.iter().chain(std::iter::repeat(&missing)))

@@ -1,7 +1,7 @@
 //! Unit tests of the run core (sequential runs against scripted backends).
 
 use super::*;
-use crate::backend::{ApiOutcome, Capabilities};
+use crate::backend::{ApiAnswer, Capabilities};
 use crate::events::{Event, Reporter};
 use shadowcheck_model::KeyMap;
 use shadowcheck_model::*;
@@ -19,18 +19,18 @@ impl Backend for Fake {
     fn capabilities(&self) -> &Capabilities {
         &self.caps
     }
-    fn run_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseOutcome> {
+    fn answer_batch(&mut self, cases: &[Sent<'_>]) -> Vec<CaseAnswer> {
         cases
             .iter()
             .map(|c| {
                 self.sent.push((c.case.id.clone(), c.api.to_vec()));
-                CaseOutcome::Observed(
+                CaseAnswer::Observed(
                     c.api
                         .iter()
                         .map(|&a| {
                             (
                                 a,
-                                ApiOutcome::Rgba {
+                                ApiAnswer::Rgba {
                                     rgba: [1.0, 1.0, 1.0, 1.0],
                                     stored: None,
                                     sweep: vec![],

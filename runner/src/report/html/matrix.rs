@@ -14,7 +14,7 @@ use std::fmt::Write as _;
 
 /// The worst raw outcome in a cell decides its colour.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Kind {
+pub enum CellShade {
     Empty,
     Skip,
     Pass,
@@ -22,23 +22,23 @@ pub enum Kind {
     Fail,
 }
 
-impl Kind {
+impl CellShade {
     pub fn class(self) -> &'static str {
         match self {
-            Kind::Empty => "n",
-            Kind::Skip => "s",
-            Kind::Pass => "p",
-            Kind::Warn => "w",
-            Kind::Fail => "f",
+            CellShade::Empty => "n",
+            CellShade::Skip => "s",
+            CellShade::Pass => "p",
+            CellShade::Warn => "w",
+            CellShade::Fail => "f",
         }
     }
     /// Fail, Crash and Timeout are failures; Warn is quality-only; Skip is not run.
-    pub fn of(o: Outcome) -> Kind {
+    pub fn of(o: Outcome) -> CellShade {
         match o {
-            Outcome::Pass => Kind::Pass,
-            Outcome::Warn => Kind::Warn,
-            Outcome::Skip => Kind::Skip,
-            Outcome::Fail | Outcome::Crash | Outcome::Timeout => Kind::Fail,
+            Outcome::Pass => CellShade::Pass,
+            Outcome::Warn => CellShade::Warn,
+            Outcome::Skip => CellShade::Skip,
+            Outcome::Fail | Outcome::Crash | Outcome::Timeout => CellShade::Fail,
         }
     }
 }
@@ -55,17 +55,17 @@ pub struct Cell {
 }
 
 impl Cell {
-    pub fn kind(&self) -> Kind {
+    pub fn shade(&self) -> CellShade {
         if self.fail > 0 {
-            Kind::Fail
+            CellShade::Fail
         } else if self.warn > 0 {
-            Kind::Warn
+            CellShade::Warn
         } else if self.pass > 0 {
-            Kind::Pass
+            CellShade::Pass
         } else if self.skip > 0 {
-            Kind::Skip
+            CellShade::Skip
         } else {
-            Kind::Empty
+            CellShade::Empty
         }
     }
     pub fn total(&self) -> usize {
@@ -111,10 +111,10 @@ impl Matrix {
             let cell = &mut rows
                 .entry(key)
                 .or_insert_with(|| vec![Cell::default(); backends.len()])[c];
-            match Kind::of(r.outcome) {
-                Kind::Pass => cell.pass += 1,
-                Kind::Warn => cell.warn += 1,
-                Kind::Fail => cell.fail += 1,
+            match CellShade::of(r.outcome) {
+                CellShade::Pass => cell.pass += 1,
+                CellShade::Warn => cell.warn += 1,
+                CellShade::Fail => cell.fail += 1,
                 _ => cell.skip += 1,
             }
             if wants_dump(r) {
@@ -144,11 +144,11 @@ fn anchor(row: usize, col: usize) -> String {
 }
 
 fn cell_text(c: &Cell) -> String {
-    match c.kind() {
-        Kind::Empty | Kind::Skip => String::new(),
-        Kind::Pass => format!("{}", c.pass),
-        Kind::Warn => format!("{} warn", c.warn),
-        Kind::Fail => format!("{} fail", c.fail),
+    match c.shade() {
+        CellShade::Empty | CellShade::Skip => String::new(),
+        CellShade::Pass => format!("{}", c.pass),
+        CellShade::Warn => format!("{} warn", c.warn),
+        CellShade::Fail => format!("{} fail", c.fail),
     }
 }
 
@@ -204,12 +204,12 @@ pub fn render(m: &Matrix, out: &mut String) {
             };
             let text = cell_text(c);
             if c.dumps.is_empty() {
-                let _ = write!(out, "<td class={}{title}>{text}", c.kind().class());
+                let _ = write!(out, "<td class={}{title}>{text}", c.shade().class());
             } else {
                 let _ = write!(
                     out,
                     "<td class={}{title}><a href=\"#{}\">{text}</a>",
-                    c.kind().class(),
+                    c.shade().class(),
                     anchor(ri, ci)
                 );
             }
@@ -261,7 +261,7 @@ pub fn render_details(m: &Matrix, results: &[TestResult], caps: DetailCaps, out:
                 out,
                 "<section class=\"cell\" id=\"{}\"><h3><span class=\"{} pill\">{}</span> {} — {}</h3>",
                 anchor(ri, ci),
-                c.kind().class(),
+                c.shade().class(),
                 esc(&cell_text(c)),
                 esc(&key.join(" / ")),
                 esc(&m.backends[ci])
@@ -278,7 +278,7 @@ pub fn render_details(m: &Matrix, results: &[TestResult], caps: DetailCaps, out:
                 let _ = writeln!(
                     out,
                     "<pre class=\"dump {}\">{}</pre>",
-                    Kind::of(r.outcome).class(),
+                    CellShade::of(r.outcome).class(),
                     esc(dump(r, "").trim_end())
                 );
             }

@@ -21,7 +21,7 @@ pub mod pictures;
 use crate::records::TestResult;
 use geometry::Geometry;
 use load::ReportInput;
-use matrix::{DetailCaps, Kind, Matrix};
+use matrix::{CellShade, DetailCaps, Matrix};
 use page::esc;
 use pictures::{HeatPoint, PlotItem};
 use shadowcheck_model::{Channel, Profile};
@@ -106,7 +106,7 @@ fn select_plot(mut items: Vec<PlotItem>, cap: usize) -> (Vec<PlotItem>, usize) {
     let total = items.len();
     if total > cap {
         let (bad, good): (Vec<PlotItem>, Vec<PlotItem>) =
-            items.into_iter().partition(|i| i.kind >= Kind::Warn);
+            items.into_iter().partition(|i| i.shade >= CellShade::Warn);
         let n_bad = bad
             .len()
             .min((cap * 3 / 4).max(cap.saturating_sub(good.len())));
@@ -141,7 +141,7 @@ fn plot_item(r: &TestResult, geo: &Geometry) -> Option<PlotItem> {
     };
     Some(PlotItem {
         test: r.test.clone(),
-        kind: Kind::of(r.outcome),
+        shade: CellShade::of(r.outcome),
         observed: observed_r(r, geo),
         strict,
         quality,
@@ -173,14 +173,14 @@ fn render_pictures(input: &ReportInput, geo: &Geometry, opts: &PageOptions, out:
                     Some(HeatPoint {
                         dt,
                         dref,
-                        kind: Kind::of(r.outcome),
+                        shade: CellShade::of(r.outcome),
                         observed: observed_r(r, geo),
                         test: r.test.clone(),
                     })
                 })
                 .collect();
             if !points.is_empty() {
-                let bad = points.iter().filter(|p| p.kind >= Kind::Warn).count();
+                let bad = points.iter().filter(|p| p.shade >= CellShade::Warn).count();
                 maps.push_str(&pictures::heatmap(
                     &format!("{} — {} tests, {bad} off", short(b, 24), points.len()),
                     &points,
@@ -193,7 +193,7 @@ fn render_pictures(input: &ReportInput, geo: &Geometry, opts: &PageOptions, out:
                 .collect();
             if !items.is_empty() {
                 let (sel, total) = select_plot(items, opts.plot_points);
-                let bad = sel.iter().filter(|i| i.kind >= Kind::Warn).count();
+                let bad = sel.iter().filter(|i| i.shade >= CellShade::Warn).count();
                 let caption = if sel.len() < total {
                     format!("{} of {total} filtered/mipmap tests: {bad} warn/fail and passes, evenly sampled; by expected value", sel.len())
                 } else {
@@ -523,7 +523,7 @@ mod tests {
         }));
         let (sel, total) = select_plot(items, 10);
         assert_eq!((sel.len(), total), (10, 103));
-        assert_eq!(sel.iter().filter(|i| i.kind == Kind::Fail).count(), 3);
+        assert_eq!(sel.iter().filter(|i| i.shade == CellShade::Fail).count(), 3);
         // Many failures: three quarters of the plot for them, the rest for passes beside them.
         let many: Vec<PlotItem> = (0..40)
             .map(|i| {
@@ -540,8 +540,8 @@ mod tests {
             })
             .collect();
         let (sel, _) = select_plot(many, 8);
-        assert_eq!(sel.iter().filter(|i| i.kind == Kind::Fail).count(), 6);
-        assert_eq!(sel.iter().filter(|i| i.kind == Kind::Pass).count(), 2);
+        assert_eq!(sel.iter().filter(|i| i.shade == CellShade::Fail).count(), 6);
+        assert_eq!(sel.iter().filter(|i| i.shade == CellShade::Pass).count(), 2);
     }
 
     #[test]

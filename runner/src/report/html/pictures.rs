@@ -9,7 +9,7 @@
 //!   bar), strict interval (dark bar) and the observed r (diamond, coloured by outcome); values
 //!   outside the axis are drawn at its edge as triangles.
 
-use super::matrix::Kind;
+use super::matrix::CellShade;
 use std::fmt::Write as _;
 use svg::node::element::{Group, Line, Path, Rectangle, Text, Title};
 use svg::Document;
@@ -19,7 +19,7 @@ use svg::Document;
 pub struct HeatPoint {
     pub dt: f64,
     pub dref: f64,
-    pub kind: Kind,
+    pub shade: CellShade,
     /// The observed r (None for a crash or timeout).
     pub observed: Option<f64>,
     pub test: String,
@@ -101,16 +101,16 @@ pub fn heatmap(title: &str, points: &[HeatPoint]) -> String {
         };
         let b = &mut bins[y * BINS + x];
         b.n += 1;
-        match p.kind {
-            Kind::Warn => b.warn += 1,
-            Kind::Fail => b.fail += 1,
+        match p.shade {
+            CellShade::Warn => b.warn += 1,
+            CellShade::Fail => b.fail += 1,
             _ => {}
         }
         if let Some(r) = p.observed.filter(|r| r.is_finite()) {
             b.sum_r += r;
             b.n_r += 1;
         }
-        if b.example.is_none() || (p.kind >= Kind::Warn && b.fail + b.warn == 1) {
+        if b.example.is_none() || (p.shade >= CellShade::Warn && b.fail + b.warn == 1) {
             b.example = Some(p.test.clone());
         }
     }
@@ -225,7 +225,7 @@ pub fn heatmap(title: &str, points: &[HeatPoint]) -> String {
 #[derive(Debug, Clone)]
 pub struct PlotItem {
     pub test: String,
-    pub kind: Kind,
+    pub shade: CellShade,
     pub observed: Option<f64>,
     /// Acceptance intervals of r, strict and quality (from the record's expected summary).
     pub strict: Vec<(f64, f64)>,
@@ -320,9 +320,9 @@ pub fn plot(title: &str, items: &[PlotItem], caption: &str) -> String {
         for &iv in &it.strict {
             bar(&mut str_d, x0 + step * 0.3, step * 0.4, iv);
         }
-        let m = &mut marks[match it.kind {
-            Kind::Fail => 2,
-            Kind::Warn => 1,
+        let m = &mut marks[match it.shade {
+            CellShade::Fail => 2,
+            CellShade::Warn => 1,
             _ => 0,
         }];
         let r = (step * 0.3).clamp(1.8, 3.0);
@@ -344,7 +344,7 @@ pub fn plot(title: &str, items: &[PlotItem], caption: &str) -> String {
             }
             None => {}
         }
-        if it.kind >= Kind::Warn {
+        if it.shade >= CellShade::Warn {
             let obs = match it.observed {
                 Some(v) if v.is_nan() => "nan".to_string(),
                 Some(v) => format!("{v}"),
@@ -420,16 +420,19 @@ mod tests {
 
     #[test]
     fn a_mismatch_is_red_and_outlined_and_a_match_is_toned_by_r() {
-        let p = |dt, dref, kind, r| HeatPoint {
+        let p = |dt, dref, shade, r| HeatPoint {
             dt,
             dref,
-            kind,
+            shade,
             observed: Some(r),
             test: "t".into(),
         };
         let s = heatmap(
             "lequal",
-            &[p(0.2, 0.5, Kind::Pass, 0.0), p(0.8, 0.5, Kind::Fail, 0.0)],
+            &[
+                p(0.2, 0.5, CellShade::Pass, 0.0),
+                p(0.8, 0.5, CellShade::Fail, 0.0),
+            ],
         );
         assert!(s.starts_with("<svg"));
         assert_eq!(s.matches(FAIL_COLOUR).count(), 1);
@@ -439,7 +442,7 @@ mod tests {
             "x",
             &[PlotItem {
                 test: "a".into(),
-                kind: Kind::Warn,
+                shade: CellShade::Warn,
                 observed: Some(-1.0),
                 strict: vec![(0.5, 0.5)],
                 quality: vec![(0.25, 0.75)],
