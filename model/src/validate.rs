@@ -2,7 +2,7 @@
 //! with an error naming the case and the field. (Semantic legality, e.g. a compare function a spec
 //! does not define, is the oracle's business: it answers with that spec's GL error.)
 
-use crate::{ApiPath, Case, ModelError, Target, Texels};
+use crate::{ApiPath, Case, Level, ModelError, Target, Texels};
 
 /// Largest texel count accepted for one level (16 Mi texels); larger is treated as absurd input.
 pub const MAX_TEXELS_PER_LEVEL: usize = 1 << 24;
@@ -24,8 +24,18 @@ pub fn id_char_ok(c: char) -> bool {
     !(c == ',' || c == '"' || c == '\'' || c.is_whitespace() || c.is_control())
 }
 
-/// Checks the structure of `case`.
+/// Checks the structure of `case`: its id and API paths, texture, sampler, lookup (offset and
+/// sweep included), in that order; the first error found is returned.
 pub fn validate(case: &Case) -> Result<(), ModelError> {
+    validate_id_and_api(case)?;
+    validate_texture(case)?;
+    validate_sampler(case)?;
+    validate_lookup(case)?;
+    validate_sweep(case)
+}
+
+/// A non-empty id a test name can hold, and distinct API paths, at least one.
+fn validate_id_and_api(case: &Case) -> Result<(), ModelError> {
     if case.id.is_empty() {
         return Err(invalid(case, "id", "empty id"));
     }
@@ -52,6 +62,11 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
             ));
         }
     }
+    Ok(())
+}
+
+/// The level count and base level, then each level ([`validate_level`]).
+fn validate_texture(case: &Case) -> Result<(), ModelError> {
     let tex = &case.texture;
     if tex.levels.is_empty() {
         return Err(invalid(case, "texture.levels", "no levels"));
@@ -77,114 +92,136 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
             "rectangle textures have exactly one level",
         ));
     }
-    let bits = tex.format.unorm_bits();
     for (i, lvl) in tex.levels.iter().enumerate() {
-        let f = |name: &str| format!("texture.levels[{i}].{name}");
-        for (name, v) in [
-            ("width", lvl.width),
-            ("height", lvl.height),
-            ("layers", lvl.layers),
-        ] {
-            if v == 0 || v > MAX_DIMENSION {
+        validate_level(case, i, lvl)?;
+    }
+    Ok(())
+}
+
+/// One level: its size within bounds and of the target's shape, then its texels
+/// ([`validate_texels`]).
+fn validate_level(case: &Case, i: usize, lvl: &Level) -> Result<(), ModelError> {
+    let tex = &case.texture;
+    let f = |name: &str| format!("texture.levels[{i}].{name}");
+    for (name, v) in [
+        ("width", lvl.width),
+        ("height", lvl.height),
+        ("layers", lvl.layers),
+    ] {
+        if v == 0 || v > MAX_DIMENSION {
+            return Err(invalid(
+                case,
+                f(name),
+                format!("{v} is outside 1..={MAX_DIMENSION}"),
+            ));
+        }
+    }
+    let n = lvl.texel_count();
+    if n > MAX_TEXELS_PER_LEVEL {
+        return Err(invalid(
+            case,
+            f("width"),
+            format!("{n} texels in one level (at most {MAX_TEXELS_PER_LEVEL})"),
+        ));
+    }
+    match tex.target {
+        Target::T1d | Target::T1dArray if lvl.height != 1 => {
+            return Err(invalid(case, f("height"), "1D targets have height 1"));
+        }
+        Target::Cube | Target::CubeArray => {
+            if lvl.width != lvl.height {
+                return Err(invalid(case, f("width"), "cube faces must be square"));
+            }
+            if !lvl.layers.is_multiple_of(6) {
                 return Err(invalid(
                     case,
-                    f(name),
-                    format!("{v} is outside 1..={MAX_DIMENSION}"),
+                    f("layers"),
+                    "cube layers must be a multiple of 6",
+                ));
+            }
+            if tex.target == Target::Cube && lvl.layers != 6 {
+                return Err(invalid(case, f("layers"), "a cube map has 6 faces"));
+            }
+        }
+        Target::T1d | Target::T2d | Target::Rect if lvl.layers != 1 => {
+            return Err(invalid(case, f("layers"), "non-array targets have 1 layer"));
+        }
+        _ => {}
+    }
+    validate_texels(case, i, lvl)
+}
+
+/// One level's depth values (as many as texels, stored as the format stores them, in range) and
+/// stencil values (only for a format with stencil, as many as texels).
+fn validate_texels(case: &Case, i: usize, lvl: &Level) -> Result<(), ModelError> {
+    let tex = &case.texture;
+    let f = |name: &str| format!("texture.levels[{i}].{name}");
+    let n = lvl.texel_count();
+    let bits = tex.format.unorm_bits();
+    if lvl.depth.len() != n {
+        return Err(invalid(
+            case,
+            f("depth"),
+            format!("{} values for {} texels", lvl.depth.len(), n),
+        ));
+    }
+    match (&lvl.depth, bits) {
+        (Texels::Unorm(v), Some(b)) => {
+            let max = if b == 32 { u32::MAX } else { (1u32 << b) - 1 };
+            if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| **x > max) {
+                return Err(invalid(
+                    case,
+                    format!("{}[{j}]", f("depth")),
+                    format!("{x} exceeds {b}-bit unorm maximum {max}"),
                 ));
             }
         }
-        let n = lvl.texel_count();
-        if n > MAX_TEXELS_PER_LEVEL {
-            return Err(invalid(
-                case,
-                f("width"),
-                format!("{n} texels in one level (at most {MAX_TEXELS_PER_LEVEL})"),
-            ));
+        (Texels::Float(v), None) => {
+            if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
+                return Err(invalid(
+                    case,
+                    format!("{}[{j}]", f("depth")),
+                    format!("{x} is not finite"),
+                ));
+            }
         }
-        match tex.target {
-            Target::T1d | Target::T1dArray if lvl.height != 1 => {
-                return Err(invalid(case, f("height"), "1D targets have height 1"));
-            }
-            Target::Cube | Target::CubeArray => {
-                if lvl.width != lvl.height {
-                    return Err(invalid(case, f("width"), "cube faces must be square"));
-                }
-                if lvl.layers % 6 != 0 {
-                    return Err(invalid(
-                        case,
-                        f("layers"),
-                        "cube layers must be a multiple of 6",
-                    ));
-                }
-                if tex.target == Target::Cube && lvl.layers != 6 {
-                    return Err(invalid(case, f("layers"), "a cube map has 6 faces"));
-                }
-            }
-            Target::T1d | Target::T2d | Target::Rect if lvl.layers != 1 => {
-                return Err(invalid(case, f("layers"), "non-array targets have 1 layer"));
-            }
-            _ => {}
-        }
-        if lvl.depth.len() != n {
+        (Texels::Unorm(_), None) => {
             return Err(invalid(
                 case,
                 f("depth"),
-                format!("{} values for {} texels", lvl.depth.len(), n),
+                format!("format {} stores floats, got unorm integers", tex.format),
             ));
         }
-        match (&lvl.depth, bits) {
-            (Texels::Unorm(v), Some(b)) => {
-                let max = if b == 32 { u32::MAX } else { (1u32 << b) - 1 };
-                if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| **x > max) {
-                    return Err(invalid(
-                        case,
-                        format!("{}[{j}]", f("depth")),
-                        format!("{x} exceeds {b}-bit unorm maximum {max}"),
-                    ));
-                }
-            }
-            (Texels::Float(v), None) => {
-                if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
-                    return Err(invalid(
-                        case,
-                        format!("{}[{j}]", f("depth")),
-                        format!("{x} is not finite"),
-                    ));
-                }
-            }
-            (Texels::Unorm(_), None) => {
-                return Err(invalid(
-                    case,
-                    f("depth"),
-                    format!("format {} stores floats, got unorm integers", tex.format),
-                ));
-            }
-            (Texels::Float(_), Some(_)) => {
-                return Err(invalid(
-                    case,
-                    f("depth"),
-                    format!("format {} stores unorm integers, got floats", tex.format),
-                ));
-            }
-        }
-        match (&lvl.stencil, tex.format.has_stencil()) {
-            (Some(s), true) if s.len() != n => {
-                return Err(invalid(
-                    case,
-                    f("stencil"),
-                    format!("{} values for {} texels", s.len(), n),
-                ));
-            }
-            (Some(_), false) => {
-                return Err(invalid(
-                    case,
-                    f("stencil"),
-                    format!("format {} has no stencil", tex.format),
-                ));
-            }
-            _ => {}
+        (Texels::Float(_), Some(_)) => {
+            return Err(invalid(
+                case,
+                f("depth"),
+                format!("format {} stores unorm integers, got floats", tex.format),
+            ));
         }
     }
+    match (&lvl.stencil, tex.format.has_stencil()) {
+        (Some(s), true) if s.len() != n => {
+            return Err(invalid(
+                case,
+                f("stencil"),
+                format!("{} values for {} texels", s.len(), n),
+            ));
+        }
+        (Some(_), false) => {
+            return Err(invalid(
+                case,
+                f("stencil"),
+                format!("format {} has no stencil", tex.format),
+            ));
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
+/// The sampler's LOD range, bias, fail value and border (and the sampler object's) are finite.
+fn validate_sampler(case: &Case) -> Result<(), ModelError> {
     let s = &case.sampler;
     for (name, v) in [
         ("min_lod", s.min_lod),
@@ -234,6 +271,12 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
             }
         }
     }
+    Ok(())
+}
+
+/// The lookup's LOD, bias and layer are finite, a projective q is not 0, an offset is legal
+/// ([`validate_offset`]).
+fn validate_lookup(case: &Case) -> Result<(), ModelError> {
     let l = &case.lookup;
     for (name, v) in [("lod", l.lod), ("bias", l.bias), ("layer", l.layer)] {
         if !v.is_finite() {
@@ -254,7 +297,7 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
     if l.offset != [0; 3] {
         validate_offset(case)?;
     }
-    validate_sweep(case)
+    Ok(())
 }
 
 /// A sweep's points: a bounded number, on a filtered lookup (a gather answers four values, a
