@@ -18,7 +18,7 @@
 //! them; an outside tool reads a run's results with this crate alone (see README.md).
 
 pub mod exit;
-mod passed;
+pub mod passed;
 pub mod reader;
 pub mod status;
 mod summary;
