@@ -192,7 +192,7 @@ impl Coverage {
             for &api in &c.api {
                 let d = cov.per_path.entry(api).or_default();
                 d.tests += 1;
-                d.checks += c.checks();
+                d.checks += c.lookup_count();
                 d.states.insert(state_key(c));
                 if let Some(f) = GatherFn::of(&c.lookup) {
                     *cov.gather

@@ -312,7 +312,7 @@ impl Worker {
     /// Answers a batch in order: one answer per lookup, each case's own and then each point of its
     /// sweep ([`super::sweep::jobs`]). The cases must be valid (`validate`): [`serve`] checks each
     /// case once, with its sweep, where it is read.
-    pub fn run_batch(&mut self, cases: Vec<Case>) -> Vec<Answer> {
+    pub fn draw_cases(&mut self, cases: Vec<Case>) -> Vec<Answer> {
         let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());
         let mut runnable: Vec<Case> = Vec::with_capacity(cases.len());
         let mut left_out: Vec<Vec<PathSkip>> = Vec::with_capacity(cases.len());
@@ -320,18 +320,17 @@ impl Worker {
             match self.admit(&c) {
                 Ok((apis, skips)) => {
                     c.api = apis;
-                    answers.extend((0..c.checks()).map(|_| None));
+                    answers.extend((0..c.lookup_count()).map(|_| None));
                     runnable.push(c);
                     left_out.push(skips);
                 }
-                Err(reason) => {
-                    answers.extend((0..c.checks()).map(|_| Some(Answer::Skip(reason.clone()))))
-                }
+                Err(reason) => answers
+                    .extend((0..c.lookup_count()).map(|_| Some(Answer::Skip(reason.clone())))),
             }
         }
         let jobs = sweep::jobs(&runnable);
         // SAFETY: the worker's context is current on this thread.
-        let mut drawn_jobs = unsafe { self.renderer.run_batch(&jobs) }.into_iter();
+        let mut drawn_jobs = unsafe { self.renderer.draw_jobs(&jobs) }.into_iter();
         // The paths left out of a case are part of the answer for its own lookup.
         let mut drawn = runnable.iter().zip(left_out).flat_map(|(c, skips)| {
             let own = drawn_jobs.next().map(|answer| match answer {
@@ -430,8 +429,8 @@ impl Serve for Worker {
             wants_expect: false,
         }
     }
-    fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
-        Ok(Worker::run_batch(self, cases))
+    fn draw_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
+        Ok(Worker::draw_cases(self, cases))
     }
     fn run_state(&mut self, case: &StateCase) -> Reply {
         Worker::run_state(self, case)

@@ -86,7 +86,7 @@ impl PointExpectation {
 
 impl Case {
     /// How many lookups the case checks: its own and its sweep's.
-    pub fn checks(&self) -> usize {
+    pub fn lookup_count(&self) -> usize {
         1 + self.sweep.len()
     }
 

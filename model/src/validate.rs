@@ -2,7 +2,7 @@
 //! with an error naming the case and the field. (Semantic legality, e.g. a compare function a spec
 //! does not define, is the oracle's business: it answers with that spec's GL error.)
 
-use crate::{ApiPath, Case, ModelError, Target, Texels};
+use crate::{ApiPath, Case, Level, ModelError, Target, Texels};
 
 /// Largest texel count accepted for one level (16 Mi texels); larger is treated as absurd input.
 pub const MAX_TEXELS_PER_LEVEL: usize = 1 << 24;
@@ -24,8 +24,18 @@ pub fn id_char_ok(c: char) -> bool {
     !(c == ',' || c == '"' || c == '\'' || c.is_whitespace() || c.is_control())
 }
 
-/// Checks the structure of `case`.
+/// Checks the structure of `case`: its id and API paths, texture, sampler, lookup (offset and
+/// sweep included), in that order; the first error found is returned.
 pub fn validate(case: &Case) -> Result<(), ModelError> {
+    validate_id_and_api(case)?;
+    validate_texture(case)?;
+    validate_sampler(case)?;
+    validate_lookup(case)?;
+    validate_sweep(case)
+}
+
+/// A non-empty id a test name can hold, and distinct API paths, at least one.
+fn validate_id_and_api(case: &Case) -> Result<(), ModelError> {
     if case.id.is_empty() {
         return Err(invalid(case, "id", "empty id"));
     }
@@ -52,6 +62,11 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
             ));
         }
     }
+    Ok(())
+}
+
+/// The level count and base level, then each level ([`validate_level`]).
+fn validate_texture(case: &Case) -> Result<(), ModelError> {
     let tex = &case.texture;
     if tex.levels.is_empty() {
         return Err(invalid(case, "texture.levels", "no levels"));
@@ -77,114 +92,136 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
             "rectangle textures have exactly one level",
         ));
     }
-    let bits = tex.format.unorm_bits();
     for (i, lvl) in tex.levels.iter().enumerate() {
-        let f = |name: &str| format!("texture.levels[{i}].{name}");
-        for (name, v) in [
-            ("width", lvl.width),
-            ("height", lvl.height),
-            ("layers", lvl.layers),
-        ] {
-            if v == 0 || v > MAX_DIMENSION {
+        validate_level(case, i, lvl)?;
+    }
+    Ok(())
+}
+
+/// One level: its size within bounds and of the target's shape, then its texels
+/// ([`validate_texels`]).
+fn validate_level(case: &Case, i: usize, lvl: &Level) -> Result<(), ModelError> {
+    let tex = &case.texture;
+    let f = |name: &str| format!("texture.levels[{i}].{name}");
+    for (name, v) in [
+        ("width", lvl.width),
+        ("height", lvl.height),
+        ("layers", lvl.layers),
+    ] {
+        if v == 0 || v > MAX_DIMENSION {
+            return Err(invalid(
+                case,
+                f(name),
+                format!("{v} is outside 1..={MAX_DIMENSION}"),
+            ));
+        }
+    }
+    let n = lvl.texel_count();
+    if n > MAX_TEXELS_PER_LEVEL {
+        return Err(invalid(
+            case,
+            f("width"),
+            format!("{n} texels in one level (at most {MAX_TEXELS_PER_LEVEL})"),
+        ));
+    }
+    match tex.target {
+        Target::T1d | Target::T1dArray if lvl.height != 1 => {
+            return Err(invalid(case, f("height"), "1D targets have height 1"));
+        }
+        Target::Cube | Target::CubeArray => {
+            if lvl.width != lvl.height {
+                return Err(invalid(case, f("width"), "cube faces must be square"));
+            }
+            if !lvl.layers.is_multiple_of(6) {
                 return Err(invalid(
                     case,
-                    f(name),
-                    format!("{v} is outside 1..={MAX_DIMENSION}"),
+                    f("layers"),
+                    "cube layers must be a multiple of 6",
+                ));
+            }
+            if tex.target == Target::Cube && lvl.layers != 6 {
+                return Err(invalid(case, f("layers"), "a cube map has 6 faces"));
+            }
+        }
+        Target::T1d | Target::T2d | Target::Rect if lvl.layers != 1 => {
+            return Err(invalid(case, f("layers"), "non-array targets have 1 layer"));
+        }
+        _ => {}
+    }
+    validate_texels(case, i, lvl)
+}
+
+/// One level's depth values (as many as texels, stored as the format stores them, in range) and
+/// stencil values (only for a format with stencil, as many as texels).
+fn validate_texels(case: &Case, i: usize, lvl: &Level) -> Result<(), ModelError> {
+    let tex = &case.texture;
+    let f = |name: &str| format!("texture.levels[{i}].{name}");
+    let n = lvl.texel_count();
+    let bits = tex.format.unorm_bits();
+    if lvl.depth.len() != n {
+        return Err(invalid(
+            case,
+            f("depth"),
+            format!("{} values for {} texels", lvl.depth.len(), n),
+        ));
+    }
+    match (&lvl.depth, bits) {
+        (Texels::Unorm(v), Some(b)) => {
+            let max = if b == 32 { u32::MAX } else { (1u32 << b) - 1 };
+            if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| **x > max) {
+                return Err(invalid(
+                    case,
+                    format!("{}[{j}]", f("depth")),
+                    format!("{x} exceeds {b}-bit unorm maximum {max}"),
                 ));
             }
         }
-        let n = lvl.texel_count();
-        if n > MAX_TEXELS_PER_LEVEL {
-            return Err(invalid(
-                case,
-                f("width"),
-                format!("{n} texels in one level (at most {MAX_TEXELS_PER_LEVEL})"),
-            ));
+        (Texels::Float(v), None) => {
+            if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
+                return Err(invalid(
+                    case,
+                    format!("{}[{j}]", f("depth")),
+                    format!("{x} is not finite"),
+                ));
+            }
         }
-        match tex.target {
-            Target::T1d | Target::T1dArray if lvl.height != 1 => {
-                return Err(invalid(case, f("height"), "1D targets have height 1"));
-            }
-            Target::Cube | Target::CubeArray => {
-                if lvl.width != lvl.height {
-                    return Err(invalid(case, f("width"), "cube faces must be square"));
-                }
-                if lvl.layers % 6 != 0 {
-                    return Err(invalid(
-                        case,
-                        f("layers"),
-                        "cube layers must be a multiple of 6",
-                    ));
-                }
-                if tex.target == Target::Cube && lvl.layers != 6 {
-                    return Err(invalid(case, f("layers"), "a cube map has 6 faces"));
-                }
-            }
-            Target::T1d | Target::T2d | Target::Rect if lvl.layers != 1 => {
-                return Err(invalid(case, f("layers"), "non-array targets have 1 layer"));
-            }
-            _ => {}
-        }
-        if lvl.depth.len() != n {
+        (Texels::Unorm(_), None) => {
             return Err(invalid(
                 case,
                 f("depth"),
-                format!("{} values for {} texels", lvl.depth.len(), n),
+                format!("format {} stores floats, got unorm integers", tex.format),
             ));
         }
-        match (&lvl.depth, bits) {
-            (Texels::Unorm(v), Some(b)) => {
-                let max = if b == 32 { u32::MAX } else { (1u32 << b) - 1 };
-                if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| **x > max) {
-                    return Err(invalid(
-                        case,
-                        format!("{}[{j}]", f("depth")),
-                        format!("{x} exceeds {b}-bit unorm maximum {max}"),
-                    ));
-                }
-            }
-            (Texels::Float(v), None) => {
-                if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| !x.is_finite()) {
-                    return Err(invalid(
-                        case,
-                        format!("{}[{j}]", f("depth")),
-                        format!("{x} is not finite"),
-                    ));
-                }
-            }
-            (Texels::Unorm(_), None) => {
-                return Err(invalid(
-                    case,
-                    f("depth"),
-                    format!("format {} stores floats, got unorm integers", tex.format),
-                ));
-            }
-            (Texels::Float(_), Some(_)) => {
-                return Err(invalid(
-                    case,
-                    f("depth"),
-                    format!("format {} stores unorm integers, got floats", tex.format),
-                ));
-            }
-        }
-        match (&lvl.stencil, tex.format.has_stencil()) {
-            (Some(s), true) if s.len() != n => {
-                return Err(invalid(
-                    case,
-                    f("stencil"),
-                    format!("{} values for {} texels", s.len(), n),
-                ));
-            }
-            (Some(_), false) => {
-                return Err(invalid(
-                    case,
-                    f("stencil"),
-                    format!("format {} has no stencil", tex.format),
-                ));
-            }
-            _ => {}
+        (Texels::Float(_), Some(_)) => {
+            return Err(invalid(
+                case,
+                f("depth"),
+                format!("format {} stores unorm integers, got floats", tex.format),
+            ));
         }
     }
+    match (&lvl.stencil, tex.format.has_stencil()) {
+        (Some(s), true) if s.len() != n => {
+            return Err(invalid(
+                case,
+                f("stencil"),
+                format!("{} values for {} texels", s.len(), n),
+            ));
+        }
+        (Some(_), false) => {
+            return Err(invalid(
+                case,
+                f("stencil"),
+                format!("format {} has no stencil", tex.format),
+            ));
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
+/// The sampler's LOD range, bias, fail value and border (and the sampler object's) are finite.
+fn validate_sampler(case: &Case) -> Result<(), ModelError> {
     let s = &case.sampler;
     for (name, v) in [
         ("min_lod", s.min_lod),
@@ -234,6 +271,12 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
             }
         }
     }
+    Ok(())
+}
+
+/// The lookup's LOD, bias and layer are finite, a projective q is not 0, an offset is legal
+/// ([`validate_offset`]).
+fn validate_lookup(case: &Case) -> Result<(), ModelError> {
     let l = &case.lookup;
     for (name, v) in [("lod", l.lod), ("bias", l.bias), ("layer", l.layer)] {
         if !v.is_finite() {
@@ -254,7 +297,7 @@ pub fn validate(case: &Case) -> Result<(), ModelError> {
     if l.offset != [0; 3] {
         validate_offset(case)?;
     }
-    validate_sweep(case)
+    Ok(())
 }
 
 /// A sweep's points: a bounded number, on a filtered lookup (a gather answers four values, a
@@ -349,217 +392,4 @@ fn validate_offset(case: &Case) -> Result<(), ModelError> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::*;
-
-    fn case() -> Case {
-        Case {
-            sweep: vec![],
-            id: "t".into(),
-            spec: Spec::Gl46,
-            api: vec![ApiPath::GlslCore],
-            texture: Texture {
-                target: Target::T2d,
-                format: Format::D16,
-                base_level: 0,
-                levels: vec![Level {
-                    width: 2,
-                    height: 1,
-                    layers: 1,
-                    depth: Texels::Unorm(vec![0, 65535]),
-                    stencil: None,
-                }],
-            },
-            sampler: Sampler::new(CompareMode::Compare, CompareFunc::Lequal, Filter::Nearest),
-            lookup: Lookup {
-                coord: [0.25, 0.5, 0.0, 1.0],
-                layer: 0.0,
-                dref: 0.5,
-                projective: false,
-                lod: 0.0,
-                bias: 0.0,
-                offset: [0; 3],
-                gather: None,
-            },
-            expect: None,
-        }
-    }
-
-    #[test]
-    fn accepts_a_good_case_and_round_trips() {
-        let c = case();
-        validate(&c).unwrap();
-        let json = serde_json::to_string(&c).unwrap();
-        let back: Case = serde_json::from_str(&json).unwrap();
-        assert_eq!(back, c);
-    }
-
-    #[test]
-    fn non_finite_reference_round_trips_as_string() {
-        let mut c = case();
-        c.lookup.dref = f64::NAN;
-        c.lookup.coord[0] = f64::NEG_INFINITY;
-        let json = serde_json::to_string(&c).unwrap();
-        assert!(json.contains("\"dref\":\"nan\""), "{json}");
-        assert!(json.contains("\"-inf\""), "{json}");
-        let back: Case = serde_json::from_str(&json).unwrap();
-        assert!(back.lookup.dref.is_nan());
-        assert_eq!(back.lookup.coord[0], f64::NEG_INFINITY);
-    }
-
-    #[test]
-    fn rejects_out_of_range_unorm_naming_the_field() {
-        let mut c = case();
-        c.texture.levels[0].depth = Texels::Unorm(vec![0, 70000]);
-        let e = validate(&c).unwrap_err().to_string();
-        assert!(
-            e.contains("texture.levels[0].depth[1]") && e.contains("`t`"),
-            "{e}"
-        );
-    }
-
-    #[test]
-    fn texel_offsets_need_a_glsl_130_path_a_target_with_offsets_and_a_supported_value() {
-        let mut c = case();
-        c.lookup.offset = [-8, 7, 0];
-        validate(&c).unwrap();
-        let json = serde_json::to_string(&c).unwrap();
-        assert!(json.contains("\"offset\":[-8,7,0]"), "{json}");
-        assert!(!serde_json::to_string(&case()).unwrap().contains("offset"));
-        c.lookup.offset = [8, 0, 0];
-        let e = validate(&c).unwrap_err().to_string();
-        assert!(
-            e.contains("lookup.offset[0]") && e.contains("-8..=7"),
-            "{e}"
-        );
-        c.lookup.offset = [1, 0, 1];
-        assert!(validate(&c)
-            .unwrap_err()
-            .to_string()
-            .contains("lookup.offset[2]"));
-        c.lookup.offset = [1, 0, 0];
-        c.api = vec![ApiPath::GlslCore, ApiPath::Glsl120];
-        assert!(validate(&c).unwrap_err().to_string().contains("`glsl120`"));
-        c.api = vec![ApiPath::Es300];
-        c.texture.target = Target::Cube;
-        c.texture.levels = vec![Level {
-            width: 1,
-            height: 1,
-            layers: 6,
-            depth: Texels::Unorm(vec![0; 6]),
-            stencil: None,
-        }];
-        let e = validate(&c).unwrap_err().to_string();
-        assert!(e.contains("cube map lookups take no texel offset"), "{e}");
-    }
-
-    #[test]
-    fn ids_that_would_need_csv_quoting_are_rejected() {
-        for bad in [
-            "a/dt=0.2,0.4",
-            "a/\"q\"",
-            "a/it's",
-            "a b",
-            "a\nb",
-            "a\tb",
-            "a\u{7f}",
-        ] {
-            let mut c = case();
-            c.id = bad.into();
-            let e = validate(&c).unwrap_err().to_string();
-            assert!(e.contains("field `id`"), "{bad:?}: {e}");
-            assert!(e.contains("need no quoting"), "{bad:?}: {e}");
-        }
-        let mut c = case();
-        c.id = "gl46/2d/d16/nearest/lequal/a=0.25_0.5/offset=-1_0/ref=0.5".into();
-        validate(&c).unwrap();
-    }
-
-    #[test]
-    fn duplicate_api_paths_are_rejected() {
-        let mut c = case();
-        let first = c.api[0];
-        c.api.push(first);
-        let e = validate(&c).unwrap_err().to_string();
-        assert!(e.contains("duplicate API path"), "{e}");
-        assert!(e.contains(&format!("api[{}]", c.api.len() - 1)), "{e}");
-    }
-
-    #[test]
-    fn rejects_absurd_sizes() {
-        let mut c = case();
-        c.texture.levels[0].width = 1 << 30;
-        let e = validate(&c).unwrap_err().to_string();
-        assert!(e.contains("width"), "{e}");
-    }
-
-    #[test]
-    fn rejects_texel_count_mismatch_and_unknown_enum() {
-        let mut c = case();
-        c.texture.levels[0].depth = Texels::Unorm(vec![1]);
-        assert!(validate(&c).unwrap_err().to_string().contains("depth"));
-        let json = serde_json::to_string(&case())
-            .unwrap()
-            .replace("\"lequal\"", "\"lequalish\"");
-        let e = serde_json::from_str::<Case>(&json).unwrap_err().to_string();
-        assert!(e.contains("lequalish"), "{e}");
-    }
-
-    #[test]
-    fn judge_uses_layout_and_profiles() {
-        let mut accept = crate::KeyMap::new();
-        accept.insert(Profile::Strict, Acceptance(vec![Interval::point(1.0)]));
-        accept.insert(Profile::Quality, Acceptance(vec![Interval::new(0.9, 1.0)]));
-        let mut layout = crate::KeyMap::new();
-        layout.insert(
-            ApiPath::FixedFunction,
-            [Channel::R, Channel::R, Channel::R, Channel::One],
-        );
-        let e = Expectation {
-            spec_value: Some(1.0),
-            accept,
-            layout,
-            other_layouts: Default::default(),
-            gather: None,
-            implementation_defined: None,
-            citations: vec![],
-        };
-        assert_eq!(
-            e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 1.0]),
-            Some(Judgement::Strictest)
-        );
-        assert_eq!(
-            e.judge(ApiPath::FixedFunction, [0.95, 1.0, 1.0, 1.0]),
-            Some(Judgement::Looser(Profile::Quality))
-        );
-        assert_eq!(
-            e.judge(ApiPath::FixedFunction, [1.0, 1.0, 1.0, 0.0]),
-            Some(Judgement::Outside)
-        );
-        assert_eq!(e.judge(ApiPath::GlslCore, [1.0; 4]), None);
-    }
-
-    #[test]
-    fn footprint_with_nan_reference_round_trips() {
-        let f = Footprint {
-            dref: f64::NAN,
-            texels: vec![FootprintTexel {
-                level: 0,
-                xyz: Some([0, 0, 0]),
-                stored: 1.0,
-                dt: f64::INFINITY,
-                pass: None,
-                weight: 1.0,
-            }],
-        };
-        let json = serde_json::to_string(&f).unwrap();
-        assert!(
-            json.contains("\"dref\":\"nan\"") && json.contains("\"dt\":\"inf\""),
-            "{json}"
-        );
-        let back: Footprint = serde_json::from_str(&json).unwrap();
-        assert!(back.dref.is_nan());
-        assert_eq!(back.texels[0].dt, f64::INFINITY);
-    }
-}
+mod tests;

@@ -140,11 +140,29 @@ pub fn check_effective(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     check_state(case, rules, true)
 }
 
+/// The checks in order: the unit state of GL 3.3 / ES 3.0, whether the spec defines the case's
+/// paths, target and format, the TexParameter calls in each context, the filter and LOD state,
+/// a gather, a rectangle texture's restrictions.
 fn check_state(case: &Case, rules: &Rules, effective: bool) -> Result<(), OracleError> {
     check_lookup_state(case, rules)?;
+    check_defined(case, rules)?;
+    // Every piece of sampler state is set through TexParameter in every context the case runs in.
+    for api in &case.api {
+        set_params(case, rules, ctx_of(*api))?;
+    }
+    check_filter_and_lod(case, rules)?;
+    if case.lookup.gather.is_some() {
+        check_gather(case, rules)?;
+    }
+    check_rect(case, rules, effective)
+}
+
+/// Whether the spec defines the case's API paths (and their shadow lookup of its target), its
+/// target, its format, a projective lookup on it, and (SGIX) its state in Table 3.8; what it does
+/// not define is not applicable.
+fn check_defined(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     let s = &case.sampler;
     let t = &case.texture;
-    let ctxs: Vec<Ctx> = case.api.iter().map(|a| ctx_of(*a)).collect();
     for api in &case.api {
         if !rules.apis.contains(api) {
             return Err(not_applicable(
@@ -196,59 +214,69 @@ fn check_state(case: &Case, rules: &Rules, effective: bool) -> Result<(), Oracle
             return Err(not_applicable(case, rules, why));
         }
     }
-    // Every piece of sampler state is set through TexParameter in every context the case runs in.
-    for &ctx in &ctxs {
-        let set = |pname: u32, v: Value| state::set_param(rules.spec, ctx, pname, v);
-        set(rules.mode_pname, Value::Int(s.compare_mode.gl() as i64))
-            .map_err(|e| gl_error(case, rules, e, format!("compare mode `{}`", s.compare_mode)))?;
-        set(rules.func_pname, Value::Int(s.compare_func.gl() as i64)).map_err(|e| {
+    Ok(())
+}
+
+/// The sampler state set through TexParameter in context `ctx`: compare mode and function, depth
+/// texture and depth/stencil modes, fail value, wraps; the GL error the spec names, if any.
+fn set_params(case: &Case, rules: &Rules, ctx: Ctx) -> Result<(), OracleError> {
+    let s = &case.sampler;
+    let set = |pname: u32, v: Value| state::set_param(rules.spec, ctx, pname, v);
+    set(rules.mode_pname, Value::Int(s.compare_mode.gl() as i64))
+        .map_err(|e| gl_error(case, rules, e, format!("compare mode `{}`", s.compare_mode)))?;
+    set(rules.func_pname, Value::Int(s.compare_func.gl() as i64)).map_err(|e| {
+        gl_error(
+            case,
+            rules,
+            e,
+            format!(
+                "compare function `{}` is not in {}'s table",
+                s.compare_func, rules.doc
+            ),
+        )
+    })?;
+    if let Some(m) = s.depth_texture_mode {
+        set(state::DEPTH_TEXTURE_MODE, Value::Int(m.gl() as i64)).map_err(|e| {
             gl_error(
                 case,
                 rules,
                 e,
-                format!(
-                    "compare function `{}` is not in {}'s table",
-                    s.compare_func, rules.doc
-                ),
+                format!("DEPTH_TEXTURE_MODE `{m}` in a {ctx:?} context"),
             )
         })?;
-        if let Some(m) = s.depth_texture_mode {
-            set(state::DEPTH_TEXTURE_MODE, Value::Int(m.gl() as i64)).map_err(|e| {
-                gl_error(
-                    case,
-                    rules,
-                    e,
-                    format!("DEPTH_TEXTURE_MODE `{m}` in a {ctx:?} context"),
-                )
-            })?;
-        }
-        if let Some(m) = s.depth_stencil_mode {
-            set(state::DEPTH_STENCIL_TEXTURE_MODE, Value::Int(m.gl() as i64)).map_err(|e| {
-                gl_error(case, rules, e, format!("DEPTH_STENCIL_TEXTURE_MODE `{m}`"))
-            })?;
-        }
-        if let Some(v) = s.fail_value {
-            set(
-                state::TEXTURE_COMPARE_FAIL_VALUE_ARB,
-                Value::Float(v as f64),
-            )
-            .map_err(|e| gl_error(case, rules, e, "fail / ambient value".into()))?;
-        }
-        for (name, w) in [("S", s.wrap_s), ("T", s.wrap_t), ("R", s.wrap_r)] {
-            let legal = rules.wraps.contains(&w) && !(w == Wrap::Clamp && ctx != Ctx::Compat);
-            if !legal {
-                return Err(gl_error(
-                    case,
-                    rules,
-                    GlErrorKind::InvalidEnum,
-                    format!(
-                        "TEXTURE_WRAP_{name} `{w}` is not a legal value in a {ctx:?} context of {}",
-                        rules.doc
-                    ),
-                ));
-            }
+    }
+    if let Some(m) = s.depth_stencil_mode {
+        set(state::DEPTH_STENCIL_TEXTURE_MODE, Value::Int(m.gl() as i64))
+            .map_err(|e| gl_error(case, rules, e, format!("DEPTH_STENCIL_TEXTURE_MODE `{m}`")))?;
+    }
+    if let Some(v) = s.fail_value {
+        set(
+            state::TEXTURE_COMPARE_FAIL_VALUE_ARB,
+            Value::Float(v as f64),
+        )
+        .map_err(|e| gl_error(case, rules, e, "fail / ambient value".into()))?;
+    }
+    for (name, w) in [("S", s.wrap_s), ("T", s.wrap_t), ("R", s.wrap_r)] {
+        let legal = rules.wraps.contains(&w) && !(w == Wrap::Clamp && ctx != Ctx::Compat);
+        if !legal {
+            return Err(gl_error(
+                case,
+                rules,
+                GlErrorKind::InvalidEnum,
+                format!(
+                    "TEXTURE_WRAP_{name} `{w}` is not a legal value in a {ctx:?} context of {}",
+                    rules.doc
+                ),
+            ));
         }
     }
+    Ok(())
+}
+
+/// The magnification filter, LOD bias and LOD state the spec has, and a lookup bias it allows.
+fn check_filter_and_lod(case: &Case, rules: &Rules) -> Result<(), OracleError> {
+    let s = &case.sampler;
+    let t = &case.texture;
     if !matches!(s.mag_filter, Filter::Nearest | Filter::Linear) {
         return Err(gl_error(
             case,
@@ -282,9 +310,14 @@ fn check_state(case: &Case, rules: &Rules, effective: bool) -> Result<(), Oracle
             return Err(not_applicable(case, rules, why.into()));
         }
     }
-    if case.lookup.gather.is_some() {
-        check_gather(case, rules)?;
-    }
+    Ok(())
+}
+
+/// What a rectangle texture refuses (GL 4.6 §8.10): mipmap filtering and mirrored or repeating
+/// wraps (not for the effective state of a sampler object), a base level other than 0.
+fn check_rect(case: &Case, rules: &Rules, effective: bool) -> Result<(), OracleError> {
+    let s = &case.sampler;
+    let t = &case.texture;
     if t.target == Target::Rect {
         if let Some(why) = rect_rejects(s).filter(|_| !effective) {
             return Err(gl_error(case, rules, GlErrorKind::InvalidEnum, why));

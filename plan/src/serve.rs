@@ -71,7 +71,7 @@ fn flush_batch(
     let answers = if cases.is_empty() {
         vec![]
     } else {
-        worker.run_batch(cases)?
+        worker.draw_batch(cases)?
     };
     let mut answers = answers.into_iter();
     let mut next = || {
@@ -105,7 +105,7 @@ pub trait Serve {
     fn hello(&self) -> Hello;
     /// One answer per lookup, in order: each case's own, then each point of its sweep
     /// ([`crate::sweep::jobs`], or [`crate::sweep::expand`] for a worker sent whole cases).
-    fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>>;
+    fn draw_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>>;
     /// The answer to a state case. An implementation that does not declare the `tex_parameter`
     /// feature is never sent one; if it is, it answers Skip.
     fn run_state(&mut self, case: &StateCase) -> Reply {
@@ -116,7 +116,7 @@ pub trait Serve {
     }
     /// What the loop answers to a state case: [`Serve::run_state`]'s reply. A worker that can
     /// lose its implementation during a state case (the WebGL worker's lost context) overrides
-    /// this one: an `Err` ends the loop without answering, as from [`Serve::run_batch`].
+    /// this one: an `Err` ends the loop without answering, as from [`Serve::draw_batch`].
     fn answer_state(&mut self, case: &StateCase) -> std::io::Result<Reply> {
         Ok(self.run_state(case))
     }
@@ -215,7 +215,7 @@ pub fn serve(
                         "worker: runner speaks protocol {protocol}, this worker {PROTOCOL_VERSION}"
                     );
                 }
-                // Every worker behind the loop runs sweeps (`Serve::run_batch`).
+                // Every worker behind the loop runs sweeps (`Serve::draw_batch`).
                 let hello = Reply::Hello(Hello {
                     sweeps: true,
                     ..worker.hello()
@@ -292,11 +292,11 @@ mod tests {
                 sweeps: false,
             }
         }
-        fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
+        fn draw_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
             self.0.push(cases.len());
             Ok(cases
                 .iter()
-                .flat_map(|c| (0..c.checks()).map(|_| Answer::Skip(c.id.clone())))
+                .flat_map(|c| (0..c.lookup_count()).map(|_| Answer::Skip(c.id.clone())))
                 .collect())
         }
     }
@@ -319,8 +319,8 @@ mod tests {
         fn hello(&self) -> Hello {
             Echo(vec![]).hello()
         }
-        fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
-            let n: usize = cases.iter().map(Case::checks).sum();
+        fn draw_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
+            let n: usize = cases.iter().map(Case::lookup_count).sum();
             Ok((0..n)
                 .map(|_| {
                     self.0 += 1.0;

@@ -37,7 +37,7 @@ impl<'a> Job<'a> {
 /// The lookups to draw for `cases`: each case's own, then each point of its sweep (borrowing the
 /// case: a point is only its lookup).
 pub fn jobs(cases: &[Case]) -> Vec<Job<'_>> {
-    let mut out = Vec::with_capacity(cases.iter().map(Case::checks).sum());
+    let mut out = Vec::with_capacity(cases.iter().map(Case::lookup_count).sum());
     for c in cases {
         out.push(Job::own(c));
         out.extend(c.sweep.iter().map(|p| Job {
@@ -52,7 +52,7 @@ pub fn jobs(cases: &[Case]) -> Vec<Job<'_>> {
 /// `cases` with their sweeps expanded into cases of their own ([`Case::point_case`]), each case
 /// followed by its points: for a worker that is sent whole cases (the WebGL page).
 pub fn expand(cases: Vec<Case>) -> Vec<Case> {
-    let mut flat = Vec::with_capacity(cases.iter().map(Case::checks).sum());
+    let mut flat = Vec::with_capacity(cases.iter().map(Case::lookup_count).sum());
     for mut c in cases {
         let points: Vec<Case> = (0..c.sweep.len()).filter_map(|k| c.point_case(k)).collect();
         c.sweep.clear();

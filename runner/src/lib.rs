@@ -3,7 +3,8 @@
 //! Data flows one way: fixtures → [`run`] (cases to a [`backend::Backend`]) → [`verdict`] (oracle
 //! expectation and acceptance) → [`baseline`] (final status) → [`events`] → [`report`]ers.
 //! The library never prints; reporters own every byte of output. What a run leaves on disk (the
-//! result records, statuses, exit codes) and the one reader of results.jsonl are in [`records`].
+//! result records, statuses, exit codes) and the one reader of results.jsonl are the crate
+//! `shadowcheck-records`, re-exported here as [`records`] so the runner's modules name it as before.
 
 // A stderr whose reader has gone (`shadowcheck run 2>&1 | head -1`) must not panic: write to it
 // with `errln!`.
@@ -27,7 +28,7 @@ pub mod events;
 pub mod interrupt;
 pub mod mutants;
 pub mod outdir;
-pub mod records;
+pub use shadowcheck_records as records;
 pub mod report;
 pub mod repro;
 pub mod run;

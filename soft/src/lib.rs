@@ -341,7 +341,7 @@ impl SoftUnit {
     pub fn sample_sweep(&self, case: &Case, api: ApiPath) -> Result<Vec<[f32; 4]>, SoftError> {
         with_scratch(|tex| {
             let (st, coords) = self.prepare_case(case, tex)?;
-            let mut out = Vec::with_capacity(case.checks());
+            let mut out = Vec::with_capacity(case.lookup_count());
             out.push(self.finish(case, api, tex, &st, &coords)?);
             for p in &case.sweep {
                 let c = self.coords(case.texture.target, &case.point_lookup(p))?;

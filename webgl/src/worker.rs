@@ -255,7 +255,7 @@ impl Serve for WebglWorker {
         }
     }
 
-    fn run_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
+    fn draw_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
         // The page is sent whole cases: each sweep point as a case of its own.
         let cases = sweep::expand(cases);
         let mut answers: Vec<Option<Answer>> = Vec::with_capacity(cases.len());

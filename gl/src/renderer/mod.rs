@@ -247,7 +247,7 @@ impl Renderer {
     ///
     /// # Safety
     /// The renderer's context must be current.
-    pub unsafe fn run_batch(&mut self, jobs: &[Job]) -> Vec<Answer> {
+    pub unsafe fn draw_jobs(&mut self, jobs: &[Job]) -> Vec<Answer> {
         let mut st = BatchState {
             answers: vec![None; jobs.len()],
             results: vec![Vec::new(); jobs.len()],

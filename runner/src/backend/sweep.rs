@@ -21,7 +21,7 @@ pub fn run_expanded(
             if c.sweep.is_empty() {
                 return vec![];
             }
-            let mut v = Vec::with_capacity(c.checks());
+            let mut v = Vec::with_capacity(c.lookup_count());
             v.push(c.without_sweep());
             v.extend((0..c.sweep.len()).filter_map(|k| c.point_case(k)));
             v

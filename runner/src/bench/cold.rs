@@ -104,199 +104,263 @@ pub fn suite_rows(
     unavailable: &mut Vec<Unavailable>,
     progress: &mut dyn FnMut(&str),
 ) {
-    let (suite_fixtures, what, out_root) = (m.fixtures, m.what, m.out_root);
-    let mesa: Vec<String> = m.backends.to_vec();
+    if m.backends.is_empty() {
+        return;
+    }
+    let cold = mesa_suite_runs(o, m, rows, unavailable, progress);
+    // The floor: every backend's compiled states x its driver's compile time, over the cores.
+    if per_variant.is_empty() {
+        return;
+    }
+    let cores = Machine::describe(None).nproc.max(1) as f64;
+    let heavy = states_floor_row(o, set, m, per_variant, cores, rows);
+    cache_floor_rows(per_variant, cores, heavy, &cold, rows);
+}
+
+/// What the cold suite run left for the floor rows.
+struct ColdRun {
+    /// Its wall time, when it ran.
+    wall_s: Option<f64>,
+    /// The entries it wrote to its empty shader cache.
+    cache_entries: usize,
+}
+
+/// The label of the Mesa suite rows and of their shader caches.
+const MESA: &str = "mesa";
+
+/// The three runs of the suite over every Mesa backend: cold, cached (the cold run's cache),
+/// cold with `--fast-compile` (a fresh cache).
+fn mesa_suite_runs(
+    o: &BenchOptions,
+    m: &Mesa<'_>,
+    rows: &mut Vec<Measurement>,
+    unavailable: &mut Vec<Unavailable>,
+    progress: &mut dyn FnMut(&str),
+) -> ColdRun {
     let drivers: Vec<Driver> = Driver::MESA
         .iter()
         .copied()
-        .filter(|d| mesa.iter().any(|n| n.split(':').nth(1) == Some(d.key())))
+        .filter(|d| {
+            m.backends
+                .iter()
+                .any(|n| n.split(':').nth(1) == Some(d.key()))
+        })
         .collect();
-    if !mesa.is_empty() {
-        let every = drivers.len() == Driver::MESA.len() && !o.quick;
-        let label = "mesa";
-        let mut cold_s = None;
-        let mut cold_entries = 0;
-        // Cold then cached share one cache; the --fast-compile cold run gets a fresh one.
-        let mut cache = None;
-        for (id, extra, cached) in [
-            (ids::MESA_COLD, &[][..], false),
-            (ids::MESA_CACHED, &[][..], true),
-            (ids::MESA_FAST_COMPILE, &["--fast-compile"][..], false),
-        ] {
-            progress(&format!(
-                "suite: {} ({}){}",
-                mesa.join(", "),
-                if cached {
-                    "shader cache filled"
-                } else {
-                    "empty shader cache"
-                },
-                if extra.is_empty() {
-                    String::new()
-                } else {
-                    format!(", {}", extra.join(" "))
+    let every = drivers.len() == Driver::MESA.len() && !o.quick;
+    let mut cold = ColdRun {
+        wall_s: None,
+        cache_entries: 0,
+    };
+    // Cold then cached share one cache; the --fast-compile cold run gets a fresh one.
+    let mut cache = None;
+    for (id, extra, cached) in [
+        (ids::MESA_COLD, &[][..], false),
+        (ids::MESA_CACHED, &[][..], true),
+        (ids::MESA_FAST_COMPILE, &["--fast-compile"][..], false),
+    ] {
+        progress(&suite_progress(m, cached, extra));
+        if !cached {
+            drop(cache.take());
+            match suite::ShaderCache::fresh(&format!("{MESA}-{id}")) {
+                Ok(c) => cache = Some(c),
+                Err(e) => {
+                    unavailable.push(Unavailable {
+                        what: "suite".into(),
+                        backend: Some(MESA.into()),
+                        reason: e,
+                    });
+                    continue;
                 }
-            ));
-            if !cached {
-                drop(cache.take());
-                match suite::ShaderCache::fresh(&format!("{label}-{id}")) {
-                    Ok(c) => cache = Some(c),
-                    Err(e) => {
-                        unavailable.push(Unavailable {
-                            what: "suite".into(),
-                            backend: Some(label.into()),
-                            reason: e,
-                        });
-                        continue;
-                    }
-                }
-            }
-            match suite::suite(&o.exe, &mesa, suite_fixtures, &out_root.join(id), extra) {
-                Ok(run) => {
-                    if id == ids::MESA_COLD {
-                        cold_entries = cache.as_ref().map_or(0, |c| c.entries());
-                    }
-                    let per: Vec<String> = run
-                        .backend_s
-                        .iter()
-                        .map(|(b, t)| format!("{b} {t:.1}"))
-                        .collect();
-                    let mut m = Measurement::new(
-                    id,
-                    None,
-                    run.wall_s,
-                    "s",
-                    format!(
-                        "`shadowcheck run` over the {what}, {} backends, {} at once (-j default), exit {}, peak RSS {:.0} MiB; seconds in each backend: {}",
-                        mesa.len(),
-                        Machine::describe(None).nproc,
-                        run.exit_code,
-                        run.peak_rss_mib,
-                        per.join(", ")
-                    ),
-                );
-                    if id == ids::MESA_COLD {
-                        cold_s = Some(run.wall_s);
-                        if every {
-                            m = m.with_target(Target::new(
-                                Goal::AtMost,
-                                targets17::MESA_COLD_S,
-                                "issue 17 (2 cores)",
-                            ));
-                        }
-                        rows.push(
-                            Measurement::new(
-                                ids::SUITE_RSS,
-                                Some(label),
-                                run.peak_rss_mib,
-                                "MiB",
-                                "largest process of the cold run, wait4 ru_maxrss".into(),
-                            )
-                            .with_target(Target::new(
-                                Goal::AtMost,
-                                targets::PEAK_RSS_MIB,
-                                "issue 6",
-                            )),
-                        );
-                    }
-                    rows.push(m);
-                }
-                Err(e) => unavailable.push(Unavailable {
-                    what: "suite".into(),
-                    backend: Some(label.into()),
-                    reason: e,
-                }),
             }
         }
-        drop(cache);
-        // The floor: every backend's compiled states x its driver's compile time, over the cores.
-        if !per_variant.is_empty() {
-            let quick_set;
-            let suite_set = if o.quick {
-                quick_set = crate::run::load_cases(suite_fixtures);
-                &quick_set
-            } else {
-                set
-            };
-            let cores = Machine::describe(None).nproc.max(1) as f64;
-            let mut floor = 0.0;
-            // One backend is one worker thread: the floor is never below its own compile time.
-            let mut longest: f64 = 0.0;
-            // Backends that compile anything: more cores than these cannot be used.
-            let mut heavy = 0usize;
-            let mut parts = Vec::new();
-            let mut complete = true;
-            for n in &mesa {
-                let Ok(bn) = n.parse::<BackendName>() else {
-                    continue;
-                };
-                let cost = match bn.driver {
-                    Driver::Softpipe => Some(0.0),
-                    // OSMesa's llvmpipe is the same compiler (its own cache: nothing is shared).
-                    d => per_variant.iter().find(|(k, _)| *k == d).map(|(_, c)| *c),
-                };
-                let Some(cost) = cost else {
-                    complete = false;
-                    continue;
-                };
-                if cost == 0.0 {
-                    continue;
-                }
-                match crate::backend::open(n, &crate::backend::Options::default()) {
-                    Ok(b) => {
-                        let states = suite_set.compiled_states_on(b.capabilities());
-                        floor += states as f64 * cost;
-                        longest = longest.max(states as f64 * cost);
-                        heavy += usize::from(states > 0);
-                        parts.push(format!("{n} {states}"));
+        match suite::suite(&o.exe, m.backends, m.fixtures, &m.out_root.join(id), extra) {
+            Ok(run) => {
+                let mut row = mesa_suite_row(id, &run, m);
+                if id == ids::MESA_COLD {
+                    cold.cache_entries = cache.as_ref().map_or(0, |c| c.entries());
+                    cold.wall_s = Some(run.wall_s);
+                    if every {
+                        row = row.with_target(Target::new(
+                            Goal::AtMost,
+                            targets17::MESA_COLD_S,
+                            "issue 17 (2 cores)",
+                        ));
                     }
-                    Err(_) => complete = false,
+                    rows.push(cold_rss_row(&run));
                 }
+                rows.push(row);
             }
-            floor = (floor / cores).max(longest);
-            rows.push(Measurement::new(
-            ids::COLD_FLOOR_STATES,
-            None,
-            floor,
-            "s",
-            format!(
-                "compiled (API path, state) pairs per backend: {}; x the measured compile time per variant of its driver (softpipe interprets: 0); the sum / {cores} cores, or the longest backend alone if more{}",
-                parts.join(", "),
-                if complete { "" } else { "; some backend had no figure" }
-            ),
-        ));
-            // The same floor with the driver's own count: the entries the cold run wrote to its
-            // empty shader cache (distinct states in the driver's terms: formats it stores alike
-            // share a variant).
-            let mean = per_variant.iter().map(|(_, c)| c).sum::<f64>() / per_variant.len() as f64;
-            let usable = cores.min(heavy.max(1) as f64);
-            let floor = cold_entries as f64 * mean / usable;
-            rows.push(Measurement::new(
-            ids::COLD_FLOOR,
-            None,
-            floor,
-            "s",
-            format!(
-                "{cold_entries} entries written to the empty shader cache by the cold run x {:.1} ms (mean measured compile time per variant) / {usable} cores (the cores, or the backends that compile if fewer)",
-                mean * 1e3
-            ),
-        ));
-            if let Some(c) = cold_s.filter(|_| floor > 0.0) {
-                rows.push(
-                Measurement::new(
-                    ids::COLD_OVER_FLOOR,
-                    None,
-                    c / floor,
-                    "x",
-                    format!("cold suite {c:.1} s over the floor of the variants it compiled, {floor:.1} s"),
-                )
-                .with_target(Target::new(
-                    Goal::AtMost,
-                    targets17::COLD_OVER_FLOOR,
-                    "issue 17",
-                )),
-            );
-            }
+            Err(e) => unavailable.push(Unavailable {
+                what: "suite".into(),
+                backend: Some(MESA.into()),
+                reason: e,
+            }),
         }
+    }
+    cold
+}
+
+/// The progress line of one Mesa suite run.
+fn suite_progress(m: &Mesa<'_>, cached: bool, extra: &[&str]) -> String {
+    format!(
+        "suite: {} ({}){}",
+        m.backends.join(", "),
+        if cached {
+            "shader cache filled"
+        } else {
+            "empty shader cache"
+        },
+        if extra.is_empty() {
+            String::new()
+        } else {
+            format!(", {}", extra.join(" "))
+        }
+    )
+}
+
+/// The peak memory row of the cold Mesa suite run.
+fn cold_rss_row(run: &suite::SuiteRun) -> Measurement {
+    Measurement::new(
+        ids::SUITE_RSS,
+        Some(MESA),
+        run.peak_rss_mib,
+        "MiB",
+        "largest process of the cold run, wait4 ru_maxrss".into(),
+    )
+    .with_target(Target::new(Goal::AtMost, targets::PEAK_RSS_MIB, "issue 6"))
+}
+
+/// The wall-time row of one Mesa suite run.
+fn mesa_suite_row(id: &str, run: &suite::SuiteRun, m: &Mesa<'_>) -> Measurement {
+    let per: Vec<String> = run
+        .backend_s
+        .iter()
+        .map(|(b, t)| format!("{b} {t:.1}"))
+        .collect();
+    Measurement::new(
+        id,
+        None,
+        run.wall_s,
+        "s",
+        format!(
+            "`shadowcheck run` over the {}, {} backends, {} at once (-j default), exit {}, peak RSS {:.0} MiB; seconds in each backend: {}",
+            m.what,
+            m.backends.len(),
+            Machine::describe(None).nproc,
+            run.exit_code,
+            run.peak_rss_mib,
+            per.join(", ")
+        ),
+    )
+}
+
+/// The floor from compiled (API path, state) pairs: per backend its compiled states x its
+/// driver's compile time per variant, over the cores (never below the longest backend alone).
+/// Returns how many backends compile anything.
+fn states_floor_row(
+    o: &BenchOptions,
+    set: &CaseSet,
+    m: &Mesa<'_>,
+    per_variant: &[(Driver, f64)],
+    cores: f64,
+    rows: &mut Vec<Measurement>,
+) -> usize {
+    let quick_set;
+    let suite_set = if o.quick {
+        quick_set = crate::run::load_cases(m.fixtures);
+        &quick_set
+    } else {
+        set
+    };
+    let mut floor = 0.0;
+    // One backend is one worker thread: the floor is never below its own compile time.
+    let mut longest: f64 = 0.0;
+    // Backends that compile anything: more cores than these cannot be used.
+    let mut heavy = 0usize;
+    let mut parts = Vec::new();
+    let mut complete = true;
+    for n in m.backends {
+        let Ok(bn) = n.parse::<BackendName>() else {
+            continue;
+        };
+        let cost = match bn.driver {
+            Driver::Softpipe => Some(0.0),
+            // OSMesa's llvmpipe is the same compiler (its own cache: nothing is shared).
+            d => per_variant.iter().find(|(k, _)| *k == d).map(|(_, c)| *c),
+        };
+        let Some(cost) = cost else {
+            complete = false;
+            continue;
+        };
+        if cost == 0.0 {
+            continue;
+        }
+        match crate::backend::open(n, &crate::backend::Options::default()) {
+            Ok(b) => {
+                let states = suite_set.compiled_states_on(b.capabilities());
+                floor += states as f64 * cost;
+                longest = longest.max(states as f64 * cost);
+                heavy += usize::from(states > 0);
+                parts.push(format!("{n} {states}"));
+            }
+            Err(_) => complete = false,
+        }
+    }
+    floor = (floor / cores).max(longest);
+    rows.push(Measurement::new(
+        ids::COLD_FLOOR_STATES,
+        None,
+        floor,
+        "s",
+        format!(
+            "compiled (API path, state) pairs per backend: {}; x the measured compile time per variant of its driver (softpipe interprets: 0); the sum / {cores} cores, or the longest backend alone if more{}",
+            parts.join(", "),
+            if complete { "" } else { "; some backend had no figure" }
+        ),
+    ));
+    heavy
+}
+
+/// The same floor with the driver's own count: the entries the cold run wrote to its empty shader
+/// cache (distinct states in the driver's terms: formats it stores alike share a variant); and
+/// the cold run over it.
+fn cache_floor_rows(
+    per_variant: &[(Driver, f64)],
+    cores: f64,
+    heavy: usize,
+    cold: &ColdRun,
+    rows: &mut Vec<Measurement>,
+) {
+    let cold_entries = cold.cache_entries;
+    let mean = per_variant.iter().map(|(_, c)| c).sum::<f64>() / per_variant.len() as f64;
+    let usable = cores.min(heavy.max(1) as f64);
+    let floor = cold_entries as f64 * mean / usable;
+    rows.push(Measurement::new(
+        ids::COLD_FLOOR,
+        None,
+        floor,
+        "s",
+        format!(
+            "{cold_entries} entries written to the empty shader cache by the cold run x {:.1} ms (mean measured compile time per variant) / {usable} cores (the cores, or the backends that compile if fewer)",
+            mean * 1e3
+        ),
+    ));
+    if let Some(c) = cold.wall_s.filter(|_| floor > 0.0) {
+        rows.push(
+            Measurement::new(
+                ids::COLD_OVER_FLOOR,
+                None,
+                c / floor,
+                "x",
+                format!(
+                    "cold suite {c:.1} s over the floor of the variants it compiled, {floor:.1} s"
+                ),
+            )
+            .with_target(Target::new(
+                Goal::AtMost,
+                targets17::COLD_OVER_FLOOR,
+                "issue 17",
+            )),
+        );
     }
 }

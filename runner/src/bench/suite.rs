@@ -189,7 +189,7 @@ pub fn e2e(backend_name: &str, fixtures: &[PathBuf]) -> Result<E2e, String> {
     let checks_of: std::collections::HashMap<&str, usize> = set
         .cases
         .iter()
-        .map(|l| (l.case.id.as_str(), l.case.checks()))
+        .map(|l| (l.case.id.as_str(), l.case.lookup_count()))
         .collect();
     let checks = results
         .iter()

@@ -5,8 +5,8 @@
 //! - [`Status`]: the outcome after the baseline, the flake list and the flake re-run
 //!   (ExpectedFail, UnexpectedImprovement(outcome), Flake, KnownFlake, or the outcome itself).
 //!
-//! How an observation becomes an [`Outcome`] is [`crate::verdict`]; how an outcome becomes a
-//! [`Status`] is [`crate::baseline`].
+//! How an observation becomes an [`Outcome`] is the runner's `verdict` module; how an outcome
+//! becomes a [`Status`] is its `baseline` module.
 
 use serde::{Deserialize, Serialize};
 use std::fmt;

@@ -133,7 +133,7 @@ fn three_digits(d: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::records::Line;
+    use crate::Line;
     use shadowcheck_protocol::Rgba;
 
     fn pass(case_id: &str, api: ApiPath) -> TestResult {

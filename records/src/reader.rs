@@ -261,7 +261,7 @@ pub fn truncate_partial_line(path: &Path) -> Result<(), ReadError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::records::Outcome;
+    use crate::Outcome;
 
     #[test]
     fn a_truncated_last_line_is_dropped_and_cut_before_appending() {
@@ -330,7 +330,7 @@ mod tests {
         let rec = |t: &str| {
             serde_json::to_string(&Line::Result(Box::new(TestResult::sample(
                 t,
-                crate::records::Status::Plain(Outcome::Pass),
+                crate::Status::Plain(Outcome::Pass),
             ))))
             .unwrap()
         };

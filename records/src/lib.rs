@@ -9,16 +9,16 @@
 //!   one [`Passed`] line ([`passed`]: the compact form, unless `--full-report`), and last, when
 //!   the run finished, the closing [`Line::End`];
 //! - [`Counts`] and [`Summary`]: the totals of a run and the exit code they give ([`exit`], the
-//!   documented exit codes, runner/README.md#exit-codes);
+//!   documented exit codes, runner/README.md#exit-codes in the repository);
 //! - [`reader`]: the one reader of `results.jsonl` (for `--resume`, `merge`, `report`,
 //!   `summarize` and `consensus`): a truncated last line is dropped, the last record of a (backend, test) wins,
 //!   load errors are de-duplicated.
 //!
-//! Nothing here runs a test: the runner core ([`crate::run`]) makes these records and sends them
-//! to the reporters as [`crate::events::Event`]s.
+//! Nothing here runs a test: the runner (`shadowcheck-runner`) makes these records and writes
+//! them; an outside tool reads a run's results with this crate alone (see README.md).
 
 pub mod exit;
-mod passed;
+pub mod passed;
 pub mod reader;
 pub mod status;
 mod summary;
@@ -244,10 +244,11 @@ pub struct ExpectedSummary {
     pub citations: Vec<String>,
 }
 
-#[cfg(test)]
+#[cfg(any(test, feature = "test-support"))]
 impl TestResult {
-    /// A Pass-outcome record of `test` on backend `b` (gl46 2D D16 LEQUAL NEAREST), for unit tests.
-    pub(crate) fn sample(test: &str, status: Status) -> TestResult {
+    /// A Pass-outcome record of `test` on backend `b` (gl46 2D D16 LEQUAL NEAREST), for unit tests
+    /// (feature `test-support`).
+    pub fn sample(test: &str, status: Status) -> TestResult {
         TestResult {
             backend: "b".into(),
             test: test.into(),
@@ -303,3 +304,8 @@ mod tests {
             .starts_with("shadowcheck run --backend 'exec:python3 it'\\''s.py' "));
     }
 }
+
+/// The example of README.md, compiled as a doctest so it stays true to the API.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
