@@ -24,7 +24,7 @@ pub use enums::*;
 pub use expect::*;
 pub use keymap::{KeyMap, Keyed};
 pub use state::{
-    AppliedExpect, ExtensionExpect, GlError, StateCall, StateCase, StateExpect, StateObserved,
+    AppliedExpect, ExtensionExpect, GlErrorCode, StateCall, StateCase, StateExpect, StateObserved,
     StatePname, StateType, StateValue,
 };
 pub use sweep::{split_point_id, PointExpectation, SweepPoint, MAX_SWEEP_POINTS, SWEEP_ID_TAG};
