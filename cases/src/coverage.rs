@@ -101,7 +101,7 @@ const GATHER_PATHS: [(Spec, ApiPath); 2] = [
 /// One unit-state column: its name, whether a case falls in it, the API paths that have it.
 pub type UnitStateColumn = (&'static str, fn(&Case) -> bool, &'static [ApiPath]);
 
-/// The unit-state dimensions of issue 16: (column, whether a test falls in it, the API paths on
+/// The unit-state dimensions (texture swizzle, the seamless cube enable, sampler objects): (column, whether a test falls in it, the API paths on
 /// which it exists). Swizzle: GL 3.3 / ES 3.0 shader lookups (a GLSL 1.30 shadow lookup has two
 /// readings, oracle `check`); the seamless enable: GL 3.2 cube lookups (ff, glsl130, core); the ES
 /// rule: filtered cube lookups of ES 3.x, always seamless; sampler objects: GL 3.3 / ES 3.0.
