@@ -412,7 +412,7 @@ impl Coverage {
     /// Tests per API path in each unit-state dimension ([`UNIT_STATE`]); `-` where the path has
     /// no such state.
     pub fn unit_state_markdown(&self) -> String {
-        let mut s = String::from("#### Unit state (issue 16): tests per API path\n\n");
+        let mut s = String::from("#### Unit state: tests per API path\n\n");
         let names: Vec<&str> = UNIT_STATE.iter().map(|u| u.0).collect();
         let _ = writeln!(s, "| API path | {} |", names.join(" | "));
         let _ = writeln!(s, "|---|{}", "---:|".repeat(names.len()));
