@@ -453,7 +453,7 @@ impl Coverage {
     /// gets for each compilation).
     pub fn density_markdown(&self) -> String {
         let mut s = String::from("#### Checks per compiled sampler state\n\n");
-        s.push_str("State = target, format, compare mode/func, min/mag filters, wraps, depth modes of the sampling state in effect (what llvmpipe and lavapipe bake into a shader variant). A check is one lookup judged: a test checks its case's lookup and each point of the case's sweep (`sweep`, above). Goal (tracker issue 17): at least 16 checks per state on every path (`shadowcheck bench` reports this table as `checks_per_compiled_state`).\n\n");
+        s.push_str("State = target, format, compare mode/func, min/mag filters, wraps, depth modes of the sampling state in effect (what llvmpipe and lavapipe bake into a shader variant). A check is one lookup judged: a test checks its case's lookup and each point of the case's sweep (`sweep`, above). Goal: at least 16 checks per state on every path (`shadowcheck bench` reports this table as `checks_per_compiled_state`).\n\n");
         s.push_str(
             "| API path | tests | checks | distinct states | checks per state |\n|---|---:|---:|---:|---:|\n",
         );
