@@ -101,7 +101,7 @@ const GATHER_PATHS: [(Spec, ApiPath); 2] = [
 /// One unit-state column: its name, whether a case falls in it, the API paths that have it.
 pub type UnitStateColumn = (&'static str, fn(&Case) -> bool, &'static [ApiPath]);
 
-/// The unit-state dimensions of issue 16: (column, whether a test falls in it, the API paths on
+/// The unit-state dimensions (texture swizzle, the seamless cube enable, sampler objects): (column, whether a test falls in it, the API paths on
 /// which it exists). Swizzle: GL 3.3 / ES 3.0 shader lookups (a GLSL 1.30 shadow lookup has two
 /// readings, oracle `check`); the seamless enable: GL 3.2 cube lookups (ff, glsl130, core); the ES
 /// rule: filtered cube lookups of ES 3.x, always seamless; sampler objects: GL 3.3 / ES 3.0.
@@ -412,7 +412,7 @@ impl Coverage {
     /// Tests per API path in each unit-state dimension ([`UNIT_STATE`]); `-` where the path has
     /// no such state.
     pub fn unit_state_markdown(&self) -> String {
-        let mut s = String::from("#### Unit state (issue 16): tests per API path\n\n");
+        let mut s = String::from("#### Unit state: tests per API path\n\n");
         let names: Vec<&str> = UNIT_STATE.iter().map(|u| u.0).collect();
         let _ = writeln!(s, "| API path | {} |", names.join(" | "));
         let _ = writeln!(s, "|---|{}", "---:|".repeat(names.len()));
@@ -453,7 +453,7 @@ impl Coverage {
     /// gets for each compilation).
     pub fn density_markdown(&self) -> String {
         let mut s = String::from("#### Checks per compiled sampler state\n\n");
-        s.push_str("State = target, format, compare mode/func, min/mag filters, wraps, depth modes of the sampling state in effect (what llvmpipe and lavapipe bake into a shader variant). A check is one lookup judged: a test checks its case's lookup and each point of the case's sweep (`sweep`, above). Goal (tracker issue 17): at least 16 checks per state on every path (`shadowcheck bench` reports this table as `checks_per_compiled_state`).\n\n");
+        s.push_str("State = target, format, compare mode/func, min/mag filters, wraps, depth modes of the sampling state in effect (what llvmpipe and lavapipe bake into a shader variant). A check is one lookup judged: a test checks its case's lookup and each point of the case's sweep (`sweep`, above). Goal: at least 16 checks per state on every path (`shadowcheck bench` reports this table as `checks_per_compiled_state`).\n\n");
         s.push_str(
             "| API path | tests | checks | distinct states | checks per state |\n|---|---:|---:|---:|---:|\n",
         );

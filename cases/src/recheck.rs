@@ -1,6 +1,6 @@
 //! The trust check of the fixture loaders: a fixture's `expect` is re-derived with the linked oracle
 //! when it loads, and a case whose written expectation (spec value, acceptance sets, layout) differs stops with an error naming the file,
-//! the case, the first field that differs and the command that regenerates (issue 13, section 3).
+//! the case, the first field that differs and the command that regenerates.
 //! A stale or edited expectation would otherwise fail a correct implementation with a dump that
 //! contradicts itself.
 

@@ -85,8 +85,8 @@ fn committed_size_is_within_budget() {
         .iter()
         .map(|p| std::fs::metadata(p).unwrap().len())
         .sum();
-    // Raised from 24 MiB by issue 17's sweeps: ~94,000 points of ~200 bytes each (coordinates,
-    // reference and exact acceptance intervals).
+    // The sweeps (`sweep` in cases/README.md) take most of it: ~94,000 points of ~200 bytes each
+    // (coordinates, reference and exact acceptance intervals).
     assert!(
         total <= 40 * 1024 * 1024,
         "{total} bytes committed (budget 40 MiB)"

@@ -305,7 +305,7 @@ fn generated_ids_need_no_csv_quoting() {
     }
 }
 
-/// Issue 13, section 3: the loader re-derives `expect` with the linked oracle; an edited
+/// The loader re-derives `expect` with the linked oracle (`cases/src/recheck.rs`); an edited
 /// expectation is an error naming the file, the case, the field and the regenerate command.
 #[test]
 fn an_edited_expectation_is_a_load_error_naming_file_case_and_field() {

@@ -23,8 +23,11 @@ pub use case::*;
 pub use enums::*;
 pub use expect::*;
 pub use keymap::{KeyMap, Keyed};
+/// [`GlErrorCode`]'s former name, for the GL and WebGL workers until they use the new one.
+#[doc(hidden)]
+pub use state::GlError;
 pub use state::{
-    AppliedExpect, ExtensionExpect, GlError, StateCall, StateCase, StateExpect, StateObserved,
+    AppliedExpect, ExtensionExpect, GlErrorCode, StateCall, StateCase, StateExpect, StateObserved,
     StatePname, StateType, StateValue,
 };
 pub use sweep::{split_point_id, PointExpectation, SweepPoint, MAX_SWEEP_POINTS, SWEEP_ID_TAG};

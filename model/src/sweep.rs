@@ -1,4 +1,4 @@
-//! Sweep cases (issue 17): one texture and sampler state, many lookups.
+//! Sweep cases: one texture and sampler state, many lookups.
 //!
 //! A case's `sweep` lists more lookups on the case's own texture and sampling state: each point
 //! replaces the lookup's coordinates and reference (everything else of [`Lookup`] is the case's)

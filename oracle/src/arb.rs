@@ -1,5 +1,6 @@
 //! ARB_shadow (21 January 2002) and ARB_shadow_ambient (12 December 2001), with ARB_depth_texture's
-//! DEPTH_TEXTURE_MODE. Source: specs/registry/ARB_shadow.txt, ARB_shadow_ambient.txt, ARB_depth_texture.txt.
+//! DEPTH_TEXTURE_MODE. Source: the OpenGL Registry texts of ARB_shadow, ARB_shadow_ambient and
+//! ARB_depth_texture.
 
 use crate::rules::{
     passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, RefClamp, Rules,

@@ -1,4 +1,4 @@
-//! Where the documents disagree (specs/README.md "Where the documents disagree"; DESIGN.md). Each entry
+//! Where the documents disagree. Each entry quotes the documents involved (`sources`) and
 //! names the reading the oracle encodes and the other one; `touching` says which entries a case meets,
 //! and `alternative_rules` gives the other reading as rules, so `explain` can show both values.
 

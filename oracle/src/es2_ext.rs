@@ -1,5 +1,5 @@
 //! OpenGL ES 2.0 with EXT_shadow_samplers (rev 4, 2012) and OES_depth_texture.
-//! Source: specs/registry/EXT_shadow_samplers.txt, OES_depth_texture.txt.
+//! Source: the OpenGL Registry texts of EXT_shadow_samplers and OES_depth_texture.
 
 use crate::rules::{
     passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, Reading, RefClamp,

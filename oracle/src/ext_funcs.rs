@@ -1,5 +1,5 @@
 //! EXT_shadow_funcs (2002/03/22): the eight comparison functions on top of ARB_shadow.
-//! Source: specs/registry/EXT_shadow_funcs.txt.
+//! Source: the OpenGL Registry text of EXT_shadow_funcs.
 
 use crate::rules::{passes_if, CompareTable, NotInTable, Rules};
 use crate::state::{self, Ctx, Param};

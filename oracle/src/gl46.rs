@@ -1,5 +1,6 @@
 //! OpenGL 3.0 - 4.6 (core profile text, with the compatibility-profile DEPTH_TEXTURE_MODE layouts for
-//! the legacy API paths). Source: specs/gl46-core-excerpts.txt, glsl-excerpts.txt part F.
+//! the legacy API paths). Source: the OpenGL 4.6 core specification (5 May 2022); for the legacy
+//! result layouts, GL 4.6 compatibility §8.23 with Table 16.1 and GLSL 1.20 / 1.30's shadow functions.
 
 use crate::rules::{
     passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, Reading, RefClamp,

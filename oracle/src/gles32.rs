@@ -1,4 +1,4 @@
-//! OpenGL ES 3.0 - 3.2. Source: specs/gles32-excerpts.txt.
+//! OpenGL ES 3.0 - 3.2. Source: the OpenGL ES 3.2 specification (5 May 2022).
 //! Differences from GL 4.6 that matter here: the §8.17 completeness rule for sized depth textures,
 //! border values clamped to the format (§8.14.2), cube maps always seamless (§8.13.1), no
 //! TEXTURE_LOD_BIAS (§8.14.1), no DEPTH_TEXTURE_MODE, no 1D or rectangle textures.

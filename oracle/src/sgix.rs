@@ -1,5 +1,6 @@
 //! SGIX_shadow (rev 1.15, 1997) and SGIX_shadow_ambient (rev 1.3).
-//! Source: specs/registry/SGIX_shadow.txt, specs/registry/SGIX_shadow_ambient.txt (and seeds/SGIX_shadow.txt).
+//! Source: the OpenGL Registry texts of SGIX_shadow and SGIX_shadow_ambient (SGIX_shadow's HTML
+//! rendering reads the same).
 
 use crate::rules::{
     passes_if, BorderRule, CompareTable, Filtering, Incomplete, NotInTable, Reading, RefClamp,

@@ -336,8 +336,8 @@ fn to_model(s: Stored) -> shadowcheck_model::StateValue {
     }
 }
 
-fn error_to_model(e: GlErrorKind) -> shadowcheck_model::GlError {
-    use shadowcheck_model::GlError as E;
+fn error_to_model(e: GlErrorKind) -> shadowcheck_model::GlErrorCode {
+    use shadowcheck_model::GlErrorCode as E;
     match e {
         GlErrorKind::InvalidEnum => E::InvalidEnum,
         GlErrorKind::InvalidValue => E::InvalidValue,
@@ -418,7 +418,7 @@ pub fn expect_state(
             })
             .collect();
         return Ok(StateExpect {
-            error: Some(shadowcheck_model::GlError::InvalidEnum),
+            error: Some(shadowcheck_model::GlErrorCode::InvalidEnum),
             value: None,
             citations: vec![PNAME_UNKNOWN.into(), ERROR_IGNORED.into()],
             with_extension,

@@ -82,7 +82,8 @@ pub fn float_to_unorm(f: f64, bits: u32) -> (u64, u64) {
 
 /// The f32 values an implementation may hold for the real `v`: `v` itself when an f32 represents it,
 /// otherwise the two f32 neighbours (round down, round up). A conversion by multiplication with a
-/// reciprocal or by division may land on either one (DESIGN.md: drivers differ by one ulp).
+/// reciprocal or by division may land on either one: GL 4.6 §2.3.5.1 defines f = c / (2^b - 1)
+/// but not how the quotient is rounded to the float the unit holds.
 pub fn f32_candidates(v: Exact) -> [f64; 2] {
     let a = v.approx();
     if !a.is_finite() {

@@ -1,5 +1,5 @@
-//! The audited oracle defects of issue 13, section 1: one test per rule, each quoting the sentence
-//! it encodes (texts in ../shared/specs; §8.5.1 quoted from the GL 4.6 / ES 3.2 PDFs).
+//! Rules the oracle once encoded wrong: one test per rule, each quoting the sentence it encodes
+//! (GL 4.6 / ES 3.2 §8.5.1 quoted from the specifications' PDF editions).
 
 mod common;
 use common::*;

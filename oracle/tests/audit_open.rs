@@ -1,5 +1,4 @@
-//! Issue 13, section 1 (rest): results the texts leave open, state outside a text, incomplete
-//! non-shadow reads. One test per rule, each quoting the sentence it encodes.
+//! Results the texts leave open, state outside a text, incomplete non-shadow reads. One test per rule, each quoting the sentence it encodes.
 
 mod common;
 use common::*;

@@ -1,4 +1,5 @@
-//! The second audit's classes, each derived by hand from the sentence it quotes: the swizzle of a
+//! More rules the oracle once encoded wrong (after those of `audit.rs`), each derived by hand from
+//! the sentence it quotes: the swizzle of a
 //! shadow gather, the swizzle on the compatibility fixed-function and GLSL 1.20 paths, the two
 //! readings of a compatibility GLSL 1.30 depth read, a sampler object holding state a rectangle
 //! texture refuses, and the gather footprint tolerance under `strict`.

@@ -4,7 +4,7 @@
 //! alternative (`shadowcheck_oracle::state::extension_ctx`).
 
 use shadowcheck_model::{
-    ApiPath, ExtensionExpect, GlError, Spec, StateCall, StateCase, StateExpect, StatePname,
+    ApiPath, ExtensionExpect, GlErrorCode, Spec, StateCall, StateCase, StateExpect, StatePname,
     StateValue, Target,
 };
 use shadowcheck_oracle::state::{self, Ctx};
@@ -50,7 +50,10 @@ fn fail_value_is_invalid_enum_in_gl46_compat_unless_an_ambient_extension_is_expo
     let p = StatePname::CompareFailValue;
     let init = expect(ff, p, StateCall::Initial);
     // The base expectation is unchanged: GL 4.6 has no such pname.
-    assert_eq!((init.error, init.value), (Some(GlError::InvalidEnum), None));
+    assert_eq!(
+        (init.error, init.value),
+        (Some(GlErrorCode::InvalidEnum), None)
+    );
     let names: Vec<&str> = init
         .with_extension
         .iter()
@@ -69,7 +72,7 @@ fn fail_value_is_invalid_enum_in_gl46_compat_unless_an_ambient_extension_is_expo
                 (None, Some(StateValue::Float(stored))),
                 "{ext} TexParameterf({set})"
             );
-            assert_eq!(e.error, Some(GlError::InvalidEnum));
+            assert_eq!(e.error, Some(GlErrorCode::InvalidEnum));
         }
     }
     assert!(alt(&init, "GL_ARB_shadow_ambient")
@@ -89,7 +92,7 @@ fn sgix_pnames_follow_sgix_shadow_when_it_is_exposed() {
     let ff = ApiPath::FixedFunction;
     let sgix = "GL_SGIX_shadow";
     let e = expect(ff, StatePname::CompareSgix, StateCall::Initial);
-    assert_eq!(e.error, Some(GlError::InvalidEnum));
+    assert_eq!(e.error, Some(GlErrorCode::InvalidEnum));
     let a = alt(&e, sgix);
     assert_eq!((a.error, a.value), (None, Some(StateValue::Bool(false))));
     let e = expect(ff, StatePname::CompareSgix, StateCall::SetInt(2));
@@ -114,7 +117,7 @@ fn sgix_pnames_follow_sgix_shadow_when_it_is_exposed() {
     assert_eq!(
         (a.error, a.value),
         (
-            Some(GlError::InvalidOperation),
+            Some(GlErrorCode::InvalidOperation),
             Some(StateValue::Enum(state::TEXTURE_LEQUAL_R_SGIX))
         )
     );
@@ -137,7 +140,7 @@ fn no_alternative_on_core_or_es_nor_for_a_pname_the_spec_defines() {
         ] {
             let e = expect(api, p, StateCall::Initial);
             assert!(e.with_extension.is_empty(), "{api:?} {p:?}");
-            assert_eq!(e.error, Some(GlError::InvalidEnum));
+            assert_eq!(e.error, Some(GlErrorCode::InvalidEnum));
         }
     }
     let e = expect(

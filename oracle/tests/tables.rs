@@ -1,5 +1,5 @@
 //! Every row of every comparison table in the spec texts, for every spec that has it. Expected values
-//! are transcribed from the tables (specs/), not computed.
+//! are transcribed from the tables of the specification texts, not computed.
 
 mod common;
 use common::*;

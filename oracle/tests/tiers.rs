@@ -1,4 +1,4 @@
-//! The tiers by normative force (issue 13, section 2), on worked examples: inside `strict` (what the
+//! The tiers by normative force (`oracle/src/profile.rs`), on worked examples: inside `strict` (what the
 //! "shall" sentences fix) a Pass, inside `quality` only (what the "should" sentences leave open) a
 //! Warn, outside both a Fail.
 

@@ -1,4 +1,4 @@
-//! The unit state of issue 16: texture swizzle (GL 4.6 §15.2.1, §11.1.3.5), the
+//! The texture unit's state beside the texture and its compare mode: texture swizzle (GL 4.6 §15.2.1, §11.1.3.5), the
 //! TEXTURE_CUBE_MAP_SEAMLESS enable (§8.13.1) and bound sampler objects (§8.17.1, §8.2).
 
 mod common;

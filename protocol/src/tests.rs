@@ -230,7 +230,7 @@ fn state_requests_and_answers_round_trip() {
         call: StateCall::SetInt(0x1234),
         read_back: true,
         expect: Some(StateExpect {
-            error: Some(GlError::InvalidEnum),
+            error: Some(GlErrorCode::InvalidEnum),
             value: Some(StateValue::Enum(0)),
             citations: vec![],
             with_extension: vec![],
@@ -254,7 +254,7 @@ fn state_requests_and_answers_round_trip() {
             case_id, results, ..
         } => {
             assert_eq!(case_id, "s");
-            assert_eq!(results[0].observed.error, Some(GlError::InvalidEnum));
+            assert_eq!(results[0].observed.error, Some(GlErrorCode::InvalidEnum));
             assert_eq!(results[0].observed.value, Some(StateValue::Enum(0)));
         }
         other => panic!("{other:?}"),

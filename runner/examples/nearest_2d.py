@@ -45,7 +45,7 @@ def sample(case):
     tex, smp, lk = case["texture"], case["sampler"], case["lookup"]
     if smp["compare_mode"] != "compare" or smp.get("depth_stencil_mode", "depth") != "depth":
         return None, "only depth comparison is implemented"
-    for key in ("swizzle", "seamless", "sampler_object"):  # issue 16's unit state: not implemented
+    for key in ("swizzle", "seamless", "sampler_object"):  # the unit state: not implemented
         if key in smp:
             return None, f"sampler.{key} is not implemented"
     if smp["min_filter"] not in ("nearest", "linear"):  # mipmaps bring completeness rules (§8.17)

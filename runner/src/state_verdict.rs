@@ -7,10 +7,10 @@
 
 use crate::records::Outcome;
 use shadowcheck_model::{
-    AppliedExpect, GlError, StateCase, StateExpect, StateObserved, StateValue,
+    AppliedExpect, GlErrorCode, StateCase, StateExpect, StateObserved, StateValue,
 };
 
-fn error_text(e: Option<GlError>, other: Option<u32>) -> String {
+fn error_text(e: Option<GlErrorCode>, other: Option<u32>) -> String {
     match (e, other) {
         (Some(e), _) => format!("GL_{}", e.name()),
         (None, Some(code)) => format!("GL error 0x{code:04X}"),
@@ -18,7 +18,7 @@ fn error_text(e: Option<GlError>, other: Option<u32>) -> String {
     }
 }
 
-fn expected_words(error: Option<GlError>, value: Option<StateValue>) -> String {
+fn expected_words(error: Option<GlErrorCode>, value: Option<StateValue>) -> String {
     match value {
         Some(v) => format!("{}, value {v}", error_text(error, None)),
         None => error_text(error, None),
@@ -115,12 +115,14 @@ pub fn judge_state<S: AsRef<str>>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use shadowcheck_model::{ApiPath, GlError, Spec, StateCall, StatePname, StateValue, Target};
+    use shadowcheck_model::{
+        ApiPath, GlErrorCode, Spec, StateCall, StatePname, StateValue, Target,
+    };
 
     /// A backend that reports no extensions (soft, exec, mock).
     const NONE: &[&str] = &[];
 
-    fn case(error: Option<GlError>, value: Option<StateValue>) -> StateCase {
+    fn case(error: Option<GlErrorCode>, value: Option<StateValue>) -> StateCase {
         StateCase {
             id: "s".into(),
             spec: Spec::Gl46,
@@ -140,9 +142,9 @@ mod tests {
 
     #[test]
     fn error_and_unchanged_value_both_decide() {
-        let c = case(Some(GlError::InvalidEnum), Some(StateValue::Enum(0)));
+        let c = case(Some(GlErrorCode::InvalidEnum), Some(StateValue::Enum(0)));
         let ok = StateObserved {
-            error: Some(GlError::InvalidEnum),
+            error: Some(GlErrorCode::InvalidEnum),
             other_error: None,
             value: Some(StateValue::Enum(0)),
         };
@@ -183,7 +185,7 @@ mod tests {
         let mut c = case(None, None);
         c.expect = None;
         let right = StateObserved {
-            error: Some(GlError::InvalidEnum),
+            error: Some(GlErrorCode::InvalidEnum),
             other_error: None,
             value: Some(StateValue::Enum(0)),
         };
@@ -222,7 +224,7 @@ mod tests {
         c
     }
 
-    fn observed(error: Option<GlError>, value: Option<StateValue>) -> StateObserved {
+    fn observed(error: Option<GlErrorCode>, value: Option<StateValue>) -> StateObserved {
         StateObserved {
             error,
             other_error: None,
@@ -234,7 +236,7 @@ mod tests {
     fn arb_shadow_ambient_exposed_makes_the_fail_value_legal_and_says_so() {
         let c = ext_case(StatePname::CompareFailValue, StateCall::SetFloat(1.5));
         let accepted = observed(None, Some(StateValue::Float(1.0)));
-        let rejected = observed(Some(GlError::InvalidEnum), None);
+        let rejected = observed(Some(GlErrorCode::InvalidEnum), None);
         let arb = &["GL_ARB_shadow", "GL_ARB_shadow_ambient"];
         // Exposed and accepted (clamped to [0,1]): Pass, saying which expectation was used.
         let (o, why) = judge_state(&c, &accepted, arb);
@@ -279,7 +281,7 @@ mod tests {
         // SGIX_shadow Errors: a value other than TEXTURE_LEQUAL_R_SGIX / _GEQUAL_R_SGIX is
         // INVALID_OPERATION, the operator stays TEXTURE_LEQUAL_R_SGIX.
         let right = observed(
-            Some(GlError::InvalidOperation),
+            Some(GlErrorCode::InvalidOperation),
             Some(StateValue::Enum(0x819C)),
         );
         let (o, why) = judge_state(&c, &right, sgix);
@@ -290,7 +292,10 @@ mod tests {
         // The pname accepted without the extension in the string: Fail.
         assert_eq!(judge_state(&c, &right, NONE).0, Outcome::Fail);
         // INVALID_ENUM for a bad operator where SGIX_shadow says INVALID_OPERATION: Fail.
-        let enum_err = observed(Some(GlError::InvalidEnum), Some(StateValue::Enum(0x819C)));
+        let enum_err = observed(
+            Some(GlErrorCode::InvalidEnum),
+            Some(StateValue::Enum(0x819C)),
+        );
         let (o, why) = judge_state(&c, &enum_err, sgix);
         assert_eq!(o, Outcome::Fail);
         assert!(
@@ -301,7 +306,7 @@ mod tests {
         let f = observed(None, Some(StateValue::Bool(false)));
         assert_eq!(judge_state(&c, &f, sgix).0, Outcome::Pass);
         assert_eq!(judge_state(&c, &f, NONE).0, Outcome::Fail);
-        let unknown = observed(Some(GlError::InvalidEnum), None);
+        let unknown = observed(Some(GlErrorCode::InvalidEnum), None);
         assert_eq!(judge_state(&c, &unknown, NONE), (Outcome::Pass, None));
         // Another extension in the string changes nothing.
         assert_eq!(

@@ -1,4 +1,4 @@
-//! `shadowcheck bench --quick --json`: the report has the rows issues 6 and 17 ask for, each a
+//! `shadowcheck bench --quick --json`: the report has the rows of `bench::ids`, each a
 //! positive finite number. No timing is asserted (speed is what the bench reports, not what tests check).
 
 use std::path::Path;
@@ -57,7 +57,7 @@ fn quick_json_has_every_row_with_positive_finite_values() {
     positive(&rep, "suite_wall_s", Some("soft"));
     positive(&rep, "suite_wall_cached_s", Some("soft"));
     positive(&rep, "suite_peak_rss_mib", Some("soft"));
-    // Issue 17: checks per compiled state for every API path of the fixtures.
+    // Checks per compiled state for every API path of the fixtures.
     for path in [
         "ff", "arbfp", "glsl120", "glsl130", "core", "es100", "es300",
     ] {

@@ -1,5 +1,6 @@
 #!/bin/bash
-# The attacks of issue 14 ("the run's contract with CI") against a release build, one line each:
+# Attacks on the run's contract with CI (runner/README.md, "What a run guarantees") against a
+# release build, one line each:
 #   attack | what was seen | exit code | OK (contract kept) or BROKEN
 # Usage, from the repository root:  bash runner/tests/chaos.sh [path/to/shadowcheck]
 # Needs python3; the GL attacks need Mesa (as installed by .ci/run) and are SKIPPED without it, the

@@ -1,4 +1,4 @@
-//! The run's contract with CI under faults (issue 14): each test injects one fault through the
+//! The run's contract with CI under faults (runner/README.md, "What a run guarantees"): each test injects one fault through the
 //! `mock:` implementation or the file system and checks the statuses, the exit code and the files
 //! left in `--out`.
 

@@ -1,4 +1,4 @@
-//! A fixture's `expect` is re-derived with the linked oracle when it loads (issue 13, section 3): a
+//! A fixture's `expect` is re-derived with the linked oracle when it loads (`cases/src/recheck.rs`): a
 //! tampered expectation stops that case with an error naming the file, the case, the field and the
 //! command that regenerates, and the run exits with the setup code 96.
 

@@ -136,7 +136,7 @@ faults! {
     GatherIgnoresRef = "gather-ignores-ref",
     /// Gather reads the level the filters' λ selects instead of level base.
     GatherUsesLodLevel = "gather-uses-lod-level",
-    // --- unit state: swizzle, seamless enable, sampler objects (issue 16) ---
+    // --- unit state: swizzle, seamless enable, sampler objects (GL 3.2 / 3.3, ES 3.0) ---
     /// TEXTURE_SWIZZLE_* ignored (the unswizzled base colour returned).
     SwizzleIgnored = "swizzle-ignored",
     /// The swizzle applied to the stored depth before the comparison (Dref compared with Cs[0]

@@ -13,7 +13,7 @@
 
 use crate::faults::{Fault, Faults};
 use shadowcheck_model::{
-    ApiPath, GlError, Spec, StateCall, StateCase, StateObserved, StatePname, StateValue,
+    ApiPath, GlErrorCode, Spec, StateCall, StateCase, StateObserved, StatePname, StateValue,
 };
 
 /// The context kind a state case's API path stands for.
@@ -103,7 +103,10 @@ fn observe_extension(case: &StateCase, exposed: &[&str], faults: Faults) -> Opti
                 StateCall::Initial => (None, StateValue::Enum(LEQUAL_R)),
                 call => match u32::try_from(as_int(call)) {
                     Ok(e) if e == LEQUAL_R || e == GEQUAL_R => (None, StateValue::Enum(e)),
-                    _ => (Some(GlError::InvalidOperation), StateValue::Enum(LEQUAL_R)),
+                    _ => (
+                        Some(GlErrorCode::InvalidOperation),
+                        StateValue::Enum(LEQUAL_R),
+                    ),
                 },
             }
         }
@@ -111,7 +114,7 @@ fn observe_extension(case: &StateCase, exposed: &[&str], faults: Faults) -> Opti
     };
     if faults.has(Fault::ExtensionPnameRejected) {
         return Some(StateObserved {
-            error: Some(GlError::InvalidEnum),
+            error: Some(GlErrorCode::InvalidEnum),
             other_error: None,
             value: None,
         });
@@ -145,7 +148,7 @@ pub fn observe_exposing(
             }
         }
         return StateObserved {
-            error: Some(GlError::InvalidEnum),
+            error: Some(GlErrorCode::InvalidEnum),
             other_error: None,
             value: None,
         };
@@ -162,7 +165,7 @@ pub fn observe_exposing(
             match u32::try_from(v) {
                 Ok(e) if legal.contains(&e) => (None, e),
                 Ok(e) if faults.has(Fault::IllegalValueStored) => (None, e),
-                _ => (Some(GlError::InvalidEnum), initial),
+                _ => (Some(GlErrorCode::InvalidEnum), initial),
             }
         }
     };

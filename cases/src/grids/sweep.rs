@@ -1,4 +1,4 @@
-//! Sweeps (issue 17): every compiled sampling state of the grid checks many lookups.
+//! Sweeps: every compiled sampling state of the grid checks many lookups.
 //!
 //! Drivers such as llvmpipe compile one shader variant per sampling state, so what a state costs
 //! is fixed and what it checks is the grid's choice. For every (spec, compiled state) of the

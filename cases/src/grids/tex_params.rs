@@ -164,7 +164,7 @@ pub fn files(grid: &str, seed: u64) -> Result<Vec<(String, FixtureFile)>, GridEr
 #[cfg(test)]
 mod tests {
     use super::*;
-    use shadowcheck_model::{GlError, StateValue};
+    use shadowcheck_model::{GlErrorCode, StateValue};
 
     fn find<'a>(v: &'a [StateCase], id: &str) -> &'a StateCase {
         v.iter()
@@ -180,7 +180,7 @@ mod tests {
         // GL 4.6 §8.10: an illegal compare mode is INVALID_ENUM and the state stays NONE (§2.3.1).
         let c = find(gl, "state/gl46/core/2d/compare_mode/set=0x1234");
         let e = c.expect.as_ref().unwrap_or_else(|| panic!("no expect"));
-        assert_eq!(e.error, Some(GlError::InvalidEnum));
+        assert_eq!(e.error, Some(GlErrorCode::InvalidEnum));
         assert_eq!(e.value, Some(StateValue::Enum(0)));
         // Table 23.15: TEXTURE_COMPARE_FUNC starts as LEQUAL.
         let c = find(gl, "state/gl46/core/cube/compare_func/initial");
@@ -194,7 +194,7 @@ mod tests {
         let e = c.expect.as_ref().unwrap_or_else(|| panic!("no expect"));
         assert_eq!(
             (e.error, e.value, c.read_back),
-            (Some(GlError::InvalidEnum), None, false)
+            (Some(GlErrorCode::InvalidEnum), None, false)
         );
         let es = &files[1].1.state_cases;
         assert!(es.iter().all(|c| c.api == [ApiPath::Es300]));

@@ -1,4 +1,4 @@
-//! Issue 17's cold-run measurements: checks per compiled state, the compile time of one shader
+//! The cold-run measurements: checks per compiled state, the compile time of one shader
 //! variant, the default suite over every Mesa backend in one run (cold, cached, `--fast-compile`)
 //! and the floor of the compilations a cold run cannot avoid.
 
@@ -10,7 +10,7 @@ use shadowcheck_gl::names::{BackendName, Driver};
 use std::path::{Path, PathBuf};
 
 /// Checks per compiled sampler state on each API path of the fixtures (cases/README.md prints the
-/// same table): tests over distinct states, against issue 17's goal.
+/// same table): tests over distinct states, against [`targets17::CHECKS_PER_STATE`].
 pub fn density_rows(set: &CaseSet) -> Vec<Measurement> {
     let cov = shadowcheck_cases::coverage::Coverage::of(set.cases.iter().map(|l| &l.case));
     cov.per_path

@@ -1,4 +1,4 @@
-//! Throughput measurements behind `shadowcheck bench` (tracker issues 6 and 17).
+//! Throughput measurements behind `shadowcheck bench` (the goals in [`targets`] and [`targets17`]).
 //!
 //! Each measurement yields [`Measurement`]s: the oracle's verdicts per second on one core, the `soft`
 //! implementation's raw lookups per second on one core, and per GL backend the bare-draw floor
@@ -150,7 +150,7 @@ pub mod ids {
     pub const SUITE_WALL: &str = "suite_wall_s";
     pub const SUITE_RSS: &str = "suite_peak_rss_mib";
     pub const SUITE_WALL_CACHED: &str = "suite_wall_cached_s";
-    /// Issue 17: every Mesa backend of the machine in one `shadowcheck run` (both cores).
+    /// Every Mesa backend of the machine in one `shadowcheck run` (both cores).
     pub const MESA_COLD: &str = "suite_mesa_cold_s";
     pub const MESA_CACHED: &str = "suite_mesa_cached_s";
     pub const MESA_FAST_COMPILE: &str = "suite_mesa_fast_compile_cold_s";
@@ -168,7 +168,7 @@ pub mod ids {
     pub const COLD_OVER_FLOOR: &str = "suite_mesa_cold_over_floor";
 }
 
-/// Targets of issue 6.
+/// The throughput goals (their rows name them "issue 6", the request that set them).
 pub mod targets {
     /// Oracle verdicts per second on one core.
     pub const ORACLE_VERDICTS_PER_S: f64 = 50e6;
@@ -180,7 +180,7 @@ pub mod targets {
     pub const PEAK_RSS_MIB: f64 = 1024.0;
 }
 
-/// Targets of issue 17 (cold runs).
+/// The cold-run goals (their rows name them "issue 17", the request that set them).
 pub mod targets17 {
     /// Default suite, every Mesa backend, empty shader cache, 2 cores: seconds of wall time.
     pub const MESA_COLD_S: f64 = 60.0;

@@ -1,4 +1,4 @@
-//! The families of the unit state beyond the texture's own sampling parameters (issue 16): the
+//! The families of the unit state beyond the texture's own sampling parameters: the
 //! texture swizzle, GL's TEXTURE_CUBE_MAP_SEAMLESS enable (and ES's always-seamless rule) and a
 //! bound sampler object whose state differs from the texture's.
 
