@@ -2,7 +2,7 @@
 //! run time so a machine without Mesa still builds and reports "unavailable" with the install command.
 
 use super::names::{BackendName, ContextApi, Driver, Platform};
-use super::GlError;
+use super::WorkerError;
 use std::ffi::{c_void, CString};
 use std::os::raw::{c_char, c_int, c_uint};
 
@@ -69,9 +69,9 @@ pub struct GlContext {
 
 impl GlContext {
     /// Creates and makes current a context for `b`. The driver env vars must already be set.
-    pub fn create(b: BackendName) -> Result<GlContext, GlError> {
+    pub fn create(b: BackendName) -> Result<GlContext, WorkerError> {
         if let Some(why) = b.static_unavailability() {
-            return Err(GlError::Unavailable(why));
+            return Err(WorkerError::Unavailable(why));
         }
         // The runner checked the files; a library named by the runner is what is loaded.
         if std::env::var_os(LIBEGL_ENV).is_none() {
@@ -106,10 +106,10 @@ impl GlContext {
 
 /// Whether the files a backend needs beyond the system's libraries are here (SwiftShader's Vulkan
 /// ICD for zink+swiftshader); the error names the file and the install command.
-pub fn check_files(b: BackendName) -> Result<(), GlError> {
+pub fn check_files(b: BackendName) -> Result<(), WorkerError> {
     match b.missing_file() {
         None => Ok(()),
-        Some((path, install)) => Err(GlError::MissingLibrary {
+        Some((path, install)) => Err(WorkerError::MissingLibrary {
             lib: path.display().to_string(),
             detail: "no such file".into(),
             install: install.into(),
@@ -117,7 +117,7 @@ pub fn check_files(b: BackendName) -> Result<(), GlError> {
     }
 }
 
-fn create_egl(b: BackendName) -> Result<GlContext, GlError> {
+fn create_egl(b: BackendName) -> Result<GlContext, WorkerError> {
     let name = lib_name(LIBEGL_ENV, "libEGL.so.1");
     let ctx = super::egl::create(b, &name, install_hint(b))?;
     Ok(GlContext {
@@ -125,9 +125,9 @@ fn create_egl(b: BackendName) -> Result<GlContext, GlError> {
     })
 }
 
-fn create_osmesa(b: BackendName) -> Result<GlContext, GlError> {
+fn create_osmesa(b: BackendName) -> Result<GlContext, WorkerError> {
     let name = lib_name(LIBOSMESA_ENV, "libOSMesa.so.8");
-    let missing = |detail: String| GlError::MissingLibrary {
+    let missing = |detail: String| WorkerError::MissingLibrary {
         lib: name.to_string_lossy().into_owned(),
         detail,
         install: install_hint(b),
@@ -180,7 +180,9 @@ fn create_osmesa(b: BackendName) -> Result<GlContext, GlError> {
         // SAFETY: buffer outlives the context (kept in GlContext); 0x1401 = GL_UNSIGNED_BYTE.
         let ok = unsafe { make_current(ctx, buffer.as_mut_ptr() as *mut c_void, 0x1401, w, h) };
         if ok == 0 {
-            return Err(GlError::ContextFailed("OSMesaMakeCurrent failed".into()));
+            return Err(WorkerError::ContextFailed(
+                "OSMesaMakeCurrent failed".into(),
+            ));
         }
         return Ok(GlContext {
             inner: Inner::Osmesa {
@@ -190,7 +192,7 @@ fn create_osmesa(b: BackendName) -> Result<GlContext, GlError> {
             },
         });
     }
-    Err(GlError::ContextFailed(
+    Err(WorkerError::ContextFailed(
         "OSMesaCreateContextAttribs returned NULL for every version".into(),
     ))
 }

@@ -8,7 +8,7 @@
 //! [`FORCE_PBUFFER_ENV`] forces the fallback (tests run it on Mesa).
 
 use super::names::{BackendName, ContextApi};
-use super::GlError;
+use super::WorkerError;
 use khronos_egl as egl;
 use std::ffi::c_void;
 
@@ -60,8 +60,8 @@ impl EglContext {
     }
 }
 
-fn failed(what: &str, e: impl std::fmt::Display) -> GlError {
-    GlError::ContextFailed(format!("{what}: {e}"))
+fn failed(what: &str, e: impl std::fmt::Display) -> WorkerError {
+    WorkerError::ContextFailed(format!("{what}: {e}"))
 }
 
 fn has(list: &str, ext: &str) -> bool {
@@ -107,10 +107,10 @@ pub fn create(
     b: BackendName,
     lib: &std::ffi::OsStr,
     install: String,
-) -> Result<EglContext, GlError> {
+) -> Result<EglContext, WorkerError> {
     // SAFETY: loading an EGL library; khronos-egl checks every EGL 1.4 symbol.
     let egl = unsafe { egl::DynamicInstance::<egl::EGL1_4>::load_required_from_filename(lib) }
-        .map_err(|e| GlError::MissingLibrary {
+        .map_err(|e| WorkerError::MissingLibrary {
             lib: format!("{} (EGL 1.4)", lib.to_string_lossy()),
             detail: e.to_string(),
             install: install.clone(),
@@ -192,7 +192,7 @@ pub fn create(
             Err(e) => last = format!("eglCreateContext {attrs:?}: {e}"),
         }
     }
-    Err(GlError::ContextFailed(format!(
+    Err(WorkerError::ContextFailed(format!(
         "{last} (no version of this context kind could be created; {mode:?})"
     )))
 }
@@ -203,7 +203,7 @@ fn pbuffer_config(
     display: egl::Display,
     api: ContextApi,
     create_context_ext: bool,
-) -> Result<egl::Config, GlError> {
+) -> Result<egl::Config, WorkerError> {
     let mut bits = match api {
         ContextApi::Es3 if create_context_ext => vec![EGL_OPENGL_ES3_BIT, egl::OPENGL_ES2_BIT],
         ContextApi::Es3 | ContextApi::Es2 => vec![egl::OPENGL_ES2_BIT],

@@ -1,7 +1,7 @@
 //! Legacy (compatibility-profile) entry points that glow 0.18 does not wrap: immediate mode,
 //! TexEnv, and ARB_fragment_program. Loaded through the same loader as glow.
 
-use super::GlError;
+use super::WorkerError;
 use std::ffi::c_void;
 
 type FnBegin = unsafe extern "system" fn(u32);
@@ -60,10 +60,10 @@ struct ArbFp {
     local4f: FnProgramLocal4f,
 }
 
-fn load<T: Copy>(loader: &dyn Fn(&str) -> *const c_void, name: &str) -> Result<T, GlError> {
+fn load<T: Copy>(loader: &dyn Fn(&str) -> *const c_void, name: &str) -> Result<T, WorkerError> {
     let p = loader(name);
     if p.is_null() {
-        return Err(GlError::MissingEntryPoint(name.to_string()));
+        return Err(WorkerError::MissingEntryPoint(name.to_string()));
     }
     debug_assert_eq!(
         std::mem::size_of::<T>(),
@@ -78,7 +78,7 @@ impl Legacy {
     pub fn load(
         loader: &dyn Fn(&str) -> *const c_void,
         with_arbfp: bool,
-    ) -> Result<Legacy, GlError> {
+    ) -> Result<Legacy, WorkerError> {
         let arbfp = if with_arbfp {
             Some(ArbFp {
                 gen: load(loader, "glGenProgramsARB")?,
@@ -160,12 +160,12 @@ impl Legacy {
     ///
     /// # Safety
     /// A compatibility context must be current.
-    pub unsafe fn arbfp_program(&self, gl: &glow::Context, src: &str) -> Result<u32, GlError> {
+    pub unsafe fn arbfp_program(&self, gl: &glow::Context, src: &str) -> Result<u32, WorkerError> {
         use glow::HasContext;
         let fp = self
             .arbfp
             .as_ref()
-            .ok_or_else(|| GlError::MissingEntryPoint("glProgramStringARB".into()))?;
+            .ok_or_else(|| WorkerError::MissingEntryPoint("glProgramStringARB".into()))?;
         while gl.get_error() != glow::NO_ERROR {}
         let mut id = 0u32;
         (fp.gen)(1, &mut id);
@@ -180,7 +180,7 @@ impl Legacy {
         let err = gl.get_error();
         if pos != -1 || err != glow::NO_ERROR {
             let msg = gl.get_parameter_string(GL_PROGRAM_ERROR_STRING_ARB);
-            return Err(GlError::Gl(format!(
+            return Err(WorkerError::Gl(format!(
                 "ARB fragment program rejected at {pos}: {msg}\n{src}"
             )));
         }

@@ -28,8 +28,11 @@ pub mod worker;
 
 pub use names::{BackendName, ContextApi, Driver, Platform};
 
+/// Why the GL worker (or the runner's side of it) could not do what it was asked: a bad backend
+/// name, a missing library or entry point, a context that failed, a GL error during a draw.
+/// (A GL error code that a state case observes is `shadowcheck_model::GlErrorCode`, an observation.)
 #[derive(Debug, thiserror::Error)]
-pub enum GlError {
+pub enum WorkerError {
     #[error("bad backend name `{name}`: {why}")]
     BadName { name: String, why: String },
     #[error("backend unavailable: {0}")]

@@ -5,7 +5,7 @@
 //! and `LD_LIBRARY_PATH` (so that the library's own libGLESv2 is the one it binds); the backend name
 //! is what the user writes.
 
-use super::GlError;
+use super::WorkerError;
 use std::path::{Path, PathBuf};
 
 /// Names the SwiftShader directory instead of the cache default.
@@ -61,11 +61,11 @@ pub fn lib_dir_env(dir: &Path) -> Vec<(String, String)> {
 
 /// Splits `egl@<dir>:<rest>` into the directory and `egl:<rest>`; other names are returned as
 /// they are. The directory may not contain `:`.
-pub fn split_lib_dir(name: &str) -> Result<(Option<PathBuf>, String), GlError> {
+pub fn split_lib_dir(name: &str) -> Result<(Option<PathBuf>, String), WorkerError> {
     let Some(after) = name.strip_prefix("egl@") else {
         return Ok((None, name.to_string()));
     };
-    let bad = |why: &str| GlError::BadName {
+    let bad = |why: &str| WorkerError::BadName {
         name: name.to_string(),
         why: why.to_string(),
     };

@@ -12,7 +12,7 @@
 use super::libdir::{
     lib_dir_env, missing_lib, swiftshader_dir, SWIFTSHADER_FETCH, SWIFTSHADER_LIBS,
 };
-use super::GlError;
+use super::WorkerError;
 pub use shadowcheck_plan::{ContextApi, LookupForm};
 
 /// The layer that creates the context.
@@ -282,9 +282,9 @@ impl std::fmt::Display for BackendName {
 }
 
 impl std::str::FromStr for BackendName {
-    type Err = GlError;
-    fn from_str(s: &str) -> Result<Self, GlError> {
-        let bad = |why: &str| GlError::BadName {
+    type Err = WorkerError;
+    fn from_str(s: &str) -> Result<Self, WorkerError> {
+        let bad = |why: &str| WorkerError::BadName {
             name: s.to_string(),
             why: why.to_string(),
         };

@@ -3,16 +3,16 @@
 //! read back afterwards) and never judged: the runner compares with the oracle's expectation.
 
 use glow::HasContext;
-use shadowcheck_model::{GlError, StateCall, StateCase, StateObserved, StateType, StateValue};
+use shadowcheck_model::{GlErrorCode, StateCall, StateCase, StateObserved, StateType, StateValue};
 
 /// The first pending GL error, then drains the rest (so the next call starts clean).
-unsafe fn take_error(gl: &glow::Context) -> (Option<GlError>, Option<u32>) {
+unsafe fn take_error(gl: &glow::Context) -> (Option<GlErrorCode>, Option<u32>) {
     let first = gl.get_error();
     let mut guard = 0;
     while gl.get_error() != glow::NO_ERROR && guard < 16 {
         guard += 1;
     }
-    GlError::classify(first)
+    GlErrorCode::classify(first)
 }
 
 /// GetTexParameter of `case.pname` in the type the pname is stored as.

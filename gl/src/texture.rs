@@ -2,7 +2,7 @@
 //! (`shadowcheck_plan::texels`, `shadowcheck_plan::unit`), and level 0 read back (desktop GL, with
 //! glGetTexImage) so the verdict can use what was really stored.
 
-use super::GlError;
+use super::WorkerError;
 use glow::HasContext;
 use shadowcheck_model::{Case, Target, Texels};
 use shadowcheck_plan::texels::{decode_stored, level_bytes, transfer_for};
@@ -20,7 +20,7 @@ fn face_targets(target: Target) -> Vec<u32> {
 }
 
 /// Creates the texture of `case`, uploads every level and sets the sampler state on the texture
-/// object. Leaves it bound to unit 0. Returns GL errors raised on the way as `GlError::Gl`.
+/// object. Leaves it bound to unit 0. Returns GL errors raised on the way as `WorkerError::Gl`.
 ///
 /// # Safety
 /// `gl` must be current.
@@ -28,16 +28,16 @@ pub unsafe fn create(
     gl: &glow::Context,
     info: &GlInfo,
     case: &Case,
-) -> Result<glow::Texture, GlError> {
+) -> Result<glow::Texture, WorkerError> {
     let t = &case.texture;
     let target = t.target.gl();
     let (ifmt, fmt, ty, bpt) = transfer_for(case);
-    let tex = gl.create_texture().map_err(GlError::Gl)?;
+    let tex = gl.create_texture().map_err(WorkerError::Gl)?;
     gl.active_texture(glow::TEXTURE0);
     gl.bind_texture(target, Some(tex));
     for (i, lvl) in t.levels.iter().enumerate() {
         let level = (t.base_level as usize + i) as i32;
-        let bytes = level_bytes(t.format, lvl).map_err(|e| GlError::Gl(e.to_string()))?;
+        let bytes = level_bytes(t.format, lvl).map_err(|e| WorkerError::Gl(e.to_string()))?;
         let (w, h, l) = (lvl.width as i32, lvl.height as i32, lvl.layers as i32);
         let data = glow::PixelUnpackData::Slice(Some(&bytes));
         match t.target {
@@ -52,9 +52,9 @@ pub unsafe fn create(
             Target::Cube => {
                 let face = (w * h) as usize * bpt;
                 for (f, ft) in face_targets(Target::Cube).into_iter().enumerate() {
-                    let part = bytes
-                        .get(f * face..(f + 1) * face)
-                        .ok_or_else(|| GlError::Gl("cube level has fewer than 6 faces".into()))?;
+                    let part = bytes.get(f * face..(f + 1) * face).ok_or_else(|| {
+                        WorkerError::Gl("cube level has fewer than 6 faces".into())
+                    })?;
                     gl.tex_image_2d(
                         ft,
                         level,
@@ -118,18 +118,18 @@ pub unsafe fn rgba32f(gl: &glow::Context, w: i32, h: i32) -> Result<glow::Textur
     Ok(t)
 }
 
-/// Turns a pending GL error into `GlError::Gl` naming `what`.
-pub fn check(gl: &glow::Context, what: &str) -> Result<(), GlError> {
+/// Turns a pending GL error into `WorkerError::Gl` naming `what`.
+pub fn check(gl: &glow::Context, what: &str) -> Result<(), WorkerError> {
     match check_err(gl) {
         None => Ok(()),
         Some(e) => {
             while check_err(gl).is_some() {}
-            Err(GlError::Gl(format!("{what} raised {}", error_name(e))))
+            Err(WorkerError::Gl(format!("{what} raised {}", error_name(e))))
         }
     }
 }
 
-unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<(), GlError> {
+unsafe fn set_state(gl: &glow::Context, info: &GlInfo, case: &Case) -> Result<(), WorkerError> {
     let target = case.texture.target.gl();
     for p in tex_params(info.compat, case) {
         match p.value {
@@ -151,14 +151,14 @@ pub unsafe fn read_back(
     gl: &glow::Context,
     tex: glow::Texture,
     case: &Case,
-) -> Result<Texels, GlError> {
+) -> Result<Texels, WorkerError> {
     let t = &case.texture;
     gl.active_texture(glow::TEXTURE0);
     gl.bind_texture(t.target.gl(), Some(tex));
     let lvl = t
         .levels
         .first()
-        .ok_or_else(|| GlError::Gl("no levels".into()))?;
+        .ok_or_else(|| WorkerError::Gl("no levels".into()))?;
     let (_, fmt, ty, bpt) = transfer_for(case);
     let mut all = Vec::with_capacity(lvl.texel_count() * bpt);
     let targets = face_targets(t.target);

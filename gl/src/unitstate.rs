@@ -3,7 +3,7 @@
 //! set with the other TexParameter calls (`shadowcheck_plan::unit::tex_params`).
 
 use super::texture::check;
-use super::GlError;
+use super::WorkerError;
 use glow::HasContext;
 use shadowcheck_model::Case;
 use shadowcheck_plan::unit::{sampler_params, ParamValue};
@@ -16,7 +16,7 @@ use shadowcheck_plan::unit::{sampler_params, ParamValue};
 pub unsafe fn bind_unit_state(
     gl: &glow::Context,
     case: &Case,
-) -> Result<Option<glow::Sampler>, GlError> {
+) -> Result<Option<glow::Sampler>, WorkerError> {
     if let Some(on) = case.sampler.seamless {
         if on {
             gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
@@ -28,7 +28,7 @@ pub unsafe fn bind_unit_state(
     if case.sampler.sampler_object.is_none() {
         return Ok(None);
     }
-    let so = gl.create_sampler().map_err(GlError::Gl)?;
+    let so = gl.create_sampler().map_err(WorkerError::Gl)?;
     for p in sampler_params(case) {
         match p.value {
             ParamValue::Int(v) => gl.sampler_parameter_i32(so, p.pname, v as i32),

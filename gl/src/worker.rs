@@ -6,7 +6,7 @@ use super::context::GlContext;
 use super::legacy::Legacy;
 use super::names::{BackendName, ContextApi};
 use super::renderer::Renderer;
-use super::GlError;
+use super::WorkerError;
 use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase};
 use shadowcheck_plan::serve::{state_reply, Serve};
 use shadowcheck_plan::{sweep, Answer, GlInfo};
@@ -74,13 +74,13 @@ fn parse_version(s: &str) -> (u32, u32) {
 impl Worker {
     /// Creates the context (driver env vars must already be set) and checks the driver is the one
     /// asked for.
-    pub fn start(name: BackendName) -> Result<Worker, GlError> {
+    pub fn start(name: BackendName) -> Result<Worker, WorkerError> {
         let ctx = GlContext::create(name)?;
         let loader = |s: &str| ctx.get_proc(s);
         // glow panics on a missing GL_VERSION; check first.
         let get_string = loader("glGetString");
         if get_string.is_null() {
-            return Err(GlError::MissingEntryPoint("glGetString".into()));
+            return Err(WorkerError::MissingEntryPoint("glGetString".into()));
         }
         type FnGetString = unsafe extern "system" fn(u32) -> *const u8;
         // SAFETY: glGetString has this signature; the context is current.
@@ -89,7 +89,7 @@ impl Worker {
         // SAFETY: GL_VERSION is a valid enum; the result is null or a NUL-terminated string.
         let v = unsafe { gs(glow::VERSION) };
         if v.is_null() {
-            return Err(GlError::ContextFailed(
+            return Err(WorkerError::ContextFailed(
                 "glGetString(GL_VERSION) returned NULL".into(),
             ));
         }
@@ -105,7 +105,7 @@ impl Worker {
             )
         };
         if !name.driver.renderer_matches(&renderer) {
-            return Err(GlError::WrongDriver {
+            return Err(WorkerError::WrongDriver {
                 wanted: name.driver.key().into(),
                 renderer,
             });

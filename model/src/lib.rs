@@ -23,9 +23,6 @@ pub use case::*;
 pub use enums::*;
 pub use expect::*;
 pub use keymap::{KeyMap, Keyed};
-/// [`GlErrorCode`]'s former name, for the GL and WebGL workers until they use the new one.
-#[doc(hidden)]
-pub use state::GlError;
 pub use state::{
     AppliedExpect, ExtensionExpect, GlErrorCode, StateCall, StateCase, StateExpect, StateObserved,
     StatePname, StateType, StateValue,

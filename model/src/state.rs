@@ -103,8 +103,7 @@ impl std::fmt::Display for StateCall {
 
 /// The GL error codes a state call can raise (glGetError's INVALID_ENUM, INVALID_VALUE,
 /// INVALID_OPERATION; GL 4.6 §2.3.1 Table 2.3). A code the GL reports, not a failure of the
-/// harness. On the wire a variant is its snake_case name (`"invalid_enum"`), as before the type
-/// was named `GlErrorCode`.
+/// harness. On the wire a variant is its snake_case name (`"invalid_enum"`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum GlErrorCode {
@@ -112,11 +111,6 @@ pub enum GlErrorCode {
     InvalidValue,
     InvalidOperation,
 }
-
-/// The code's former name, kept until the GL and WebGL workers move to [`GlErrorCode`]; it is no
-/// second type.
-#[doc(hidden)]
-pub type GlError = GlErrorCode;
 
 impl GlErrorCode {
     pub const ALL: &'static [GlErrorCode] = &[

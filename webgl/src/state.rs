@@ -5,7 +5,7 @@
 use super::browser::Browser;
 use super::WebglError;
 use serde::{Deserialize, Serialize};
-use shadowcheck_model::{GlError, StateCall, StateCase, StateObserved, StateType, StateValue};
+use shadowcheck_model::{GlErrorCode, StateCall, StateCase, StateObserved, StateType, StateValue};
 
 /// What `shadowcheck.state` in page.js gets.
 #[derive(Serialize)]
@@ -66,7 +66,7 @@ pub fn observe(
     }
     let page: PageState = serde_json::from_value(v.clone())
         .map_err(|e| WebglError::Page(format!("state answered {v}: {e}")))?;
-    let (error, other_error) = GlError::classify(page.error);
+    let (error, other_error) = GlErrorCode::classify(page.error);
     // As on GL: the initial value counts only when the query raised no error; a set value only
     // when its read raised none.
     let read_ok = match case.call {

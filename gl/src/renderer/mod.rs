@@ -17,7 +17,7 @@ use crate::legacy::{self, Legacy};
 use crate::programs::{Compiled, ProgramCache};
 use crate::texture;
 use crate::unitstate;
-use crate::GlError;
+use crate::WorkerError;
 use glow::HasContext;
 use shadowcheck_model::{ApiPath, Case, Target, Texels};
 use shadowcheck_plan::layout::{self, pixel, CAPACITY, FB_SIZE};
@@ -97,9 +97,9 @@ impl Renderer {
         gl: glow::Context,
         info: GlInfo,
         legacy: Option<Legacy>,
-    ) -> Result<Renderer, GlError> {
-        let color = texture::rgba32f(&gl, FB_SIZE, FB_SIZE).map_err(GlError::Gl)?;
-        let fbo = gl.create_framebuffer().map_err(GlError::Gl)?;
+    ) -> Result<Renderer, WorkerError> {
+        let color = texture::rgba32f(&gl, FB_SIZE, FB_SIZE).map_err(WorkerError::Gl)?;
+        let fbo = gl.create_framebuffer().map_err(WorkerError::Gl)?;
         gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
         gl.framebuffer_texture_2d(
             glow::FRAMEBUFFER,
@@ -110,14 +110,14 @@ impl Renderer {
         );
         let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
         if status != glow::FRAMEBUFFER_COMPLETE {
-            return Err(GlError::Gl(format!(
+            return Err(WorkerError::Gl(format!(
                 "RGBA32F framebuffer incomplete (status 0x{status:04X})"
             )));
         }
         gl.bind_texture(glow::TEXTURE_2D, None);
-        let vao = gl.create_vertex_array().map_err(GlError::Gl)?;
+        let vao = gl.create_vertex_array().map_err(WorkerError::Gl)?;
         gl.bind_vertex_array(Some(vao));
-        let vbo = gl.create_buffer().map_err(GlError::Gl)?;
+        let vbo = gl.create_buffer().map_err(WorkerError::Gl)?;
         gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
         let tri: [f32; 6] = [-1.0, -1.0, 3.0, -1.0, -1.0, 3.0];
         let bytes: Vec<u8> = tri.iter().flat_map(|f| f.to_ne_bytes()).collect();

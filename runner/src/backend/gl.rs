@@ -5,7 +5,7 @@
 
 use super::exec::ProcessCommand;
 use super::kinds::{Found, GL_WORKER};
-use shadowcheck_gl::{libdir, BackendName, Driver, GlError};
+use shadowcheck_gl::{libdir, BackendName, Driver, WorkerError};
 use std::path::PathBuf;
 use std::process::Stdio;
 use std::time::{Duration, Instant};
@@ -15,11 +15,11 @@ pub const WORKER_EXE_ENV: &str = "SHADOWCHECK_EXE";
 
 /// The `shadowcheck` binary: `$SHADOWCHECK_EXE`, the current executable when it is shadowcheck, or
 /// `shadowcheck` beside the current executable or its parent (a test binary in target/*/deps).
-pub fn shadowcheck_exe() -> Result<PathBuf, GlError> {
+pub fn shadowcheck_exe() -> Result<PathBuf, WorkerError> {
     if let Some(p) = std::env::var_os(WORKER_EXE_ENV) {
         return Ok(PathBuf::from(p));
     }
-    let me = std::env::current_exe().map_err(|e| GlError::NoExecutable(e.to_string()))?;
+    let me = std::env::current_exe().map_err(|e| WorkerError::NoExecutable(e.to_string()))?;
     if me.file_stem().is_some_and(|s| s == "shadowcheck") {
         return Ok(me);
     }
@@ -33,7 +33,7 @@ pub fn shadowcheck_exe() -> Result<PathBuf, GlError> {
             dir = d.parent();
         }
     }
-    Err(GlError::NoExecutable(format!(
+    Err(WorkerError::NoExecutable(format!(
         "{} is not shadowcheck and none was found beside it; set {WORKER_EXE_ENV}",
         me.display()
     )))
@@ -42,11 +42,11 @@ pub fn shadowcheck_exe() -> Result<PathBuf, GlError> {
 /// How to start the worker for one backend name. `egl@<dir>:<driver>:<api>` loads libEGL from
 /// `<dir>` (with LD_LIBRARY_PATH there, so it binds its own libGLESv2): the worker gets the name
 /// without the directory and the library through its environment.
-pub fn worker_command(backend: &str) -> Result<ProcessCommand, GlError> {
+pub fn worker_command(backend: &str) -> Result<ProcessCommand, WorkerError> {
     let (lib_dir, plain) = libdir::split_lib_dir(backend)?;
     let name: BackendName = plain.parse()?;
     if let Some(why) = name.static_unavailability() {
-        return Err(GlError::Unavailable(why));
+        return Err(WorkerError::Unavailable(why));
     }
     let mut env = name.env();
     match &lib_dir {
@@ -54,7 +54,7 @@ pub fn worker_command(backend: &str) -> Result<ProcessCommand, GlError> {
         Some(dir) => {
             let egl = libdir::libegl_in(dir);
             if !egl.is_file() {
-                return Err(GlError::MissingLibrary {
+                return Err(WorkerError::MissingLibrary {
                     lib: egl.display().to_string(),
                     detail: "no such file".into(),
                     install: "name a directory holding libEGL.so or libEGL.so.1".into(),

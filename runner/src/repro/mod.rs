@@ -104,7 +104,7 @@ pub fn parse_test_id(test: &str) -> Result<(String, ApiPath), ReproError> {
 
 /// Finds the case, checks the backend runs the path, and asks the oracle.
 pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subject, ReproError> {
-    let name: BackendName = backend.parse().map_err(|e: shadowcheck_gl::GlError| {
+    let name: BackendName = backend.parse().map_err(|e: shadowcheck_gl::WorkerError| {
         ReproError::BadBackend(format!(
             "{e} (repro writes C programs for the GL backends egl:* and osmesa:*)"
         ))
