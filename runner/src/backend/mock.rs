@@ -39,7 +39,7 @@
 //! arrives), as Ctrl-C or a CI job's SIGTERM would.
 
 use regex::Regex;
-use shadowcheck_model::{Case, Channel, Profile};
+use shadowcheck_model::{Case, Channel, Profile, StateCase};
 use shadowcheck_protocol::{
     Capabilities, Hello, PathResult, Reply, Request, Rgba, PROTOCOL_VERSION,
 };
@@ -344,31 +344,7 @@ fn misbehave(
 
 /// The worker loop: reads requests from `input`, answers on `output`. Returns the exit status.
 pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> std::io::Result<i32> {
-    let env_regex = |name| std::env::var(name).ok().and_then(|r| Regex::new(&r).ok());
-    let kill_runner = env_regex("SHADOWCHECK_MOCK_KILL_RUNNER");
-    let interrupt_runner = env_regex("SHADOWCHECK_MOCK_INTERRUPT_RUNNER");
-    let mut seen = HashSet::new();
-    let mut pending: Vec<Vec<u8>> = vec![];
-    let counter = std::env::var_os("SHADOWCHECK_MOCK_COUNTER").map(std::path::PathBuf::from);
-    let seen_file = std::env::var_os("SHADOWCHECK_MOCK_SEEN").map(std::path::PathBuf::from);
-    let mut seen_once = HashSet::new();
-    // The id of the case read before the current one (for `previous`).
-    let mut previous: Option<String> = None;
-    // The second answer of a `late` case, written before the next case's answer.
-    let mut deferred: Option<Vec<u8>> = None;
-    let mut read: u64 = 0;
-    // The action for a case: a protocol violation under `once` only the first time it arrives.
-    let mut action_of = |id: &str| -> std::io::Result<Action> {
-        let a = script.action(id);
-        let violation = matches!(
-            a,
-            Action::Extra | Action::Late | Action::Previous | Action::Garbage | Action::NotUtf8
-        );
-        if script.once && violation && !first_time(id, seen_file.as_deref(), &mut seen_once)? {
-            return Ok(Action::Pass);
-        }
-        Ok(a)
-    };
+    let mut worker = Worker::new(script);
     for line in input.lines() {
         let line = line?;
         if line.trim().is_empty() {
@@ -381,109 +357,196 @@ pub fn serve(script: &Script, input: impl BufRead, mut output: impl Write) -> st
                 return Ok(2);
             }
         };
-        match req {
+        let status = match req {
             Request::Hello { .. } => {
-                let hello = Reply::Hello(Hello {
-                    sweeps: false,
-                    protocol: PROTOCOL_VERSION,
-                    name: Some("shadowcheck mock".into()),
-                    capabilities: Capabilities::all(),
-                    wants_expect: true,
-                });
-                serde_json::to_writer(&mut output, &hello)?;
-                output.write_all(b"\n")?;
-                output.flush()?;
+                write_hello(&mut output)?;
+                None
             }
             Request::State { case } => {
-                // The mock answers what the expectation says (it asked for it in its hello).
-                let observed = shadowcheck_model::StateObserved {
-                    error: case.expect.as_ref().and_then(|e| e.error),
-                    other_error: None,
-                    value: case.expect.as_ref().and_then(|e| e.value),
-                };
-                let reply = Reply::StateObservation {
-                    case_id: case.id.clone(),
-                    results: case
-                        .api
-                        .iter()
-                        .map(|a| shadowcheck_protocol::StateResult {
-                            api: a.key().to_string(),
-                            observed: observed.clone(),
-                        })
-                        .collect(),
-                    skipped: vec![],
-                };
-                let action = action_of(&case.id)?;
+                let reply = state_reply(&case);
+                let action = worker.action_of(&case.id)?;
                 let answer = serde_json::to_string(&reply)?;
-                let prev = previous.replace(case.id.clone());
-                if let Some(status) = misbehave(
-                    action,
-                    &case.id,
-                    answer,
-                    prev.as_deref(),
-                    &mut pending,
-                    &mut deferred,
-                ) {
-                    return Ok(status);
-                }
-                if !script.buffer {
-                    write_pending(&mut output, &mut pending)?;
-                }
+                worker.deliver(&case.id, action, answer, &mut output)?
             }
-            Request::Case { case } => {
-                if kill_runner.as_ref().is_some_and(|r| r.is_match(&case.id)) {
-                    signal_parent("KILL");
+            Request::Case { case } => match worker.before_case(&case.id)? {
+                Some(status) => Some(status),
+                None => {
+                    let action = worker.action_of(&case.id)?;
+                    let answer = serde_json::to_string(&answer(&case, action, &mut worker.seen))?;
+                    worker.deliver(&case.id, action, answer, &mut output)?
                 }
-                if interrupt_runner
-                    .as_ref()
-                    .is_some_and(|r| r.is_match(&case.id))
-                {
-                    signal_parent("INT");
-                    // The runner sees SIGINT on its handler thread; no answer is written until
-                    // it has surely done so, so that what it keeps does not depend on scheduling.
-                    std::thread::sleep(std::time::Duration::from_millis(500));
-                }
-                if script.slow_ms > 0 {
-                    std::thread::sleep(std::time::Duration::from_millis(script.slow_ms));
-                }
-                read = match &counter {
-                    Some(f) => {
-                        let n = std::fs::read_to_string(f)
-                            .ok()
-                            .and_then(|s| s.trim().parse::<u64>().ok())
-                            .unwrap_or(0)
-                            + 1;
-                        std::fs::write(f, n.to_string())?;
-                        n
-                    }
-                    None => read + 1,
-                };
-                if script.crash_every > 0 && read.is_multiple_of(script.crash_every) {
-                    crate::errln!("mock: crashing on case number {read} ({})", case.id);
-                    return Ok(3);
-                }
-                let action = action_of(&case.id)?;
-                let answer = serde_json::to_string(&answer(&case, action, &mut seen))?;
-                let prev = previous.replace(case.id.clone());
-                if let Some(status) = misbehave(
-                    action,
-                    &case.id,
-                    answer,
-                    prev.as_deref(),
-                    &mut pending,
-                    &mut deferred,
-                ) {
-                    return Ok(status);
-                }
-                if !script.buffer {
-                    write_pending(&mut output, &mut pending)?;
-                }
+            },
+            Request::Flush => {
+                write_pending(&mut output, &mut worker.pending)?;
+                None
             }
-            Request::Flush => write_pending(&mut output, &mut pending)?,
             Request::Bye => break,
+        };
+        if let Some(status) = status {
+            return Ok(status);
         }
     }
     Ok(0)
+}
+
+/// The worker's state across the requests of one process.
+struct Worker<'s> {
+    script: &'s Script,
+    kill_runner: Option<Regex>,
+    interrupt_runner: Option<Regex>,
+    /// The cases seen (for `flaky`).
+    seen: HashSet<String>,
+    /// Answer lines not yet written.
+    pending: Vec<Vec<u8>>,
+    counter: Option<std::path::PathBuf>,
+    seen_file: Option<std::path::PathBuf>,
+    seen_once: HashSet<String>,
+    /// The id of the case read before the current one (for `previous`).
+    previous: Option<String>,
+    /// The second answer of a `late` case, written before the next case's answer.
+    deferred: Option<Vec<u8>>,
+    /// Lookup cases read in this process (when no counter file is named).
+    read: u64,
+}
+
+impl<'s> Worker<'s> {
+    fn new(script: &'s Script) -> Worker<'s> {
+        let env_regex = |name| std::env::var(name).ok().and_then(|r| Regex::new(&r).ok());
+        Worker {
+            script,
+            kill_runner: env_regex("SHADOWCHECK_MOCK_KILL_RUNNER"),
+            interrupt_runner: env_regex("SHADOWCHECK_MOCK_INTERRUPT_RUNNER"),
+            seen: HashSet::new(),
+            pending: vec![],
+            counter: std::env::var_os("SHADOWCHECK_MOCK_COUNTER").map(std::path::PathBuf::from),
+            seen_file: std::env::var_os("SHADOWCHECK_MOCK_SEEN").map(std::path::PathBuf::from),
+            seen_once: HashSet::new(),
+            previous: None,
+            deferred: None,
+            read: 0,
+        }
+    }
+
+    /// The action for a case: a protocol violation under `once` only the first time it arrives.
+    fn action_of(&mut self, id: &str) -> std::io::Result<Action> {
+        let a = self.script.action(id);
+        let violation = matches!(
+            a,
+            Action::Extra | Action::Late | Action::Previous | Action::Garbage | Action::NotUtf8
+        );
+        if self.script.once
+            && violation
+            && !first_time(id, self.seen_file.as_deref(), &mut self.seen_once)?
+        {
+            return Ok(Action::Pass);
+        }
+        Ok(a)
+    }
+
+    /// What happens on reading a lookup case before it is answered: the signals to the runner,
+    /// `slow`, and the count for `crashevery`. `Some(status)` when the worker exits instead.
+    fn before_case(&mut self, id: &str) -> std::io::Result<Option<i32>> {
+        if self.kill_runner.as_ref().is_some_and(|r| r.is_match(id)) {
+            signal_parent("KILL");
+        }
+        if self
+            .interrupt_runner
+            .as_ref()
+            .is_some_and(|r| r.is_match(id))
+        {
+            signal_parent("INT");
+            // The runner sees SIGINT on its handler thread; no answer is written until
+            // it has surely done so, so that what it keeps does not depend on scheduling.
+            std::thread::sleep(std::time::Duration::from_millis(500));
+        }
+        if self.script.slow_ms > 0 {
+            std::thread::sleep(std::time::Duration::from_millis(self.script.slow_ms));
+        }
+        self.read = self.count_read()?;
+        if self.script.crash_every > 0 && self.read.is_multiple_of(self.script.crash_every) {
+            crate::errln!("mock: crashing on case number {} ({id})", self.read);
+            return Ok(Some(3));
+        }
+        Ok(None)
+    }
+
+    /// The number of this lookup case: counted in the counter file when one is named (across
+    /// the worker's restarts), else in this process.
+    fn count_read(&self) -> std::io::Result<u64> {
+        Ok(match &self.counter {
+            Some(f) => {
+                let n = std::fs::read_to_string(f)
+                    .ok()
+                    .and_then(|s| s.trim().parse::<u64>().ok())
+                    .unwrap_or(0)
+                    + 1;
+                std::fs::write(f, n.to_string())?;
+                n
+            }
+            None => self.read + 1,
+        })
+    }
+
+    /// Queues the answer to case `id` as `action` says (see [`misbehave`]) and writes it unless
+    /// answers are buffered. `Some(status)` when the worker exits instead.
+    fn deliver(
+        &mut self,
+        id: &str,
+        action: Action,
+        answer: String,
+        output: &mut impl Write,
+    ) -> std::io::Result<Option<i32>> {
+        let prev = self.previous.replace(id.to_string());
+        if let Some(status) = misbehave(
+            action,
+            id,
+            answer,
+            prev.as_deref(),
+            &mut self.pending,
+            &mut self.deferred,
+        ) {
+            return Ok(Some(status));
+        }
+        if !self.script.buffer {
+            write_pending(output, &mut self.pending)?;
+        }
+        Ok(None)
+    }
+}
+
+/// The worker's hello: every capability, no sweeps, and a request for the expectations.
+fn write_hello(output: &mut impl Write) -> std::io::Result<()> {
+    let hello = Reply::Hello(Hello {
+        sweeps: false,
+        protocol: PROTOCOL_VERSION,
+        name: Some("shadowcheck mock".into()),
+        capabilities: Capabilities::all(),
+        wants_expect: true,
+    });
+    serde_json::to_writer(&mut *output, &hello)?;
+    output.write_all(b"\n")?;
+    output.flush()
+}
+
+/// The answer to a state case: what its expectation says (the mock asked for it in its hello).
+fn state_reply(case: &StateCase) -> Reply {
+    let observed = shadowcheck_model::StateObserved {
+        error: case.expect.as_ref().and_then(|e| e.error),
+        other_error: None,
+        value: case.expect.as_ref().and_then(|e| e.value),
+    };
+    Reply::StateObservation {
+        case_id: case.id.clone(),
+        results: case
+            .api
+            .iter()
+            .map(|a| shadowcheck_protocol::StateResult {
+                api: a.key().to_string(),
+                observed: observed.clone(),
+            })
+            .collect(),
+        skipped: vec![],
+    }
 }
 
 /// Writes the answer lines held back, each followed by a newline, and flushes.

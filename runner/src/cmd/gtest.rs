@@ -22,11 +22,11 @@
 //! setup error or bad input (no backend, unreadable fixtures).
 
 use anyhow::{bail, Context};
-use shadowcheck_runner::backend::{self, BackendError};
+use shadowcheck_runner::backend::{self, Backend, BackendError, Capabilities};
 use shadowcheck_runner::events::{Event, Sink};
 use shadowcheck_runner::interrupt;
 use shadowcheck_runner::records::{Outcome, Results, TestResult};
-use shadowcheck_runner::run::{self, Settings};
+use shadowcheck_runner::run::{self, CaseSet, Settings};
 use std::collections::{HashMap, HashSet};
 use std::io::Write;
 use std::path::PathBuf;
@@ -293,11 +293,11 @@ fn suite_of(gtest: &str) -> &str {
     gtest.split_once('.').map_or(gtest, |(s, _)| s)
 }
 
+/// One test of the backend: its gtest name, its shadowcheck name (`<case id>@<api>`) and its case id.
+type Test = (String, String, String);
+
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
-    let env_backend = std::env::var(BACKEND_ENV).ok().filter(|s| !s.is_empty());
-    let Some(name) = a.backend.clone().or(env_backend) else {
-        bail!("gtest: no backend: give -b B or set {BACKEND_ENV}");
-    };
+    let name = backend_name(&a)?;
     let pattern = a
         .cases
         .as_deref()
@@ -305,102 +305,14 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         .transpose()
         .context("--cases")?;
     let opts = a.exchange.options()?;
-    let fixtures: Vec<PathBuf> = if !a.fixtures.is_empty() {
-        a.fixtures.clone()
-    } else if let Some(env) = std::env::var_os(FIXTURES_ENV).filter(|v| !v.is_empty()) {
-        std::env::split_paths(&env).collect()
-    } else {
-        vec![PathBuf::from(crate::cmd::run::DEFAULT_FIXTURES)]
-    };
-    let shown: Vec<String> = fixtures.iter().map(|p| p.display().to_string()).collect();
-
-    let mut set = run::load_cases(&fixtures);
-    let loaded_any = !set.files.is_empty();
-    set.select(pattern.as_ref(), None);
-    for e in &set.errors {
-        let case = e
-            .case
-            .as_deref()
-            .map_or(String::new(), |c| format!(" ({c})"));
-        shadowcheck_runner::errln!("shadowcheck: error: {}{case}: {}", e.file, e.message);
-    }
-    if !loaded_any && set.cases.is_empty() && set.states.is_empty() {
-        bail!("no fixture could be loaded from {}", shown.join(", "));
-    }
-    // A listing is what the gtest runner plans from: a bad fixture stops it, loudly, rather than
-    // leaving tests out of every later run without a word.
-    if a.gtest_list_tests && !set.errors.is_empty() {
-        bail!(
-            "{} bad fixture file(s) or case(s) in {} (listed above)",
-            set.errors.len(),
-            shown.join(", ")
-        );
-    }
-
-    let mut backend = match backend::open(&name, &opts) {
-        Ok(b) => b,
-        Err(e @ BackendError::Unknown(_)) => return Err(e.into()),
-        Err(BackendError::Setup { msg, .. }) => {
-            bail!("backend `{name}` cannot start here: {msg}")
-        }
-    };
-
-    // Every test of this backend, by gtest name.
-    let mut tests: Vec<(String, String, String)> = set
-        .test_names_on(backend.capabilities())
-        .into_iter()
-        .map(|(case, test)| (to_gtest(&test), test, case.to_string()))
-        .collect();
-    tests.sort();
-
+    let mut set = load_fixtures(&a, pattern.as_ref())?;
+    let mut backend = open_backend(&name, &opts)?;
+    let tests = tests_of(&set, backend.capabilities());
     if a.gtest_list_tests {
-        let mut lines = Vec::with_capacity(tests.len() * 2);
-        let mut suite = None;
-        for (g, _, _) in &tests {
-            let (s, t) = g.split_once('.').unwrap_or((g.as_str(), ""));
-            if suite != Some(s) {
-                lines.push(format!("{s}."));
-                suite = Some(s);
-            }
-            lines.push(format!("  {t}"));
-        }
-        let mut text = lines.join("\n");
-        if !text.is_empty() {
-            text.push('\n');
-        }
-        crate::cmd::print_out(&text).context("writing the test list")?;
-        return Ok(ExitCode::SUCCESS);
+        return list_tests(&tests);
     }
-
-    let filter = Filter::parse(a.gtest_filter.as_deref().unwrap_or("*"));
-    let names: Vec<String> = tests.iter().map(|t| t.0.clone()).collect();
-    let chosen = filter.select(&names);
-    // Exact names that are no test of this backend: said on stderr (googletest is silent).
-    let known: HashSet<&str> = names.iter().map(String::as_str).collect();
-    for p in &filter.positive {
-        if !p.contains(['*', '?']) && !known.contains(p.as_str()) {
-            let what = match from_gtest(p) {
-                Some(t) => format!("test `{t}`"),
-                None => "a name this command never lists".into(),
-            };
-            shadowcheck_runner::errln!(
-                "shadowcheck: warning: --gtest_filter names `{p}` ({what}), which is no test of `{name}` with these fixtures"
-            );
-        }
-    }
-    let chosen: Vec<&(String, String, String)> = chosen.iter().map(|&i| &tests[i]).collect();
-
-    // Only the chosen cases are sent, in the order their tests are printed.
-    let mut first: HashMap<&str, usize> = HashMap::new();
-    for (k, t) in chosen.iter().enumerate() {
-        first.entry(t.2.as_str()).or_insert(k);
-    }
-    set.cases.retain(|l| first.contains_key(l.case.id.as_str()));
-    set.states
-        .retain(|l| first.contains_key(l.case.id.as_str()));
-    let pos = |id: &str| first.get(id).copied().unwrap_or(usize::MAX);
-    set.cases.sort_by_key(|l| pos(&l.case.id));
-    set.states.sort_by_key(|l| pos(&l.case.id));
+    let chosen = choose(&tests, a.gtest_filter.as_deref(), &name);
+    keep_chosen(&mut set, &chosen);
 
     let suites: HashSet<&str> = chosen.iter().map(|t| suite_of(&t.0)).collect();
     let mut printer = Printer::new(
@@ -434,23 +346,161 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     };
     drop(backend);
     printer.finish(&results);
+    Ok(print_end(&mut printer, chosen.len(), suites.len(), t0))
+}
+
+/// The backend named by `-b`, else by the environment.
+fn backend_name(a: &Args) -> anyhow::Result<String> {
+    let env_backend = std::env::var(BACKEND_ENV).ok().filter(|s| !s.is_empty());
+    let Some(name) = a.backend.clone().or(env_backend) else {
+        bail!("gtest: no backend: give -b B or set {BACKEND_ENV}");
+    };
+    Ok(name)
+}
+
+/// The fixtures named by `--fixtures`, else by the environment, else the default.
+fn fixture_paths(a: &Args) -> Vec<PathBuf> {
+    if !a.fixtures.is_empty() {
+        a.fixtures.clone()
+    } else if let Some(env) = std::env::var_os(FIXTURES_ENV).filter(|v| !v.is_empty()) {
+        std::env::split_paths(&env).collect()
+    } else {
+        vec![PathBuf::from(crate::cmd::run::DEFAULT_FIXTURES)]
+    }
+}
+
+/// Loads the fixtures and selects the cases matching `pattern`; bad files and cases are said on
+/// stderr, and are an error when nothing loaded or when listing.
+fn load_fixtures(a: &Args, pattern: Option<&regex::Regex>) -> anyhow::Result<CaseSet> {
+    let fixtures = fixture_paths(a);
+    let shown: Vec<String> = fixtures.iter().map(|p| p.display().to_string()).collect();
+
+    let mut set = run::load_cases(&fixtures);
+    let loaded_any = !set.files.is_empty();
+    set.select(pattern, None);
+    for e in &set.errors {
+        let case = e
+            .case
+            .as_deref()
+            .map_or(String::new(), |c| format!(" ({c})"));
+        shadowcheck_runner::errln!("shadowcheck: error: {}{case}: {}", e.file, e.message);
+    }
+    if !loaded_any && set.cases.is_empty() && set.states.is_empty() {
+        bail!("no fixture could be loaded from {}", shown.join(", "));
+    }
+    // A listing is what the gtest runner plans from: a bad fixture stops it, loudly, rather than
+    // leaving tests out of every later run without a word.
+    if a.gtest_list_tests && !set.errors.is_empty() {
+        bail!(
+            "{} bad fixture file(s) or case(s) in {} (listed above)",
+            set.errors.len(),
+            shown.join(", ")
+        );
+    }
+    Ok(set)
+}
+
+fn open_backend(name: &str, opts: &backend::Options) -> anyhow::Result<Box<dyn Backend>> {
+    match backend::open(name, opts) {
+        Ok(b) => Ok(b),
+        Err(e @ BackendError::Unknown(_)) => Err(e.into()),
+        Err(BackendError::Setup { msg, .. }) => {
+            bail!("backend `{name}` cannot start here: {msg}")
+        }
+    }
+}
+
+/// Every test of this backend, sorted by gtest name.
+fn tests_of(set: &CaseSet, caps: &Capabilities) -> Vec<Test> {
+    let mut tests: Vec<Test> = set
+        .test_names_on(caps)
+        .into_iter()
+        .map(|(case, test)| (to_gtest(&test), test, case.to_string()))
+        .collect();
+    tests.sort();
+    tests
+}
+
+/// `--gtest_list_tests`: a line `Suite.` for each suite, then its test names indented.
+fn list_tests(tests: &[Test]) -> anyhow::Result<ExitCode> {
+    let mut lines = Vec::with_capacity(tests.len() * 2);
+    let mut suite = None;
+    for (g, _, _) in tests {
+        let (s, t) = g.split_once('.').unwrap_or((g.as_str(), ""));
+        if suite != Some(s) {
+            lines.push(format!("{s}."));
+            suite = Some(s);
+        }
+        lines.push(format!("  {t}"));
+    }
+    let mut text = lines.join("\n");
+    if !text.is_empty() {
+        text.push('\n');
+    }
+    crate::cmd::print_out(&text).context("writing the test list")?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The tests `--gtest_filter` selects (all without one); an exact name that is no test of
+/// `backend` is said on stderr (googletest is silent).
+fn choose<'t>(tests: &'t [Test], filter: Option<&str>, backend: &str) -> Vec<&'t Test> {
+    let filter = Filter::parse(filter.unwrap_or("*"));
+    let names: Vec<String> = tests.iter().map(|t| t.0.clone()).collect();
+    let chosen = filter.select(&names);
+    let known: HashSet<&str> = names.iter().map(String::as_str).collect();
+    for p in &filter.positive {
+        if !p.contains(['*', '?']) && !known.contains(p.as_str()) {
+            let what = match from_gtest(p) {
+                Some(t) => format!("test `{t}`"),
+                None => "a name this command never lists".into(),
+            };
+            shadowcheck_runner::errln!(
+                "shadowcheck: warning: --gtest_filter names `{p}` ({what}), which is no test of `{backend}` with these fixtures"
+            );
+        }
+    }
+    chosen.iter().map(|&i| &tests[i]).collect()
+}
+
+/// Keeps only the chosen cases in `set`, in the order their tests are printed.
+fn keep_chosen(set: &mut CaseSet, chosen: &[&Test]) {
+    let mut first: HashMap<&str, usize> = HashMap::new();
+    for (k, t) in chosen.iter().enumerate() {
+        first.entry(t.2.as_str()).or_insert(k);
+    }
+    set.cases.retain(|l| first.contains_key(l.case.id.as_str()));
+    set.states
+        .retain(|l| first.contains_key(l.case.id.as_str()));
+    let pos = |id: &str| first.get(id).copied().unwrap_or(usize::MAX);
+    set.cases.sort_by_key(|l| pos(&l.case.id));
+    set.states.sort_by_key(|l| pos(&l.case.id));
+}
+
+/// After the run: the revisions on stderr, then googletest's footer unless the output ended on a
+/// crash or a test got no result; the exit code.
+fn print_end(
+    printer: &mut Printer,
+    chosen: usize,
+    suites: usize,
+    t0: std::time::Instant,
+) -> ExitCode {
     for r in &printer.revised {
         shadowcheck_runner::errln!("shadowcheck: warning: {r}");
     }
     if printer.stopped {
-        return Ok(ExitCode::from(1));
+        return ExitCode::from(1);
     }
-    let missing = chosen.len() - printer.next;
+    let missing = chosen - printer.next;
     if missing > 0 {
         // Not expected: every test selected gets a result. The runner reruns the rest.
         shadowcheck_runner::errln!("shadowcheck: error: {missing} selected test(s) got no result");
-        return Ok(ExitCode::from(1));
+        return ExitCode::from(1);
     }
     let mut footer = vec![
         format!(
             "[==========] {} tests from {} test suites ran. ({} ms total)",
-            chosen.len(),
-            suites.len(),
+            chosen,
+            suites,
             t0.elapsed().as_millis()
         ),
         format!("[  PASSED  ] {} tests.", printer.passed),
@@ -470,7 +520,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         footer.extend(printer.failed.iter().map(|n| format!("[  FAILED  ] {n}")));
     }
     printer.out(&footer);
-    Ok(ExitCode::from(u8::from(!printer.failed.is_empty())))
+    ExitCode::from(u8::from(!printer.failed.is_empty()))
 }
 
 #[cfg(test)]

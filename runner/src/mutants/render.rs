@@ -240,6 +240,16 @@ fn survivor(out: &mut String, m: &MutantResult) {
 /// The Markdown report. `command`: the command line that produced it.
 pub fn markdown(r: &MutantsReport, command: &str) -> String {
     let mut out = String::new();
+    headline_section(&mut out, r, command);
+    kill_matrix(&mut out, r);
+    why_minimal_kills(&mut out, r);
+    not_killed(&mut out, r);
+    definitions(&mut out);
+    out
+}
+
+/// The title, the score, the run's size and time, and the unmutated unit with its failures.
+fn headline_section(out: &mut String, r: &MutantsReport, command: &str) {
     let _ = writeln!(
         out,
         "# Mutation testing: `{}` against seeded faults of the soft unit\n",
@@ -278,6 +288,10 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
             f.reason.as_deref().unwrap_or("")
         );
     }
+}
+
+/// The kill matrix: one row per mutant.
+fn kill_matrix(out: &mut String, r: &MutantsReport) {
     let _ = writeln!(out, "## Kill matrix\n");
     let _ = writeln!(
         out,
@@ -315,6 +329,10 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
         );
     }
     let _ = writeln!(out);
+}
+
+/// Why each killed mutant's minimal case kills it.
+fn why_minimal_kills(out: &mut String, r: &MutantsReport) {
     let _ = writeln!(out, "## Why each minimal case kills\n");
     for m in r.mutants.iter().filter(|m| m.status == KillStatus::Killed) {
         if let Some(k) = &m.minimal {
@@ -333,6 +351,10 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
         }
     }
     let _ = writeln!(out);
+}
+
+/// The mutants not killed (warn-only, survived), each with its explanation.
+fn not_killed(out: &mut String, r: &MutantsReport) {
     let others: Vec<&MutantResult> = r
         .mutants
         .iter()
@@ -341,9 +363,13 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
     if !others.is_empty() {
         let _ = writeln!(out, "## Mutants not killed\n");
         for m in others {
-            survivor(&mut out, m);
+            survivor(out, m);
         }
     }
+}
+
+/// The definitions of the terms the report uses.
+fn definitions(out: &mut String) {
     let _ = writeln!(out, "## Definitions\n");
     let _ = writeln!(
         out,
@@ -373,5 +399,4 @@ pub fn markdown(r: &MutantsReport, command: &str) -> String {
         out,
         "- **Unmutated unit**: the correct unit over the same tests; it must have no Fail, or the command exits non-zero."
     );
-    out
 }

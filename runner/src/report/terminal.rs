@@ -3,9 +3,9 @@
 //! filter / format and the dumps of regressions on stdout.
 
 use super::{breakdown, dump};
-use crate::events::{Event, Reporter};
+use crate::events::{Event, Reporter, Timing};
 use crate::records::exit::Ending;
-use crate::records::Summary;
+use crate::records::{Counts, LoadError, Summary, TestResult};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::{IsTerminal, Write};
 
@@ -62,38 +62,8 @@ impl TerminalReporter {
                 backends,
                 tests,
                 out_dir,
-            } => {
-                crate::errln!(
-                    "shadowcheck: {tests} tests on {} -> {}",
-                    backends.join(", "),
-                    out_dir.display()
-                );
-                if *tests >= BAR_MIN_TESTS && std::io::stderr().is_terminal() {
-                    let bar = ProgressBar::with_draw_target(
-                        Some(*tests as u64),
-                        ProgressDrawTarget::stderr(),
-                    );
-                    if let Ok(style) = ProgressStyle::with_template(
-                        "{spinner} [{elapsed_precise}] {bar:40} {pos}/{len} {msg}",
-                    ) {
-                        bar.set_style(style);
-                    }
-                    self.bar = Some(bar);
-                }
-            }
-            Event::LoadError(e) => {
-                // The loader's messages usually name the file and the case already.
-                if e.message.starts_with(&e.file) {
-                    self.err_line(&format!("error: {}", e.message));
-                } else {
-                    let case = e
-                        .case
-                        .as_deref()
-                        .map(|c| format!(" case `{c}`"))
-                        .unwrap_or_default();
-                    self.err_line(&format!("error: {}{case}: {}", e.file, e.message));
-                }
-            }
+            } => self.run_started(backends, *tests, out_dir),
+            Event::LoadError(e) => self.load_error(e),
             Event::BackendStarted { backend, .. } => {
                 if let Some(b) = &self.bar {
                     b.set_message(backend.to_string());
@@ -116,32 +86,7 @@ impl TerminalReporter {
                 backend,
                 counts,
                 timing,
-            } => {
-                let line = format!(
-                    "{backend}: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} improvement, {} flake",
-                    counts.pass,
-                    counts.warn,
-                    counts.fail,
-                    counts.crash,
-                    counts.timeout,
-                    counts.skip,
-                    counts.expected_fail,
-                    counts.unexpected_improvement,
-                    counts.flake + counts.known_flake
-                ) + &not_applicable_note(counts.not_applicable);
-                self.err_line(&line);
-                if self.timings {
-                    let rate = if timing.backend_s > 0.0 {
-                        timing.cases_sent as f64 / timing.backend_s
-                    } else {
-                        0.0
-                    };
-                    self.err_line(&format!(
-                        "timings {backend}: {} cases sent, {:.3} s in the backend ({rate:.0} cases/s), {:.3} s judging and reporting",
-                        timing.cases_sent, timing.backend_s, timing.verdict_s
-                    ));
-                }
-            }
+            } => self.backend_finished(backend, counts, timing),
             Event::RunFinished {
                 results, summary, ..
             } => {
@@ -151,50 +96,127 @@ impl TerminalReporter {
                 if self.stdout_closed {
                     return Ok(());
                 }
-                let mut out = std::io::stdout().lock();
-                for (dim, rows) in breakdown(results) {
-                    writeln!(
-                        out,
-                        "{dim:<24} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}",
-                        "tests", "pass", "warn", "fail", "skip", "other"
-                    )?;
-                    for (k, r) in rows {
-                        writeln!(
-                            out,
-                            "  {k:<22} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}",
-                            r.tests, r.pass, r.warn, r.fail, r.skip, r.other
-                        )?;
-                    }
-                }
-                let regressions: Vec<_> = results
-                    .iter()
-                    .filter(|r| r.status.is_regression() || r.status.is_improvement())
-                    .collect();
-                for r in regressions.iter().take(MAX_DUMPS) {
-                    write!(out, "\n{}", dump(r, ""))?;
-                }
-                if regressions.len() > MAX_DUMPS {
-                    writeln!(
-                        out,
-                        "\n... {} more in report.md",
-                        regressions.len() - MAX_DUMPS
-                    )?;
-                }
-                if summary.counts.total() > 0 && !summary.idle_backends.is_empty() {
-                    writeln!(out)?;
-                    for b in &summary.idle_backends {
-                        writeln!(
-                            out,
-                            "shadowcheck: backend `{b}` ran no test (every test was skipped)"
-                        )?;
-                    }
-                }
+                write_summary(&mut std::io::stdout().lock(), results, summary)?;
                 // The totals and the exit code come last, from the command, once every report is
                 // written ([`final_line`]).
             }
         }
         Ok(())
     }
+
+    /// The run's first line on stderr, and the progress bar for a long run on a terminal.
+    fn run_started(&mut self, backends: &[String], tests: usize, out_dir: &std::path::Path) {
+        crate::errln!(
+            "shadowcheck: {tests} tests on {} -> {}",
+            backends.join(", "),
+            out_dir.display()
+        );
+        if tests >= BAR_MIN_TESTS && std::io::stderr().is_terminal() {
+            let bar =
+                ProgressBar::with_draw_target(Some(tests as u64), ProgressDrawTarget::stderr());
+            if let Ok(style) = ProgressStyle::with_template(
+                "{spinner} [{elapsed_precise}] {bar:40} {pos}/{len} {msg}",
+            ) {
+                bar.set_style(style);
+            }
+            self.bar = Some(bar);
+        }
+    }
+
+    fn load_error(&self, e: &LoadError) {
+        // The loader's messages usually name the file and the case already.
+        if e.message.starts_with(&e.file) {
+            self.err_line(&format!("error: {}", e.message));
+        } else {
+            let case = e
+                .case
+                .as_deref()
+                .map(|c| format!(" case `{c}`"))
+                .unwrap_or_default();
+            self.err_line(&format!("error: {}{case}: {}", e.file, e.message));
+        }
+    }
+
+    /// A backend's counts on stderr, and its timings under `--timings`.
+    fn backend_finished(&self, backend: &str, counts: &Counts, timing: &Timing) {
+        let line = format!(
+            "{backend}: {} pass, {} warn, {} fail, {} crash, {} timeout, {} skip, {} expected fail, {} improvement, {} flake",
+            counts.pass,
+            counts.warn,
+            counts.fail,
+            counts.crash,
+            counts.timeout,
+            counts.skip,
+            counts.expected_fail,
+            counts.unexpected_improvement,
+            counts.flake + counts.known_flake
+        ) + &not_applicable_note(counts.not_applicable);
+        self.err_line(&line);
+        if self.timings {
+            let rate = if timing.backend_s > 0.0 {
+                timing.cases_sent as f64 / timing.backend_s
+            } else {
+                0.0
+            };
+            self.err_line(&format!(
+                "timings {backend}: {} cases sent, {:.3} s in the backend ({rate:.0} cases/s), {:.3} s judging and reporting",
+                timing.cases_sent, timing.backend_s, timing.verdict_s
+            ));
+        }
+    }
+}
+
+/// The end of a run on stdout: the breakdown tables, the dumps of the first regressions and
+/// improvements, and the backends that ran no test.
+fn write_summary(
+    out: &mut impl Write,
+    results: &[TestResult],
+    summary: &Summary,
+) -> std::io::Result<()> {
+    write_breakdown(out, results)?;
+    let regressions: Vec<_> = results
+        .iter()
+        .filter(|r| r.status.is_regression() || r.status.is_improvement())
+        .collect();
+    for r in regressions.iter().take(MAX_DUMPS) {
+        write!(out, "\n{}", dump(r, ""))?;
+    }
+    if regressions.len() > MAX_DUMPS {
+        writeln!(
+            out,
+            "\n... {} more in report.md",
+            regressions.len() - MAX_DUMPS
+        )?;
+    }
+    if summary.counts.total() > 0 && !summary.idle_backends.is_empty() {
+        writeln!(out)?;
+        for b in &summary.idle_backends {
+            writeln!(
+                out,
+                "shadowcheck: backend `{b}` ran no test (every test was skipped)"
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The summary tables by spec / func / filter / format.
+fn write_breakdown(out: &mut impl Write, results: &[TestResult]) -> std::io::Result<()> {
+    for (dim, rows) in breakdown(results) {
+        writeln!(
+            out,
+            "{dim:<24} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}",
+            "tests", "pass", "warn", "fail", "skip", "other"
+        )?;
+        for (k, r) in rows {
+            writeln!(
+                out,
+                "  {k:<22} {:>7} {:>7} {:>6} {:>6} {:>7} {:>6}",
+                r.tests, r.pass, r.warn, r.fail, r.skip, r.other
+            )?;
+        }
+    }
+    Ok(())
 }
 
 /// The run's last line on stdout: the totals and the exit code the process returns, with every
