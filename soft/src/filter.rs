@@ -281,6 +281,24 @@ impl PreparedTexture {
     ) -> f32 {
         let l = self.level_desc(st, level);
         let layer = self.storage_layer(l, a);
+        let p = self.level_point(st, l, a, offset);
+        if !linear || st.faults.has(Fault::LinearAsNearest) {
+            self.sample_nearest(st, level, l, layer, &p, dref, scale, obs)
+        } else {
+            self.sample_linear(st, level, l, layer, a.face, &p, dref, scale, obs)
+        }
+    }
+
+    /// The point `a` in the texel space of level `l` (u, v of equation 8.10) and the wrap modes
+    /// that address it.
+    #[inline(always)]
+    fn level_point(
+        &self,
+        st: &SamplerState,
+        l: &LevelDesc,
+        a: &Address,
+        offset: [i32; 2],
+    ) -> LevelPoint {
         let target = self.target();
         let rect = target == Target::Rect;
         let (w, h) = (l.width, l.height);
@@ -301,50 +319,104 @@ impl PreparedTexture {
         let (du, dv) = if after_wrap { (0.0, 0.0) } else { (du, dv) };
         let u = if rect { a.s + du } else { a.s * w as f32 + du };
         let v = if rect { a.t + dv } else { a.t * h as f32 + dv };
-        // Fault: the offset added to the wrapped texel index, then clamped into the image.
-        let shift = |i: i64, d: i32, n: u32| -> i64 {
-            if after_wrap && (0..n as i64).contains(&i) {
-                (i + d as i64).clamp(0, n as i64 - 1)
-            } else {
-                i
-            }
-        };
-        let one_d = matches!(target, Target::T1d | Target::T1dArray);
         let (ws, wt) = if st.seamless {
             (Wrap::ClampToEdge, Wrap::ClampToEdge)
         } else {
             (st.wrap_s, st.wrap_t)
         };
-
-        if !linear || f.has(Fault::LinearAsNearest) {
-            let i = shift(wrap::nearest(ws, u, w, f), offset[0], w);
-            let j = if one_d {
-                0
-            } else {
-                shift(wrap::nearest(wt, v, h, f), offset[1], h)
-            };
-            let raw = self.fetch(st, l, i, j, layer);
-            if O::ACTIVE {
-                self.report(st, obs, level, Self::loc(l, i, j, layer), raw, dref, scale);
-            }
-            return self.resolve(st, raw, dref);
+        LevelPoint {
+            u,
+            v,
+            late_offset: after_wrap.then_some(offset),
+            ws,
+            wt,
+            one_d: matches!(target, Target::T1d | Target::T1dArray),
         }
+    }
 
-        // LINEAR: i0, i1, α and j0, j1, β (§8.14.2); seamless cubes use CLAMP_TO_BORDER and then
-        // replace border locations by the neighbouring face's texels (§8.13.1).
+    /// NEAREST (§8.14.2): the one texel (i, j) holding the point.
+    #[allow(clippy::too_many_arguments)]
+    fn sample_nearest<O: Observer>(
+        &self,
+        st: &SamplerState,
+        level: u32,
+        l: &LevelDesc,
+        layer: u32,
+        p: &LevelPoint,
+        dref: f32,
+        scale: f32,
+        obs: &mut O,
+    ) -> f32 {
+        let f = st.faults;
+        let i = p.shift(wrap::nearest(p.ws, p.u, l.width, f), 0, l.width);
+        let j = if p.one_d {
+            0
+        } else {
+            p.shift(wrap::nearest(p.wt, p.v, l.height, f), 1, l.height)
+        };
+        let raw = self.fetch(st, l, i, j, layer);
+        if O::ACTIVE {
+            self.report(st, obs, level, Self::loc(l, i, j, layer), raw, dref, scale);
+        }
+        self.resolve(st, raw, dref)
+    }
+
+    /// LINEAR (§8.14.2): the 2x2 footprint, each texel compared (PCF), then weighted.
+    #[allow(clippy::too_many_arguments)]
+    fn sample_linear<O: Observer>(
+        &self,
+        st: &SamplerState,
+        level: u32,
+        l: &LevelDesc,
+        layer: u32,
+        face: Option<cube::Face>,
+        p: &LevelPoint,
+        dref: f32,
+        scale: f32,
+        obs: &mut O,
+    ) -> f32 {
+        let fp = Self::linear_footprint(st, l, layer, face, p);
+        let mut raw = [0.0f32; 4];
+        for (k, (r, &(i, j, ly))) in raw.iter_mut().zip(&fp.pos).enumerate() {
+            if fp.missing != Some(k) {
+                *r = self.fetch(st, l, i, j, ly);
+            }
+        }
+        if O::ACTIVE {
+            self.report_footprint(st, obs, level, l, &fp, &raw, dref, scale);
+        }
+        if st.kind == Kind::Compare && st.faults.has(Fault::FilterThenCompare) {
+            return Self::filter_then_compare(st, &fp, &raw, dref);
+        }
+        self.percentage_closer(st, &fp, raw, dref)
+    }
+
+    /// The LINEAR footprint: i0, i1, α and j0, j1, β (§8.14.2) and the bilinear weights; seamless
+    /// cubes use CLAMP_TO_BORDER and then replace border locations by the neighbouring face's
+    /// texels (§8.13.1).
+    #[inline(always)]
+    fn linear_footprint(
+        st: &SamplerState,
+        l: &LevelDesc,
+        layer: u32,
+        face: Option<cube::Face>,
+        p: &LevelPoint,
+    ) -> Footprint {
+        let f = st.faults;
+        let (w, h) = (l.width, l.height);
         let (ls, lt) = if st.seamless {
             (Wrap::ClampToBorder, Wrap::ClampToBorder)
         } else {
-            (ws, wt)
+            (p.ws, p.wt)
         };
-        let (i0, i1, alpha) = wrap::linear(ls, u, w, f);
-        let (i0, i1) = (shift(i0, offset[0], w), shift(i1, offset[0], w));
-        let (j0, j1, beta) = if one_d {
+        let (i0, i1, alpha) = wrap::linear(ls, p.u, w, f);
+        let (i0, i1) = (p.shift(i0, 0, w), p.shift(i1, 0, w));
+        let (j0, j1, beta) = if p.one_d {
             (0, 0, 0.0)
         } else {
-            wrap::linear(lt, v, h, f)
+            wrap::linear(lt, p.v, h, f)
         };
-        let (j0, j1) = (shift(j0, offset[1], h), shift(j1, offset[1], h));
+        let (j0, j1) = (p.shift(j0, 1, h), p.shift(j1, 1, h));
         let mut pos = [
             (i0, j0, layer),
             (i1, j0, layer),
@@ -352,7 +424,7 @@ impl PreparedTexture {
             (i1, j1, layer),
         ];
         let mut missing = None;
-        if let (true, Some(face)) = (st.seamless, a.face) {
+        if let (true, Some(face)) = (st.seamless, face) {
             let base = layer - face as u32;
             for (k, p) in pos.iter_mut().enumerate() {
                 match cube::neighbour(face, p.0, p.1, l.width as i64) {
@@ -361,55 +433,77 @@ impl PreparedTexture {
                 }
             }
         }
-        let mut raw = [0.0f32; 4];
-        for k in 0..4 {
-            if missing != Some(k) {
-                raw[k] = self.fetch(st, l, pos[k].0, pos[k].1, pos[k].2);
-            }
-        }
         let weights = [
             (1.0 - alpha) * (1.0 - beta),
             alpha * (1.0 - beta),
             (1.0 - alpha) * beta,
             alpha * beta,
         ];
-        if O::ACTIVE {
-            for k in 0..4 {
-                if missing == Some(k) {
-                    continue;
-                }
-                // A missing corner's weight is shared equally by the other three texels.
-                let wk = weights[k] + missing.map_or(0.0, |m| weights[m] / 3.0);
-                let (i, j, ly) = pos[k];
-                self.report(
-                    st,
-                    obs,
-                    level,
-                    Self::loc(l, i, j, ly),
-                    raw[k],
-                    dref,
-                    wk * scale,
-                );
-            }
+        Footprint {
+            pos,
+            weights,
+            missing,
         }
+    }
 
-        if st.kind == Kind::Compare && f.has(Fault::FilterThenCompare) {
-            let mut d = [0.0f32; 4];
-            for k in 0..4 {
-                d[k] = if st.clamp.dt { clamp01(raw[k]) } else { raw[k] };
+    /// Reports the footprint's texels to the observer, each with its share of the value.
+    #[allow(clippy::too_many_arguments)]
+    fn report_footprint<O: Observer>(
+        &self,
+        st: &SamplerState,
+        obs: &mut O,
+        level: u32,
+        l: &LevelDesc,
+        fp: &Footprint,
+        raw: &[f32; 4],
+        dref: f32,
+        scale: f32,
+    ) {
+        for (k, &(i, j, ly)) in fp.pos.iter().enumerate() {
+            if fp.missing == Some(k) {
+                continue;
             }
-            if let Some(m) = missing {
-                d[m] = (d.iter().sum::<f32>() - d[m]) / 3.0;
-            }
-            let filtered: f32 = (0..4).map(|k| weights[k] * d[k]).sum();
-            return if passes(st.op, dref, filtered, f) {
-                st.pass
-            } else {
-                st.fail
-            };
+            // A missing corner's weight is shared equally by the other three texels.
+            let wk = fp.weights[k] + fp.missing.map_or(0.0, |m| fp.weights[m] / 3.0);
+            self.report(
+                st,
+                obs,
+                level,
+                Self::loc(l, i, j, ly),
+                raw[k],
+                dref,
+                wk * scale,
+            );
         }
+    }
 
-        if let Some(m) = missing {
+    /// Fault only ([`Fault::FilterThenCompare`]): Dt filtered first, the result compared once.
+    fn filter_then_compare(st: &SamplerState, fp: &Footprint, raw: &[f32; 4], dref: f32) -> f32 {
+        let mut d = [0.0f32; 4];
+        for (dk, &r) in d.iter_mut().zip(raw) {
+            *dk = if st.clamp.dt { clamp01(r) } else { r };
+        }
+        if let Some(m) = fp.missing {
+            d[m] = (d.iter().sum::<f32>() - d[m]) / 3.0;
+        }
+        let filtered: f32 = (0..4).map(|k| fp.weights[k] * d[k]).sum();
+        if passes(st.op, dref, filtered, st.faults) {
+            st.pass
+        } else {
+            st.fail
+        }
+    }
+
+    /// Percentage-closer filtering: each texel resolved (compared), then the bilinear weights.
+    #[inline(always)]
+    fn percentage_closer(
+        &self,
+        st: &SamplerState,
+        fp: &Footprint,
+        mut raw: [f32; 4],
+        dref: f32,
+    ) -> f32 {
+        if let Some(m) = fp.missing {
             // Cube corner: no unique neighbour; the fourth texel is the average of the three
             // available texels' values (the recommended method of §8.13.1), and is then compared
             // like any texel (a comparison yields only the pass or the fail value per texel).
@@ -419,8 +513,45 @@ impl PreparedTexture {
         for k in 0..4 {
             vals[k] = self.resolve(st, raw[k], dref);
         }
+        let weights = fp.weights;
         weights[0] * vals[0] + weights[1] * vals[1] + weights[2] * vals[2] + weights[3] * vals[3]
     }
+}
+
+/// One level's lookup point in texel space (see [`PreparedTexture::level_point`]).
+struct LevelPoint {
+    /// u, v of equation 8.10 (the offset already added unless `late_offset` holds it).
+    u: f32,
+    v: f32,
+    /// Fault only ([`Fault::OffsetAfterWrap`]): the offset, added to the wrapped texel index.
+    late_offset: Option<[i32; 2]>,
+    /// Wrap modes for s and t (CLAMP_TO_EDGE on a seamless cube).
+    ws: Wrap,
+    wt: Wrap,
+    /// 1D and 1D array: j is 0.
+    one_d: bool,
+}
+
+impl LevelPoint {
+    /// Texel index `i` on `axis` (0: i, 1: j) of a level `n` texels wide; under
+    /// [`Fault::OffsetAfterWrap`] the offset added to the wrapped index, then clamped into the image.
+    #[inline(always)]
+    fn shift(&self, i: i64, axis: usize, n: u32) -> i64 {
+        match self.late_offset {
+            Some(d) if (0..n as i64).contains(&i) => (i + d[axis] as i64).clamp(0, n as i64 - 1),
+            _ => i,
+        }
+    }
+}
+
+/// The LINEAR footprint of one level (see [`PreparedTexture::linear_footprint`]).
+struct Footprint {
+    /// (i, j, storage layer) of τi0j0, τi1j0, τi0j1, τi1j1.
+    pos: [(i64, i64, u32); 4],
+    /// (1 − α)(1 − β), α(1 − β), (1 − α)β, αβ.
+    weights: [f32; 4],
+    /// A seamless cube corner's texel with no unique neighbour.
+    missing: Option<usize>,
 }
 
 /// One texel a lookup read (see [`Observer`]).

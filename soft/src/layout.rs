@@ -101,16 +101,23 @@ pub fn resolve(
         return Ok(Layout::Luminance);
     }
     match kind {
-        Kind::Stencil => return Ok(Layout::Red),
-        Kind::Colour => {
-            return Ok(if is_legacy(spec) {
-                Layout::Luminance
-            } else {
-                Layout::Red
-            })
-        }
-        Kind::Compare | Kind::Depth => {}
+        Kind::Stencil => Ok(Layout::Red),
+        Kind::Colour => Ok(if is_legacy(spec) {
+            Layout::Luminance
+        } else {
+            Layout::Red
+        }),
+        Kind::Compare | Kind::Depth => depth_mode_layout(spec, api, mode, faults),
     }
+}
+
+/// A depth value on a vec4 path: the expansion DEPTH_TEXTURE_MODE `mode` selects (Table 16.1).
+fn depth_mode_layout(
+    spec: Spec,
+    api: ApiPath,
+    mode: Option<DepthTextureMode>,
+    faults: Faults,
+) -> Result<Layout, SoftError> {
     if matches!(spec, Spec::Sgix | Spec::SgixAmbient) {
         // SGIX_shadow: the modified texels are treated as LUMINANCE; there is no DEPTH_TEXTURE_MODE.
         return Ok(Layout::Luminance);

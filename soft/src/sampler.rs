@@ -115,94 +115,9 @@ impl SamplerState {
         faults: Faults,
     ) -> Result<SamplerState, SoftError> {
         let format = tex.format();
-        let target = tex.target();
-        check_format(spec, format)?;
-        // Only s and t address a rectangle; wrap_r is checked against the spec's enums only.
-        check_wrap(spec, s.wrap_s)?;
-        check_wrap(spec, s.wrap_t)?;
-        check_wrap(spec, s.wrap_r)?;
-        if !matches!(s.mag_filter, Filter::Nearest | Filter::Linear) {
-            return Err(undefined(spec, "a mipmap TEXTURE_MAG_FILTER"));
-        }
-        // State a rectangle texture rejects (GL 4.6 §8.10, `rect_rejects`). Set on the texture it
-        // is an INVALID_ENUM error: the case cannot be set up (refused). Held by a bound sampler
-        // object it is no error but, GL 4.6 §8.2: "If state is present in a sampler object bound
-        // to a texture unit that would have been rejected by a call to TexParameter* for the
-        // texture bound to that unit, the behavior of the implementation is as if the texture
-        // were incomplete. For example, if TEXTURE_WRAP_S or TEXTURE_WRAP_T is set to REPEAT,
-        // MIRRORED_REPEAT, or MIRROR_CLAMP_TO_EDGE on the sampler object bound to a texture unit
-        // and the texture bound to that unit is a rectangle texture, the texture will be
-        // considered incomplete."
-        let rect_rejected = if target.is_rect() {
-            crate::unitstate::rect_rejects(s)
-        } else {
-            None
-        };
-        let mut sampler_object_incomplete = false;
-        match (rect_rejected, source) {
-            (None, _) => {}
-            (Some(Some(wrap)), StateSource::Texture) => {
-                return Err(SoftError::Wrap { spec, wrap });
-            }
-            (Some(None), StateSource::Texture) => {
-                return Err(undefined(
-                    spec,
-                    "a mipmap TEXTURE_MIN_FILTER on a rectangle texture (§8.10)",
-                ));
-            }
-            (Some(_), StateSource::SamplerObject) => {
-                sampler_object_incomplete = !faults.has(Fault::SamplerObjectRectComplete);
-            }
-        }
-        if is_es(spec) && s.lod_bias != 0.0 {
-            return Err(undefined(spec, "TEXTURE_LOD_BIAS (not in OpenGL ES)"));
-        }
-        if spec == Spec::Es2Ext {
-            // ES 2.0 has no TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD.
-            if tex.base_level != 0 || s.max_level.is_some() {
-                return Err(undefined(
-                    spec,
-                    "TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL (not in OpenGL ES 2.0)",
-                ));
-            }
-            if s.min_lod != -1000.0 || s.max_lod != 1000.0 {
-                return Err(undefined(
-                    spec,
-                    "TEXTURE_MIN_LOD / TEXTURE_MAX_LOD (not in OpenGL ES 2.0)",
-                ));
-            }
-        }
-        if s.min_lod > s.max_lod {
-            return Err(SoftError::UndefinedResult(
-                "TEXTURE_MIN_LOD > TEXTURE_MAX_LOD makes λ undefined (eq. 8.9)",
-            ));
-        }
-
-        // Which texels take part (§8.23.1).
-        let stencil_mode =
-            format.has_stencil() && s.depth_stencil_mode == Some(DepthStencilMode::StencilIndex);
-        if stencil_mode && !matches!(spec, Spec::Gl46 | Spec::Gles32) {
-            return Err(undefined(spec, "DEPTH_STENCIL_TEXTURE_MODE"));
-        }
+        let sampler_object_incomplete = check_state(spec, s, source, tex, faults)?;
+        let (kind, stencil_mode) = texel_kind(spec, s, tex, faults)?;
         let compare_on = s.compare_mode == CompareMode::Compare;
-        let kind = if !format.is_depth() {
-            if compare_on && faults.has(Fault::CompareAppliedToColour) {
-                Kind::Compare
-            } else {
-                Kind::Colour
-            }
-        } else if stencil_mode && !faults.has(Fault::StencilModeIgnored) {
-            if !tex.has_stencil() {
-                return Err(SoftError::Invalid(
-                    "DEPTH_STENCIL_TEXTURE_MODE is STENCIL_INDEX but the case has no stencil values".into(),
-                ));
-            }
-            Kind::Stencil
-        } else if compare_on {
-            Kind::Compare
-        } else {
-            Kind::Depth
-        };
         // Faulty only: the stencil index compared with Dref ([`Fault::StencilCompared`]).
         let stencil_compare =
             kind == Kind::Stencil && compare_on && faults.has(Fault::StencilCompared);
@@ -213,58 +128,17 @@ impl SamplerState {
         };
         let clamp = compare::clamp_rule(spec, format, faults);
         let (pass, fail) = compare::pass_fail_values(spec, s.fail_value, faults);
-
-        // Border (§8.14.2): the first component is the depth value; ES 3.2 clamps border values
-        // to the format's range ([0, 1] for unorm).
-        let mut border = if faults.has(Fault::BorderDepthFromAlpha) {
-            s.border[3]
-        } else {
-            s.border[0]
-        };
-        if spec == Spec::Gles32 && format.is_fixed_point() {
-            border = clamp01(border);
-        }
-
-        // Level range (§8.14.3): p = ⌊log2(maxsize)⌋ + level_base, q = min(p, level_max).
-        let base = tex.base_level;
-        let level_max = s.max_level.unwrap_or(1000);
-        let p = tex.max_mip_index() + base;
-        let q = if faults.has(Fault::MaxLevelIgnored) {
-            p
-        } else {
-            p.min(level_max)
-        };
-        let q_sample = q.max(base);
-
-        // Completeness (§8.17).
-        let mip_complete = base <= level_max && q - base.min(q) < tex.chain_len;
-        let mut complete = true;
-        if s.min_filter.is_mipmap()
-            && !mip_complete
-            && !faults.has(Fault::MipmapCompletenessIgnored)
-        {
-            complete = false;
-        }
-        let nearest_only = is_nearest_only(s);
-        if !nearest_only && stencil_mode {
-            complete = false;
-        }
-        if spec == Spec::Gles32
-            && !nearest_only
-            && format.is_depth()
-            && format.is_sized()
-            && !compare_on
-            && !faults.has(Fault::EsDepthFilterCompletenessIgnored)
-        {
-            // ES 3.2 §8.17: sized depth format, TEXTURE_COMPARE_MODE NONE, non-NEAREST filtering.
-            complete = false;
-        }
-        if sampler_object_incomplete {
-            complete = false;
-        }
-        if faults.has(Fault::IncompleteNotZero) {
-            complete = true;
-        }
+        let border = border_depth(spec, s, format, faults);
+        let range = LevelRange::new(s, tex, faults);
+        let complete = is_complete(
+            spec,
+            s,
+            tex,
+            &range,
+            stencil_mode,
+            sampler_object_incomplete,
+            faults,
+        );
 
         Ok(SamplerState {
             kind,
@@ -279,18 +153,203 @@ impl SamplerState {
                 lod_bias: s.lod_bias,
                 min_lod: s.min_lod,
                 max_lod: s.max_lod,
-                level_base: base,
-                q: q_sample,
+                level_base: range.base,
+                q: range.q.max(range.base),
                 min_filter: s.min_filter,
                 mag_filter: s.mag_filter,
             },
-            seamless: target.is_cube() && crate::unitstate::seamless(spec, s, faults),
+            seamless: tex.target().is_cube() && crate::unitstate::seamless(spec, s, faults),
             complete,
             faults,
             stencil_compare,
             swizzled_dt: crate::unitstate::pre_compare_dt(s, faults),
         })
     }
+}
+
+/// Refuses state `spec` does not define. `Ok(true)`: a bound sampler object holds state the
+/// rectangle texture rejects, so the texture counts as incomplete (see [`rect_rule`]).
+fn check_state(
+    spec: Spec,
+    s: &Sampler,
+    source: StateSource,
+    tex: &PreparedTexture,
+    faults: Faults,
+) -> Result<bool, SoftError> {
+    check_format(spec, tex.format())?;
+    // Only s and t address a rectangle; wrap_r is checked against the spec's enums only.
+    check_wrap(spec, s.wrap_s)?;
+    check_wrap(spec, s.wrap_t)?;
+    check_wrap(spec, s.wrap_r)?;
+    if !matches!(s.mag_filter, Filter::Nearest | Filter::Linear) {
+        return Err(undefined(spec, "a mipmap TEXTURE_MAG_FILTER"));
+    }
+    let sampler_object_incomplete = rect_rule(spec, s, source, tex, faults)?;
+    if is_es(spec) && s.lod_bias != 0.0 {
+        return Err(undefined(spec, "TEXTURE_LOD_BIAS (not in OpenGL ES)"));
+    }
+    if spec == Spec::Es2Ext {
+        // ES 2.0 has no TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD.
+        if tex.base_level != 0 || s.max_level.is_some() {
+            return Err(undefined(
+                spec,
+                "TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL (not in OpenGL ES 2.0)",
+            ));
+        }
+        if s.min_lod != -1000.0 || s.max_lod != 1000.0 {
+            return Err(undefined(
+                spec,
+                "TEXTURE_MIN_LOD / TEXTURE_MAX_LOD (not in OpenGL ES 2.0)",
+            ));
+        }
+    }
+    if s.min_lod > s.max_lod {
+        return Err(SoftError::UndefinedResult(
+            "TEXTURE_MIN_LOD > TEXTURE_MAX_LOD makes λ undefined (eq. 8.9)",
+        ));
+    }
+    Ok(sampler_object_incomplete)
+}
+
+/// State a rectangle texture rejects (GL 4.6 §8.10, `rect_rejects`). Set on the texture it is an
+/// INVALID_ENUM error: the case cannot be set up (refused). Held by a bound sampler object it is
+/// no error but, GL 4.6 §8.2: "If state is present in a sampler object bound to a texture unit
+/// that would have been rejected by a call to TexParameter* for the texture bound to that unit,
+/// the behavior of the implementation is as if the texture were incomplete. For example, if
+/// TEXTURE_WRAP_S or TEXTURE_WRAP_T is set to REPEAT, MIRRORED_REPEAT, or MIRROR_CLAMP_TO_EDGE on
+/// the sampler object bound to a texture unit and the texture bound to that unit is a rectangle
+/// texture, the texture will be considered incomplete." `Ok(true)`: incomplete so.
+fn rect_rule(
+    spec: Spec,
+    s: &Sampler,
+    source: StateSource,
+    tex: &PreparedTexture,
+    faults: Faults,
+) -> Result<bool, SoftError> {
+    let rect_rejected = if tex.target().is_rect() {
+        crate::unitstate::rect_rejects(s)
+    } else {
+        None
+    };
+    match (rect_rejected, source) {
+        (None, _) => Ok(false),
+        (Some(Some(wrap)), StateSource::Texture) => Err(SoftError::Wrap { spec, wrap }),
+        (Some(None), StateSource::Texture) => Err(undefined(
+            spec,
+            "a mipmap TEXTURE_MIN_FILTER on a rectangle texture (§8.10)",
+        )),
+        (Some(_), StateSource::SamplerObject) => Ok(!faults.has(Fault::SamplerObjectRectComplete)),
+    }
+}
+
+/// Which texels take part (§8.23.1): what a fetched texel turns into, and whether
+/// DEPTH_STENCIL_TEXTURE_MODE selects stencil indices.
+fn texel_kind(
+    spec: Spec,
+    s: &Sampler,
+    tex: &PreparedTexture,
+    faults: Faults,
+) -> Result<(Kind, bool), SoftError> {
+    let format = tex.format();
+    let stencil_mode =
+        format.has_stencil() && s.depth_stencil_mode == Some(DepthStencilMode::StencilIndex);
+    if stencil_mode && !matches!(spec, Spec::Gl46 | Spec::Gles32) {
+        return Err(undefined(spec, "DEPTH_STENCIL_TEXTURE_MODE"));
+    }
+    let compare_on = s.compare_mode == CompareMode::Compare;
+    let kind = if !format.is_depth() {
+        if compare_on && faults.has(Fault::CompareAppliedToColour) {
+            Kind::Compare
+        } else {
+            Kind::Colour
+        }
+    } else if stencil_mode && !faults.has(Fault::StencilModeIgnored) {
+        if !tex.has_stencil() {
+            return Err(SoftError::Invalid(
+                "DEPTH_STENCIL_TEXTURE_MODE is STENCIL_INDEX but the case has no stencil values"
+                    .into(),
+            ));
+        }
+        Kind::Stencil
+    } else if compare_on {
+        Kind::Compare
+    } else {
+        Kind::Depth
+    };
+    Ok((kind, stencil_mode))
+}
+
+/// The border texel's value (§8.14.2): the first component is the depth value; ES 3.2 clamps
+/// border values to the format's range ([0, 1] for unorm).
+fn border_depth(spec: Spec, s: &Sampler, format: Format, faults: Faults) -> f32 {
+    let border = if faults.has(Fault::BorderDepthFromAlpha) {
+        s.border[3]
+    } else {
+        s.border[0]
+    };
+    if spec == Spec::Gles32 && format.is_fixed_point() {
+        clamp01(border)
+    } else {
+        border
+    }
+}
+
+/// The level range (§8.14.3): p = ⌊log2(maxsize)⌋ + level_base, q = min(p, level_max).
+#[derive(Clone, Copy)]
+struct LevelRange {
+    base: u32,
+    level_max: u32,
+    q: u32,
+}
+
+impl LevelRange {
+    fn new(s: &Sampler, tex: &PreparedTexture, faults: Faults) -> LevelRange {
+        let base = tex.base_level;
+        let level_max = s.max_level.unwrap_or(1000);
+        let p = tex.max_mip_index() + base;
+        let q = if faults.has(Fault::MaxLevelIgnored) {
+            p
+        } else {
+            p.min(level_max)
+        };
+        LevelRange { base, level_max, q }
+    }
+}
+
+/// Texture completeness (§8.17) for this sampler.
+fn is_complete(
+    spec: Spec,
+    s: &Sampler,
+    tex: &PreparedTexture,
+    range: &LevelRange,
+    stencil_mode: bool,
+    sampler_object_incomplete: bool,
+    faults: Faults,
+) -> bool {
+    if faults.has(Fault::IncompleteNotZero) {
+        return true;
+    }
+    let format = tex.format();
+    let LevelRange { base, level_max, q } = *range;
+    let mip_complete = base <= level_max && q - base.min(q) < tex.chain_len;
+    if s.min_filter.is_mipmap() && !mip_complete && !faults.has(Fault::MipmapCompletenessIgnored) {
+        return false;
+    }
+    let nearest_only = is_nearest_only(s);
+    if !nearest_only && stencil_mode {
+        return false;
+    }
+    if spec == Spec::Gles32
+        && !nearest_only
+        && format.is_depth()
+        && format.is_sized()
+        && s.compare_mode != CompareMode::Compare
+        && !faults.has(Fault::EsDepthFilterCompletenessIgnored)
+    {
+        // ES 3.2 §8.17: sized depth format, TEXTURE_COMPARE_MODE NONE, non-NEAREST filtering.
+        return false;
+    }
+    !sampler_object_incomplete
 }
 
 #[cfg(test)]

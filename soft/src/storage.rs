@@ -11,7 +11,7 @@
 
 use crate::faults::{Fault, Faults};
 use crate::SoftError;
-use shadowcheck_model::{Format, Target, Texels, Texture};
+use shadowcheck_model::{Format, Level, Target, Texels, Texture};
 
 /// One prepared mip level.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -59,67 +59,18 @@ impl PreparedTexture {
         self.data.reserve(total);
         let has_stencil =
             tex.format.has_stencil() && tex.levels.iter().all(|l| l.stencil.is_some());
-        let bits = tex.format.unorm_bits();
         if tex.levels.is_empty() {
             return Err(SoftError::Invalid("texture has no levels".into()));
         }
         for lvl in &tex.levels {
-            // The lookup indexes without further checks, so the structure is checked here even for
-            // textures that did not go through `validate`.
-            if lvl.width == 0 || lvl.height == 0 || lvl.layers == 0 {
-                return Err(SoftError::Invalid("level with a zero dimension".into()));
-            }
-            if tex.target.is_cube() && (lvl.width != lvl.height || lvl.layers % 6 != 0) {
-                return Err(SoftError::Invalid(
-                    "cube levels must be square with 6 faces per cube".into(),
-                ));
-            }
-            let n = lvl.texel_count();
-            if lvl.depth.len() != n {
-                return Err(SoftError::Invalid(format!(
-                    "level has {} values for {} texels",
-                    lvl.depth.len(),
-                    n
-                )));
-            }
+            let n = check_level(tex.target, lvl)?;
             self.levels.push(LevelDesc {
                 width: lvl.width,
                 height: lvl.height,
                 layers: lvl.layers,
                 offset: self.data.len(),
             });
-            match (&lvl.depth, bits) {
-                (Texels::Unorm(v), Some(b)) => {
-                    let max = ((1u64 << b) - 1) as f64;
-                    let div = if faults.has(Fault::UnormDividedByPowerOfTwo)
-                        || (faults.has(Fault::ColourDividedBy256) && tex.format == Format::R8)
-                    {
-                        max + 1.0
-                    } else {
-                        max
-                    };
-                    self.data.extend(v.iter().map(|&c| unorm_to_f32(c, div)));
-                }
-                (Texels::Float(v), None) => {
-                    // §8.5: depth is clamped to [0, 1] at upload, for every depth format.
-                    if faults.has(Fault::UploadNotClamped) {
-                        self.data.extend_from_slice(v);
-                    } else {
-                        self.data.extend(v.iter().map(|&d| clamp01(d)));
-                    }
-                }
-                _ => {
-                    return Err(SoftError::Invalid(format!(
-                        "format {} does not store {} texels",
-                        tex.format,
-                        if bits.is_some() {
-                            "floating-point"
-                        } else {
-                            "unorm"
-                        }
-                    )))
-                }
-            }
+            self.push_depth(tex.format, &lvl.depth, faults)?;
             if has_stencil {
                 if let Some(s) = &lvl.stencil {
                     if s.len() != n {
@@ -134,6 +85,50 @@ impl PreparedTexture {
             }
         }
         self.chain_len = mip_chain_len(tex.target, &self.levels);
+        Ok(())
+    }
+
+    /// Appends one level's depth (or colour) values as f32: unorm c / (2^b − 1) (GL 4.6 eq. 2.1),
+    /// floats clamped to [0, 1].
+    fn push_depth(
+        &mut self,
+        format: Format,
+        depth: &Texels,
+        faults: Faults,
+    ) -> Result<(), SoftError> {
+        let bits = format.unorm_bits();
+        match (depth, bits) {
+            (Texels::Unorm(v), Some(b)) => {
+                let max = ((1u64 << b) - 1) as f64;
+                let div = if faults.has(Fault::UnormDividedByPowerOfTwo)
+                    || (faults.has(Fault::ColourDividedBy256) && format == Format::R8)
+                {
+                    max + 1.0
+                } else {
+                    max
+                };
+                self.data.extend(v.iter().map(|&c| unorm_to_f32(c, div)));
+            }
+            (Texels::Float(v), None) => {
+                // §8.5: depth is clamped to [0, 1] at upload, for every depth format.
+                if faults.has(Fault::UploadNotClamped) {
+                    self.data.extend_from_slice(v);
+                } else {
+                    self.data.extend(v.iter().map(|&d| clamp01(d)));
+                }
+            }
+            _ => {
+                return Err(SoftError::Invalid(format!(
+                    "format {} does not store {} texels",
+                    format,
+                    if bits.is_some() {
+                        "floating-point"
+                    } else {
+                        "unorm"
+                    }
+                )))
+            }
+        }
         Ok(())
     }
 
@@ -193,6 +188,28 @@ pub fn unorm_to_f32(c: u32, div: f64) -> f32 {
 #[allow(clippy::manual_clamp)] // f32::clamp keeps NaN; max/min map it to 0 on purpose
 pub fn clamp01(x: f32) -> f32 {
     x.max(0.0).min(1.0)
+}
+
+/// Checks one level's structure and returns its texel count. The lookup indexes without further
+/// checks, so the structure is checked here even for textures that did not go through `validate`.
+fn check_level(target: Target, lvl: &Level) -> Result<usize, SoftError> {
+    if lvl.width == 0 || lvl.height == 0 || lvl.layers == 0 {
+        return Err(SoftError::Invalid("level with a zero dimension".into()));
+    }
+    if target.is_cube() && (lvl.width != lvl.height || !lvl.layers.is_multiple_of(6)) {
+        return Err(SoftError::Invalid(
+            "cube levels must be square with 6 faces per cube".into(),
+        ));
+    }
+    let n = lvl.texel_count();
+    if lvl.depth.len() != n {
+        return Err(SoftError::Invalid(format!(
+            "level has {} values for {} texels",
+            lvl.depth.len(),
+            n
+        )));
+    }
+    Ok(n)
 }
 
 /// How many levels from the base follow the size sequence of §8.14.3 (level i is

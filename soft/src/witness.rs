@@ -119,311 +119,325 @@ fn with_api(mut c: Case, api: ApiPath) -> Case {
     c
 }
 
+fn with_dref(mut c: Case, dref: f64) -> Case {
+    c.lookup.dref = dref;
+    c
+}
+
+/// ARB_shadow_ambient, one texel: `fail_value` is TEXTURE_COMPARE_FAIL_VALUE_ARB.
+fn ambient(texel: u32, fail_value: f32) -> Case {
+    let mut c = case(Spec::ArbAmbient, 1, 1, vec![texel], CompareFunc::Lequal);
+    c.sampler.fail_value = Some(fail_value);
+    c
+}
+
+/// One texel on `api` with DEPTH_TEXTURE_MODE `mode` (`None`: the default).
+fn depth_mode(api: ApiPath, texel: u32, mode: Option<DepthTextureMode>) -> Case {
+    let mut c = with_api(gl(vec![texel], 1, CompareFunc::Lequal), api);
+    c.sampler.depth_texture_mode = mode;
+    c
+}
+
+/// A D24S8 texel (Dt 0, stencil 7) read with DEPTH_STENCIL_TEXTURE_MODE STENCIL_INDEX.
+fn stencil_index() -> Case {
+    let mut c = gl(vec![0], 1, CompareFunc::Lequal);
+    c.texture.format = Format::D24S8;
+    c.texture.levels[0].stencil = Some(vec![7]);
+    c.sampler.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
+    c
+}
+
+/// One R8 texel with TEXTURE_COMPARE_MODE `mode`.
+fn r8(texel: u32, mode: CompareMode) -> Case {
+    let mut c = gl(vec![texel], 1, CompareFunc::Lequal);
+    c.texture.format = Format::R8;
+    c.sampler.compare_mode = mode;
+    c
+}
+
+/// A 2x2 single-level texture with a mipmap filter: mipmap-incomplete.
+fn mip_incomplete() -> Case {
+    let mut c = case(Spec::Gl46, 2, 2, vec![65535; 4], CompareFunc::Lequal);
+    c.sampler.min_filter = Filter::LinearMipmapLinear;
+    c
+}
+
+/// ES 3.2, a sized depth format with compare mode NONE and LINEAR filtering (incomplete, §8.17).
+fn es_linear_depth() -> Case {
+    let mut c = case(Spec::Gles32, 1, 1, vec![65535], CompareFunc::Lequal);
+    c.sampler.compare_mode = CompareMode::None;
+    c.sampler.min_filter = Filter::Linear;
+    c
+}
+
+/// A projective lookup, q = 2: (s, t) = (¾, ¼) reads texel 1 (Dt 0.6), Dref 1.2 / 2 = 0.6.
+fn projective() -> Case {
+    let mut c = case(
+        Spec::Gl46,
+        2,
+        2,
+        vec![0, d16(0.6), 0, 0],
+        CompareFunc::Lequal,
+    );
+    c.lookup.coord = [1.5, 0.5, 0.0, 2.0];
+    c.lookup.dref = 1.2;
+    c.lookup.projective = true;
+    c
+}
+
+/// A 1x1x3 array whose layer 2 passes, looked up at layer coordinate 1.5 (rounds to 2).
+fn layer_one_and_a_half() -> Case {
+    let mut c = gl(vec![0, 0, 65535], 1, CompareFunc::Lequal);
+    c.texture.target = Target::T2dArray;
+    c.texture.levels[0].layers = 3;
+    c.lookup.coord[2] = 1.5;
+    c
+}
+
+/// A cube of 2x2 faces holding `texels` (24, face by face).
+fn cube(texels: Vec<u32>) -> Case {
+    let mut c = case(Spec::Gl46, 2, 2, vec![], CompareFunc::Lequal);
+    c.texture.target = Target::Cube;
+    c.texture.levels[0] = Level {
+        width: 2,
+        height: 2,
+        layers: 6,
+        depth: Texels::Unorm(texels),
+        stencil: None,
+    };
+    c
+}
+
+/// 2x2 faces; on -Y only row 0 passes. Direction (0.1, -1, 0.5): t_c = -r_z -> t = ¼, row 0.
+fn cube_neg_y() -> Case {
+    let mut texels = vec![0; 24];
+    texels[12] = 65535;
+    texels[13] = 65535;
+    let mut c = cube(texels);
+    c.lookup.coord = [0.1, -1.0, 0.5, 1.0];
+    c
+}
+
+/// As `seamless_cube_edge_in_es`: LINEAR near the +X/+Z edge with the GL enable on: column i0
+/// comes from +Z and passes, r = 0.4; per-face filtering reads +X only, r = 0.
+fn seamless_edge() -> Case {
+    let mut texels = vec![0; 24];
+    texels[16..20].copy_from_slice(&[65535; 4]);
+    let mut c = cube(texels);
+    c.sampler.min_filter = Filter::Linear;
+    c.sampler.mag_filter = Filter::Linear;
+    c.sampler.seamless = Some(true);
+    c.lookup.coord = [1.0, 0.0, 0.9, 1.0];
+    c
+}
+
+/// `mips` with NEAREST_MIPMAP_NEAREST at λ = 0 and TEXTURE_LOD_BIAS 1: level 1 passes.
+fn mips_lod_bias() -> Case {
+    let mut c = mips(Filter::NearestMipmapNearest, 0.0);
+    c.sampler.lod_bias = 1.0;
+    c
+}
+
+/// `mips` at λ = 1 clamped by TEXTURE_MAX_LOD 0.4: level 0 fails.
+fn mips_max_lod() -> Case {
+    let mut c = mips(Filter::NearestMipmapNearest, 1.0);
+    c.sampler.max_lod = 0.4;
+    c
+}
+
+/// `mips` at λ = 1 with TEXTURE_MAX_LEVEL 0: level 0 fails.
+fn mips_max_level() -> Case {
+    let mut c = mips(Filter::NearestMipmapNearest, 1.0);
+    c.sampler.max_level = Some(0);
+    c
+}
+
+/// s = 0.3 on 4 texels: u = 1.2, i = 1 -> (3) − mirror(1 − 4) = 3 − 2 = 1.
+fn mirrored_repeat() -> Case {
+    let mut c = gl(vec![65535, 0, 0, 0], 4, CompareFunc::Lequal);
+    c.sampler.wrap_s = Wrap::MirroredRepeat;
+    c.lookup.coord[0] = 0.3;
+    c
+}
+
+/// s = 0.125 on [1, 0, 0, 0]: texel 0 passes; offset +1 reads texel 1 (Dt 0), which fails.
+fn offset_one() -> Case {
+    let mut c = gl(vec![65535, 0, 0, 0], 4, CompareFunc::Lequal);
+    c.lookup.coord[0] = 0.125;
+    c.lookup.offset = [1, 0, 0];
+    c
+}
+
+/// Level 1 (2x2) = [1, 0 / 1, 0], s = 0.1: u = 0.2 + 1 reads texel 1 (fails); one base-level
+/// texel is half a level-1 texel, u = 0.7 reads texel 0 (passes).
+fn offset_on_level_one() -> Case {
+    let mut c = mips(Filter::NearestMipmapNearest, 1.0);
+    c.texture.levels[1].depth = Texels::Unorm(vec![65535, 0, 65535, 0]);
+    c.lookup.coord[0] = 0.1;
+    c.lookup.offset = [1, 0, 0];
+    c
+}
+
+/// REPEAT, s = 0.875 on [0, 0, 0, 1]: u = 3.5 + 1 wraps to texel 0 (fails); the faulty unit
+/// wraps first (texel 3), then adds 1 and clamps back to texel 3 (passes).
+fn offset_across_repeat() -> Case {
+    let mut c = gl(vec![0, 0, 0, 65535], 4, CompareFunc::Lequal);
+    c.sampler.wrap_s = Wrap::Repeat;
+    c.lookup.coord[0] = 0.875;
+    c.lookup.offset = [1, 0, 0];
+    c
+}
+
+/// LINEAR, layer coordinate 0.5: ⌊0.5 + 1/2⌋ = layer 1 (passes); RNE gives layer 0.
+fn linear_layer_half() -> Case {
+    let mut c = gl(vec![0, 0, 65535, 65535, 0, 0], 2, CompareFunc::Lequal);
+    c.texture.target = Target::T2dArray;
+    c.texture.levels[0].layers = 3;
+    c.sampler.min_filter = Filter::Linear;
+    c.sampler.mag_filter = Filter::Linear;
+    c.lookup.coord[2] = 0.5;
+    c
+}
+
+/// λ = 1 with a mipmap filter: level 1 (all Dt 1, every texel passes) would be read; the gather
+/// reads level base (all Dt 0, every texel fails with Dref ½).
+fn gather_at_lod_one() -> Case {
+    let mut c = mips(Filter::NearestMipmapNearest, 1.0);
+    c.lookup.gather = Some(Gather { offsets: None });
+    c.lookup.coord[1] = 0.375;
+    c.lookup.coord[0] = 0.375;
+    c
+}
+
+/// One passing D16 texel under `func` with TEXTURE_SWIZZLE_R = ZERO.
+fn red_swizzled_to_zero(func: CompareFunc) -> Case {
+    let mut c = gl(vec![65535], 1, func);
+    c.sampler.swizzle = Some([Swizzle::Zero, Swizzle::Green, Swizzle::Blue, Swizzle::Alpha]);
+    c
+}
+
+/// `gather4` with TEXTURE_SWIZZLE_RGBA `swizzle`.
+fn gather_swizzled(swizzle: [Swizzle; 4]) -> Case {
+    let mut c = gather4();
+    c.sampler.swizzle = Some(swizzle);
+    c
+}
+
+/// Texture LEQUAL passes (r = 1); the bound sampler object's GREATER fails (r = 0).
+fn sampler_object_greater() -> Case {
+    let mut c = gl(vec![65535], 1, CompareFunc::Lequal);
+    let mut o = SamplerObject::from_sampler(&c.sampler);
+    o.compare_func = CompareFunc::Greater;
+    c.sampler.sampler_object = Some(o);
+    c
+}
+
+/// Fixed function, DEPTH_TEXTURE_MODE ALPHA, the texel passes: Table 16.1 gives (0, 0, 0, 1);
+/// swizzle (ALPHA, ONE, RED, ZERO) makes it (1, 1, 0, 0) (§15.2.1). The faulty unit returns
+/// (0, 0, 0, 1).
+fn compat_alpha_swizzled() -> Case {
+    let mut c = depth_mode(ApiPath::FixedFunction, 65535, Some(DepthTextureMode::Alpha));
+    c.sampler.swizzle = Some([Swizzle::Alpha, Swizzle::One, Swizzle::Red, Swizzle::Zero]);
+    c
+}
+
+/// A 2x1 rectangle [Dt 1, Dt 0] (texture wrap CLAMP_TO_EDGE) with a sampler object whose wrap S
+/// is REPEAT, looked up at s = 2.5: the texture is incomplete (GL 4.6 §8.2), core returns 0 →
+/// (0, 0, 0, 1). Sampling with REPEAT reads texel 2.5 mod 2 → 0 (Dt 1 passes LEQUAL 0.5) →
+/// (1, 0, 0, 1).
+fn rect_with_repeat_sampler_object() -> Case {
+    let mut c = gl(vec![65535, 0], 2, CompareFunc::Lequal);
+    c.texture.target = Target::Rect;
+    let mut o = SamplerObject::from_sampler(&c.sampler);
+    o.wrap_s = Wrap::Repeat;
+    c.sampler.sampler_object = Some(o);
+    c.lookup.coord[0] = 2.5;
+    c
+}
+
 /// A case on which `fault` changes the result, and the API path to look at.
 pub fn witness(fault: Fault) -> (Case, ApiPath) {
     use CompareFunc as C;
+    use DepthTextureMode as M;
     let c = match fault {
+        // The reference and Dt clamps, the comparison operators (§8.23.1).
         Fault::RefClampedForFloat => float1(1.0, 1.5, C::Lequal),
-        Fault::RefNotClamped => {
-            let mut c = gl(vec![65535], 1, C::Lequal);
-            c.lookup.dref = 1.5;
-            c
-        }
+        Fault::RefNotClamped => with_dref(gl(vec![65535], 1, C::Lequal), 1.5),
         Fault::DtClampedForFloat => border(Format::D32f, C::Less, [1.5, 0.0, 0.0, 0.0], 1.2),
         Fault::DtNotClamped => border(Format::D16, C::Less, [1.5, 0.0, 0.0, 0.0], 1.2),
+        Fault::UploadNotClamped => float1(1.5, 1.2, C::Lequal),
+        Fault::UnormDividedByPowerOfTwo => with_dref(gl(vec![65535], 1, C::Lequal), 1.0),
         Fault::FilterThenCompare | Fault::PcfHalfTexelOff | Fault::LinearAsNearest => linear_pair(),
         Fault::LequalGequalSwapped => gl(vec![65535], 1, C::Lequal),
-        Fault::LessAsLequal | Fault::GreaterAsGequal => {
-            let mut c = gl(
-                vec![d16(0.6)],
-                1,
-                if fault == Fault::LessAsLequal {
-                    C::Less
-                } else {
-                    C::Greater
-                },
-            );
-            c.lookup.dref = 0.6;
-            c
-        }
-        Fault::EqualWithTolerance => {
-            let mut c = gl(vec![d16(0.6)], 1, C::Equal);
-            c.lookup.dref = 0.6001;
-            c
-        }
+        Fault::LessAsLequal => with_dref(gl(vec![d16(0.6)], 1, C::Less), 0.6),
+        Fault::GreaterAsGequal => with_dref(gl(vec![d16(0.6)], 1, C::Greater), 0.6),
+        Fault::EqualWithTolerance => with_dref(gl(vec![d16(0.6)], 1, C::Equal), 0.6001),
         Fault::NanOrderedNotequal => float1(0.5, f64::NAN, C::Notequal),
         Fault::AlwaysNeverSwapped => gl(vec![0], 1, C::Always),
         Fault::SgixOperatorsReversed => case(Spec::Sgix, 1, 1, vec![d16(0.2)], C::LequalRSgix),
-        Fault::AmbientAppliedToPass | Fault::AmbientIgnored => {
-            let pass = fault == Fault::AmbientAppliedToPass;
-            let mut c = case(
-                Spec::ArbAmbient,
-                1,
-                1,
-                vec![if pass { 65535 } else { 0 }],
-                C::Lequal,
-            );
-            c.sampler.fail_value = Some(0.25);
-            c
-        }
-        Fault::RedModeAsLuminance | Fault::IntensityAsLuminance | Fault::WrongDefaultDepthMode => {
-            let (texel, mode) = match fault {
-                Fault::RedModeAsLuminance => (65535, Some(DepthTextureMode::Red)),
-                Fault::IntensityAsLuminance => (0, Some(DepthTextureMode::Intensity)),
-                _ => (65535, None),
-            };
-            let mut c = with_api(gl(vec![texel], 1, C::Lequal), ApiPath::FixedFunction);
-            c.sampler.depth_texture_mode = mode;
-            c
-        }
-        Fault::FailValueNotClamped => {
-            // ARB_shadow_ambient: the fail value is clamped to [0, 1] when set: 1.5 reads as 1.
-            let mut c = case(Spec::ArbAmbient, 1, 1, vec![0], C::Lequal);
-            c.sampler.fail_value = Some(1.5);
-            c
-        }
-        Fault::AlphaModeZeroOnGlsl130 | Fault::Glsl120IgnoresDepthMode => {
-            let api = if fault == Fault::AlphaModeZeroOnGlsl130 {
-                ApiPath::Glsl130
-            } else {
-                ApiPath::Glsl120
-            };
-            let mut c = with_api(gl(vec![65535], 1, C::Lequal), api);
-            c.sampler.depth_texture_mode = Some(DepthTextureMode::Alpha);
-            c
-        }
-        Fault::StencilCompared => {
-            let mut c = gl(vec![0], 1, C::Lequal);
-            c.texture.format = Format::D24S8;
-            c.texture.levels[0].stencil = Some(vec![7]);
-            c.sampler.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
-            c
-        }
-        Fault::UploadNotClamped => float1(1.5, 1.2, C::Lequal),
-        Fault::CompareAppliedToColour => {
-            let mut c = gl(vec![51], 1, C::Lequal);
-            c.texture.format = Format::R8;
-            c
-        }
-        Fault::StencilModeIgnored => {
-            let mut c = gl(vec![0], 1, C::Lequal);
-            c.texture.format = Format::D24S8;
-            c.texture.levels[0].stencil = Some(vec![7]);
-            c.sampler.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
-            c
-        }
-        Fault::IncompleteNotZero | Fault::MipmapCompletenessIgnored => {
-            let mut c = case(Spec::Gl46, 2, 2, vec![65535; 4], C::Lequal);
-            c.sampler.min_filter = Filter::LinearMipmapLinear;
-            c
-        }
-        Fault::EsDepthFilterCompletenessIgnored => {
-            let mut c = case(Spec::Gles32, 1, 1, vec![65535], C::Lequal);
-            c.sampler.compare_mode = CompareMode::None;
-            c.sampler.min_filter = Filter::Linear;
-            c
-        }
-        Fault::ProjectiveDivideMissing | Fault::RefNotDividedByQ => {
-            let mut c = case(Spec::Gl46, 2, 2, vec![0, d16(0.6), 0, 0], C::Lequal);
-            c.lookup.coord = [1.5, 0.5, 0.0, 2.0];
-            c.lookup.dref = 1.2;
-            c.lookup.projective = true;
-            c
-        }
-        Fault::LayerTruncated => {
-            let mut c = gl(vec![0, 0, 65535], 1, C::Lequal);
-            c.texture.target = Target::T2dArray;
-            c.texture.levels[0].layers = 3;
-            c.lookup.coord[2] = 1.5;
-            c
-        }
-        Fault::CubeNegYFlipped => {
-            // 2x2 faces; on -Y only row 0 passes. Direction (0.1, -1, 0.5): t_c = -r_z -> t = ¼, row 0.
-            let mut texels = vec![0; 24];
-            texels[12] = 65535;
-            texels[13] = 65535;
-            let mut c = case(Spec::Gl46, 2, 2, vec![], C::Lequal);
-            c.texture.target = Target::Cube;
-            c.texture.levels[0] = Level {
-                width: 2,
-                height: 2,
-                layers: 6,
-                depth: Texels::Unorm(texels),
-                stencil: None,
-            };
-            c.lookup.coord = [0.1, -1.0, 0.5, 1.0];
-            c
-        }
-        Fault::MipLevelOffByOne => mips(Filter::NearestMipmapNearest, 0.25),
-        Fault::TrilinearNoBlend => mips(Filter::LinearMipmapLinear, 0.25),
-        Fault::LodBiasIgnored => {
-            let mut c = mips(Filter::NearestMipmapNearest, 0.0);
-            c.sampler.lod_bias = 1.0;
-            c
-        }
-        Fault::LodClampIgnored => {
-            let mut c = mips(Filter::NearestMipmapNearest, 1.0);
-            c.sampler.max_lod = 0.4;
-            c
-        }
-        Fault::MaxLevelIgnored => {
-            let mut c = mips(Filter::NearestMipmapNearest, 1.0);
-            c.sampler.max_level = Some(0);
-            c
-        }
+        // Pass / fail values and the result's components.
+        Fault::AmbientAppliedToPass => ambient(65535, 0.25),
+        Fault::AmbientIgnored => ambient(0, 0.25),
+        // ARB_shadow_ambient: the fail value is clamped to [0, 1] when set: 1.5 reads as 1.
+        Fault::FailValueNotClamped => ambient(0, 1.5),
+        Fault::RedModeAsLuminance => depth_mode(ApiPath::FixedFunction, 65535, Some(M::Red)),
+        Fault::IntensityAsLuminance => depth_mode(ApiPath::FixedFunction, 0, Some(M::Intensity)),
+        Fault::WrongDefaultDepthMode => depth_mode(ApiPath::FixedFunction, 65535, None),
+        Fault::AlphaModeZeroOnGlsl130 => depth_mode(ApiPath::Glsl130, 65535, Some(M::Alpha)),
+        Fault::Glsl120IgnoresDepthMode => depth_mode(ApiPath::Glsl120, 65535, Some(M::Alpha)),
+        Fault::StencilCompared | Fault::StencilModeIgnored => stencil_index(),
+        Fault::CompareAppliedToColour => r8(51, CompareMode::Compare),
+        // R8 102: exactly 102/255 (eq. (2.1)); the fault reads 102/256.
+        Fault::ColourDividedBy256 => r8(102, CompareMode::None),
+        // Completeness (§8.17).
+        Fault::IncompleteNotZero | Fault::MipmapCompletenessIgnored => mip_incomplete(),
+        Fault::EsDepthFilterCompletenessIgnored => es_linear_depth(),
+        Fault::SamplerObjectRectComplete => rect_with_repeat_sampler_object(),
+        // Coordinates, addressing and filtering (§8.13, §8.14).
+        Fault::ProjectiveDivideMissing | Fault::RefNotDividedByQ => projective(),
+        Fault::LayerTruncated => layer_one_and_a_half(),
+        Fault::LayerRneUnderLinear => linear_layer_half(),
+        Fault::CubeNegYFlipped => cube_neg_y(),
+        Fault::SeamlessIgnored => seamless_edge(),
         Fault::BorderIgnored | Fault::BorderDepthFromAlpha => {
             border(Format::D16, C::Lequal, [1.0, 0.0, 0.0, 0.0], 0.5)
         }
-        Fault::MirroredRepeatOffByOne => {
-            // s = 0.3 on 4 texels: u = 1.2, i = 1 -> (3) − mirror(1 − 4) = 3 − 2 = 1.
-            let mut c = gl(vec![65535, 0, 0, 0], 4, C::Lequal);
-            c.sampler.wrap_s = Wrap::MirroredRepeat;
-            c.lookup.coord[0] = 0.3;
-            c
-        }
-        Fault::OffsetIgnored => {
-            // s = 0.125 on [1, 0, 0, 0]: texel 0 passes; offset +1 reads texel 1 (Dt 0), which fails.
-            let mut c = gl(vec![65535, 0, 0, 0], 4, C::Lequal);
-            c.lookup.coord[0] = 0.125;
-            c.lookup.offset = [1, 0, 0];
-            c
-        }
-        Fault::OffsetInBaseLevelTexels => {
-            // Level 1 (2x2) = [1, 0 / 1, 0], s = 0.1: u = 0.2 + 1 reads texel 1 (fails); one
-            // base-level texel is half a level-1 texel, u = 0.7 reads texel 0 (passes).
-            let mut c = mips(Filter::NearestMipmapNearest, 1.0);
-            c.texture.levels[1].depth = Texels::Unorm(vec![65535, 0, 65535, 0]);
-            c.lookup.coord[0] = 0.1;
-            c.lookup.offset = [1, 0, 0];
-            c
-        }
-        Fault::OffsetAfterWrap => {
-            // REPEAT, s = 0.875 on [0, 0, 0, 1]: u = 3.5 + 1 wraps to texel 0 (fails); the
-            // faulty unit wraps first (texel 3), then adds 1 and clamps back to texel 3 (passes).
-            let mut c = gl(vec![0, 0, 0, 65535], 4, C::Lequal);
-            c.sampler.wrap_s = Wrap::Repeat;
-            c.lookup.coord[0] = 0.875;
-            c.lookup.offset = [1, 0, 0];
-            c
-        }
-        Fault::LayerRneUnderLinear => {
-            // LINEAR, layer coordinate 0.5: ⌊0.5 + 1/2⌋ = layer 1 (passes); RNE gives layer 0.
-            let mut c = gl(vec![0, 0, 65535, 65535, 0, 0], 2, C::Lequal);
-            c.texture.target = Target::T2dArray;
-            c.texture.levels[0].layers = 3;
-            c.sampler.min_filter = Filter::Linear;
-            c.sampler.mag_filter = Filter::Linear;
-            c.lookup.coord[2] = 0.5;
-            c
-        }
+        Fault::MirroredRepeatOffByOne => mirrored_repeat(),
+        Fault::OffsetIgnored => offset_one(),
+        Fault::OffsetInBaseLevelTexels => offset_on_level_one(),
+        Fault::OffsetAfterWrap => offset_across_repeat(),
+        // Level of detail and mipmapping (§8.14.1, §8.14.3).
+        Fault::MipLevelOffByOne => mips(Filter::NearestMipmapNearest, 0.25),
+        Fault::TrilinearNoBlend => mips(Filter::LinearMipmapLinear, 0.25),
+        Fault::LodBiasIgnored => mips_lod_bias(),
+        Fault::LodClampIgnored => mips_max_lod(),
+        Fault::MaxLevelIgnored => mips_max_level(),
+        // Shadow gather (§8.14.2).
         Fault::GatherOrderRotated | Fault::GatherIgnoresRef => gather4(),
-        Fault::GatherUsesLodLevel => {
-            // λ = 1 with a mipmap filter: level 1 (all Dt 1, every texel passes) would be read;
-            // the gather reads level base (all Dt 0, every texel fails with Dref ½).
-            let mut c = mips(Filter::NearestMipmapNearest, 1.0);
-            c.lookup.gather = Some(Gather { offsets: None });
-            c.lookup.coord[1] = 0.375;
-            c.lookup.coord[0] = 0.375;
-            c
-        }
-        Fault::ColourDividedBy256 => {
-            // R8 102: exactly 102/255 (eq. (2.1)); the fault reads 102/256.
-            let mut c = gl(vec![102], 1, C::Lequal);
-            c.texture.format = Format::R8;
-            c.sampler.compare_mode = CompareMode::None;
-            c
-        }
-        Fault::SwizzleIgnored => {
-            // Passes (r = 1); swizzle R = ZERO: Cs[0] = 0 (GL 4.6 §15.2.1).
-            let mut c = gl(vec![65535], 1, C::Lequal);
-            c.sampler.swizzle =
-                Some([Swizzle::Zero, Swizzle::Green, Swizzle::Blue, Swizzle::Alpha]);
-            c
-        }
-        Fault::SwizzleBeforeCompare => {
-            // GEQUAL, Dt = 1 fails at Dref 0.5: r = 0, and R = ZERO gives Cs[0] = 0 anyway; the
-            // faulty unit compares 0.5 >= 0 (ZERO applied to Dt) and passes.
-            let mut c = gl(vec![65535], 1, C::Gequal);
-            c.sampler.swizzle =
-                Some([Swizzle::Zero, Swizzle::Green, Swizzle::Blue, Swizzle::Alpha]);
-            c
-        }
-        Fault::SeamlessIgnored => {
-            // As `seamless_cube_edge_in_es`: LINEAR near the +X/+Z edge with the GL enable on:
-            // column i0 comes from +Z and passes, r = 0.4; per-face filtering reads +X only, r = 0.
-            let mut texels = vec![0; 24];
-            texels[16..20].copy_from_slice(&[65535; 4]);
-            let mut c = case(Spec::Gl46, 2, 2, vec![], C::Lequal);
-            c.texture.target = Target::Cube;
-            c.texture.levels[0] = Level {
-                width: 2,
-                height: 2,
-                layers: 6,
-                depth: Texels::Unorm(texels),
-                stencil: None,
-            };
-            c.sampler.min_filter = Filter::Linear;
-            c.sampler.mag_filter = Filter::Linear;
-            c.sampler.seamless = Some(true);
-            c.lookup.coord = [1.0, 0.0, 0.9, 1.0];
-            c
-        }
-        Fault::SamplerObjectIgnored => {
-            // Texture LEQUAL passes (r = 1); the bound sampler object's GREATER fails (r = 0).
-            let mut c = gl(vec![65535], 1, C::Lequal);
-            let mut o = SamplerObject::from_sampler(&c.sampler);
-            o.compare_func = C::Greater;
-            c.sampler.sampler_object = Some(o);
-            c
-        }
-        Fault::GatherIgnoresSwizzle => {
-            // `gather4` compares to (1, 1, 0, 0); TEXTURE_SWIZZLE_R = ALPHA takes the post-swizzle
-            // R of each texel's (Rt, 0, 0, 1), i.e. 1 for every texel (GL 4.6 §8.14.2): (1, 1, 1, 1).
-            // The faulty unit returns the unswizzled (1, 1, 0, 0).
-            let mut c = gather4();
-            c.sampler.swizzle = Some([
-                Swizzle::Alpha,
-                Swizzle::Green,
-                Swizzle::Blue,
-                Swizzle::Alpha,
-            ]);
-            c
-        }
+        Fault::GatherUsesLodLevel => gather_at_lod_one(),
+        // `gather4` compares to (1, 1, 0, 0); TEXTURE_SWIZZLE_R = ALPHA takes the post-swizzle
+        // R of each texel's (Rt, 0, 0, 1), i.e. 1 for every texel (GL 4.6 §8.14.2): (1, 1, 1, 1).
+        // The faulty unit returns the unswizzled (1, 1, 0, 0).
+        Fault::GatherIgnoresSwizzle => gather_swizzled([
+            Swizzle::Alpha,
+            Swizzle::Green,
+            Swizzle::Blue,
+            Swizzle::Alpha,
+        ]),
+        // `gather4` compares to (1, 1, 0, 0); TEXTURE_SWIZZLE_R = ZERO gives 0 for every texel
+        // (GL 4.6 §8.14.2), the unswizzled reading (1, 1, 0, 0). The faulty unit swizzles the
+        // gathered vector by (ZERO, RED, ONE, GREEN): (0, 1, 1, 1), neither reading.
         Fault::GatherSwizzlesVector => {
-            // `gather4` compares to (1, 1, 0, 0); TEXTURE_SWIZZLE_R = ZERO gives 0 for every texel
-            // (GL 4.6 §8.14.2), the unswizzled reading (1, 1, 0, 0). The faulty unit swizzles the
-            // gathered vector by (ZERO, RED, ONE, GREEN): (0, 1, 1, 1), neither reading.
-            let mut c = gather4();
-            c.sampler.swizzle = Some([Swizzle::Zero, Swizzle::Red, Swizzle::One, Swizzle::Green]);
-            c
+            gather_swizzled([Swizzle::Zero, Swizzle::Red, Swizzle::One, Swizzle::Green])
         }
-        Fault::CompatSwizzleDropped => {
-            // Fixed function, DEPTH_TEXTURE_MODE ALPHA, the texel passes: Table 16.1 gives
-            // (0, 0, 0, 1); swizzle (ALPHA, ONE, RED, ZERO) makes it (1, 1, 0, 0) (§15.2.1). The
-            // faulty unit returns (0, 0, 0, 1).
-            let mut c = with_api(gl(vec![65535], 1, C::Lequal), ApiPath::FixedFunction);
-            c.sampler.depth_texture_mode = Some(DepthTextureMode::Alpha);
-            c.sampler.swizzle = Some([Swizzle::Alpha, Swizzle::One, Swizzle::Red, Swizzle::Zero]);
-            c
-        }
-        Fault::SamplerObjectRectComplete => {
-            // A 2x1 rectangle [Dt 1, Dt 0] (texture wrap CLAMP_TO_EDGE) with a sampler object
-            // whose wrap S is REPEAT, looked up at s = 2.5: the texture is incomplete (GL 4.6
-            // §8.2), core returns 0 → (0, 0, 0, 1). Sampling with REPEAT reads texel 2.5 mod 2 → 0
-            // (Dt 1 passes LEQUAL 0.5) → (1, 0, 0, 1).
-            let mut c = gl(vec![65535, 0], 2, C::Lequal);
-            c.texture.target = Target::Rect;
-            let mut o = SamplerObject::from_sampler(&c.sampler);
-            o.wrap_s = Wrap::Repeat;
-            c.sampler.sampler_object = Some(o);
-            c.lookup.coord[0] = 2.5;
-            c
-        }
-        Fault::UnormDividedByPowerOfTwo => {
-            let mut c = gl(vec![65535], 1, C::Lequal);
-            c.lookup.dref = 1.0;
-            c
-        }
+        // Swizzle and sampler objects (GL 4.6 §15.2.1, §8.2).
+        // Passes (r = 1); swizzle R = ZERO: Cs[0] = 0 (GL 4.6 §15.2.1).
+        Fault::SwizzleIgnored => red_swizzled_to_zero(C::Lequal),
+        // GEQUAL, Dt = 1 fails at Dref 0.5: r = 0, and R = ZERO gives Cs[0] = 0 anyway; the
+        // faulty unit compares 0.5 >= 0 (ZERO applied to Dt) and passes.
+        Fault::SwizzleBeforeCompare => red_swizzled_to_zero(C::Gequal),
+        Fault::CompatSwizzleDropped => compat_alpha_swizzled(),
+        Fault::SamplerObjectIgnored => sampler_object_greater(),
         // TexParameter state faults: no lookup shows them (a case's sampler state is always set
         // explicitly); their witnesses are state cases (`tex_param`). A plain lookup here.
         Fault::WrongInitialCompareFunc
