@@ -24,7 +24,7 @@ fn info(api: ContextApi, version: (u32, u32), glsl: u32, exts: &[&str]) -> GlInf
 
 fn case(spec: Spec, api: ApiPath, target: Target, format: Format) -> Case {
     let layers = if target.is_cube() { 6 } else { 1 };
-    let mut c = crate::test_case::case(target, 2, 2, layers);
+    let mut c = shadowcheck_plan::test_case::case(target, 2, 2, layers);
     c.spec = spec;
     c.api = vec![api];
     c.texture.format = format;

@@ -20,8 +20,6 @@ pub mod names;
 mod programs;
 pub mod renderer;
 pub mod state;
-#[cfg(test)]
-mod test_case;
 pub mod texture;
 pub mod unitstate;
 pub mod worker;

@@ -25,8 +25,8 @@ pub mod paths;
 pub mod serve;
 pub mod shaders;
 pub mod sweep;
-#[cfg(test)]
-mod test_case;
+#[cfg(any(test, feature = "test-support"))]
+pub mod test_case;
 pub mod texels;
 pub mod unit;
 

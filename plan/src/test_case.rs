@@ -1,9 +1,10 @@
-//! The one hand-built case the GL crate's unit tests start from (a D16 texture of zeros, GL 4.6 core,
-//! LEQUAL NEAREST, Dref 0.5 at the centre); each test changes what it is about.
+//! The one hand-built case the plan's and the GL worker's unit tests start from (a D16 texture of
+//! zeros, GL 4.6 core, LEQUAL NEAREST, Dref 0.5 at the centre); each test changes what it is
+//! about. Built for tests only (the `test-support` feature outside this crate).
 use shadowcheck_model::*;
 
 /// A `w` x `h` x `layers` D16 case of `target` on the core path.
-pub(crate) fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
+pub fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
     Case {
         sweep: vec![],
         id: "t".into(),
