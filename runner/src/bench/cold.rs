@@ -32,7 +32,7 @@ pub fn density_rows(set: &CaseSet) -> Vec<Measurement> {
             .with_target(Target::new(
                 Goal::AtLeast,
                 targets17::CHECKS_PER_STATE,
-                "issue 17",
+                "cold-run goal",
             ))
         })
         .collect()
@@ -183,7 +183,7 @@ fn mesa_suite_runs(
                         row = row.with_target(Target::new(
                             Goal::AtMost,
                             targets17::MESA_COLD_S,
-                            "issue 17 (2 cores)",
+                            "cold-run goal (2 cores)",
                         ));
                     }
                     rows.push(cold_rss_row(&run));
@@ -227,7 +227,11 @@ fn cold_rss_row(run: &suite::SuiteRun) -> Measurement {
         "MiB",
         "largest process of the cold run, wait4 ru_maxrss".into(),
     )
-    .with_target(Target::new(Goal::AtMost, targets::PEAK_RSS_MIB, "issue 6"))
+    .with_target(Target::new(
+        Goal::AtMost,
+        targets::PEAK_RSS_MIB,
+        "throughput goal",
+    ))
 }
 
 /// The wall-time row of one Mesa suite run.
@@ -359,7 +363,7 @@ fn cache_floor_rows(
             .with_target(Target::new(
                 Goal::AtMost,
                 targets17::COLD_OVER_FLOOR,
-                "issue 17",
+                "cold-run goal",
             )),
         );
     }

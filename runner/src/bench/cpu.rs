@@ -96,7 +96,7 @@ pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Measurement> {
         "verdicts/s/core",
         format!("evaluate + judge, {} cases ({verdicts_per_pass} case x path verdicts) x {passes} passes in {secs:.2} s, 1 thread", cases.len()),
     )
-    .with_target(Target::new(Goal::AtLeast, targets::ORACLE_VERDICTS_PER_S, "issue 6"))];
+    .with_target(Target::new(Goal::AtLeast, targets::ORACLE_VERDICTS_PER_S, "throughput goal"))];
 
     // judge only: the stored expectation against the exact answer, for every check a run judges
     // (a case's own lookup through `Expectation::judge`, each sweep point through
@@ -141,7 +141,7 @@ pub fn oracle_rows(cases: &[Case], min: Duration) -> Vec<Measurement> {
             (per_pass as u64 * passes) as f64 / secs,
             "verdicts/s/core",
             format!("Expectation::judge against the fixtures' stored expectations ({} case x path verdicts) and PointExpectation::passes for their sweep points ({}), x {passes} passes in {secs:.2} s, 1 thread", judged.len(), points.len()),
-        ).with_target(Target::new(Goal::AtLeast, targets17::JUDGE_PER_S, "issue 17")));
+        ).with_target(Target::new(Goal::AtLeast, targets17::JUDGE_PER_S, "cold-run goal")));
     }
     rows
 }

@@ -212,7 +212,7 @@ mod tests {
                 "verdicts/s/core",
                 "how".into(),
             )
-            .with_target(Target::new(Goal::AtLeast, 5e7, "issue 6"))],
+            .with_target(Target::new(Goal::AtLeast, 5e7, "throughput goal"))],
             unavailable: vec![],
         }
     }
@@ -221,7 +221,7 @@ mod tests {
     fn markdown_marks_misses_and_keeps_text_outside_the_markers() {
         let rep = report();
         let doc = document(&rep, None);
-        assert!(doc.contains("| oracle: evaluate + judge |  | 2.00M | verdicts/s/core | >= 50.0M verdicts/s/core (issue 6) | **MISSED** |"), "{doc}");
+        assert!(doc.contains("| oracle: evaluate + judge |  | 2.00M | verdicts/s/core | >= 50.0M verdicts/s/core (throughput goal) | **MISSED** |"), "{doc}");
         let edited = doc.replace("# shadowcheck bench\n", "# shadowcheck bench\n\nintro\n")
             + "\n## Profiles\nkept\n";
         let again = document(&rep, Some(&edited));

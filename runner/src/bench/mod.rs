@@ -37,7 +37,7 @@ pub enum Goal {
 pub struct Target {
     pub goal: Goal,
     pub bound: f64,
-    /// e.g. "issue 6" or "llvmpipe LP_NUM_THREADS=1 floor".
+    /// e.g. "throughput goal" or "llvmpipe LP_NUM_THREADS=1 floor".
     pub source: String,
 }
 
@@ -168,7 +168,7 @@ pub mod ids {
     pub const COLD_OVER_FLOOR: &str = "suite_mesa_cold_over_floor";
 }
 
-/// The throughput goals (their rows name them "issue 6", the request that set them).
+/// The throughput goals the project set itself (their rows name them "throughput goal").
 pub mod targets {
     /// Oracle verdicts per second on one core.
     pub const ORACLE_VERDICTS_PER_S: f64 = 50e6;
@@ -180,7 +180,7 @@ pub mod targets {
     pub const PEAK_RSS_MIB: f64 = 1024.0;
 }
 
-/// The cold-run goals (their rows name them "issue 17", the request that set them).
+/// The cold-run goals the project set itself (their rows name them "cold-run goal").
 pub mod targets17 {
     /// Default suite, every Mesa backend, empty shader cache, 2 cores: seconds of wall time.
     pub const MESA_COLD_S: f64 = 60.0;

@@ -228,7 +228,7 @@ fn e2e_rows(name: &str, e: &suite::E2e, floor_per_s: f64) -> Vec<Measurement> {
         r = r.with_target(Target::new(
             Goal::AtLeast,
             targets::LLVMPIPE_E2E_PER_S,
-            "issue 6 (llvmpipe, 2D NEAREST)",
+            "throughput goal (llvmpipe, 2D NEAREST)",
         ));
     }
     rows.push(r);
@@ -257,7 +257,7 @@ fn e2e_rows(name: &str, e: &suite::E2e, floor_per_s: f64) -> Vec<Measurement> {
         per_check.with_target(Target::new(
             Goal::AtMost,
             targets17::HARNESS_US_PER_CHECK,
-            "issue 17 (llvmpipe)",
+            "cold-run goal (llvmpipe)",
         ))
     } else {
         per_check
@@ -284,7 +284,7 @@ fn e2e_rows(name: &str, e: &suite::E2e, floor_per_s: f64) -> Vec<Measurement> {
         .with_target(Target::new(
             Goal::AtLeast,
             targets::E2E_OVER_FLOOR,
-            "issue 6",
+            "throughput goal",
         )),
     );
     rows
@@ -421,7 +421,11 @@ fn soft_suite_rows(
             "MiB",
             format!("largest process of either run, wait4 ru_maxrss; {detail}"),
         )
-        .with_target(Target::new(Goal::AtMost, targets::PEAK_RSS_MIB, "issue 6")),
+        .with_target(Target::new(
+            Goal::AtMost,
+            targets::PEAK_RSS_MIB,
+            "throughput goal",
+        )),
     );
 }
 
