@@ -170,6 +170,26 @@ pub fn batchable(key: &ShaderKey) -> bool {
 /// varies across its quad by the case's gradients and is the case's P at the quad's lower-left
 /// pixel, whose result is read.
 pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, String) {
+    let lang = language(info, key);
+    (
+        vertex_shader(&lang, batched),
+        fragment_shader(&lang, key, batched),
+    )
+}
+
+/// What a GLSL dialect's program text starts with and how it names its inputs and result.
+struct Language {
+    /// `#version`, the `#extension` directives the key needs, ES precision statements.
+    header: String,
+    /// The vertex-input qualifier: `in` (GLSL 1.30+, ES 3.00) or `attribute`.
+    vin: &'static str,
+    /// The fragment result: `o` (declared by `out_decl`) or `gl_FragColor`.
+    fout: &'static str,
+    out_decl: &'static str,
+}
+
+/// The dialect of the key's API path on this context (GLSL 1.10/1.20, 1.30, 3.30+/4.00, ES).
+fn language(info: &GlInfo, key: &ShaderKey) -> Language {
     let cube_array = key.target == Target::CubeArray;
     let rect = key.target == Target::Rect;
     let (header, vin, fout, out_decl) = match key.path {
@@ -240,7 +260,19 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
     } else {
         header
     };
-    let vs = match batched {
+    Language {
+        header,
+        vin,
+        fout,
+        out_decl,
+    }
+}
+
+/// The vertex shader: a full-screen triangle, or (batched) two triangles over each case's quad
+/// with the case's values as flat outputs.
+fn vertex_shader(lang: &Language, batched: Option<i32>) -> String {
+    let (header, vin) = (&lang.header, lang.vin);
+    match batched {
         Some(fb_width) => {
             let quads = fb_width / 2;
             format!(
@@ -250,7 +282,13 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
         None => format!(
             "{header}{vin} vec2 a_pos;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); }}\n"
         ),
-    };
+    }
+}
+
+/// The fragment shader: the lookup at the fragment's coordinate (varying across the quad for
+/// implicit derivatives), its result stored as RGBA.
+fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>) -> String {
+    let (header, fout, out_decl) = (&lang.header, lang.fout, lang.out_decl);
     let prec = if matches!(key.path, ApiPath::Es300 | ApiPath::Es100Ext) {
         "highp "
     } else {
@@ -289,11 +327,10 @@ pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, St
     } else {
         format!("{fout} = vec4({call}, 0.0, 0.0, 1.0);")
     };
-    let fs = format!(
+    format!(
         "{header}uniform {prec}{} u_tex;\n{uniforms}{out_decl}void main() {{\n  {p_line}\n  {store}\n}}\n",
         sampler_type(key.kind, key.target)
-    );
-    (vs, fs)
+    )
 }
 
 /// The single-case GLSL program's discard that is never taken (`u_c`, the pixel centre, is never
