@@ -120,7 +120,8 @@ impl GlInfo {
             || self.has_ext("GL_OES_texture_border_clamp")
             || self.has_ext("GL_EXT_texture_border_clamp")
     }
-    /// EXT_texture_shadow_lod (its overloads exist in no GLSL version, the extension's issue 1).
+    /// EXT_texture_shadow_lod: its textureLod/texture overloads for array and cube shadow samplers
+    /// come from the extension alone (GLSL 4.60 §8.9.2 lists none of them).
     pub fn shadow_lod(&self) -> bool {
         self.has_ext("GL_EXT_texture_shadow_lod")
     }

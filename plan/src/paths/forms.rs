@@ -43,7 +43,7 @@ pub fn available(
 /// textureLod(sampler2DArrayShadow sampler, vec4 P, float lod)", "textureLod(samplerCubeShadow
 /// ...)", "textureLod(samplerCubeArrayShadow sampler, vec4 P, float compare, float lod)" and
 /// "float texture(sampler2DArrayShadow sampler, vec4 P [, float bias])" (the extension, §8.9.2;
-/// GLSL 4.60 itself has none of them, the extension's issue 1).
+/// GLSL 4.60 §8.9.2 itself lists none of them).
 pub fn available_with(
     path: ApiPath,
     kind: SamplerKind,
