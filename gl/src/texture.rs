@@ -93,6 +93,34 @@ pub fn error_name(e: u32) -> String {
     }
 }
 
+/// The result framebuffer: an `size`x`size` RGBA32F colour texture ([`rgba32f`]) attached to a
+/// new framebuffer object, left bound to FRAMEBUFFER; an error if it is not complete.
+///
+/// # Safety
+/// `gl` must be current on this thread.
+pub unsafe fn rgba32f_framebuffer(
+    gl: &glow::Context,
+    size: i32,
+) -> Result<glow::Framebuffer, String> {
+    let color = rgba32f(gl, size, size)?;
+    let fbo = gl.create_framebuffer()?;
+    gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+    gl.framebuffer_texture_2d(
+        glow::FRAMEBUFFER,
+        glow::COLOR_ATTACHMENT0,
+        glow::TEXTURE_2D,
+        Some(color),
+        0,
+    );
+    let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
+    if status != glow::FRAMEBUFFER_COMPLETE {
+        return Err(format!(
+            "RGBA32F framebuffer incomplete (status 0x{status:04X})"
+        ));
+    }
+    Ok(fbo)
+}
+
 /// A `w`×`h` RGBA32F texture with NEAREST filtering, bound to TEXTURE_2D of the active unit: the
 /// result framebuffer's colour buffer.
 ///

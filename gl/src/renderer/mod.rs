@@ -98,22 +98,7 @@ impl Renderer {
         info: GlInfo,
         legacy: Option<Legacy>,
     ) -> Result<Renderer, WorkerError> {
-        let color = texture::rgba32f(&gl, FB_SIZE, FB_SIZE).map_err(WorkerError::Gl)?;
-        let fbo = gl.create_framebuffer().map_err(WorkerError::Gl)?;
-        gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-        gl.framebuffer_texture_2d(
-            glow::FRAMEBUFFER,
-            glow::COLOR_ATTACHMENT0,
-            glow::TEXTURE_2D,
-            Some(color),
-            0,
-        );
-        let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
-        if status != glow::FRAMEBUFFER_COMPLETE {
-            return Err(WorkerError::Gl(format!(
-                "RGBA32F framebuffer incomplete (status 0x{status:04X})"
-            )));
-        }
+        let fbo = texture::rgba32f_framebuffer(&gl, FB_SIZE).map_err(WorkerError::Gl)?;
         gl.bind_texture(glow::TEXTURE_2D, None);
         let vao = gl.create_vertex_array().map_err(WorkerError::Gl)?;
         gl.bind_vertex_array(Some(vao));

@@ -132,21 +132,8 @@ unsafe fn draw_loop(
     if !name.driver.renderer_matches(&renderer) {
         return Err(format!("wrong driver: GL_RENDERER is `{renderer}`"));
     }
-    // Framebuffer: RGBA32F like the worker's result buffer.
-    let color = shadowcheck_gl::texture::rgba32f(gl, size, size)?;
-    let fbo = gl.create_framebuffer()?;
-    gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-    gl.framebuffer_texture_2d(
-        glow::FRAMEBUFFER,
-        glow::COLOR_ATTACHMENT0,
-        glow::TEXTURE_2D,
-        Some(color),
-        0,
-    );
-    let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
-    if status != glow::FRAMEBUFFER_COMPLETE {
-        return Err(format!("RGBA32F framebuffer incomplete (0x{status:04X})"));
-    }
+    // The result framebuffer, left bound for the draws below.
+    shadowcheck_gl::texture::rgba32f_framebuffer(gl, size)?;
     // Depth texture: pseudo-random 24-bit values, NEAREST, LEQUAL, REPEAT.
     let n = BENCH_TEXTURE as i32;
     let mut x = 0x9E37_79B9u32;
