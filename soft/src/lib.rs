@@ -16,7 +16,8 @@
 //!
 //! Module map: `storage` (texel conversion), `wrap` (Table 8.20), `lod` (§8.14.1/§8.14.3),
 //! `cube` (§8.13), `compare` (per-spec comparison rules), `sampler` (resolved state,
-//! completeness), `filter` (the lookup, PCF), `layout` (RGBA per API path), `faults`.
+//! completeness), `filter` (the lookup, PCF), `observe` (what a lookup reports), `layout` (RGBA
+//! per API path), `faults`.
 
 pub mod bench;
 pub mod compare;
@@ -26,6 +27,7 @@ pub mod filter;
 pub mod gather;
 pub mod layout;
 pub mod lod;
+pub mod observe;
 pub mod sampler;
 pub mod storage;
 pub mod tex_param;
@@ -49,8 +51,9 @@ fn with_scratch<R>(f: impl FnOnce(&mut PreparedTexture) -> R) -> R {
 mod tests;
 
 pub use faults::{Fault, Faults};
-pub use filter::{Coords, Observer, TexelVisit, Trace};
+pub use filter::Coords;
 pub use layout::Layout;
+pub use observe::{Observer, TexelVisit, Trace};
 pub use sampler::{Kind, SamplerState};
 pub use storage::PreparedTexture;
 
