@@ -51,4 +51,6 @@ pub enum WorkerError {
     NoExecutable(String),
     #[error("{0}")]
     Gl(String),
+    #[error("{var} = `{value}`: expected a whole number of sampler states, at least 1")]
+    BadStatesPerProgram { var: &'static str, value: String },
 }

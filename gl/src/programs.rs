@@ -6,7 +6,8 @@
 use super::legacy::Legacy;
 use glow::HasContext;
 use shadowcheck_model::ApiPath;
-use shadowcheck_plan::{shaders, GlInfo, ShaderKey};
+use shadowcheck_plan::units::{sampler_name, ProgramKey};
+use shadowcheck_plan::{shaders, GlInfo};
 use std::collections::HashMap;
 
 /// A linked GLSL program and its uniform locations.
@@ -18,6 +19,8 @@ pub(super) struct Program {
     pub(super) u_dy: Option<glow::UniformLocation>,
     pub(super) u_c: Option<glow::UniformLocation>,
     pub(super) u_base: Option<glow::UniformLocation>,
+    /// The case's texture unit in a program of several (single-case draws).
+    pub(super) u_unit: Option<glow::UniformLocation>,
 }
 
 /// What a [`ShaderKey`] compiles to on one path.
@@ -27,25 +30,26 @@ pub(super) enum Compiled {
     Fixed,
 }
 
-/// Compiles the GLSL program or ARB fragment program of `key` (fixed function needs none).
+/// Compiles the GLSL program or ARB fragment program of `pk` (fixed function needs none).
 /// `batched`: the result framebuffer's size when one draw covers many cases (None: one pixel).
 unsafe fn compile(
     gl: &glow::Context,
     info: &GlInfo,
     legacy: Option<&Legacy>,
-    key: &ShaderKey,
+    pk: &ProgramKey,
     batched: Option<i32>,
 ) -> Result<Compiled, String> {
+    let (key, units) = (&pk.key, pk.units);
     match key.path {
         ApiPath::FixedFunction => Ok(Compiled::Fixed),
         ApiPath::ArbFp => {
             let l = legacy.ok_or("legacy entry points not loaded")?;
-            l.arbfp_program(gl, &shaders::arbfp(key))
+            l.arbfp_program(gl, &shaders::arbfp(key, units))
                 .map(Compiled::Arb)
                 .map_err(|e| e.to_string())
         }
         _ => {
-            let (vs, fs) = shaders::glsl(info, key, batched);
+            let (vs, fs) = shaders::glsl(info, key, batched, units);
             let program = gl.create_program()?;
             for (ty, src) in [(glow::VERTEX_SHADER, &vs), (glow::FRAGMENT_SHADER, &fs)] {
                 let sh = gl.create_shader(ty)?;
@@ -73,8 +77,11 @@ unsafe fn compile(
             }
             gl.use_program(Some(program));
             let u = |n: &str| gl.get_uniform_location(program, n);
-            if let Some(t) = u("u_tex") {
-                gl.uniform_1_i32(Some(&t), 0);
+            // Sampler i reads texture unit i.
+            for unit in 0..units.max(1) {
+                if let Some(t) = u(&sampler_name(unit, units)) {
+                    gl.uniform_1_i32(Some(&t), unit as i32);
+                }
             }
             Ok(Compiled::Glsl(Program {
                 program,
@@ -84,29 +91,39 @@ unsafe fn compile(
                 u_dy: u("u_dy"),
                 u_c: u("u_c"),
                 u_base: u("u_base"),
+                u_unit: u("u_unit"),
             }))
         }
     }
 }
 
-/// Programs by (key, batched), compiled on first use; a failed compile is kept as its message.
+/// Programs by [`ProgramKey`], compiled on first use; a failed compile is kept as its message.
 #[derive(Default)]
-pub(super) struct ProgramCache(HashMap<(ShaderKey, bool), Result<Compiled, String>>);
+pub(super) struct ProgramCache(HashMap<ProgramKey, Result<Compiled, String>>);
 
 impl ProgramCache {
-    /// The program of `key` (see [`compile`] for `batched`), compiled on first use.
+    /// The program of `key` on `units` samplers (see [`compile`] for `batched`), compiled on
+    /// first use.
     pub(super) unsafe fn get(
         &mut self,
         gl: &glow::Context,
         info: &GlInfo,
         legacy: Option<&Legacy>,
-        key: &ShaderKey,
+        pk: ProgramKey,
         batched: Option<i32>,
     ) -> Result<&Compiled, String> {
         self.0
-            .entry((*key, batched.is_some()))
-            .or_insert_with(|| compile(gl, info, legacy, key, batched))
+            .entry(pk)
+            .or_insert_with(|| compile(gl, info, legacy, &pk, batched))
             .as_ref()
             .map_err(|e| e.clone())
+    }
+
+    /// Programs compiled so far (GLSL and ARB; fixed function compiles none here).
+    pub(super) fn compiled(&self) -> usize {
+        self.0
+            .iter()
+            .filter(|(k, c)| k.key.path != ApiPath::FixedFunction && c.is_ok())
+            .count()
     }
 }

@@ -8,23 +8,15 @@ use glow::HasContext;
 use shadowcheck_model::Case;
 use shadowcheck_plan::unit::{sampler_params, ParamValue};
 
-/// Unit state a case sets besides its texture: a sampler object bound to unit 0 and the
-/// TEXTURE_CUBE_MAP_SEAMLESS enable. Undo with [`unbind_unit_state`] after drawing.
+/// The sampler object of `case` with its SamplerParameter calls made, or `None` when the case
+/// binds none. Delete it with `glDeleteSamplers` once its draws are done.
 ///
 /// # Safety
 /// `gl` must be current.
-pub unsafe fn bind_unit_state(
+pub unsafe fn create_sampler_object(
     gl: &glow::Context,
     case: &Case,
 ) -> Result<Option<glow::Sampler>, WorkerError> {
-    if let Some(on) = case.sampler.seamless {
-        if on {
-            gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
-        } else {
-            gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
-        }
-        check(gl, "glEnable/glDisable(TEXTURE_CUBE_MAP_SEAMLESS)")?;
-    }
     if case.sampler.sampler_object.is_none() {
         return Ok(None);
     }
@@ -43,22 +35,51 @@ pub unsafe fn bind_unit_state(
             return Err(e);
         }
     }
-    gl.bind_sampler(0, Some(so));
-    check(gl, "glBindSampler")?;
     Ok(Some(so))
 }
 
-/// Restores the defaults [`bind_unit_state`] changed: seamless filtering disabled (GL's initial
-/// state, §8.13.1) and no sampler object on unit 0.
+/// Sets the unit state of `case` on texture unit `unit`: its sampler object `so` (from
+/// [`create_sampler_object`]) bound there and the TEXTURE_CUBE_MAP_SEAMLESS enable. Undo with
+/// [`unbind_unit_state`] after drawing.
 ///
 /// # Safety
 /// `gl` must be current.
-pub unsafe fn unbind_unit_state(gl: &glow::Context, case: &Case, so: Option<glow::Sampler>) {
+pub unsafe fn bind_unit_state(
+    gl: &glow::Context,
+    case: &Case,
+    unit: u32,
+    so: Option<glow::Sampler>,
+) -> Result<(), WorkerError> {
+    if let Some(on) = case.sampler.seamless {
+        if on {
+            gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
+        } else {
+            gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
+        }
+        check(gl, "glEnable/glDisable(TEXTURE_CUBE_MAP_SEAMLESS)")?;
+    }
+    if let Some(so) = so {
+        gl.bind_sampler(unit, Some(so));
+        check(gl, "glBindSampler")?;
+    }
+    Ok(())
+}
+
+/// Restores the defaults [`bind_unit_state`] changed: seamless filtering disabled (GL's initial
+/// state, §8.13.1) and no sampler object on texture unit `unit`.
+///
+/// # Safety
+/// `gl` must be current.
+pub unsafe fn unbind_unit_state(
+    gl: &glow::Context,
+    case: &Case,
+    unit: u32,
+    so: Option<glow::Sampler>,
+) {
     if case.sampler.seamless == Some(true) {
         gl.disable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
     }
-    if let Some(so) = so {
-        gl.bind_sampler(0, None);
-        gl.delete_sampler(so);
+    if so.is_some() {
+        gl.bind_sampler(unit, None);
     }
 }

@@ -9,7 +9,7 @@ use super::renderer::Renderer;
 use super::WorkerError;
 use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase};
 use shadowcheck_plan::serve::{state_reply, Serve};
-use shadowcheck_plan::{sweep, Answer, GlInfo};
+use shadowcheck_plan::{sweep, units, Answer, GlInfo};
 use shadowcheck_protocol::{
     Capabilities, Hello, PathSkip, Reply, Support, FEATURES, PROTOCOL_VERSION,
 };
@@ -42,6 +42,84 @@ const RELEVANT_EXTENSIONS: &[&str] = &[
     "GL_EXT_texture_mirror_clamp_to_edge",
     "GL_EXT_color_buffer_float",
 ];
+
+/// Environment variable setting the most sampler states one program samples
+/// (`shadowcheck_plan::units`; `run --states-per-program`), below the context's
+/// MAX_TEXTURE_IMAGE_UNITS; unset: [`units::DEFAULT_STATES_PER_PROGRAM`].
+pub const STATES_PER_PROGRAM_ENV: &str = "SHADOWCHECK_STATES_PER_PROGRAM";
+
+/// The sampler states per program asked for through [`STATES_PER_PROGRAM_ENV`], or the default.
+pub fn states_per_program_asked() -> Result<usize, WorkerError> {
+    match std::env::var(STATES_PER_PROGRAM_ENV) {
+        Err(_) => Ok(units::DEFAULT_STATES_PER_PROGRAM),
+        Ok(v) => match v.trim().parse::<usize>() {
+            Ok(k) if k >= 1 => Ok(k),
+            _ => Err(WorkerError::BadStatesPerProgram {
+                var: STATES_PER_PROGRAM_ENV,
+                value: v,
+            }),
+        },
+    }
+}
+
+/// What a worker compiled and drew, as its last stderr line says it (`gl-worker stats: ...`,
+/// [`WorkerStats::LINE_PREFIX`]): the bench and a reader of `run -v` learn from it how many
+/// sampler states each program sampled (distinct sampling states, see
+/// [`crate::renderer::RenderStats`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct WorkerStats {
+    /// Sampler states one program sampled at most.
+    pub states_per_program: usize,
+    /// Programs compiled (GLSL and ARB fragment programs).
+    pub programs: usize,
+    /// Distinct (lookup, sampling state) pairs drawn with programs: the variants one state per
+    /// program compiles.
+    pub states: usize,
+    /// Distinct (program, sampling states bound together) sets drawn: the variants compiled when
+    /// states share programs.
+    pub sets: usize,
+    /// The units of those sets, added up.
+    pub units: usize,
+}
+
+impl WorkerStats {
+    pub const LINE_PREFIX: &'static str = "gl-worker stats:";
+
+    /// The stats of a line that ends with `gl-worker stats: ...` (a diagnostic line may carry
+    /// the backend's name in front), or `None`.
+    pub fn parse(line: &str) -> Option<WorkerStats> {
+        let (_, rest) = line.split_once(Self::LINE_PREFIX)?;
+        let mut st = WorkerStats::default();
+        for part in rest.split_whitespace() {
+            let (k, v) = part.split_once('=')?;
+            let v: usize = v.parse().ok()?;
+            match k {
+                "states_per_program" => st.states_per_program = v,
+                "programs" => st.programs = v,
+                "states" => st.states = v,
+                "sets" => st.sets = v,
+                "units" => st.units = v,
+                _ => return None,
+            }
+        }
+        Some(st)
+    }
+}
+
+impl std::fmt::Display for WorkerStats {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} states_per_program={} programs={} states={} sets={} units={}",
+            Self::LINE_PREFIX,
+            self.states_per_program,
+            self.programs,
+            self.states,
+            self.sets,
+            self.units
+        )
+    }
+}
 
 /// A live worker: context, GL and renderer.
 pub struct Worker {
@@ -127,6 +205,7 @@ impl Worker {
         } else {
             None
         };
+        let asked = states_per_program_asked()?;
         // SAFETY: context current for the worker's life (it owns the context).
         let renderer = unsafe { Renderer::new(gl, info, legacy)? };
         let mut w = Worker {
@@ -136,6 +215,9 @@ impl Worker {
             ctx,
         };
         w.caps = w.declared_capabilities();
+        // A program samples one state per texture unit: at most the fragment stage's units
+        // (MAX_TEXTURE_IMAGE_UNITS, also ARB_fragment_program's limit).
+        w.set_states_per_program(asked);
         Ok(w)
     }
 
@@ -151,6 +233,37 @@ impl Worker {
     }
     pub fn info(&self) -> &GlInfo {
         &self.renderer.info
+    }
+
+    /// The renderer: what it has drawn and compiled ([`Renderer::stats`]).
+    pub fn renderer(&self) -> &Renderer {
+        &self.renderer
+    }
+
+    /// What this worker has compiled and drawn so far.
+    pub fn stats(&self) -> WorkerStats {
+        let r = &self.renderer;
+        WorkerStats {
+            states_per_program: r.states_per_program(),
+            programs: r.programs_compiled(),
+            states: r.stats().states,
+            sets: r.stats().state_sets,
+            units: r.stats().units,
+        }
+    }
+
+    /// Sampler states one program samples at most from now on, below the context's texture
+    /// units (1: one state per program).
+    pub fn set_states_per_program(&mut self, k: usize) {
+        // SAFETY: the worker's context is current on this thread.
+        let max = unsafe {
+            use glow::HasContext;
+            self.renderer
+                .gl
+                .get_parameter_i32(glow::MAX_TEXTURE_IMAGE_UNITS)
+        };
+        self.renderer
+            .set_states_per_program(k.min(max.max(1) as usize));
     }
 
     /// The specs this context can check (only what the driver exposes).
@@ -454,6 +567,29 @@ pub fn probe_line(name: BackendName) -> (bool, String) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_stats_line_reads_back_as_written() {
+        let st = WorkerStats {
+            states_per_program: 16,
+            programs: 12,
+            states: 340,
+            sets: 38,
+            units: 401,
+        };
+        let line = st.to_string();
+        assert_eq!(
+            line,
+            "gl-worker stats: states_per_program=16 programs=12 states=340 sets=38 units=401"
+        );
+        assert_eq!(WorkerStats::parse(&line), Some(st));
+        assert_eq!(
+            WorkerStats::parse(&format!("[egl:llvmpipe:core] {line}")),
+            Some(st)
+        );
+        assert_eq!(WorkerStats::parse("gl-worker stats: programs=x"), None);
+        assert_eq!(WorkerStats::parse("something else"), None);
+    }
 
     #[test]
     fn versions_parse_from_desktop_and_es_strings() {

@@ -21,11 +21,13 @@ pub fn pixel(slot: usize) -> (i32, i32) {
 /// Most cases one batched draw serves (its quads must fit the framebuffer: `CAPACITY`).
 pub const DRAW_CASES: usize = 1024;
 
-/// One batched draw: a program, the (case, plan) pairs it serves (slot k of the draw is item k),
+/// One batched draw: a program (`key` on `units` samplers), the (case, plan, unit) triples it serves
+/// (slot k of the draw is item k; unit: the texture unit holding the case's state, see `units.rs`),
 /// and where item 0's values are in the parameter buffer (in cases).
 pub struct Batch<'p> {
     pub key: ShaderKey,
-    pub items: Vec<(usize, &'p Plan)>,
+    pub units: usize,
+    pub items: Vec<(usize, &'p Plan, usize)>,
     pub first: usize,
 }
 
@@ -55,14 +57,15 @@ pub const CORNERS: [[f32; 2]; CASE_VERTICES] = [
 ];
 
 impl ParamStaging {
-    /// Stages the values of one draw's `plans`; returns the index of the first in the buffer (in
-    /// cases). Each vertex of case k of the draw: corner, (x, k), P, dx, dy.
-    fn stage(&mut self, plans: &[(usize, &Plan)]) -> usize {
+    /// Stages the values of one draw's `items`; returns the index of the first in the buffer (in
+    /// cases). Each vertex of case k of the draw: corner, (x, k, unit), P, dx, dy.
+    fn stage(&mut self, items: &[(usize, &Plan, usize)]) -> usize {
         let first = self.values.len() / (PARAM_FLOATS * CASE_VERTICES);
-        for (k, (_, p)) in plans.iter().enumerate() {
+        for (k, (_, p, unit)) in items.iter().enumerate() {
             for corner in CORNERS {
                 self.values.extend_from_slice(&corner);
-                self.values.extend_from_slice(&[p.x, k as f32]);
+                self.values
+                    .extend_from_slice(&[p.x, k as f32, *unit as f32]);
                 self.values.extend_from_slice(&p.p);
                 self.values.extend_from_slice(&p.dx);
                 self.values.extend_from_slice(&p.dy);
@@ -72,33 +75,38 @@ impl ParamStaging {
     }
 }
 
-/// The batched draws of `group`: batchable (case, plan) pairs by program in first-appearance
-/// order, at most [`DRAW_CASES`] a draw, their values staged in `staging`. A batchable path is always drawn batched, even
-/// alone, so the driver compiles one variant per (program, state), not a batched and a
-/// single-pixel one.
+/// The batched draws of a bundle (`units.rs`): the lookups of `key` on the bundle's texture
+/// states (state i, a group of (case, plans) sharing one texture, on unit i; a program of as
+/// many samplers), in state order, at
+/// most [`DRAW_CASES`] a draw, their values staged in `staging`. A batchable key is always drawn
+/// batched, even alone, so the driver compiles one variant per (program, states), not a batched
+/// and a single-pixel one; for another key this is empty.
 pub fn batches_of<'p>(
-    group: &'p [(usize, Vec<Plan>)],
+    key: ShaderKey,
+    bundle: &[&'p [(usize, Vec<Plan>)]],
     staging: &mut ParamStaging,
 ) -> Vec<Batch<'p>> {
-    let mut by_key: Vec<(ShaderKey, Vec<(usize, &Plan)>)> = Vec::new();
-    for (ci, plans) in group {
-        for plan in plans.iter().filter(|p| shaders::batchable(&p.key)) {
-            match by_key.iter_mut().find(|(k, _)| *k == plan.key) {
-                Some((_, v)) => v.push((*ci, plan)),
-                None => by_key.push((plan.key, vec![(*ci, plan)])),
+    if !shaders::batchable(&key) {
+        return Vec::new();
+    }
+    let units = bundle.len().max(1);
+    let mut items: Vec<(usize, &Plan, usize)> = Vec::new();
+    for (unit, group) in bundle.iter().enumerate() {
+        for (ci, plans) in group.iter() {
+            for plan in plans.iter().filter(|p| p.key == key) {
+                items.push((*ci, plan, unit));
             }
         }
     }
     let mut out = Vec::new();
-    for (key, items) in by_key {
-        for chunk in items.chunks(DRAW_CASES) {
-            let first = staging.stage(chunk);
-            out.push(Batch {
-                key,
-                items: chunk.to_vec(),
-                first,
-            });
-        }
+    for chunk in items.chunks(DRAW_CASES) {
+        let first = staging.stage(chunk);
+        out.push(Batch {
+            key,
+            units,
+            items: chunk.to_vec(),
+            first,
+        });
     }
     out
 }
@@ -136,8 +144,9 @@ mod tests {
         let a = group(1500, 0, 0.0);
         let b = group(30, 1500, 5000.0);
         let mut staging = ParamStaging::default();
-        let ba = batches_of(&a, &mut staging);
-        let bb = batches_of(&b, &mut staging);
+        let key = a[0].1[0].key;
+        let ba = batches_of(key, &[&a], &mut staging);
+        let bb = batches_of(key, &[&b[..10], &b[10..]], &mut staging);
         assert!(shaders::batchable(&a[0].1[0].key));
         // A group is split at DRAW_CASES; the second group's values follow the first's.
         assert_eq!(
@@ -147,6 +156,10 @@ mod tests {
                 .collect::<Vec<_>>(),
             vec![(DRAW_CASES, 0), (1500 - DRAW_CASES, DRAW_CASES), (30, 1500)]
         );
+        // The second group's two states are units 0 and 1 of a two-unit program.
+        assert_eq!((ba[0].units, bb[0].units), (1, 2));
+        assert!(bb[0].items[..10].iter().all(|i| i.2 == 0));
+        assert!(bb[0].items[10..].iter().all(|i| i.2 == 1));
         assert_eq!(staging.values.len(), 1530 * CASE_VERTICES * PARAM_FLOATS);
         // Every vertex of case k of a draw (case first + k of the buffer) carries its corner,
         // (x, k), P, dx and dy where PARAM_ATTRIBS says.
@@ -155,12 +168,12 @@ mod tests {
             at..at + size as usize
         };
         for batch in ba.iter().chain(&bb) {
-            for (k, (_, plan)) in batch.items.iter().enumerate() {
+            for (k, (_, plan, unit)) in batch.items.iter().enumerate() {
                 for (vi, corner) in CORNERS.iter().enumerate() {
                     let at = ((batch.first + k) * CASE_VERTICES + vi) * PARAM_FLOATS;
                     let v = &staging.values[at..at + PARAM_FLOATS];
                     assert_eq!(v[attrib("a_pos")], corner[..]);
-                    assert_eq!(v[attrib("a_x")], [plan.x, k as f32]);
+                    assert_eq!(v[attrib("a_x")], [plan.x, k as f32, *unit as f32]);
                     assert_eq!(v[attrib("a_p")], plan.p);
                     assert_eq!(v[attrib("a_dx")], plan.dx);
                     assert_eq!(v[attrib("a_dy")], plan.dy);

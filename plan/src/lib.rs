@@ -10,6 +10,8 @@
 //! - [`texels`]: the pixel transfer and the bytes of every level, layer and face;
 //! - [`unit`]: the texture and sampler-object state, as the calls that set it, in order;
 //! - [`layout`]: the quad of each (case, path) in the result image and the batched draws;
+//! - [`units`]: texture states dealt into bundles, one texture unit each, so that one compiled
+//!   program samples many sampler states;
 //! - [`sweep`]: a case's sweep points as lookups of their own, and the fold of their answers back
 //!   into one [`Answer`] per case;
 //! - [`serve`]: the worker side of runner/PROTOCOL.md, running any [`serve::Serve`] drawer.
@@ -29,6 +31,7 @@ pub mod sweep;
 pub mod test_case;
 pub mod texels;
 pub mod unit;
+pub mod units;
 
 pub use answer::Answer;
 pub use context::{ContextApi, GlInfo, LookupForm};

@@ -228,7 +228,7 @@ pub fn build(info: &GlInfo, cases: &[Case]) -> Built {
         };
         group.cases.push(ci);
         for plan in plans {
-            let (vs, fs) = shaders::glsl(info, &plan.key, None);
+            let (vs, fs) = shaders::glsl(info, &plan.key, None, 1);
             let src = [vs, fs];
             let program = match sources.iter().position(|s| *s == src) {
                 Some(i) => i,

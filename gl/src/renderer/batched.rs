@@ -1,9 +1,11 @@
-//! Drawing a group of cases that share one texture and sampler state (core and ES contexts).
+//! Drawing a bundle of texture states (core and ES contexts): groups of cases that share one
+//! texture and sampler state, group i's texture on unit i (`shadowcheck_plan::units`).
 //!
-//! On the GLSL 3.30 core and GLSL ES 3.00 paths every case of the group that uses the same
-//! program is drawn by one draw: case k is two triangles over the 2x2 pixel quad of its slot,
-//! and its values (P, gradients, LOD) come as attributes of its six vertices, passed to the
-//! fragment shader as flat inputs (bit for bit). An implicit-derivative lookup varies P across its own quad
+//! On the GLSL 3.30 core and GLSL ES 3.00 paths every case of the bundle that uses the same
+//! lookup is drawn by one draw of one program sampling all the bundle's units: case k is two
+//! triangles over the 2x2 pixel quad of its slot, and its values (P, gradients, LOD, its unit)
+//! come as attributes of its six vertices, passed to the fragment shader as flat inputs (bit for
+//! bit). An implicit-derivative lookup varies P across its own quad
 //! by the case's gradients, so the derivatives the driver takes within the quad are the case's
 //! (GL 4.6 §15.2.3 / ES 3.2 §14.2.3 leave the neighbours open; every implementation this project
 //! runs forms quads at even window coordinates, as dEQP also assumes). The other paths draw one
@@ -17,13 +19,14 @@
 //! and fetched each quad's values from a parameter texture with texelFetch; its variants took
 //! llvmpipe nearly twice as long to compile (reports/BENCH.md).
 
+use super::units::{group_cases, state_case, Groups, StateObjects};
 use super::{BatchState, Pending, Renderer};
 use crate::programs::Compiled;
-use crate::unitstate;
 use glow::HasContext;
-use shadowcheck_plan::layout::{Batch, ParamStaging, CASE_VERTICES, FB_SIZE};
+use shadowcheck_plan::layout::{batches_of, Batch, ParamStaging, CASE_VERTICES, FB_SIZE};
 use shadowcheck_plan::shaders::{self, PARAM_ATTRIBS, PARAM_FLOATS};
-use shadowcheck_plan::{Job, Plan, ShaderKey};
+use shadowcheck_plan::units::{Bundle, ProgramKey};
+use shadowcheck_plan::{Job, Plan};
 
 impl Renderer {
     /// The parameter buffer and the vertex array reading it, created on first use.
@@ -46,21 +49,25 @@ impl Renderer {
         Ok((buffer, vao))
     }
 
-    /// One batched draw: case k is the case in slot `slot0 + k`, its vertices from case
-    /// `first + k` of the parameter buffer on.
+    /// One batched draw of `batch`: case k is the case in slot `slot0 + k`, its vertices from
+    /// case `batch.first + k` of the parameter buffer on.
     pub(crate) unsafe fn draw_batched(
         &mut self,
-        key: &ShaderKey,
+        batch: &Batch,
         slot0: usize,
-        n: usize,
-        first: usize,
     ) -> Result<(), String> {
+        let (n, first) = (batch.items.len(), batch.first);
         let (_, vao) = self.param_buffer()?;
+        let pk = ProgramKey {
+            key: batch.key,
+            units: batch.units,
+            batched: true,
+        };
         let compiled = self.programs.get(
             &self.gl,
             &self.info,
             self.legacy.as_ref(),
-            key,
+            pk,
             Some(FB_SIZE),
         )?;
         let Compiled::Glsl(p) = compiled else {
@@ -97,44 +104,95 @@ impl Renderer {
         Ok(())
     }
 
-    /// Runs a group of cases sharing texture and sampler state: the paths that cannot be batched
-    /// one pixel each, then `batches` (the group's, from [`batches_of`], values uploaded).
-    pub(crate) unsafe fn run_group(
+    /// Runs `groups` (a batch's texture states) on a core or ES context: every bundle's batched
+    /// draws staged and uploaded first, each state's texture made once, then bundle after bundle
+    /// bound and drawn; the textures are read back at the end.
+    pub(crate) unsafe fn run_batched(
         &mut self,
         jobs: &[Job],
-        group: &[(usize, Vec<Plan>)],
+        groups: &Groups,
+        bundles: &[Bundle],
+        st: &mut BatchState,
+    ) {
+        // Every batched draw's values in place before the first draw.
+        let mut staging = ParamStaging::default();
+        let batches: Vec<Vec<Batch>> = bundles
+            .iter()
+            .map(|b| {
+                let members: Vec<&[(usize, Vec<Plan>)]> =
+                    b.states.iter().map(|&g| &groups[g][..]).collect();
+                batches_of(b.key, &members, &mut staging)
+            })
+            .collect();
+        if let Err(e) = self.upload_staged(&staging) {
+            let all = groups.iter().flatten().map(|(ci, _)| *ci);
+            st.fail_unanswered(all, &format!("parameter buffer: {e}"));
+            return;
+        }
+        let mut objects: Vec<Option<StateObjects>> = Vec::with_capacity(groups.len());
+        for g in 0..groups.len() {
+            objects.push(self.create_state(
+                state_case(jobs, groups, g),
+                group_cases(groups, g),
+                st,
+            ));
+        }
+        for (b, batches) in bundles.iter().zip(batches) {
+            self.run_bundle(jobs, groups, b, &objects, batches, st);
+        }
+        for (g, o) in objects.into_iter().enumerate() {
+            if let Some(o) = o {
+                self.release_state(jobs, groups, g, o, true, st);
+            }
+        }
+    }
+
+    /// One bundle: its states bound together (state i on unit i), the cases that use its program
+    /// drawn: one pixel each where the program cannot be batched, else `batches` (the bundle's,
+    /// from [`batches_of`], values uploaded).
+    unsafe fn run_bundle(
+        &mut self,
+        jobs: &[Job],
+        groups: &Groups,
+        bundle: &Bundle,
+        objects: &[Option<StateObjects>],
         batches: Vec<Batch<'_>>,
         st: &mut BatchState,
     ) {
-        let first = jobs[group[0].0].case;
-        let Some((tex, so)) = self.bind_group_texture(first, group.iter().map(|(ci, _)| *ci), st)
-        else {
-            return;
-        };
-        for (ci, plans) in group {
-            for plan in plans.iter().filter(|p| !shaders::batchable(&p.key)) {
-                let slot = self.take_slots(st, 1);
-                match self.draw(plan, first.texture.target, slot) {
-                    Ok(()) => st.pending.push(Pending {
-                        case: *ci,
-                        path: plan.key.path,
-                        slot,
-                        note: plan.note.clone(),
-                    }),
-                    Err(e) => st.fail(*ci, format!("{}: {e}", plan.key.path)),
+        let bound = self.bind_bundle(jobs, groups, bundle, objects, st);
+        let units = bundle.units();
+        if !shaders::batchable(&bundle.key) {
+            for (unit, &g) in bundle.states.iter().enumerate() {
+                if !bound[unit] {
+                    continue;
+                }
+                let target = state_case(jobs, groups, g).texture.target;
+                for (ci, plans) in &groups[g] {
+                    for plan in plans.iter().filter(|p| p.key == bundle.key) {
+                        let slot = self.take_slots(st, 1);
+                        match self.draw(plan, target, slot, (unit, units)) {
+                            Ok(()) => st.pending.push(Pending {
+                                case: *ci,
+                                path: plan.key.path,
+                                slot,
+                                note: plan.note.clone(),
+                            }),
+                            Err(e) => st.fail(*ci, format!("{}: {e}", plan.key.path)),
+                        }
+                    }
                 }
             }
         }
         for b in batches {
-            // A case that failed on another path is drawn with the others (its values are in
-            // place) but not read back.
-            if b.items.iter().all(|(ci, _)| st.answers[*ci].is_some()) {
+            // A case that failed on another path (or whose texture failed) is drawn with the
+            // others (its values are in place) but not read back.
+            if b.items.iter().all(|(ci, _, _)| st.answers[*ci].is_some()) {
                 continue;
             }
             let slot0 = self.take_slots(st, b.items.len());
-            match self.draw_batched(&b.key, slot0, b.items.len(), b.first) {
+            match self.draw_batched(&b, slot0) {
                 Ok(()) => {
-                    for (k, (ci, p)) in b.items.iter().enumerate() {
+                    for (k, (ci, p, _)) in b.items.iter().enumerate() {
                         if st.answers[*ci].is_none() {
                             // A sweep point's answer keeps only its RGBA (`sweep::merge`).
                             let note = if jobs[*ci].point {
@@ -152,7 +210,7 @@ impl Renderer {
                     }
                 }
                 Err(e) => {
-                    for (ci, _) in &b.items {
+                    for (ci, _, _) in &b.items {
                         if st.answers[*ci].is_none() {
                             st.fail(*ci, format!("{}: {e}", b.key.path));
                         }
@@ -160,9 +218,21 @@ impl Renderer {
                 }
             }
         }
-        unitstate::unbind_unit_state(&self.gl, first, so);
-        let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
-        self.retire(jobs, st, tex, group[0].0, sharing);
-        self.check_group(group.iter().map(|(ci, _)| *ci), st);
+        let program = ProgramKey {
+            key: bundle.key,
+            units,
+            batched: shaders::batchable(&bundle.key),
+        };
+        self.count_bundle(
+            program,
+            bundle.states.iter().map(|&g| state_case(jobs, groups, g)),
+        );
+        self.unbind_bundle(jobs, groups, bundle, objects, &bound);
+        let cis: Vec<usize> = bundle
+            .states
+            .iter()
+            .flat_map(|&g| group_cases(groups, g))
+            .collect();
+        self.check_group(cis, st);
     }
 }

@@ -5,24 +5,32 @@
 //! (slots, clearing and read-back: `readback.rs`).
 //!
 //! Consecutive cases with the same texture and sampler state (a case and its sweep points, or
-//! the grid's neighbours: only the reference or the coordinate changes) share one texture object,
-//! and on the core and ES paths all of them are drawn with one draw, each case two triangles
-//! over its own quad with its values as vertex attributes (see `batched.rs`). Compatibility contexts
-//! give each API path of such a group a texture of its own (see `run_compat_group`).
+//! the grid's neighbours: only the reference or the coordinate changes) share one texture object.
+//! The texture states of a batch are dealt into bundles (`shadowcheck_plan::units`): the states of
+//! a bundle are bound together, state i on texture unit i, and each program samples all of them,
+//! so a driver that compiles a variant per sampler state compiles one per bundle. On the core and
+//! ES paths every case of a bundle that uses one program is drawn with one draw, each case two
+//! triangles over its own quad with its values (and its unit) as vertex attributes (see
+//! `batched.rs`). Compatibility contexts give each API path of a bundle textures of their own
+//! (see `run_compat_bundle`).
 
 mod batched;
+mod compat;
 mod readback;
+mod units;
 
 use crate::legacy::{self, Legacy};
 use crate::programs::{Compiled, ProgramCache};
 use crate::texture;
-use crate::unitstate;
 use crate::WorkerError;
 use glow::HasContext;
-use shadowcheck_model::{ApiPath, Case, Target, Texels};
-use shadowcheck_plan::layout::{self, pixel, CAPACITY, FB_SIZE};
-use shadowcheck_plan::{paths, Answer, GlInfo, Job, LodForm, Plan};
+use shadowcheck_model::{ApiPath, Target, Texels};
+use shadowcheck_plan::layout::{pixel, CAPACITY, FB_SIZE};
+use shadowcheck_plan::shaders::{arbfp_unit_weights, ARBFP_WEIGHTS};
+use shadowcheck_plan::units::{self as plan_units, ProgramKey};
+use shadowcheck_plan::{Answer, GlInfo, Job, LodForm, Plan, ShaderKey};
 use shadowcheck_protocol::{PathResult, PathSkip};
+use std::collections::HashSet;
 
 /// Most textures kept alive for a deferred read-back.
 const MAX_DEFERRED: usize = 4096;
@@ -44,6 +52,33 @@ pub struct Renderer {
     /// parameter upload (`batched.rs`), kept so that a batch allocates neither.
     pub(crate) readback: Vec<u8>,
     pub(crate) upload: Vec<u8>,
+    /// Sampler states one program samples at most (texture units bound together, `units.rs`).
+    pub(crate) states_per_program: usize,
+    pub(crate) drawn_sets: Drawn,
+}
+
+/// What a renderer has drawn with programs (GLSL, ARB fragment programs; fixed function, drawn one
+/// state at a time, is not counted), in the terms a driver that compiles one shader variant per
+/// (program, sampler states of its units) sees: distinct sampling states
+/// ([`plan_units::sampling_fingerprint`]), so a set drawn again, in a later batch or with other
+/// texels, is counted once.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct RenderStats {
+    /// Distinct (lookup, sampling state) pairs drawn: the variants one state per program compiles.
+    pub states: usize,
+    /// Distinct (program, sampling states in unit order) sets drawn: the variants compiled when
+    /// states share programs.
+    pub state_sets: usize,
+    /// The units of those sets, added up (each unit's sampling code is compiled in its set).
+    pub units: usize,
+}
+
+/// The distinct pairs and sets behind [`RenderStats`].
+#[derive(Debug, Default)]
+pub(crate) struct Drawn {
+    pairs: HashSet<(ShaderKey, u64)>,
+    sets: HashSet<(ProgramKey, Vec<u64>)>,
+    units: usize,
 }
 
 /// A drawn path waiting for read-back.
@@ -125,18 +160,77 @@ impl Renderer {
             programs: ProgramCache::default(),
             readback: Vec::new(),
             upload: Vec::new(),
+            states_per_program: plan_units::DEFAULT_STATES_PER_PROGRAM,
+            drawn_sets: Drawn::default(),
         })
     }
 
+    /// Sampler states one program samples at most from now on (1: one state per program).
+    pub fn set_states_per_program(&mut self, k: usize) {
+        self.states_per_program = k.max(1);
+    }
+
+    /// Sampler states one program samples at most.
+    pub fn states_per_program(&self) -> usize {
+        self.states_per_program
+    }
+
+    /// What has been drawn so far.
+    pub fn stats(&self) -> RenderStats {
+        let d = &self.drawn_sets;
+        RenderStats {
+            states: d.pairs.len(),
+            state_sets: d.sets.len(),
+            units: d.units,
+        }
+    }
+
+    /// Programs compiled so far (GLSL and ARB fragment programs).
+    pub fn programs_compiled(&self) -> usize {
+        self.programs.compiled()
+    }
+
+    /// Counts one bundle's draws: the program `program` over the states `cases` (one per unit,
+    /// their first cases) bound together.
+    pub(crate) fn count_bundle<'c>(
+        &mut self,
+        program: ProgramKey,
+        cases: impl IntoIterator<Item = &'c shadowcheck_model::Case>,
+    ) {
+        if program.key.path == ApiPath::FixedFunction {
+            return;
+        }
+        let fps: Vec<u64> = cases
+            .into_iter()
+            .map(plan_units::sampling_fingerprint)
+            .collect();
+        let d = &mut self.drawn_sets;
+        for &fp in &fps {
+            d.pairs.insert((program.key, fp));
+        }
+        let units = fps.len();
+        if d.sets.insert((program, fps)) {
+            d.units += units;
+        }
+    }
+
+    /// Draws `plan` into `slot` alone, with the program of `units` samplers and the case's state
+    /// on texture unit `unit`.
     pub(crate) unsafe fn draw(
         &mut self,
         plan: &Plan,
         target: Target,
         slot: usize,
+        (unit, units): (usize, usize),
     ) -> Result<(), String> {
-        let compiled =
-            self.programs
-                .get(&self.gl, &self.info, self.legacy.as_ref(), &plan.key, None)?;
+        let pk = ProgramKey {
+            key: plan.key,
+            units,
+            batched: false,
+        };
+        let compiled = self
+            .programs
+            .get(&self.gl, &self.info, self.legacy.as_ref(), pk, None)?;
         let (x, y) = pixel(slot);
         let gl = &self.gl;
         gl.viewport(x, y, 1, 1);
@@ -144,6 +238,9 @@ impl Renderer {
         match compiled {
             Compiled::Glsl(p) => {
                 gl.use_program(Some(p.program));
+                if let Some(u) = &p.u_unit {
+                    gl.uniform_1_i32(Some(u), unit as i32);
+                }
                 gl.uniform_4_f32_slice(p.u_p.as_ref(), &plan.p);
                 gl.uniform_1_f32(p.u_x.as_ref(), plan.x);
                 gl.uniform_4_f32_slice(p.u_dx.as_ref(), &plan.dx);
@@ -164,10 +261,18 @@ impl Renderer {
                 l.arbfp_local(1, plan.dx);
                 l.arbfp_local(2, plan.dy);
                 l.arbfp_local(3, [centre[0], centre[1], 0.0, 0.0]);
+                if units > 1 {
+                    for (j, w) in arbfp_unit_weights(unit, units).into_iter().enumerate() {
+                        l.arbfp_local(ARBFP_WEIGHTS + j as u32, w);
+                    }
+                }
                 l.fullscreen_triangle();
                 gl.disable(legacy::GL_FRAGMENT_PROGRAM_ARB);
             }
             Compiled::Fixed => {
+                if unit != 0 {
+                    return Err("fixed function draws texture unit 0 alone".into());
+                }
                 let l = self
                     .legacy
                     .as_ref()
@@ -243,58 +348,18 @@ impl Renderer {
             skipped: vec![Vec::new(); jobs.len()],
         };
         self.clear();
-        let mut planned: Vec<(usize, Vec<Plan>)> = Vec::new();
-        for (ci, job) in jobs.iter().enumerate() {
-            let mut plans = Vec::new();
-            let mut skipped = Vec::new();
-            for &path in &job.case.api {
-                match paths::plan_for(&self.info, path, job.case, &job.lookup) {
-                    Ok(p) => plans.push(p),
-                    Err(reason) => skipped.push(PathSkip {
-                        api: path.key().to_string(),
-                        reason,
-                    }),
-                }
-            }
-            if plans.is_empty() {
-                let why: Vec<String> = skipped.into_iter().map(|s| s.reason).collect();
-                st.answers[ci] = Some(Answer::Skip(why.join("; ")));
-            } else {
-                st.skipped[ci] = skipped;
-                planned.push((ci, plans));
-            }
+        // Consecutive cases with equal texture and sampler form one group (one texture state),
+        // and the groups are dealt into bundles, one per program, of states drawn together.
+        let plan = plan_units::plan_batch(&self.info, jobs, self.states_per_program);
+        for (ci, why) in plan.unplanned {
+            st.answers[ci] = Some(Answer::Skip(why));
         }
-        // Consecutive cases with equal texture and sampler form one group (one texture per group
-        // on a core context, one per group and path on a compatibility one).
-        let mut groups: Vec<Vec<(usize, Vec<Plan>)>> = Vec::new();
-        for item in planned {
-            match groups.last_mut() {
-                Some(group) if jobs[group[0].0].same_texture(&jobs[item.0]) => group.push(item),
-                _ => groups.push(vec![item]),
-            }
-        }
+        st.skipped = plan.skipped;
+        let (groups, bundles) = (plan.groups, plan.bundles);
         if self.info.compat {
-            for group in &groups {
-                self.run_compat_group(jobs, group, &mut st);
-            }
+            self.run_compat(jobs, &groups, &bundles, &mut st);
         } else {
-            // Every batched draw's values in place before the first draw.
-            let mut staging = layout::ParamStaging::default();
-            let batches: Vec<Vec<layout::Batch>> = groups
-                .iter()
-                .map(|g| layout::batches_of(g, &mut staging))
-                .collect();
-            match self.upload_staged(&staging) {
-                Ok(()) => {
-                    for (group, batches) in groups.iter().zip(batches) {
-                        self.run_group(jobs, group, batches, &mut st);
-                    }
-                }
-                Err(e) => {
-                    let all = groups.iter().flatten().map(|(ci, _)| *ci);
-                    st.fail_unanswered(all, &format!("parameter buffer: {e}"));
-                }
-            }
+            self.run_batched(jobs, &groups, &bundles, &mut st);
         }
         let mut pending = std::mem::take(&mut st.pending);
         self.collect(&mut pending, &mut st.results);
@@ -347,33 +412,7 @@ impl Renderer {
         }
     }
 
-    /// Creates `first`'s texture and binds its unit state, for a group of cases `cis` sharing
-    /// them; on an error those cases fail and `None` is returned (nothing left bound).
-    pub(crate) unsafe fn bind_group_texture(
-        &mut self,
-        first: &Case,
-        cis: impl IntoIterator<Item = usize>,
-        st: &mut BatchState,
-    ) -> Option<(glow::Texture, Option<glow::Sampler>)> {
-        while self.gl.get_error() != glow::NO_ERROR {}
-        let tex = match texture::create(&self.gl, &self.info, first) {
-            Ok(t) => t,
-            Err(e) => {
-                st.fail_unanswered(cis, &e.to_string());
-                return None;
-            }
-        };
-        match unitstate::bind_unit_state(&self.gl, first) {
-            Ok(so) => Some((tex, so)),
-            Err(e) => {
-                self.gl.delete_texture(tex);
-                st.fail_unanswered(cis, &e.to_string());
-                None
-            }
-        }
-    }
-
-    /// After a group's draws: a GL error makes the cases `cis` not answered yet fail.
+    /// After a bundle's draws: a GL error makes the cases `cis` not answered yet fail.
     pub(crate) unsafe fn check_group(
         &self,
         cis: impl IntoIterator<Item = usize>,
@@ -381,70 +420,6 @@ impl Renderer {
     ) {
         if let Err(e) = texture::check(&self.gl, "drawing") {
             st.fail_unanswered(cis, &e.to_string());
-        }
-    }
-
-    /// A group of consecutive compatibility-context cases with equal texture and sampler state
-    /// (a case and its sweep points, or the grid's neighbours): each API path on a fresh texture
-    /// that every case of the group naming that path is drawn with. Mesa keeps per-texture
-    /// sampler views whose DEPTH_TEXTURE_MODE swizzle depends on which path drew before, and one
-    /// path's answer must not depend on another path; cases of one path share the texture as on a
-    /// core context.
-    unsafe fn run_compat_group(
-        &mut self,
-        jobs: &[Job],
-        group: &[(usize, Vec<Plan>)],
-        st: &mut BatchState,
-    ) {
-        let first = jobs[group[0].0].case;
-        let mut paths: Vec<ApiPath> = Vec::new();
-        for (_, plans) in group {
-            for plan in plans {
-                if !paths.contains(&plan.key.path) {
-                    paths.push(plan.key.path);
-                }
-            }
-        }
-        for (pi, &path) in paths.iter().enumerate() {
-            let users: Vec<(usize, &Plan)> = group
-                .iter()
-                .filter(|(ci, _)| st.answers[*ci].is_none())
-                .filter_map(|(ci, plans)| {
-                    plans.iter().find(|p| p.key.path == path).map(|p| (*ci, p))
-                })
-                .collect();
-            if users.is_empty() {
-                continue;
-            }
-            let Some((tex, so)) =
-                self.bind_group_texture(first, users.iter().map(|(ci, _)| *ci), st)
-            else {
-                continue;
-            };
-            for (ci, plan) in &users {
-                let slot = self.take_slots(st, 1);
-                match self.draw(plan, first.texture.target, slot) {
-                    Ok(()) => st.pending.push(Pending {
-                        case: *ci,
-                        path,
-                        slot,
-                        note: if plan.key.form == LodForm::Constant {
-                            "fixed-function".to_string()
-                        } else {
-                            plan.note.clone()
-                        },
-                    }),
-                    Err(e) => st.fail(*ci, format!("{path}: {e}")),
-                }
-            }
-            unitstate::unbind_unit_state(&self.gl, first, so);
-            if pi == 0 {
-                let sharing: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
-                self.retire(jobs, st, tex, group[0].0, sharing);
-            } else {
-                self.gl.delete_texture(tex);
-            }
-            self.check_group(users.iter().map(|(ci, _)| *ci), st);
         }
     }
 }

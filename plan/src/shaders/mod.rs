@@ -18,6 +18,7 @@
 //! compiling the whole-tile function it never uses (reports/BENCH.md). The fixed-function path cannot discard.
 
 use crate::paths::uses_shadow_lod;
+use crate::units::sampler_name;
 use crate::{GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
 use shadowcheck_model::{ApiPath, Target};
 
@@ -64,7 +65,7 @@ fn grad_swizzle(target: Target) -> &'static str {
 
 /// The shadow gather call (GLSL 4.60 / GLSL ES 3.20 §8.9.4): P and refZ split out of `p` (cube
 /// arrays: refZ in `u_x`), then the offset or the four offsets as constant expressions.
-fn gather_call(key: &ShaderKey, call: GatherCall) -> String {
+fn gather_call(key: &ShaderKey, call: GatherCall, tex: &str) -> String {
     let (p, refz) = match key.target {
         Target::CubeArray => ("p", "u_x"),
         Target::T2dArray | Target::Cube => ("p.xyz", "p.w"),
@@ -73,23 +74,23 @@ fn gather_call(key: &ShaderKey, call: GatherCall) -> String {
     let iv = |o: [i8; 2]| format!("ivec2({}, {})", o[0], o[1]);
     match call {
         GatherCall::Offsets(o) => format!(
-            "textureGatherOffsets(u_tex, {p}, {refz}, ivec2[4]({}))",
+            "textureGatherOffsets({tex}, {p}, {refz}, ivec2[4]({}))",
             o.map(iv).join(", ")
         ),
         GatherCall::Single if key.offset != [0, 0] => {
             format!(
-                "textureGatherOffset(u_tex, {p}, {refz}, {})",
+                "textureGatherOffset({tex}, {p}, {refz}, {})",
                 iv(key.offset)
             )
         }
-        GatherCall::Single => format!("textureGather(u_tex, {p}, {refz})"),
+        GatherCall::Single => format!("textureGather({tex}, {p}, {refz})"),
     }
 }
 
-/// The lookup call for GLSL >= 1.30 and GLSL ES 3.00.
-fn modern_call(key: &ShaderKey) -> String {
+/// The lookup call for GLSL >= 1.30 and GLSL ES 3.00 on the sampler `tex`.
+fn modern_call(key: &ShaderKey, tex: &str) -> String {
     if let Some(call) = key.gather {
-        return gather_call(key, call);
+        return gather_call(key, call, tex);
     }
     let s = if key.proj { "Proj" } else { "" };
     let p = p_expr(key.kind, key.target, key.proj);
@@ -106,19 +107,20 @@ fn modern_call(key: &ShaderKey) -> String {
     };
     match key.form {
         // EXT_texture_shadow_lod: textureLod(samplerCubeArrayShadow, P, compare, lod).
-        LodForm::Lod if cube_array_shadow => "textureLod(u_tex, p, u_x, u_dx.x)".to_string(),
-        LodForm::Lod => format!("texture{s}Lod{o}(u_tex, {p}, u_x{oa})"),
-        LodForm::Grad => format!("texture{s}Grad{o}(u_tex, {p}, u_dx{g}, u_dy{g}{oa})"),
-        LodForm::Implicit(true) => format!("texture{s}{o}(u_tex, {p}{oa}, u_x)"),
-        LodForm::Implicit(false) if cube_array_shadow => "texture(u_tex, p, u_x)".to_string(),
+        LodForm::Lod if cube_array_shadow => format!("textureLod({tex}, p, u_x, u_dx.x)"),
+        LodForm::Lod => format!("texture{s}Lod{o}({tex}, {p}, u_x{oa})"),
+        LodForm::Grad => format!("texture{s}Grad{o}({tex}, {p}, u_dx{g}, u_dy{g}{oa})"),
+        LodForm::Implicit(true) => format!("texture{s}{o}({tex}, {p}{oa}, u_x)"),
+        LodForm::Implicit(false) if cube_array_shadow => format!("texture({tex}, p, u_x)"),
         LodForm::Implicit(false) | LodForm::Constant | LodForm::Gather(_) => {
-            format!("texture{s}{o}(u_tex, {p}{oa})")
+            format!("texture{s}{o}({tex}, {p}{oa})")
         }
     }
 }
 
-/// The lookup call for GLSL 1.20 (`shadow1D`, `shadow2DRectProj`, `texture2D`, ...) and ES 1.00.
-fn legacy_call(key: &ShaderKey) -> String {
+/// The lookup call for GLSL 1.20 (`shadow1D`, `shadow2DRectProj`, `texture2D`, ...) and ES 1.00
+/// on the sampler `tex`.
+fn legacy_call(key: &ShaderKey, tex: &str) -> String {
     let s = if key.proj { "Proj" } else { "" };
     let p = p_expr(key.kind, key.target, key.proj);
     let t = match key.target {
@@ -137,23 +139,24 @@ fn legacy_call(key: &ShaderKey) -> String {
     } else {
         ""
     };
-    format!("{f}(u_tex, {p}{bias})")
+    format!("{f}({tex}, {p}{bias})")
 }
 
 /// Floats per vertex in the parameter buffer of batched draws (six vertices, two triangles, per
-/// case): the corner, (x, k), P, dx, dy ([`PARAM_ATTRIBS`]).
-pub const PARAM_FLOATS: usize = 16;
+/// case): the corner, (x, k, unit), P, dx, dy ([`PARAM_ATTRIBS`]).
+pub const PARAM_FLOATS: usize = 17;
 /// A batched program's vertex attributes: (location, name, size, offset in floats). `a_pos` is
 /// the quad corner (0 or 1 in x and y; in a single-case program, the full-screen triangle), `a_x`
-/// is (x, k), k the case's index in its draw; P, dx and dy are the case's. Every vertex of a
-/// case carries the case's values, so the flat inputs are its values whatever the provoking
+/// is (x, k, unit), k the case's index in its draw and unit the texture unit holding its state
+/// (`units.rs`; a one-unit program reads only x and k); P, dx and dy are the case's. Every vertex
+/// of a case carries the case's values, so the flat inputs are its values whatever the provoking
 /// vertex.
 pub const PARAM_ATTRIBS: [(u32, &str, i32, usize); 5] = [
     (0, "a_pos", 2, 0),
-    (4, "a_x", 2, 2),
-    (1, "a_p", 4, 4),
-    (2, "a_dx", 4, 8),
-    (3, "a_dy", 4, 12),
+    (4, "a_x", 3, 2),
+    (1, "a_p", 4, 5),
+    (2, "a_dx", 4, 9),
+    (3, "a_dy", 4, 13),
 ];
 
 /// Can this key draw many cases at once, each its own pixel quad with its values as vertex
@@ -169,11 +172,22 @@ pub fn batchable(key: &ShaderKey) -> bool {
 /// ([`PARAM_ATTRIBS`]) and reach the fragment shader as flat inputs, bit for bit. An implicit-derivative lookup's P
 /// varies across its quad by the case's gradients and is the case's P at the quad's lower-left
 /// pixel, whose result is read.
-pub fn glsl(info: &GlInfo, key: &ShaderKey, batched: Option<i32>) -> (String, String) {
+///
+/// `units`: the samplers the program declares, `u_tex0` on unit 0 to `u_tex{units-1}`, all of the
+/// key's type; each case names its unit (batched: the third component of `a_x`; single case: the
+/// uniform `u_unit`) and the lookup runs on that sampler alone (`units.rs`). One unit: the plain
+/// `u_tex`, no selection.
+pub fn glsl(
+    info: &GlInfo,
+    key: &ShaderKey,
+    batched: Option<i32>,
+    units: usize,
+) -> (String, String) {
     let lang = language(info, key);
+    let units = units.max(1);
     (
-        vertex_shader(&lang, batched),
-        fragment_shader(&lang, key, batched),
+        vertex_shader(&lang, batched, units),
+        fragment_shader(&lang, key, batched, units),
     )
 }
 
@@ -270,13 +284,18 @@ fn language(info: &GlInfo, key: &ShaderKey) -> Language {
 
 /// The vertex shader: a full-screen triangle, or (batched) two triangles over each case's quad
 /// with the case's values as flat outputs.
-fn vertex_shader(lang: &Language, batched: Option<i32>) -> String {
+fn vertex_shader(lang: &Language, batched: Option<i32>, units: usize) -> String {
     let (header, vin) = (&lang.header, lang.vin);
     match batched {
         Some(fb_width) => {
             let quads = fb_width / 2;
+            let (x_type, unit_out, unit_set) = if units > 1 {
+                ("vec3", "flat out int v_unit;\n", "  v_unit = int(a_x.z);\n")
+            } else {
+                ("vec2", "", "")
+            };
             format!(
-                "{header}{vin} vec2 a_pos;\n{vin} vec4 a_p;\n{vin} vec4 a_dx;\n{vin} vec4 a_dy;\n{vin} vec2 a_x;\nuniform int u_base;\nflat out vec4 v_p;\nflat out vec4 v_dx;\nflat out vec4 v_dy;\nflat out float v_x;\nvoid main() {{\n  int s = u_base + int(a_x.y);\n  ivec2 corner = 2 * ivec2(s % {quads}, s / {quads}) + 2 * ivec2(a_pos);\n  gl_Position = vec4(vec2(corner) / {quads}.0 - 1.0, 0.0, 1.0);\n  v_p = a_p;\n  v_dx = a_dx;\n  v_dy = a_dy;\n  v_x = a_x.x;\n}}\n"
+                "{header}{vin} vec2 a_pos;\n{vin} vec4 a_p;\n{vin} vec4 a_dx;\n{vin} vec4 a_dy;\n{vin} {x_type} a_x;\nuniform int u_base;\nflat out vec4 v_p;\nflat out vec4 v_dx;\nflat out vec4 v_dy;\nflat out float v_x;\n{unit_out}void main() {{\n  int s = u_base + int(a_x.y);\n  ivec2 corner = 2 * ivec2(s % {quads}, s / {quads}) + 2 * ivec2(a_pos);\n  gl_Position = vec4(vec2(corner) / {quads}.0 - 1.0, 0.0, 1.0);\n  v_p = a_p;\n  v_dx = a_dx;\n  v_dy = a_dy;\n  v_x = a_x.x;\n{unit_set}}}\n"
             )
         }
         None => format!(
@@ -287,7 +306,7 @@ fn vertex_shader(lang: &Language, batched: Option<i32>) -> String {
 
 /// The fragment shader: the lookup at the fragment's coordinate (varying across the quad for
 /// implicit derivatives), its result stored as RGBA.
-fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>) -> String {
+fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units: usize) -> String {
     let (header, fout, out_decl) = (&lang.header, lang.fout, lang.out_decl);
     let prec = if matches!(key.path, ApiPath::Es300 | ApiPath::Es100Ext) {
         "highp "
@@ -310,27 +329,66 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>) -> St
         }
         (None, _) => format!("{NEVER_DISCARD}\n  vec4 p = u_p;"),
     };
-    let uniforms = if batched.is_some() {
+    let mut uniforms = if batched.is_some() {
         "uniform int u_base;\nflat in vec4 v_p;\nflat in vec4 v_dx;\nflat in vec4 v_dy;\nflat in float v_x;\n".to_string()
     } else {
         "uniform vec4 u_p;\nuniform float u_x;\nuniform vec4 u_dx;\nuniform vec4 u_dy;\nuniform vec2 u_c;\n".to_string()
     };
+    let unit = match (units > 1, batched.is_some()) {
+        (false, _) => "",
+        (true, true) => {
+            uniforms += "flat in int v_unit;\n";
+            "v_unit"
+        }
+        (true, false) => {
+            uniforms += "uniform int u_unit;\n";
+            "u_unit"
+        }
+    };
     let vec4_result = matches!(key.path, ApiPath::Glsl120)
         || key.kind != SamplerKind::Shadow
         || key.gather.is_some();
-    let call = match key.path {
-        ApiPath::Glsl120 | ApiPath::Es100Ext => legacy_call(key),
-        _ => modern_call(key),
+    let store = |tex: &str| {
+        let call = match key.path {
+            ApiPath::Glsl120 | ApiPath::Es100Ext => legacy_call(key, tex),
+            _ => modern_call(key, tex),
+        };
+        if vec4_result {
+            format!("{fout} = vec4({call});")
+        } else {
+            format!("{fout} = vec4({call}, 0.0, 0.0, 1.0);")
+        }
     };
-    let store = if vec4_result {
-        format!("{fout} = vec4({call});")
+    // Several units: the case's own, chosen by an if-chain (a sampler array indexed by a value
+    // that is not dynamically uniform is undefined, GLSL 4.60 §4.1.7); every fragment of a
+    // case's quad takes the same branch, so derivatives stay defined within the quad.
+    let lookup = if units > 1 {
+        (0..units)
+            .map(|u| {
+                let s = store(&sampler_name(u, units));
+                if u == 0 {
+                    format!("if ({unit} == 0) {s}")
+                } else if u + 1 == units {
+                    format!("else {s}")
+                } else {
+                    format!("else if ({unit} == {u}) {s}")
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\n  ")
     } else {
-        format!("{fout} = vec4({call}, 0.0, 0.0, 1.0);")
+        store("u_tex")
     };
-    format!(
-        "{header}uniform {prec}{} u_tex;\n{uniforms}{out_decl}void main() {{\n  {p_line}\n  {store}\n}}\n",
-        sampler_type(key.kind, key.target)
-    )
+    let samplers: String = (0..units)
+        .map(|u| {
+            format!(
+                "uniform {prec}{} {};\n",
+                sampler_type(key.kind, key.target),
+                sampler_name(u, units)
+            )
+        })
+        .collect();
+    format!("{header}{samplers}{uniforms}{out_decl}void main() {{\n  {p_line}\n  {lookup}\n}}\n")
 }
 
 /// The single-case GLSL program's discard that is never taken (`u_c`, the pixel centre, is never
@@ -340,7 +398,13 @@ const NEVER_DISCARD: &str = "if (u_c.x < 0.0) discard;";
 /// ARB fragment program text (ARB_fragment_program + ARB_fragment_program_shadow); the program
 /// locals are 0 = P, 1 = dx, 2 = dy, 3 = pixel centre (x, y, 0, 0). `KIL c` kills where a
 /// component of `c` is negative, which none is: a kill that never happens (module docs).
-pub fn arbfp(key: &ShaderKey) -> String {
+///
+/// `units` > 1: the lookup on each of `texture[0]` .. `texture[units-1]` (an instruction names its
+/// unit as a constant, and the language has no branch), combined as r = sum of t_i * w_i with the
+/// weights w in locals 4 .. ([`arbfp_unit_weights`]): 1 for the case's unit, 0 for the others.
+/// With finite lookup results (depth, comparison and normalized colour values) each product is
+/// exactly t_i or 0 and each sum exact, so r is the case's lookup bit for bit.
+pub fn arbfp(key: &ShaderKey, units: usize) -> String {
     let shadow = key.kind == SamplerKind::Shadow;
     let target = match key.target {
         Target::T1d => "1D",
@@ -363,9 +427,52 @@ pub fn arbfp(key: &ShaderKey) -> String {
     } else {
         target.to_string()
     };
-    format!(
-        "!!ARBfp1.0\n{option}PARAM p = program.local[0];\nPARAM dx = program.local[1];\nPARAM dy = program.local[2];\nPARAM c = program.local[3];\nTEMP d, q;\nKIL c;\nSUB d, fragment.position, c;\nMAD q, d.x, dx, p;\nMAD q, d.y, dy, q;\n{op} result.color, q, texture[0], {t};\nEND\n"
-    )
+    let head = format!(
+        "!!ARBfp1.0\n{option}PARAM p = program.local[0];\nPARAM dx = program.local[1];\nPARAM dy = program.local[2];\nPARAM c = program.local[3];\n"
+    );
+    let coord = "KIL c;\nSUB d, fragment.position, c;\nMAD q, d.x, dx, p;\nMAD q, d.y, dy, q;\n";
+    if units <= 1 {
+        return format!("{head}TEMP d, q;\n{coord}{op} result.color, q, texture[0], {t};\nEND\n");
+    }
+    let weights: String = (0..units.div_ceil(4))
+        .map(|j| {
+            format!(
+                "PARAM w{j} = program.local[{}];\n",
+                ARBFP_WEIGHTS as usize + j
+            )
+        })
+        .collect();
+    let lookups: String = (0..units)
+        .map(|u| {
+            let w = format!("w{}.{}", u / 4, ['x', 'y', 'z', 'w'][u % 4]);
+            let combine = if u == 0 {
+                format!("MUL r, t, {w};\n")
+            } else {
+                format!("MAD r, t, {w}, r;\n")
+            };
+            format!("{op} t, q, texture[{u}], {t};\n{combine}")
+        })
+        .collect();
+    format!("{head}{weights}TEMP d, q, t, r;\n{coord}{lookups}MOV result.color, r;\nEND\n")
+}
+
+/// The first program local of an ARB program's unit weights ([`arbfp`]).
+pub const ARBFP_WEIGHTS: u32 = 4;
+
+/// The weights of [`arbfp`] for a case on `unit` of `units`: one vec4 per four units, 1 for
+/// `unit`, 0 elsewhere.
+pub fn arbfp_unit_weights(unit: usize, units: usize) -> Vec<[f32; 4]> {
+    (0..units.div_ceil(4))
+        .map(|j| {
+            let mut w = [0.0; 4];
+            for (i, v) in w.iter_mut().enumerate() {
+                if 4 * j + i == unit {
+                    *v = 1.0;
+                }
+            }
+            w
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -34,13 +34,13 @@ fn shadow_2d(path: ApiPath, form: LodForm) -> ShaderKey {
 #[test]
 fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
     let k = shadow_2d(ApiPath::GlslCore, LodForm::Lod);
-    assert_eq!(modern_call(&k), "textureLod(u_tex, p.xyz, u_x)");
+    assert_eq!(modern_call(&k, "u_tex"), "textureLod(u_tex, p.xyz, u_x)");
     let k = ShaderKey {
         target: Target::CubeArray,
         form: LodForm::Implicit(false),
         ..k
     };
-    assert_eq!(modern_call(&k), "texture(u_tex, p, u_x)");
+    assert_eq!(modern_call(&k, "u_tex"), "texture(u_tex, p, u_x)");
     let k = ShaderKey {
         target: Target::Rect,
         form: LodForm::Grad,
@@ -48,7 +48,7 @@ fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
         ..k
     };
     assert_eq!(
-        modern_call(&k),
+        modern_call(&k, "u_tex"),
         "textureProjGrad(u_tex, p, u_dx.xy, u_dy.xy)"
     );
     // *Offset forms: the offset after P / LOD / gradients, before the bias.
@@ -58,7 +58,7 @@ fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
         ..k
     };
     assert_eq!(
-        modern_call(&k),
+        modern_call(&k, "u_tex"),
         "textureProjGradOffset(u_tex, p, u_dx.xy, u_dy.xy, ivec2(-8, 7))"
     );
     let k = ShaderKey {
@@ -67,7 +67,7 @@ fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
         ..k
     };
     assert_eq!(
-        modern_call(&k),
+        modern_call(&k, "u_tex"),
         "textureLodOffset(u_tex, p.xyz, u_x, ivec2(-8, 7))"
     );
     let k = ShaderKey {
@@ -75,7 +75,7 @@ fn core_lookup_calls_put_dref_in_p_and_compare_separately_for_cube_arrays() {
         ..k
     };
     assert_eq!(
-        modern_call(&k),
+        modern_call(&k, "u_tex"),
         "textureOffset(u_tex, p.xyz, ivec2(-8, 7), u_x)"
     );
 }
@@ -92,9 +92,12 @@ fn shadow_lod_overloads_enable_the_extension() {
         offset: [0, 0],
         gather: None,
     };
-    assert_eq!(modern_call(&k), "textureLod(u_tex, p, u_x, u_dx.x)");
+    assert_eq!(
+        modern_call(&k, "u_tex"),
+        "textureLod(u_tex, p, u_x, u_dx.x)"
+    );
     let info = info(crate::ContextApi::Es3, (3, 2), 320);
-    let (_, fs) = glsl(&info, &k, None);
+    let (_, fs) = glsl(&info, &k, None, 1);
     assert!(
         fs.starts_with("#version 320 es\n#extension GL_EXT_texture_shadow_lod : require\n"),
         "{fs}"
@@ -103,7 +106,7 @@ fn shadow_lod_overloads_enable_the_extension() {
         target: Target::T2d,
         ..k
     };
-    assert!(!glsl(&info, &k, None).1.contains("#extension"));
+    assert!(!glsl(&info, &k, None, 1).1.contains("#extension"));
 }
 
 #[test]
@@ -118,13 +121,13 @@ fn gather_calls_split_p_and_ref_z() {
         offset: [0, 0],
         gather: Some(GatherCall::Single),
     };
-    assert_eq!(modern_call(&k), "textureGather(u_tex, p.xy, p.z)");
+    assert_eq!(modern_call(&k, "u_tex"), "textureGather(u_tex, p.xy, p.z)");
     let k = ShaderKey {
         offset: [-8, 7],
         ..k
     };
     assert_eq!(
-        modern_call(&k),
+        modern_call(&k, "u_tex"),
         "textureGatherOffset(u_tex, p.xy, p.z, ivec2(-8, 7))"
     );
     let k = ShaderKey {
@@ -134,7 +137,7 @@ fn gather_calls_split_p_and_ref_z() {
         ..k
     };
     assert_eq!(
-        modern_call(&k),
+        modern_call(&k, "u_tex"),
         "textureGatherOffsets(u_tex, p.xyz, p.w, ivec2[4](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0)))"
     );
     let k = ShaderKey {
@@ -142,7 +145,7 @@ fn gather_calls_split_p_and_ref_z() {
         gather: Some(GatherCall::Single),
         ..k
     };
-    assert_eq!(modern_call(&k), "textureGather(u_tex, p, u_x)");
+    assert_eq!(modern_call(&k, "u_tex"), "textureGather(u_tex, p, u_x)");
 }
 
 #[test]
@@ -150,13 +153,15 @@ fn batched_programs_draw_each_case_as_its_own_quad_and_vary_p_across_it_when_imp
     let info = info(crate::ContextApi::Core, (4, 5), 450);
     let k = shadow_2d(ApiPath::GlslCore, LodForm::Implicit(false));
     assert!(batchable(&k));
-    let (vs, fs) = glsl(&info, &k, Some(256));
+    let (vs, fs) = glsl(&info, &k, Some(256), 1);
     // Case k draws the quad of slot u_base + k: 128 quads a row, NDC = pixel / 128 - 1.
     assert!(
         vs.contains("int s = u_base + int(a_x.y);\n  ivec2 corner = 2 * ivec2(s % 128, s / 128) + 2 * ivec2(a_pos);\n  gl_Position = vec4(vec2(corner) / 128.0 - 1.0, 0.0, 1.0);"),
         "{vs}"
     );
+    // Every attribute is declared with its size (a one-unit program reads (x, k) of `a_x`).
     for (_, name, size, _) in PARAM_ATTRIBS {
+        let size = if name == "a_x" { 2 } else { size };
         let ty = format!("vec{size}");
         assert!(vs.contains(&format!("in {ty} {name};")), "{vs}");
     }
@@ -172,7 +177,7 @@ fn batched_programs_draw_each_case_as_its_own_quad_and_vary_p_across_it_when_imp
         ..k
     };
     assert!(batchable(&lod));
-    assert!(!glsl(&info, &lod, Some(256)).1.contains("vec2 c ="));
+    assert!(!glsl(&info, &lod, Some(256), 1).1.contains("vec2 c ="));
     // The compatibility paths and ES 1.00 draw one pixel per case.
     assert!(!batchable(&ShaderKey {
         path: ApiPath::Glsl120,
@@ -200,16 +205,19 @@ fn single_case_programs_can_discard_but_only_where_the_pixel_centre_is_negative(
             ..k
         },
     ] {
-        let (_, fs) = glsl(&compat, &key, None);
+        let (_, fs) = glsl(&compat, &key, None, 1);
         // Before P is formed, on a uniform (control flow stays uniform).
         let at = fs.find("if (u_c.x < 0.0) discard;").expect(&fs);
         assert!(at < fs.find("vec4 p =").expect(&fs), "{fs}");
         assert!(fs.contains("uniform vec2 u_c;"), "{fs}");
     }
-    let arb = arbfp(&ShaderKey {
-        path: ApiPath::ArbFp,
-        ..k
-    });
+    let arb = arbfp(
+        &ShaderKey {
+            path: ApiPath::ArbFp,
+            ..k
+        },
+        1,
+    );
     assert!(
         arb.contains("PARAM c = program.local[3];") && arb.contains("KIL c;"),
         "{arb}"
@@ -228,22 +236,86 @@ fn legacy_calls_use_the_glsl_120_names() {
         offset: [0, 0],
         gather: None,
     };
-    assert_eq!(legacy_call(&k), "shadow2DRectProj(u_tex, p)");
+    assert_eq!(legacy_call(&k, "u_tex"), "shadow2DRectProj(u_tex, p)");
     let k = ShaderKey {
         path: ApiPath::Es100Ext,
         target: Target::T2d,
         ..k
     };
-    assert_eq!(legacy_call(&k), "shadow2DProjEXT(u_tex, p)");
+    assert_eq!(legacy_call(&k, "u_tex"), "shadow2DProjEXT(u_tex, p)");
 }
 
 #[test]
 fn arb_program_uses_the_shadow_target_and_txb_for_bias() {
     let k = shadow_2d(ApiPath::ArbFp, LodForm::Implicit(true));
-    let s = arbfp(&k);
+    let s = arbfp(&k, 1);
     assert!(
         s.contains("OPTION ARB_fragment_program_shadow;")
             && s.contains("TXB result.color, q, texture[0], SHADOW2D;"),
         "{s}"
     );
+}
+
+#[test]
+fn several_units_are_sampled_by_one_program_and_the_case_picks_its_own() {
+    let info = info(crate::ContextApi::Core, (4, 5), 450);
+    let k = shadow_2d(ApiPath::GlslCore, LodForm::Lod);
+    // One unit: the program of one state, no selection.
+    let (vs1, fs1) = glsl(&info, &k, Some(256), 1);
+    assert!(fs1.contains("uniform sampler2DShadow u_tex;") && !fs1.contains("v_unit"));
+    assert!(vs1.contains("in vec2 a_x;") && !vs1.contains("v_unit"));
+    // Three units, batched: the unit arrives flat from the third component of a_x, and each
+    // branch samples its own unit's sampler.
+    let (vs, fs) = glsl(&info, &k, Some(256), 3);
+    assert!(
+        vs.contains("in vec3 a_x;") && vs.contains("v_unit = int(a_x.z);"),
+        "{vs}"
+    );
+    for u in 0..3 {
+        assert!(
+            fs.contains(&format!("uniform sampler2DShadow u_tex{u};")),
+            "{fs}"
+        );
+        assert!(
+            fs.contains(&format!("textureLod(u_tex{u}, p.xyz, u_x)")),
+            "{fs}"
+        );
+    }
+    assert!(
+        fs.contains("if (v_unit == 0)")
+            && fs.contains("else if (v_unit == 1)")
+            && fs.contains("else o ="),
+        "{fs}"
+    );
+    assert!(!fs.contains("u_tex;"), "{fs}");
+    // Single-case programs take the unit as a uniform.
+    let (_, fs) = glsl(&info, &k, None, 2);
+    assert!(
+        fs.contains("uniform int u_unit;") && fs.contains("if (u_unit == 0)"),
+        "{fs}"
+    );
+    // ARB programs sample every unit and weight the results; the case's unit weighs 1.
+    let k = shadow_2d(ApiPath::ArbFp, LodForm::Implicit(false));
+    let s = arbfp(&k, 6);
+    for u in 0..6 {
+        assert!(
+            s.contains(&format!("TEX t, q, texture[{u}], SHADOW2D;")),
+            "{s}"
+        );
+    }
+    assert!(
+        s.contains("PARAM w0 = program.local[4];") && s.contains("PARAM w1 = program.local[5];"),
+        "{s}"
+    );
+    assert!(
+        s.contains("MUL r, t, w0.x;")
+            && s.contains("MAD r, t, w1.y, r;")
+            && s.contains("MOV result.color, r;"),
+        "{s}"
+    );
+    assert_eq!(
+        arbfp_unit_weights(5, 6),
+        vec![[0.0; 4], [0.0, 1.0, 0.0, 0.0]]
+    );
+    assert_eq!(arbfp_unit_weights(0, 3), vec![[1.0, 0.0, 0.0, 0.0]]);
 }

@@ -575,6 +575,19 @@ impl Backend for ExecBackend {
         self.check_stray_lines();
         std::mem::take(&mut self.faults)
     }
+    fn close(&mut self) -> Vec<String> {
+        self.close_process()
+    }
+}
+
+impl ExecBackend {
+    /// Ends the implementation's process (see [`Backend::close`]).
+    fn close_process(&mut self) -> Vec<String> {
+        if let Some(p) = self.proc.take() {
+            p.finish();
+        }
+        self.take_diagnostics()
+    }
 }
 
 impl Drop for ExecBackend {

@@ -291,6 +291,10 @@ fn open_gl(name: &str, _: &str, opts: &Options) -> Result<Box<dyn Backend>, Back
     if opts.fast_compile {
         cmd.env.push(("GALLIVM_PERF".into(), "nopt".into()));
     }
+    cmd.env.push((
+        shadowcheck_gl::worker::STATES_PER_PROGRAM_ENV.into(),
+        opts.states_per_program.to_string(),
+    ));
     let compiles = gl::compiles_per_state(name);
     Ok(Box::new(
         ExecBackend::start(name, cmd, opts)?.with_compiles_per_state(compiles),

@@ -148,6 +148,13 @@ pub trait Backend: Send {
     fn compiles_per_state(&self) -> bool {
         true
     }
+    /// The run is done with the backend: its process (if any) is asked to end, and what it wrote
+    /// on stderr since the last [`Backend::take_diagnostics`] is returned (a GL worker's last line
+    /// says what it compiled and drew: `shadowcheck_gl::worker::WorkerStats`). A closed backend
+    /// that is sent more work starts again.
+    fn close(&mut self) -> Vec<String> {
+        self.take_diagnostics()
+    }
 }
 
 /// Options shared by the backends that run child processes.
@@ -163,6 +170,9 @@ pub struct Options {
     /// `run --fast-compile`: GL workers run with `GALLIVM_PERF=nopt` (llvmpipe and lavapipe skip
     /// LLVM's optimisation passes). Opt-in only: it changes the driver's code generation.
     pub fast_compile: bool,
+    /// `run --states-per-program`: the most sampler states one program of a GL worker samples
+    /// (`shadowcheck_plan::units`).
+    pub states_per_program: usize,
 }
 
 /// Consecutive timeouts after which an implementation is given up (`run --give-up-after`).
@@ -175,6 +185,7 @@ impl Default for Options {
             group: 64,
             give_up: GIVE_UP_AFTER,
             fast_compile: false,
+            states_per_program: shadowcheck_plan::units::DEFAULT_STATES_PER_PROGRAM,
         }
     }
 }

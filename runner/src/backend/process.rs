@@ -264,13 +264,20 @@ impl Proc {
         }
     }
 
-    /// Ends the process politely (`bye`, stdin closed), killing it if it lingers.
+    /// Ends the process politely (`bye`, stdin closed), killing it if it lingers. After a clean
+    /// exit the stderr reader is given a moment to pass on the last lines (diagnostics).
     pub(super) fn finish(mut self) {
         let _ = self.send(Request::BYE_LINE.to_vec());
         drop(self.input.take());
         let t0 = Instant::now();
         while t0.elapsed() < Duration::from_secs(1) {
             if let Ok(Some(_)) = self.child.try_wait() {
+                if let Some(h) = self.stderr_thread.take() {
+                    let t1 = Instant::now();
+                    while !h.is_finished() && t1.elapsed() < Duration::from_millis(300) {
+                        std::thread::sleep(Duration::from_millis(5));
+                    }
+                }
                 return;
             }
             std::thread::sleep(Duration::from_millis(5));

@@ -33,5 +33,8 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
         std::io::BufReader::with_capacity(1 << 16, stdin),
         std::io::BufWriter::new(stdout.lock()),
     )?;
+    // The last stderr line: what was compiled and drawn (the runner shows it with `-v`; the
+    // bench reads it).
+    shadowcheck_runner::errln!("{}", w.stats());
     Ok(ExitCode::SUCCESS)
 }

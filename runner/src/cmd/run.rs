@@ -98,6 +98,13 @@ pub struct Exchange {
     /// the driver's code generation, so it is never the default; the run's meta records it.
     #[arg(long)]
     pub fast_compile: bool,
+    /// Sampler states one compiled program samples at most on the GL backends: the texture states
+    /// of a batch are bound together, one per texture unit, and each program picks a case's unit,
+    /// so a driver that compiles one variant per sampler state (llvmpipe, zink) compiles one per
+    /// N states. Capped by the context's MAX_TEXTURE_IMAGE_UNITS; fixed function always draws one.
+    /// 1 gives one state per program (the earlier behaviour, for comparisons).
+    #[arg(long, value_name = "N", default_value_t = shadowcheck_plan::units::DEFAULT_STATES_PER_PROGRAM)]
+    pub states_per_program: usize,
 }
 
 impl Exchange {
@@ -110,11 +117,15 @@ impl Exchange {
         if self.group == 0 {
             bail!("--group must be at least 1");
         }
+        if self.states_per_program == 0 {
+            bail!("--states-per-program must be at least 1");
+        }
         Ok(Options {
             timeout: Duration::from_secs_f64(self.timeout),
             group: self.group,
             give_up: self.give_up_after,
             fast_compile: self.fast_compile,
+            states_per_program: self.states_per_program,
         })
     }
 }
@@ -200,6 +211,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         lists,
         rerun_regressions: !a.no_rerun,
         explicit_fixtures: !a.fixtures.is_empty(),
+        close_backends: true,
     };
     let jobs = a
         .jobs

@@ -495,7 +495,7 @@ fn draw_fn(s: &Subject, plan: &Plan, tok: &mut Tokens) -> String {
             );
         }
         ApiPath::ArbFp => {
-            let src = shaders::arbfp(key);
+            let src = shaders::arbfp(key, 1);
             let _ = write!(
                 out,
                 "static const char *PROGRAM =\n{src};\n\nstatic void draw(int glsl) {{\n    (void)glsl;\n    GLuint id;\n    glGenProgramsARB(1, &id);\n    glBindProgramARB(GL_FRAGMENT_PROGRAM_ARB, id);\n    glProgramStringARB(GL_FRAGMENT_PROGRAM_ARB, GL_PROGRAM_FORMAT_ASCII_ARB, (GLsizei)strlen(PROGRAM), PROGRAM);\n    GLint pos = 0;\n    glGetIntegerv(GL_PROGRAM_ERROR_POSITION_ARB, &pos);\n    if (pos != -1) {{\n        fprintf(stderr, \"ARB program rejected at %d: %s\\n\", pos, glGetString(GL_PROGRAM_ERROR_STRING_ARB));\n        exit(2);\n    }}\n    glUseProgram(0);\n    glEnable(GL_FRAGMENT_PROGRAM_ARB);\n    glProgramLocalParameter4fARB(GL_FRAGMENT_PROGRAM_ARB, 0, {p});\n    glProgramLocalParameter4fARB(GL_FRAGMENT_PROGRAM_ARB, 1, {dx});\n    glProgramLocalParameter4fARB(GL_FRAGMENT_PROGRAM_ARB, 2, {dy});\n    glProgramLocalParameter4fARB(GL_FRAGMENT_PROGRAM_ARB, 3, {cx}, {cy}, 0.0f, 0.0f);\n    glBegin(GL_TRIANGLES);\n    glVertex2f(-1.0f, -1.0f); glVertex2f(3.0f, -1.0f); glVertex2f(-1.0f, 3.0f);\n    glEnd();\n    glDisable(GL_FRAGMENT_PROGRAM_ARB);\n    check(\"ARB fragment program draw\");\n}}\n\n",
@@ -530,8 +530,8 @@ fn glsl_variants(s: &Subject, plan: &Plan) -> Vec<(u32, String, String)> {
         form: s.backend.form,
     };
     let (hi, lo) = if es { (320, 300) } else { (400, 330) };
-    let (vh, fh) = shaders::glsl(&info(hi), &plan.key, None);
-    let (vl, fl) = shaders::glsl(&info(lo), &plan.key, None);
+    let (vh, fh) = shaders::glsl(&info(hi), &plan.key, None, 1);
+    let (vl, fl) = shaders::glsl(&info(lo), &plan.key, None, 1);
     if (&vh, &fh) == (&vl, &fl) {
         vec![(0, vh, fh)]
     } else {

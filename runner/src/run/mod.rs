@@ -218,6 +218,10 @@ pub struct Settings {
     pub rerun_regressions: bool,
     /// Fixtures were named on the command line: the re-run command of a test names its file.
     pub explicit_fixtures: bool,
+    /// Close each backend when its run is done ([`Backend::close`]), its last stderr lines (a
+    /// GL worker's stats) emitted as diagnostics: `shadowcheck run` does; a caller that runs
+    /// the same backend again (the bench's warm passes) does not.
+    pub close_backends: bool,
 }
 
 struct Ctx<'a> {
@@ -276,7 +280,10 @@ pub fn run_backend(
         tests,
         not_applicable,
     });
-    let to_send = cases_to_send(backend.capabilities(), &name, set, prior, &mut ctx);
+    let mut to_send = cases_to_send(backend.capabilities(), &name, set, prior, &mut ctx);
+    if backend.compiles_per_state() {
+        to_send = in_program_order(to_send);
+    }
     send_and_judge(
         backend,
         &name,
@@ -293,6 +300,14 @@ pub fn run_backend(
         rerun_regressions(backend, set, &mut ctx);
         collect_late_faults(backend, &mut ctx);
     }
+    if settings.close_backends {
+        for d in backend.close() {
+            ctx.fanout.emit(&Event::Diagnostic {
+                backend: &name,
+                message: &d,
+            });
+        }
+    }
     let mut counts = Counts::default();
     for r in &ctx.results {
         counts.add(r.status);
@@ -304,6 +319,17 @@ pub fn run_backend(
         timing: &timing,
     });
     (ctx.results, timing)
+}
+
+/// `to_send` in the plan's program order (`shadowcheck_plan::units::program_order`): a backend
+/// that compiles a shader variant per sampler state gets the cases of one program in the same
+/// batches, so that it binds many of their states together and compiles one variant for them.
+/// Results still come out per case; only the order they are sent (and reported) in changes.
+fn in_program_order(to_send: Vec<ToSend<'_>>) -> Vec<ToSend<'_>> {
+    let order =
+        shadowcheck_plan::units::program_order(to_send.iter().map(|(c, apis, _)| (*c, &**apis)));
+    let mut slots: Vec<Option<ToSend<'_>>> = to_send.into_iter().map(Some).collect();
+    order.into_iter().filter_map(|i| slots[i].take()).collect()
 }
 
 /// The lookup cases of `set` the backend `name` (with `caps`) is sent, each with the API paths it
