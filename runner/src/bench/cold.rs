@@ -3,7 +3,7 @@
 //! and the floor of the compilations a cold run cannot avoid.
 
 use super::run::BenchOptions;
-use super::suite;
+use super::{grouping, suite};
 use super::{ids, machine::Machine, targets, targets17, Goal, Measurement, Target, Unavailable};
 use crate::run::CaseSet;
 use shadowcheck_gl::names::{BackendName, Driver};
@@ -38,8 +38,40 @@ pub fn density_rows(set: &CaseSet) -> Vec<Measurement> {
         .collect()
 }
 
-/// Measures the compile time of one variant on each compiling driver's `egl:<driver>:core`
-/// backend that is available; returns the per-variant seconds per driver.
+/// What compiling costs one driver: seconds per variant of one state (one state per program),
+/// and, from the same cases drawn with many states per program, per variant of a set and the
+/// units such a set had on average.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DriverCost {
+    pub driver: Driver,
+    pub per_variant_s: f64,
+    pub per_set_s: Option<f64>,
+    pub units_per_set: Option<f64>,
+}
+
+impl DriverCost {
+    /// The cost of a variant as a fixed part and a part per unit (state) it samples, (fixed,
+    /// per unit) in seconds: the line through the one-state variant (1 unit) and the sets'
+    /// mean; without sets of more than one unit on average, all of it per unit.
+    pub fn fixed_and_per_unit_s(&self) -> (f64, f64) {
+        let one = self.per_variant_s;
+        match (self.per_set_s, self.units_per_set) {
+            (Some(set), Some(u)) if u > 1.5 => {
+                let per_unit = (set - one) / (u - 1.0);
+                let fixed = one - per_unit;
+                if per_unit > 0.0 && fixed >= 0.0 {
+                    (fixed, per_unit)
+                } else {
+                    (0.0, set / u)
+                }
+            }
+            _ => (0.0, one),
+        }
+    }
+}
+
+/// Measures the compile time on each compiling driver's `egl:<driver>:core` backend that is
+/// available, once with one state per program and once with the default states per program.
 pub fn compile_rows(
     o: &BenchOptions,
     set: &CaseSet,
@@ -47,8 +79,8 @@ pub fn compile_rows(
     rows: &mut Vec<Measurement>,
     unavailable: &mut Vec<Unavailable>,
     progress: &mut dyn FnMut(&str),
-) -> Vec<(Driver, f64)> {
-    let mut per_variant: Vec<(Driver, f64)> = Vec::new();
+) -> Vec<DriverCost> {
+    let mut costs: Vec<DriverCost> = Vec::new();
     for d in [Driver::Llvmpipe, Driver::Zink] {
         let name = format!("egl:{}:core", d.key());
         if !available.contains(&name) {
@@ -58,29 +90,79 @@ pub fn compile_rows(
         progress(&format!(
             "{name}: compile time per variant (every {stride}th state, empty shader cache)"
         ));
-        match suite::compile_cost(&name, set, stride) {
+        let one = match suite::compile_cost(&name, set, stride, 1) {
+            Ok(c) => c,
+            Err(e) => {
+                unavailable.push(Unavailable {
+                    what: "compile time per variant".into(),
+                    backend: Some(name),
+                    reason: e,
+                });
+                continue;
+            }
+        };
+        rows.push(Measurement::new(
+            ids::COMPILE_PER_VARIANT,
+            Some(&name),
+            one.per_variant_s() * 1e3,
+            "ms",
+            format!(
+                "one state per program (`--states-per-program 1`); one case per compiled state, {} states (every {stride}th of the fixtures): cold {:.2} s, same cases warm {:.2} s; (cold - warm) / states",
+                one.states, one.cold_s, one.warm_s
+            ),
+        ));
+        let k = shadowcheck_plan::units::DEFAULT_STATES_PER_PROGRAM;
+        progress(&format!(
+            "{name}: compile time per state, {k} states per program"
+        ));
+        let many = suite::compile_cost(&name, set, stride, k);
+        let mut cost = DriverCost {
+            driver: d,
+            per_variant_s: one.per_variant_s(),
+            per_set_s: None,
+            units_per_set: None,
+        };
+        match &many {
             Ok(c) => {
-                per_variant.push((d, c.per_variant_s()));
-                let detail = format!(
-                    "one case per compiled state, {} states (every {stride}th of the fixtures): cold {:.2} s, same cases warm {:.2} s; (cold - warm) / states",
-                    c.states, c.cold_s, c.warm_s
-                );
-                rows.push(Measurement::new(
-                    ids::COMPILE_PER_VARIANT,
-                    Some(&name),
-                    c.per_variant_s() * 1e3,
-                    "ms",
-                    detail,
-                ));
+                if let (Some(st), Some(set_s), Some(p)) =
+                    (c.per_state_s(), c.per_set_s(), c.per_pass)
+                {
+                    let units = p.units as f64 / p.sets.max(1) as f64;
+                    cost.per_set_s = Some(set_s);
+                    cost.units_per_set = Some(units);
+                    let (fixed, per_unit) = cost.fixed_and_per_unit_s();
+                    rows.push(Measurement::new(
+                        ids::COMPILE_PER_STATE,
+                        Some(&name),
+                        st * 1e3,
+                        "ms",
+                        format!(
+                            "the same cases, up to {} states per program: {} distinct sets of {} units in all over {} programs; cold {:.2} s, warm {:.2} s; (cold - warm) / units",
+                            p.states_per_program, p.sets, p.units, p.programs, c.cold_s, c.warm_s
+                        ),
+                    ));
+                    rows.push(Measurement::new(
+                        ids::COMPILE_PER_SET,
+                        Some(&name),
+                        set_s * 1e3,
+                        "ms",
+                        format!(
+                            "(cold - warm) / sets: one variant sampling {units:.1} states on average; with the one-state variant, a variant costs {:.1} ms + {:.1} ms per state it samples",
+                            fixed * 1e3,
+                            per_unit * 1e3
+                        ),
+                    ));
+                }
             }
             Err(e) => unavailable.push(Unavailable {
-                what: "compile time per variant".into(),
-                backend: Some(name),
-                reason: e,
+                what: "compile time per state".into(),
+                backend: Some(name.clone()),
+                reason: e.clone(),
             }),
         }
+        costs.push(cost);
     }
-    per_variant
+    costs
 }
 
 /// The Mesa backends of a suite measurement and where its runs go.
@@ -92,14 +174,16 @@ pub struct Mesa<'a> {
     pub out_root: &'a Path,
 }
 
-/// Every Mesa backend in one `shadowcheck run`: cold, with the cache it filled, cold with
-/// `--fast-compile`; then the floor (compiled states or cache entries x compile time) and the
-/// cold run over it.
+/// Every Mesa backend in one `shadowcheck run`: cold with one state per program, cold (the
+/// default, many states per program), with the cache it filled, cold with `--fast-compile`; the
+/// A/B rows of the two cold runs (`grouping.rs`); then the floors (compiled states x compile
+/// time per variant; drawn (program, state) pairs x compile time per state) and the cold run over
+/// the latter.
 pub fn suite_rows(
     o: &BenchOptions,
     set: &CaseSet,
     m: &Mesa<'_>,
-    per_variant: &[(Driver, f64)],
+    costs: &[DriverCost],
     rows: &mut Vec<Measurement>,
     unavailable: &mut Vec<Unavailable>,
     progress: &mut dyn FnMut(&str),
@@ -107,36 +191,55 @@ pub fn suite_rows(
     if m.backends.is_empty() {
         return;
     }
-    let cold = mesa_suite_runs(o, m, rows, unavailable, progress);
-    // The floor: every backend's compiled states x its driver's compile time, over the cores.
-    if per_variant.is_empty() {
+    let runs = mesa_suite_runs(o, m, rows, unavailable, progress);
+    if let (Some(one), Some(cold)) = (&runs.one_state, &runs.cold) {
+        rows.extend(grouping::ab_rows(
+            one,
+            cold,
+            &m.out_root.join(ids::MESA_ONE_STATE),
+            &m.out_root.join(ids::MESA_COLD),
+            runs.every,
+        ));
+    }
+    if let Some(cold) = &runs.cold {
+        rows.extend(grouping::states_per_set_rows(cold));
+    }
+    if costs.is_empty() {
         return;
     }
     let cores = Machine::describe(None).nproc.max(1) as f64;
-    let heavy = states_floor_row(o, set, m, per_variant, cores, rows);
-    cache_floor_rows(per_variant, cores, heavy, &cold, rows);
+    let per_variant: Vec<(Driver, f64)> =
+        costs.iter().map(|c| (c.driver, c.per_variant_s)).collect();
+    states_floor_row(o, set, m, &per_variant, cores, rows);
+    if let Some(cold) = &runs.cold {
+        rows.extend(grouping::floor_rows(cold, costs, cores, runs.cache_entries));
+    }
 }
 
-/// What the cold suite run left for the floor rows.
-struct ColdRun {
-    /// Its wall time, when it ran.
-    wall_s: Option<f64>,
-    /// The entries it wrote to its empty shader cache.
+/// What the Mesa suite runs left for the rows after them.
+struct MesaRuns {
+    /// Every Mesa driver of the project ran, over the default fixtures: the goals apply.
+    every: bool,
+    /// The cold run (default states per program) and the entries it wrote to its empty cache.
+    cold: Option<suite::SuiteRun>,
     cache_entries: usize,
+    /// The cold run with one state per program.
+    one_state: Option<suite::SuiteRun>,
 }
 
 /// The label of the Mesa suite rows and of their shader caches.
 const MESA: &str = "mesa";
 
-/// The three runs of the suite over every Mesa backend: cold, cached (the cold run's cache),
-/// cold with `--fast-compile` (a fresh cache).
+/// The four runs of the suite over every Mesa backend, in this order: cold with one state per
+/// program and cold with the default (the A/B pair, one right after the other), cached (the
+/// second run's cache), cold with `--fast-compile` (a fresh cache).
 fn mesa_suite_runs(
     o: &BenchOptions,
     m: &Mesa<'_>,
     rows: &mut Vec<Measurement>,
     unavailable: &mut Vec<Unavailable>,
     progress: &mut dyn FnMut(&str),
-) -> ColdRun {
+) -> MesaRuns {
     let drivers: Vec<Driver> = Driver::MESA
         .iter()
         .copied()
@@ -147,13 +250,20 @@ fn mesa_suite_runs(
         })
         .collect();
     let every = drivers.len() == Driver::MESA.len() && !o.quick;
-    let mut cold = ColdRun {
-        wall_s: None,
+    let mut runs = MesaRuns {
+        every,
+        cold: None,
         cache_entries: 0,
+        one_state: None,
     };
-    // Cold then cached share one cache; the --fast-compile cold run gets a fresh one.
+    // Cold then cached share one cache; every other cold run gets a fresh one.
     let mut cache = None;
     for (id, extra, cached) in [
+        (
+            ids::MESA_ONE_STATE,
+            &["--states-per-program", "1"][..],
+            false,
+        ),
         (ids::MESA_COLD, &[][..], false),
         (ids::MESA_CACHED, &[][..], true),
         (ids::MESA_FAST_COMPILE, &["--fast-compile"][..], false),
@@ -177,8 +287,7 @@ fn mesa_suite_runs(
             Ok(run) => {
                 let mut row = mesa_suite_row(id, &run, m);
                 if id == ids::MESA_COLD {
-                    cold.cache_entries = cache.as_ref().map_or(0, |c| c.entries());
-                    cold.wall_s = Some(run.wall_s);
+                    runs.cache_entries = cache.as_ref().map_or(0, |c| c.entries());
                     if every {
                         row = row.with_target(Target::new(
                             Goal::AtMost,
@@ -187,6 +296,9 @@ fn mesa_suite_runs(
                         ));
                     }
                     rows.push(cold_rss_row(&run));
+                    runs.cold = Some(run);
+                } else if id == ids::MESA_ONE_STATE {
+                    runs.one_state = Some(run);
                 }
                 rows.push(row);
             }
@@ -197,7 +309,7 @@ fn mesa_suite_runs(
             }),
         }
     }
-    cold
+    runs
 }
 
 /// The progress line of one Mesa suite run.
@@ -258,9 +370,9 @@ fn mesa_suite_row(id: &str, run: &suite::SuiteRun, m: &Mesa<'_>) -> Measurement 
     )
 }
 
-/// The floor from compiled (API path, state) pairs: per backend its compiled states x its
-/// driver's compile time per variant, over the cores (never below the longest backend alone).
-/// Returns how many backends compile anything.
+/// The floor of one state per program, from compiled (API path, state) pairs: per backend its
+/// compiled states x its driver's compile time per variant, over the cores (never below the
+/// longest backend alone).
 fn states_floor_row(
     o: &BenchOptions,
     set: &CaseSet,
@@ -268,7 +380,7 @@ fn states_floor_row(
     per_variant: &[(Driver, f64)],
     cores: f64,
     rows: &mut Vec<Measurement>,
-) -> usize {
+) {
     let quick_set;
     let suite_set = if o.quick {
         quick_set = crate::run::load_cases(m.fixtures);
@@ -279,8 +391,6 @@ fn states_floor_row(
     let mut floor = 0.0;
     // One backend is one worker thread: the floor is never below its own compile time.
     let mut longest: f64 = 0.0;
-    // Backends that compile anything: more cores than these cannot be used.
-    let mut heavy = 0usize;
     let mut parts = Vec::new();
     let mut complete = true;
     for n in m.backends {
@@ -304,7 +414,6 @@ fn states_floor_row(
                 let states = suite_set.compiled_states_on(b.capabilities());
                 floor += states as f64 * cost;
                 longest = longest.max(states as f64 * cost);
-                heavy += usize::from(states > 0);
                 parts.push(format!("{n} {states}"));
             }
             Err(_) => complete = false,
@@ -322,49 +431,4 @@ fn states_floor_row(
             if complete { "" } else { "; some backend had no figure" }
         ),
     ));
-    heavy
-}
-
-/// The same floor with the driver's own count: the entries the cold run wrote to its empty shader
-/// cache (distinct states in the driver's terms: formats it stores alike share a variant); and
-/// the cold run over it.
-fn cache_floor_rows(
-    per_variant: &[(Driver, f64)],
-    cores: f64,
-    heavy: usize,
-    cold: &ColdRun,
-    rows: &mut Vec<Measurement>,
-) {
-    let cold_entries = cold.cache_entries;
-    let mean = per_variant.iter().map(|(_, c)| c).sum::<f64>() / per_variant.len() as f64;
-    let usable = cores.min(heavy.max(1) as f64);
-    let floor = cold_entries as f64 * mean / usable;
-    rows.push(Measurement::new(
-        ids::COLD_FLOOR,
-        None,
-        floor,
-        "s",
-        format!(
-            "{cold_entries} entries written to the empty shader cache by the cold run x {:.1} ms (mean measured compile time per variant) / {usable} cores (the cores, or the backends that compile if fewer)",
-            mean * 1e3
-        ),
-    ));
-    if let Some(c) = cold.wall_s.filter(|_| floor > 0.0) {
-        rows.push(
-            Measurement::new(
-                ids::COLD_OVER_FLOOR,
-                None,
-                c / floor,
-                "x",
-                format!(
-                    "cold suite {c:.1} s over the floor of the variants it compiled, {floor:.1} s"
-                ),
-            )
-            .with_target(Target::new(
-                Goal::AtMost,
-                targets17::COLD_OVER_FLOOR,
-                "cold-run goal",
-            )),
-        );
-    }
 }

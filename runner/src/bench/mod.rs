@@ -10,6 +10,7 @@
 pub mod cold;
 pub mod cpu;
 pub mod floor;
+pub mod grouping;
 pub mod machine;
 pub mod markdown;
 pub mod run;
@@ -154,16 +155,32 @@ pub mod ids {
     pub const MESA_COLD: &str = "suite_mesa_cold_s";
     pub const MESA_CACHED: &str = "suite_mesa_cached_s";
     pub const MESA_FAST_COMPILE: &str = "suite_mesa_fast_compile_cold_s";
+    /// The same cold suite with one sampler state per program (`run --states-per-program 1`).
+    pub const MESA_ONE_STATE: &str = "suite_mesa_one_state_cold_s";
+    /// The cold suite over the one-state cold suite, run one after the other.
+    pub const MESA_COLD_OVER_ONE_STATE: &str = "suite_mesa_cold_over_one_state";
+    /// Tests whose status differs between those two runs (known flaky ones aside).
+    pub const MESA_VERDICTS_DIFFERING: &str = "suite_mesa_verdicts_differing";
+    /// Per GL backend: (program, state) pairs drawn per (program, states) set in the cold run.
+    pub const STATES_PER_SET: &str = "states_per_program_set";
+    /// Distinct (API path, state) pairs per shader cache entry, cold egl:llvmpipe:core over gl46.
+    pub const STATES_PER_CACHE_ENTRY: &str = "states_per_cache_entry";
     /// Tests per distinct compiled sampler state, per API path (backend column: the path).
     pub const CHECKS_PER_STATE: &str = "checks_per_compiled_state";
     /// Harness and driver cost per check after compilation (warm pass), microseconds.
     pub const HARNESS_PER_CHECK: &str = "gl_warm_us_per_check";
-    /// Measured compile time of one shader variant (cold minus warm, per state), milliseconds.
+    /// Measured compile time of one shader variant of one state (one state per program; cold
+    /// minus warm, per state), milliseconds.
     pub const COMPILE_PER_VARIANT: &str = "compile_ms_per_variant";
+    /// The same cases with many states per program: cold minus warm per (program, state) pair.
+    pub const COMPILE_PER_STATE: &str = "compile_ms_per_state";
+    /// ... and per (program, states) set, one variant of a program sampling several states.
+    pub const COMPILE_PER_SET: &str = "compile_ms_per_program_set";
     /// Compiled states of the Mesa backends ([`shadowcheck_cases::coverage::StateKey`] per API
     /// path) x their driver's compile time, over the cores.
     pub const COLD_FLOOR_STATES: &str = "cold_floor_states_s";
-    /// Variants the cold suite wrote to its empty shader cache x the compile time, over the cores.
+    /// (program, state) pairs the cold suite's workers drew x the compile time per state, over
+    /// the cores.
     pub const COLD_FLOOR: &str = "cold_floor_s";
     pub const COLD_OVER_FLOOR: &str = "suite_mesa_cold_over_floor";
 }

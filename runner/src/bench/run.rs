@@ -96,7 +96,7 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
     let (available, gl_version) = gl_rows(o, &e2e_fixtures, &mut found, progress);
     llvmpipe_one_thread_rows(o, &available, &mut found, progress);
 
-    let per_variant = cold::compile_rows(
+    let costs = cold::compile_rows(
         o,
         &set,
         &available,
@@ -109,7 +109,7 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
         &set,
         &available,
         &e2e_fixtures,
-        &per_variant,
+        &costs,
         &mut found,
         progress,
     );
@@ -343,7 +343,7 @@ fn suite_rows(
     set: &crate::run::CaseSet,
     available: &[String],
     e2e_fixtures: &[PathBuf],
-    per_variant: &[(Driver, f64)],
+    costs: &[cold::DriverCost],
     found: &mut Found,
     progress: &mut dyn FnMut(&str),
 ) {
@@ -369,11 +369,27 @@ fn suite_rows(
         o,
         set,
         &mesa,
-        per_variant,
+        costs,
         &mut found.rows,
         &mut found.unavailable,
         progress,
     );
+    if !o.quick && available.iter().any(|b| b == "egl:llvmpipe:core") {
+        progress("egl:llvmpipe:core: gl46 fixtures, empty shader cache (states per cache entry)");
+        let root = o
+            .fixtures
+            .first()
+            .map(PathBuf::as_path)
+            .unwrap_or(Path::new("cases/fixtures"));
+        match super::grouping::cache_entry_row(&o.exe, root, &out_root.join("gl46-entries")) {
+            Ok(row) => found.rows.push(row),
+            Err(e) => found.unavailable.push(Unavailable {
+                what: "states per cache entry".into(),
+                backend: Some("egl:llvmpipe:core".into()),
+                reason: e,
+            }),
+        }
+    }
     let _ = std::fs::remove_dir_all(&out_root);
 }
 

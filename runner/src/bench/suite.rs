@@ -6,6 +6,7 @@ use crate::backend::{self, Options};
 use crate::events::{Fanout, Timing};
 use crate::records::{exit, Outcome, Results, TestResult};
 use crate::run::{self, CaseSet, Settings};
+use shadowcheck_gl::worker::WorkerStats;
 use std::path::{Path, PathBuf};
 use std::process::Stdio;
 use std::time::Instant;
@@ -232,11 +233,14 @@ pub struct SuiteRun {
     pub exit_code: i32,
     /// Seconds each backend spent in its implementation (`run --timings`), in the order printed.
     pub backend_s: Vec<(String, f64)>,
+    /// What each GL worker compiled and drew (its last stderr line, shown by `run -v`).
+    pub worker_stats: Vec<(String, WorkerStats)>,
 }
 
-/// Runs `shadowcheck run --backend B... --fixtures F... --out OUT --no-rerun --timings EXTRA...`
+/// Runs `shadowcheck run --backend B... --fixtures F... --out OUT --no-rerun --timings -v EXTRA...`
 /// and reaps it with wait4. Exit codes 0 (all passed) and 100 (failures) are both a finished
-/// suite. The child's stderr goes to `OUT.stderr` (read back for the per-backend timings).
+/// suite. The child's stderr goes to `OUT.stderr` (read back for the per-backend timings and,
+/// `-v` showing the workers' stderr, each GL worker's [`WorkerStats`]).
 pub fn suite(
     exe: &Path,
     backends: &[String],
@@ -252,7 +256,9 @@ pub fn suite(
     for f in fixtures {
         c.arg("--fixtures").arg(f);
     }
-    c.arg("--out").arg(out).args(["--no-rerun", "--timings"]);
+    c.arg("--out")
+        .arg(out)
+        .args(["--no-rerun", "--timings", "-v"]);
     c.args(extra);
     if let Some(parent) = out.parent() {
         std::fs::create_dir_all(parent)
@@ -303,7 +309,19 @@ pub fn suite(
         peak_rss_mib: ru.ru_maxrss as f64 / 1024.0,
         exit_code,
         backend_s: parse_timings(&stderr),
+        worker_stats: parse_worker_stats(&stderr),
     })
+}
+
+/// The `[<backend>] gl-worker stats: ...` lines of `run -v` (a GL worker's last line).
+pub fn parse_worker_stats(stderr: &str) -> Vec<(String, WorkerStats)> {
+    stderr
+        .lines()
+        .filter_map(|l| {
+            let (name, rest) = l.strip_prefix('[')?.split_once("] ")?;
+            Some((name.to_string(), WorkerStats::parse(rest)?))
+        })
+        .collect()
 }
 
 /// The `timings <backend>: N cases sent, X s in the backend ...` lines of `run --timings`.
@@ -328,23 +346,52 @@ pub struct CompileCost {
     pub states: usize,
     pub cold_s: f64,
     pub warm_s: f64,
+    /// What the worker drew (its [`WorkerStats`]: distinct pairs and sets, the same in both
+    /// passes), if it said.
+    pub per_pass: Option<WorkerStats>,
 }
 
 impl CompileCost {
     /// Seconds per variant: what the cold pass spent beyond the warm pass, per state.
     pub fn per_variant_s(&self) -> f64 {
-        ((self.cold_s - self.warm_s) / self.states.max(1) as f64).max(0.0)
+        self.excess_s() / self.states.max(1) as f64
+    }
+
+    /// What the cold pass spent beyond the warm pass.
+    fn excess_s(&self) -> f64 {
+        (self.cold_s - self.warm_s).max(0.0)
+    }
+
+    /// Seconds per unit of the sets drawn: the compile time of a state when states share
+    /// programs, the sets' fixed cost spread over their units.
+    pub fn per_state_s(&self) -> Option<f64> {
+        let p = self.per_pass.filter(|p| p.units > 0)?;
+        Some(self.excess_s() / p.units as f64)
+    }
+
+    /// Seconds per (program, states bound together) set: the compile time of one variant of a
+    /// program sampling several states.
+    pub fn per_set_s(&self) -> Option<f64> {
+        let p = self.per_pass.filter(|p| p.sets > 0)?;
+        Some(self.excess_s() / p.sets as f64)
     }
 }
 
-/// Measures [`CompileCost`] of `backend_name` over a sample of `set`'s compiled states.
+/// Measures [`CompileCost`] of `backend_name` over a sample of `set`'s compiled states, its
+/// worker sampling at most `states_per_program` states with one program (`run
+/// --states-per-program`).
 pub fn compile_cost(
     backend_name: &str,
     set: &CaseSet,
     stride: usize,
+    states_per_program: usize,
 ) -> Result<CompileCost, String> {
     let cache = ShaderCache::fresh("compile")?;
-    let mut b = backend::open(backend_name, &Options::default()).map_err(|e| e.to_string())?;
+    let opts = Options {
+        states_per_program,
+        ..Options::default()
+    };
+    let mut b = backend::open(backend_name, &opts).map_err(|e| e.to_string())?;
     let mut seen = std::collections::HashSet::new();
     let mut sample = CaseSet::default();
     for l in &set.cases {
@@ -361,16 +408,22 @@ pub fn compile_cost(
     let pass = |b: &mut Box<dyn backend::Backend>| {
         let t = Instant::now();
         let _ = quiet_pass(b.as_mut(), &sample);
-        t.elapsed().as_secs_f64()
+        let s = t.elapsed().as_secs_f64();
+        // What the worker wrote so far is not read: dropped, so that its held lines (capped)
+        // leave room for the stats line it writes at the end.
+        let _ = b.take_diagnostics();
+        s
     };
     let cold_s = pass(&mut b);
     let warm_s = pass(&mut b);
+    let per_pass = b.close().iter().find_map(|l| WorkerStats::parse(l));
     drop(b);
     drop(cache);
     Ok(CompileCost {
         states,
         cold_s,
         warm_s,
+        per_pass,
     })
 }
 
@@ -396,14 +449,34 @@ mod tests {
             states: 10,
             cold_s: 1.2,
             warm_s: 0.2,
+            per_pass: Some(WorkerStats {
+                states_per_program: 16,
+                programs: 2,
+                states: 20,
+                sets: 4,
+                units: 20,
+            }),
         };
         assert!((c.per_variant_s() - 0.1).abs() < 1e-12);
+        assert!((c.per_state_s().expect("stats") - 0.05).abs() < 1e-12);
+        assert!((c.per_set_s().expect("stats") - 0.25).abs() < 1e-12);
         let none = CompileCost {
             states: 0,
             cold_s: 0.1,
             warm_s: 0.2,
+            per_pass: None,
         };
         assert_eq!(none.per_variant_s(), 0.0);
+        assert_eq!(none.per_state_s(), None);
+    }
+
+    #[test]
+    fn worker_stats_are_read_from_the_verbose_run_output() {
+        let err = "timings egl:llvmpipe:core: 10 cases sent, 1.5 s in the backend\n[egl:llvmpipe:core] XDG_RUNTIME_DIR is invalid\n[egl:llvmpipe:core] gl-worker stats: states_per_program=16 programs=3 states=40 sets=5 units=41\n[soft] something\n";
+        let got = parse_worker_stats(err);
+        assert_eq!(got.len(), 1);
+        assert_eq!(got[0].0, "egl:llvmpipe:core");
+        assert_eq!((got[0].1.states, got[0].1.sets), (40, 5));
     }
 
     #[test]
