@@ -19,8 +19,6 @@ pub(super) struct Program {
     pub(super) u_dy: Option<glow::UniformLocation>,
     pub(super) u_c: Option<glow::UniformLocation>,
     pub(super) u_base: Option<glow::UniformLocation>,
-    /// The case's texture unit in a program of several (single-case draws).
-    pub(super) u_unit: Option<glow::UniformLocation>,
 }
 
 /// What a [`ShaderKey`] compiles to on one path.
@@ -68,6 +66,7 @@ unsafe fn compile(
             for (loc, name, _, _) in shaders::PARAM_ATTRIBS {
                 gl.bind_attrib_location(program, loc, name);
             }
+            gl.bind_attrib_location(program, shaders::UNIT_ATTRIB.0, shaders::UNIT_ATTRIB.1);
             gl.link_program(program);
             if !gl.get_program_link_status(program) {
                 return Err(format!(
@@ -91,7 +90,6 @@ unsafe fn compile(
                 u_dy: u("u_dy"),
                 u_c: u("u_c"),
                 u_base: u("u_base"),
-                u_unit: u("u_unit"),
             }))
         }
     }

@@ -3,14 +3,16 @@
 //! the WebGL port runs the same es300 path: the lookup (`paths::plan_with`), the shader text
 //! (`shaders::glsl`), the bytes of every level (`texels::level_bytes`, `transfer_for`) and the
 //! TexParameter calls (`unit::tex_params`). Consecutive cases with equal texture and sampler share one texture
-//! object, as on the GL worker's ES contexts.
+//! object, and the texture states are drawn in the plan's bundles (`units::plan_batch`): state i
+//! of a bundle on texture unit i, one program sampling them all, the case's unit a uniform, as
+//! on the GL worker's single-case paths.
 
 use base64::Engine;
 use serde::Serialize;
 use shadowcheck_model::{Case, Target};
 use shadowcheck_plan::texels::{level_bytes, transfer_for};
 use shadowcheck_plan::unit::{sampler_params, tex_params, ParamValue, TexParam};
-use shadowcheck_plan::{paths, shaders, Answer, GlInfo, Plan, PlanError};
+use shadowcheck_plan::{shaders, sweep, units, Answer, GlInfo, PlanError};
 use shadowcheck_protocol::{PathResult, PathSkip, Rgba};
 
 /// Most (case, path) pixels of one job (the page's framebuffer is 256 x 256).
@@ -21,13 +23,25 @@ pub struct Job {
     /// (vertex, fragment) source per program.
     programs: Vec<[String; 2]>,
     slots: usize,
+    /// The texture states, each made once.
     groups: Vec<Group>,
+    /// The draws, bundle after bundle, each with its states bound to units 0, 1, ...
+    bundles: Vec<BundleJob>,
 }
 
 #[derive(Debug, Serialize)]
 struct Group {
     cases: Vec<usize>,
-    texture: Texture,
+    /// `None` (absent): the texture could not be described; its cases answer the error and its
+    /// units stay empty.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    texture: Option<Texture>,
+}
+
+#[derive(Debug, Serialize)]
+struct BundleJob {
+    /// The groups bound to units 0, 1, ...
+    states: Vec<usize>,
     draws: Vec<Draw>,
 }
 
@@ -74,6 +88,8 @@ struct Draw {
     api: String,
     slot: usize,
     program: usize,
+    /// The texture unit of the case's state (the program's `u_unit`).
+    unit: usize,
     p: [Js; 4],
     x: Js,
     dx: [Js; 4],
@@ -181,77 +197,72 @@ pub fn build(info: &GlInfo, cases: &[Case]) -> Built {
             programs: vec![],
             slots: 0,
             groups: vec![],
+            bundles: vec![],
         },
         layout: Layout::default(),
     };
-    let mut planned: Vec<(usize, Vec<Plan>)> = Vec::new();
-    for (ci, case) in cases.iter().enumerate() {
-        let mut plans = Vec::new();
-        for &path in &case.api {
-            match paths::plan_with(path, case, info.form) {
-                Ok(p) => plans.push(p),
-                Err(reason) => b.skipped[ci].push(PathSkip {
-                    api: path.key().to_string(),
-                    reason,
-                }),
+    let jobs: Vec<sweep::Job> = cases.iter().map(sweep::Job::own).collect();
+    let plan = units::plan_batch(info, &jobs, units::DEFAULT_STATES_PER_PROGRAM);
+    for (ci, why) in plan.unplanned {
+        b.answers[ci] = Some(Answer::Skip(why));
+    }
+    b.skipped = plan.skipped;
+    for group in &plan.groups {
+        let cis: Vec<usize> = group.iter().map(|(ci, _)| *ci).collect();
+        let texture = match texture_of(info, &cases[cis[0]]) {
+            Ok(t) => Some(t),
+            Err(e) => {
+                for &ci in &cis {
+                    b.answers[ci] = Some(Answer::Error(e.to_string()));
+                }
+                None
             }
-        }
-        if plans.is_empty() {
-            let why: Vec<String> = b.skipped[ci].drain(..).map(|s| s.reason).collect();
-            b.answers[ci] = Some(Answer::Skip(why.join("; ")));
-        } else {
-            planned.push((ci, plans));
-        }
+        };
+        b.job.groups.push(Group {
+            cases: cis,
+            texture,
+        });
     }
     let mut sources: Vec<[String; 2]> = Vec::new();
-    for (ci, plans) in planned {
-        let case = &cases[ci];
-        let shares = b.job.groups.last().is_some_and(|g| {
-            let first = &cases[g.cases[0]];
-            first.texture == case.texture && first.sampler == case.sampler
-        });
-        if !shares {
-            match texture_of(info, case) {
-                Ok(texture) => b.job.groups.push(Group {
-                    cases: vec![],
-                    texture,
-                    draws: vec![],
-                }),
-                Err(e) => {
-                    b.answers[ci] = Some(Answer::Error(e.to_string()));
+    for bundle in &plan.bundles {
+        let (vs, fs) = shaders::glsl(info, &bundle.key, None, bundle.units());
+        let src = [vs, fs];
+        let program = match sources.iter().position(|s| *s == src) {
+            Some(i) => i,
+            None => {
+                sources.push(src);
+                sources.len() - 1
+            }
+        };
+        let mut draws = Vec::new();
+        for (unit, &g) in bundle.states.iter().enumerate() {
+            for (ci, plans) in &plan.groups[g] {
+                if b.answers[*ci].is_some() {
                     continue;
+                }
+                for p in plans.iter().filter(|p| p.key == bundle.key) {
+                    let slot = b.layout.slots.len();
+                    b.layout
+                        .slots
+                        .push((*ci, p.key.path.key().to_string(), p.note.clone()));
+                    draws.push(Draw {
+                        case: *ci,
+                        api: p.key.path.key().to_string(),
+                        slot,
+                        program,
+                        unit,
+                        p: js4(p.p),
+                        x: Js(p.x),
+                        dx: js4(p.dx),
+                        dy: js4(p.dy),
+                    });
                 }
             }
         }
-        let Some(group) = b.job.groups.last_mut() else {
-            continue;
-        };
-        group.cases.push(ci);
-        for plan in plans {
-            let (vs, fs) = shaders::glsl(info, &plan.key, None, 1);
-            let src = [vs, fs];
-            let program = match sources.iter().position(|s| *s == src) {
-                Some(i) => i,
-                None => {
-                    sources.push(src);
-                    sources.len() - 1
-                }
-            };
-            let slot = b.layout.slots.len();
-            b.layout
-                .slots
-                .push((ci, plan.key.path.key().to_string(), plan.note.clone()));
-            group.draws.push(Draw {
-                case: ci,
-                api: plan.key.path.key().to_string(),
-                slot,
-                program,
-                p: js4(plan.p),
-                x: Js(plan.x),
-                dx: js4(plan.dx),
-                dy: js4(plan.dy),
-            });
-        }
+        b.job.bundles.push(BundleJob {
+            states: bundle.states.clone(),
+            draws,
+        });
     }
     b.job.programs = sources;
     b.job.slots = b.layout.slots.len();

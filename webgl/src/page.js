@@ -160,6 +160,8 @@ globalThis.shadowcheck = (() => {
     gl.attachShader(prog, shader(gl.VERTEX_SHADER, src[0]));
     gl.attachShader(prog, shader(gl.FRAGMENT_SHADER, src[1]));
     gl.bindAttribLocation(prog, 0, "a_pos");
+    // The case's unit in a program of several samplers (shaders/mod.rs, UNIT_ATTRIB).
+    gl.bindAttribLocation(prog, 5, "a_unit");
     gl.linkProgram(prog);
     if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) {
       throw new Error("program link failed: " + gl.getProgramInfoLog(prog));
@@ -167,13 +169,20 @@ globalThis.shadowcheck = (() => {
     const u = (n) => gl.getUniformLocation(prog, n);
     p = { prog, u_p: u("u_p"), u_x: u("u_x"), u_dx: u("u_dx"), u_dy: u("u_dy"), u_c: u("u_c") };
     gl.useProgram(prog);
+    // One sampler `u_tex` on unit 0, or `u_tex0`, `u_tex1`, ... on units 0, 1, ... (units.rs).
     const t = u("u_tex");
     if (t !== null) gl.uniform1i(t, 0);
+    for (let i = 0; ; i++) {
+      const ti = u("u_tex" + i);
+      if (ti === null) break;
+      gl.uniform1i(ti, i);
+    }
     programs.set(key, p);
     return p;
   }
 
-  // Creates, uploads and parameterizes the texture of a group (texture.rs: create + set_state).
+  // Creates, uploads and parameterizes the texture of a group (texture.rs: create + set_state),
+  // left bound to unit 0 (runJob unbinds it).
   function texture(t) {
     const tex = gl.createTexture();
     gl.activeTexture(gl.TEXTURE0);
@@ -215,8 +224,9 @@ globalThis.shadowcheck = (() => {
     return tex;
   }
 
-  // A bound sampler object with the group's SamplerParameter calls (unitstate.rs: its state is used
-  // instead of the texture's, ES 3.0 §3.8.2), or null when the group has none.
+  // A sampler object with the group's SamplerParameter calls (unitstate.rs: its state is used
+  // instead of the texture's, ES 3.0 §3.8.2; bound to the group's unit by each bundle), or null
+  // when the group has none.
   function sampler(t) {
     if (!t.sampler || t.sampler.length === 0) return null;
     const s = gl.createSampler();
@@ -226,9 +236,20 @@ globalThis.shadowcheck = (() => {
       else throw new Error("sampler " + p.call + ": WebGL 2.0 has no vector SamplerParameter");
       check("glSamplerParameter for " + p.call);
     }
-    gl.bindSampler(0, s);
-    check("glBindSampler");
     return s;
+  }
+
+  // Binds (or, with `on` false, unbinds) the states of bundle `b`: group b.states[i]'s texture
+  // and sampler object on unit i (units.rs); a group without objects leaves its unit empty.
+  function bindBundle(b, objects, on) {
+    b.states.forEach((g, unit) => {
+      const o = objects[g];
+      if (!o) return;
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(o.target, on ? o.tex : null);
+      if (o.so) gl.bindSampler(unit, on ? o.so : null);
+    });
+    gl.activeTexture(gl.TEXTURE0);
   }
 
   function draw(d, src) {
@@ -237,6 +258,7 @@ globalThis.shadowcheck = (() => {
     const y = Math.floor(d.slot / FB);
     gl.viewport(x, y, 1, 1);
     gl.useProgram(p.prog);
+    gl.vertexAttrib1f(5, d.unit);
     // Numbers, or "Infinity" / "-Infinity" / "NaN" (job.rs, Js).
     gl.uniform4fv(p.u_p, d.p.map(Number));
     gl.uniform1f(p.u_x, Number(d.x));
@@ -247,11 +269,11 @@ globalThis.shadowcheck = (() => {
     gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
 
-  // job: {programs: [[vs, fs]], slots, groups: [{cases: [i], texture: {...}, draws: [{case, api,
-  // slot, program, p, x, dx, dy}]}]}. Answer: {pixels: base64 of slots x RGBA32F, errors: {case:
-  // message}}; a pixel no draw wrote stays -1. With a lost context (before, during or after the
-  // job, an exception it caused included): {lost: why}. opts.lose: the test fault, the context
-  // lost once the first group is drawn.
+  // job: {programs: [[vs, fs]], slots, groups: [{cases: [i], texture: {...}}], bundles: [{states:
+  // [group], draws: [{case, api, slot, program, unit, p, x, dx, dy}]}]}. Answer: {pixels: base64
+  // of slots x RGBA32F, errors: {case: message}}; a pixel no draw wrote stays -1. With a lost
+  // context (before, during or after the job, an exception it caused included): {lost: why}.
+  // opts.lose: the test fault, the context lost once the first bundle is drawn.
   function run(job, opts) {
     try {
       const answer = runJob(job, opts || {});
@@ -269,20 +291,25 @@ globalThis.shadowcheck = (() => {
     gl.viewport(0, 0, FB, FB);
     gl.clearColor(-1, -1, -1, -1);
     gl.clear(gl.COLOR_BUFFER_BIT);
-    for (const g of job.groups) {
+    // Every group's texture and sampler object first; each bundle then binds its own.
+    const objects = job.groups.map((g) => {
+      if (!g.texture) return null;
       drain();
       let tex;
-      let so = null;
       try {
         tex = texture(g.texture);
-        so = sampler(g.texture);
+        gl.bindTexture(g.texture.target, null);
+        return { tex, so: sampler(g.texture), target: g.texture.target };
       } catch (e) {
         for (const c of g.cases) errors[c] = e.message;
         if (tex) gl.deleteTexture(tex);
-        gl.bindSampler(0, null);
-        continue;
+        return null;
       }
-      for (const d of g.draws) {
+    });
+    for (const b of job.bundles) {
+      drain();
+      bindBundle(b, objects, true);
+      for (const d of b.draws) {
         if (errors[d.case] !== undefined) continue;
         try {
           draw(d, job.programs[d.program]);
@@ -293,17 +320,18 @@ globalThis.shadowcheck = (() => {
       try {
         check("drawing");
       } catch (e) {
-        for (const c of g.cases) if (errors[c] === undefined) errors[c] = e.message;
+        for (const d of b.draws) if (errors[d.case] === undefined) errors[d.case] = e.message;
       }
-      gl.deleteTexture(tex);
-      if (so) {
-        gl.bindSampler(0, null);
-        gl.deleteSampler(so);
-      }
+      bindBundle(b, objects, false);
       if (opts.lose) {
         opts.lose = false;
         loseForTest();
       }
+    }
+    for (const o of objects) {
+      if (!o) continue;
+      gl.deleteTexture(o.tex);
+      if (o.so) gl.deleteSampler(o.so);
     }
     const rows = Math.max(1, Math.ceil(job.slots / FB));
     const px = new Float32Array(FB * rows * 4);

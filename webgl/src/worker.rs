@@ -56,7 +56,7 @@ pub struct PageInfo {
 
 /// Environment variable of the worker's test faults (the tests of the runner and the crate): a
 /// fault made in the real browser at every page call, `lose-context` (WEBGL_lose_context's
-/// loseContext() once the job's first texture group is drawn, or before a state case's call) or
+/// loseContext() once the job's first bundle is drawn, or before a state case's call) or
 /// `crash-renderer` (the page's renderer process crashed by `Page.crash` before each job).
 pub const TEST_FAULT_ENV: &str = "SHADOWCHECK_WEBGL_TEST_FAULT";
 

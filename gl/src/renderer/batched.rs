@@ -160,28 +160,8 @@ impl Renderer {
         st: &mut BatchState,
     ) {
         let bound = self.bind_bundle(jobs, groups, bundle, objects, st);
-        let units = bundle.units();
         if !shaders::batchable(&bundle.key) {
-            for (unit, &g) in bundle.states.iter().enumerate() {
-                if !bound[unit] {
-                    continue;
-                }
-                let target = state_case(jobs, groups, g).texture.target;
-                for (ci, plans) in &groups[g] {
-                    for plan in plans.iter().filter(|p| p.key == bundle.key) {
-                        let slot = self.take_slots(st, 1);
-                        match self.draw(plan, target, slot, (unit, units)) {
-                            Ok(()) => st.pending.push(Pending {
-                                case: *ci,
-                                path: plan.key.path,
-                                slot,
-                                note: plan.note.clone(),
-                            }),
-                            Err(e) => st.fail(*ci, format!("{}: {e}", plan.key.path)),
-                        }
-                    }
-                }
-            }
+            self.draw_singly(jobs, groups, bundle, &bound, st);
         }
         for b in batches {
             // A case that failed on another path (or whose texture failed) is drawn with the
@@ -218,21 +198,6 @@ impl Renderer {
                 }
             }
         }
-        let program = ProgramKey {
-            key: bundle.key,
-            units,
-            batched: shaders::batchable(&bundle.key),
-        };
-        self.count_bundle(
-            program,
-            bundle.states.iter().map(|&g| state_case(jobs, groups, g)),
-        );
-        self.unbind_bundle(jobs, groups, bundle, objects, &bound);
-        let cis: Vec<usize> = bundle
-            .states
-            .iter()
-            .flat_map(|&g| group_cases(groups, g))
-            .collect();
-        self.check_group(cis, st);
+        self.finish_bundle(jobs, groups, bundle, objects, &bound, st);
     }
 }

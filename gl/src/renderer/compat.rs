@@ -4,15 +4,15 @@
 //! sampler views whose DEPTH_TEXTURE_MODE swizzle depends on which path drew before, and one
 //! path's answer must not depend on another path. Within a path, the cases of a state share its
 //! texture as on a core context, and the path's bundles (`shadowcheck_plan::units`) bind their
-//! states together: a GLSL program picks the case's unit by the uniform `u_unit`, an ARB program
+//! states together: a GLSL program picks the case's unit by an attribute's current value, an ARB program
 //! by the weights of its locals, and fixed function draws one unit alone. A state's texture of
 //! the first path it is drawn on is the one read back.
 
 use super::units::{state_case, Groups, StateObjects};
-use super::{BatchState, Pending, Renderer};
+use super::{BatchState, Renderer};
 use shadowcheck_model::ApiPath;
-use shadowcheck_plan::units::{Bundle, ProgramKey};
-use shadowcheck_plan::{Job, LodForm};
+use shadowcheck_plan::units::Bundle;
+use shadowcheck_plan::Job;
 
 impl Renderer {
     /// Runs `groups` (a batch's texture states) path by path, each path's `bundles` in order.
@@ -71,51 +71,7 @@ impl Renderer {
         st: &mut BatchState,
     ) {
         let bound = self.bind_bundle(jobs, groups, bundle, objects, st);
-        let units = bundle.units();
-        for (unit, &g) in bundle.states.iter().enumerate() {
-            if !bound[unit] {
-                continue;
-            }
-            let target = state_case(jobs, groups, g).texture.target;
-            for (ci, plans) in &groups[g] {
-                if st.answers[*ci].is_some() {
-                    continue;
-                }
-                for plan in plans.iter().filter(|p| p.key == bundle.key) {
-                    let slot = self.take_slots(st, 1);
-                    match self.draw(plan, target, slot, (unit, units)) {
-                        Ok(()) => st.pending.push(Pending {
-                            case: *ci,
-                            path: plan.key.path,
-                            slot,
-                            note: if plan.key.form == LodForm::Constant {
-                                "fixed-function".to_string()
-                            } else {
-                                plan.note.clone()
-                            },
-                        }),
-                        Err(e) => st.fail(*ci, format!("{}: {e}", plan.key.path)),
-                    }
-                }
-            }
-        }
-        let program = ProgramKey {
-            key: bundle.key,
-            units,
-            batched: false,
-        };
-        self.count_bundle(
-            program,
-            bundle.states.iter().map(|&g| state_case(jobs, groups, g)),
-        );
-        self.unbind_bundle(jobs, groups, bundle, objects, &bound);
-        let cis = bundle.states.iter().flat_map(|&g| {
-            groups[g]
-                .iter()
-                .filter(|(_, plans)| plans.iter().any(|p| p.key == bundle.key))
-                .map(|(ci, _)| *ci)
-        });
-        let cis: Vec<usize> = cis.collect();
-        self.check_group(cis, st);
+        self.draw_singly(jobs, groups, bundle, &bound, st);
+        self.finish_bundle(jobs, groups, bundle, objects, &bound, st);
     }
 }

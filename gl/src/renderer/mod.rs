@@ -12,7 +12,7 @@
 //! ES paths every case of a bundle that uses one program is drawn with one draw, each case two
 //! triangles over its own quad with its values (and its unit) as vertex attributes (see
 //! `batched.rs`). Compatibility contexts give each API path of a bundle textures of their own
-//! (see `run_compat_bundle`).
+//! (see `compat.rs`).
 
 mod batched;
 mod compat;
@@ -26,7 +26,7 @@ use crate::WorkerError;
 use glow::HasContext;
 use shadowcheck_model::{ApiPath, Target, Texels};
 use shadowcheck_plan::layout::{pixel, CAPACITY, FB_SIZE};
-use shadowcheck_plan::shaders::{arbfp_unit_weights, ARBFP_WEIGHTS};
+use shadowcheck_plan::shaders::{arbfp_unit_weights, ARBFP_WEIGHTS, UNIT_ATTRIB};
 use shadowcheck_plan::units::{self as plan_units, ProgramKey};
 use shadowcheck_plan::{Answer, GlInfo, Job, LodForm, Plan, ShaderKey};
 use shadowcheck_protocol::{PathResult, PathSkip};
@@ -238,8 +238,9 @@ impl Renderer {
         match compiled {
             Compiled::Glsl(p) => {
                 gl.use_program(Some(p.program));
-                if let Some(u) = &p.u_unit {
-                    gl.uniform_1_i32(Some(u), unit as i32);
+                if units > 1 {
+                    // The current value of the unit attribute (its array is never enabled).
+                    gl.vertex_attrib_1_f32(UNIT_ATTRIB.0, unit as f32);
                 }
                 gl.uniform_4_f32_slice(p.u_p.as_ref(), &plan.p);
                 gl.uniform_1_f32(p.u_x.as_ref(), plan.x);

@@ -3,12 +3,13 @@
 //! are made once and live while its bundles draw; a bundle binds them to its units, draws, and
 //! unbinds them, so a program never sees a unit left bound by another bundle.
 
-use super::{BatchState, Renderer};
+use super::{BatchState, Pending, Renderer};
 use crate::{texture, unitstate};
 use glow::HasContext;
 use shadowcheck_model::Case;
-use shadowcheck_plan::units::Bundle;
-use shadowcheck_plan::{Job, Plan};
+use shadowcheck_plan::shaders;
+use shadowcheck_plan::units::{Bundle, ProgramKey};
+use shadowcheck_plan::{Job, LodForm, Plan};
 
 /// The GL objects of one texture state: its texture (the sampler state on it, TexParameter)
 /// and its sampler object, if the cases bind one.
@@ -113,6 +114,80 @@ impl Renderer {
             self.gl.bind_texture(case.texture.target.gl(), None);
         }
         self.gl.active_texture(glow::TEXTURE0);
+    }
+
+    /// Draws every case of `bundle`'s bound states that uses its program and is not answered yet
+    /// into a pixel of its own, on its state's unit (the paths that are not batched).
+    pub(crate) unsafe fn draw_singly(
+        &mut self,
+        jobs: &[Job],
+        groups: &Groups,
+        bundle: &Bundle,
+        bound: &[bool],
+        st: &mut BatchState,
+    ) {
+        let units = bundle.units();
+        for (unit, &g) in bundle.states.iter().enumerate() {
+            if !bound[unit] {
+                continue;
+            }
+            let target = state_case(jobs, groups, g).texture.target;
+            for (ci, plans) in &groups[g] {
+                if st.answers[*ci].is_some() {
+                    continue;
+                }
+                for plan in plans.iter().filter(|p| p.key == bundle.key) {
+                    let slot = self.take_slots(st, 1);
+                    match self.draw(plan, target, slot, (unit, units)) {
+                        Ok(()) => st.pending.push(Pending {
+                            case: *ci,
+                            path: plan.key.path,
+                            slot,
+                            note: if plan.key.form == LodForm::Constant {
+                                "fixed-function".to_string()
+                            } else {
+                                plan.note.clone()
+                            },
+                        }),
+                        Err(e) => st.fail(*ci, format!("{}: {e}", plan.key.path)),
+                    }
+                }
+            }
+        }
+    }
+
+    /// After `bundle`'s draws: counted ([`Renderer::count_bundle`]), unbound, and a GL error makes
+    /// its cases that use its program and are not answered yet fail.
+    pub(crate) unsafe fn finish_bundle(
+        &mut self,
+        jobs: &[Job],
+        groups: &Groups,
+        bundle: &Bundle,
+        objects: &[Option<StateObjects>],
+        bound: &[bool],
+        st: &mut BatchState,
+    ) {
+        let program = ProgramKey {
+            key: bundle.key,
+            units: bundle.units(),
+            batched: shaders::batchable(&bundle.key),
+        };
+        self.count_bundle(
+            program,
+            bundle.states.iter().map(|&g| state_case(jobs, groups, g)),
+        );
+        self.unbind_bundle(jobs, groups, bundle, objects, bound);
+        let cis: Vec<usize> = bundle
+            .states
+            .iter()
+            .flat_map(|&g| {
+                groups[g]
+                    .iter()
+                    .filter(|(_, plans)| plans.iter().any(|p| p.key == bundle.key))
+                    .map(|(ci, _)| *ci)
+            })
+            .collect();
+        self.check_group(cis, st);
     }
 
     /// Done with group `g`'s objects: its sampler object is deleted, its texture queued for

@@ -159,6 +159,10 @@ pub const PARAM_ATTRIBS: [(u32, &str, i32, usize); 5] = [
     (3, "a_dy", 4, 13),
 ];
 
+/// The attribute of a single-case program of several samplers that names the case's unit (a
+/// current value, `glVertexAttrib1f`): (location, name).
+pub const UNIT_ATTRIB: (u32, &str) = (5, "a_unit");
+
 /// Can this key draw many cases at once, each its own pixel quad with its values as vertex
 /// attributes read as flat inputs (GLSL 3.30 core, GLSL ES 3.00)? The
 /// compatibility contexts' paths draw one pixel per case (`draw::run_compat_group`).
@@ -175,8 +179,8 @@ pub fn batchable(key: &ShaderKey) -> bool {
 ///
 /// `units`: the samplers the program declares, `u_tex0` on unit 0 to `u_tex{units-1}`, all of the
 /// key's type; each case names its unit (batched: the third component of `a_x`; single case: the
-/// uniform `u_unit`) and the lookup runs on that sampler alone (`units.rs`). One unit: the plain
-/// `u_tex`, no selection.
+/// attribute [`UNIT_ATTRIB`], passed on to the fragment shader) and the lookup runs on that sampler
+/// alone (`units.rs`). One unit: the plain `u_tex`, no selection.
 pub fn glsl(
     info: &GlInfo,
     key: &ShaderKey,
@@ -200,6 +204,11 @@ struct Language {
     /// The fragment result: `o` (declared by `out_decl`) or `gl_FragColor`.
     fout: &'static str,
     out_decl: &'static str,
+    /// The qualifiers of a value passed from vertex to fragment shader unchanged: `flat out` /
+    /// `flat in` (GLSL 1.30+, ES 3.00) or `varying` (GLSL 1.10/1.20, ES 1.00: interpolated, so
+    /// read with a margin).
+    vout: &'static str,
+    fin: &'static str,
 }
 
 /// The dialect of the key's API path on this context (GLSL 1.10/1.20, 1.30, 3.30+/4.00, ES).
@@ -274,11 +283,18 @@ fn language(info: &GlInfo, key: &ShaderKey) -> Language {
     } else {
         header
     };
+    let (vout, fin) = if vin == "attribute" {
+        ("varying", "varying")
+    } else {
+        ("flat out", "flat in")
+    };
     Language {
         header,
         vin,
         fout,
         out_decl,
+        vout,
+        fin,
     }
 }
 
@@ -296,6 +312,12 @@ fn vertex_shader(lang: &Language, batched: Option<i32>, units: usize) -> String 
             };
             format!(
                 "{header}{vin} vec2 a_pos;\n{vin} vec4 a_p;\n{vin} vec4 a_dx;\n{vin} vec4 a_dy;\n{vin} {x_type} a_x;\nuniform int u_base;\nflat out vec4 v_p;\nflat out vec4 v_dx;\nflat out vec4 v_dy;\nflat out float v_x;\n{unit_out}void main() {{\n  int s = u_base + int(a_x.y);\n  ivec2 corner = 2 * ivec2(s % {quads}, s / {quads}) + 2 * ivec2(a_pos);\n  gl_Position = vec4(vec2(corner) / {quads}.0 - 1.0, 0.0, 1.0);\n  v_p = a_p;\n  v_dx = a_dx;\n  v_dy = a_dy;\n  v_x = a_x.x;\n{unit_set}}}\n"
+            )
+        }
+        None if units > 1 => {
+            let (loc_name, vout) = (UNIT_ATTRIB.1, lang.vout);
+            format!(
+                "{header}{vin} vec2 a_pos;\n{vin} float {loc_name};\n{vout} float v_unit;\nvoid main() {{ gl_Position = vec4(a_pos, 0.0, 1.0); v_unit = {loc_name}; }}\n"
             )
         }
         None => format!(
@@ -341,8 +363,11 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
             "v_unit"
         }
         (true, false) => {
-            uniforms += "uniform int u_unit;\n";
-            "u_unit"
+            // A vertex attribute's current value, the same at every vertex, not a uniform: a
+            // driver may compile a variant per value of a uniform that a branch reads (zink
+            // inlines such uniforms), which would undo the bundling.
+            uniforms += &format!("{} float v_unit;\n", lang.fin);
+            "int(v_unit + 0.5)"
         }
     };
     let vec4_result = matches!(key.path, ApiPath::Glsl120)
@@ -363,7 +388,13 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
     // that is not dynamically uniform is undefined, GLSL 4.60 §4.1.7); every fragment of a
     // case's quad takes the same branch, so derivatives stay defined within the quad.
     let lookup = if units > 1 {
-        (0..units)
+        let pick = if unit == "v_unit" {
+            String::new()
+        } else {
+            format!("int unit = {unit};\n  ")
+        };
+        let unit = if unit == "v_unit" { "v_unit" } else { "unit" };
+        let chain = (0..units)
             .map(|u| {
                 let s = store(&sampler_name(u, units));
                 if u == 0 {
@@ -375,7 +406,8 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
                 }
             })
             .collect::<Vec<_>>()
-            .join("\n  ")
+            .join("\n  ");
+        format!("{pick}{chain}")
     } else {
         store("u_tex")
     };

@@ -288,10 +288,16 @@ fn several_units_are_sampled_by_one_program_and_the_case_picks_its_own() {
         "{fs}"
     );
     assert!(!fs.contains("u_tex;"), "{fs}");
-    // Single-case programs take the unit as a uniform.
-    let (_, fs) = glsl(&info, &k, None, 2);
+    // Single-case programs take the unit as an attribute's current value, passed on flat.
+    let (vs, fs) = glsl(&info, &k, None, 2);
     assert!(
-        fs.contains("uniform int u_unit;") && fs.contains("if (u_unit == 0)"),
+        vs.contains("in float a_unit;") && vs.contains("v_unit = a_unit;"),
+        "{vs}"
+    );
+    assert!(
+        fs.contains("flat in float v_unit;")
+            && fs.contains("int unit = int(v_unit + 0.5);")
+            && fs.contains("if (unit == 0)"),
         "{fs}"
     );
     // ARB programs sample every unit and weight the results; the case's unit weighs 1.

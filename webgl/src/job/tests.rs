@@ -59,7 +59,8 @@ fn a_job_carries_the_gl_workers_texels_parameters_and_shader() {
     // a and b share one texture (same texture and sampler), c has its own.
     assert_eq!(b.job.groups.len(), 2);
     assert_eq!(b.job.groups[0].cases, vec![0, 1]);
-    let lvl = &b.job.groups[0].texture.levels[0];
+    let tex = b.job.groups[0].texture.as_ref().expect("texture");
+    let lvl = &tex.levels[0];
     let bytes = base64::engine::general_purpose::STANDARD
         .decode(&lvl.data)
         .unwrap();
@@ -70,23 +71,33 @@ fn a_job_carries_the_gl_workers_texels_parameters_and_shader() {
         (0x81A6, 0x1902, 0x1405),
         "DEPTH_COMPONENT24, DEPTH_COMPONENT, UNSIGNED_INT"
     );
-    let calls: Vec<&str> = b.job.groups[0]
-        .texture
-        .params
-        .iter()
-        .map(|p| p.call.as_str())
-        .collect();
+    let calls: Vec<&str> = tex.params.iter().map(|p| p.call.as_str()).collect();
     assert!(
         calls.contains(&"glTexParameteri(TEXTURE_COMPARE_MODE)"),
         "{calls:?}"
     );
-    // One program for all three (same key), with the es300 shadow lookup.
+    // One bundle (same lookup): both states bound together, group 0 on unit 0, group 1 on
+    // unit 1, and one program of two samplers with the es300 shadow lookup.
+    assert_eq!(b.job.bundles.len(), 1);
+    assert_eq!(b.job.bundles[0].states, vec![0, 1]);
+    let units: Vec<(usize, usize)> = b.job.bundles[0]
+        .draws
+        .iter()
+        .map(|d| (d.case, d.unit))
+        .collect();
+    assert_eq!(units, vec![(0, 0), (1, 0), (2, 1)]);
     assert_eq!(b.job.programs.len(), 1);
-    assert!(b.job.programs[0][1].starts_with("#version 300 es"));
-    assert!(b.job.programs[0][1].contains("sampler2DShadow"));
+    let fs = &b.job.programs[0][1];
+    assert!(fs.starts_with("#version 300 es"));
+    assert!(
+        fs.contains("uniform highp sampler2DShadow u_tex0;")
+            && fs.contains("uniform highp sampler2DShadow u_tex1;")
+            && fs.contains("float v_unit;"),
+        "{fs}"
+    );
     // Dref = +inf goes out as a string, not null.
     let json = serde_json::to_value(&b.job).unwrap();
-    assert_eq!(json["groups"][0]["draws"][1]["p"][2], "Infinity");
+    assert_eq!(json["bundles"][0]["draws"][1]["p"][2], "Infinity");
     assert_eq!(b.job.slots, 3);
 }
 
