@@ -20,6 +20,7 @@ pub mod names;
 mod programs;
 pub mod renderer;
 pub mod state;
+pub mod stats;
 pub mod texture;
 pub mod unitstate;
 pub mod worker;

@@ -150,7 +150,7 @@ pub trait Backend: Send {
     }
     /// The run is done with the backend: its process (if any) is asked to end, and what it wrote
     /// on stderr since the last [`Backend::take_diagnostics`] is returned (a GL worker's last line
-    /// says what it compiled and drew: `shadowcheck_gl::worker::WorkerStats`). A closed backend
+    /// says what it compiled and drew: `shadowcheck_gl::stats::WorkerStats`). A closed backend
     /// that is sent more work starts again.
     fn close(&mut self) -> Vec<String> {
         self.take_diagnostics()

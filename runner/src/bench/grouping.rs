@@ -349,7 +349,7 @@ mod tests {
     #[test]
     fn the_floor_counts_each_set_and_each_pair_once_at_the_drivers_cost() {
         let mut cold = run(30.0);
-        let stats = |states| shadowcheck_gl::worker::WorkerStats {
+        let stats = |states| shadowcheck_gl::stats::WorkerStats {
             states_per_program: 16,
             programs: 10,
             states,

@@ -6,7 +6,7 @@ use crate::backend::{self, Options};
 use crate::events::{Fanout, Timing};
 use crate::records::{exit, Outcome, Results, TestResult};
 use crate::run::{self, CaseSet, Settings};
-use shadowcheck_gl::worker::WorkerStats;
+use shadowcheck_gl::stats::WorkerStats;
 use std::path::{Path, PathBuf};
 use std::process::Stdio;
 use std::time::Instant;
