@@ -47,8 +47,12 @@ impl Renderer {
                     self.create_state(state_case(jobs, groups, g), users, st)
                 });
             }
+            // Each bundle: its states bound together, each case of them that uses the bundle's
+            // program drawn into a pixel of its own on its state's unit.
             for b in bundles.iter().filter(|b| b.key.path == path) {
-                self.run_compat_bundle(jobs, groups, b, &objects, st);
+                let bound = self.bind_bundle(jobs, groups, b, &objects, st);
+                self.draw_singly(jobs, groups, b, &bound, st);
+                self.finish_bundle(jobs, groups, b, &objects, &bound, st);
             }
             for (g, o) in objects.into_iter().enumerate() {
                 if let Some(o) = o {
@@ -58,20 +62,5 @@ impl Renderer {
                 }
             }
         }
-    }
-
-    /// One bundle: its states bound together, each case of them that uses the bundle's program
-    /// drawn into a pixel of its own on its state's unit.
-    unsafe fn run_compat_bundle(
-        &mut self,
-        jobs: &[Job],
-        groups: &Groups,
-        bundle: &Bundle,
-        objects: &[Option<StateObjects>],
-        st: &mut BatchState,
-    ) {
-        let bound = self.bind_bundle(jobs, groups, bundle, objects, st);
-        self.draw_singly(jobs, groups, bundle, &bound, st);
-        self.finish_bundle(jobs, groups, bundle, objects, &bound, st);
     }
 }

@@ -21,10 +21,10 @@ use crate::shard::Shard;
 use judge::{finish_judged, judge_batch, judge_outcome, sent, Judged, ToSend};
 use shadowcheck_model::{ApiPath, Case, StateCase};
 use shadowcheck_protocol::Capabilities;
-use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::time::Instant;
+use to_send::{cases_to_send, in_program_order};
 
 /// A case and the fixture file it came from.
 #[derive(Debug, Clone)]
@@ -321,83 +321,6 @@ pub fn run_backend(
     (ctx.results, timing)
 }
 
-/// `to_send` in the plan's program order (`shadowcheck_plan::units::program_order`): a backend
-/// that compiles a shader variant per sampler state gets the cases of one program in the same
-/// batches, so that it binds many of their states together and compiles one variant for them.
-/// Results still come out per case; only the order they are sent (and reported) in changes.
-fn in_program_order(to_send: Vec<ToSend<'_>>) -> Vec<ToSend<'_>> {
-    let order =
-        shadowcheck_plan::units::program_order(to_send.iter().map(|(c, apis, _)| (*c, &**apis)));
-    let mut slots: Vec<Option<ToSend<'_>>> = to_send.into_iter().map(Some).collect();
-    order.into_iter().filter_map(|i| slots[i].take()).collect()
-}
-
-/// The lookup cases of `set` the backend `name` (with `caps`) is sent, each with the API paths it
-/// runs. The rest are finished here: tests already in `prior` are replayed, tests on the skips
-/// list and cases the backend implements but cannot run are Skip with the reason; a case of a spec
-/// or API path it does not implement is no test of it.
-fn cases_to_send<'a>(
-    caps: &Capabilities,
-    name: &str,
-    set: &'a CaseSet,
-    prior: &Results,
-    ctx: &mut Ctx<'_>,
-) -> Vec<ToSend<'a>> {
-    let settings = ctx.settings;
-    let lists = &settings.lists;
-    let mut to_send: Vec<ToSend<'a>> = Vec::new();
-    for l in &set.cases {
-        let case = &l.case;
-        let fixtures = settings
-            .explicit_fixtures
-            .then(|| set.files[l.file].as_str());
-        // Only the API paths this backend implements are tests of it.
-        let Some((applicable, skip_reason)) = applicable_apis(caps, case) else {
-            continue;
-        };
-        // Resumed: every test of the case already on disk.
-        let done: Vec<&TestResult> = applicable
-            .iter()
-            .filter_map(|&a| prior.get(name, &TestResult::name(&case.id, a)))
-            .collect();
-        if done.len() == applicable.len() {
-            for r in done {
-                ctx.finish(r.clone(), true);
-            }
-            continue;
-        }
-        let mut apis = Vec::with_capacity(applicable.len());
-        for &api in &applicable {
-            let test = TestResult::name(&case.id, api);
-            match lists.skips.matching_for(name, &test) {
-                Some(re) => {
-                    let mut r = base_result(name, case, api, fixtures);
-                    r.reason = Some(format!("skips list: `{re}`"));
-                    ctx.finish(r, false);
-                }
-                None => apis.push(api),
-            }
-        }
-        if let Some(reason) = skip_reason {
-            for &api in &apis {
-                let mut r = base_result(name, case, api, fixtures);
-                r.reason = Some(reason.clone());
-                ctx.finish(r, false);
-            }
-            continue;
-        }
-        if apis.is_empty() {
-            continue;
-        }
-        if apis.len() == case.api.len() {
-            to_send.push((case, Cow::Borrowed(case.api.as_slice()), fixtures));
-        } else {
-            to_send.push((case, Cow::Owned(apis), fixtures));
-        }
-    }
-    to_send
-}
-
 /// Sends `to_send` to the backend in batches and finishes each case's tests from its answer, in
 /// order. Each batch's answers are judged on a second thread while the backend runs the next batch
 /// (its process works meanwhile, with the batch after that already sent), then finished here in
@@ -605,6 +528,7 @@ pub fn finish(
 mod faults;
 mod judge;
 mod state;
+mod to_send;
 
 use faults::{blame_earlier, blame_in_batch, collect_late_faults, is_protocol_violation};
 pub use state::tags as state_tags;
