@@ -93,9 +93,10 @@ impl GatherFn {
 }
 
 /// The (spec, API path) pairs with shadow gather.
-const GATHER_PATHS: [(Spec, ApiPath); 2] = [
+const GATHER_PATHS: [(Spec, ApiPath); 3] = [
     (Spec::Gl46, ApiPath::GlslCore),
     (Spec::Gles32, ApiPath::Es300),
+    (Spec::Vulkan, ApiPath::Vulkan),
 ];
 
 /// One unit-state column: its name, whether a case falls in it, the API paths that have it.
@@ -215,7 +216,9 @@ impl Coverage {
             .iter()
             .map(|f| f.key().to_string())
             .collect();
-        v.push("none".into());
+        if specs::compare_none(spec) {
+            v.push("none".into());
+        }
         v
     }
 

@@ -57,6 +57,9 @@ keyed_enum! {
         Gl46 = "gl46",
         /// OpenGL ES 3.0 - 3.2.
         Gles32 = "gles32",
+        /// Vulkan 1.3: a depth image sampled through a sampler with compareEnable (§16 Texel
+        /// Depth Compare); no TexParameter state, no fail value, no incompleteness.
+        Vulkan = "vulkan",
     }
 }
 
@@ -77,6 +80,9 @@ keyed_enum! {
         Es100Ext = "es100",
         /// GLSL ES 3.00+: float result.
         Es300 = "es300",
+        /// Vulkan: GLSL 4.50 for Vulkan compiled to SPIR-V (OpImageSampleDref*, OpImageDrefGather);
+        /// float result.
+        Vulkan = "vk",
     }
 }
 

@@ -337,7 +337,8 @@ fn validate_sweep(case: &Case) -> Result<(), ModelError> {
 }
 
 /// Smallest MIN_PROGRAM_TEXEL_OFFSET and largest MAX_PROGRAM_TEXEL_OFFSET every GL 3.0+ / ES 3.0+
-/// implementation supports (GL 4.6 Table 23.55, ES 3.2 Table 21.41: -8 and 7); outside them the
+/// implementation supports (GL 4.6 Table 23.55, ES 3.2 Table 21.41: -8 and 7; Vulkan 1.3's
+/// required limits minTexelOffset and maxTexelOffset are the same); outside them the
 /// lookup is undefined (GL 4.6 §8.14.2), so a fixture may not ask for it.
 pub const TEXEL_OFFSET_RANGE: std::ops::RangeInclusive<i32> = -8..=7;
 
@@ -346,15 +347,16 @@ pub const TEXEL_OFFSET_RANGE: std::ops::RangeInclusive<i32> = -8..=7;
 /// every implementation supports.
 fn validate_offset(case: &Case) -> Result<(), ModelError> {
     let o = case.lookup.offset;
-    if let Some(api) = case
-        .api
-        .iter()
-        .find(|a| !matches!(a, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300))
-    {
+    if let Some(api) = case.api.iter().find(|a| {
+        !matches!(
+            a,
+            ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+        )
+    }) {
         return Err(invalid(
             case,
             "lookup.offset",
-            format!("API path `{}` has no lookup function with a texel offset (GLSL >= 1.30 and GLSL ES 3.00 only)", api.key()),
+            format!("API path `{}` has no lookup function with a texel offset (GLSL >= 1.30, GLSL ES 3.00 and SPIR-V's Offset operands only)", api.key()),
         ));
     }
     let used = match case.texture.target {

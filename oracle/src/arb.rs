@@ -57,6 +57,8 @@ pub fn rules(spec: Spec) -> Rules {
         swizzle: None,
         sampler_objects: None,
         lod_bias: true,
+        sampler_create: None,
+        layer_rne_always: None,
         ambient_on_pass: false,
         fail_value_cite: if ambient {
             Some("ARB_shadow_ambient §3.8.13.1")

@@ -14,7 +14,9 @@ pub fn ctx_of(api: ApiPath) -> Ctx {
         ApiPath::FixedFunction | ApiPath::ArbFp | ApiPath::Glsl120 | ApiPath::Glsl130 => {
             Ctx::Compat
         }
-        ApiPath::GlslCore => Ctx::Core,
+        // Vulkan has no GL context; its rules set no TexParameter (`Rules::sampler_create`), so
+        // the context only names the core-profile rules for anything shared.
+        ApiPath::GlslCore | ApiPath::Vulkan => Ctx::Core,
         ApiPath::Es100Ext | ApiPath::Es300 => Ctx::Es,
     }
 }
@@ -35,6 +37,9 @@ pub fn api_targets(api: ApiPath) -> &'static [Target] {
         ApiPath::GlslCore => &[T1d, T2d, Rect, Cube, T1dArray, T2dArray, CubeArray],
         ApiPath::Es100Ext => &[T2d],
         ApiPath::Es300 => &[T2d, Cube, T2dArray, CubeArray],
+        // SPIR-V OpTypeImage Dim 1D, 2D, Cube, Arrayed or not, with Depth 1 (GLSL 4.50 for Vulkan's
+        // sampler*Shadow types).
+        ApiPath::Vulkan => &[T1d, T2d, Cube, T1dArray, T2dArray, CubeArray],
     }
 }
 
@@ -146,9 +151,13 @@ pub fn check_effective(case: &Case, rules: &Rules) -> Result<(), OracleError> {
 fn check_state(case: &Case, rules: &Rules, effective: bool) -> Result<(), OracleError> {
     check_lookup_state(case, rules)?;
     check_defined(case, rules)?;
-    // Every piece of sampler state is set through TexParameter in every context the case runs in.
-    for api in &case.api {
-        set_params(case, rules, ctx_of(*api))?;
+    if let Some(why) = rules.sampler_create {
+        check_sampler_create(case, rules, why)?;
+    } else {
+        // Every piece of sampler state is set through TexParameter in every context the case runs in.
+        for api in &case.api {
+            set_params(case, rules, ctx_of(*api))?;
+        }
     }
     check_filter_and_lod(case, rules)?;
     if case.lookup.gather.is_some() {
@@ -273,6 +282,37 @@ fn set_params(case: &Case, rules: &Rules, ctx: Ctx) -> Result<(), OracleError> {
     Ok(())
 }
 
+/// Sampling state that is a sampler's create info (Vulkan): what the spec's tables lack, or a
+/// GL-only piece of state, cannot be created at all, so the case is not applicable (`why`: the
+/// sentence). No GL error exists to expect.
+fn check_sampler_create(case: &Case, rules: &Rules, why: &str) -> Result<(), OracleError> {
+    let s = &case.sampler;
+    // The citation only; the whole sentence is the rules' (`explain` shows it).
+    let cite = why.split_once(':').map_or(why, |(c, _)| c);
+    let na = |what: String| Err(not_applicable(case, rules, format!("{what} ({cite})")));
+    if (rules.table)(s.compare_func, None) == Err(crate::rules::NotInTable) {
+        return na(format!(
+            "compare function `{}` is no VkCompareOp",
+            s.compare_func
+        ));
+    }
+    if let Some(w) = [s.wrap_s, s.wrap_t, s.wrap_r]
+        .into_iter()
+        .find(|w| !rules.wraps.contains(w))
+    {
+        return na(format!("wrap `{w}` is no VkSamplerAddressMode"));
+    }
+    if s.depth_texture_mode.is_some() || s.depth_stencil_mode.is_some() || s.fail_value.is_some() {
+        return na(
+            "DEPTH_TEXTURE_MODE, DEPTH_STENCIL_TEXTURE_MODE and a fail value are GL state".into(),
+        );
+    }
+    if !case.texture.format.is_depth() || s.compare_mode == CompareMode::None {
+        return na("a Dref lookup needs a depth image and a sampler with compareEnable".into());
+    }
+    Ok(())
+}
+
 /// The magnification filter, LOD bias and LOD state the spec has, and a lookup bias it allows.
 fn check_filter_and_lod(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     let s = &case.sampler;
@@ -349,13 +389,13 @@ fn check_gather(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     let t = &case.texture;
     let l = &case.lookup;
     let na = |why: String| Err(not_applicable(case, rules, why));
-    if !matches!(rules.spec, Spec::Gl46 | Spec::Gles32) {
+    if !matches!(rules.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan) {
         return na(format!("{} has no textureGather", rules.doc));
     }
     if let Some(api) = case
         .api
         .iter()
-        .find(|a| !matches!(a, ApiPath::GlslCore | ApiPath::Es300))
+        .find(|a| !matches!(a, ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan))
     {
         return na(format!(
             "API path `{api}` has no shadow textureGather (GLSL 4.00 / GLSL ES 3.10)"

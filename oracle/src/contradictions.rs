@@ -96,6 +96,13 @@ pub const ALL: &[Contradiction] = &[
         sources: "EXT_shadow_samplers Table 3.X; EXT_shadow_funcs",
     },
     Contradiction {
+        id: "vk-filter-linear-bit",
+        title: "Vulkan filtered comparison without SAMPLED_IMAGE_FILTER_LINEAR",
+        defended: "Vulkan 1.3 §16: the comparison is a texel input operation (\"This value replaces the depth component D\"), then Texel Linear Filtering takes the weighted average of the 0/1 results: that is the spec value, accepted strictly.",
+        other: "§34.3 SAMPLED_IMAGE_FILTER_LINEAR_BIT: where the format lacks the bit, \"the filtered value may be computed in an implementation-dependent manner which differs from the normal rules of linear filtering. The resulting value must be in the range [0,1] and should be proportional to, or a weighted average of, the number of comparison passes or failures\": any value in [0,1] for a footprint with passes and fails is accepted by quality (Warn). A fixture cannot know the device's format features, so both are accepted on every device.",
+        sources: "Vulkan 1.3 §16 Depth Compare Operation, Texel Linear Filtering; §34.3 Format Properties",
+    },
+    Contradiction {
         id: "mirror-parens",
         title: "GL 4.6 Table 8.20 MIRRORED_REPEAT",
         defended: "ES 3.2 Table 8.21's well-formed (size − 1) − mirror((coord mod (2 × size)) − size).",
@@ -147,6 +154,7 @@ pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
             "es2-greater-row" => {
                 concerns(c.id) && compare && s.compare_func == CompareFunc::Greater
             }
+            "vk-filter-linear-bit" => concerns(c.id) && compare && filtered,
             "mirror-parens" => {
                 concerns(c.id) && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::MirroredRepeat)
             }

@@ -72,6 +72,8 @@ pub fn rules() -> Rules {
         swizzle: None,
         sampler_objects: None,
         lod_bias: false,
+        sampler_create: None,
+        layer_rne_always: None,
         ambient_on_pass: false,
         fail_value_cite: None,
         // GLSL additions: "sampler2DShadow  a handle for accessing a 2D depth texture with comparison";

@@ -63,6 +63,8 @@ pub fn rules() -> Rules {
         swizzle: Some("GL 4.6 §15.2.1: the texture base color Cb is converted \"followed by swizzling the components of Cb, controlled by the values of the texture parameters TEXTURE_SWIZZLE_R, TEXTURE_SWIZZLE_G, TEXTURE_SWIZZLE_B, and TEXTURE_SWIZZLE_A\"; §11.1.3.5: \"swizzling of Cb is then performed as described above, but only the first component Cs[0] is returned to the shader\""),
         sampler_objects: Some("GL 4.6 §8.17.1: \"If a sampler object and a texture object are simultaneously bound to the same texture unit, then the sampling state for that unit is taken from the sampler object\"; §8.2: \"Texture state listed in tables 23.16- 23.17 but not listed here and in the sampler state in table 23.18 is not part of the sampler state, and remains in the texture object.\""),
         lod_bias: true,
+        sampler_create: None,
+        layer_rne_always: None,
         ambient_on_pass: false,
         fail_value_cite: None,
         targets: &[

@@ -61,6 +61,8 @@ pub fn rules() -> Rules {
         swizzle: Some("ES 3.2 §11.1.3.5 / §14.2.1 (as GL 4.6 §15.2.1): Cb = (Rt, 0, 0, 1), then TEXTURE_SWIZZLE_R/G/B/A, then only Cs[0] is returned for a shadow sampler"),
         sampler_objects: Some("ES 3.2 §8.17.1 / §8.2 (as GL 4.6): the sampling state of a unit with a bound sampler object is taken from the sampler object; state not in the sampler state table remains in the texture object"),
         lod_bias: false,
+        sampler_create: None,
+        layer_rne_always: None,
         ambient_on_pass: false,
         fail_value_cite: None,
         // §8.10: "target ... must be one of TEXTURE_2D, TEXTURE_3D, TEXTURE_2D_ARRAY,

@@ -128,6 +128,13 @@ pub fn layout(
                     [R, Unused, Unused, Unused],
                     "EXT_shadow_samplers §3.7.14.1 (r → R_t), shadow2DEXT returns float",
                 ),
+                // Vulkan 1.3 §16 Depth Compare Operation: the result "replaces the depth component
+                // D"; an OpImageSampleDref* instruction's Result Type is a scalar float (SPIR-V
+                // §3.37.10), its one component r.
+                (ApiPath::Vulkan, _) => (
+                    [R, Unused, Unused, Unused],
+                    "Vulkan 1.3 §16 Depth Compare Operation (r replaces D); OpImageSampleDref* returns a scalar",
+                ),
                 // A non-shadow sampler on a depth texture: Cb = (Dt,0,0,1) (§11.1.3.5, Table 15.1).
                 (_, Kind::Depth) => (
                     [R, Zero, Zero, One],

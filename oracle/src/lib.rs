@@ -47,6 +47,7 @@ mod select;
 pub mod sgix;
 pub mod state;
 pub mod unorm;
+pub mod vulkan;
 pub mod wrap;
 
 /// One derivation step, for `shadowcheck explain`.

@@ -1,5 +1,5 @@
 //! What distinguishes one specification from another, as data. Each spec module (`sgix`, `arb`,
-//! `ext_funcs`, `es2_ext`, `gl46`, `gles32`) fills a [`Rules`] beside the sentences it encodes; the
+//! `ext_funcs`, `es2_ext`, `gl46`, `gles32`, `vulkan`) fills a [`Rules`] beside the sentences it encodes; the
 //! shared machinery (`engine`, `sample`, `select`, `lod`, `layout`, `check`, `state`,
 //! `contradictions`) reads only this struct and never matches on the spec itself. [`rules_for`] is
 //! the registry: adding a spec is one module and one line there.
@@ -50,6 +50,9 @@ pub enum Incomplete {
     Legacy0001,
     /// GL 4.6 / ES 3.2 §11.1.3.5: "0 for a shadow sampler" ((0,0,0,1) for the legacy vec4 paths).
     ShadowZero,
+    /// The API has no incomplete textures (Vulkan): a case GL would call incomplete is not
+    /// applicable; the sentence says why.
+    NotApplicable(&'static str),
 }
 
 /// The function is not in the spec's table (setting it is a GL error).
@@ -99,6 +102,13 @@ pub struct Rules {
     pub sampler_objects: Option<&'static str>,
     /// TEXTURE_LOD_BIAS exists (not in ES).
     pub lod_bias: bool,
+    /// The array layer is RNE(a), or ⌊a + 1/2⌋ as the alternative, under every filter (Vulkan):
+    /// the sentence. `None`: GL's rule, RNE (or ⌊r + 1/2⌋) under NEAREST and ⌊r + 1/2⌋ under
+    /// LINEAR (GL 4.6 / ES 3.2 §8.14.2).
+    pub layer_rne_always: Option<&'static str>,
+    /// The sampling state is set when a sampler is created, not by TexParameter (Vulkan): the
+    /// sentence. A value outside the spec's tables is then not applicable, never a GL error.
+    pub sampler_create: Option<&'static str>,
     /// The fail/ambient value replaces 0.0 (ARB_shadow_ambient, SGIX_shadow_ambient): the citation of
     /// that sentence; `None` when the spec has no fail value.
     pub fail_value_cite: Option<&'static str>,
@@ -148,6 +158,7 @@ pub fn rules_for(spec: Spec) -> Rules {
         Spec::Es2Ext => crate::es2_ext::rules(),
         Spec::Gl46 => crate::gl46::rules(),
         Spec::Gles32 => crate::gles32::rules(),
+        Spec::Vulkan => crate::vulkan::rules(),
     }
 }
 

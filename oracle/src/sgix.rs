@@ -88,6 +88,8 @@ pub fn rules(spec: Spec) -> Rules {
         // Table 3.8 as updated by SGIX_shadow lists no TEXTURE_LOD_BIAS (EXT_texture_lod_bias, GL 1.4):
         // a case that sets it is outside this text (`outside_table_3_8`).
         lod_bias: false,
+        sampler_create: None,
+        layer_rne_always: None,
         // SGIX_shadow_ambient Notes: "the value of the SHADOW_AMBIENT_SGIX parameter is returned,
         // instead of 0.0".
         ambient_on_pass: false,

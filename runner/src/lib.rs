@@ -20,6 +20,7 @@ macro_rules! errln {
     }};
 }
 
+pub mod attribute;
 pub mod backend;
 pub mod baseline;
 pub mod bench;

@@ -78,6 +78,16 @@ enum Command {
     /// Warn) are compared. Markdown on stdout (or JSON with --json); exit 0 when it ran, queue
     /// empty or not; 96 on bad input.
     Consensus(cmd::consensus::Args),
+    /// Which layer broke each failure of a layered backend (zink on lavapipe or SwiftShader,
+    /// WebGL on ANGLE's Vulkan back end on SwiftShader).
+    ///
+    /// For each Fail or Warn of such a backend in the runs, the same lookup as a Vulkan case (where
+    /// Vulkan 1.3 defines it) is looked up in the Vulkan driver's results of the same runs: upper
+    /// layer (the driver passes it, or the lookup has no Vulkan equivalent and the layer emulates
+    /// it), lower (the driver fails it with the same r), both (it fails differently), or no
+    /// equivalent (no answer of the driver in the runs). Markdown on stdout (or JSON with
+    /// --json); exit 0 when it ran; 96 on bad input.
+    Attribute(cmd::attribute::Args),
     /// The backend kinds' worker children (hidden; `backend::kinds::KINDS` names them).
     #[command(flatten)]
     Worker(cmd::workers::WorkerCommand),
@@ -106,6 +116,7 @@ fn main() -> std::process::ExitCode {
         Command::Summarize(a) => cmd::summarize::main(a),
         Command::Repro(a) => cmd::repro::main(a),
         Command::Consensus(a) => cmd::consensus::main(a),
+        Command::Attribute(a) => cmd::attribute::main(a),
         Command::Worker(w) => w.main(),
     };
     match result {
@@ -158,7 +169,7 @@ mod tests {
         assert_eq!(hidden, table);
         assert_eq!(
             table.iter().map(|(s, _)| s.as_str()).collect::<Vec<_>>(),
-            ["gl-worker", "webgl-worker", "mock-worker"]
+            ["gl-worker", "webgl-worker", "vk-worker", "mock-worker"]
         );
     }
 }

@@ -8,6 +8,7 @@
 //! | ext_funcs | the eight of EXT_shadow_funcs, R against Dt | as arb | 0.0 |
 //! | es2_ext | the eight | Dt and Dref **always** clamped (EXT_shadow_samplers 3.7.14.1) | 0.0 |
 //! | gl46, gles32 | the eight (Table 8.23 / 8.22) | only for fixed-point depth formats (§8.23.1 / §8.20.1) | 0.0 |
+//! | vulkan | the eight VkCompareOp, Dref the reference and Dtex the test value | Dref only, and only for UNORM formats (Depth Compare Operation) | 0.0 |
 
 use crate::faults::{Fault, Faults};
 use crate::SoftError;
@@ -49,6 +50,9 @@ pub fn resolve_op(spec: Spec, func: CompareFunc, faults: Faults) -> Result<Compa
         Spec::ExtFuncs | Spec::Es2Ext | Spec::Gl46 | Spec::Gles32 => {
             !matches!(func, C::LequalRSgix | C::GequalRSgix)
         }
+        // Vulkan: VkSamplerCreateInfo::compareOp is a VkCompareOp, NEVER .. ALWAYS; "reference"
+        // is Dref, "test" is Dtex, so LESS passes when Dref < Dtex as in GL's table.
+        Spec::Vulkan => !matches!(func, C::LequalRSgix | C::GequalRSgix),
     };
     if !defined {
         return Err(SoftError::CompareFunc { spec, func });
@@ -109,6 +113,11 @@ pub fn clamp_rule(spec: Spec, format: Format, faults: Faults) -> ClampRule {
     let (mut dref, mut dt) = match spec {
         // EXT_shadow_samplers 3.7.14.1: "D_t and D_ref are clamped to the range [0,1]".
         Spec::Es2Ext => (true, true),
+        // Vulkan §16 Depth Compare Operation: "If the image being sampled has an unsigned
+        // normalized fixed-point format, then Dref is clamped to [0,1] before the compare
+        // operation." Nothing is said of Dtex: a UNORM texel is in [0,1] by its encoding, and a
+        // D32_SFLOAT one is used as stored.
+        Spec::Vulkan => (fixed, false),
         // GL 4.6 §8.23.1, ES 3.2 §8.20.1, ARB_depth_buffer_float rev 7 (which also amends the
         // ARB_shadow text for floating-point formats): clamp only fixed-point depth.
         // SGIX: unstated; chosen as ARB (NVIDIA clamps R).

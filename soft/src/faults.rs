@@ -144,6 +144,10 @@ faults! {
     SwizzleBeforeCompare = "swizzle-before-compare",
     /// GL's TEXTURE_CUBE_MAP_SEAMLESS enable ignored (cube maps filtered per face).
     SeamlessIgnored = "seamless-ignored",
+    /// Vulkan's Cube Map Edge Handling skipped: LINEAR filtering at a cube face edge clamps within
+    /// the face, as GL does with TEXTURE_CUBE_MAP_SEAMLESS disabled (a GL-derived texture unit
+    /// under a Vulkan driver keeping GL's default).
+    VkCubeEdgePerFace = "vk-cube-edge-per-face",
     /// A bound sampler object's state ignored in favour of the texture's own parameters.
     SamplerObjectIgnored = "sampler-object-ignored",
     /// Shadow gather returns the unswizzled comparisons: TEXTURE_SWIZZLE_R not applied to each

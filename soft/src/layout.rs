@@ -56,7 +56,7 @@ pub const INCOMPLETE: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
 pub fn is_float_path(api: ApiPath) -> bool {
     matches!(
         api,
-        ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es100Ext | ApiPath::Es300
+        ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es100Ext | ApiPath::Es300 | ApiPath::Vulkan
     )
 }
 
@@ -84,7 +84,8 @@ pub fn resolve(
         ApiPath::FixedFunction | ApiPath::ArbFp | ApiPath::Glsl120 => true,
         ApiPath::Glsl130 => kind != Kind::Compare,
         ApiPath::Es100Ext => kind == Kind::Depth,
-        ApiPath::GlslCore | ApiPath::Es300 => false,
+        // OpImageSampleDref* returns one float (SPIR-V); the shader writes (r, 0, 0, 1).
+        ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan => false,
     };
     if !vec4 {
         if api == ApiPath::Glsl130

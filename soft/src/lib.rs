@@ -101,6 +101,7 @@ pub fn path_exists(spec: Spec, api: ApiPath) -> bool {
         ),
         Spec::Es2Ext => api == A::Es100Ext,
         Spec::Gles32 => api == A::Es300,
+        Spec::Vulkan => api == A::Vulkan,
     }
 }
 
@@ -115,6 +116,8 @@ pub fn path_targets(api: ApiPath, target: Target) -> bool {
         ApiPath::Glsl130 | ApiPath::GlslCore => true,
         ApiPath::Es100Ext => target == T::T2d,
         ApiPath::Es300 => matches!(target, T::T2d | T::T2dArray | T::Cube | T::CubeArray),
+        // VkImageViewType has no rectangle textures.
+        ApiPath::Vulkan => target != T::Rect,
     }
 }
 
@@ -250,9 +253,13 @@ impl SoftUnit {
             return Err(SoftError::Target { api, target });
         }
         if case.lookup.offset != [0; 3]
-            && !matches!(api, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300)
+            && !matches!(
+                api,
+                ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+            )
         {
-            // GLSL 1.20, GLSL ES 1.00, fixed function and ARB programs have no offset lookups.
+            // GLSL 1.20, GLSL ES 1.00, fixed function and ARB programs have no offset lookups
+            // (SPIR-V has the Offset / ConstOffset image operands).
             return Err(SoftError::Undefined {
                 spec: self.spec,
                 what: "a texel offset on a path without *Offset lookup functions",
@@ -296,7 +303,8 @@ impl SoftUnit {
                 what,
             })
         };
-        if !matches!(api, ApiPath::GlslCore | ApiPath::Es300) {
+        // SPIR-V: OpImageDrefGather (with ConstOffset / ConstOffsets).
+        if !matches!(api, ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan) {
             return undefined("textureGather on this API path");
         }
         let t = case.texture.target;

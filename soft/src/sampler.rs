@@ -64,6 +64,9 @@ fn check_wrap(spec: Spec, w: Wrap) -> Result<(), SoftError> {
     let ok = match spec {
         Spec::Es2Ext => matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat),
         Spec::Gles32 => !matches!(w, Wrap::MirrorClampToEdge | Wrap::Clamp),
+        // VkSamplerAddressMode: REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER,
+        // MIRROR_CLAMP_TO_EDGE; GL's legacy CLAMP has no equivalent.
+        Spec::Vulkan => w != Wrap::Clamp,
         _ => true,
     };
     if !ok {
@@ -78,6 +81,13 @@ fn check_format(spec: Spec, f: Format) -> Result<(), SoftError> {
     let ok = match spec {
         Spec::Gles32 => f != Format::D32,
         Spec::Es2Ext => !matches!(f, Format::D32 | Format::D32f | Format::D32fS8),
+        // Vulkan depth formats: D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, D24_UNORM_S8_UINT,
+        // D32_SFLOAT_S8_UINT. No 32-bit UNORM depth, no unsized format, and a Dref instruction
+        // needs a depth aspect.
+        Spec::Vulkan => matches!(
+            f,
+            Format::D16 | Format::D24 | Format::D32f | Format::D24S8 | Format::D32fS8
+        ),
         _ => true,
     };
     if ok {
@@ -139,6 +149,14 @@ impl SamplerState {
             sampler_object_incomplete,
             faults,
         );
+        if spec == Spec::Vulkan && !complete {
+            // An image view has levelCount levels and LOD selection clamps to them (Vulkan
+            // Image Views, Level-of-Detail Operation): no Vulkan image has a short chain.
+            return Err(undefined(
+                spec,
+                "a texture whose mip chain GL would find incomplete (no such Vulkan image view)",
+            ));
+        }
 
         Ok(SamplerState {
             kind,
@@ -202,6 +220,12 @@ fn check_state(
                 "TEXTURE_MIN_LOD / TEXTURE_MAX_LOD (not in OpenGL ES 2.0)",
             ));
         }
+    }
+    if spec == Spec::Vulkan && s.compare_mode != CompareMode::Compare {
+        return Err(undefined(
+            spec,
+            "a Dref lookup through a sampler without compareEnable",
+        ));
     }
     if s.min_lod > s.max_lod {
         return Err(SoftError::UndefinedResult(
@@ -335,6 +359,8 @@ fn is_complete(
     if s.min_filter.is_mipmap() && !mip_complete && !faults.has(Fault::MipmapCompletenessIgnored) {
         return false;
     }
+    // Vulkan has no completeness: an image view always has its levels. A texture whose mip chain
+    // GL would find short is refused before this (`SamplerState::resolve`).
     let nearest_only = is_nearest_only(s);
     if !nearest_only && stencil_mode {
         return false;

@@ -110,7 +110,10 @@ pub fn effective(
 /// Whether cube lookups filter across faces.
 pub fn seamless(spec: Spec, s: &Sampler, faults: Faults) -> bool {
     match spec {
+        // Vulkan Cube Map Edge Handling: LINEAR filtering at a face edge reads the neighbouring
+        // face; there is no non-seamless mode without VK_EXT_non_seamless_cube_map.
         Spec::Gles32 => true,
+        Spec::Vulkan => !faults.has(Fault::VkCubeEdgePerFace),
         Spec::Gl46 if !faults.has(Fault::SeamlessIgnored) => s.seamless == Some(true),
         _ => false,
     }

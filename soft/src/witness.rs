@@ -231,6 +231,14 @@ fn seamless_edge() -> Case {
     c
 }
 
+/// `c` as a Vulkan lookup: the `vk` path, no GL-only state (Vulkan cubes are always seamless).
+fn vulkan(mut c: Case) -> Case {
+    c.spec = Spec::Vulkan;
+    c.api = vec![ApiPath::Vulkan];
+    c.sampler.seamless = None;
+    c
+}
+
 /// `mips` with NEAREST_MIPMAP_NEAREST at λ = 0 and TEXTURE_LOD_BIAS 1: level 1 passes.
 fn mips_lod_bias() -> Case {
     let mut c = mips(Filter::NearestMipmapNearest, 0.0);
@@ -399,6 +407,7 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         Fault::LayerRneUnderLinear => linear_layer_half(),
         Fault::CubeNegYFlipped => cube_neg_y(),
         Fault::SeamlessIgnored => seamless_edge(),
+        Fault::VkCubeEdgePerFace => vulkan(seamless_edge()),
         Fault::BorderIgnored | Fault::BorderDepthFromAlpha => {
             border(Format::D16, C::Lequal, [1.0, 0.0, 0.0, 0.0], 0.5)
         }

@@ -117,12 +117,19 @@ impl Draft {
         let id = self.id();
         let mut api = specs::apis(self.cell.spec, self.texture.target, &self.sampler);
         if self.lookup.offset != [0; 3] {
-            // Only GLSL >= 1.30 and GLSL ES 3.00 have lookup functions with a texel offset.
-            api.retain(|a| matches!(a, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300));
+            // Only GLSL >= 1.30, GLSL ES 3.00 and SPIR-V (the ConstOffset image operand) have
+            // lookups with a texel offset.
+            api.retain(|a| {
+                matches!(
+                    a,
+                    ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+                )
+            });
         }
         if self.lookup.gather.is_some() {
-            // Shadow textureGather: GLSL 4.00 (core) and GLSL ES 3.10+ only (GLSL 4.60 §8.9.4).
-            api.retain(|a| matches!(a, ApiPath::GlslCore | ApiPath::Es300));
+            // Shadow textureGather: GLSL 4.00 (core), GLSL ES 3.10+ (GLSL 4.60 §8.9.4) and
+            // SPIR-V's OpImageDrefGather.
+            api.retain(|a| matches!(a, ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan));
         }
         Case {
             sweep: vec![],

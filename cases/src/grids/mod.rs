@@ -15,7 +15,7 @@ pub mod tex_params;
 use crate::dsl;
 use crate::fixtures::{self, FixtureFile};
 use draft::Draft;
-use shadowcheck_model::{Case, SCHEMA_VERSION};
+use shadowcheck_model::{Case, CompareMode, Spec, SCHEMA_VERSION};
 use shadowcheck_oracle::OracleError;
 use std::collections::{BTreeMap, BTreeSet, HashSet};
 
@@ -124,6 +124,46 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             "no shader bias argument on this spec's shadow lookups (shadow2DEXT, fixed function)",
             |x| d.shader_bias || x.lookup.bias == 0.0,
         )
+        .filter(
+            "Vulkan: a Dref lookup needs a depth image and a sampler with compareEnable (§16 Depth Compare Operation); a depth read without comparison is no depth comparison",
+            |x| {
+                specs::compare_none(d.spec)
+                    || (x.sampler.in_effect().compare_mode == CompareMode::Compare
+                        && x.texture.format.is_depth())
+            },
+        )
+        .filter(
+            "Vulkan: the depth border Br is that of a VkBorderColor value, 0 (FLOAT_TRANSPARENT_BLACK) or 1 (FLOAT_OPAQUE_WHITE) (Vulkan 1.3 §16 Texel Replacement: \"Depth aspect D = Br\")",
+            |x| d.spec != Spec::Vulkan || [0.0, 1.0].contains(&x.sampler.in_effect().border[0]),
+        )
+        .filter(
+            "Vulkan: no incomplete textures (an image view has levelCount levels, Vulkan 1.3 §12.5), no texture swizzle on a Dref lookup, no GL sampler objects or seamless enable",
+            |x| {
+                d.spec != Spec::Vulkan
+                    || (shadowcheck_oracle::lod::incomplete(
+                        &shadowcheck_oracle::rules::rules_for(Spec::Vulkan),
+                        &x.texture,
+                        &x.sampler.in_effect(),
+                        false,
+                    )
+                    .is_none()
+                        && x.sampler.swizzle.is_none()
+                        && x.sampler.sampler_object.is_none()
+                        && x.sampler.seamless.is_none())
+            },
+        )
+        .filter(
+            "Vulkan: D32_SFLOAT texels outside [0,1] are undefined without VK_EXT_depth_range_unrestricted (a copy stores them as given; GL's upload clamps them)",
+            |x| d.spec != Spec::Vulkan || floats_in_unit_range(&x.texture),
+        )
+}
+
+/// Every stored float depth lies in [0, 1].
+fn floats_in_unit_range(t: &shadowcheck_model::Texture) -> bool {
+    t.levels.iter().all(|l| match &l.depth {
+        shadowcheck_model::Texels::Float(v) => v.iter().all(|d| (0.0..=1.0).contains(d)),
+        shadowcheck_model::Texels::Unorm(_) => true,
+    })
 }
 
 /// One of everything: the first `default` case for each new (spec, value) of every dimension and

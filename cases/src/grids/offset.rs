@@ -94,7 +94,7 @@ fn wrap_draft(c: Cell, tex: Texture, lk: Lookup, wrap: Wrap, tags: String) -> Dr
 
 /// The offset family of spec `d` (empty for specs without offset lookups).
 pub fn offset(d: &SpecDims) -> Vec<Draft> {
-    if !matches!(d.spec, Spec::Gl46 | Spec::Gles32) {
+    if !matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan) {
         return Vec::new();
     }
     let mut out = Vec::new();
@@ -239,6 +239,9 @@ fn other_targets(d: &SpecDims) -> Vec<Draft> {
             Target::T1dArray,
             Target::T2dArray,
         ],
+        // Vulkan: ConstOffset on every non-cube Dim (SPIR-V Image Operands; §16 Texel
+        // Coordinate Offset), i.e. GL's list without rectangles.
+        Spec::Vulkan => &[Target::T1d, Target::T1dArray, Target::T2dArray],
         _ => &[Target::T2dArray],
     };
     let mut out = Vec::new();
@@ -310,7 +313,7 @@ mod tests {
             let v = offset(&d);
             assert_eq!(
                 !v.is_empty(),
-                matches!(d.spec, Spec::Gl46 | Spec::Gles32),
+                matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan),
                 "{:?}",
                 d.spec
             );
@@ -318,10 +321,10 @@ mod tests {
                 assert_ne!(x.lookup.offset, [0; 3], "{}", x.id());
                 let case = x.into_case();
                 shadowcheck_model::validate::validate(&case).unwrap();
-                assert!(case
-                    .api
-                    .iter()
-                    .all(|a| matches!(a, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300)));
+                assert!(case.api.iter().all(|a| matches!(
+                    a,
+                    ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+                )));
             }
         }
     }

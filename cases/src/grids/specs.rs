@@ -148,7 +148,44 @@ pub fn dims(spec: Spec) -> SpecDims {
             stencil_mode: true,
             fail_value: false,
         },
+        // Vulkan 1.3: the VkImageViewType targets but rectangles, the five depth formats with a
+        // Vulkan equivalent (no 32-bit UNORM, no unsized, no colour image with a Dref lookup),
+        // the VkSamplerAddressMode values, mipLodBias, minLod/maxLod and the view's level range.
+        Spec::Vulkan => SpecDims {
+            spec,
+            funcs: CORE_FUNCS,
+            targets: &[
+                T::T1d,
+                T::T2d,
+                T::Cube,
+                T::T1dArray,
+                T::T2dArray,
+                T::CubeArray,
+            ],
+            formats: &[Fo::D16, Fo::D24, Fo::D32f, Fo::D24S8, Fo::D32fS8],
+            filters: ALL_FILTERS,
+            dtms: &[],
+            wraps: &[
+                W::Repeat,
+                W::ClampToEdge,
+                W::ClampToBorder,
+                W::MirroredRepeat,
+                W::MirrorClampToEdge,
+            ],
+            lod_bias: true,
+            lod_state: true,
+            shader_bias: true,
+            stencil_mode: false,
+            fail_value: false,
+        },
     }
+}
+
+/// Whether the spec reads a depth texture with comparison off through its lookups (compare mode
+/// NONE). Not Vulkan: its depth comparison is an OpImage*Dref* instruction on a sampler with
+/// compareEnable (§16 Depth Compare Operation); a plain depth read is another instruction.
+pub fn compare_none(spec: Spec) -> bool {
+    spec != Spec::Vulkan
 }
 
 /// Rectangle textures allow only NEAREST and LINEAR minification (GL 4.6 §8.10: INVALID_ENUM
@@ -171,6 +208,7 @@ pub fn filter_allowed(target: Target, filter: Filter) -> bool {
 ///   compatibility profile, so cases setting them leave out `core`; stencil texturing needs an
 ///   integer sampler (GLSL 4.30+), so it is `core` only.
 /// - ES 3.x: GLSL ES 3.00.
+/// - Vulkan: GLSL 4.50 for Vulkan compiled to SPIR-V (`vk`).
 /// - A case setting the texture swizzle keeps GLSL 1.30 (compare NONE only), core and GLSL ES 3.00
 ///   (the swizzle is modelled on the shader lookups of GL 4.6 §15.2.1).
 pub fn apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
@@ -196,6 +234,7 @@ fn state_apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
         }
         Spec::Es2Ext => vec![A::Es100Ext],
         Spec::Gles32 => vec![A::Es300],
+        Spec::Vulkan => vec![A::Vulkan],
         Spec::Gl46 => {
             if stencil {
                 return vec![A::GlslCore];

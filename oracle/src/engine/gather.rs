@@ -128,7 +128,7 @@ pub(super) fn run(
         "gather: the minification and magnification filters and the level of detail are ignored; the LINEAR rule on level base selects the texels".into(),
         GATHER_CITE,
     );
-    let geos = geometry::geometries(&mut e, case, &coords, true, &mut choices);
+    let geos = geometry::geometries(&mut e, rules, case, &coords, true, &mut choices);
     let finite = geos.iter().all(|g| g.s.is_finite() && g.t.is_finite());
     let Some(&spec_geo) = geos.first().filter(|_| finite) else {
         e.note("the texture coordinates are not finite or the cube direction is zero: the texel selection is undefined");

@@ -4,6 +4,7 @@
 use super::inputs::Coords;
 use super::Eval;
 use crate::cube;
+use crate::rules::Rules;
 use crate::select::Geo;
 use crate::unorm::{f32_candidates, f32r, Exact};
 use crate::wrap;
@@ -12,14 +13,17 @@ use shadowcheck_model::{Case, Target};
 /// The geometries of the lookup, the spec's own first; a choice left to the implementation (a tied
 /// major axis or layer) is recorded in `choices` (a label only where it changes the result).
 /// `linear`: the lookup filters LINEAR within a level (the spec's pick), so the layer is §8.14.2's
-/// LINEAR formula ⌊r + 1/2⌋ alone; under NEAREST it is RNE(r) or, by footnote 4, ⌊r + 1/2⌋.
+/// LINEAR formula ⌊r + 1/2⌋ alone; under NEAREST it is RNE(r) or, by footnote 4, ⌊r + 1/2⌋
+/// (and under every filter where the spec says so, `Rules::layer_rne_always`).
 pub(super) fn geometries(
     e: &mut Eval,
+    rules: &Rules,
     case: &Case,
     co: &Coords,
     linear: bool,
     choices: &mut Vec<&'static str>,
 ) -> Vec<Geo> {
+    let linear = linear && rules.layer_rne_always.is_none();
     let mut geos = faces_and_layers(e, case, co, linear);
     if geos.len() > 1 {
         choices.push("the major axis or the layer is tied: the implementation's rounding/tie rule decides (GL 4.6 §8.13, §8.14.2 footnote 4)");
@@ -27,7 +31,7 @@ pub(super) fn geometries(
     if case.lookup.projective && projective_neighbours(&mut geos) {
         choices.push("projective lookup: s/q and t/q are computed in f32, so either f32 neighbour of the exact quotient may select the texels (as for Dref/q)");
     }
-    layer_and_offset_steps(e, case, &geos, linear);
+    layer_and_offset_steps(e, rules, case, &geos, linear);
     geos
 }
 
@@ -121,7 +125,7 @@ fn faces_and_layers(e: &mut Eval, case: &Case, co: &Coords, linear: bool) -> Vec
 }
 
 /// The steps for the spec's layer and the texel offset.
-fn layer_and_offset_steps(e: &mut Eval, case: &Case, geos: &[Geo], linear: bool) {
+fn layer_and_offset_steps(e: &mut Eval, rules: &Rules, case: &Case, geos: &[Geo], linear: bool) {
     let tex = &case.texture;
     if tex.target.is_array() {
         if let Some(g) = geos.first() {
@@ -138,7 +142,9 @@ fn layer_and_offset_steps(e: &mut Eval, case: &Case, geos: &[Geo], linear: bool)
             } else {
                 e.step(
                     format!("layer = clamp(RNE(layer coordinate), 0, d − 1) = {l}"),
-                    "GL 4.6 §8.14.2 (l = clamp(RNE(r), 0, d_s − 1))",
+                    rules
+                        .layer_rne_always
+                        .unwrap_or("GL 4.6 §8.14.2 (l = clamp(RNE(r), 0, d_s − 1))"),
                 );
             }
         }

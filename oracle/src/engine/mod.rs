@@ -71,6 +71,14 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
             .clone()
             .or_else(|| lod::incomplete(&rules, &case.texture, &case.sampler, stencil))
     };
+    // An API without incomplete textures (Vulkan) has no such case to run.
+    if let (Incomplete::NotApplicable(why), Some(what)) = (rules.incomplete, incomplete(false)) {
+        return Err(OracleError::NotApplicable {
+            case: case.id.clone(),
+            spec: rules.doc.to_string(),
+            why: format!("GL would call the texture incomplete ({what}): {why}"),
+        });
+    }
     if case.lookup.gather.is_some() {
         return Ok(gather::run(e, &rules, case, incomplete(false)));
     }
@@ -91,7 +99,7 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     let linear = match lod.spec_pick {
         lod::Pick::One { linear, .. } | lod::Pick::Two { linear, .. } => linear,
     };
-    let geos = geometry::geometries(&mut e, case, &coords, linear, &mut choices);
+    let geos = geometry::geometries(&mut e, &rules, case, &coords, linear, &mut choices);
     let finite = geos.iter().all(|g| g.s.is_finite() && g.t.is_finite());
     let Some(&spec_geo) = geos.first().filter(|_| finite) else {
         return Ok(undefined(
@@ -225,6 +233,8 @@ fn incomplete_texture(mut e: Eval, rules: &Rules, why: &str, layouts: Layouts) -
             "GL 2.1 §3.11.2 / ARB_fragment_program_shadow / ES 2.0 §3.8.2: (0,0,0,1)"
         }
         Incomplete::ShadowZero => "GL 4.6 / ES 3.2 §11.1.3.5: 0 for a shadow sampler",
+        // Refused before evaluation (`run`); the sentence stands as the citation.
+        Incomplete::NotApplicable(why) => why,
     };
     e.step(format!("texture incomplete: {why}; r = 0"), cite);
     e.cite(if rules.es_depth_completeness {

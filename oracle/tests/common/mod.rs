@@ -13,6 +13,7 @@ pub fn api_for(spec: Spec) -> ApiPath {
         Spec::Es2Ext => ApiPath::Es100Ext,
         Spec::Gl46 => ApiPath::GlslCore,
         Spec::Gles32 => ApiPath::Es300,
+        Spec::Vulkan => ApiPath::Vulkan,
     }
 }
 

@@ -18,7 +18,8 @@ enum Dialect {
 
 fn dialect(path: ApiPath) -> Dialect {
     match path {
-        ApiPath::GlslCore | ApiPath::Glsl130 => Dialect::Modern,
+        // GLSL 4.50 for Vulkan (GL_KHR_vulkan_glsl) keeps GLSL 4.50's lookup functions.
+        ApiPath::GlslCore | ApiPath::Glsl130 | ApiPath::Vulkan => Dialect::Modern,
         ApiPath::Es300 => Dialect::Es3,
         ApiPath::Glsl120 => Dialect::Glsl120,
         ApiPath::Es100Ext => Dialect::Es100,

@@ -9,7 +9,9 @@ use shadowcheck_model::{ApiPath, Case, Lookup, Target};
 /// Plans a gather case on `path`, or says why it cannot run.
 pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, String> {
     let t = case.texture.target;
-    if !matches!(path, ApiPath::GlslCore | ApiPath::Es300) {
+    // GLSL 4.50 for Vulkan has GLSL 4.50's gathers (SPIR-V OpImageDrefGather; the four offsets
+    // of textureGatherOffsets need shaderImageGatherExtended, which the Vulkan worker checks).
+    if !matches!(path, ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan) {
         return Err(format!("{path} has no shadow textureGather"));
     }
     let kind = sampler_kind(case);

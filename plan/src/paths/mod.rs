@@ -210,7 +210,10 @@ pub fn plan_in(
 fn texel_offset(path: ApiPath, t: Target, l: &Lookup) -> Result<[i8; 2], String> {
     if l.offset == [0; 3] {
         Ok([0, 0])
-    } else if !matches!(path, ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300) {
+    } else if !matches!(
+        path,
+        ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+    ) {
         Err(format!("{path} has no lookup function with a texel offset"))
     } else if t.is_cube() {
         Err("cube map lookups take no texel offset".to_string())

@@ -281,3 +281,40 @@ fn ext_texture_shadow_lod_overloads_are_used_when_the_form_asks_for_them() {
         "textureOffset with bias"
     );
 }
+
+#[test]
+fn the_vulkan_path_realizes_lookups_as_the_core_path_does() {
+    for target in [
+        Target::T2d,
+        Target::Cube,
+        Target::T2dArray,
+        Target::CubeArray,
+    ] {
+        let layers = match target {
+            Target::Cube => 6,
+            Target::CubeArray => 12,
+            Target::T2dArray => 3,
+            _ => 1,
+        };
+        let mut c = case(target, 4, 4, layers);
+        c.lookup.offset = if target.is_cube() { [0; 3] } else { [1, -2, 0] };
+        let core = plan(ApiPath::GlslCore, &c).expect("core");
+        let vk = plan(ApiPath::Vulkan, &c).expect("vk");
+        assert_eq!(
+            vk.key,
+            ShaderKey {
+                path: ApiPath::Vulkan,
+                ..core.key
+            },
+            "{target}"
+        );
+        assert_eq!(
+            (vk.p, vk.x, vk.dx, vk.dy),
+            (core.p, core.x, core.dx, core.dy)
+        );
+        c.lookup.offset = [0; 3];
+        c.lookup.gather = Some(shadowcheck_model::Gather { offsets: None });
+        let g = plan(ApiPath::Vulkan, &c).expect("vk gather");
+        assert_eq!(g.key.gather, Some(GatherCall::Single), "{target}");
+    }
+}

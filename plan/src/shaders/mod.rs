@@ -167,7 +167,10 @@ pub const UNIT_ATTRIB: (u32, &str) = (5, "a_unit");
 /// attributes read as flat inputs (GLSL 3.30 core, GLSL ES 3.00)? The
 /// compatibility contexts' paths draw one pixel per case (`draw::run_compat_group`).
 pub fn batchable(key: &ShaderKey) -> bool {
-    matches!(key.path, ApiPath::GlslCore | ApiPath::Es300) && key.form != LodForm::Constant
+    matches!(
+        key.path,
+        ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+    ) && key.form != LodForm::Constant
 }
 
 /// (vertex source, fragment source) for a GLSL path. `batched`: case k of a draw is the case in
@@ -187,6 +190,11 @@ pub fn glsl(
     batched: Option<i32>,
     units: usize,
 ) -> (String, String) {
+    if key.path == ApiPath::Vulkan {
+        // One sampler a program, always batched (the Vulkan worker binds one descriptor set a
+        // case): the interface is Vulkan's own.
+        return vulkan::glsl(key, batched.unwrap_or(crate::layout::FB_SIZE));
+    }
     let lang = language(info, key);
     let units = units.max(1);
     (
@@ -271,6 +279,13 @@ fn language(info: &GlInfo, key: &ShaderKey) -> Language {
             "",
         ),
         ApiPath::FixedFunction | ApiPath::ArbFp => (String::new(), "in", "o", ""),
+        // Not used for program text ([`vulkan::glsl`] writes it); the dialect for completeness.
+        ApiPath::Vulkan => (
+            "#version 450\n".to_string(),
+            "in",
+            "o",
+            "layout(location = 0) out vec4 o;\n",
+        ),
     };
     // EXT_texture_shadow_lod's overloads: the directive right after #version.
     let header = if uses_shadow_lod(key) {
@@ -509,3 +524,4 @@ pub fn arbfp_unit_weights(unit: usize, units: usize) -> Vec<[f32; 4]> {
 
 #[cfg(test)]
 mod tests;
+pub mod vulkan;

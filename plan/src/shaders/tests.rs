@@ -325,3 +325,65 @@ fn several_units_are_sampled_by_one_program_and_the_case_picks_its_own() {
     );
     assert_eq!(arbfp_unit_weights(0, 3), vec![[1.0, 0.0, 0.0, 0.0]]);
 }
+
+#[test]
+fn vulkan_programs_give_every_interface_variable_a_location_and_use_a_push_constant() {
+    let key = shadow_2d(ApiPath::Vulkan, LodForm::Implicit(false));
+    assert!(batchable(&key));
+    let (vs, fs) = glsl(
+        &info(crate::ContextApi::Core, (4, 6), 460),
+        &key,
+        Some(crate::layout::FB_SIZE),
+        1,
+    );
+    for src in [&vs, &fs] {
+        assert!(src.starts_with("#version 450\n"), "{src}");
+        assert!(src.contains("layout(push_constant) uniform PC { int u_base; };"));
+        assert!(!src.contains("uniform int u_base"), "{src}");
+        // Every stage input and output (but the built-ins) has a location.
+        for line in src.lines() {
+            let io = line.contains(" in ") || line.contains(" out ");
+            if io && !line.contains("gl_") {
+                assert!(line.starts_with("layout(location = "), "{line}");
+            }
+        }
+    }
+    // The vertex inputs sit at PARAM_ATTRIBS' locations.
+    for (loc, name, _, _) in PARAM_ATTRIBS {
+        assert!(
+            vs.contains(&format!("layout(location = {loc}) in ")) && vs.contains(name),
+            "{name}: {vs}"
+        );
+    }
+    assert!(fs.contains("layout(set = 0, binding = 0) uniform sampler2DShadow u_tex;"));
+    assert!(fs.contains("layout(location = 0) out vec4 o;"));
+    assert!(fs.contains("o = vec4(texture(u_tex, p.xyz), 0.0, 0.0, 1.0);"));
+    // Implicit derivatives: P varies across the case's 2x2 quad, as on the core path.
+    assert!(fs.contains("p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;"));
+    let (_, lod) = glsl(
+        &info(crate::ContextApi::Core, (4, 6), 460),
+        &shadow_2d(ApiPath::Vulkan, LodForm::Lod),
+        Some(crate::layout::FB_SIZE),
+        1,
+    );
+    assert!(lod.contains("textureLod(u_tex, p.xyz, u_x)") && !lod.contains("gl_FragCoord"));
+}
+
+#[test]
+fn vulkan_gathers_and_offsets_are_the_glsl_450_calls() {
+    let key = ShaderKey {
+        target: Target::T2dArray,
+        form: LodForm::Gather(false),
+        gather: Some(GatherCall::Offsets([[0, 0], [1, 0], [0, 1], [-1, -1]])),
+        ..shadow_2d(ApiPath::Vulkan, LodForm::Lod)
+    };
+    let (_, fs) = vulkan::glsl(&key, crate::layout::FB_SIZE);
+    assert!(fs.contains("uniform sampler2DArrayShadow u_tex;"));
+    assert!(fs.contains("o = vec4(textureGatherOffsets(u_tex, p.xyz, p.w, ivec2[4](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1), ivec2(-1, -1))));"), "{fs}");
+    let key = ShaderKey {
+        offset: [-8, 7],
+        ..shadow_2d(ApiPath::Vulkan, LodForm::Grad)
+    };
+    let (_, fs) = vulkan::glsl(&key, crate::layout::FB_SIZE);
+    assert!(fs.contains("textureGradOffset(u_tex, p.xyz, u_dx.xy, u_dy.xy, ivec2(-8, 7))"));
+}

@@ -7,7 +7,7 @@
 //! Adding a kind: README.md, "Adding a backend".
 
 use super::exec::{self, ExecBackend, ProcessCommand};
-use super::{gl, mock, soft, webgl, Backend, BackendError, Options};
+use super::{gl, mock, soft, vk, webgl, Backend, BackendError, Options};
 
 /// Opens a backend of one kind: the full name, the part after the first `:` (empty when none),
 /// and the options of child-process backends.
@@ -65,6 +65,12 @@ pub const GL_WORKER: Worker = Worker {
 pub const WEBGL_WORKER: Worker = Worker {
     subcommand: "webgl-worker",
     about: "(internal) The `webgl:chromium` worker: headless Chromium speaking runner/PROTOCOL.md.",
+};
+/// The Vulkan drivers' child: one Vulkan device through ash (shadowcheck-vk).
+pub const VK_WORKER: Worker = Worker {
+    subcommand: "vk-worker",
+    about:
+        "(internal) A Vulkan worker process (`vk:*`) speaking runner/PROTOCOL.md on stdin/stdout.",
 };
 /// `mock:<script>`'s child: the scripted implementation of [`mock`].
 pub const MOCK_WORKER: Worker = Worker {
@@ -145,6 +151,16 @@ pub const KINDS: &[BackendKind] = &[
         defaults: DefaultInstances::Probed(webgl::probe_kind, "webgl:chromium when Chromium is installed"),
         worker: Some(WEBGL_WORKER),
         missing_hint: no_hint,
+        fast_compile: false,
+    },
+    BackendKind {
+        prefix: "vk",
+        pattern: "vk:*",
+        help: "vk:lavapipe|swiftshader|native, a Vulkan driver through ash, the vk path (GLSL 4.50 for Vulkan, SPIR-V by glslangValidator)",
+        open: open_vk,
+        defaults: DefaultInstances::Probed(vk::probe_kind, "vk:lavapipe and vk:swiftshader when their ICDs are installed"),
+        worker: Some(VK_WORKER),
+        missing_hint: vk::missing_hint,
         fast_compile: false,
     },
     BackendKind {
@@ -306,6 +322,11 @@ fn open_webgl(name: &str, rest: &str, opts: &Options) -> Result<Box<dyn Backend>
     Ok(Box::new(ExecBackend::start(name, cmd, opts)?))
 }
 
+fn open_vk(name: &str, _: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
+    let cmd = vk::worker_command(name).map_err(|e| setup(name, e))?;
+    Ok(Box::new(ExecBackend::start(name, cmd, opts)?))
+}
+
 fn open_mock(name: &str, rest: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
     let exe = std::env::current_exe().map_err(|e| setup(name, e))?;
     mock::Script::parse(rest).map_err(|msg| setup(name, msg))?;
@@ -327,7 +348,7 @@ mod tests {
     fn the_unknown_backend_error_lists_every_kind() {
         assert_eq!(
             patterns(),
-            "soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, webgl:chromium, mock:<script>"
+            "soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, webgl:chromium, vk:*, mock:<script>"
         );
         assert!(kind_of("egl:llvmpipe:core").is_some_and(|k| k.prefix == "egl"));
         assert!(kind_of("soft").is_some_and(|k| k.prefix == "soft"));
@@ -343,11 +364,13 @@ mod tests {
         assert_eq!(
             default_help(),
             "soft, every EGL driver found on this machine, every OSMesa driver found on this \
-             machine, webgl:chromium when Chromium is installed"
+             machine, webgl:chromium when Chromium is installed, vk:lavapipe and vk:swiftshader \
+             when their ICDs are installed"
         );
         assert!(help().lines().next().is_some_and(|l| l.ends_with(
             "Default: soft, every EGL driver found on this machine, every OSMesa driver found on \
-             this machine, webgl:chromium when Chromium is installed."
+             this machine, webgl:chromium when Chromium is installed, vk:lavapipe and \
+             vk:swiftshader when their ICDs are installed."
         )));
     }
 
@@ -373,10 +396,15 @@ mod tests {
         }
     }
 
+    fn of_kind(n: &str) -> Option<Worker> {
+        kind_of(n).and_then(|k| k.worker)
+    }
+
     #[test]
     fn workers_are_listed_once_each() {
-        assert_eq!(workers(), [GL_WORKER, WEBGL_WORKER, MOCK_WORKER]);
-        let of = |n: &str| kind_of(n).and_then(|k| k.worker);
+        assert_eq!(workers(), [GL_WORKER, WEBGL_WORKER, VK_WORKER, MOCK_WORKER]);
+        assert_eq!(of_kind("vk:lavapipe"), Some(VK_WORKER));
+        let of = of_kind;
         assert_eq!(of("egl:llvmpipe:core"), Some(GL_WORKER));
         assert_eq!(of("osmesa:llvmpipe:core"), Some(GL_WORKER));
         assert_eq!(of("webgl:chromium"), Some(WEBGL_WORKER));
@@ -394,6 +422,8 @@ mod tests {
         assert_eq!(hint("egl@/opt/vendor/lib:native:es3"), None);
         assert_eq!(hint("soft"), None);
         assert_eq!(hint("webgl:chromium"), None);
+        assert!(hint("vk:swiftshader").is_some_and(|h| h.contains("apt-get install -y chromium")));
+        assert_eq!(hint("vk:native"), None);
         assert_eq!(hint("mock:crash"), None);
         let fast = |n: &str| kind_of(n).is_some_and(|k| k.fast_compile);
         assert!(fast("egl:llvmpipe:core") && fast("osmesa:llvmpipe:core"));

@@ -16,6 +16,7 @@ pub mod mock;
 mod process;
 pub mod soft;
 pub mod sweep;
+pub mod vk;
 pub mod webgl;
 
 use shadowcheck_model::{ApiPath, Case, StateCase, StateObserved, Texels};

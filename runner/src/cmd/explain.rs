@@ -90,7 +90,7 @@ pub struct Args {
     /// DEPTH_STENCIL_TEXTURE_MODE: depth or stencil.
     #[arg(long)]
     stencil_mode: Option<String>,
-    /// API paths (ff, arbfp, glsl120, glsl130, core, es100, es300). Default: one natural path of the spec.
+    /// API paths (ff, arbfp, glsl120, glsl130, core, es100, es300, vk). Default: one natural path of the spec.
     #[arg(long, value_delimiter = ',', num_args = 1..)]
     api: Vec<String>,
 }
@@ -109,6 +109,7 @@ fn default_api(spec: Spec, target: Target) -> ApiPath {
         }
         Spec::Es2Ext => ApiPath::Es100Ext,
         Spec::Gles32 => ApiPath::Es300,
+        Spec::Vulkan => ApiPath::Vulkan,
         Spec::Gl46 if target == Target::CubeArray => ApiPath::GlslCore,
         Spec::Gl46 => ApiPath::GlslCore,
     }

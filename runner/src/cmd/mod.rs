@@ -1,4 +1,5 @@
 //! One module per subcommand. Each has `Args` (clap) and `main(Args) -> anyhow::Result<ExitCode>`.
+pub mod attribute;
 pub mod bench;
 pub mod consensus;
 pub mod explain;
@@ -14,6 +15,8 @@ pub mod report;
 pub mod repro;
 pub mod run;
 pub mod summarize;
+#[allow(clippy::print_stdout)]
+pub mod vk_worker;
 #[allow(clippy::print_stdout)]
 pub mod webgl_worker;
 pub mod workers;

@@ -1,8 +1,8 @@
 //! The hidden worker subcommands: the child processes of the backend kinds whose table entry
 //! names a [`Worker`](shadowcheck_runner::backend::kinds::Worker) (`shadowcheck_runner::backend::kinds::KINDS`).
 //! Each subcommand's name and description come from the table; the variant says which code runs.
-use super::{gl_worker, mock_worker, webgl_worker};
-use shadowcheck_runner::backend::kinds::{GL_WORKER, MOCK_WORKER, WEBGL_WORKER};
+use super::{gl_worker, mock_worker, vk_worker, webgl_worker};
+use shadowcheck_runner::backend::kinds::{GL_WORKER, MOCK_WORKER, VK_WORKER, WEBGL_WORKER};
 use std::process::ExitCode;
 
 #[derive(clap::Subcommand)]
@@ -11,6 +11,8 @@ pub enum WorkerCommand {
     Gl(gl_worker::Args),
     #[command(name = WEBGL_WORKER.subcommand, about = WEBGL_WORKER.about, hide = true)]
     Webgl(webgl_worker::Args),
+    #[command(name = VK_WORKER.subcommand, about = VK_WORKER.about, hide = true)]
+    Vk(vk_worker::Args),
     #[command(name = MOCK_WORKER.subcommand, about = MOCK_WORKER.about, hide = true)]
     Mock(mock_worker::Args),
 }
@@ -20,6 +22,7 @@ impl WorkerCommand {
         match self {
             WorkerCommand::Gl(a) => gl_worker::main(a),
             WorkerCommand::Webgl(a) => webgl_worker::main(a),
+            WorkerCommand::Vk(a) => vk_worker::main(a),
             WorkerCommand::Mock(a) => mock_worker::main(a),
         }
     }

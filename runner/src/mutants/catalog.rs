@@ -107,6 +107,9 @@ pub fn about(f: Fault) -> &'static str {
         F::SeamlessIgnored => {
             "GL's TEXTURE_CUBE_MAP_SEAMLESS enable ignored (cube maps filtered per face)"
         }
+        F::VkCubeEdgePerFace => {
+            "Vulkan Cube Map Edge Handling skipped: LINEAR at a face edge clamps within the face (GL's non-seamless default kept under Vulkan)"
+        }
         F::SamplerObjectIgnored => {
             "a bound sampler object's compare / filter / wrap / LOD state ignored in favour of the texture's"
         }

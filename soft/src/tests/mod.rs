@@ -22,6 +22,7 @@ pub(super) fn case2d(
         Spec::Es2Ext => ApiPath::Es100Ext,
         Spec::Gles32 => ApiPath::Es300,
         Spec::Gl46 => ApiPath::GlslCore,
+        Spec::Vulkan => ApiPath::Vulkan,
         _ => ApiPath::FixedFunction,
     };
     let depth = if format.is_fixed_point() {

@@ -111,13 +111,24 @@ fn seamless_texture_with(c: &Cell, x: [f64; 2]) -> Texture {
     )
 }
 
+/// The id part of a seamless case: GL's enable off or on, ES's rule, Vulkan's edge handling.
+fn seamless_tag(d: &SpecDims, on: Option<bool>) -> &'static str {
+    match on {
+        Some(true) => "on",
+        Some(false) => "off",
+        None if d.spec == Spec::Vulkan => "always",
+        None => "es",
+    }
+}
+
 /// Seamless cube filtering (GL 4.6 §8.13.1): LINEAR at level 0, LINEAR_MIPMAP_LINEAR between
 /// levels 0 and 1 and LINEAR_MIPMAP_NEAREST at level 1, on +X near its +Z edge, its -Y edge, the
 /// corner between them and inside; GL with the enable off and on, with CLAMP_TO_EDGE and REPEAT
-/// (ignored while seamless); ES with its rule (always seamless, no enable).
+/// (ignored while seamless); ES with its rule (always seamless, no enable); Vulkan with its Cube
+/// Map Edge Handling (always across faces).
 pub fn seamless(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
-    if !d.targets.contains(&Target::Cube) || !has_gl33_state(d) {
+    if !d.targets.contains(&Target::Cube) || !(has_gl33_state(d) || d.spec == Spec::Vulkan) {
         return out;
     }
     let settings: &[Option<bool>] = if d.spec == Spec::Gl46 {
@@ -157,11 +168,7 @@ pub fn seamless(d: &SpecDims) -> Vec<Draft> {
                             r,
                         );
                         lk.lod = lod;
-                        let mode = match on {
-                            Some(true) => "on",
-                            Some(false) => "off",
-                            None => "es",
-                        };
+                        let mode = seamless_tag(d, on);
                         let mut x = Draft::new(
                             "seamless",
                             c,
@@ -188,11 +195,7 @@ pub fn seamless(d: &SpecDims) -> Vec<Draft> {
                 layer: 0.0,
                 face: 0,
             };
-            let mode = match on {
-                Some(true) => "on",
-                Some(false) => "off",
-                None => "es",
-            };
+            let mode = seamless_tag(d, on);
             let mut x = Draft::new(
                 "seamless",
                 c,

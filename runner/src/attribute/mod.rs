@@ -1,0 +1,387 @@
+//! Layer attribution (`shadowcheck attribute`): for a failure on a layered implementation (GL on
+//! Vulkan through zink, WebGL on Vulkan through ANGLE), which layer broke the lookup.
+//!
+//! The plan of a GL or GL ES case is API-neutral: the same texture, sampler state and lookup as a
+//! Vulkan case ([`vulkan_counterpart`]) where Vulkan 1.3 defines it (the oracle's `vulkan` rules
+//! accept it). The Vulkan driver under the layer ([`LAYERS`]) answers that counterpart in the same
+//! runs, and the failure is classified ([`Layer`]):
+//!
+//! - **upper**: the Vulkan driver answers the counterpart correctly; or the case has no Vulkan
+//!   counterpart (GL-only state such as DEPTH_TEXTURE_MODE, a fixed-function path, a rectangle
+//!   texture, a 32-bit UNORM depth format), or the driver lacks what it needs (a Skip: a format it does not have), so the layer
+//!   must emulate it and the emulation is what failed;
+//! - **lower**: the driver fails the counterpart with the same observed r;
+//! - **both**: the driver fails the counterpart too, with another r;
+//! - **no equivalent**: the counterpart exists but no run holds the driver's answer to it (not
+//!   run, or a Vulkan fixture of that id that is not the same lookup), or the failure is a read
+//!   without comparison (Vulkan has one, a non-Dref sample, but the Vulkan cases are depth
+//!   comparisons only).
+//!
+//! A case id names its grid coordinates after the spec (`gl46/2d/d24/...`); the Vulkan grid uses
+//! the same families, so the counterpart's id is the Vulkan spec key in front of the same rest,
+//! and the fixture of that id is checked to hold the same lookup.
+
+use crate::records::{Outcome, Results, TestResult};
+use serde::Serialize;
+use shadowcheck_model::{ApiPath, Case, CompareMode, Spec};
+use std::collections::{BTreeMap, HashMap};
+
+/// A layered implementation: the backends of the upper layer and the Vulkan backend of the driver
+/// under it.
+#[derive(Debug, Clone, Copy)]
+pub struct Layering {
+    /// Backend names starting with this are the upper layer.
+    pub upper_prefix: &'static str,
+    /// The Vulkan backend of the driver the upper layer runs on.
+    pub lower: &'static str,
+    pub what: &'static str,
+}
+
+/// The layerings shadowcheck runs: zink on lavapipe (Mesa's default zink here), zink on
+/// SwiftShader's Vulkan driver, ANGLE's Vulkan back end on SwiftShader (WebGL in Chromium).
+pub const LAYERS: &[Layering] = &[
+    Layering {
+        upper_prefix: "egl:zink+swiftshader:",
+        lower: "vk:swiftshader",
+        what: "zink on SwiftShader's Vulkan driver",
+    },
+    Layering {
+        upper_prefix: "egl:zink:",
+        lower: "vk:lavapipe",
+        what: "zink on lavapipe",
+    },
+    Layering {
+        upper_prefix: "osmesa:zink",
+        lower: "vk:lavapipe",
+        what: "zink on lavapipe",
+    },
+    Layering {
+        upper_prefix: "webgl:chromium",
+        lower: "vk:swiftshader",
+        what: "ANGLE's Vulkan back end on SwiftShader",
+    },
+];
+
+/// The layering a backend belongs to, if it is an upper layer.
+pub fn layering_of(backend: &str) -> Option<&'static Layering> {
+    LAYERS.iter().find(|l| backend.starts_with(l.upper_prefix))
+}
+
+/// Which layer a failure is attributed to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Layer {
+    Upper,
+    Lower,
+    Both,
+    NoEquivalent,
+}
+
+impl Layer {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Layer::Upper => "upper",
+            Layer::Lower => "lower",
+            Layer::Both => "both",
+            Layer::NoEquivalent => "no equivalent",
+        }
+    }
+}
+
+/// One attributed failure.
+#[derive(Debug, Clone, Serialize)]
+pub struct Attribution {
+    pub backend: String,
+    pub test: String,
+    pub outcome: Outcome,
+    /// The Vulkan backend asked, and the counterpart's test name (`None`: no counterpart).
+    pub lower: &'static str,
+    pub counterpart: Option<String>,
+    pub layer: Layer,
+    pub why: String,
+}
+
+/// The Vulkan case with `case`'s texture, sampler state and lookup, where Vulkan 1.3 defines that
+/// lookup; `Err` with the oracle's reason where it does not (GL-only state or path).
+pub fn vulkan_counterpart(case: &Case) -> Result<Case, String> {
+    let rest = case
+        .id
+        .split_once('/')
+        .map(|(_, r)| r)
+        .unwrap_or(case.id.as_str());
+    let mut c = case.clone();
+    c.id = format!("{}/{rest}", Spec::Vulkan.key());
+    c.spec = Spec::Vulkan;
+    c.api = vec![ApiPath::Vulkan];
+    c.expect = None;
+    match shadowcheck_oracle::evaluate(&c) {
+        Ok(_) => Ok(c),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+/// A read without comparison (compare mode NONE): Vulkan has it (a sample that is not
+/// OpImage*Dref*), but the Vulkan cases are depth comparisons only, so its layer is not known
+/// (no equivalent); unless it also needs what Vulkan lacks altogether (GL's incompleteness,
+/// DEPTH_TEXTURE_MODE, ...), which the layer emulates (upper). `None` for a comparison.
+fn gl_only_read(case: &Case) -> Option<(Layer, String)> {
+    if case.sampler.in_effect().compare_mode != CompareMode::None {
+        return None;
+    }
+    let rules = shadowcheck_oracle::rules::rules_for(case.spec);
+    let s = case.sampler.in_effect();
+    if let Some(why) = shadowcheck_oracle::lod::incomplete(&rules, &case.texture, &s, false) {
+        return Some((
+            Layer::Upper,
+            format!("GL calls the texture incomplete ({why}): Vulkan has no incomplete textures, the layer emulates GL's rule"),
+        ));
+    }
+    if !case.texture.format.is_depth() {
+        return Some((
+            Layer::NoEquivalent,
+            "a colour read: Vulkan has it (R8_UNORM, a non-Dref sample), outside the Vulkan cases (depth comparison only)".into(),
+        ));
+    }
+    let mut compared = case.clone();
+    compared.sampler.compare_mode = CompareMode::Compare;
+    if let Some(o) = compared.sampler.sampler_object.as_mut() {
+        o.compare_mode = CompareMode::Compare;
+    }
+    Some(match vulkan_counterpart(&compared) {
+        Err(why) => (
+            Layer::Upper,
+            format!("no Vulkan counterpart, the layer emulates it: {why}"),
+        ),
+        Ok(_) => (
+            Layer::NoEquivalent,
+            "a read without comparison: Vulkan has it (a non-Dref sample), outside the Vulkan cases (depth comparison only)".into(),
+        ),
+    })
+}
+
+/// The same lookup: texture, sampler state and lookup (compared as written in a fixture, so that a
+/// NaN reference equals itself), and every sweep point of `vk` one of `gl`'s (a sweep keeps the
+/// points its spec defines). `Some(n)`: the same, `vk` holding `n` of `gl`'s points.
+fn same_lookup(gl: &Case, vk: &Case) -> Option<usize> {
+    let text = |c: &Case| {
+        (
+            serde_json::to_string(&c.texture).ok(),
+            serde_json::to_string(&c.sampler).ok(),
+            serde_json::to_string(&c.lookup).ok(),
+        )
+    };
+    let point = |p: &shadowcheck_model::sweep::SweepPoint| format!("{:?} {:?}", p.coord, p.dref);
+    let gl_points: Vec<String> = gl.sweep.iter().map(point).collect();
+    let all_in = vk.sweep.iter().all(|p| gl_points.contains(&point(p)));
+    (text(gl) == text(vk) && all_in).then_some(vk.sweep.len())
+}
+
+/// The observed r of a record, if it has one.
+fn r_of(t: &TestResult) -> Option<f64> {
+    t.observed.as_ref().map(|o| o.0[0])
+}
+
+/// Attributes every failure (Fail or Warn outcome) of an upper-layer backend in `results`.
+/// `cases`: the fixtures' cases by id (both the GL and the Vulkan ones).
+pub fn attribute(results: &Results, cases: &HashMap<String, Case>) -> Vec<Attribution> {
+    let mut out = Vec::new();
+    for t in &results.results {
+        let Some(layering) = layering_of(&t.backend) else {
+            continue;
+        };
+        if !matches!(t.outcome, Outcome::Fail | Outcome::Warn) {
+            continue;
+        }
+        let mut row = Attribution {
+            backend: t.backend.clone(),
+            test: t.test.clone(),
+            outcome: t.outcome,
+            lower: layering.lower,
+            counterpart: None,
+            layer: Layer::NoEquivalent,
+            why: String::new(),
+        };
+        let Some(case) = cases.get(&t.case_id) else {
+            row.why = format!("case `{}` is not in the fixtures read", t.case_id);
+            out.push(row);
+            continue;
+        };
+        if let Some(why) = gl_only_read(case) {
+            // Vulkan samples depth and colour images without a comparison too, through another
+            // instruction than OpImage*Dref*: an equivalent exists, outside the oracle's
+            // Vulkan rules (depth comparison only), so nothing says which layer is at fault.
+            row.layer = why.0;
+            row.why = why.1;
+            out.push(row);
+            continue;
+        }
+        let vk = match vulkan_counterpart(case) {
+            Ok(vk) => vk,
+            Err(why) => {
+                row.layer = Layer::Upper;
+                row.why = format!("no Vulkan counterpart, the layer emulates it: {why}");
+                out.push(row);
+                continue;
+            }
+        };
+        let name = TestResult::name(&vk.id, ApiPath::Vulkan);
+        row.counterpart = Some(name.clone());
+        // Where Vulkan's rule gives another value than the GL spec's (GL's non-seamless cube maps,
+        // its LINEAR layer rounding), the layer must emulate the GL rule: said with the verdict.
+        let mut differs = String::new();
+        match cases.get(&vk.id).map(|f| (f, same_lookup(case, f))) {
+            Some((f, Some(points))) => {
+                if points < case.sweep.len() {
+                    differs = format!(
+                        " (the Vulkan case has {points} of the {} sweep points)",
+                        case.sweep.len()
+                    );
+                }
+                let value = |c: &Case| c.expect.as_ref().and_then(|x| x.spec_value);
+                if value(f) != value(case) {
+                    differs += &format!(
+                        " (Vulkan's spec value here is {}, GL's {}: the layer must emulate GL's rule)",
+                        value(f).map_or("none".into(), |v| v.to_string()),
+                        value(case).map_or("none".into(), |v| v.to_string())
+                    );
+                }
+            }
+            Some((_, None)) => {
+                row.why = format!("the Vulkan fixture `{}` is another lookup", vk.id);
+                out.push(row);
+                continue;
+            }
+            None => {
+                row.why = format!("no Vulkan fixture `{}`", vk.id);
+                out.push(row);
+                continue;
+            }
+        }
+        let Some(low) = results.get(layering.lower, &name) else {
+            row.why = format!("no result of {} for {name} in the runs", layering.lower);
+            out.push(row);
+            continue;
+        };
+        (row.layer, row.why) = match low.outcome {
+            Outcome::Pass => (
+                Layer::Upper,
+                format!("{} passes the same lookup", layering.lower),
+            ),
+            Outcome::Skip => (
+                Layer::Upper,
+                format!(
+                    "{} cannot run the same lookup ({}): the layer emulates it",
+                    layering.lower,
+                    low.reason.as_deref().unwrap_or("skipped")
+                ),
+            ),
+            Outcome::Fail | Outcome::Warn => match (r_of(t), r_of(low)) {
+                (Some(a), Some(b)) if (a - b).abs() <= 1e-6 => (
+                    Layer::Lower,
+                    format!("{} returns the same r = {b}", layering.lower),
+                ),
+                (a, b) => (
+                    Layer::Both,
+                    format!(
+                        "{} fails it too, with r = {} (upper: {})",
+                        layering.lower,
+                        b.map_or("?".into(), |v| v.to_string()),
+                        a.map_or("?".into(), |v| v.to_string())
+                    ),
+                ),
+            },
+            other => (
+                Layer::NoEquivalent,
+                format!("{} gave no answer ({})", layering.lower, other.as_str()),
+            ),
+        };
+        row.why += &differs;
+        out.push(row);
+    }
+    out
+}
+
+/// Counts per (upper backend, layer).
+pub fn tally(rows: &[Attribution]) -> BTreeMap<(String, Layer), usize> {
+    let mut m = BTreeMap::new();
+    for r in rows {
+        *m.entry((r.backend.clone(), r.layer)).or_insert(0) += 1;
+    }
+    m
+}
+
+/// A failure class: the same backend, layer and reason once the case ids, formats and values in
+/// the reason are left out.
+fn class_of(r: &Attribution) -> (String, Layer, String) {
+    static MASKS: std::sync::OnceLock<Vec<(regex::Regex, &'static str)>> =
+        std::sync::OnceLock::new();
+    let masks = MASKS.get_or_init(|| {
+        [
+            (r"`[^`]*`", "`…`"),
+            (r"r = [-+0-9.e]+|r = \?", "r = …"),
+            (r"upper: [-+0-9.e]+|upper: \?", "upper: …"),
+            (r"here is [^,]+, GL's [^:]+:", "here differs from GL's:"),
+            (r"has \d+ of the \d+ sweep points", "has fewer sweep points"),
+            (
+                r"\(not mipmap complete: [^)]*\)\)?",
+                "(not mipmap complete)",
+            ),
+        ]
+        .into_iter()
+        .filter_map(|(re, to)| regex::Regex::new(re).ok().map(|re| (re, to)))
+        .collect()
+    });
+    let mut why = r.why.clone();
+    for (re, to) in masks {
+        why = re.replace_all(&why, *to).into_owned();
+    }
+    (r.backend.clone(), r.layer, why)
+}
+
+/// The Markdown report: the tally per backend and layer, then the failure classes (backend,
+/// layer, reason), largest first, each with one example test.
+pub fn markdown(rows: &[Attribution]) -> String {
+    let mut s = String::from("# Layer attribution\n\n");
+    if rows.is_empty() {
+        s += "No failure of a layered backend (zink, WebGL) in the runs read.\n";
+        return s;
+    }
+    s += "| backend | lower layer | upper | lower | both | no equivalent |\n|---|---|---:|---:|---:|---:|\n";
+    let t = tally(rows);
+    let mut backends: Vec<&str> = rows.iter().map(|r| r.backend.as_str()).collect();
+    backends.sort();
+    backends.dedup();
+    for b in backends {
+        let n = |l| t.get(&(b.to_string(), l)).copied().unwrap_or(0);
+        let lower = layering_of(b).map_or("?", |l| l.lower);
+        s += &format!(
+            "| {b} | {lower} | {} | {} | {} | {} |\n",
+            n(Layer::Upper),
+            n(Layer::Lower),
+            n(Layer::Both),
+            n(Layer::NoEquivalent)
+        );
+    }
+    let mut classes: BTreeMap<(String, Layer, String), (usize, &Attribution)> = BTreeMap::new();
+    for r in rows {
+        classes.entry(class_of(r)).or_insert((0, r)).0 += 1;
+    }
+    let mut classes: Vec<_> = classes.into_iter().collect();
+    classes.sort_by(|a, b| (&a.0 .0, b.1 .0).cmp(&(&b.0 .0, a.1 .0)));
+    s += "\nFailure classes (the reason with its case ids and values left out), largest first per backend; every failure is in the JSON output (`--json`).\n\n| backend | layer | tests | why | example (Vulkan counterpart) |\n|---|---|---:|---|---|\n";
+    for ((backend, layer, why), (n, ex)) in classes {
+        s += &format!(
+            "| {backend} | {} | {n} | {} | `{}`{} |\n",
+            layer.as_str(),
+            why.replace('|', "\\|"),
+            ex.test,
+            ex.counterpart
+                .as_deref()
+                .map_or(String::new(), |c| format!(" (`{c}`)"))
+        );
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,208 @@
+use super::*;
+use crate::records::{Status, Tags};
+use shadowcheck_model::{CompareFunc, DepthTextureMode, Format, Target};
+use shadowcheck_protocol::Rgba;
+
+/// The committed fixtures' cases by id.
+fn fixtures() -> HashMap<String, Case> {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures");
+    let mut m = HashMap::new();
+    for (_, f) in shadowcheck_cases::fixtures::load_path(&root).unwrap() {
+        for c in f.cases {
+            m.insert(c.id.clone(), c);
+        }
+    }
+    m
+}
+
+fn record(backend: &str, case: &Case, api: ApiPath, outcome: Outcome, r: f64) -> TestResult {
+    TestResult {
+        backend: backend.into(),
+        test: TestResult::name(&case.id, api),
+        case_id: case.id.clone(),
+        api,
+        status: Status::Plain(outcome),
+        outcome,
+        reason: (outcome == Outcome::Skip).then(|| "no such format".into()),
+        duration: 0.0,
+        tags: Tags::of(case),
+        observed: Some(Rgba([r, 0.0, 0.0, 1.0])),
+        expected: None,
+        footprint: None,
+        rerun: None,
+        fixtures: None,
+    }
+}
+
+/// A committed 2D D24 GL 4.6 core case whose Vulkan counterpart is a committed Vulkan fixture.
+fn pair(cases: &HashMap<String, Case>) -> (Case, Case) {
+    let mut ids: Vec<&String> = cases
+        .keys()
+        .filter(|k| k.starts_with("gl46/2d/d24/"))
+        .collect();
+    ids.sort();
+    for id in ids {
+        let gl = &cases[id];
+        if !gl.api.contains(&ApiPath::GlslCore) {
+            continue;
+        }
+        if let Ok(vk) = vulkan_counterpart(gl) {
+            if cases
+                .get(&vk.id)
+                .is_some_and(|f| same_lookup(gl, f) == Some(f.sweep.len()))
+            {
+                return (gl.clone(), cases[&vk.id].clone());
+            }
+        }
+    }
+    panic!("no GL 4.6 case with a Vulkan counterpart in the fixtures");
+}
+
+#[test]
+fn each_answer_of_the_driver_gives_its_layer() {
+    let cases = fixtures();
+    let (gl, vk) = pair(&cases);
+    let attribute_with = |lower: Option<(Outcome, f64)>| {
+        let mut res = Results::default();
+        res.insert(record(
+            "egl:zink:core",
+            &gl,
+            ApiPath::GlslCore,
+            Outcome::Fail,
+            0.25,
+        ));
+        if let Some((o, r)) = lower {
+            res.insert(record("vk:lavapipe", &vk, ApiPath::Vulkan, o, r));
+        }
+        let rows = attribute(&res, &cases);
+        assert_eq!(rows.len(), 1, "{rows:?}");
+        assert_eq!(rows[0].lower, "vk:lavapipe");
+        rows[0].clone()
+    };
+    assert_eq!(
+        attribute_with(Some((Outcome::Pass, 1.0))).layer,
+        Layer::Upper
+    );
+    assert_eq!(
+        attribute_with(Some((Outcome::Skip, 0.0))).layer,
+        Layer::Upper
+    );
+    assert_eq!(
+        attribute_with(Some((Outcome::Fail, 0.25))).layer,
+        Layer::Lower
+    );
+    assert_eq!(
+        attribute_with(Some((Outcome::Fail, 0.75))).layer,
+        Layer::Both
+    );
+    let none = attribute_with(None);
+    assert_eq!(none.layer, Layer::NoEquivalent);
+    assert_eq!(
+        none.counterpart.as_deref(),
+        Some(TestResult::name(&vk.id, ApiPath::Vulkan).as_str())
+    );
+}
+
+#[test]
+fn gl_only_state_is_the_upper_layers_and_other_backends_are_not_attributed() {
+    let cases = fixtures();
+    let (gl, vk) = pair(&cases);
+    let mut mode = gl.clone();
+    mode.id = "gl46/2d/d24/nearest/lequal/attribute-test".into();
+    mode.sampler.depth_texture_mode = Some(DepthTextureMode::Alpha);
+    mode.api = vec![ApiPath::Glsl130];
+    let mut all = cases.clone();
+    all.insert(mode.id.clone(), mode.clone());
+    let mut res = Results::default();
+    res.insert(record(
+        "egl:zink+swiftshader:compat",
+        &mode,
+        ApiPath::Glsl130,
+        Outcome::Fail,
+        0.0,
+    ));
+    // Not a layered backend: not attributed.
+    res.insert(record(
+        "egl:llvmpipe:core",
+        &gl,
+        ApiPath::GlslCore,
+        Outcome::Fail,
+        0.0,
+    ));
+    // A pass of a layered backend: nothing to attribute.
+    res.insert(record(
+        "egl:zink:core",
+        &gl,
+        ApiPath::GlslCore,
+        Outcome::Pass,
+        1.0,
+    ));
+    res.insert(record(
+        "vk:swiftshader",
+        &vk,
+        ApiPath::Vulkan,
+        Outcome::Fail,
+        0.0,
+    ));
+    let rows = attribute(&res, &all);
+    assert_eq!(rows.len(), 1, "{rows:?}");
+    assert_eq!(rows[0].layer, Layer::Upper);
+    assert_eq!(rows[0].lower, "vk:swiftshader");
+    assert!(rows[0].counterpart.is_none());
+    assert!(
+        rows[0].why.contains("DEPTH_TEXTURE_MODE"),
+        "{}",
+        rows[0].why
+    );
+    // A read without comparison has a Vulkan equivalent outside the Vulkan cases.
+    let mut read = gl.clone();
+    read.sampler.compare_mode = shadowcheck_model::CompareMode::None;
+    read.id = "gl46/2d/d24/nearest/none/attribute-test".into();
+    all.insert(read.id.clone(), read.clone());
+    let mut res2 = Results::default();
+    res2.insert(record(
+        "egl:zink:core",
+        &read,
+        ApiPath::GlslCore,
+        Outcome::Fail,
+        0.5,
+    ));
+    let none = attribute(&res2, &all);
+    assert_eq!(none[0].layer, Layer::NoEquivalent, "{none:?}");
+    assert!(
+        none[0].why.contains("without comparison"),
+        "{}",
+        none[0].why
+    );
+    let md = markdown(&rows);
+    assert!(
+        md.contains("| egl:zink+swiftshader:compat | vk:swiftshader | 1 | 0 | 0 | 0 |"),
+        "{md}"
+    );
+}
+
+#[test]
+fn a_counterpart_keeps_the_lookup_and_refuses_what_vulkan_lacks() {
+    let cases = fixtures();
+    let (gl, vk) = pair(&cases);
+    assert_eq!(vulkan_counterpart(&gl).unwrap().id, vk.id);
+    assert!(vk.id.starts_with("vulkan/2d/d24/"));
+    let mut rect = gl.clone();
+    rect.texture.target = Target::Rect;
+    assert!(vulkan_counterpart(&rect).is_err());
+    let mut d32 = gl.clone();
+    d32.texture.format = Format::D32;
+    assert!(vulkan_counterpart(&d32).is_err());
+    let mut sgix = gl;
+    sgix.sampler.compare_func = CompareFunc::LequalRSgix;
+    assert!(vulkan_counterpart(&sgix).is_err());
+    assert_eq!(
+        layering_of("egl:zink:es3").map(|l| l.lower),
+        Some("vk:lavapipe")
+    );
+    assert_eq!(
+        layering_of("egl:zink+swiftshader:core").map(|l| l.lower),
+        Some("vk:swiftshader")
+    );
+    assert!(layering_of("egl:llvmpipe:core").is_none());
+}
