@@ -348,3 +348,34 @@ fn state_faults_are_killed_by_the_state_cases_and_the_correct_state_passes() {
     assert_eq!(m.status, KillStatus::Survived);
     assert!(m.grid_change.unwrap_or_default().contains("state cases"));
 }
+
+/// The Vulkan fixtures alone kill the faults a Vulkan driver or a translation layer on Vulkan can
+/// plausibly have: Dref clamped for D32_SFLOAT (Vulkan clamps only UNORM), texel and gather
+/// offsets ignored (zink drops non-constant gather offsets without shaderImageGatherExtended),
+/// the gather order, the depth border taken from another component than Br, and cube-map edge
+/// handling done per face (GL's non-seamless default under Vulkan).
+#[test]
+fn the_vulkan_fixtures_alone_kill_the_vulkan_faults() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures/vulkan");
+    let cases: Vec<Case> = shadowcheck_cases::fixtures::load_path(&root)
+        .unwrap()
+        .into_iter()
+        .flat_map(|(_, f)| f.cases)
+        .collect();
+    assert!(cases.iter().all(|c| c.spec == Spec::Vulkan) && cases.len() > 1000);
+    let suite = Suite::new(cases).unwrap();
+    let base = suite.unmutated();
+    assert_eq!((base.fail, base.warn), (0, 0), "{:?}", base.failures);
+    for f in [
+        Fault::RefClampedForFloat,
+        Fault::OffsetIgnored,
+        Fault::GatherOrderRotated,
+        Fault::BorderDepthFromAlpha,
+        Fault::VkCubeEdgePerFace,
+    ] {
+        let m = suite.mutant(f);
+        assert_eq!(m.status, KillStatus::Killed, "{f:?}");
+        let min = m.minimal.unwrap();
+        assert!(min.case.starts_with("vulkan/"), "{}", min.case);
+    }
+}
