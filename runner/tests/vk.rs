@@ -154,6 +154,45 @@ fn run_backend(backend: &str, device: &str, icd: &str, install: &str, lacks: &[&
     }
 }
 
+/// The validation messenger is live: a submission that breaks a valid-usage rule (the worker's
+/// test fault) turns its answers into Errors quoting the layer, so every test is a Fail and the
+/// run exits 100; without the validation layer the same fault goes unseen.
+#[test]
+fn a_validation_message_fails_the_tests_of_its_submission() {
+    let (backend, icd) = ("vk:lavapipe", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
+    if !installed_or_skip(backend, icd, "apt-get install -y mesa-vulkan-drivers") {
+        return;
+    }
+    let tmp = tmpdir("vk-validation-fault");
+    let fx = fixtures(&tmp);
+    let run_with = |validation: &str, out: &str| {
+        let o = bin()
+            .env("SHADOWCHECK_VK_VALIDATION", validation)
+            .env("SHADOWCHECK_VK_TEST_FAULT", "invalid-sampler")
+            .args(["run", "--backend", backend, "--fixtures"])
+            .arg(&fx)
+            .args(["--cases", "^vulkan/2d/d16/nearest/lequal/", "--out"])
+            .arg(tmp.join(out))
+            .output()
+            .unwrap();
+        (Run::of(o), results(&tmp.join(out)))
+    };
+    let (run, rs) = run_with("1", "on");
+    assert_eq!(run.code, 100, "{}\n{}", run.stdout, run.stderr);
+    assert!(!rs.is_empty());
+    for (test, (status, reason)) in &rs {
+        let reason = reason.clone().unwrap_or_default();
+        assert_eq!(status, "Fail", "{test}: {reason}");
+        assert!(
+            reason.contains("validation layer") && reason.contains("anisotropyEnable"),
+            "{test}: {reason}"
+        );
+    }
+    let (run, rs) = run_with("0", "off");
+    assert_eq!(run.code, 0, "{}\n{}", run.stdout, run.stderr);
+    assert!(rs.values().all(|r| r.0 == "Pass"), "{rs:?}");
+}
+
 #[test]
 fn lavapipe_runs_the_2d_cases_under_validation() {
     run_backend(

@@ -90,6 +90,11 @@ pub fn parse_backend(name: &str) -> Result<Driver, VkError> {
 /// warning and error it gives (`1`).
 pub const VALIDATION_ENV: &str = "SHADOWCHECK_VK_VALIDATION";
 
+/// Tests only: `invalid-sampler` makes every submission also create (and destroy) a sampler that
+/// breaks a valid-usage rule, so that a test sees the validation layer's message turn the
+/// submission's answers into Errors (the messenger path is live).
+pub const TEST_FAULT_ENV: &str = "SHADOWCHECK_VK_TEST_FAULT";
+
 /// What goes wrong in the Vulkan worker.
 #[derive(Debug, thiserror::Error)]
 pub enum VkError {

@@ -68,6 +68,21 @@ impl VkWorker {
         out
     }
 
+    /// [`crate::TEST_FAULT_ENV`]: a sampler with anisotropy enabled on a device created without
+    /// the samplerAnisotropy feature (VUID-VkSamplerCreateInfo-anisotropyEnable-01070), destroyed
+    /// at once; drivers ignore the request, the validation layer reports it.
+    fn invalid_sampler(&self) {
+        let d = &self.renderer.gpu.device;
+        let sci = ash::vk::SamplerCreateInfo::default()
+            .anisotropy_enable(true)
+            .max_anisotropy(4.0);
+        // SAFETY: a valid device and create info; the sampler is destroyed before anything uses it.
+        if let Ok(s) = unsafe { d.create_sampler(&sci, None) } {
+            // SAFETY: `s` was created on `d` and is in no descriptor set or command buffer.
+            unsafe { d.destroy_sampler(s, None) };
+        }
+    }
+
     fn submit_chunk(
         &mut self,
         jobs: &[Job],
@@ -83,6 +98,9 @@ impl VkWorker {
                 plan: &p.plan,
             })
             .collect();
+        if std::env::var(crate::TEST_FAULT_ENV).is_ok_and(|v| v == "invalid-sampler") {
+            self.invalid_sampler();
+        }
         let drawn = self.renderer.draw(specs, &lookups);
         let mut messages = std::mem::take(&mut self.pending);
         messages.extend(take_messages());
