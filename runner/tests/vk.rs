@@ -214,3 +214,49 @@ fn swiftshader_runs_the_2d_cases_under_validation_and_skips_d24() {
         &["d24", "d24s8"],
     );
 }
+
+/// A run holding zink and the Vulkan driver under it attributes zink's failures in report.md:
+/// the LINEAR array-layer tie (GL: ⌊a + ½⌋; Vulkan: RNE or ⌊a + ½⌋) is the upper layer's, since
+/// lavapipe answers the Vulkan lookup as Vulkan allows and zink does not emulate GL's rule.
+#[test]
+fn a_run_with_zink_and_lavapipe_attributes_the_layer_tie_to_zink() {
+    let icd = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
+    if !installed_or_skip("vk:lavapipe", icd, "apt-get install -y mesa-vulkan-drivers") {
+        return;
+    }
+    let tmp = tmpdir("vk-attribute");
+    let out = bin()
+        .args([
+            "run",
+            "-b",
+            "egl:zink:core",
+            "-b",
+            "vk:lavapipe",
+            "--fixtures",
+        ])
+        .arg(repo().join("cases/fixtures"))
+        .arg("--cases")
+        .arg("^(gl46|vulkan)/2darray/d24/linear/lequal/layer/")
+        .arg("--out")
+        .arg(tmp.join("out"))
+        .output()
+        .unwrap();
+    let run = Run::of(out);
+    // zink fails the ties (exit 100); lavapipe passes them.
+    assert_eq!(run.code, 100, "{}\n{}", run.stdout, run.stderr);
+    let md = std::fs::read_to_string(tmp.join("out/report.md")).unwrap();
+    let section = md
+        .split("## Layer attribution")
+        .nth(1)
+        .unwrap_or_else(|| panic!("no attribution in report.md:\n{md}"));
+    assert!(
+        section.contains("| egl:zink:core | upper |")
+            && section.contains("the layer must emulate GL's rule"),
+        "{section}"
+    );
+    let rs = results(&tmp.join("out"));
+    assert!(rs
+        .iter()
+        .filter(|(t, _)| t.ends_with("@vk"))
+        .all(|(_, r)| r.0 == "Pass"));
+}

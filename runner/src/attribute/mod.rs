@@ -301,6 +301,55 @@ pub fn attribute(results: &Results, cases: &HashMap<String, Case>) -> Vec<Attrib
     out
 }
 
+/// report.md's "Layer attribution" section, when the run holds a layered backend with failures
+/// and the Vulkan driver under it; the cases come from the run's `fixtures` (read only then).
+/// A fixture that does not load is said in the section, not an error of the report.
+pub fn report_section(
+    results: &[TestResult],
+    backends: &[String],
+    fixtures: &[std::path::PathBuf],
+) -> Option<String> {
+    let paired = |b: &String| layering_of(b).is_some_and(|l| backends.iter().any(|x| x == l.lower));
+    let wanted = results
+        .iter()
+        .any(|r| paired(&r.backend) && matches!(r.outcome, Outcome::Fail | Outcome::Warn));
+    if !wanted {
+        return None;
+    }
+    let mut cases = HashMap::new();
+    let mut problems = vec![];
+    for root in fixtures {
+        match shadowcheck_cases::fixtures::load_path(root) {
+            Ok(files) => {
+                for (_, f) in files {
+                    for c in f.cases {
+                        cases.insert(c.id.clone(), c);
+                    }
+                }
+            }
+            Err(e) => problems.push(format!("{}: {e}", root.display())),
+        }
+    }
+    let mut all = Results::default();
+    for r in results {
+        all.insert(r.clone());
+    }
+    let rows: Vec<Attribution> = attribute(&all, &cases)
+        .into_iter()
+        .filter(|r| backends.iter().any(|b| b == r.lower))
+        .collect();
+    let mut s = markdown(&rows).replacen("# Layer attribution", "## Layer attribution", 1);
+    s = s.replacen(
+        "\n\n",
+        "\n\nEach Fail and Warn of a layered backend against the Vulkan driver's answer to the same lookup in this run (`shadowcheck attribute`, runner/README.md).\n\n",
+        1,
+    );
+    for p in problems {
+        s += &format!("\nFixtures not read for the attribution: {p}\n");
+    }
+    Some(s)
+}
+
 /// Counts per (upper backend, layer).
 pub fn tally(rows: &[Attribution]) -> BTreeMap<(String, Layer), usize> {
     let mut m = BTreeMap::new();

@@ -205,7 +205,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     for f in report::FINAL_FILES {
         let _ = std::fs::remove_file(out_dir.join(f));
     }
-    let mut fanout = reporters(&a, &out_dir, jsonl, &lists);
+    let mut fanout = reporters(&a, &out_dir, jsonl, &lists, &fixtures);
     let baseline = a.baseline.is_some().then(|| lists.baseline.clone());
     let settings = Settings {
         lists,
@@ -417,7 +417,13 @@ fn open_results(
 }
 
 /// The run's reporters: the terminal, results.jsonl, and the files of `out_dir`.
-fn reporters(a: &Args, out_dir: &Path, jsonl: JsonlReporter, lists: &Lists) -> Fanout {
+fn reporters(
+    a: &Args,
+    out_dir: &Path,
+    jsonl: JsonlReporter,
+    lists: &Lists,
+    fixtures: &[PathBuf],
+) -> Fanout {
     let mut fanout = Fanout::default();
     fanout.reporters.push(Box::new(TerminalReporter::new(
         a.timings,
@@ -429,6 +435,7 @@ fn reporters(a: &Args, out_dir: &Path, jsonl: JsonlReporter, lists: &Lists) -> F
         &FileReports {
             full: a.full_report,
             baseline: a.baseline.is_some().then(|| lists.baseline.clone()),
+            fixtures: fixtures.to_vec(),
             ..FileReports::default()
         },
     ));

@@ -13,14 +13,18 @@ const MAX_DUMPS: usize = 500;
 pub struct MarkdownReporter {
     dir: PathBuf,
     baseline: Option<Baseline>,
+    fixtures: Vec<PathBuf>,
 }
 
 impl MarkdownReporter {
-    /// `baseline`: the run's baseline, whose entries that excuse nothing get a section.
-    pub fn new(dir: &Path, baseline: Option<Baseline>) -> MarkdownReporter {
+    /// `baseline`: the run's baseline, whose entries that excuse nothing get a section;
+    /// `fixtures`: the run's, read for the layer attribution when the run holds a layered
+    /// backend and the Vulkan driver under it.
+    pub fn new(dir: &Path, baseline: Option<Baseline>, fixtures: Vec<PathBuf>) -> MarkdownReporter {
         MarkdownReporter {
             dir: dir.to_path_buf(),
             baseline,
+            fixtures,
         }
     }
 }
@@ -138,6 +142,12 @@ impl Reporter for MarkdownReporter {
                         let _ = writeln!(text, "- {n}");
                     }
                 }
+            }
+            if let Some(layers) =
+                crate::attribute::report_section(results, &summary.backends, &self.fixtures)
+            {
+                text.push('\n');
+                text += &layers;
             }
             super::atomic::write(&self.dir.join("report.md"), text.as_bytes())?;
         }
