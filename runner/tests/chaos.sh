@@ -373,5 +373,26 @@ sed -i '/"kind":"meta"/d' "$T/b10/results.jsonl"
 "$SC" run -b mock: --fixtures "$FX" -o "$T/b10" --resume >"$T/b10.out" 2>&1; c=$?
 line "--resume of results.jsonl without meta" "$(grep -o 'has no meta line' "$T/b10.out" || echo 'no word')" $c "$(ok_if "[ $c = 96 ]")"
 
+# Vulkan backends (vk:*): the vk-worker killed with SIGKILL mid-run (the runner re-sends what it
+# had not answered to a fresh worker: the verdicts are a clean run's), and vk:native with a loader
+# that finds no driver (a setup error naming it, exit 96, no panic). The kill needs lavapipe and
+# glslangValidator and is SKIPPED without them.
+if [ -f /usr/share/vulkan/icd.d/lvp_icd.x86_64.json ] && command -v glslangValidator >/dev/null 2>&1; then
+  "$SC" run -b vk:lavapipe --fixtures cases/fixtures/vulkan -o "$T/v0" >/dev/null 2>&1
+  "$SC" run -b vk:lavapipe --fixtures cases/fixtures/vulkan -o "$T/v1" >"$T/v1.out" 2>&1 & p=$!
+  w=""
+  for _ in $(seq 1 100); do
+    w=$(descendants $p | grep -- 'vk-worker' | awk '{print $1}' | head -1)
+    [ -n "$w" ] && break; sleep 0.1
+  done
+  sleep 2; [ -n "$w" ] && kill -9 "$w"; wait $p; c=$?
+  same=$(cmp -s <(cut -d, -f1,2 "$T/v0/results.csv" | sort) <(cut -d, -f1,2 "$T/v1/results.csv" | sort) && echo same || echo differ)
+  line "vk: kill -9 the vk-worker mid-run" "worker ${w:-not found} killed, verdicts $same as a clean run's" $c "$(ok_if "[ -n '$w' ] && [ $c = 0 ] && [ $same = same ]")"
+else
+  line "vk: kill -9 the vk-worker mid-run" "SKIPPED (no lavapipe or glslangValidator)" - SKIPPED
+fi
+VK_ICD_FILENAMES=/nonexistent/icd.json "$SC" run -b vk:native --fixtures "$FX" -o "$T/v2" >"$T/v2.out" 2>&1; c=$?
+line "vk:native, the loader finds no driver" "$(grep -o 'Unable to find a Vulkan driver\|cannot start' "$T/v2.out" | head -1), $(panicked "$T/v2.out")" $c "$(ok_if "[ $c = 96 ] && ! grep -q panicked $T/v2.out")"
+
 echo "($T kept; $BROKEN BROKEN)"
 exit $BROKEN
