@@ -259,4 +259,21 @@ fn a_run_with_zink_and_lavapipe_attributes_the_layer_tie_to_zink() {
         .iter()
         .filter(|(t, _)| t.ends_with("@vk"))
         .all(|(_, r)| r.0 == "Pass"));
+    // The HTML report of the same run has the section too.
+    let o = bin()
+        .args(["report"])
+        .arg(tmp.join("out"))
+        .arg("--fixtures")
+        .arg(repo().join("cases/fixtures"))
+        .arg("-o")
+        .arg(tmp.join("html"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let page = std::fs::read_to_string(tmp.join("html/index.html")).unwrap();
+    let layers = page
+        .split("id=\"s-layers\"")
+        .nth(1)
+        .unwrap_or_else(|| panic!("no layer section in the HTML report"));
+    assert!(layers.contains("<td>upper</td>") && layers.contains("must emulate GL"));
 }

@@ -387,6 +387,36 @@ fn class_of(r: &Attribution) -> (String, Layer, String) {
     (r.backend.clone(), r.layer, why)
 }
 
+/// A failure class: its backend, layer and reason, how many tests, and the first of them.
+#[derive(Debug, Clone)]
+pub struct Class<'a> {
+    pub backend: String,
+    pub layer: Layer,
+    pub why: String,
+    pub tests: usize,
+    pub example: &'a Attribution,
+}
+
+/// The failure classes of `rows`, per backend, largest first.
+pub fn classes(rows: &[Attribution]) -> Vec<Class<'_>> {
+    let mut m: BTreeMap<(String, Layer, String), (usize, &Attribution)> = BTreeMap::new();
+    for r in rows {
+        m.entry(class_of(r)).or_insert((0, r)).0 += 1;
+    }
+    let mut v: Vec<Class> = m
+        .into_iter()
+        .map(|((backend, layer, why), (tests, example))| Class {
+            backend,
+            layer,
+            why,
+            tests,
+            example,
+        })
+        .collect();
+    v.sort_by(|a, b| (&a.backend, b.tests).cmp(&(&b.backend, a.tests)));
+    v
+}
+
 /// The Markdown report: the tally per backend and layer, then the failure classes (backend,
 /// layer, reason), largest first, each with one example test.
 pub fn markdown(rows: &[Attribution]) -> String {
@@ -411,22 +441,19 @@ pub fn markdown(rows: &[Attribution]) -> String {
             n(Layer::NoEquivalent)
         );
     }
-    let mut classes: BTreeMap<(String, Layer, String), (usize, &Attribution)> = BTreeMap::new();
-    for r in rows {
-        classes.entry(class_of(r)).or_insert((0, r)).0 += 1;
-    }
-    let mut classes: Vec<_> = classes.into_iter().collect();
-    classes.sort_by(|a, b| (&a.0 .0, b.1 .0).cmp(&(&b.0 .0, a.1 .0)));
     s += "\nFailure classes (the reason with its case ids and values left out), largest first per backend; every failure is in the JSON output (`--json`).\n\n| backend | layer | tests | why | example (Vulkan counterpart) |\n|---|---|---:|---|---|\n";
-    for ((backend, layer, why), (n, ex)) in classes {
+    for c in classes(rows) {
         s += &format!(
-            "| {backend} | {} | {n} | {} | `{}`{} |\n",
-            layer.as_str(),
-            why.replace('|', "\\|"),
-            ex.test,
-            ex.counterpart
+            "| {} | {} | {} | {} | `{}`{} |\n",
+            c.backend,
+            c.layer.as_str(),
+            c.tests,
+            c.why.replace('|', "\\|"),
+            c.example.test,
+            c.example
+                .counterpart
                 .as_deref()
-                .map_or(String::new(), |c| format!(" (`{c}`)"))
+                .map_or(String::new(), |v| format!(" (`{v}`)"))
         );
     }
     s

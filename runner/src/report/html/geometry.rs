@@ -13,7 +13,7 @@
 use crate::records::TestResult;
 use crate::run::load_cases;
 use crate::verdict::oracle_evaluate;
-use shadowcheck_model::{Expectation, Footprint};
+use shadowcheck_model::{Expectation, Footprint, Spec};
 use std::collections::{HashMap, HashSet};
 use std::path::PathBuf;
 
@@ -36,6 +36,9 @@ pub struct Geometry {
     pub fixtures: Vec<String>,
     /// Cases named by results that no fixture holds.
     pub missing: usize,
+    /// The cases the layer attribution needs (`crate::attribute`): the failing ones of a layered
+    /// backend whose Vulkan driver is in the results too, and the Vulkan ones; empty otherwise.
+    pub cases: HashMap<String, shadowcheck_model::Case>,
 }
 
 impl Geometry {
@@ -51,6 +54,18 @@ impl Geometry {
             return g;
         }
         let wanted: HashSet<&str> = results.iter().map(|r| r.case_id.as_str()).collect();
+        let backends: HashSet<&str> = results.iter().map(|r| r.backend.as_str()).collect();
+        let layered: HashSet<&str> = results
+            .iter()
+            .filter(|r| {
+                matches!(
+                    r.outcome,
+                    crate::records::Outcome::Fail | crate::records::Outcome::Warn
+                ) && crate::attribute::layering_of(&r.backend)
+                    .is_some_and(|l| backends.contains(l.lower))
+            })
+            .map(|r| r.case_id.as_str())
+            .collect();
         let set = load_cases(&paths);
         let mut found = 0usize;
         for l in &set.cases {
@@ -58,6 +73,11 @@ impl Geometry {
                 continue;
             }
             found += 1;
+            if !layered.is_empty()
+                && (layered.contains(l.case.id.as_str()) || l.case.spec == Spec::Vulkan)
+            {
+                g.cases.insert(l.case.id.clone(), l.case.clone());
+            }
             if let Ok(ev) = oracle_evaluate(&l.case) {
                 if let Some(p) = single_texel(&ev.footprint) {
                     g.points.insert(l.case.id.clone(), p);
