@@ -456,6 +456,12 @@ pub fn markdown(rows: &[Attribution]) -> String {
                 .map_or(String::new(), |v| format!(" (`{v}`)"))
         );
     }
+    if rows
+        .iter()
+        .any(|r| matches!(r.layer, Layer::Lower | Layer::Both))
+    {
+        s += "\nA lower or both class is the Vulkan driver's to confirm: `shadowcheck repro -b <lower layer> --case '<Vulkan counterpart>'` writes the standalone Vulkan program of the same lookup (runner/README.md, \"Reproducers\").\n";
+    }
     s
 }
 

@@ -1,6 +1,7 @@
 //! `shadowcheck repro`: a standalone C reproducer and a bug report for a failing test on a GL
-//! backend, or one per failure class of a results directory (`--all-failures`). The generator is
-//! `shadowcheck_runner::repro`; this file parses the flags, runs it and prints what was written.
+//! or Vulkan backend, or one per failure class of a results directory (`--all-failures`). The
+//! generator is `shadowcheck_runner::repro`; this file parses the flags, runs it and prints what
+//! was written.
 //!
 //! Exit codes: 0 written (a Fail reproduced: REPORT.md beside repro.c; or `--allow-pass`);
 //! 1 the test is not a Fail on this backend (Pass or Warn: no bug report; repro.c, build.sh and
@@ -21,7 +22,7 @@ use std::process::ExitCode;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The GL backend the test failed on (egl:* or osmesa:*, as in `run -b`).
+    /// The backend the test failed on (egl:*, osmesa:* or vk:*, as in `run -b`).
     #[arg(
         long = "backend",
         short = 'b',
@@ -30,7 +31,7 @@ pub struct Args {
     )]
     backend: Option<String>,
     /// The test: `<case id>@<api>` as in results and baselines (api: ff, arbfp, glsl120, glsl130,
-    /// core, es100, es300).
+    /// core, es100, es300, vk).
     #[arg(
         long = "case",
         value_name = "ID",

@@ -48,9 +48,17 @@ fn subject() -> Subject {
     }
 }
 
+fn gl(s: &Subject) -> BackendName {
+    match s.backend {
+        super::super::Backend::Gl(b) => b,
+        super::super::Backend::Vk(_) => panic!("a GL subject"),
+    }
+}
+
 #[test]
 fn program_carries_the_stored_integers_the_state_the_lookup_and_the_oracle_set() {
-    let c = program(&subject()).unwrap();
+    let s = subject();
+    let c = program(&s, gl(&s)).unwrap();
     for want in [
         "static const GLushort LEVEL0[] = {\n    0, 21845, 43690, 65535\n};",
         "glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, 2, 2, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, LEVEL0);",
@@ -84,7 +92,7 @@ fn float_literals_read_back_exactly() {
 #[test]
 fn every_reading_of_the_layout_goes_into_the_program() {
     let mut s = subject();
-    let c = program(&s).unwrap();
+    let c = program(&s, gl(&s)).unwrap();
     assert!(
         c.contains("static const char LAYOUTS[][4] = {{'r', '-', '-', '-'}};"),
         "{c}"
@@ -99,7 +107,7 @@ fn every_reading_of_the_layout_goes_into_the_program() {
             layout: [Channel::R, Channel::Zero, Channel::Zero, Channel::One],
         }],
     );
-    let c = program(&s).unwrap();
+    let c = program(&s, gl(&s)).unwrap();
     for want in [
         "static const char LAYOUTS[][4] = {{'r', '-', '-', '-'}, {'r', '0', '0', '1'}};",
         "static const char *READINGS[] = {\"the spec value's\", \"compat-depth-cb\"};",

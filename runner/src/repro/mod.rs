@@ -1,6 +1,8 @@
 //! `shadowcheck repro`: from one failing test to a standalone reproducer and a bug report.
 //!
-//! For a GL backend (`egl:*`, `osmesa:*`) and a test `<case id>@<api>` this writes into a directory:
+//! For a Vulkan backend (`vk:*`) the program is [`vulkan`]'s (Vulkan C, with the SPIR-V built from
+//! the GLSL files beside it); the rest below is the same. For a GL backend (`egl:*`, `osmesa:*`)
+//! and a test `<case id>@<api>` this writes into a directory:
 //! - `repro.c` ([`csource`]): a C program that creates the worker's context, texture, sampler state
 //!   and lookup, draws once, prints expected (from the oracle, as constants) and observed, and exits 1
 //!   when the observation is outside the accepted set;
@@ -16,6 +18,7 @@ pub mod classes;
 pub mod csource;
 pub mod report;
 mod tokens;
+pub mod vulkan;
 
 use shadowcheck_gl::{BackendName, Driver};
 use shadowcheck_model::{ApiPath, Case, Expectation};
@@ -24,7 +27,7 @@ use std::process::Command;
 
 #[derive(Debug, thiserror::Error)]
 pub enum ReproError {
-    #[error("bad test id `{0}`: expected `<case id>@<api>` with api one of ff, arbfp, glsl120, glsl130, core, es100, es300")]
+    #[error("bad test id `{0}`: expected `<case id>@<api>` with api one of ff, arbfp, glsl120, glsl130, core, es100, es300, vk")]
     BadTestId(String),
     #[error("{0}")]
     BadBackend(String),
@@ -58,6 +61,12 @@ pub enum ReproError {
         "building the reproducer failed (is gcc and the dev package installed? {packages}):\n{log}"
     )]
     Build { packages: String, log: String },
+    #[error("building the reproducer failed: {missing}; `apt-get install -y {package}`:\n{log}")]
+    Missing {
+        missing: String,
+        package: String,
+        log: String,
+    },
     #[error("the reproducer could not set up (exit {code}):\n{log}")]
     Setup { code: i32, log: String },
 }
@@ -67,10 +76,53 @@ fn io(what: impl Into<String>) -> impl FnOnce(std::io::Error) -> ReproError {
     move |source| ReproError::Io { what, source }
 }
 
-/// One test on one GL backend, with the oracle's expectation.
+/// The backend a reproducer is written for: a GL one (EGL or OSMesa) or a Vulkan driver.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Backend {
+    Gl(BackendName),
+    Vk(shadowcheck_vk::Driver),
+}
+
+impl std::fmt::Display for Backend {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Backend::Gl(b) => b.fmt(f),
+            Backend::Vk(d) => write!(f, "vk:{}", d.key()),
+        }
+    }
+}
+
+impl std::str::FromStr for Backend {
+    type Err = ReproError;
+    /// `vk:<driver>` is a Vulkan backend; anything else must be a GL backend name.
+    fn from_str(s: &str) -> Result<Backend, ReproError> {
+        if s.starts_with("vk:") {
+            return shadowcheck_vk::parse_backend(s)
+                .map(Backend::Vk)
+                .map_err(|e| ReproError::BadBackend(e.to_string()));
+        }
+        s.parse().map(Backend::Gl).map_err(|e: shadowcheck_gl::WorkerError| {
+            ReproError::BadBackend(format!(
+                "{e} (repro writes C programs for the GL backends egl:* and osmesa:* and the Vulkan backends vk:*)"
+            ))
+        })
+    }
+}
+
+impl Backend {
+    /// The API paths the backend runs.
+    fn paths(&self) -> &'static [ApiPath] {
+        match self {
+            Backend::Gl(b) => b.api.paths(),
+            Backend::Vk(_) => &[ApiPath::Vulkan],
+        }
+    }
+}
+
+/// One test on one backend, with the oracle's expectation.
 #[derive(Debug, Clone)]
 pub struct Subject {
-    pub backend: BackendName,
+    pub backend: Backend,
     pub case: Case,
     pub api: ApiPath,
     /// Evaluated by the oracle now (not read from the fixture).
@@ -104,25 +156,26 @@ pub fn parse_test_id(test: &str) -> Result<(String, ApiPath), ReproError> {
 
 /// Finds the case, checks the backend runs the path, and asks the oracle.
 pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subject, ReproError> {
-    let name: BackendName = backend.parse().map_err(|e: shadowcheck_gl::WorkerError| {
-        ReproError::BadBackend(format!(
-            "{e} (repro writes C programs for the GL backends egl:* and osmesa:*)"
-        ))
-    })?;
-    if let Some(why) = name.static_unavailability() {
-        return Err(ReproError::BadBackend(why));
-    }
-    if matches!(name.driver, Driver::Swiftshader | Driver::Native) {
-        return Err(ReproError::BadBackend(format!(
-            "{name}: repro writes programs for Mesa's drivers (llvmpipe, softpipe, zink, zink+swiftshader) on EGL surfaceless or OSMesa; SwiftShader's own GLES and a native EGL (EGL 1.4 pbuffer contexts) are not supported yet"
-        )));
+    let name: Backend = backend.parse()?;
+    match name {
+        Backend::Gl(b) => {
+            if let Some(why) = b.static_unavailability() {
+                return Err(ReproError::BadBackend(why));
+            }
+            if matches!(b.driver, Driver::Swiftshader | Driver::Native) {
+                return Err(ReproError::BadBackend(format!(
+                    "{b}: repro writes programs for Mesa's drivers (llvmpipe, softpipe, zink, zink+swiftshader) on EGL surfaceless or OSMesa; SwiftShader's own GLES and a native EGL (EGL 1.4 pbuffer contexts) are not supported yet"
+                )));
+            }
+        }
+        Backend::Vk(d) => vulkan::check_driver(d)?,
     }
     let (id, api) = parse_test_id(test)?;
-    if !name.api.paths().contains(&api) {
+    if !name.paths().contains(&api) {
         return Err(ReproError::PathNotOnBackend {
             backend: name.to_string(),
             api: api.key().into(),
-            paths: keys(name.api.paths()),
+            paths: keys(name.paths()),
         });
     }
     let set = crate::run::load_cases(fixtures);
@@ -177,16 +230,20 @@ fn keys(paths: &[ApiPath]) -> String {
 /// The Debian packages the build needs (headers and link libraries) and those the run needs.
 pub fn packages(s: &Subject) -> (String, String) {
     use shadowcheck_gl::Platform;
-    let dev = match (s.backend.platform, s.backend.api.is_es()) {
+    let b = match s.backend {
+        Backend::Gl(b) => b,
+        Backend::Vk(d) => return vulkan::packages(d),
+    };
+    let dev = match (b.platform, b.api.is_es()) {
         (Platform::Osmesa, _) => "gcc libosmesa6-dev libgl-dev",
         (Platform::Egl, true) => "gcc libegl-dev libgles-dev",
         (Platform::Egl, false) => "gcc libegl-dev libgl-dev",
     };
-    let mut run = match s.backend.platform {
+    let mut run = match b.platform {
         Platform::Egl => vec!["libegl-mesa0", "libgl1-mesa-dri"],
         Platform::Osmesa => vec!["libosmesa6", "libgl1-mesa-dri"],
     };
-    match s.backend.driver {
+    match b.driver {
         Driver::Zink => run.push("mesa-vulkan-drivers"),
         // SwiftShader's Vulkan ICD (VK_ICD_FILENAMES in the run line).
         Driver::ZinkSwiftshader => run.push("chromium-common"),
@@ -195,16 +252,46 @@ pub fn packages(s: &Subject) -> (String, String) {
     (dev.to_string(), run.join(" "))
 }
 
+/// The build command (one line).
+pub fn build_line(s: &Subject) -> String {
+    match s.backend {
+        Backend::Gl(b) => csource::build_line(b),
+        Backend::Vk(_) => vulkan::BUILD_LINE.to_string(),
+    }
+}
+
+/// The environment that picks the driver, as `NAME=value` words (the worker's).
+pub fn env_words(s: &Subject) -> String {
+    match s.backend {
+        Backend::Gl(b) => csource::env_words(b),
+        Backend::Vk(d) => vulkan::env_words(d),
+    }
+}
+
+/// The `key: value` lines the program prints about the implementation it ran on (the GL
+/// context's strings; the Vulkan device, API version and driver), first the one naming it.
+pub fn driver_fields(s: &Subject) -> &'static [&'static str] {
+    match s.backend {
+        Backend::Gl(_) => &["GL_RENDERER", "GL_VERSION", "GL_SHADING_LANGUAGE_VERSION"],
+        Backend::Vk(_) => &vulkan::FIELDS,
+    }
+}
+
 /// The text of build.sh: build, then run with the driver's environment; its exit status is the
 /// reproducer's.
 pub fn build_sh(s: &Subject) -> String {
     let (dev, run) = packages(s);
+    let env = env_words(s);
     format!(
-        "#!/bin/sh\n# shadowcheck reproducer for {test} on {backend}.\n# Debian 12: apt-get install -y {dev} {run}\ncd \"$(dirname \"$0\")\" || exit 2\n{build} || exit 2\nexec env {env} ./repro\n",
+        "#!/bin/sh\n# shadowcheck reproducer for {test} on {backend}.\n# Debian 12: apt-get install -y {dev} {run}\ncd \"$(dirname \"$0\")\" || exit 2\n{build} || exit 2\nexec {env}./repro\n",
         test = s.test(),
         backend = s.backend,
-        build = csource::build_line(s),
-        env = csource::env_words(s),
+        build = build_line(s),
+        env = if env.is_empty() {
+            String::new()
+        } else {
+            format!("env {env} ")
+        },
     )
 }
 
@@ -244,9 +331,12 @@ pub const BUILD_SH: &str = "build.sh";
 pub const OUTPUT_TXT: &str = "output.txt";
 pub const REPORT_MD: &str = "REPORT.md";
 
-/// Writes repro.c and build.sh into `dir` (created).
+/// Writes repro.c and build.sh (and, for Vulkan, the GLSL) into `dir` (created).
 pub fn write_sources(s: &Subject, dir: &Path) -> Result<(), ReproError> {
-    let c = csource::program(s).map_err(ReproError::NotPlanned)?;
+    let c = match s.backend {
+        Backend::Gl(b) => csource::program(s, b).map_err(ReproError::NotPlanned)?,
+        Backend::Vk(_) => return vulkan::write_sources(s, dir),
+    };
     std::fs::create_dir_all(dir).map_err(io(format!("creating {}", dir.display())))?;
     std::fs::write(dir.join(REPRO_C), c).map_err(io("writing repro.c"))?;
     std::fs::write(dir.join(BUILD_SH), build_sh(s)).map_err(io("writing build.sh"))?;
@@ -280,7 +370,11 @@ pub fn build_and_run(s: &Subject, dir: &Path) -> Result<RunOutput, ReproError> {
     );
     std::fs::write(dir.join(OUTPUT_TXT), text).map_err(io("writing output.txt"))?;
     if r.code != 0 && r.code != 1 {
-        if r.field("GL_RENDERER").is_none() && !dir.join("repro").exists() {
+        let started = driver_fields(s).iter().any(|k| r.field(k).is_some());
+        if !started && !dir.join("repro").exists() {
+            if let Backend::Vk(_) = s.backend {
+                return Err(vulkan::build_error(&r.stderr));
+            }
             return Err(ReproError::Build {
                 packages: format!("apt-get install -y {}", packages(s).0),
                 log: r.stderr,

@@ -1,11 +1,11 @@
 //! REPORT.md: a bug report ready to file, from a [`Subject`] and what its reproducer printed here.
 //!
-//! Renderer, GL version and GLSL version come from the context the reproducer created (its
-//! output, not the harness run's); package versions from `dpkg-query`; the spec text from the
+//! Renderer, GL version and GLSL version (Vulkan: device, API version, driver) come from the
+//! context or device the reproducer created (its output, not the harness run's); package versions from `dpkg-query`; the spec text from the
 //! oracle (the citations of the expectation and each derivation step's section); expected and the
 //! accepted set from the oracle; observed from the reproducer; the footprint from the oracle.
 
-use super::{packages, RunOutput, Subject, BUILD_SH, OUTPUT_TXT, REPRO_C};
+use super::{driver_fields, packages, Backend, RunOutput, Subject, BUILD_SH, OUTPUT_TXT, REPRO_C};
 use crate::records::{shell_quote, Outcome};
 use crate::verdict::Judged;
 use shadowcheck_model::{Channel, Profile};
@@ -39,7 +39,10 @@ pub fn package_versions(s: &Subject) -> Vec<String> {
 
 /// A one-line title: driver, what was looked up, what came back, what the spec requires.
 pub fn title(s: &Subject, run: &RunOutput) -> String {
-    let renderer = run.field("GL_RENDERER").unwrap_or("?");
+    let renderer = driver_fields(s)
+        .first()
+        .and_then(|k| run.field(k))
+        .unwrap_or("?");
     let driver = renderer.split_whitespace().next().unwrap_or(renderer);
     let t = &s.case.texture;
     let sm = &s.case.sampler;
@@ -101,17 +104,26 @@ pub fn render(s: &Subject, run: &RunOutput, judged: &Judged, versions: &[String]
         b = s.backend
     );
     let _ = writeln!(o, "## Driver\n");
+    let made = match s.backend {
+        Backend::Gl(_) => "context",
+        Backend::Vk(_) => "Vulkan device",
+    };
     let _ = writeln!(
         o,
-        "Read from the context the reproducer created here (its output, `{OUTPUT_TXT}`):\n"
+        "Read from the {made} the reproducer created here (its output, `{OUTPUT_TXT}`):\n"
     );
-    for k in ["GL_RENDERER", "GL_VERSION", "GL_SHADING_LANGUAGE_VERSION"] {
+    for k in driver_fields(s) {
         let _ = writeln!(o, "- {k}: `{}`", run.field(k).unwrap_or("(not printed)"));
     }
+    let env = super::env_words(s);
     let _ = writeln!(
         o,
         "- driver selected by: `{}`",
-        super::csource::env_words(s)
+        if env.is_empty() {
+            "(the environment as it is)"
+        } else {
+            &env
+        }
     );
     let _ = writeln!(o, "\nDebian packages (`dpkg-query -W`):\n");
     for v in versions {
@@ -200,8 +212,8 @@ pub fn render(s: &Subject, run: &RunOutput, judged: &Judged, versions: &[String]
     let _ = writeln!(
         o,
         "```sh\napt-get install -y {dev} {rt}\nsh {BUILD_SH}     # {build}; then {env} ./repro\n```\n\nExit status 1: the observation is outside the accepted set; 0: inside; 2: setup failed.\n",
-        build = super::csource::build_line(s),
-        env = super::csource::env_words(s),
+        build = super::build_line(s),
+        env = super::env_words(s),
     );
     let id_re = format!("^{}$", regex::escape(&s.case.id));
     let _ = writeln!(

@@ -1,0 +1,341 @@
+//! `shadowcheck repro` on the Vulkan backends: the harness runs a case on `vk:lavapipe` (and on
+//! `vk:swiftshader`), then the reproducer is written (repro.c, vert.glsl, frag.glsl, build.sh),
+//! built with glslangValidator and gcc against libvulkan-dev and run on its own; it must exit 0
+//! and print the very RGBA the harness observed. No Vulkan case is a Fail on these drivers, so the
+//! exit-1 path is checked with a deliberately wrong expectation: the accepted set in the generated
+//! repro.c is replaced by one no result lies in (the driver is not made to fail). Nothing here is
+//! a driver value written down: the expectation is the oracle's and the observation is compared
+//! with the harness's of this run.
+//!
+//! Needs the driver's ICD (mesa-vulkan-drivers; chromium for SwiftShader), glslang-tools, gcc and
+//! libvulkan-dev: a missing one skips the test loudly, and fails it under CI=true (.ci/run
+//! installs them).
+mod common;
+
+use shadowcheck_runner::records::{read_results, Outcome, RESULTS_FILE};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// Whether `driver`'s ICD and the reproducer's toolchain are installed; otherwise a loud skip (a
+/// failure under CI=true).
+fn installed_or_skip(driver: &str) -> bool {
+    let (icd, install) = match driver {
+        "lavapipe" => (
+            "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json",
+            "mesa-vulkan-drivers",
+        ),
+        _ => ("/usr/lib/chromium/vk_swiftshader_icd.json", "chromium"),
+    };
+    let runs = |cmd: &str| {
+        Command::new(cmd)
+            .arg("--version")
+            .output()
+            .is_ok_and(|o| o.status.success())
+    };
+    let missing: Vec<String> = [
+        (Path::new(icd).is_file(), format!("{icd} ({install})")),
+        (
+            runs("glslangValidator"),
+            "glslangValidator (glslang-tools)".into(),
+        ),
+        (runs("gcc"), "gcc".into()),
+        (
+            Path::new("/usr/include/vulkan/vulkan.h").is_file(),
+            "vulkan/vulkan.h (libvulkan-dev)".into(),
+        ),
+    ]
+    .into_iter()
+    .filter(|m| !m.0)
+    .map(|m| m.1)
+    .collect();
+    if missing.is_empty() {
+        return true;
+    }
+    let what = format!(
+        "the vk:{driver} reproducer needs {}: apt-get install -y {install} glslang-tools gcc libvulkan-dev",
+        missing.join(", ")
+    );
+    if std::env::var("CI").is_ok_and(|v| v == "true") {
+        panic!("CI=true but {what}: .ci/run must install it");
+    }
+    use std::io::Write as _;
+    let _ = writeln!(
+        std::io::stderr(),
+        "\n*** SKIPPED (not a pass): {what} ***\n"
+    );
+    false
+}
+
+/// `cases/fixtures/vulkan/<target>/<min filter>.json` of a case id.
+fn fixture_file(id: &str) -> PathBuf {
+    let parts: Vec<&str> = id.split('/').collect();
+    let f = root()
+        .join("cases/fixtures")
+        .join(parts[0])
+        .join(parts[1])
+        .join(format!("{}.json", parts[3]));
+    assert!(f.is_file(), "{} missing", f.display());
+    f
+}
+
+fn observed_line(stdout: &str) -> [f64; 4] {
+    let line = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("observed:"))
+        .unwrap_or_else(|| panic!("no observed line in\n{stdout}"));
+    let v: Vec<f64> = line
+        .trim()
+        .trim_matches(|c| c == '(' || c == ')')
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect();
+    v.try_into().unwrap()
+}
+
+fn same_rgba(a: [f64; 4], b: [f64; 4]) -> bool {
+    a.iter().zip(b).all(|(x, y)| (*x as f32) == (y as f32))
+}
+
+/// `sh build.sh` in `dir`: (exit status, stdout, stderr).
+fn build_sh(dir: &Path) -> (i32, String, String) {
+    let o = Command::new("sh")
+        .arg("build.sh")
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+/// Runs `test` (a case without a sweep: the harness's observation is its own lookup's) on
+/// `vk:<driver>`, writes its reproducer with `repro`, runs it on its own and checks that it passes
+/// with the harness's RGBA; then a wrong accepted set makes the same program exit 1. Returns the
+/// reproducer's directory, or `None` when skipped.
+fn check(driver: &str, test: &str) -> Option<PathBuf> {
+    if !installed_or_skip(driver) {
+        return None;
+    }
+    let backend = format!("vk:{driver}");
+    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
+    let fixtures = fixture_file(&id);
+    let out = common::tmpdir(&format!("vk-repro-{driver}"));
+    let run_dir = out.join("run");
+    let r = common::run(&[
+        "--backend",
+        &backend,
+        "--fixtures",
+        fixtures.to_str().unwrap(),
+        "--cases",
+        &format!("^{}$", regex::escape(&id)),
+        "--no-rerun",
+        "--full-report",
+        "--out",
+        run_dir.to_str().unwrap(),
+    ]);
+    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
+    let rec = results
+        .get(&backend, test)
+        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    assert!(
+        matches!(rec.outcome, Outcome::Pass | Outcome::Warn),
+        "{test} on {backend}: {:?} {:?}",
+        rec.outcome,
+        rec.reason
+    );
+    let harness = rec.observed.as_ref().expect("harness observed nothing").0;
+
+    // Not a Fail: `repro` refuses without --allow-pass (exit 1) and writes no REPORT.md.
+    let dir = out.join("repro");
+    let repro = |extra: &[&str]| {
+        common::Run::of(
+            common::bin()
+                .args(["repro", "--backend", &backend, "--case", test, "--fixtures"])
+                .arg(&fixtures)
+                .arg("--out")
+                .arg(&dir)
+                .args(extra)
+                .output()
+                .unwrap(),
+        )
+    };
+    let rc = repro(&[]);
+    assert_eq!(rc.code, 1, "{}{}", rc.stdout, rc.stderr);
+    let rc = repro(&["--allow-pass"]);
+    assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
+    for f in [
+        "repro.c",
+        "vert.glsl",
+        "frag.glsl",
+        "build.sh",
+        "output.txt",
+    ] {
+        assert!(dir.join(f).is_file(), "no {f}: {}{}", rc.stdout, rc.stderr);
+    }
+    assert!(!dir.join("REPORT.md").exists());
+
+    // The reproducer on its own, as a driver developer runs it.
+    let (code, stdout, stderr) = build_sh(&dir);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    assert!(stdout.contains("VK_DEVICE: "), "{stdout}");
+    let observed = observed_line(&stdout);
+    assert!(
+        same_rgba(harness, observed),
+        "harness observed {harness:?}, reproducer {observed:?}"
+    );
+
+    // A deliberately wrong expectation: nothing lies in [2, 3], so the same observation is
+    // outside the accepted set and the program exits 1.
+    let c = std::fs::read_to_string(dir.join("repro.c")).unwrap();
+    let accepted = regex::Regex::new(r"static const double ACCEPTED\[\]\[2\] = \{.*\};").unwrap();
+    assert!(accepted.is_match(&c), "no ACCEPTED constant in repro.c");
+    let wrong = accepted.replace(&c, "static const double ACCEPTED[][2] = {{2.0, 3.0}};");
+    std::fs::write(dir.join("repro.c"), wrong.as_ref()).unwrap();
+    let (code, stdout, stderr) = build_sh(&dir);
+    assert_eq!(code, 1, "{stdout}{stderr}");
+    assert!(stdout.contains("verdict:   FAIL"), "{stdout}");
+    assert!(same_rgba(observed, observed_line(&stdout)));
+    Some(dir)
+}
+
+/// A mipmapped LINEAR cube-array lookup (imageCubeArray, the view's levels, explicit LOD) on
+/// lavapipe.
+#[test]
+fn a_passing_case_reproduces_on_lavapipe() {
+    let Some(dir) = check(
+        "lavapipe",
+        "vulkan/cubearray/d16/lml/lequal/lod=1/ref=0.5/levels=0.2_0.8_0.4@vk",
+    ) else {
+        return;
+    };
+    let c = std::fs::read_to_string(dir.join("repro.c")).unwrap();
+    for want in [
+        ".viewType = 6 /* VK_IMAGE_VIEW_TYPE_CUBE_ARRAY */,",
+        "#define NEED_IMAGE_CUBE_ARRAY 1",
+        "VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json ./repro",
+    ] {
+        assert!(c.contains(want), "missing `{want}`");
+    }
+}
+
+/// A LINEAR 2D lookup on SwiftShader's Vulkan driver.
+#[test]
+fn a_passing_case_reproduces_on_swiftshader() {
+    check(
+        "swiftshader",
+        "vulkan/2d/d16/linear/lequal/a=0.25_0.5/ref=0.7/dt=0.2_0.4_0.6_0.8@vk",
+    );
+}
+
+/// A format the device lacks (SwiftShader has no D24): the program says so and exits 2, and
+/// `repro` exits 96 (the harness answers the test Skip there).
+#[test]
+fn a_format_the_device_lacks_is_a_setup_error_naming_it() {
+    if !installed_or_skip("swiftshader") {
+        return;
+    }
+    let test = "vulkan/2d/d24/nearest/lequal/texel1/ref=0.5/dt=0.2_0.4_0.6_0.8@vk";
+    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
+    let dir = common::tmpdir("vk-repro-lacks");
+    let r = common::Run::of(
+        common::bin()
+            .args([
+                "repro",
+                "-b",
+                "vk:swiftshader",
+                "--case",
+                test,
+                "--fixtures",
+            ])
+            .arg(fixture_file(&id))
+            .arg("-o")
+            .arg(&dir)
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(r.code, 96, "{}{}", r.stdout, r.stderr);
+    assert!(
+        r.stderr
+            .contains("the device lacks SAMPLED_IMAGE, TRANSFER_DST and TRANSFER_SRC on VK_FORMAT_X8_D24_UNORM_PACK32"),
+        "{}",
+        r.stderr
+    );
+}
+
+/// A missing shader compiler is a build error naming its package, not a panic (PATH holds only
+/// what build.sh needs before it: sh and dirname). `vk:native` needs no ICD manifest to write.
+#[test]
+fn a_missing_shader_compiler_names_its_package() {
+    let dir = common::tmpdir("vk-repro-no-glslang");
+    let bin = dir.join("bin");
+    std::fs::create_dir_all(&bin).unwrap();
+    for tool in ["sh", "dirname"] {
+        let Some(path) = ["/bin", "/usr/bin"]
+            .iter()
+            .map(|d| Path::new(d).join(tool))
+            .find(|p| p.is_file())
+        else {
+            panic!("no {tool}");
+        };
+        std::os::unix::fs::symlink(path, bin.join(tool)).unwrap();
+    }
+    let test = "vulkan/2d/d16/nearest/lequal/texel1/ref=0.5/dt=0.2_0.4_0.6_0.8@vk";
+    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
+    let r = common::Run::of(
+        common::bin()
+            .env("PATH", &bin)
+            .args(["repro", "-b", "vk:native", "--case", test, "--fixtures"])
+            .arg(fixture_file(&id))
+            .arg("-o")
+            .arg(dir.join("repro"))
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(r.code, 96, "{}{}", r.stdout, r.stderr);
+    assert!(
+        r.stderr.contains("glslangValidator is not installed")
+            && r.stderr.contains("apt-get install -y glslang-tools"),
+        "{}",
+        r.stderr
+    );
+    assert!(!r.stderr.contains("panicked"), "{}", r.stderr);
+}
+
+/// Bad Vulkan arguments exit 96 with a message naming the problem (no device needed).
+#[test]
+fn bad_vulkan_arguments_exit_96() {
+    let fixtures = root().join("cases/fixtures/vulkan/2d/nearest.json");
+    for (args, says) in [
+        (
+            vec!["--backend", "vk:nosuch", "--case", "x@vk"],
+            "unknown Vulkan backend",
+        ),
+        (
+            vec![
+                "--backend",
+                "vk:native",
+                "--case",
+                "vulkan/2d/d16/nearest/lequal/texel1/ref=0.5/dt=0.2_0.4_0.6_0.8@core",
+            ],
+            "runs the API paths vk",
+        ),
+    ] {
+        let r = common::Run::of(
+            common::bin()
+                .arg("repro")
+                .args(&args)
+                .arg("--fixtures")
+                .arg(&fixtures)
+                .output()
+                .unwrap(),
+        );
+        assert_eq!(r.code, 96, "{args:?}: {}", r.stderr);
+        assert!(r.stderr.contains(says), "{args:?}: {}", r.stderr);
+    }
+}
