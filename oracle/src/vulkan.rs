@@ -125,6 +125,7 @@ pub fn rules() -> Rules {
             Format::D24S8,
             Format::D32fS8,
         ],
+        // No TexParameter pnames: `sampler_create` routes every check around the GL tables.
         mode_pname: 0,
         func_pname: 0,
         params,
