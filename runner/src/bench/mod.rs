@@ -15,6 +15,7 @@ pub mod machine;
 pub mod markdown;
 pub mod run;
 pub mod suite;
+pub mod vulkan;
 
 use serde::{Deserialize, Serialize};
 
@@ -148,6 +149,11 @@ pub mod ids {
     pub const GL_E2E_WARM: &str = "gl_e2e_warm_cases_per_s";
     pub const GL_E2E_CACHED: &str = "gl_e2e_cached_cases_per_s";
     pub const GL_RATIO: &str = "gl_e2e_over_floor";
+    /// The Vulkan backends over the `vulkan/` fixtures (`bench::vulkan`).
+    pub const VK_E2E: &str = "vk_e2e_cases_per_s";
+    pub const VK_E2E_WARM: &str = "vk_e2e_warm_cases_per_s";
+    pub const VK_E2E_CACHED: &str = "vk_e2e_cached_cases_per_s";
+    pub const VK_PER_CHECK: &str = "vk_warm_us_per_check";
     pub const SUITE_WALL: &str = "suite_wall_s";
     pub const SUITE_RSS: &str = "suite_peak_rss_mib";
     pub const SUITE_WALL_CACHED: &str = "suite_wall_cached_s";

@@ -17,7 +17,8 @@ pub struct BenchOptions {
     /// Seconds instead of minutes: fewer cases, shorter timings, only `egl:llvmpipe:core` unless
     /// backends are named, the suite rows over the 2D NEAREST fixtures only.
     pub quick: bool,
-    /// The GL backends to measure, named as in `run --backend` (`egl:zink:core`); empty = all.
+    /// The GL and Vulkan backends to measure, named as in `run --backend` (`egl:zink:core`,
+    /// `vk:lavapipe`); empty = all.
     pub backends: Vec<String>,
     /// The fixtures (directories or files; `--fixtures` repeated).
     pub fixtures: Vec<PathBuf>,
@@ -95,6 +96,9 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
     let e2e_fixtures = e2e_fixtures(o);
     let (available, gl_version) = gl_rows(o, &e2e_fixtures, &mut found, progress);
     llvmpipe_one_thread_rows(o, &available, &mut found, progress);
+    let (vk_rows, vk_missing) = super::vulkan::rows(o, progress);
+    found.rows.extend(vk_rows);
+    found.unavailable.extend(vk_missing);
 
     let costs = cold::compile_rows(
         o,

@@ -17,8 +17,9 @@ pub struct Args {
     /// Print the report as JSON on stdout instead of the table.
     #[arg(long)]
     json: bool,
-    /// GL backend to measure (repeatable), named as in `run --backend`: `egl:llvmpipe:core`.
-    /// Default: every GL backend found (with --quick: egl:llvmpipe:core).
+    /// GL or Vulkan backend to measure (repeatable), named as in `run --backend`:
+    /// `egl:llvmpipe:core`, `vk:lavapipe`. Default: every GL backend found (with --quick:
+    /// egl:llvmpipe:core) and vk:lavapipe, vk:swiftshader where they start.
     #[arg(long = "backend", short = 'b', value_name = "B")]
     backends: Vec<String>,
     /// Fixture file or directory (repeatable). Default: cases/fixtures.
