@@ -11,5 +11,13 @@ OUT=${1:-out/vulkan}
 target/release/shadowcheck run -b egl:zink:core -b egl:zink:compat -b egl:zink:es3 \
   -b egl:zink+swiftshader:core -b egl:zink+swiftshader:compat -b egl:zink+swiftshader:es3 \
   -b webgl:chromium --out "$OUT/layered" || true
+# The Vulkan counterparts the vulkan/ grid lacks (the seeded random family draws other cases per
+# spec), written with their expectations, run on both drivers, then the attribution with them.
 target/release/shadowcheck attribute "$OUT/layered" "$OUT/r-vk-lavapipe" "$OUT/r-vk-swiftshader" \
+  --counterparts "$OUT/counterparts.json" > /dev/null
+for b in vk:lavapipe vk:swiftshader; do
+  target/release/shadowcheck run -b "$b" --fixtures "$OUT/counterparts.json" --out "$OUT/cp-$(echo "$b" | tr ':' '-')" || true
+done
+target/release/shadowcheck attribute "$OUT/layered" "$OUT/r-vk-lavapipe" "$OUT/r-vk-swiftshader" \
+  "$OUT/cp-vk-lavapipe" "$OUT/cp-vk-swiftshader" --fixtures cases/fixtures --fixtures "$OUT/counterparts.json" \
   --markdown reports/vulkan/ATTRIBUTION.md > /dev/null

@@ -120,6 +120,62 @@ pub fn vulkan_counterpart(case: &Case) -> Result<Case, String> {
     }
 }
 
+/// The id of a counterpart that `counterparts_to_run` writes: the grid's Vulkan id with the GL
+/// case's spec after it (`vulkan/2d/.../rand/seed=0/21/of=arb`), never an id of the grid's own.
+fn own_id(vk: &Case, gl: &Case) -> String {
+    format!("{}/of={}", vk.id, gl.spec.key())
+}
+
+/// The Vulkan counterparts of the layered failures in `results` that no case of `cases` holds
+/// (the "no equivalent" rows of a missing or different Vulkan fixture), with the oracle's
+/// expectations (sweep points included) and ids of their own ([`own_id`]): a fixture to run on
+/// the Vulkan driver, after which `attribute` classifies those failures too.
+pub fn counterparts_to_run(results: &Results, cases: &HashMap<String, Case>) -> Vec<Case> {
+    let mut out: Vec<Case> = Vec::new();
+    for t in &results.results {
+        if layering_of(&t.backend).is_none() || !matches!(t.outcome, Outcome::Fail | Outcome::Warn)
+        {
+            continue;
+        }
+        let Some(gl) = cases.get(&t.case_id) else {
+            continue;
+        };
+        if gl_only_read(gl).is_some() {
+            continue;
+        }
+        let Ok(mut vk) = vulkan_counterpart(gl) else {
+            continue;
+        };
+        let held = |id: &str| cases.get(id).and_then(|f| same_lookup(gl, f)).is_some();
+        let id = own_id(&vk, gl);
+        if held(&vk.id) || held(&id) || out.iter().any(|c| c.id == id) {
+            continue;
+        }
+        vk.id = id;
+        let Ok(ev) = shadowcheck_oracle::evaluate(&vk) else {
+            continue;
+        };
+        vk.expect = Some(ev.expect);
+        let mut points = Vec::new();
+        for k in 0..vk.sweep.len() {
+            let mut p = vk.sweep[k].clone();
+            let mut one = vk.clone();
+            one.sweep = vec![];
+            one.lookup = vk.point_lookup(&p);
+            if let Some(pe) = shadowcheck_oracle::evaluate(&one)
+                .ok()
+                .and_then(|e| shadowcheck_model::sweep::PointExpectation::of(&e.expect))
+            {
+                p.expect = Some(pe);
+                points.push(p);
+            }
+        }
+        vk.sweep = points;
+        out.push(vk);
+    }
+    out
+}
+
 /// A read without comparison (compare mode NONE): Vulkan has it (a sample that is not
 /// OpImage*Dref*), but the Vulkan cases are depth comparisons only, so its layer is not known
 /// (no equivalent); unless it also needs what Vulkan lacks altogether (GL's incompleteness,
@@ -223,6 +279,22 @@ pub fn attribute(results: &Results, cases: &HashMap<String, Case>) -> Vec<Attrib
                 out.push(row);
                 continue;
             }
+        };
+        // A counterpart written by `counterparts_to_run` carries its spec in the id when the
+        // grid's own Vulkan case of that id is another lookup or absent.
+        let vk = match cases.get(&own_id(&vk, case)) {
+            Some(f)
+                if cases
+                    .get(&vk.id)
+                    .and_then(|g| same_lookup(case, g))
+                    .is_none() =>
+            {
+                Case {
+                    id: f.id.clone(),
+                    ..vk
+                }
+            }
+            _ => vk,
         };
         let name = TestResult::name(&vk.id, ApiPath::Vulkan);
         row.counterpart = Some(name.clone());

@@ -206,3 +206,53 @@ fn a_counterpart_keeps_the_lookup_and_refuses_what_vulkan_lacks() {
     );
     assert!(layering_of("egl:llvmpipe:core").is_none());
 }
+
+#[test]
+fn a_missing_counterpart_is_written_to_run_and_then_attributed() {
+    let cases = fixtures();
+    let (gl, _) = pair(&cases);
+    // A GL case whose Vulkan id the grid does not hold.
+    let mut lone = gl.clone();
+    lone.id = format!("{}/attribute-lone", gl.id);
+    let mut all = cases.clone();
+    all.insert(lone.id.clone(), lone.clone());
+    let mut res = Results::default();
+    res.insert(record(
+        "egl:zink:core",
+        &lone,
+        ApiPath::GlslCore,
+        Outcome::Fail,
+        0.25,
+    ));
+    let before = attribute(&res, &all);
+    assert_eq!(before[0].layer, Layer::NoEquivalent, "{before:?}");
+    let written = counterparts_to_run(&res, &all);
+    assert_eq!(written.len(), 1, "{written:?}");
+    let vk = &written[0];
+    assert!(
+        vk.id.starts_with("vulkan/") && vk.id.ends_with("/of=gl46"),
+        "{}",
+        vk.id
+    );
+    assert_eq!(vk.spec, Spec::Vulkan);
+    assert!(vk.expect.is_some());
+    assert_eq!(vk.sweep.len(), lone.sweep.len());
+    assert!(vk.sweep.iter().all(|p| p.expect.is_some()));
+    // Run (here: a Pass recorded for it) and attribute again with it among the cases.
+    all.insert(vk.id.clone(), vk.clone());
+    res.insert(record(
+        "vk:lavapipe",
+        vk,
+        ApiPath::Vulkan,
+        Outcome::Pass,
+        1.0,
+    ));
+    let after = attribute(&res, &all);
+    assert_eq!(after[0].layer, Layer::Upper, "{after:?}");
+    assert_eq!(
+        after[0].counterpart.as_deref(),
+        Some(TestResult::name(&vk.id, ApiPath::Vulkan).as_str())
+    );
+    // Nothing is written twice, nor what the cases already hold.
+    assert!(counterparts_to_run(&res, &all).is_empty());
+}

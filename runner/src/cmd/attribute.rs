@@ -23,9 +23,15 @@ pub struct Args {
     /// test) replaces an earlier.
     #[arg(required = true, value_name = "RUN_DIR")]
     runs: Vec<PathBuf>,
-    /// The fixtures holding the runs' cases, GL and Vulkan (file or directory).
-    #[arg(long, value_name = "PATH", default_value = super::run::DEFAULT_FIXTURES)]
-    fixtures: PathBuf,
+    /// The fixtures holding the runs' cases, GL and Vulkan (file or directory, repeatable).
+    /// Default: cases/fixtures.
+    #[arg(long, value_name = "PATH")]
+    fixtures: Vec<PathBuf>,
+    /// Also write the Vulkan counterparts the fixtures lack (the "no equivalent" failures whose
+    /// lookup Vulkan defines) as a fixture file: run it on the Vulkan driver, then attribute
+    /// again with `--fixtures cases/fixtures --fixtures FILE`.
+    #[arg(long, value_name = "FILE")]
+    counterparts: Option<PathBuf>,
     /// Print the attribution as JSON on stdout instead of the Markdown.
     #[arg(long)]
     json: bool,
@@ -49,14 +55,42 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         }
     }
     let mut cases = HashMap::new();
-    let files = shadowcheck_cases::fixtures::load_path(&a.fixtures)
-        .with_context(|| format!("loading fixtures {}", a.fixtures.display()))?;
-    for (_, f) in files {
-        for c in f.cases {
-            cases.insert(c.id.clone(), c);
+    let roots = if a.fixtures.is_empty() {
+        vec![PathBuf::from(super::run::DEFAULT_FIXTURES)]
+    } else {
+        a.fixtures.clone()
+    };
+    for root in &roots {
+        let files = shadowcheck_cases::fixtures::load_path(root)
+            .with_context(|| format!("loading fixtures {}", root.display()))?;
+        for (_, f) in files {
+            for c in f.cases {
+                cases.insert(c.id.clone(), c);
+            }
         }
     }
     let rows = attribute::attribute(&all, &cases);
+    if let Some(path) = &a.counterparts {
+        let missing = attribute::counterparts_to_run(&all, &cases);
+        let file = shadowcheck_cases::fixtures::FixtureFile {
+            schema_version: shadowcheck_model::SCHEMA_VERSION,
+            generator: shadowcheck_cases::grids::GENERATOR.to_string(),
+            grid: "attribute-counterparts".into(),
+            seed: 0,
+            cases: missing,
+            state_cases: vec![],
+        };
+        let text = shadowcheck_cases::fixtures::to_string(&file)
+            .context("serializing the counterparts")?;
+        shadowcheck_runner::report::atomic::write(path, text.as_bytes())
+            .with_context(|| format!("writing {}", path.display()))?;
+        shadowcheck_runner::errln!(
+            "shadowcheck attribute: {} Vulkan counterparts the fixtures lack written to {}: run them on the Vulkan driver (`shadowcheck run -b vk:lavapipe --fixtures {}`), then attribute again with that file among --fixtures",
+            file.cases.len(),
+            path.display(),
+            path.display()
+        );
+    }
     let md = attribute::markdown(&rows);
     if let Some(path) = &a.markdown {
         shadowcheck_runner::report::atomic::write(path, md.as_bytes())
