@@ -8,6 +8,7 @@
 //! Needs gcc, the GL dev packages (libegl-dev libgles-dev libgl-dev libosmesa6-dev) and the Mesa
 //! drivers: missing ones are a loud skip, a failure under CI=true (see gl_support).
 mod common;
+use common::{grid_fixture_file, repro_observed};
 mod gl_support;
 
 use shadowcheck_runner::records::{read_results, Outcome, RESULTS_FILE};
@@ -36,19 +37,6 @@ fn can_build(backend: &str) -> bool {
     true
 }
 
-/// The fixture file of a default-grid case (`cases/fixtures/<spec>/<target>/<min filter>.json`, the
-/// first, second and fourth parts of its id), so that neither the run nor `repro` loads them all.
-fn fixture_file(id: &str) -> PathBuf {
-    let parts: Vec<&str> = id.split('/').collect();
-    let f = root()
-        .join("cases/fixtures")
-        .join(parts[0])
-        .join(parts[1])
-        .join(format!("{}.json", parts[3]));
-    assert!(f.is_file(), "{} missing", f.display());
-    f
-}
-
 /// What the harness and the reproducer said about one test.
 struct Both {
     harness: Outcome,
@@ -57,20 +45,6 @@ struct Both {
     repro_rgba: [f64; 4],
     repro_cmd_exit: i32,
     dir: PathBuf,
-}
-
-fn observed_line(stdout: &str) -> [f64; 4] {
-    let line = stdout
-        .lines()
-        .find_map(|l| l.strip_prefix("observed:"))
-        .unwrap_or_else(|| panic!("no observed line in\n{stdout}"));
-    let v: Vec<f64> = line
-        .trim()
-        .trim_matches(|c| c == '(' || c == ')')
-        .split(',')
-        .map(|x| x.trim().parse().unwrap())
-        .collect();
-    v.try_into().unwrap()
 }
 
 /// Runs `test` on `backend` in the harness, then `shadowcheck repro` for it, then the reproducer's
@@ -84,7 +58,7 @@ fn both(backend: &str, test: &str, name: &str, extra: &[&str]) -> Option<Both> {
         return None;
     }
     let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
-    let fixtures = fixture_file(&id);
+    let fixtures = grid_fixture_file(&id);
     let out = common::tmpdir(name);
     let pattern = format!("^{}$", regex::escape(&id));
     let run_dir = out.join("run");
@@ -140,7 +114,7 @@ fn both(backend: &str, test: &str, name: &str, extra: &[&str]) -> Option<Both> {
         harness: rec.outcome,
         harness_rgba,
         repro_exit: own.status.code().unwrap_or(-1),
-        repro_rgba: observed_line(&stdout),
+        repro_rgba: repro_observed(&stdout),
         repro_cmd_exit: rc.code,
         dir,
     })
@@ -302,7 +276,7 @@ fn a_closed_stdout_is_not_a_panic() {
                 "--allow-pass",
             ])
             .arg("--fixtures")
-            .arg(fixture_file(&id))
+            .arg(grid_fixture_file(&id))
             .arg("--out")
             .arg(&out)
             .stdout(writer)

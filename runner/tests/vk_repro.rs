@@ -11,6 +11,7 @@
 //! libvulkan-dev: a missing one skips the test loudly, and fails it under CI=true (.ci/run
 //! installs them).
 mod common;
+use common::{grid_fixture_file, repro_observed};
 
 use shadowcheck_runner::records::{read_results, Outcome, RESULTS_FILE};
 use std::path::{Path, PathBuf};
@@ -70,32 +71,6 @@ fn installed_or_skip(driver: &str) -> bool {
     false
 }
 
-/// `cases/fixtures/vulkan/<target>/<min filter>.json` of a case id.
-fn fixture_file(id: &str) -> PathBuf {
-    let parts: Vec<&str> = id.split('/').collect();
-    let f = root()
-        .join("cases/fixtures")
-        .join(parts[0])
-        .join(parts[1])
-        .join(format!("{}.json", parts[3]));
-    assert!(f.is_file(), "{} missing", f.display());
-    f
-}
-
-fn observed_line(stdout: &str) -> [f64; 4] {
-    let line = stdout
-        .lines()
-        .find_map(|l| l.strip_prefix("observed:"))
-        .unwrap_or_else(|| panic!("no observed line in\n{stdout}"));
-    let v: Vec<f64> = line
-        .trim()
-        .trim_matches(|c| c == '(' || c == ')')
-        .split(',')
-        .map(|x| x.trim().parse().unwrap())
-        .collect();
-    v.try_into().unwrap()
-}
-
 fn same_rgba(a: [f64; 4], b: [f64; 4]) -> bool {
     a.iter().zip(b).all(|(x, y)| (*x as f32) == (y as f32))
 }
@@ -124,7 +99,7 @@ fn check(driver: &str, test: &str) -> Option<PathBuf> {
     }
     let backend = format!("vk:{driver}");
     let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
-    let fixtures = fixture_file(&id);
+    let fixtures = grid_fixture_file(&id);
     let out = common::tmpdir(&format!("vk-repro-{driver}"));
     let run_dir = out.join("run");
     let r = common::run(&[
@@ -184,7 +159,7 @@ fn check(driver: &str, test: &str) -> Option<PathBuf> {
     let (code, stdout, stderr) = build_sh(&dir);
     assert_eq!(code, 0, "{stdout}{stderr}");
     assert!(stdout.contains("VK_DEVICE: "), "{stdout}");
-    let observed = observed_line(&stdout);
+    let observed = repro_observed(&stdout);
     assert!(
         same_rgba(harness, observed),
         "harness observed {harness:?}, reproducer {observed:?}"
@@ -200,7 +175,7 @@ fn check(driver: &str, test: &str) -> Option<PathBuf> {
     let (code, stdout, stderr) = build_sh(&dir);
     assert_eq!(code, 1, "{stdout}{stderr}");
     assert!(stdout.contains("verdict:   FAIL"), "{stdout}");
-    assert!(same_rgba(observed, observed_line(&stdout)));
+    assert!(same_rgba(observed, repro_observed(&stdout)));
     Some(dir)
 }
 
@@ -253,7 +228,7 @@ fn a_format_the_device_lacks_is_a_setup_error_naming_it() {
                 test,
                 "--fixtures",
             ])
-            .arg(fixture_file(&id))
+            .arg(grid_fixture_file(&id))
             .arg("-o")
             .arg(&dir)
             .output()
@@ -291,7 +266,7 @@ fn a_missing_shader_compiler_names_its_package() {
         common::bin()
             .env("PATH", &bin)
             .args(["repro", "-b", "vk:native", "--case", test, "--fixtures"])
-            .arg(fixture_file(&id))
+            .arg(grid_fixture_file(&id))
             .arg("-o")
             .arg(dir.join("repro"))
             .output()

@@ -244,3 +244,31 @@ pub fn cases_dir(name: &str, n: usize) -> (PathBuf, String) {
     write_fixture(&fx, many_cases(n));
     (dir.clone(), fx.display().to_string())
 }
+
+/// The fixture file of a default-grid case (`cases/fixtures/<spec>/<target>/<min filter>.json`, the
+/// first, second and fourth parts of its id), so that neither a run nor `repro` loads them all.
+pub fn grid_fixture_file(id: &str) -> PathBuf {
+    let parts: Vec<&str> = id.split('/').collect();
+    let f = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../cases/fixtures")
+        .join(parts[0])
+        .join(parts[1])
+        .join(format!("{}.json", parts[3]));
+    assert!(f.is_file(), "{} missing", f.display());
+    f
+}
+
+/// The RGBA of a reproducer's `observed: (r, g, b, a)` line.
+pub fn repro_observed(stdout: &str) -> [f64; 4] {
+    let line = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("observed:"))
+        .unwrap_or_else(|| panic!("no observed line in\n{stdout}"));
+    let v: Vec<f64> = line
+        .trim()
+        .trim_matches(|c| c == '(' || c == ')')
+        .split(',')
+        .map(|x| x.trim().parse().unwrap())
+        .collect();
+    v.try_into().unwrap()
+}
