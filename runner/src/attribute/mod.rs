@@ -374,34 +374,28 @@ pub fn attribute(results: &Results, cases: &HashMap<String, Case>) -> Vec<Attrib
 }
 
 /// report.md's "Layer attribution" section, when the run holds a layered backend with failures
-/// and the Vulkan driver under it; the cases come from the run's `fixtures` (read only then).
-/// A fixture that does not load is said in the section, not an error of the report.
+/// and the Vulkan driver under it; the cases are the run's own (`None`: no section).
 pub fn report_section(
     results: &[TestResult],
     backends: &[String],
-    fixtures: &[std::path::PathBuf],
+    loaded: Option<&crate::run::CaseSet>,
 ) -> Option<String> {
     let paired = |b: &String| layering_of(b).is_some_and(|l| backends.iter().any(|x| x == l.lower));
-    let wanted = results
+    let failing: std::collections::HashSet<&str> = results
         .iter()
-        .any(|r| paired(&r.backend) && matches!(r.outcome, Outcome::Fail | Outcome::Warn));
-    if !wanted {
+        .filter(|r| paired(&r.backend) && matches!(r.outcome, Outcome::Fail | Outcome::Warn))
+        .map(|r| r.case_id.as_str())
+        .collect();
+    if failing.is_empty() {
         return None;
     }
-    let mut cases = HashMap::new();
-    let mut problems = vec![];
-    for root in fixtures {
-        match shadowcheck_cases::fixtures::load_path(root) {
-            Ok(files) => {
-                for (_, f) in files {
-                    for c in f.cases {
-                        cases.insert(c.id.clone(), c);
-                    }
-                }
-            }
-            Err(e) => problems.push(format!("{}: {e}", root.display())),
-        }
-    }
+    // The failing cases and the Vulkan ones: all the attribution reads.
+    let cases: HashMap<String, Case> = loaded?
+        .cases
+        .iter()
+        .filter(|l| l.case.spec == Spec::Vulkan || failing.contains(l.case.id.as_str()))
+        .map(|l| (l.case.id.clone(), l.case.clone()))
+        .collect();
     let mut all = Results::default();
     for r in results {
         all.insert(r.clone());
@@ -416,9 +410,6 @@ pub fn report_section(
         "\n\nEach Fail and Warn of a layered backend against the Vulkan driver's answer to the same lookup in this run (`shadowcheck attribute`, runner/README.md).\n\n",
         1,
     );
-    for p in problems {
-        s += &format!("\nFixtures not read for the attribution: {p}\n");
-    }
     Some(s)
 }
 

@@ -199,13 +199,14 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let _lock = OutLock::acquire(&out_dir)?;
 
     let meta = run_meta(&a, &backends, &fixtures);
-    let set = load_fixtures(&fixtures, pattern.as_ref(), a.shard)?;
+    // Shared with report.md's layer attribution, which reads the run's cases at the end.
+    let set = std::sync::Arc::new(load_fixtures(&fixtures, pattern.as_ref(), a.shard)?);
     let (prior, jsonl) = open_results(&a, &out_dir, &meta)?;
     // Final reports of an earlier run in this folder would be stale until this run ends.
     for f in report::FINAL_FILES {
         let _ = std::fs::remove_file(out_dir.join(f));
     }
-    let mut fanout = reporters(&a, &out_dir, jsonl, &lists, &fixtures);
+    let mut fanout = reporters(&a, &out_dir, jsonl, &lists, &set);
     let baseline = a.baseline.is_some().then(|| lists.baseline.clone());
     let settings = Settings {
         lists,
@@ -422,7 +423,7 @@ fn reporters(
     out_dir: &Path,
     jsonl: JsonlReporter,
     lists: &Lists,
-    fixtures: &[PathBuf],
+    set: &std::sync::Arc<run::CaseSet>,
 ) -> Fanout {
     let mut fanout = Fanout::default();
     fanout.reporters.push(Box::new(TerminalReporter::new(
@@ -435,7 +436,7 @@ fn reporters(
         &FileReports {
             full: a.full_report,
             baseline: a.baseline.is_some().then(|| lists.baseline.clone()),
-            fixtures: fixtures.to_vec(),
+            cases: Some(set.clone()),
             ..FileReports::default()
         },
     ));

@@ -4,8 +4,10 @@ use super::{breakdown, dump, wants_dump};
 use crate::baseline::Baseline;
 use crate::events::{Event, Reporter};
 use crate::records::{LoadError, Summary, TestResult};
+use crate::run::CaseSet;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// Dumps beyond this many are summarized (the full list is in report.json).
 const MAX_DUMPS: usize = 500;
@@ -13,18 +15,22 @@ const MAX_DUMPS: usize = 500;
 pub struct MarkdownReporter {
     dir: PathBuf,
     baseline: Option<Baseline>,
-    fixtures: Vec<PathBuf>,
+    cases: Option<Arc<CaseSet>>,
 }
 
 impl MarkdownReporter {
     /// `baseline`: the run's baseline, whose entries that excuse nothing get a section;
-    /// `fixtures`: the run's, read for the layer attribution when the run holds a layered
-    /// backend and the Vulkan driver under it.
-    pub fn new(dir: &Path, baseline: Option<Baseline>, fixtures: Vec<PathBuf>) -> MarkdownReporter {
+    /// `cases`: the run's, for the layer attribution when the run holds a layered backend and
+    /// the Vulkan driver under it.
+    pub fn new(
+        dir: &Path,
+        baseline: Option<Baseline>,
+        cases: Option<Arc<CaseSet>>,
+    ) -> MarkdownReporter {
         MarkdownReporter {
             dir: dir.to_path_buf(),
             baseline,
-            fixtures,
+            cases,
         }
     }
 }
@@ -144,7 +150,7 @@ impl Reporter for MarkdownReporter {
                 }
             }
             if let Some(layers) =
-                crate::attribute::report_section(results, &summary.backends, &self.fixtures)
+                crate::attribute::report_section(results, &summary.backends, self.cases.as_deref())
             {
                 text.push('\n');
                 text += &layers;

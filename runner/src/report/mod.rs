@@ -168,9 +168,9 @@ pub struct FileReports {
     pub full: bool,
     /// The run's baseline: report.md lists its entries that excuse nothing.
     pub baseline: Option<crate::baseline::Baseline>,
-    /// The run's fixtures: where report.md finds the cases of its layer attribution (a layered
-    /// backend and the Vulkan driver under it in the same run, `crate::attribute`); empty: none.
-    pub fixtures: Vec<std::path::PathBuf>,
+    /// The run's loaded cases: report.md's layer attribution (a layered backend and the Vulkan
+    /// driver under it in the same run, `crate::attribute`) reads them; `None`: no attribution.
+    pub cases: Option<std::sync::Arc<crate::run::CaseSet>>,
 }
 
 /// Whether `r` goes into report.json and junit.xml: everything with `full`, otherwise every test
@@ -189,7 +189,7 @@ impl Default for FileReports {
             markdown: true,
             full: false,
             baseline: None,
-            fixtures: vec![],
+            cases: None,
         }
     }
 }
@@ -211,7 +211,7 @@ pub fn file_reporters(dir: &Path, which: &FileReports) -> Vec<Box<dyn Reporter>>
         v.push(Box::new(markdown::MarkdownReporter::new(
             dir,
             which.baseline.clone(),
-            which.fixtures.clone(),
+            which.cases.clone(),
         )));
     }
     v
