@@ -93,10 +93,11 @@ impl GatherFn {
 }
 
 /// The (spec, API path) pairs with shadow gather.
-const GATHER_PATHS: [(Spec, ApiPath); 3] = [
+const GATHER_PATHS: [(Spec, ApiPath); 4] = [
     (Spec::Gl46, ApiPath::GlslCore),
     (Spec::Gles32, ApiPath::Es300),
     (Spec::Vulkan, ApiPath::Vulkan),
+    (Spec::WebGpu, ApiPath::Wgsl),
 ];
 
 /// One unit-state column: its name, whether a case falls in it, the API paths that have it.

@@ -86,10 +86,11 @@ fn committed_size_is_within_budget() {
         .map(|p| std::fs::metadata(p).unwrap().len())
         .sum();
     // The sweeps (`sweep` in cases/README.md) take most of it: ~94,000 points of ~200 bytes each
-    // (coordinates, reference and exact acceptance intervals). The Vulkan grid adds about 8 MiB.
+    // (coordinates, reference and exact acceptance intervals). The Vulkan grid adds about 8 MiB,
+    // the WebGPU grid about 6.5 MiB.
     assert!(
-        total <= 48 * 1024 * 1024,
-        "{total} bytes committed (budget 48 MiB)"
+        total <= 56 * 1024 * 1024,
+        "{total} bytes committed (budget 56 MiB)"
     );
 }
 

@@ -60,6 +60,10 @@ keyed_enum! {
         /// Vulkan 1.3: a depth image sampled through a sampler with compareEnable (§16 Texel
         /// Depth Compare); no TexParameter state, no fail value, no incompleteness.
         Vulkan = "vulkan",
+        /// WebGPU with WGSL: a depth texture sampled through a comparison sampler
+        /// (`GPUSamplerDescriptor.compare`) by textureSampleCompare(Level) or
+        /// textureGatherCompare; no border, no TexParameter state, no incompleteness.
+        WebGpu = "webgpu",
     }
 }
 
@@ -83,6 +87,8 @@ keyed_enum! {
         /// Vulkan: GLSL 4.50 for Vulkan compiled to SPIR-V (OpImageSampleDref*, OpImageDrefGather);
         /// float result.
         Vulkan = "vk",
+        /// WebGPU: WGSL `texture_depth_*` lookups through a `sampler_comparison`; float result.
+        Wgsl = "wgsl",
     }
 }
 

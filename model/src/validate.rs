@@ -338,7 +338,8 @@ fn validate_sweep(case: &Case) -> Result<(), ModelError> {
 
 /// Smallest MIN_PROGRAM_TEXEL_OFFSET and largest MAX_PROGRAM_TEXEL_OFFSET every GL 3.0+ / ES 3.0+
 /// implementation supports (GL 4.6 Table 23.55, ES 3.2 Table 21.41: -8 and 7; Vulkan 1.3's
-/// required limits minTexelOffset and maxTexelOffset are the same); outside them the
+/// required limits minTexelOffset and maxTexelOffset are the same, and WGSL §17.7 makes any other
+/// offset a shader-creation error); outside them the
 /// lookup is undefined (GL 4.6 §8.14.2), so a fixture may not ask for it.
 pub const TEXEL_OFFSET_RANGE: std::ops::RangeInclusive<i32> = -8..=7;
 
@@ -350,13 +351,17 @@ fn validate_offset(case: &Case) -> Result<(), ModelError> {
     if let Some(api) = case.api.iter().find(|a| {
         !matches!(
             a,
-            ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+            ApiPath::Glsl130
+                | ApiPath::GlslCore
+                | ApiPath::Es300
+                | ApiPath::Vulkan
+                | ApiPath::Wgsl
         )
     }) {
         return Err(invalid(
             case,
             "lookup.offset",
-            format!("API path `{}` has no lookup function with a texel offset (GLSL >= 1.30, GLSL ES 3.00 and SPIR-V's Offset operands only)", api.key()),
+            format!("API path `{}` has no lookup function with a texel offset (GLSL >= 1.30, GLSL ES 3.00, SPIR-V's Offset operands and WGSL's offset overloads only)", api.key()),
         ));
     }
     let used = match case.texture.target {

@@ -14,9 +14,10 @@ pub fn ctx_of(api: ApiPath) -> Ctx {
         ApiPath::FixedFunction | ApiPath::ArbFp | ApiPath::Glsl120 | ApiPath::Glsl130 => {
             Ctx::Compat
         }
-        // Vulkan has no GL context; its rules set no TexParameter (`Rules::sampler_create`), so
-        // the context only names the core-profile rules for anything shared.
-        ApiPath::GlslCore | ApiPath::Vulkan => Ctx::Core,
+        // Vulkan and WebGPU have no GL context; their rules set no TexParameter
+        // (`Rules::sampler_create`), so the context only names the core-profile rules for
+        // anything shared.
+        ApiPath::GlslCore | ApiPath::Vulkan | ApiPath::Wgsl => Ctx::Core,
         ApiPath::Es100Ext | ApiPath::Es300 => Ctx::Es,
     }
 }
@@ -40,6 +41,9 @@ pub fn api_targets(api: ApiPath) -> &'static [Target] {
         // SPIR-V OpTypeImage Dim 1D, 2D, Cube, Arrayed or not, with Depth 1 (GLSL 4.50 for Vulkan's
         // sampler*Shadow types).
         ApiPath::Vulkan => &[T1d, T2d, Cube, T1dArray, T2dArray, CubeArray],
+        // WGSL texture_depth_2d, texture_depth_2d_array, texture_depth_cube,
+        // texture_depth_cube_array.
+        ApiPath::Wgsl => &[T2d, Cube, T2dArray, CubeArray],
     }
 }
 
@@ -218,6 +222,13 @@ fn check_defined(case: &Case, rules: &Rules) -> Result<(), OracleError> {
             ),
         ));
     }
+    if case.lookup.projective && case.api.contains(&ApiPath::Wgsl) {
+        return Err(not_applicable(
+            case,
+            rules,
+            "WGSL §17.7 has no projective texture built-in".to_string(),
+        ));
+    }
     if matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) {
         if let Some(why) = crate::sgix::outside_table_3_8(s) {
             return Err(not_applicable(case, rules, why));
@@ -389,17 +400,25 @@ fn check_gather(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     let t = &case.texture;
     let l = &case.lookup;
     let na = |why: String| Err(not_applicable(case, rules, why));
-    if !matches!(rules.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan) {
+    if !matches!(
+        rules.spec,
+        Spec::Gl46 | Spec::Gles32 | Spec::Vulkan | Spec::WebGpu
+    ) {
         return na(format!("{} has no textureGather", rules.doc));
     }
-    if let Some(api) = case
-        .api
-        .iter()
-        .find(|a| !matches!(a, ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan))
-    {
+    if let Some(api) = case.api.iter().find(|a| {
+        !matches!(
+            a,
+            ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan | ApiPath::Wgsl
+        )
+    }) {
         return na(format!(
             "API path `{api}` has no shadow textureGather (GLSL 4.00 / GLSL ES 3.10)"
         ));
+    }
+    if case.api.contains(&ApiPath::Wgsl) && l.gather.as_ref().is_some_and(|g| g.offsets.is_some())
+    {
+        return na("WGSL §17.7 has textureGatherCompare with one const offset, no textureGatherOffsets".into());
     }
     if !matches!(
         t.target,

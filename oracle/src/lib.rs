@@ -48,6 +48,7 @@ pub mod sgix;
 pub mod state;
 pub mod unorm;
 pub mod vulkan;
+pub mod webgpu;
 pub mod wrap;
 
 /// One derivation step, for `shadowcheck explain`.

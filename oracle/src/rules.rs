@@ -159,6 +159,7 @@ pub fn rules_for(spec: Spec) -> Rules {
         Spec::Gl46 => crate::gl46::rules(),
         Spec::Gles32 => crate::gles32::rules(),
         Spec::Vulkan => crate::vulkan::rules(),
+        Spec::WebGpu => crate::webgpu::rules(),
     }
 }
 

@@ -226,8 +226,8 @@ pub fn default_value(spec: Spec, ctx: Ctx, pname: u32) -> Result<Stored, GlError
 pub fn ctx_of(api: shadowcheck_model::ApiPath) -> Ctx {
     use shadowcheck_model::ApiPath::*;
     match api {
-        // Vulkan has no state cases (no TexParameter): the core rules stand in.
-        GlslCore | Vulkan => Ctx::Core,
+        // Vulkan and WebGPU have no state cases (no TexParameter): the core rules stand in.
+        GlslCore | Vulkan | Wgsl => Ctx::Core,
         FixedFunction | ArbFp | Glsl120 | Glsl130 => Ctx::Compat,
         Es100Ext | Es300 => Ctx::Es,
     }

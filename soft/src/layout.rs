@@ -85,7 +85,7 @@ pub fn resolve(
         ApiPath::Glsl130 => kind != Kind::Compare,
         ApiPath::Es100Ext => kind == Kind::Depth,
         // OpImageSampleDref* returns one float (SPIR-V); the shader writes (r, 0, 0, 1).
-        ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan => false,
+        ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan | ApiPath::Wgsl => false,
     };
     if !vec4 {
         if api == ApiPath::Glsl130

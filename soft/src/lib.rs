@@ -102,6 +102,8 @@ pub fn path_exists(spec: Spec, api: ApiPath) -> bool {
         Spec::Es2Ext => api == A::Es100Ext,
         Spec::Gles32 => api == A::Es300,
         Spec::Vulkan => api == A::Vulkan,
+        // WebGPU: not implemented by this unit yet.
+        Spec::WebGpu => false,
     }
 }
 
@@ -118,6 +120,8 @@ pub fn path_targets(api: ApiPath, target: Target) -> bool {
         ApiPath::Es300 => matches!(target, T::T2d | T::T2dArray | T::Cube | T::CubeArray),
         // VkImageViewType has no rectangle textures.
         ApiPath::Vulkan => target != T::Rect,
+        // WebGPU: not implemented by this unit yet.
+        ApiPath::Wgsl => false,
     }
 }
 

@@ -44,16 +44,11 @@ pub const PROFILE_PREFIX: &str = "shadowcheck-chromium-";
 /// The command that installs the browser on Debian.
 pub const INSTALL: &str = "apt-get install -y chromium";
 
-/// Flags of every browser start. WebGL 2.0 runs on ANGLE's Vulkan back end over SwiftShader (the
-/// same texture unit on every machine, GPU or not; `--disable-gpu` keeps a host GPU out and does
-/// not disable WebGL when SwiftShader is allowed). The machine may have no network: no background
-/// networking, component updates, sync or QUIC, and a fresh profile.
-pub const FLAGS: &[&str] = &[
+/// Flags of every browser start, whatever its graphics stack. The machine may have no network:
+/// no background networking, component updates, sync or QUIC, and a fresh profile.
+pub const COMMON_FLAGS: &[&str] = &[
     "--headless",
     "--no-sandbox",
-    "--use-angle=swiftshader",
-    "--enable-unsafe-swiftshader",
-    "--disable-gpu",
     "--remote-debugging-pipe",
     "--disable-quic",
     "--no-first-run",
@@ -63,6 +58,39 @@ pub const FLAGS: &[&str] = &[
     "--disable-extensions",
     "--mute-audio",
 ];
+
+/// The graphics flags of `webgl:chromium`: WebGL 2.0 on ANGLE's Vulkan back end over SwiftShader
+/// (the same texture unit on every machine, GPU or not; `--disable-gpu` keeps a host GPU out and
+/// does not disable WebGL when SwiftShader is allowed).
+pub const SWIFTSHADER_FLAGS: &[&str] = &[
+    "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader",
+    "--disable-gpu",
+];
+
+/// How one browser is started: its graphics flags (after [`COMMON_FLAGS`]) and the environment
+/// variables set for it (e.g. `VK_ICD_FILENAMES` naming the Vulkan driver ANGLE or Dawn loads).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Launch {
+    pub flags: Vec<String>,
+    pub env: Vec<(String, String)>,
+}
+
+impl Launch {
+    /// `webgl:chromium`'s start: ANGLE on SwiftShader ([`SWIFTSHADER_FLAGS`]).
+    pub fn swiftshader() -> Launch {
+        Launch {
+            flags: SWIFTSHADER_FLAGS.iter().map(|f| f.to_string()).collect(),
+            env: vec![],
+        }
+    }
+}
+
+impl Default for Launch {
+    fn default() -> Launch {
+        Launch::swiftshader()
+    }
+}
 
 /// The browser executable: `$SHADOWCHECK_CHROMIUM`, else the first of `chromium`,
 /// `chromium-browser` on PATH.
@@ -169,13 +197,17 @@ fn keep_tail(stderr: std::process::ChildStderr, tail: Arc<Mutex<VecDeque<String>
 }
 
 impl Browser {
-    /// Starts the browser ([`chromium_exe`]) and attaches a blank page.
-    pub fn start() -> Result<Browser, WebglError> {
-        Browser::start_with(&chromium_exe()?, START_TIMEOUT)
+    /// Starts the browser ([`chromium_exe`]) as `launch` says and attaches a blank page.
+    pub fn start(launch: &Launch) -> Result<Browser, WebglError> {
+        Browser::start_with(&chromium_exe()?, START_TIMEOUT, launch)
     }
 
     /// Starts `exe` as the browser, which must answer its first command within `start_timeout`.
-    pub fn start_with(exe: &Path, start_timeout: Duration) -> Result<Browser, WebglError> {
+    pub fn start_with(
+        exe: &Path,
+        start_timeout: Duration,
+        launch: &Launch,
+    ) -> Result<Browser, WebglError> {
         let tmp = std::env::temp_dir();
         remove_stale_profiles(&tmp);
         let profile = tempfile::Builder::new()
@@ -185,7 +217,9 @@ impl Browser {
         let (req_read, req_write) = pipe()?;
         let (ans_read, ans_write) = pipe()?;
         let mut cmd = Command::new(exe);
-        cmd.args(FLAGS)
+        cmd.args(COMMON_FLAGS)
+            .args(&launch.flags)
+            .envs(launch.env.iter().map(|(k, v)| (k, v)))
             .arg(format!("--user-data-dir={}", profile.path().display()))
             .arg("about:blank")
             .stdin(Stdio::null())

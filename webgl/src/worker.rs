@@ -1,7 +1,7 @@
 //! The `webgl:chromium` worker: starts the browser, loads the page, declares what WebGL 2.0 can
 //! run, and answers batches through the plan's protocol loop ([`shadowcheck_plan::serve::serve`]).
 
-use super::browser::Browser;
+use super::browser::{Browser, Launch};
 use super::job;
 use super::WebglError;
 use serde::Deserialize;
@@ -129,7 +129,7 @@ impl WebglWorker {
     /// Starts the browser, loads the page and creates its WebGL 2.0 context.
     pub fn start() -> Result<WebglWorker, WebglError> {
         let fault = TestFault::from_env()?;
-        let mut browser = Browser::start()?;
+        let mut browser = Browser::start(&Launch::swiftshader())?;
         browser.evaluate(PAGE_JS)?;
         let v = browser.evaluate("shadowcheck.init()")?;
         let page: PageInfo = serde_json::from_value(v.clone())

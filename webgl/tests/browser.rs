@@ -3,7 +3,7 @@
 //! that never answers, a page whose renderer dies, one that ignores `Browser.close`, and the
 //! profile folders of killed workers. No real browser is needed.
 
-use shadowcheck_webgl::browser::{remove_stale_profiles, Browser, PROFILE_PREFIX};
+use shadowcheck_webgl::browser::{remove_stale_profiles, Browser, Launch, PROFILE_PREFIX};
 use shadowcheck_webgl::WebglError;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
@@ -51,7 +51,7 @@ fn within<T: Send + 'static>(limit: Duration, f: impl FnOnce() -> T + Send + 'st
 fn start_error(exe: PathBuf, start_timeout: Duration, limit: Duration) -> String {
     let t0 = Instant::now();
     let r = within(limit, move || {
-        Browser::start_with(&exe, start_timeout).map(|_| ())
+        Browser::start_with(&exe, start_timeout, &Launch::default()).map(|_| ())
     });
     match r {
         None => panic!("the start still waited after {limit:?}"),
@@ -105,7 +105,7 @@ fn a_page_whose_renderer_crashed_is_an_error_at_once_not_an_answer_awaited_forev
     let dir = scratch("renderer");
     let exe = fake(&dir, "renderer-crash");
     let r = within(Duration::from_secs(20), move || {
-        let mut b = Browser::start_with(&exe, Duration::from_secs(15))?;
+        let mut b = Browser::start_with(&exe, Duration::from_secs(15), &Launch::default())?;
         let first = b.evaluate("shadowcheck.run({})");
         // Every later command to the page fails at once too.
         let second = b.evaluate("1 + 1");
@@ -128,7 +128,7 @@ fn a_page_whose_renderer_crashed_is_an_error_at_once_not_an_answer_awaited_forev
 fn a_browser_that_ignores_close_is_killed_after_the_grace_period_and_its_profile_removed() {
     let dir = scratch("close");
     let exe = fake(&dir, "hang-close");
-    let b = Browser::start_with(&exe, Duration::from_secs(15)).unwrap();
+    let b = Browser::start_with(&exe, Duration::from_secs(15), &Launch::default()).unwrap();
     let pid = b.pid();
     let profile = b.profile().to_path_buf();
     assert!(profile.is_dir());

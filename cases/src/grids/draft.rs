@@ -122,14 +122,23 @@ impl Draft {
             api.retain(|a| {
                 matches!(
                     a,
-                    ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+                    ApiPath::Glsl130
+                        | ApiPath::GlslCore
+                        | ApiPath::Es300
+                        | ApiPath::Vulkan
+                        | ApiPath::Wgsl
                 )
             });
         }
         if self.lookup.gather.is_some() {
             // Shadow textureGather: GLSL 4.00 (core), GLSL ES 3.10+ (GLSL 4.60 §8.9.4) and
-            // SPIR-V's OpImageDrefGather.
-            api.retain(|a| matches!(a, ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan));
+            // SPIR-V's OpImageDrefGather, WGSL's textureGatherCompare.
+            api.retain(|a| {
+                matches!(
+                    a,
+                    ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan | ApiPath::Wgsl
+                )
+            });
         }
         Case {
             sweep: vec![],

@@ -65,9 +65,9 @@ fn draft(c: Cell, tex: Texture, u: f64, v: f64, dref: f64, tags: String) -> Draf
     Draft::new("gather", c, tex, lk, tags)
 }
 
-/// The gather family of spec `d` (GL 4.6 and ES 3.2 only).
+/// The gather family of spec `d` (GL 4.6, ES 3.2, Vulkan and WebGPU).
 pub fn gather(d: &SpecDims) -> Vec<Draft> {
-    if !matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan) {
+    if !matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan | Spec::WebGpu) {
         return Vec::new();
     }
     let targets: Vec<Target> = [
@@ -116,8 +116,9 @@ pub fn gather(d: &SpecDims) -> Vec<Draft> {
     out.extend(wraps(d, &targets));
     out.extend(offsets(d, &targets));
     out.extend(lod_ignored(d));
-    // Vulkan: an image view's component mapping is not TEXTURE_SWIZZLE (not modelled here).
-    if d.spec != Spec::Vulkan {
+    // Vulkan: an image view's component mapping is not TEXTURE_SWIZZLE (not modelled here);
+    // WebGPU has no swizzle on a depth view.
+    if !super::specs::sampler_create(d.spec) {
         out.extend(swizzles(d, &targets));
     }
     out

@@ -137,11 +137,11 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             |x| d.spec != Spec::Vulkan || [0.0, 1.0].contains(&x.sampler.in_effect().border[0]),
         )
         .filter(
-            "Vulkan: no incomplete textures (an image view has levelCount levels, Vulkan 1.3 §12.5), no texture swizzle on a Dref lookup, no GL sampler objects or seamless enable",
+            "Vulkan, WebGPU: no incomplete textures (an image view has levelCount levels, Vulkan 1.3 §12.5; a GPUTextureView mipLevelCount, WebGPU §6.2), no texture swizzle on a depth-compare lookup, no GL sampler objects or seamless enable",
             |x| {
-                d.spec != Spec::Vulkan
+                !specs::sampler_create(d.spec)
                     || (shadowcheck_oracle::lod::incomplete(
-                        &shadowcheck_oracle::rules::rules_for(Spec::Vulkan),
+                        &shadowcheck_oracle::rules::rules_for(d.spec),
                         &x.texture,
                         &x.sampler.in_effect(),
                         false,
@@ -155,6 +155,22 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
         .filter(
             "Vulkan: D32_SFLOAT texels outside [0,1] are undefined without VK_EXT_depth_range_unrestricted (a copy stores them as given; GL's upload clamps them)",
             |x| d.spec != Spec::Vulkan || floats_in_unit_range(&x.texture),
+        )
+        .filter(
+            "WebGPU: depth texels are written by a render pass's frag_depth, which \"is clamped to the current [[viewport]] depth range\" (WebGPU §23.2.6); texel copies into depth formats are not allowed (§26.1.2)",
+            |x| d.spec != Spec::WebGpu || floats_in_unit_range(&x.texture),
+        )
+        .filter(
+            "WebGPU: the array index of a depth-compare built-in is an i32 or u32 (WGSL §17.7 textureSampleCompare: \"array_index: The 0-based texture array index\"), so the layer coordinate is an integer",
+            |x| d.spec != Spec::WebGpu || !x.texture.target.is_array() || x.lookup.layer.fract() == 0.0,
+        )
+        .filter(
+            "WebGPU: WGSL has no projective texture built-in (§17.7)",
+            |x| d.spec != Spec::WebGpu || !x.lookup.projective,
+        )
+        .filter(
+            "WebGPU: textureGatherCompare takes one const-expression offset; WGSL has no textureGatherOffsets (§17.7)",
+            |x| d.spec != Spec::WebGpu || x.lookup.gather.as_ref().is_none_or(|g| g.offsets.is_none()),
         )
 }
 

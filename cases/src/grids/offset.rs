@@ -94,7 +94,7 @@ fn wrap_draft(c: Cell, tex: Texture, lk: Lookup, wrap: Wrap, tags: String) -> Dr
 
 /// The offset family of spec `d` (empty for specs without offset lookups).
 pub fn offset(d: &SpecDims) -> Vec<Draft> {
-    if !matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan) {
+    if !matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan | Spec::WebGpu) {
         return Vec::new();
     }
     let mut out = Vec::new();
@@ -242,6 +242,7 @@ fn other_targets(d: &SpecDims) -> Vec<Draft> {
         // Vulkan: ConstOffset on every non-cube Dim (SPIR-V Image Operands; §16 Texel
         // Coordinate Offset), i.e. GL's list without rectangles.
         Spec::Vulkan => &[Target::T1d, Target::T1dArray, Target::T2dArray],
+        // ES 3.x, and WGSL's offset overloads on texture_depth_2d_array (§17.7).
         _ => &[Target::T2dArray],
     };
     let mut out = Vec::new();

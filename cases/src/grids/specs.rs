@@ -178,14 +178,43 @@ pub fn dims(spec: Spec) -> SpecDims {
             stencil_mode: false,
             fail_value: false,
         },
+        // WebGPU: the WGSL depth texture types (2D, 2D array, cube, cube array), the five depth
+        // formats (depth32float-stencil8 with its feature), GPUAddressMode (no border),
+        // lodMinClamp / lodMaxClamp and the view's mip range; no LOD bias anywhere (§7.1.1
+        // GPUSamplerDescriptor; WGSL §17.7).
+        Spec::WebGpu => SpecDims {
+            spec,
+            funcs: CORE_FUNCS,
+            targets: &[T::T2d, T::Cube, T::T2dArray, T::CubeArray],
+            formats: &[Fo::D16, Fo::D24, Fo::D32f, Fo::D24S8, Fo::D32fS8],
+            filters: ALL_FILTERS,
+            dtms: &[],
+            wraps: &[W::Repeat, W::ClampToEdge, W::MirroredRepeat],
+            lod_bias: false,
+            lod_state: true,
+            shader_bias: false,
+            stencil_mode: false,
+            fail_value: false,
+        },
     }
 }
 
 /// Whether the spec reads a depth texture with comparison off through its lookups (compare mode
 /// NONE). Not Vulkan: its depth comparison is an OpImage*Dref* instruction on a sampler with
-/// compareEnable (§16 Depth Compare Operation); a plain depth read is another instruction.
+/// compareEnable (§16 Depth Compare Operation); a plain depth read is another instruction. Not
+/// WebGPU: a comparison is a `sampler_comparison` in a compare built-in (WGSL §17.7); a plain
+/// depth read is textureSample through a `sampler`.
 pub fn compare_none(spec: Spec) -> bool {
-    spec != Spec::Vulkan
+    !sampler_create(spec)
+}
+
+/// The spec sets sampling state when a sampler is created (Vulkan's VkSamplerCreateInfo,
+/// WebGPU's GPUSamplerDescriptor): no TexParameter, no incomplete textures, no GL sampler
+/// objects or seamless enable.
+pub fn sampler_create(spec: Spec) -> bool {
+    shadowcheck_oracle::rules::rules_for(spec)
+        .sampler_create
+        .is_some()
 }
 
 /// Rectangle textures allow only NEAREST and LINEAR minification (GL 4.6 §8.10: INVALID_ENUM
@@ -209,6 +238,7 @@ pub fn filter_allowed(target: Target, filter: Filter) -> bool {
 ///   integer sampler (GLSL 4.30+), so it is `core` only.
 /// - ES 3.x: GLSL ES 3.00.
 /// - Vulkan: GLSL 4.50 for Vulkan compiled to SPIR-V (`vk`).
+/// - WebGPU: WGSL (`wgsl`).
 /// - A case setting the texture swizzle keeps GLSL 1.30 (compare NONE only), core and GLSL ES 3.00
 ///   (the swizzle is modelled on the shader lookups of GL 4.6 §15.2.1).
 pub fn apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
@@ -235,6 +265,7 @@ fn state_apis(spec: Spec, target: Target, sampler: &Sampler) -> Vec<ApiPath> {
         Spec::Es2Ext => vec![A::Es100Ext],
         Spec::Gles32 => vec![A::Es300],
         Spec::Vulkan => vec![A::Vulkan],
+        Spec::WebGpu => vec![A::Wgsl],
         Spec::Gl46 => {
             if stencil {
                 return vec![A::GlslCore];

@@ -219,7 +219,10 @@ pub(super) fn texel_ctx<'a>(
     if rules.ref_clamp == RefClamp::Unstated {
         let clamped: Vec<f64> = dref_cands.iter().map(|d| d.clamp(0.0, 1.0)).collect();
         if !(0.0..=1.0).contains(&dref_raw) {
-            e.note("SGIX_shadow leaves the clamping of R unstated (NVIDIA Implementation Details); both readings are accepted");
+            e.note(format!(
+                "{} leaves the clamping of the reference unstated ({}); both readings are accepted",
+                rules.doc, rules.clamp_cite
+            ));
         }
         dref_cands.extend(clamped);
     } else if clamp_ref {

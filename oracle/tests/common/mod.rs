@@ -14,6 +14,7 @@ pub fn api_for(spec: Spec) -> ApiPath {
         Spec::Gl46 => ApiPath::GlslCore,
         Spec::Gles32 => ApiPath::Es300,
         Spec::Vulkan => ApiPath::Vulkan,
+        Spec::WebGpu => ApiPath::Wgsl,
     }
 }
 

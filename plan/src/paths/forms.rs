@@ -14,6 +14,7 @@ enum Dialect {
     Es100,
     ArbFp,
     Ff,
+    Wgsl,
 }
 
 fn dialect(path: ApiPath) -> Dialect {
@@ -25,6 +26,7 @@ fn dialect(path: ApiPath) -> Dialect {
         ApiPath::Es100Ext => Dialect::Es100,
         ApiPath::ArbFp => Dialect::ArbFp,
         ApiPath::FixedFunction => Dialect::Ff,
+        ApiPath::Wgsl => Dialect::Wgsl,
     }
 }
 
@@ -89,6 +91,16 @@ pub fn available_with(
             }
             _ => false,
         },
+        // WGSL §17.7: the depth-comparison built-ins take a texture_depth_2d, _2d_array, _cube or
+        // _cube_array and no projection: textureSampleCompare (implicit derivatives, no bias) and
+        // textureSampleCompareLevel (`Lod`: "always samples texels from mip level 0", so only a
+        // case whose level of detail selects level 0 may use it).
+        Dialect::Wgsl => {
+            kind == SamplerKind::Shadow
+                && !proj
+                && matches!(target, T2d | T2dArray | Cube | CubeArray)
+                && matches!(form, LodForm::Lod | LodForm::Implicit(false))
+        }
         Dialect::Modern | Dialect::Es3 => {
             let es = d == Dialect::Es3;
             if kind == SamplerKind::Shadow {
@@ -142,6 +154,10 @@ pub fn offset_available_with(
     use Target::*;
     let shadow = kind == SamplerKind::Shadow;
     let es = path == ApiPath::Es300;
+    if path == ApiPath::Wgsl {
+        // WGSL §17.7: the offset overloads exist for texture_depth_2d and texture_depth_2d_array.
+        return matches!(target, T2d | T2dArray);
+    }
     match target {
         Cube | CubeArray => false,
         T2d => true,

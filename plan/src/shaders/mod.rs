@@ -279,6 +279,8 @@ fn language(info: &GlInfo, key: &ShaderKey) -> Language {
             "",
         ),
         ApiPath::FixedFunction | ApiPath::ArbFp => (String::new(), "in", "o", ""),
+        // WGSL is no GLSL dialect: the WebGPU page's shader text is written elsewhere.
+        ApiPath::Wgsl => (String::new(), "in", "o", ""),
         // Not used for program text ([`vulkan::glsl`] writes it); the dialect for completeness.
         ApiPath::Vulkan => (
             "#version 450\n".to_string(),

@@ -110,6 +110,7 @@ fn default_api(spec: Spec, target: Target) -> ApiPath {
         Spec::Es2Ext => ApiPath::Es100Ext,
         Spec::Gles32 => ApiPath::Es300,
         Spec::Vulkan => ApiPath::Vulkan,
+        Spec::WebGpu => ApiPath::Wgsl,
         Spec::Gl46 if target == Target::CubeArray => ApiPath::GlslCore,
         Spec::Gl46 => ApiPath::GlslCore,
     }

@@ -116,7 +116,7 @@ fn seamless_tag(d: &SpecDims, on: Option<bool>) -> &'static str {
     match on {
         Some(true) => "on",
         Some(false) => "off",
-        None if d.spec == Spec::Vulkan => "always",
+        None if matches!(d.spec, Spec::Vulkan | Spec::WebGpu) => "always",
         None => "es",
     }
 }
@@ -125,10 +125,11 @@ fn seamless_tag(d: &SpecDims, on: Option<bool>) -> &'static str {
 /// levels 0 and 1 and LINEAR_MIPMAP_NEAREST at level 1, on +X near its +Z edge, its -Y edge, the
 /// corner between them and inside; GL with the enable off and on, with CLAMP_TO_EDGE and REPEAT
 /// (ignored while seamless); ES with its rule (always seamless, no enable); Vulkan with its Cube
-/// Map Edge Handling (always across faces).
+/// Map Edge Handling (always across faces); WebGPU's cube views ("Sampling is done seamlessly
+/// across the faces of the cubemap").
 pub fn seamless(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
-    if !d.targets.contains(&Target::Cube) || !(has_gl33_state(d) || d.spec == Spec::Vulkan) {
+    if !d.targets.contains(&Target::Cube) || !(has_gl33_state(d) || matches!(d.spec, Spec::Vulkan | Spec::WebGpu)) {
         return out;
     }
     let settings: &[Option<bool>] = if d.spec == Spec::Gl46 {
