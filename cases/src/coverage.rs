@@ -88,7 +88,9 @@ impl GatherFn {
             target,
             Target::T2d | Target::T2dArray | Target::Cube | Target::CubeArray
         ) || (target == Target::Rect && api == ApiPath::GlslCore);
-        targets_ok && (self == GatherFn::Gather || !target.is_cube())
+        // WGSL §17.7: textureGatherCompare takes one const offset; no textureGatherOffsets.
+        let fn_ok = !(api == ApiPath::Wgsl && self == GatherFn::Offsets);
+        targets_ok && fn_ok && (self == GatherFn::Gather || !target.is_cube())
     }
 }
 

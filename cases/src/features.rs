@@ -95,7 +95,8 @@ pub const FEATURES: &[Feature] = &[
         name: "projective lookup with LINEAR or a mipmapped filter",
         cite: "GL 4.6 §8.14.1, §8.23.1",
         applies: |c| c.lookup.projective && c.sampler.min_filter != Filter::Nearest,
-        allowed: geometry,
+        // WGSL §17.7 has no projective texture built-in.
+        allowed: |d| geometry(d) && d.spec != Spec::WebGpu,
     },
     Feature {
         name: "texel offset with MIRRORED_REPEAT or CLAMP_TO_BORDER",

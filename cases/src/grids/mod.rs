@@ -117,7 +117,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             |x| d.lod_state || !uses_lod_state(x),
         )
         .filter(
-            "TEXTURE_LOD_BIAS does not exist in ES or SGIX-era GL (ES 3.2 §8.14.1; INVALID_ENUM)",
+            "TEXTURE_LOD_BIAS does not exist in ES or SGIX-era GL (ES 3.2 §8.14.1; INVALID_ENUM), nor in WebGPU's GPUSamplerDescriptor",
             |x| d.lod_bias || (x.sampler.lod_bias == 0.0 && x.sampler.in_effect().lod_bias == 0.0),
         )
         .filter(
@@ -125,7 +125,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             |x| d.shader_bias || x.lookup.bias == 0.0,
         )
         .filter(
-            "Vulkan: a Dref lookup needs a depth image and a sampler with compareEnable (§16 Depth Compare Operation); a depth read without comparison is no depth comparison",
+            "Vulkan, WebGPU: a depth comparison needs a depth image and a comparison sampler (Vulkan 1.3 §16 Depth Compare Operation: compareEnable; WGSL §17.7: a sampler_comparison); a depth read without comparison is no depth comparison",
             |x| {
                 specs::compare_none(d.spec)
                     || (x.sampler.in_effect().compare_mode == CompareMode::Compare
@@ -167,10 +167,6 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
         .filter(
             "WebGPU: WGSL has no projective texture built-in (§17.7)",
             |x| d.spec != Spec::WebGpu || !x.lookup.projective,
-        )
-        .filter(
-            "WebGPU: textureGatherCompare takes one const-expression offset; WGSL has no textureGatherOffsets (§17.7)",
-            |x| d.spec != Spec::WebGpu || x.lookup.gather.as_ref().is_none_or(|g| g.offsets.is_none()),
         )
 }
 

@@ -314,7 +314,10 @@ mod tests {
             let v = offset(&d);
             assert_eq!(
                 !v.is_empty(),
-                matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan),
+                matches!(
+                    d.spec,
+                    Spec::Gl46 | Spec::Gles32 | Spec::Vulkan | Spec::WebGpu
+                ),
                 "{:?}",
                 d.spec
             );
@@ -324,7 +327,11 @@ mod tests {
                 shadowcheck_model::validate::validate(&case).unwrap();
                 assert!(case.api.iter().all(|a| matches!(
                     a,
-                    ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+                    ApiPath::Glsl130
+                        | ApiPath::GlslCore
+                        | ApiPath::Es300
+                        | ApiPath::Vulkan
+                        | ApiPath::Wgsl
                 )));
             }
         }
