@@ -351,11 +351,7 @@ fn validate_offset(case: &Case) -> Result<(), ModelError> {
     if let Some(api) = case.api.iter().find(|a| {
         !matches!(
             a,
-            ApiPath::Glsl130
-                | ApiPath::GlslCore
-                | ApiPath::Es300
-                | ApiPath::Vulkan
-                | ApiPath::Wgsl
+            ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan | ApiPath::Wgsl
         )
     }) {
         return Err(invalid(

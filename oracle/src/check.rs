@@ -416,9 +416,11 @@ fn check_gather(case: &Case, rules: &Rules) -> Result<(), OracleError> {
             "API path `{api}` has no shadow textureGather (GLSL 4.00 / GLSL ES 3.10)"
         ));
     }
-    if case.api.contains(&ApiPath::Wgsl) && l.gather.as_ref().is_some_and(|g| g.offsets.is_some())
-    {
-        return na("WGSL §17.7 has textureGatherCompare with one const offset, no textureGatherOffsets".into());
+    if case.api.contains(&ApiPath::Wgsl) && l.gather.as_ref().is_some_and(|g| g.offsets.is_some()) {
+        return na(
+            "WGSL §17.7 has textureGatherCompare with one const offset, no textureGatherOffsets"
+                .into(),
+        );
     }
     if !matches!(
         t.target,

@@ -9,7 +9,12 @@ use shadowcheck_model::*;
 use shadowcheck_oracle::{evaluate, OracleError};
 
 fn strict(c: &Case) -> Acceptance {
-    eval(c).expect.accept.get(&Profile::Strict).cloned().unwrap()
+    eval(c)
+        .expect
+        .accept
+        .get(&Profile::Strict)
+        .cloned()
+        .unwrap()
 }
 
 #[test]
@@ -59,7 +64,10 @@ fn a_filtered_comparison_should_be_the_weighted_average_and_may_be_anything_in_0
     let e = eval(&c);
     assert_eq!(e.expect.spec_value, Some(0.5));
     let s = strict(&c);
-    assert!(s.contains(0.5) && !s.contains(0.0) && !s.contains(1.0), "{s:?}");
+    assert!(
+        s.contains(0.5) && !s.contains(0.0) && !s.contains(1.0),
+        "{s:?}"
+    );
     let q = e.expect.accept.get(&Profile::Quality).cloned().unwrap();
     assert!(q.contains(0.0) && q.contains(1.0), "{q:?}");
 }
@@ -70,7 +78,12 @@ fn the_result_is_one_f32_in_the_first_channel() {
     let e = eval(&c);
     assert_eq!(
         e.expect.layout.get(&ApiPath::Wgsl),
-        Some(&[Channel::R, Channel::Unused, Channel::Unused, Channel::Unused])
+        Some(&[
+            Channel::R,
+            Channel::Unused,
+            Channel::Unused,
+            Channel::Unused
+        ])
     );
 }
 
@@ -96,7 +109,13 @@ fn what_webgpu_cannot_express_is_not_applicable_never_a_gl_error() {
     c.lookup.projective = true;
     assert!(not_applicable(&c).contains("projective"));
     // No SGIX operator is a GPUCompareFunction.
-    let c = one(Spec::WebGpu, Format::D16, CompareFunc::LequalRSgix, 0.5, 0.5);
+    let c = one(
+        Spec::WebGpu,
+        Format::D16,
+        CompareFunc::LequalRSgix,
+        0.5,
+        0.5,
+    );
     assert!(!not_applicable(&c).is_empty());
     // No 32-bit UNORM depth format.
     let c = one(Spec::WebGpu, Format::D32, CompareFunc::Lequal, 0.5, 0.5);

@@ -46,7 +46,7 @@ function shorten(log) {
     const t = l.trim();
     if (/^(call|got|expected|max diff|abs diffs):/.test(t)) keep.push(t.replace(/\s+/g, ' '));
   }
-  return keep.join(' | ').slice(0, 600);
+  return keep.join(' ; ').slice(0, 330);
 }
 
 const configs = fs.readdirSync(out).filter(d => fs.existsSync(path.join(out, d, 'meta.json'))).sort();
@@ -122,25 +122,64 @@ for (const c of configs) {
     md.push('');
   }
 
-  // Every failing case with its parameters, the failing subcases and the first message.
+  // Failing cases: subcase analysis.
   const fails = cases.filter(x => x.status !== 'pass' && x.status !== 'skip');
-  if (fails.length) {
-    md.push(`### Failures (${fails.length} cases)`);
-    md.push('');
-    md.push('| test | case parameters | failing subcases (of which) | first failure message (shortened) |');
-    md.push('| --- | --- | --- | --- |');
-    for (const x of fails) {
-      const bad = (x.logs || []).filter(l => !/INFO: subcase ran/.test(l) && !/^\s*DEBUG/.test(l));
-      const subcases = new Set();
-      const ran = new Set();
-      for (const l of x.logs || []) {
-        const m = /^\(in subcase: ([^)]*)\)/.exec(l);
-        if (!m) continue;
-        ran.add(m[1]);
-        if (!/INFO: subcase ran/.test(l)) subcases.add(m[1].replace(/"/g, ''));
+  for (const x of fails) {
+    x.badSub = new Map(); // subcase param -> Set of values that failed
+    x.nSub = new Set();
+    x.nBad = new Set();
+    x.firstMsg = '(no message)';
+    for (const l of x.logs || []) {
+      const m = /^\(in subcase: ([^)]*)\) /.exec(l);
+      const sub = m ? m[1] : '';
+      if (m) x.nSub.add(sub);
+      if (/INFO: subcase ran/.test(l) || /^\s*(\([^)]*\) )?DEBUG/.test(l)) continue;
+      if (x.firstMsg === '(no message)') x.firstMsg = shorten(l.slice(m ? m[0].length : 0));
+      x.nBad.add(sub);
+      for (const kv of sub.split(';')) {
+        if (!kv) continue;
+        const i = kv.indexOf('=');
+        const k = kv.slice(0, i), v = kv.slice(i + 1).replace(/"/g, '');
+        if (!x.badSub.has(k)) x.badSub.set(k, new Set());
+        x.badSub.get(k).add(v);
       }
-      const msg = bad.length ? shorten(bad[0].replace(/^\(in subcase: [^)]*\) /, '')) : '(no message)';
-      md.push(`| ${x.file}:${x.test} | ${paramText(x.params)} | ${[...subcases].join('<br>')} (${subcases.size}/${ran.size}) | ${msg.replace(/\|/g, '\\|')} |`);
+    }
+  }
+  const subText = x => [...x.badSub].map(([k, v]) => `${k}∈{${[...v].join(',')}}`).join(' ');
+  if (fails.length) {
+    md.push(`### Failures by pattern (${fails.length} failing cases)`);
+    md.push('');
+    md.push('Cases grouped by test, stage, filter, offset; "failing cases" is out of all cases of that group.');
+    md.push('');
+    md.push('| test | stage | filt | offset | failing cases | formats | address modes | failing subcases (union) |');
+    md.push('| --- | --- | --- | --- | ---: | --- | --- | --- |');
+    const key = x => `${x.file}:${x.test}|${x.params.stage ?? ''}|${x.params.filt ?? ''}|${x.params.offset ?? ''}`;
+    const totals = groupBy(cases, key);
+    for (const [k, l] of groupBy(fails, key)) {
+      const [t, st, fi, off] = k.split('|');
+      const modes = new Set(l.map(x => ['mode', 'modeU', 'modeV'].filter(m => x.params[m] !== undefined)
+        .map(m => `${m}=${x.params[m]}`).join(',')));
+      const union = new Map();
+      for (const x of l) for (const [sk, sv] of x.badSub) {
+        if (!union.has(sk)) union.set(sk, new Set());
+        for (const v of sv) union.get(sk).add(v);
+      }
+      md.push(`| ${t} | ${kStage[st] || '-'} | ${fi || '-'} | ${off || '-'} | ${l.length}/${totals.get(k).length} | ` +
+        `${[...new Set(l.map(x => x.params.format))].join(', ')} | ${modes.size} of ${new Set(totals.get(k).map(x =>
+          ['mode', 'modeU', 'modeV'].filter(m => x.params[m] !== undefined).map(m => `${m}=${x.params[m]}`).join(','))).size}: ` +
+        `${[...modes].join('; ')} | ${[...union].map(([a, b]) => `${a}∈{${[...b].join(',')}}`).join(' ')} |`);
+    }
+    md.push('');
+    md.push(`### Every failing case (${fails.length})`);
+    md.push('');
+    md.push('Address modes: c=clamp-to-edge, r=repeat, m=mirror-repeat. "bad/all" counts subcases.');
+    md.push('');
+    md.push('| test | case parameters | bad/all | failing subcase values | first failure message (shortened) |');
+    md.push('| --- | --- | --- | --- | --- |');
+    for (const x of fails) {
+      const p = Object.entries(x.params).map(([k, v]) => `${k}=${v}`).join(' ');
+      md.push(`| ${x.file}:${x.test} | ${p} | ${x.nBad.size}/${x.nSub.size} | ${subText(x)} | ` +
+        `${x.firstMsg.replace(/\|/g, '\\|')} |`);
     }
     md.push('');
   }

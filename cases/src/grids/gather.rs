@@ -67,7 +67,10 @@ fn draft(c: Cell, tex: Texture, u: f64, v: f64, dref: f64, tags: String) -> Draf
 
 /// The gather family of spec `d` (GL 4.6, ES 3.2, Vulkan and WebGPU).
 pub fn gather(d: &SpecDims) -> Vec<Draft> {
-    if !matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan | Spec::WebGpu) {
+    if !matches!(
+        d.spec,
+        Spec::Gl46 | Spec::Gles32 | Spec::Vulkan | Spec::WebGpu
+    ) {
         return Vec::new();
     }
     let targets: Vec<Target> = [
@@ -316,13 +319,10 @@ mod tests {
             for x in v {
                 let case = x.into_case();
                 assert!(case.lookup.gather.is_some());
-                assert!(case
-                    .api
-                    .iter()
-                    .all(|a| matches!(
-                        a,
-                        ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan | ApiPath::Wgsl
-                    )));
+                assert!(case.api.iter().all(|a| matches!(
+                    a,
+                    ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan | ApiPath::Wgsl
+                )));
                 let e = shadowcheck_oracle::evaluate(&case)
                     .unwrap_or_else(|e| panic!("{}: {e}", case.id));
                 assert!(e.expect.gather.is_some(), "{}", case.id);

@@ -94,7 +94,10 @@ fn wrap_draft(c: Cell, tex: Texture, lk: Lookup, wrap: Wrap, tags: String) -> Dr
 
 /// The offset family of spec `d` (empty for specs without offset lookups).
 pub fn offset(d: &SpecDims) -> Vec<Draft> {
-    if !matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Vulkan | Spec::WebGpu) {
+    if !matches!(
+        d.spec,
+        Spec::Gl46 | Spec::Gles32 | Spec::Vulkan | Spec::WebGpu
+    ) {
         return Vec::new();
     }
     let mut out = Vec::new();

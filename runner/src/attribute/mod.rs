@@ -1,7 +1,8 @@
 //! Layer attribution (`shadowcheck attribute`): for a failure on a layered implementation (GL on
-//! Vulkan through zink, WebGL on Vulkan through ANGLE), which layer broke the lookup.
+//! Vulkan through zink, WebGL on Vulkan through ANGLE, WebGPU on Vulkan through Dawn), which layer
+//! broke the lookup.
 //!
-//! The plan of a GL or GL ES case is API-neutral: the same texture, sampler state and lookup as a
+//! The plan of a GL, GL ES or WebGPU case is API-neutral: the same texture, sampler state and lookup as a
 //! Vulkan case ([`vulkan_counterpart`]) where Vulkan 1.3 defines it (the oracle's `vulkan` rules
 //! accept it). The Vulkan driver under the layer ([`LAYERS`]) answers that counterpart in the same
 //! runs, and the failure is classified ([`Layer`]):
@@ -38,7 +39,9 @@ pub struct Layering {
 }
 
 /// The layerings shadowcheck runs: zink on lavapipe (Mesa's default zink here), zink on
-/// SwiftShader's Vulkan driver, ANGLE's Vulkan back end on SwiftShader (WebGL in Chromium).
+/// SwiftShader's Vulkan driver, ANGLE's Vulkan back end on SwiftShader (WebGL in Chromium), Dawn's
+/// Vulkan back end on SwiftShader (WebGPU in Chromium). The first entry whose prefix a backend
+/// name starts with is its layering, so a longer prefix comes before a shorter one it extends.
 pub const LAYERS: &[Layering] = &[
     Layering {
         upper_prefix: "egl:zink+swiftshader:",
@@ -59,6 +62,11 @@ pub const LAYERS: &[Layering] = &[
         upper_prefix: "webgl:chromium",
         lower: "vk:swiftshader",
         what: "ANGLE's Vulkan back end on SwiftShader",
+    },
+    Layering {
+        upper_prefix: "webgpu:chromium",
+        lower: "vk:swiftshader",
+        what: "Dawn's Vulkan back end on SwiftShader",
     },
 ];
 

@@ -256,3 +256,46 @@ fn a_missing_counterpart_is_written_to_run_and_then_attributed() {
     // Nothing is written twice, nor what the cases already hold.
     assert!(counterparts_to_run(&res, &all).is_empty());
 }
+
+#[test]
+fn a_webgpu_failure_is_attributed_against_swiftshaders_vulkan_driver_under_dawn() {
+    let cases = fixtures();
+    // A committed WebGPU case whose Vulkan counterpart (same grid coordinates) is committed too.
+    let mut ids: Vec<&String> = cases
+        .keys()
+        .filter(|k| k.starts_with("webgpu/2d/"))
+        .collect();
+    ids.sort();
+    let (wg, vk) = ids
+        .into_iter()
+        .find_map(|id| {
+            let wg = &cases[id];
+            let vk = vulkan_counterpart(wg).ok()?;
+            let f = cases.get(&vk.id)?;
+            (same_lookup(wg, f) == Some(f.sweep.len())).then(|| (wg.clone(), f.clone()))
+        })
+        .expect("a WebGPU fixture with a Vulkan counterpart");
+    assert_eq!(
+        layering_of("webgpu:chromium").map(|l| l.lower),
+        Some("vk:swiftshader")
+    );
+    let mut res = Results::default();
+    res.insert(record(
+        "webgpu:chromium",
+        &wg,
+        ApiPath::Wgsl,
+        Outcome::Fail,
+        0.25,
+    ));
+    res.insert(record(
+        "vk:swiftshader",
+        &vk,
+        ApiPath::Vulkan,
+        Outcome::Fail,
+        0.25,
+    ));
+    let rows = attribute(&res, &cases);
+    assert_eq!(rows.len(), 1, "{rows:?}");
+    assert_eq!(rows[0].layer, Layer::Lower, "{rows:?}");
+    assert_eq!(rows[0].lower, "vk:swiftshader");
+}

@@ -189,7 +189,10 @@ pub fn wrap(d: &SpecDims) -> Vec<Draft> {
 fn wrap_texel_centres(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
     let fmt = fixed_fmt(d);
-    let modes: &[CompareMode] = if matches!(d.spec, Spec::Gles32 | Spec::Es2Ext | Spec::Vulkan | Spec::WebGpu) {
+    let modes: &[CompareMode] = if matches!(
+        d.spec,
+        Spec::Gles32 | Spec::Es2Ext | Spec::Vulkan | Spec::WebGpu
+    ) {
         &[CompareMode::Compare]
     } else {
         &[CompareMode::None, CompareMode::Compare]

@@ -129,7 +129,9 @@ fn seamless_tag(d: &SpecDims, on: Option<bool>) -> &'static str {
 /// across the faces of the cubemap").
 pub fn seamless(d: &SpecDims) -> Vec<Draft> {
     let mut out = Vec::new();
-    if !d.targets.contains(&Target::Cube) || !(has_gl33_state(d) || matches!(d.spec, Spec::Vulkan | Spec::WebGpu)) {
+    if !d.targets.contains(&Target::Cube)
+        || !(has_gl33_state(d) || matches!(d.spec, Spec::Vulkan | Spec::WebGpu))
+    {
         return out;
     }
     let settings: &[Option<bool>] = if d.spec == Spec::Gl46 {
