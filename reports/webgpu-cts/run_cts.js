@@ -4,7 +4,7 @@
 //
 // usage: node run_cts.js --cts CTS_DIR --out OUT_DIR --config NAME [--compat]
 //          [--flag=--some-chromium-flag ...] [--query Q ...] [--query-timeout SECONDS]
-//          [--chromium PATH]
+//          [--chromium PATH] [--param K=V ...]   (extra runner URL parameters, e.g. debug=1)
 // Needs: CTS_DIR built with `npm ci && npm run standalone` (playwright-core comes from
 // CTS_DIR/node_modules, it drives the system Chromium; no browser download).
 'use strict';
@@ -13,7 +13,7 @@ const http = require('http');
 const path = require('path');
 
 function parseArgs(argv) {
-  const a = { flags: [], queries: [], compat: false, queryTimeout: 1800, chromium: 'chromium' };
+  const a = { flags: [], queries: [], params: [], compat: false, queryTimeout: 1800, chromium: 'chromium' };
   for (let i = 0; i < argv.length; i++) {
     const k = argv[i];
     const eq = k.indexOf('=');
@@ -26,6 +26,7 @@ function parseArgs(argv) {
       case '--compat': a.compat = true; break;
       case '--flag': a.flags.push(val()); break;
       case '--query': a.queries.push(val()); break;
+      case '--param': a.params.push(val()); break; // extra runner URL parameter, e.g. debug=1
       case '--query-timeout': a.queryTimeout = Number(val()); break;
       case '--chromium': a.chromium = val(); break;
       default: throw new Error('unknown argument ' + k);
@@ -152,7 +153,8 @@ async function main() {
     page.on('pageerror', e => consoleLog.write(`[${q}] pageerror: ${e}\n`));
     let crashed = false;
     page.on('crash', () => { crashed = true; });
-    const url = `${origin}/standalone/?runnow=1${args.compat ? '&compatibility=1' : ''}&q=${
+    const url = `${origin}/standalone/?runnow=1${args.compat ? '&compatibility=1' : ''}${
+      args.params.map(p => '&' + p).join('')}&q=${
       encodeURIComponent(q)}`;
     const start = Date.now();
     const run = { query: q, url: url.slice(origin.length), timedOut: false, crashed: false };

@@ -204,6 +204,46 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
             }
         }
     }
+    // LINEAR_MIPMAP_LINEAR between levels 0 and 1 (λ = 0.5) with an offset, off the texel centres
+    // (level 0: u = 1.75, v = 1.5; level 1: u = 0.875, v = 0.75), REPEAT: the offset moves the
+    // bilinear footprint of both levels (GL 4.6 §8.14.2 (8.10) for each level's u, v). Each level
+    // is hot at its offset texel, so an offset dropped or applied in base-level texels on one level
+    // shows. Under WebGPU this is textureSampleCompare with an offset and implicit derivatives.
+    if d.filters.contains(&Filter::LinearMipmapLinear) {
+        let c = cell2d(Filter::LinearMipmapLinear, CompareMode::Compare);
+        for o in [[1, 0], [0, 1], [-1, -1]] {
+            let hot0 = (
+                wrapped(1, o[0], SIZE, Wrap::Repeat),
+                wrapped(1, o[1], SIZE, Wrap::Repeat),
+                0,
+            );
+            let hot1 = (
+                wrapped(0, o[0], SIZE / 2, Wrap::Repeat),
+                wrapped(0, o[1], SIZE / 2, Wrap::Repeat),
+                0,
+            );
+            let tex = texture(
+                &c,
+                vec![
+                    one_hot(c.format, SIZE, SIZE, 1, Some(hot0)),
+                    one_hot(c.format, SIZE / 2, SIZE / 2, 1, Some(hot1)),
+                    one_hot(c.format, 1, 1, 1, None),
+                ],
+            );
+            let mut lk = offset_lookup(Target::T2d, At::st(0.4375, 0.375), SIZE, SIZE, o);
+            lk.lod = 0.5;
+            out.push(wrap_draft(
+                c,
+                tex,
+                lk,
+                Wrap::Repeat,
+                format!(
+                    "between/st=0.4375_0.375/offset={}_{}/lod=0.5/ref=0.5",
+                    o[0], o[1]
+                ),
+            ));
+        }
+    }
     // Projective (textureProjOffset): P = (s, t, Dref, 1)·q with q = 2.
     let c = cell2d(Filter::Nearest, CompareMode::Compare);
     for o in [[1, 0], [-1, 1]] {
