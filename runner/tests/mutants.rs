@@ -93,9 +93,9 @@ fn a_fault_the_cases_cannot_see_survives_and_its_witness_kills_it() {
         .into_iter()
         .filter(|c| {
             // Seamless cube filtering wraps with CLAMP_TO_BORDER too (§8.13.1) before taking
-            // the neighbouring face's texel (ES and Vulkan cubes are always seamless).
+            // the neighbouring face's texel (ES, Vulkan and WebGPU cubes are always seamless).
             let seamless = c.texture.target.is_cube()
-                && (matches!(c.spec, Spec::Gles32 | Spec::Vulkan)
+                && (matches!(c.spec, Spec::Gles32 | Spec::Vulkan | Spec::WebGpu)
                     || c.sampler.seamless == Some(true));
             let s = c.sampler.in_effect();
             let w = [s.wrap_s, s.wrap_t, s.wrap_r];
@@ -377,5 +377,51 @@ fn the_vulkan_fixtures_alone_kill_the_vulkan_faults() {
         assert_eq!(m.status, KillStatus::Killed, "{f:?}");
         let min = m.minimal.unwrap();
         assert!(min.case.starts_with("vulkan/"), "{}", min.case);
+    }
+}
+
+/// The WebGPU fixtures alone kill the faults a WebGPU implementation can plausibly have:
+/// GPUCompareFunction applied as texel OP depth_ref, WGSL's array_index wrapped instead of
+/// clamped, cube views filtered per face (a GL backend without TEXTURE_CUBE_MAP_SEAMLESS) and a
+/// cube array's index counted in layers. The faults belong to the WebGPU variant only: a unit for
+/// another spec ignores them, so no other fixture can kill them.
+#[test]
+fn the_webgpu_fixtures_alone_kill_the_webgpu_faults() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures/webgpu");
+    let cases: Vec<Case> = shadowcheck_cases::fixtures::load_path(&root)
+        .unwrap()
+        .into_iter()
+        .flat_map(|(_, f)| f.cases)
+        .collect();
+    assert!(cases.iter().all(|c| c.spec == Spec::WebGpu) && cases.len() > 1000);
+    let suite = Suite::new(cases).unwrap();
+    let base = suite.unmutated();
+    assert_eq!(
+        (base.fail, base.warn, base.skip),
+        (0, 0, 0),
+        "{:?}",
+        base.failures
+    );
+    let webgpu_only: Vec<Fault> = Fault::ALL
+        .iter()
+        .copied()
+        .filter(|f| f.spec() == Some(Spec::WebGpu))
+        .collect();
+    assert_eq!(
+        webgpu_only,
+        [
+            Fault::WgpuCompareOperandsSwapped,
+            Fault::WgpuArrayIndexWrapped,
+            Fault::WgpuCubePerFace,
+            Fault::WgpuCubeArrayIndexAsLayer,
+        ]
+    );
+    for f in webgpu_only {
+        let m = suite.mutant(f);
+        assert_eq!(m.status, KillStatus::Killed, "{f:?}");
+        let min = m.minimal.unwrap();
+        assert!(min.case.starts_with("webgpu/"), "{}", min.case);
+        // A unit for another spec does not take the fault.
+        assert!(SoftUnit::new(Spec::Gl46).with_fault(f).faults().is_empty());
     }
 }

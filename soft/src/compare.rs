@@ -9,6 +9,7 @@
 //! | es2_ext | the eight | Dt and Dref **always** clamped (EXT_shadow_samplers 3.7.14.1) | 0.0 |
 //! | gl46, gles32 | the eight (Table 8.23 / 8.22) | only for fixed-point depth formats (§8.23.1 / §8.20.1) | 0.0 |
 //! | vulkan | the eight VkCompareOp, Dref the reference and Dtex the test value | Dref only, and only for UNORM formats (Depth Compare Operation) | 0.0 |
+//! | webgpu | the eight GPUCompareFunction values, depth_ref the provided value and the texel the sampled value | none (no clamp is stated; **chosen**: the literal reading) | 0.0 |
 
 use crate::faults::{Fault, Faults};
 use crate::SoftError;
@@ -53,8 +54,10 @@ pub fn resolve_op(spec: Spec, func: CompareFunc, faults: Faults) -> Result<Compa
         // Vulkan: VkSamplerCreateInfo::compareOp is a VkCompareOp, NEVER .. ALWAYS; "reference"
         // is Dref, "test" is Dtex, so LESS passes when Dref < Dtex as in GL's table.
         Spec::Vulkan => !matches!(func, C::LequalRSgix | C::GequalRSgix),
-        // WebGPU: not implemented by this unit yet.
-        Spec::WebGpu => false,
+        // WebGPU §7.1.1 GPUSamplerDescriptor: "enum GPUCompareFunction { "never", "less",
+        // "equal", "less-equal", "greater", "not-equal", "greater-equal", "always" }" — the
+        // eight, and no SGIX operator. Which operand is which: see `webgpu_op` below.
+        Spec::WebGpu => !matches!(func, C::LequalRSgix | C::GequalRSgix),
     };
     if !defined {
         return Err(SoftError::CompareFunc { spec, func });
@@ -91,6 +94,9 @@ pub fn resolve_op(spec: Spec, func: CompareFunc, faults: Faults) -> Result<Compa
             o => o,
         };
     }
+    if spec == Spec::WebGpu {
+        op = webgpu_op(op, faults);
+    }
     if faults.has(Fault::SgixOperatorsReversed) {
         // ARB_shadow issue 2's reading: TEXTURE_LEQUAL_R_SGIX means R ≤ texture.
         op = match op {
@@ -100,6 +106,29 @@ pub fn resolve_op(spec: Spec, func: CompareFunc, faults: Faults) -> Result<Compa
         };
     }
     Ok(op)
+}
+
+/// WebGPU §7.1.1 GPUSamplerDescriptor: "If a comparison sampler is used in a shader, the
+/// `depth_ref` is compared to the fetched texel value", and e.g. for "less": "A provided value
+/// passes the comparison test if it is less than the sampled value." The provided value is
+/// depth_ref (WGSL §17.7.10 textureSampleCompare: "The reference value to compare the sampled
+/// depth value against"), the sampled value the texel: "less" passes when depth_ref < texel,
+/// which is [`CompareOp::Less`] (Dref < Dt), and likewise for the other six ("equal": "equal
+/// to the sampled value", "less-equal", "greater", "not-equal", "greater-equal"; "never":
+/// "Comparison tests never pass", "always": "Comparison tests always pass"). The mapping is
+/// the identity; [`Fault::WgpuCompareOperandsSwapped`] reads the sentences the other way round
+/// (texel OP depth_ref).
+fn webgpu_op(op: CompareOp, faults: Faults) -> CompareOp {
+    if !faults.has(Fault::WgpuCompareOperandsSwapped) {
+        return op;
+    }
+    match op {
+        CompareOp::Less => CompareOp::Greater,
+        CompareOp::Greater => CompareOp::Less,
+        CompareOp::Lequal => CompareOp::Gequal,
+        CompareOp::Gequal => CompareOp::Lequal,
+        o => o,
+    }
 }
 
 /// Which operands are clamped to [0, 1] before the comparison.
@@ -120,6 +149,15 @@ pub fn clamp_rule(spec: Spec, format: Format, faults: Faults) -> ClampRule {
         // operation." Nothing is said of Dtex: a UNORM texel is in [0,1] by its encoding, and a
         // D32_SFLOAT one is used as stored.
         Spec::Vulkan => (fixed, false),
+        // WebGPU §7.1.1 GPUSamplerDescriptor (GPUCompareFunction) and WGSL §17.7.10
+        // textureSampleCompare ("depth_ref: The reference value to compare the sampled depth
+        // value against") say nothing of clamping depth_ref, for any format. Chosen: the literal
+        // reading, no clamp (the other reading, Vulkan's clamp for unorm formats, is what D3D12
+        // and Vulkan backends may do; a grid accepts both). The texel is used as stored: a
+        // depth16unorm / 24-bit texel lies in [0, 1] by its encoding, and a depth32float one
+        // is written by a render pass (WebGPU §23.2.7 Output Merging: "The depth input to this
+        // stage, if any, is clamped to the current [[viewport]] depth range").
+        Spec::WebGpu => (false, false),
         // GL 4.6 §8.23.1, ES 3.2 §8.20.1, ARB_depth_buffer_float rev 7 (which also amends the
         // ARB_shadow text for floating-point formats): clamp only fixed-point depth.
         // SGIX: unstated; chosen as ARB (NVIDIA clamps R).
@@ -269,6 +307,34 @@ mod tests {
             Spec::Gles32,
         ] {
             assert!(resolve_op(s, CompareFunc::LequalRSgix, F).is_err());
+        }
+    }
+
+    #[test]
+    fn webgpu_provided_value_against_sampled_value() {
+        // WebGPU §7.1.1: "less": "A provided value passes the comparison test if it is less than
+        // the sampled value": depth_ref 0.25 < texel 0.75 passes, depth_ref 0.75 does not.
+        let op = resolve_op(Spec::WebGpu, CompareFunc::Less, F).unwrap();
+        assert_eq!(op, O::Less);
+        assert!(passes(op, 0.25, 0.75, F));
+        assert!(!passes(op, 0.75, 0.25, F));
+        let op = resolve_op(Spec::WebGpu, CompareFunc::Gequal, F).unwrap();
+        assert!(passes(op, 0.75, 0.75, F) && !passes(op, 0.25, 0.75, F));
+        for f in CompareFunc::CORE {
+            assert!(resolve_op(Spec::WebGpu, f, F).is_ok(), "{f}");
+        }
+        assert!(resolve_op(Spec::WebGpu, CompareFunc::LequalRSgix, F).is_err());
+        // The fault reads "texel OP depth_ref": LESS passes when the texel is the smaller.
+        let swapped = F.with(Fault::WgpuCompareOperandsSwapped);
+        let op = resolve_op(Spec::WebGpu, CompareFunc::Less, swapped).unwrap();
+        assert!(passes(op, 0.75, 0.25, F));
+        // No reference clamp for any WebGPU format (the literal reading).
+        for fmt in [Format::D16, Format::D24, Format::D32f] {
+            let none = ClampRule {
+                dref: false,
+                dt: false,
+            };
+            assert_eq!(clamp_rule(Spec::WebGpu, fmt, F), none);
         }
     }
 

@@ -6,6 +6,7 @@
 //! one predictable branch on a field that is already in cache, so the correct unit pays almost
 //! nothing for the switches.
 
+use shadowcheck_model::Spec;
 use std::fmt;
 
 macro_rules! faults {
@@ -150,6 +151,21 @@ faults! {
     VkCubeEdgePerFace = "vk-cube-edge-per-face",
     /// A bound sampler object's state ignored in favour of the texture's own parameters.
     SamplerObjectIgnored = "sampler-object-ignored",
+    // --- WebGPU / WGSL only (no effect on a unit for another spec, see [`Fault::spec`]) ---
+    /// GPUCompareFunction applied with the operands the other way round: the sampled value
+    /// compared against the provided depth_ref ("less" passes when texel < depth_ref), as by a
+    /// backend that maps the enum onto an API whose comparison reads the other way.
+    WgpuCompareOperandsSwapped = "wgpu-compare-operands-swapped",
+    /// WGSL array_index wrapped modulo the layer (cube) count instead of clamped to
+    /// [0, textureNumLayers(t) − 1] (a shader translator's robustness pass that wraps the index).
+    WgpuArrayIndexWrapped = "wgpu-array-index-wrapped",
+    /// A "cube" / "cube-array" view filtered per face, not seamlessly across faces (a WebGPU
+    /// implementation on desktop OpenGL that never enables TEXTURE_CUBE_MAP_SEAMLESS).
+    WgpuCubePerFace = "wgpu-cube-per-face",
+    /// A texture_depth_cube_array's array_index added to the face's layer (layer index + face)
+    /// instead of selecting the cube (6 · index + face), as by a backend that emulates cube
+    /// arrays on a 2D array texture and forgets the 6 layers per cube.
+    WgpuCubeArrayIndexAsLayer = "wgpu-cube-array-index-as-layer",
     /// Shadow gather returns the unswizzled comparisons: TEXTURE_SWIZZLE_R not applied to each
     /// texel's (Rt, 0, 0, 1) before its R component is gathered (GL 4.6 §8.14.2) — a unit that
     /// routes textureGather around the swizzle stage, or follows only GLSL 4.60 §8.9.4's wording.
@@ -186,6 +202,20 @@ faults! {
 }
 
 impl Fault {
+    /// The one spec whose variant the fault belongs to, for faults modelled on one API's own
+    /// rules (`None`: any spec's unit can have it). A unit for another spec ignores the fault
+    /// ([`Faults::for_spec`]).
+    pub fn spec(self) -> Option<Spec> {
+        match self {
+            Fault::VkCubeEdgePerFace => Some(Spec::Vulkan),
+            Fault::WgpuCompareOperandsSwapped
+            | Fault::WgpuArrayIndexWrapped
+            | Fault::WgpuCubePerFace
+            | Fault::WgpuCubeArrayIndexAsLayer => Some(Spec::WebGpu),
+            _ => None,
+        }
+    }
+
     /// Whether the fault sits in TexParameter state (seen by state cases, never by a lookup case,
     /// whose sampler state is always set explicitly).
     pub fn is_state(self) -> bool {
@@ -206,21 +236,28 @@ impl fmt::Display for Fault {
 
 /// A set of faults (bitset over [`Fault`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct Faults(u64);
+pub struct Faults(u128);
 
 impl Faults {
     /// No fault: the correct texture unit.
     pub const NONE: Faults = Faults(0);
 
     pub fn with(self, f: Fault) -> Faults {
-        Faults(self.0 | (1u64 << f as u8))
+        Faults(self.0 | (1u128 << f as u8))
     }
     #[inline(always)]
     pub fn has(self, f: Fault) -> bool {
-        self.0 & (1u64 << f as u8) != 0
+        self.0 & (1u128 << f as u8) != 0
     }
     pub fn is_empty(self) -> bool {
         self.0 == 0
+    }
+    /// The faults of this set that a unit for `spec` has: those of [`Fault::spec`] `None` or
+    /// `spec` (a WebGPU-only fault does nothing in a GL unit).
+    pub fn for_spec(self, spec: Spec) -> Faults {
+        self.iter()
+            .filter(|f| f.spec().is_none_or(|s| s == spec))
+            .collect()
     }
     /// The faults in the set, in declaration order.
     pub fn iter(self) -> impl Iterator<Item = Fault> {
@@ -240,7 +277,7 @@ mod tests {
 
     #[test]
     fn keys_round_trip_and_fit_the_bitset() {
-        assert!(Fault::ALL.len() >= 30 && Fault::ALL.len() <= 64);
+        assert!(Fault::ALL.len() >= 30 && Fault::ALL.len() <= 128);
         for f in Fault::ALL {
             assert_eq!(Fault::from_key(f.key()), Some(*f));
         }
@@ -251,5 +288,17 @@ mod tests {
         assert!(!set.has(Fault::AmbientIgnored));
         assert_eq!(set.iter().count(), 2);
         assert!(Faults::NONE.is_empty());
+    }
+
+    #[test]
+    fn spec_only_faults_are_dropped_for_other_specs() {
+        let set: Faults = [Fault::WgpuCubePerFace, Fault::LessAsLequal]
+            .into_iter()
+            .collect();
+        assert_eq!(set.for_spec(Spec::WebGpu), set);
+        let gl = set.for_spec(Spec::Gl46);
+        assert!(gl.has(Fault::LessAsLequal) && !gl.has(Fault::WgpuCubePerFace));
+        let vk = Faults::NONE.with(Fault::VkCubeEdgePerFace);
+        assert!(vk.for_spec(Spec::WebGpu).is_empty());
     }
 }

@@ -166,14 +166,28 @@ impl PreparedTexture {
         &self.levels[i]
     }
 
-    /// The storage layer for the address within level `l`.
+    /// The storage layer for the address within level `l`: the layer (cube index) clamped to
+    /// [0, n − 1] (GL 4.6 §8.14.2; WGSL §17.7.10 "This value will be clamped to the range
+    /// [0, textureNumLayers(t) - 1]", where §17.7.5 textureNumLayers "If the texture is based on
+    /// cubes, returns the number of cubes in the cube arrayed texture").
     #[inline(always)]
-    pub(crate) fn storage_layer(&self, l: &LevelDesc, a: &Address) -> u32 {
+    pub(crate) fn storage_layer(&self, st: &SamplerState, l: &LevelDesc, a: &Address) -> u32 {
+        let index = |n: i64| {
+            if st.faults.has(Fault::WgpuArrayIndexWrapped) {
+                a.layer.rem_euclid(n.max(1))
+            } else {
+                a.layer.clamp(0, n - 1)
+            }
+        };
         match a.face {
-            None => a.layer.clamp(0, l.layers as i64 - 1) as u32,
+            None => index(l.layers as i64) as u32,
             Some(face) => {
                 let cubes = (l.layers / 6).max(1) as i64;
-                (a.layer.clamp(0, cubes - 1) * 6) as u32 + face as u32
+                if st.faults.has(Fault::WgpuCubeArrayIndexAsLayer) {
+                    // Fault only: the index counted in layers, not cubes.
+                    return (index(cubes) as u32 + face as u32).min(l.layers.saturating_sub(1));
+                }
+                (index(cubes) * 6) as u32 + face as u32
             }
         }
     }
@@ -281,7 +295,7 @@ impl PreparedTexture {
         obs: &mut O,
     ) -> f32 {
         let l = self.level_desc(st, level);
-        let layer = self.storage_layer(l, a);
+        let layer = self.storage_layer(st, l, a);
         let p = self.level_point(st, l, a, offset);
         if !linear || st.faults.has(Fault::LinearAsNearest) {
             self.sample_nearest(st, level, l, layer, &p, dref, scale, obs)

@@ -77,7 +77,7 @@ impl PreparedTexture {
         dref: f32,
     ) -> [f32; 4] {
         let l = self.level_desc(st, level);
-        let layer = self.storage_layer(l, a);
+        let layer = self.storage_layer(st, l, a);
         let (w, h) = (l.width, l.height);
         let f = st.faults;
         let rect = self.target() == Target::Rect;

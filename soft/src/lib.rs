@@ -1,6 +1,6 @@
 //! shadowcheck's own texture unit with depth comparison ("shadow" sampling), one variant per
 //! specification ([`Spec`]): SGIX_shadow (+ ambient), ARB_shadow (+ ambient), EXT_shadow_funcs,
-//! ES 2.0 + EXT_shadow_samplers, GL 3.0–4.6 and ES 3.x.
+//! ES 2.0 + EXT_shadow_samplers, GL 3.0–4.6, ES 3.x, Vulkan and WebGPU (WGSL).
 //!
 //! It is written from the specification texts independently of the oracle (this crate depends on
 //! the model only), so the two check each other. It is an *implementation*: one answer per lookup,
@@ -15,13 +15,15 @@
 //! - [`Fault`] / [`Faults`]: seedable bugs for mutation testing ([`SoftUnit::with_fault`]).
 //!
 //! Module map: `storage` (texel conversion), `wrap` (Table 8.20), `lod` (§8.14.1/§8.14.3),
-//! `cube` (§8.13), `compare` (per-spec comparison rules), `sampler` (resolved state,
-//! completeness), `filter` (the lookup, PCF), `observe` (what a lookup reports), `layout` (RGBA
-//! per API path), `faults`.
+//! `cube` (§8.13), `compare` (per-spec comparison rules), `defined` (which state each spec
+//! has), `sampler` (resolved state, completeness), `filter` (the lookup, PCF), `observe` (what a
+//! lookup reports), `layout` (RGBA per API path), `webgpu` (what a WGSL lookup may ask for,
+//! WGSL's integer array index), `faults`.
 
 pub mod bench;
 pub mod compare;
 pub mod cube;
+mod defined;
 pub mod faults;
 pub mod filter;
 pub mod gather;
@@ -32,6 +34,7 @@ pub mod sampler;
 pub mod storage;
 pub mod tex_param;
 pub mod unitstate;
+pub mod webgpu;
 pub mod witness;
 pub mod wrap;
 
@@ -102,8 +105,9 @@ pub fn path_exists(spec: Spec, api: ApiPath) -> bool {
         Spec::Es2Ext => api == A::Es100Ext,
         Spec::Gles32 => api == A::Es300,
         Spec::Vulkan => api == A::Vulkan,
-        // WebGPU: not implemented by this unit yet.
-        Spec::WebGpu => false,
+        // WebGPU §9 Shader Modules, GPUShaderModuleDescriptor "code: The WGSL source code for
+        // the shader module": WGSL is the only path.
+        Spec::WebGpu => api == A::Wgsl,
     }
 }
 
@@ -120,8 +124,9 @@ pub fn path_targets(api: ApiPath, target: Target) -> bool {
         ApiPath::Es300 => matches!(target, T::T2d | T::T2dArray | T::Cube | T::CubeArray),
         // VkImageViewType has no rectangle textures.
         ApiPath::Vulkan => target != T::Rect,
-        // WebGPU: not implemented by this unit yet.
-        ApiPath::Wgsl => false,
+        // WGSL §17.7.10 textureSampleCompare: overloads for texture_depth_2d,
+        // texture_depth_2d_array, texture_depth_cube and texture_depth_cube_array only.
+        ApiPath::Wgsl => matches!(target, T::T2d | T::T2dArray | T::Cube | T::CubeArray),
     }
 }
 
@@ -148,16 +153,21 @@ impl SoftUnit {
             faults: Faults::NONE,
         }
     }
-    /// The same unit with `fault` switched on as well.
+    /// The same unit with `fault` switched on as well. A fault of another spec's variant
+    /// ([`Fault::spec`], e.g. a WebGPU-only fault on a GL unit) is not taken.
     pub fn with_fault(self, fault: Fault) -> SoftUnit {
         SoftUnit {
-            faults: self.faults.with(fault),
+            faults: self.faults.with(fault).for_spec(self.spec),
             ..self
         }
     }
-    /// The same unit with exactly the faults in `faults`.
+    /// The same unit with exactly the faults in `faults` that belong to its spec
+    /// ([`Faults::for_spec`]).
     pub fn with_faults(self, faults: Faults) -> SoftUnit {
-        SoftUnit { faults, ..self }
+        SoftUnit {
+            faults: faults.for_spec(self.spec),
+            ..self
+        }
     }
     pub fn spec(&self) -> Spec {
         self.spec
@@ -227,6 +237,8 @@ impl SoftUnit {
             Target::CubeArray => l.layer as f32,
             _ => 0.0,
         };
+        // WGSL's array_index is an integer (see `webgpu::array_index`).
+        let layer = webgpu::layer_coordinate(self.spec, target, layer);
         if target.is_cube() && cube::select(s, t, r, f).is_none() {
             return Err(SoftError::UndefinedResult(
                 "cube direction has no major axis (zero or NaN)",
@@ -256,14 +268,21 @@ impl SoftUnit {
         if !path_targets(api, target) {
             return Err(SoftError::Target { api, target });
         }
+        if api == ApiPath::Wgsl {
+            webgpu::check_lookup(self.spec, case)?;
+        }
         if case.lookup.offset != [0; 3]
             && !matches!(
                 api,
-                ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
+                ApiPath::Glsl130
+                    | ApiPath::GlslCore
+                    | ApiPath::Es300
+                    | ApiPath::Vulkan
+                    | ApiPath::Wgsl
             )
         {
             // GLSL 1.20, GLSL ES 1.00, fixed function and ARB programs have no offset lookups
-            // (SPIR-V has the Offset / ConstOffset image operands).
+            // (SPIR-V has the Offset / ConstOffset image operands, WGSL the `offset` overloads).
             return Err(SoftError::Undefined {
                 spec: self.spec,
                 what: "a texel offset on a path without *Offset lookup functions",
@@ -297,9 +316,10 @@ impl SoftUnit {
         Ok(())
     }
 
-    /// A shadow gather exists on GLSL 4.00+ and GLSL ES 3.10+ (`core`, `es300`), for 2D, 2D
-    /// array, cube, cube array and rectangle shadow samplers, with comparison enabled, never
-    /// projective; the *Offset(s) forms take no cube sampler; offsets within [-8, 7].
+    /// A shadow gather exists on GLSL 4.00+ and GLSL ES 3.10+ (`core`, `es300`), SPIR-V (`vk`)
+    /// and WGSL (`wgsl`, textureGatherCompare), for 2D, 2D array, cube, cube array and rectangle
+    /// shadow samplers, with comparison enabled, never projective; the *Offset(s) forms take no
+    /// cube sampler; offsets within [-8, 7].
     fn check_gather(&self, case: &Case, api: ApiPath, st: &SamplerState) -> Result<(), SoftError> {
         let undefined = |what| {
             Err(SoftError::Undefined {
@@ -307,9 +327,16 @@ impl SoftUnit {
                 what,
             })
         };
-        // SPIR-V: OpImageDrefGather (with ConstOffset / ConstOffsets).
-        if !matches!(api, ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan) {
+        // SPIR-V: OpImageDrefGather (with ConstOffset / ConstOffsets); WGSL §17.7.3
+        // textureGatherCompare.
+        if !matches!(
+            api,
+            ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan | ApiPath::Wgsl
+        ) {
             return undefined("textureGather on this API path");
+        }
+        if api == ApiPath::Wgsl {
+            webgpu::check_gather(self.spec, case)?;
         }
         let t = case.texture.target;
         if !matches!(

@@ -2,7 +2,7 @@
 //! comparison, clamping, fail value, wrap modes, border, level range and completeness.
 //!
 //! Everything that can be decided without the lookup's coordinates is decided here, so the
-//! per-lookup code only reads plain fields.
+//! per-lookup code only reads plain fields. Which state a spec defines at all is `defined`.
 
 use crate::compare::{self, ClampRule, CompareOp};
 use crate::faults::{Fault, Faults};
@@ -50,51 +50,8 @@ pub struct SamplerState {
     pub swizzled_dt: Option<f32>,
 }
 
-fn undefined(spec: Spec, what: &'static str) -> SoftError {
+pub(crate) fn undefined(spec: Spec, what: &'static str) -> SoftError {
     SoftError::Undefined { spec, what }
-}
-
-fn is_es(spec: Spec) -> bool {
-    matches!(spec, Spec::Es2Ext | Spec::Gles32)
-}
-
-/// Wrap modes the spec accepts (GL 4.6 Table 8.17, ES 3.2 Table 8.19, ES 2.0 Table 3.10). What a
-/// rectangle texture rejects besides is [`crate::unitstate::rect_rejects`].
-fn check_wrap(spec: Spec, w: Wrap) -> Result<(), SoftError> {
-    let ok = match spec {
-        Spec::Es2Ext => matches!(w, Wrap::Repeat | Wrap::ClampToEdge | Wrap::MirroredRepeat),
-        Spec::Gles32 => !matches!(w, Wrap::MirrorClampToEdge | Wrap::Clamp),
-        // VkSamplerAddressMode: REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER,
-        // MIRROR_CLAMP_TO_EDGE; GL's legacy CLAMP has no equivalent.
-        Spec::Vulkan => w != Wrap::Clamp,
-        _ => true,
-    };
-    if !ok {
-        return Err(SoftError::Wrap { spec, wrap: w });
-    }
-    Ok(())
-}
-
-/// Formats each spec has (ES 3.2 Table 8.11 has no DEPTH_COMPONENT32; ES 2.0 with
-/// OES_depth_texture / OES_packed_depth_stencil has no floating-point depth).
-fn check_format(spec: Spec, f: Format) -> Result<(), SoftError> {
-    let ok = match spec {
-        Spec::Gles32 => f != Format::D32,
-        Spec::Es2Ext => !matches!(f, Format::D32 | Format::D32f | Format::D32fS8),
-        // Vulkan depth formats: D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, D24_UNORM_S8_UINT,
-        // D32_SFLOAT_S8_UINT. No 32-bit UNORM depth, no unsized format, and a Dref instruction
-        // needs a depth aspect.
-        Spec::Vulkan => matches!(
-            f,
-            Format::D16 | Format::D24 | Format::D32f | Format::D24S8 | Format::D32fS8
-        ),
-        _ => true,
-    };
-    if ok {
-        Ok(())
-    } else {
-        Err(SoftError::Format { spec, format: f })
-    }
 }
 
 /// Filters that need only one texel: MAG NEAREST with MIN NEAREST or NEAREST_MIPMAP_NEAREST.
@@ -125,7 +82,7 @@ impl SamplerState {
         faults: Faults,
     ) -> Result<SamplerState, SoftError> {
         let format = tex.format();
-        let sampler_object_incomplete = check_state(spec, s, source, tex, faults)?;
+        let sampler_object_incomplete = crate::defined::check_state(spec, s, source, tex, faults)?;
         let (kind, stencil_mode) = texel_kind(spec, s, tex, faults)?;
         let compare_on = s.compare_mode == CompareMode::Compare;
         // Faulty only: the stencil index compared with Dref ([`Fault::StencilCompared`]).
@@ -157,6 +114,14 @@ impl SamplerState {
                 "a texture whose mip chain GL would find incomplete (no such Vulkan image view)",
             ));
         }
+        if spec == Spec::WebGpu && !complete {
+            // A GPUTextureView has baseMipLevel and mipLevelCount (WebGPU §6.2.1), every level
+            // of a GPUTexture exists from creation: no WebGPU view has a short chain.
+            return Err(undefined(
+                spec,
+                "a texture whose mip chain GL would find incomplete (no such WebGPU view)",
+            ));
+        }
 
         Ok(SamplerState {
             kind,
@@ -182,87 +147,6 @@ impl SamplerState {
             stencil_compare,
             swizzled_dt: crate::unitstate::pre_compare_dt(s, faults),
         })
-    }
-}
-
-/// Refuses state `spec` does not define. `Ok(true)`: a bound sampler object holds state the
-/// rectangle texture rejects, so the texture counts as incomplete (see [`rect_rule`]).
-fn check_state(
-    spec: Spec,
-    s: &Sampler,
-    source: StateSource,
-    tex: &PreparedTexture,
-    faults: Faults,
-) -> Result<bool, SoftError> {
-    check_format(spec, tex.format())?;
-    // Only s and t address a rectangle; wrap_r is checked against the spec's enums only.
-    check_wrap(spec, s.wrap_s)?;
-    check_wrap(spec, s.wrap_t)?;
-    check_wrap(spec, s.wrap_r)?;
-    if !matches!(s.mag_filter, Filter::Nearest | Filter::Linear) {
-        return Err(undefined(spec, "a mipmap TEXTURE_MAG_FILTER"));
-    }
-    let sampler_object_incomplete = rect_rule(spec, s, source, tex, faults)?;
-    if is_es(spec) && s.lod_bias != 0.0 {
-        return Err(undefined(spec, "TEXTURE_LOD_BIAS (not in OpenGL ES)"));
-    }
-    if spec == Spec::Es2Ext {
-        // ES 2.0 has no TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD.
-        if tex.base_level != 0 || s.max_level.is_some() {
-            return Err(undefined(
-                spec,
-                "TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL (not in OpenGL ES 2.0)",
-            ));
-        }
-        if s.min_lod != -1000.0 || s.max_lod != 1000.0 {
-            return Err(undefined(
-                spec,
-                "TEXTURE_MIN_LOD / TEXTURE_MAX_LOD (not in OpenGL ES 2.0)",
-            ));
-        }
-    }
-    if spec == Spec::Vulkan && s.compare_mode != CompareMode::Compare {
-        return Err(undefined(
-            spec,
-            "a Dref lookup through a sampler without compareEnable",
-        ));
-    }
-    if s.min_lod > s.max_lod {
-        return Err(SoftError::UndefinedResult(
-            "TEXTURE_MIN_LOD > TEXTURE_MAX_LOD makes λ undefined (eq. 8.9)",
-        ));
-    }
-    Ok(sampler_object_incomplete)
-}
-
-/// State a rectangle texture rejects (GL 4.6 §8.10, `rect_rejects`). Set on the texture it is an
-/// INVALID_ENUM error: the case cannot be set up (refused). Held by a bound sampler object it is
-/// no error but, GL 4.6 §8.2: "If state is present in a sampler object bound to a texture unit
-/// that would have been rejected by a call to TexParameter* for the texture bound to that unit,
-/// the behavior of the implementation is as if the texture were incomplete. For example, if
-/// TEXTURE_WRAP_S or TEXTURE_WRAP_T is set to REPEAT, MIRRORED_REPEAT, or MIRROR_CLAMP_TO_EDGE on
-/// the sampler object bound to a texture unit and the texture bound to that unit is a rectangle
-/// texture, the texture will be considered incomplete." `Ok(true)`: incomplete so.
-fn rect_rule(
-    spec: Spec,
-    s: &Sampler,
-    source: StateSource,
-    tex: &PreparedTexture,
-    faults: Faults,
-) -> Result<bool, SoftError> {
-    let rect_rejected = if tex.target().is_rect() {
-        crate::unitstate::rect_rejects(s)
-    } else {
-        None
-    };
-    match (rect_rejected, source) {
-        (None, _) => Ok(false),
-        (Some(Some(wrap)), StateSource::Texture) => Err(SoftError::Wrap { spec, wrap }),
-        (Some(None), StateSource::Texture) => Err(undefined(
-            spec,
-            "a mipmap TEXTURE_MIN_FILTER on a rectangle texture (§8.10)",
-        )),
-        (Some(_), StateSource::SamplerObject) => Ok(!faults.has(Fault::SamplerObjectRectComplete)),
     }
 }
 

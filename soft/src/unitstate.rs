@@ -5,7 +5,8 @@
 //!   for that unit is taken from the sampler object"); DEPTH_TEXTURE_MODE,
 //!   DEPTH_STENCIL_TEXTURE_MODE, the swizzle, TEXTURE_MAX_LEVEL and the fail value stay on the
 //!   texture (§8.2: not sampler state);
-//! - cube maps are seamless in ES 3.x; in GL when the case enables TEXTURE_CUBE_MAP_SEAMLESS;
+//! - cube maps are seamless in ES 3.x, Vulkan and WebGPU; in GL when the case enables
+//!   TEXTURE_CUBE_MAP_SEAMLESS;
 //! - a sampler object holding state that TexParameter would reject for the bound texture (a
 //!   rectangle texture: wrap S/T REPEAT, MIRRORED_REPEAT, MIRROR_CLAMP_TO_EDGE, or a mipmap min
 //!   filter) makes the texture incomplete (§8.2), while the same state set on the texture itself
@@ -114,6 +115,10 @@ pub fn seamless(spec: Spec, s: &Sampler, faults: Faults) -> bool {
         // face; there is no non-seamless mode without VK_EXT_non_seamless_cube_map.
         Spec::Gles32 => true,
         Spec::Vulkan => !faults.has(Fault::VkCubeEdgePerFace),
+        // WebGPU §6.2.1, GPUTextureViewDimension "cube": "Sampling is done seamlessly across the
+        // faces of the cubemap"; a "cube-array" view is "a packed array of n cubemaps, each with
+        // 6 array layers behaving like one "cube" view".
+        Spec::WebGpu => !faults.has(Fault::WgpuCubePerFace),
         Spec::Gl46 if !faults.has(Fault::SeamlessIgnored) => s.seamless == Some(true),
         _ => false,
     }

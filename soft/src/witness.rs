@@ -239,6 +239,42 @@ fn vulkan(mut c: Case) -> Case {
     c
 }
 
+/// `c` as a WebGPU lookup: the `wgsl` path, no GL-only state (cube views are seamless).
+fn webgpu(mut c: Case) -> Case {
+    c.spec = Spec::WebGpu;
+    c.api = vec![ApiPath::Wgsl];
+    c.sampler.seamless = None;
+    c
+}
+
+/// A 1x1x3 D16 array [Dt 0, 0, 1], array_index −1, LEQUAL Dref ½: clamped to layer 0 (fails,
+/// r = 0, WGSL §17.7.10); wrapped modulo 3 it reads layer 2 (passes, r = 1).
+fn array_index_minus_one() -> Case {
+    let mut c = layer_one_and_a_half();
+    c.lookup.coord[2] = -1.0;
+    webgpu(c)
+}
+
+/// A cube array of two cubes of 1x1 faces, cube 1 all Dt 1 and cube 0 all Dt 0, direction +X,
+/// array_index 1, LEQUAL Dref ½: cube 1's +X (layer 6) passes, r = 1; counted in layers, index
+/// 1 + face 0 reads cube 0's −X (layer 1), which fails.
+fn cube_array_index_one() -> Case {
+    let mut texels = vec![0; 6];
+    texels.extend([65535; 6]);
+    let mut c = cube(vec![]);
+    c.texture.target = Target::CubeArray;
+    c.texture.levels[0] = Level {
+        width: 1,
+        height: 1,
+        layers: 12,
+        depth: Texels::Unorm(texels),
+        stencil: None,
+    };
+    c.lookup.coord = [1.0, 0.0, 0.0, 1.0];
+    c.lookup.layer = 1.0;
+    webgpu(c)
+}
+
 /// `mips` with NEAREST_MIPMAP_NEAREST at λ = 0 and TEXTURE_LOD_BIAS 1: level 1 passes.
 fn mips_lod_bias() -> Case {
     let mut c = mips(Filter::NearestMipmapNearest, 0.0);
@@ -408,6 +444,14 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         Fault::CubeNegYFlipped => cube_neg_y(),
         Fault::SeamlessIgnored => seamless_edge(),
         Fault::VkCubeEdgePerFace => vulkan(seamless_edge()),
+        // WebGPU (GPUCompareFunction, WGSL array_index, cube views, cube array index).
+        // "less": depth_ref 0.25 < texel 0.75 passes (r = 1); texel < depth_ref fails.
+        Fault::WgpuCompareOperandsSwapped => {
+            webgpu(with_dref(gl(vec![d16(0.75)], 1, C::Less), 0.25))
+        }
+        Fault::WgpuArrayIndexWrapped => array_index_minus_one(),
+        Fault::WgpuCubePerFace => webgpu(seamless_edge()),
+        Fault::WgpuCubeArrayIndexAsLayer => cube_array_index_one(),
         Fault::BorderIgnored | Fault::BorderDepthFromAlpha => {
             border(Format::D16, C::Lequal, [1.0, 0.0, 0.0, 0.0], 0.5)
         }
@@ -509,5 +553,10 @@ mod tests {
         assert_eq!(r(Fault::GatherSwizzlesVector), [0.0; 4]);
         assert_eq!(r(Fault::CompatSwizzleDropped), [1.0, 1.0, 0.0, 0.0]);
         assert_eq!(r(Fault::SamplerObjectRectComplete), [0.0, 0.0, 0.0, 1.0]);
+        // WebGPU (§7.1.1 GPUCompareFunction, WGSL §17.7.10 array_index clamp, §6.2.1 cube views).
+        assert_eq!(r(Fault::WgpuCompareOperandsSwapped), [1.0, 0.0, 0.0, 1.0]);
+        assert_eq!(r(Fault::WgpuArrayIndexWrapped)[0], 0.0);
+        assert!((r(Fault::WgpuCubePerFace)[0] - 0.4).abs() < 1e-6);
+        assert_eq!(r(Fault::WgpuCubeArrayIndexAsLayer)[0], 1.0);
     }
 }

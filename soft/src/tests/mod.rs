@@ -7,6 +7,7 @@ use shadowcheck_model::*;
 mod addressing;
 mod comparison;
 mod unit_state;
+mod webgpu;
 
 /// A 2D case on `spec` with one level of `w`×`h` unorm texels.
 pub(super) fn case2d(
@@ -23,6 +24,7 @@ pub(super) fn case2d(
         Spec::Gles32 => ApiPath::Es300,
         Spec::Gl46 => ApiPath::GlslCore,
         Spec::Vulkan => ApiPath::Vulkan,
+        Spec::WebGpu => ApiPath::Wgsl,
         _ => ApiPath::FixedFunction,
     };
     let depth = if format.is_fixed_point() {
