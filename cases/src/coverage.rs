@@ -88,7 +88,7 @@ impl GatherFn {
             target,
             Target::T2d | Target::T2dArray | Target::Cube | Target::CubeArray
         ) || (target == Target::Rect && api == ApiPath::GlslCore);
-        // WGSL §17.7: textureGatherCompare takes one const offset; no textureGatherOffsets.
+        // WGSL texture built-in functions: textureGatherCompare takes one const offset; no textureGatherOffsets.
         let fn_ok = !(api == ApiPath::Wgsl && self == GatherFn::Offsets);
         targets_ok && fn_ok && (self == GatherFn::Gather || !target.is_cube())
     }

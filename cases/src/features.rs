@@ -89,13 +89,16 @@ pub const FEATURES: &[Feature] = &[
             is_layer_tie(c)
                 && (within_linear(c.sampler.min_filter) || c.sampler.min_filter.is_mipmap())
         },
-        allowed: |d| geometry(d) && d.targets.iter().any(|t| t.is_array()),
+        // WebGPU's array index is an integer (WGSL textureSampleCompare): no tie to round.
+        allowed: |d| {
+            geometry(d) && d.targets.iter().any(|t| t.is_array()) && d.spec != Spec::WebGpu
+        },
     },
     Feature {
         name: "projective lookup with LINEAR or a mipmapped filter",
         cite: "GL 4.6 §8.14.1, §8.23.1",
         applies: |c| c.lookup.projective && c.sampler.min_filter != Filter::Nearest,
-        // WGSL §17.7 has no projective texture built-in.
+        // WGSL has no projective texture built-in.
         allowed: |d| geometry(d) && d.spec != Spec::WebGpu,
     },
     Feature {

@@ -338,7 +338,7 @@ fn validate_sweep(case: &Case) -> Result<(), ModelError> {
 
 /// Smallest MIN_PROGRAM_TEXEL_OFFSET and largest MAX_PROGRAM_TEXEL_OFFSET every GL 3.0+ / ES 3.0+
 /// implementation supports (GL 4.6 Table 23.55, ES 3.2 Table 21.41: -8 and 7; Vulkan 1.3's
-/// required limits minTexelOffset and maxTexelOffset are the same, and WGSL §17.7 makes any other
+/// required limits minTexelOffset and maxTexelOffset are the same, and WGSL makes any other
 /// offset a shader-creation error); outside them the
 /// lookup is undefined (GL 4.6 §8.14.2), so a fixture may not ask for it.
 pub const TEXEL_OFFSET_RANGE: std::ops::RangeInclusive<i32> = -8..=7;

@@ -226,7 +226,7 @@ fn check_defined(case: &Case, rules: &Rules) -> Result<(), OracleError> {
         return Err(not_applicable(
             case,
             rules,
-            "WGSL §17.7 has no projective texture built-in".to_string(),
+            "WGSL has no projective texture built-in".to_string(),
         ));
     }
     if matches!(rules.spec, Spec::Sgix | Spec::SgixAmbient) {
@@ -418,8 +418,7 @@ fn check_gather(case: &Case, rules: &Rules) -> Result<(), OracleError> {
     }
     if case.api.contains(&ApiPath::Wgsl) && l.gather.as_ref().is_some_and(|g| g.offsets.is_some()) {
         return na(
-            "WGSL §17.7 has textureGatherCompare with one const offset, no textureGatherOffsets"
-                .into(),
+            "WGSL has textureGatherCompare with one const offset, no textureGatherOffsets".into(),
         );
     }
     if !matches!(

@@ -37,7 +37,7 @@ pub const ALL: &[Contradiction] = &[
         title: "Clamping of Dt and R / Dref",
         defended: "Per document: SGIX and WebGPU unstated (both accepted, literal = unclamped); ARB_shadow / GL ≤ 2.1: R clamped, Dt in [0,1]; GL 3.0+ / ES 3.x / ARB_depth_buffer_float rev 7 / Vulkan 1.3: clamped only for fixed-point depth; EXT_shadow_samplers: always clamped.",
         other: "The reading of the neighbouring documents (e.g. GL 4.6 D32F under ARB_shadow's always-clamp, or SGIX with NVIDIA's clamp).",
-        sources: "SGIX_shadow NVIDIA Implementation Details; ARB_shadow §3.8.13.1; ARB_depth_buffer_float; GL 4.6 §8.23.1; EXT_shadow_samplers §3.7.14.1; Vulkan 1.3 §16 Depth Compare Operation; WGSL §17.7 textureSampleCompare (depth_ref)",
+        sources: "SGIX_shadow NVIDIA Implementation Details; ARB_shadow §3.8.13.1; ARB_depth_buffer_float; GL 4.6 §8.23.1; EXT_shadow_samplers §3.7.14.1; Vulkan 1.3 §16 Depth Compare Operation; WGSL textureSampleCompare (depth_ref)",
     },
     Contradiction {
         id: "filtering",
@@ -105,16 +105,16 @@ pub const ALL: &[Contradiction] = &[
     Contradiction {
         id: "webgpu-depth24plus",
         title: "What a WebGPU depth24plus texel is",
-        defended: "WebGPU §26.1 (depthPlus): \"The depth component of the depth24plus and depth24plus-stencil8 formats may be implemented as either a 24-bit depth value or a depth32float value.\" The grid's texels are 24-bit UNORM values k / (2^24 − 1), written through frag_depth; the oracle's Dt is that value, and its f32 rounding (the depth32float reading) lies within the strict tier's f32 rounding of the comparison.",
+        defended: "WebGPU, Texture Formats (depth24plus): \"The depth component of the depth24plus and depth24plus-stencil8 formats may be implemented as either a 24-bit depth value or a depth32float value.\" The grid's texels are 24-bit UNORM values k / (2^24 − 1), written through frag_depth; the oracle's Dt is that value, and its f32 rounding (the depth32float reading) lies within the strict tier's f32 rounding of the comparison.",
         other: "The depth32float implementation: the texel is the f32 written, and the reference is not clamped where a UNORM format would clamp it (both accepted: contradiction `ref-clamp`).",
-        sources: "WebGPU §26.1 Texture Formats (depth24plus), §26.1.2 Copying Depth/Stencil Textures",
+        sources: "WebGPU, Texture Formats (depth24plus); Copying Depth/Stencil Textures",
     },
     Contradiction {
         id: "webgpu-filter",
         title: "WebGPU filtered comparison",
-        defended: "WebGPU §7.1.2: \"After comparison, if texture filtering is enabled, the filtering step occurs, so that comparison results are mixed together resulting in values in the range [0, 1]. Filtering should behave as usual\": the weighted average of the 0/1 results is the spec value, accepted strictly.",
+        defended: "WebGPU, Samplers (GPUCompareFunction): \"After comparison, if texture filtering is enabled, the filtering step occurs, so that comparison results are mixed together resulting in values in the range [0, 1]. Filtering should behave as usual\": the weighted average of the 0/1 results is the spec value, accepted strictly.",
         other: "\"however it may be computed with lower precision or not mix results at all\" (and GPUSamplerDescriptor.compare's note: \"the sampling results will be implementation-dependent and may differ from the normal filtering rules\"): any value in [0,1] for a footprint with passes and fails is accepted by quality (Warn: the \"should\" not met).",
-        sources: "WebGPU §7.1.1 GPUSamplerDescriptor (compare), §7.1.2 GPUCompareFunction",
+        sources: "WebGPU Samplers: GPUSamplerDescriptor (compare), GPUCompareFunction",
     },
     Contradiction {
         id: "mirror-parens",

@@ -135,11 +135,11 @@ pub fn layout(
                     [R, Unused, Unused, Unused],
                     "Vulkan 1.3 §16 Depth Compare Operation (r replaces D); OpImageSampleDref* returns a scalar",
                 ),
-                // WGSL §17.7 textureSampleCompare(Level): "Returns: A value in the range
+                // WGSL textureSampleCompare(Level): "Returns: A value in the range
                 // [0.0..1.0]", an f32.
                 (ApiPath::Wgsl, _) => (
                     [R, Unused, Unused, Unused],
-                    "WGSL §17.7 textureSampleCompare / textureSampleCompareLevel return an f32",
+                    "WGSL textureSampleCompare / textureSampleCompareLevel return an f32",
                 ),
                 // A non-shadow sampler on a depth texture: Cb = (Dt,0,0,1) (§11.1.3.5, Table 15.1).
                 (_, Kind::Depth) => (

@@ -1,9 +1,9 @@
 //! WebGPU with WGSL: a depth texture (`texture_depth_*`) sampled through a comparison sampler
 //! (`sampler_comparison`, a `GPUSampler` created with `GPUSamplerDescriptor.compare`) by
 //! `textureSampleCompare`, `textureSampleCompareLevel` or `textureGatherCompare`. Sources: the
-//! WebGPU specification (§7.1 "GPUSampler": GPUSamplerDescriptor, GPUAddressMode, GPUFilterMode,
-//! GPUCompareFunction; §6.1 "GPUTextureViewDimension"; §26.1 "Texture Formats", "depth24plus")
-//! and the WGSL specification (§17.7 "Texture Built-in Functions": textureGatherCompare,
+//! WebGPU specification (section "Samplers": GPUSamplerDescriptor, GPUAddressMode, GPUFilterMode,
+//! GPUCompareFunction; "Textures and Texture Views": GPUTextureViewDimension; "Texture Formats":
+//! depth24plus) and the WGSL specification ("Texture Built-in Functions": textureGatherCompare,
 //! textureSampleCompare, textureSampleCompareLevel), editors' drafts of 2026-08.
 //!
 //! Differences from Vulkan 1.3 that matter here: the reference is never said to be clamped (both
@@ -20,7 +20,7 @@ use crate::state::{Ctx, Param};
 use shadowcheck_model::{ApiPath, CompareFunc, Format, Spec, Target, Wrap};
 use std::cmp::Ordering::{self, *};
 
-/// WebGPU §7.1.2 GPUCompareFunction: "the `depth_ref` is compared to the fetched texel value, and
+/// WebGPU, Samplers: GPUCompareFunction: "the `depth_ref` is compared to the fetched texel value, and
 /// the result of this comparison test is generated (1.0f for pass, or 0.0f for fail)"; the
 /// "provided value" is `depth_ref` (Dref), the "sampled value" the texel (Dt): `ord` is Dref
 /// compared with Dt.
@@ -48,33 +48,33 @@ pub fn table(func: CompareFunc, ord: Option<Ordering>) -> Result<Option<bool>, N
 }
 
 /// The sampling state is a sampler's descriptor, not TexParameter calls.
-pub const SAMPLER_CREATE: &str = "WebGPU §7.1.1 GPUSamplerDescriptor: the sampling state is the descriptor of createSampler() (addressModeU/V/W, magFilter, minFilter, mipmapFilter, lodMinClamp, lodMaxClamp, compare) and the texture view's mip range; a descriptor outside the enums, or with lodMinClamp < 0 or lodMaxClamp < lodMinClamp, is a validation error, never sent";
+pub const SAMPLER_CREATE: &str = "WebGPU, Samplers: GPUSamplerDescriptor: the sampling state is the descriptor of createSampler() (addressModeU/V/W, magFilter, minFilter, mipmapFilter, lodMinClamp, lodMaxClamp, compare) and the texture view's mip range; a descriptor outside the enums, or with lodMinClamp < 0 or lodMaxClamp < lodMinClamp, is a validation error, never sent";
 
 /// The array index rule: an integer, clamped.
-pub const ARRAY_INDEX: &str = "WGSL §17.7 textureSampleCompare / textureGatherCompare: \"array_index: The 0-based texture array index to sample. This value will be clamped to the range [0, textureNumLayers(t) - 1]\" (an i32 or u32: the grid's layer coordinates are integers, which every rounding rule leaves as they are)";
+pub const ARRAY_INDEX: &str = "WGSL textureSampleCompare / textureGatherCompare: \"array_index: The 0-based texture array index to sample. This value will be clamped to the range [0, textureNumLayers(t) - 1]\" (an i32 or u32: the grid's layer coordinates are integers, which every rounding rule leaves as they are)";
 
 /// The filtered comparison: "should" filter as usual, "may" not.
-pub const FILTERING: &str = "WebGPU §7.1.2: \"After comparison, if texture filtering is enabled, the filtering step occurs, so that comparison results are mixed together resulting in values in the range [0, 1]. Filtering should behave as usual, however it may be computed with lower precision or not mix results at all.\"";
+pub const FILTERING: &str = "WebGPU, Samplers (GPUCompareFunction): \"After comparison, if texture filtering is enabled, the filtering step occurs, so that comparison results are mixed together resulting in values in the range [0, 1]. Filtering should behave as usual, however it may be computed with lower precision or not mix results at all.\"";
 
 pub fn rules() -> Rules {
     Rules {
         spec: Spec::WebGpu,
         doc: "WebGPU",
         table: table as CompareTable,
-        table_cite: "WebGPU §7.1.2 GPUCompareFunction",
+        table_cite: "WebGPU, Samplers: GPUCompareFunction",
         // No sentence of WebGPU or WGSL clamps depth_ref ("The reference value to compare the
         // sampled depth value against"), and the APIs under it differ (Vulkan clamps Dref for
         // UNORM formats only): the literal reading (no clamp) is the spec value, a clamp to
         // [0,1] is accepted too (contradiction `ref-clamp`).
         ref_clamp: RefClamp::Unstated,
-        clamp_cite: "WGSL §17.7 textureSampleCompare: \"depth_ref: The reference value to compare the sampled depth value against\" (no clamp stated)",
+        clamp_cite: "WGSL textureSampleCompare: \"depth_ref: The reference value to compare the sampled depth value against\" (no clamp stated)",
         // GPUAddressMode has no clamp-to-border: the grid sends no border case.
         border: BorderRule::None,
         filtering: Filtering::ImplementationDependent,
         filter_cite: FILTERING,
-        incomplete: Incomplete::NotApplicable("WebGPU has no incomplete textures: a texture view has mipLevelCount levels (§6.2 createView) and a sampler needs no texture state; a case GL calls incomplete describes no WebGPU texture"),
+        incomplete: Incomplete::NotApplicable("WebGPU has no incomplete textures: a texture view has mipLevelCount levels (WebGPU createView) and a sampler needs no texture state; a case GL calls incomplete describes no WebGPU texture"),
         es_depth_completeness: false,
-        // §6.1.1 GPUTextureViewDimension "cube": "Sampling is done seamlessly across the faces
+        // WebGPU GPUTextureViewDimension "cube": "Sampling is done seamlessly across the faces
         // of the cubemap."
         seamless_cube: true,
         seamless_enable: None,
@@ -112,7 +112,7 @@ pub fn rules() -> Rules {
         func_pname: 0,
         params,
         no_lod_state: None,
-        no_lookup_bias: Some("WGSL §17.7: textureSampleCompare, textureSampleCompareLevel and textureGatherCompare take no bias argument"),
+        no_lookup_bias: Some("WGSL texture built-in functions: textureSampleCompare, textureSampleCompareLevel and textureGatherCompare take no bias argument"),
         fixed_depth_mode: None,
         colour_luminance: false,
         colour_note: None,

@@ -54,7 +54,7 @@ pub fn resolve_op(spec: Spec, func: CompareFunc, faults: Faults) -> Result<Compa
         // Vulkan: VkSamplerCreateInfo::compareOp is a VkCompareOp, NEVER .. ALWAYS; "reference"
         // is Dref, "test" is Dtex, so LESS passes when Dref < Dtex as in GL's table.
         Spec::Vulkan => !matches!(func, C::LequalRSgix | C::GequalRSgix),
-        // WebGPU §7.1.1 GPUSamplerDescriptor: "enum GPUCompareFunction { "never", "less",
+        // WebGPU, Samplers: GPUSamplerDescriptor: "enum GPUCompareFunction { "never", "less",
         // "equal", "less-equal", "greater", "not-equal", "greater-equal", "always" }" — the
         // eight, and no SGIX operator. Which operand is which: see `webgpu_op` below.
         Spec::WebGpu => !matches!(func, C::LequalRSgix | C::GequalRSgix),
@@ -108,10 +108,10 @@ pub fn resolve_op(spec: Spec, func: CompareFunc, faults: Faults) -> Result<Compa
     Ok(op)
 }
 
-/// WebGPU §7.1.1 GPUSamplerDescriptor: "If a comparison sampler is used in a shader, the
+/// WebGPU, Samplers: GPUSamplerDescriptor: "If a comparison sampler is used in a shader, the
 /// `depth_ref` is compared to the fetched texel value", and e.g. for "less": "A provided value
 /// passes the comparison test if it is less than the sampled value." The provided value is
-/// depth_ref (WGSL §17.7.10 textureSampleCompare: "The reference value to compare the sampled
+/// depth_ref (WGSL textureSampleCompare: "The reference value to compare the sampled
 /// depth value against"), the sampled value the texel: "less" passes when depth_ref < texel,
 /// which is [`CompareOp::Less`] (Dref < Dt), and likewise for the other six ("equal": "equal
 /// to the sampled value", "less-equal", "greater", "not-equal", "greater-equal"; "never":
@@ -149,13 +149,13 @@ pub fn clamp_rule(spec: Spec, format: Format, faults: Faults) -> ClampRule {
         // operation." Nothing is said of Dtex: a UNORM texel is in [0,1] by its encoding, and a
         // D32_SFLOAT one is used as stored.
         Spec::Vulkan => (fixed, false),
-        // WebGPU §7.1.1 GPUSamplerDescriptor (GPUCompareFunction) and WGSL §17.7.10
+        // WebGPU, Samplers: GPUSamplerDescriptor (GPUCompareFunction) and WGSL
         // textureSampleCompare ("depth_ref: The reference value to compare the sampled depth
         // value against") say nothing of clamping depth_ref, for any format. Chosen: the literal
         // reading, no clamp (the other reading, Vulkan's clamp for unorm formats, is what D3D12
         // and Vulkan backends may do; a grid accepts both). The texel is used as stored: a
         // depth16unorm / 24-bit texel lies in [0, 1] by its encoding, and a depth32float one
-        // is written by a render pass (WebGPU §23.2.7 Output Merging: "The depth input to this
+        // is written by a render pass (WebGPU, Output Merging: "The depth input to this
         // stage, if any, is clamped to the current [[viewport]] depth range").
         Spec::WebGpu => (false, false),
         // GL 4.6 §8.23.1, ES 3.2 §8.20.1, ARB_depth_buffer_float rev 7 (which also amends the
@@ -312,7 +312,7 @@ mod tests {
 
     #[test]
     fn webgpu_provided_value_against_sampled_value() {
-        // WebGPU §7.1.1: "less": "A provided value passes the comparison test if it is less than
+        // WebGPU, Samplers: GPUSamplerDescriptor: "less": "A provided value passes the comparison test if it is less than
         // the sampled value": depth_ref 0.25 < texel 0.75 passes, depth_ref 0.75 does not.
         let op = resolve_op(Spec::WebGpu, CompareFunc::Less, F).unwrap();
         assert_eq!(op, O::Less);

@@ -22,7 +22,7 @@ fn check_wrap(spec: Spec, w: Wrap) -> Result<(), SoftError> {
         // VkSamplerAddressMode: REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER,
         // MIRROR_CLAMP_TO_EDGE; GL's legacy CLAMP has no equivalent.
         Spec::Vulkan => w != Wrap::Clamp,
-        // WebGPU §7.1.1 GPUSamplerDescriptor: "enum GPUAddressMode { "clamp-to-edge", "repeat",
+        // WebGPU, Samplers: GPUSamplerDescriptor: "enum GPUAddressMode { "clamp-to-edge", "repeat",
         // "mirror-repeat" }": no border, no mirror-once, no legacy CLAMP. "clamp-to-edge":
         // "Texture coordinates are clamped between 0.0 and 1.0, inclusive" (a texel index
         // clamped into the image, as CLAMP_TO_EDGE); "repeat": "Texture coordinates wrap to the
@@ -50,7 +50,7 @@ fn check_format(spec: Spec, f: Format) -> Result<(), SoftError> {
             f,
             Format::D16 | Format::D24 | Format::D32f | Format::D24S8 | Format::D32fS8
         ),
-        // WebGPU §6.3 Texture Formats: the depth formats "depth16unorm", "depth24plus",
+        // WebGPU, Texture Formats: the depth formats "depth16unorm", "depth24plus",
         // "depth24plus-stencil8", "depth32float" and "depth32float-stencil8"; a texture_depth_*
         // binding needs one of them. depth24plus "may be implemented as either a 24-bit depth
         // value or a "depth32float" value": chosen, the 24-bit reading (the case gives 24-bit
@@ -72,7 +72,7 @@ fn check_format(spec: Spec, f: Format) -> Result<(), SoftError> {
 fn check_webgpu(s: &Sampler) -> Result<(), SoftError> {
     let spec = Spec::WebGpu;
     if s.compare_mode != CompareMode::Compare {
-        // WGSL §17.7.10 textureSampleCompare takes `s: sampler_comparison`; WebGPU §7.1.1
+        // WGSL textureSampleCompare takes `s: sampler_comparison`; WebGPU, Samplers: GPUSamplerDescriptor
         // "compare: When provided the sampler will be a comparison sampler with the specified
         // GPUCompareFunction". A depth read without comparison is another built-in.
         return Err(undefined(
@@ -81,7 +81,7 @@ fn check_webgpu(s: &Sampler) -> Result<(), SoftError> {
         ));
     }
     if s.lod_bias != 0.0 {
-        // WebGPU §7.1.1: GPUSamplerDescriptor has addressMode*, magFilter, minFilter,
+        // WebGPU, Samplers: GPUSamplerDescriptor: GPUSamplerDescriptor has addressMode*, magFilter, minFilter,
         // mipmapFilter, lodMinClamp, lodMaxClamp, compare and maxAnisotropy: no LOD bias.
         return Err(undefined(
             spec,
@@ -89,13 +89,13 @@ fn check_webgpu(s: &Sampler) -> Result<(), SoftError> {
         ));
     }
     // lodMinClamp / lodMaxClamp are min_lod / max_lod ("the minimum and maximum levels of
-    // detail, respectively, used internally when sampling a texture", WebGPU §7.1.1), clamping λ
-    // as in `lod`. WebGPU §7.1.2 requires lodMinClamp ≥ 0; the model's unset value (−1000)
+    // detail, respectively, used internally when sampling a texture", WebGPU, Samplers: GPUSamplerDescriptor), clamping λ
+    // as in `lod`. WebGPU, Samplers: requires lodMinClamp ≥ 0; the model's unset value (−1000)
     // stands for the default 0, which gives the same result (λ ≤ 0 selects the base level by the
     // magnification filter either way). "lodMaxClamp ≥ lodMinClamp" is checked with the other
     // specs' rule below. TEXTURE_BASE_LEVEL / TEXTURE_MAX_LEVEL stand for the view's
-    // baseMipLevel and its last level, baseMipLevel + mipLevelCount − 1 (WebGPU §6.2.1): λ and
-    // the level range follow GL 4.6 §8.14 as for the other specs (WebGPU §7.1.1 refers to
+    // baseMipLevel and its last level, baseMipLevel + mipLevelCount − 1 (WebGPU createView.1): λ and
+    // the level range follow GL 4.6 §8.14 as for the other specs (WebGPU, Samplers: GPUSamplerDescriptor refers to
     // Vulkan's "Scale Factor Operation, LOD Operation and Image Level Selection" for "an
     // example of how implicit LODs may be calculated").
     Ok(())

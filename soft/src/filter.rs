@@ -167,8 +167,8 @@ impl PreparedTexture {
     }
 
     /// The storage layer for the address within level `l`: the layer (cube index) clamped to
-    /// [0, n − 1] (GL 4.6 §8.14.2; WGSL §17.7.10 "This value will be clamped to the range
-    /// [0, textureNumLayers(t) - 1]", where §17.7.5 textureNumLayers "If the texture is based on
+    /// [0, n − 1] (GL 4.6 §8.14.2; WGSL "This value will be clamped to the range
+    /// [0, textureNumLayers(t) - 1]", where WGSL textureNumLayers "If the texture is based on
     /// cubes, returns the number of cubes in the cube arrayed texture").
     #[inline(always)]
     pub(crate) fn storage_layer(&self, st: &SamplerState, l: &LevelDesc, a: &Address) -> u32 {

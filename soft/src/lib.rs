@@ -105,7 +105,7 @@ pub fn path_exists(spec: Spec, api: ApiPath) -> bool {
         Spec::Es2Ext => api == A::Es100Ext,
         Spec::Gles32 => api == A::Es300,
         Spec::Vulkan => api == A::Vulkan,
-        // WebGPU §9 Shader Modules, GPUShaderModuleDescriptor "code: The WGSL source code for
+        // WebGPU, Shader Modules, GPUShaderModuleDescriptor "code: The WGSL source code for
         // the shader module": WGSL is the only path.
         Spec::WebGpu => api == A::Wgsl,
     }
@@ -124,7 +124,7 @@ pub fn path_targets(api: ApiPath, target: Target) -> bool {
         ApiPath::Es300 => matches!(target, T::T2d | T::T2dArray | T::Cube | T::CubeArray),
         // VkImageViewType has no rectangle textures.
         ApiPath::Vulkan => target != T::Rect,
-        // WGSL §17.7.10 textureSampleCompare: overloads for texture_depth_2d,
+        // WGSL textureSampleCompare: overloads for texture_depth_2d,
         // texture_depth_2d_array, texture_depth_cube and texture_depth_cube_array only.
         ApiPath::Wgsl => matches!(target, T::T2d | T::T2dArray | T::Cube | T::CubeArray),
     }
@@ -327,7 +327,7 @@ impl SoftUnit {
                 what,
             })
         };
-        // SPIR-V: OpImageDrefGather (with ConstOffset / ConstOffsets); WGSL §17.7.3
+        // SPIR-V: OpImageDrefGather (with ConstOffset / ConstOffsets); WGSL
         // textureGatherCompare.
         if !matches!(
             api,

@@ -115,7 +115,7 @@ impl SamplerState {
             ));
         }
         if spec == Spec::WebGpu && !complete {
-            // A GPUTextureView has baseMipLevel and mipLevelCount (WebGPU §6.2.1), every level
+            // A GPUTextureView has baseMipLevel and mipLevelCount (WebGPU createView.1), every level
             // of a GPUTexture exists from creation: no WebGPU view has a short chain.
             return Err(undefined(
                 spec,

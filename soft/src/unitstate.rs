@@ -115,7 +115,7 @@ pub fn seamless(spec: Spec, s: &Sampler, faults: Faults) -> bool {
         // face; there is no non-seamless mode without VK_EXT_non_seamless_cube_map.
         Spec::Gles32 => true,
         Spec::Vulkan => !faults.has(Fault::VkCubeEdgePerFace),
-        // WebGPU §6.2.1, GPUTextureViewDimension "cube": "Sampling is done seamlessly across the
+        // WebGPU createView.1, GPUTextureViewDimension "cube": "Sampling is done seamlessly across the
         // faces of the cubemap"; a "cube-array" view is "a packed array of n cubemaps, each with
         // 6 array layers behaving like one "cube" view".
         Spec::WebGpu => !faults.has(Fault::WgpuCubePerFace),

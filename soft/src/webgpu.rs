@@ -2,25 +2,25 @@
 //! integer `array_index`. The WebGPU sampler rules sit beside the other specs' in `compare`
 //! (GPUCompareFunction, no reference clamp), `sampler` (address modes, formats, comparison
 //! sampler, no LOD bias, no incomplete views) and `unitstate` (seamless cube views); this module
-//! holds the WGSL built-ins' own rules (WGSL §17.7 Texture Built-in Functions).
+//! holds the WGSL built-ins' own rules (WGSL Texture Built-in Functions).
 //!
-//! The built-ins are textureSampleCompare (WGSL §17.7.10; derivatives give λ as in GL),
-//! textureSampleCompareLevel (WGSL §17.7.11: "always samples texels from mip level 0", i.e. the
+//! The built-ins are textureSampleCompare (WGSL; derivatives give λ as in GL),
+//! textureSampleCompareLevel (WGSL: "always samples texels from mip level 0", i.e. the
 //! view's base level, used by the harness only where λ selects that level) and
-//! textureGatherCompare (WGSL §17.7.3).
+//! textureGatherCompare (WGSL).
 
 use crate::SoftError;
 use shadowcheck_model::{Case, Spec, Target};
 
 /// The integer array index a WGSL lookup receives for layer coordinate `x`.
 ///
-/// WGSL §17.7.10 textureSampleCompare: "`array_index`: The 0-based texture array index to
+/// WGSL textureSampleCompare: "`array_index`: The 0-based texture array index to
 /// sample." — a parameter of type A, "A is i32, or u32", so only integers reach the texture
 /// unit; the clamp ("This value will be clamped to the range [0, textureNumLayers(t) - 1]") is
 /// applied where the layer is read (`filter`, as for the other specs). A case's layer coordinate
 /// is a float; for an integer (every layer a WebGPU grid asks for) this is the identity. A
 /// fractional one has no WGSL counterpart; the unit then takes the nearest integer, halves to
-/// even, as WGSL's `round` would give it to the built-in (WGSL §17.5 round: "the result is k when
+/// even, as WGSL's `round` would give it to the built-in (WGSL round: "the result is k when
 /// k is even, and k + 1 when k is odd").
 #[inline]
 pub fn array_index(x: f32) -> f32 {
@@ -45,24 +45,24 @@ fn undefined(spec: Spec, what: &'static str) -> Result<(), SoftError> {
 pub(crate) fn check_lookup(spec: Spec, case: &Case) -> Result<(), SoftError> {
     let l = &case.lookup;
     if l.projective {
-        // WGSL §17.7 lists no projective texture built-in (no textureSampleCompareProj).
+        // WGSL lists no projective texture built-in (no textureSampleCompareProj).
         return undefined(
             spec,
             "a projective lookup (WGSL has no projective texture built-in)",
         );
     }
     if l.bias != 0.0 {
-        // WGSL §17.7.10 textureSampleCompare takes (t, s, coords, [array_index,] depth_ref
+        // WGSL textureSampleCompare takes (t, s, coords, [array_index,] depth_ref
         // [, offset]): no bias; textureSampleBias takes a `sampler`, not a `sampler_comparison`.
         return undefined(spec, "a bias argument to a WGSL depth-comparison built-in");
     }
     if l.offset != [0; 3] && !matches!(case.texture.target, Target::T2d | Target::T2dArray) {
-        // WGSL §17.7.10: the `offset: vec2<i32>` overloads exist for texture_depth_2d and
+        // WGSL: the `offset: vec2<i32>` overloads exist for texture_depth_2d and
         // texture_depth_2d_array only.
         return undefined(spec, "a texel offset on a WGSL cube depth texture");
     }
     if l.offset[2] != 0 || l.offset.iter().any(|o| !(-8..=7).contains(o)) {
-        // WGSL §17.7.10: "Each `offset` component must be at least -8 and at most 7. Values
+        // WGSL: "Each `offset` component must be at least -8 and at most 7. Values
         // outside of this range will result in a shader-creation error."
         return undefined(
             spec,
@@ -72,7 +72,7 @@ pub(crate) fn check_lookup(spec: Spec, case: &Case) -> Result<(), SoftError> {
     Ok(())
 }
 
-/// Refuses a gather WGSL cannot express: textureGatherCompare (WGSL §17.7.3) takes one optional
+/// Refuses a gather WGSL cannot express: textureGatherCompare (WGSL) takes one optional
 /// `offset: vec2<i32>` (2D and 2D array only), so there is no per-texel offsets form.
 pub(crate) fn check_gather(spec: Spec, case: &Case) -> Result<(), SoftError> {
     if case

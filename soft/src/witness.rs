@@ -248,7 +248,7 @@ fn webgpu(mut c: Case) -> Case {
 }
 
 /// A 1x1x3 D16 array [Dt 0, 0, 1], array_index −1, LEQUAL Dref ½: clamped to layer 0 (fails,
-/// r = 0, WGSL §17.7.10); wrapped modulo 3 it reads layer 2 (passes, r = 1).
+/// r = 0, WGSL); wrapped modulo 3 it reads layer 2 (passes, r = 1).
 fn array_index_minus_one() -> Case {
     let mut c = layer_one_and_a_half();
     c.lookup.coord[2] = -1.0;
@@ -553,7 +553,7 @@ mod tests {
         assert_eq!(r(Fault::GatherSwizzlesVector), [0.0; 4]);
         assert_eq!(r(Fault::CompatSwizzleDropped), [1.0, 1.0, 0.0, 0.0]);
         assert_eq!(r(Fault::SamplerObjectRectComplete), [0.0, 0.0, 0.0, 1.0]);
-        // WebGPU (§7.1.1 GPUCompareFunction, WGSL §17.7.10 array_index clamp, §6.2.1 cube views).
+        // WebGPU (Samplers: GPUCompareFunction, WGSL array_index clamp, cube views).
         assert_eq!(r(Fault::WgpuCompareOperandsSwapped), [1.0, 0.0, 0.0, 1.0]);
         assert_eq!(r(Fault::WgpuArrayIndexWrapped)[0], 0.0);
         assert!((r(Fault::WgpuCubePerFace)[0] - 0.4).abs() < 1e-6);

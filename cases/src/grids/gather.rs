@@ -250,7 +250,7 @@ fn offsets(d: &SpecDims, targets: &[Target]) -> Vec<Draft> {
             (x.sampler.wrap_s, x.sampler.wrap_t) = (wrap, wrap);
             out.push(x);
         }
-        // WGSL §17.7 has no textureGatherOffsets (textureGatherCompare takes one const offset).
+        // WGSL has no textureGatherOffsets (textureGatherCompare takes one const offset).
         let four: &[[[i32; 2]; 4]] = if d.spec == Spec::WebGpu { &[] } else { &FOUR };
         for (k, &o) in four.iter().enumerate() {
             let mut x = draft(

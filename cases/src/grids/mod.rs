@@ -125,7 +125,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             |x| d.shader_bias || x.lookup.bias == 0.0,
         )
         .filter(
-            "Vulkan, WebGPU: a depth comparison needs a depth image and a comparison sampler (Vulkan 1.3 §16 Depth Compare Operation: compareEnable; WGSL §17.7: a sampler_comparison); a depth read without comparison is no depth comparison",
+            "Vulkan, WebGPU: a depth comparison needs a depth image and a comparison sampler (Vulkan 1.3 §16 Depth Compare Operation: compareEnable; WGSL texture built-in functions: a sampler_comparison); a depth read without comparison is no depth comparison",
             |x| {
                 specs::compare_none(d.spec)
                     || (x.sampler.in_effect().compare_mode == CompareMode::Compare
@@ -137,7 +137,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             |x| d.spec != Spec::Vulkan || [0.0, 1.0].contains(&x.sampler.in_effect().border[0]),
         )
         .filter(
-            "Vulkan, WebGPU: no incomplete textures (an image view has levelCount levels, Vulkan 1.3 §12.5; a GPUTextureView mipLevelCount, WebGPU §6.2), no texture swizzle on a depth-compare lookup, no GL sampler objects or seamless enable",
+            "Vulkan, WebGPU: no incomplete textures (an image view has levelCount levels, Vulkan 1.3 §12.5; a GPUTextureView mipLevelCount, WebGPU createView), no texture swizzle on a depth-compare lookup, no GL sampler objects or seamless enable",
             |x| {
                 !specs::sampler_create(d.spec)
                     || (shadowcheck_oracle::lod::incomplete(
@@ -157,17 +157,29 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             |x| d.spec != Spec::Vulkan || floats_in_unit_range(&x.texture),
         )
         .filter(
-            "WebGPU: depth texels are written by a render pass's frag_depth, which \"is clamped to the current [[viewport]] depth range\" (WebGPU §23.2.6); texel copies into depth formats are not allowed (§26.1.2)",
+            "WebGPU: depth texels are written by a render pass's frag_depth, which \"is clamped to the current [[viewport]] depth range\" (WebGPU, Output Merging); texel copies into depth formats are not allowed (WebGPU, Copying Depth/Stencil Textures)",
             |x| d.spec != Spec::WebGpu || floats_in_unit_range(&x.texture),
         )
         .filter(
-            "WebGPU: the array index of a depth-compare built-in is an i32 or u32 (WGSL §17.7 textureSampleCompare: \"array_index: The 0-based texture array index\"), so the layer coordinate is an integer",
-            |x| d.spec != Spec::WebGpu || !x.texture.target.is_array() || x.lookup.layer.fract() == 0.0,
+            "WebGPU: the array index of a depth-compare built-in is an i32 or u32 (WGSL textureSampleCompare: \"array_index: The 0-based texture array index\"), so the layer coordinate is an integer",
+            |x| d.spec != Spec::WebGpu || array_layer(&x.lookup, x.texture.target).is_none_or(|a| a.fract() == 0.0),
         )
         .filter(
-            "WebGPU: WGSL has no projective texture built-in (§17.7)",
+            "WebGPU: WGSL has no projective texture built-in (WGSL texture built-in functions)",
             |x| d.spec != Spec::WebGpu || !x.lookup.projective,
         )
+}
+
+/// The array layer coordinate of a lookup on `target` (1D array: t; 2D array: r; cube array:
+/// `layer`), `None` for a target without layers.
+fn array_layer(l: &shadowcheck_model::Lookup, target: shadowcheck_model::Target) -> Option<f64> {
+    use shadowcheck_model::Target;
+    match target {
+        Target::T1dArray => Some(l.coord[1]),
+        Target::T2dArray => Some(l.coord[2]),
+        Target::CubeArray => Some(l.layer),
+        _ => None,
+    }
 }
 
 /// Every stored float depth lies in [0, 1].

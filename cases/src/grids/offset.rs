@@ -285,7 +285,7 @@ fn other_targets(d: &SpecDims) -> Vec<Draft> {
         // Vulkan: ConstOffset on every non-cube Dim (SPIR-V Image Operands; §16 Texel
         // Coordinate Offset), i.e. GL's list without rectangles.
         Spec::Vulkan => &[Target::T1d, Target::T1dArray, Target::T2dArray],
-        // ES 3.x, and WGSL's offset overloads on texture_depth_2d_array (§17.7).
+        // ES 3.x, and WGSL's offset overloads on texture_depth_2d_array (WGSL texture built-in functions).
         _ => &[Target::T2dArray],
     };
     let mut out = Vec::new();

@@ -180,8 +180,8 @@ pub fn dims(spec: Spec) -> SpecDims {
         },
         // WebGPU: the WGSL depth texture types (2D, 2D array, cube, cube array), the five depth
         // formats (depth32float-stencil8 with its feature), GPUAddressMode (no border),
-        // lodMinClamp / lodMaxClamp and the view's mip range; no LOD bias anywhere (§7.1.1
-        // GPUSamplerDescriptor; WGSL §17.7).
+        // lodMinClamp / lodMaxClamp and the view's mip range; no LOD bias anywhere (WebGPU
+        // GPUSamplerDescriptor; WGSL).
         Spec::WebGpu => SpecDims {
             spec,
             funcs: CORE_FUNCS,
@@ -202,7 +202,7 @@ pub fn dims(spec: Spec) -> SpecDims {
 /// Whether the spec reads a depth texture with comparison off through its lookups (compare mode
 /// NONE). Not Vulkan: its depth comparison is an OpImage*Dref* instruction on a sampler with
 /// compareEnable (§16 Depth Compare Operation); a plain depth read is another instruction. Not
-/// WebGPU: a comparison is a `sampler_comparison` in a compare built-in (WGSL §17.7); a plain
+/// WebGPU: a comparison is a `sampler_comparison` in a compare built-in (WGSL texture built-in functions); a plain
 /// depth read is textureSample through a `sampler`.
 pub fn compare_none(spec: Spec) -> bool {
     !sampler_create(spec)

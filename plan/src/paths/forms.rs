@@ -91,7 +91,7 @@ pub fn available_with(
             }
             _ => false,
         },
-        // WGSL §17.7: the depth-comparison built-ins take a texture_depth_2d, _2d_array, _cube or
+        // WGSL texture built-in functions: the depth-comparison built-ins take a texture_depth_2d, _2d_array, _cube or
         // _cube_array and no projection: textureSampleCompare (implicit derivatives, no bias) and
         // textureSampleCompareLevel (`Lod`: "always samples texels from mip level 0", so only a
         // case whose level of detail selects level 0 may use it).
@@ -155,7 +155,7 @@ pub fn offset_available_with(
     let shadow = kind == SamplerKind::Shadow;
     let es = path == ApiPath::Es300;
     if path == ApiPath::Wgsl {
-        // WGSL §17.7: the offset overloads exist for texture_depth_2d and texture_depth_2d_array.
+        // WGSL texture built-in functions: the offset overloads exist for texture_depth_2d and texture_depth_2d_array.
         return matches!(target, T2d | T2dArray);
     }
     match target {

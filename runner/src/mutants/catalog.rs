@@ -111,16 +111,16 @@ pub fn about(f: Fault) -> &'static str {
             "Vulkan Cube Map Edge Handling skipped: LINEAR at a face edge clamps within the face (GL's non-seamless default kept under Vulkan)"
         }
         F::WgpuCompareOperandsSwapped => {
-            "WebGPU GPUCompareFunction applied as texel OP depth_ref instead of depth_ref OP texel (\"a provided value passes ... if it is less than the sampled value\", WebGPU §7.1.1)"
+            "WebGPU GPUCompareFunction applied as texel OP depth_ref instead of depth_ref OP texel (\"a provided value passes ... if it is less than the sampled value\", WebGPU, Samplers: GPUSamplerDescriptor)"
         }
         F::WgpuArrayIndexWrapped => {
-            "WGSL array_index wrapped modulo the layer count instead of clamped to [0, textureNumLayers(t) - 1] (WGSL §17.7.10)"
+            "WGSL array_index wrapped modulo the layer count instead of clamped to [0, textureNumLayers(t) - 1] (WGSL)"
         }
         F::WgpuCubePerFace => {
-            "WebGPU cube views filtered per face, not seamlessly (a WebGPU implementation on desktop GL that never enables TEXTURE_CUBE_MAP_SEAMLESS; WebGPU §6.2.1)"
+            "WebGPU cube views filtered per face, not seamlessly (a WebGPU implementation on desktop GL that never enables TEXTURE_CUBE_MAP_SEAMLESS; WebGPU createView.1)"
         }
         F::WgpuCubeArrayIndexAsLayer => {
-            "texture_depth_cube_array's array_index counted in layers (index + face) instead of cubes (6 * index + face), as by a cube-array emulation on a 2D array (WebGPU §6.2.1 \"cube-array\")"
+            "texture_depth_cube_array's array_index counted in layers (index + face) instead of cubes (6 * index + face), as by a cube-array emulation on a 2D array (WebGPU createView.1 \"cube-array\")"
         }
         F::SamplerObjectIgnored => {
             "a bound sampler object's compare / filter / wrap / LOD state ignored in favour of the texture's"

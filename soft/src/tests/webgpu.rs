@@ -36,7 +36,7 @@ fn array(layers: Vec<u32>) -> Case {
 
 #[test]
 fn provided_value_compared_with_the_sampled_value() {
-    // WebGPU §7.1.1 GPUCompareFunction "less": "A provided value passes the comparison test if
+    // WebGPU, Samplers: GPUSamplerDescriptor GPUCompareFunction "less": "A provided value passes the comparison test if
     // it is less than the sampled value": depth_ref 0.25 < texel 0.75 passes.
     let mut c = wgpu(1, vec![d16(0.75)], CompareFunc::Less);
     c.lookup.dref = 0.25;
@@ -52,7 +52,7 @@ fn provided_value_compared_with_the_sampled_value() {
 
 #[test]
 fn depth_ref_is_not_clamped() {
-    // No sentence clamps depth_ref (WGSL §17.7.10 "The reference value to compare the sampled
+    // No sentence clamps depth_ref (WGSL "The reference value to compare the sampled
     // depth value against"); the unit takes it as given, also for unorm formats: 1.5 ≤ 1 fails.
     let mut c = wgpu(1, vec![65535], CompareFunc::Lequal);
     c.lookup.dref = 1.5;
@@ -65,7 +65,7 @@ fn depth_ref_is_not_clamped() {
 
 #[test]
 fn array_index_is_clamped() {
-    // WGSL §17.7.10: "This value will be clamped to the range [0, textureNumLayers(t) - 1]".
+    // WGSL: "This value will be clamped to the range [0, textureNumLayers(t) - 1]".
     // Layers [fail, fail, pass] with LEQUAL ½.
     let mut c = array(vec![0, 0, 65535]);
     for (index, want) in [(2.0, 1.0), (5.0, 1.0), (-2.0, 0.0), (1.0, 0.0)] {
@@ -73,12 +73,12 @@ fn array_index_is_clamped() {
         assert_eq!(r(&c), want, "array_index {index}");
     }
     // A fractional layer coordinate has no WGSL counterpart: the nearest integer, halves to
-    // even (WGSL §17.5 round): 1.5 → 2 (passes), 2.5 → 2, 0.5 → 0 (fails).
+    // even (WGSL round): 1.5 → 2 (passes), 2.5 → 2, 0.5 → 0 (fails).
     for (index, want) in [(1.5, 1.0), (2.5, 1.0), (0.5, 0.0), (1.4999, 0.0)] {
         c.lookup.coord[2] = index;
         assert_eq!(r(&c), want, "array_index {index}");
     }
-    // Cube arrays: the index selects the cube (WebGPU §6.2.1 "cube-array": "a packed array of
+    // Cube arrays: the index selects the cube (WebGPU createView.1 "cube-array": "a packed array of
     // n cubemaps, each with 6 array layers"); index 3 of 2 cubes clamps to cube 1.
     let mut c = wgpu(1, vec![0], CompareFunc::Lequal);
     c.texture.target = Target::CubeArray;
@@ -100,7 +100,7 @@ fn array_index_is_clamped() {
 
 #[test]
 fn cube_views_filter_across_faces() {
-    // WebGPU §6.2.1 "cube": "Sampling is done seamlessly across the faces of the cubemap".
+    // WebGPU createView.1 "cube": "Sampling is done seamlessly across the faces of the cubemap".
     // 2x2 faces, +Z passes, the rest fails; direction (1, 0, 0.9) on +X: s = 0.05, u − ½ = −0.4,
     // i0 = −1 lies on +Z, α = 0.6: r = 1 − α = 0.4 (as in `seamless_cube_edge_in_es`).
     let mut c = wgpu(2, vec![], CompareFunc::Lequal);
@@ -122,7 +122,7 @@ fn cube_views_filter_across_faces() {
 
 #[test]
 fn filtering_is_the_weighted_average_of_the_comparisons() {
-    // WebGPU §7.1.1: "After comparison, if texture filtering is enabled, the filtering step
+    // WebGPU, Samplers: GPUSamplerDescriptor: "After comparison, if texture filtering is enabled, the filtering step
     // occurs ... Filtering should behave as usual". 2x1 [0, 1] at s = ½ with LINEAR: u − ½ = ½,
     // α = ½; LEQUAL ½ fails on texel 0 and passes on texel 1: r = ½.
     let mut c = wgpu(2, vec![0, 65535], CompareFunc::Lequal);
@@ -141,7 +141,7 @@ fn filtering_is_the_weighted_average_of_the_comparisons() {
 
 #[test]
 fn gather_compare_order_and_level() {
-    // WGSL §17.7.3 textureGatherCompare: x (umin, vmax), y (umax, vmax), z (umax, vmin),
+    // WGSL textureGatherCompare: x (umin, vmax), y (umax, vmax), z (umax, vmin),
     // w (umin, vmin). 2x2 [0, ¼ / ¾, 1] at the centre, LEQUAL ½: (¾, 1, ¼, 0) → (1, 1, 0, 0).
     let mut c = wgpu(2, vec![0, d16(0.25), d16(0.75), 65535], CompareFunc::Lequal);
     c.texture.levels[0].height = 2;
@@ -179,23 +179,23 @@ fn state_webgpu_does_not_have_is_refused() {
         sample(&c).is_err()
     };
     assert!(!refused(&|_| {}));
-    // GPUAddressMode has no border (WebGPU §7.1.1).
+    // GPUAddressMode has no border (WebGPU, Samplers: GPUSamplerDescriptor).
     assert!(refused(&|c| c.sampler.wrap_s = Wrap::ClampToBorder));
     assert!(refused(&|c| c.sampler.wrap_t = Wrap::MirrorClampToEdge));
-    // A comparison needs a `sampler_comparison` (WGSL §17.7.10).
+    // A comparison needs a `sampler_comparison` (WGSL).
     assert!(refused(&|c| c.sampler.compare_mode = CompareMode::None));
     // No LOD bias in GPUSamplerDescriptor, no bias argument in the compare built-ins.
     assert!(refused(&|c| c.sampler.lod_bias = 1.0));
     assert!(refused(&|c| c.lookup.bias = 1.0));
     // No projective built-in.
     assert!(refused(&|c| c.lookup.projective = true));
-    // Only the five depth formats (WebGPU §6.3).
+    // Only the five depth formats (WebGPU, Texture Formats).
     assert!(refused(&|c| c.texture.format = Format::D32));
     assert!(refused(&|c| c.texture.format = Format::R8));
     // texture_depth_2d, _2d_array, _cube, _cube_array only.
     assert!(refused(&|c| c.texture.target = Target::Rect));
     assert!(refused(&|c| c.texture.target = Target::T1d));
-    // lodMaxClamp ≥ lodMinClamp (WebGPU §7.1.2).
+    // lodMaxClamp ≥ lodMinClamp (WebGPU, Sampler Creation).
     assert!(refused(&|c| {
         c.sampler.min_lod = 2.0;
         c.sampler.max_lod = 1.0
