@@ -1,11 +1,12 @@
-//! shadowcheck-webgl: the `webgl:chromium` worker. WebGL 2.0 in headless Chromium (ANGLE's
-//! Vulkan back end on SwiftShader), driven over the Chrome DevTools Protocol pipe
-//! ([`browser`]), running the `es300` path of the lookup plan: the same plans, shader text,
-//! texture bytes and TexParameter calls as the GL worker (shadowcheck-plan), made by a small page
-//! script (`page.js`) in batches ([`job`]). The [`worker`] answers runner/PROTOCOL.md through
+//! shadowcheck-webgl: the `webgl:*` worker. WebGL 2.0 in headless Chromium on one of ANGLE's back
+//! ends ([`instance`]: Vulkan on SwiftShader, OpenGL ES on Mesa's llvmpipe, Vulkan on Mesa's
+//! lavapipe), driven over the Chrome DevTools Protocol pipe ([`browser`]), running the `es300`
+//! path of the lookup plan: the same plans, shader text, texture bytes and TexParameter calls as
+//! the GL worker (shadowcheck-plan), made by a small page script (`page.js`) in batches ([`job`]). The [`worker`] answers runner/PROTOCOL.md through
 //! the plan's serve loop; the runner starts it as `shadowcheck webgl-worker`.
 
 pub mod browser;
+pub mod instance;
 pub mod job;
 pub mod state;
 pub mod worker;

@@ -1,7 +1,9 @@
-//! The `webgl:chromium` worker: starts the browser, loads the page, declares what WebGL 2.0 can
-//! run, and answers batches through the plan's protocol loop ([`shadowcheck_plan::serve::serve`]).
+//! The `webgl:*` worker: starts the browser as its instance says ([`Instance`]), loads the page,
+//! checks the renderer is that instance's, declares what WebGL 2.0 can run, and answers batches
+//! through the plan's protocol loop ([`shadowcheck_plan::serve::serve`]).
 
-use super::browser::{Browser, Launch};
+use super::browser::Browser;
+use super::instance::Instance;
 use super::job;
 use super::WebglError;
 use serde::Deserialize;
@@ -9,9 +11,6 @@ use shadowcheck_model::{ApiPath, Case, Format, Spec, StateCase, StateObserved, T
 use shadowcheck_plan::serve::{state_reply, Serve};
 use shadowcheck_plan::{sweep, Answer, ContextApi, GlInfo, LookupForm};
 use shadowcheck_protocol::{Capabilities, Hello, Reply, Support, PROTOCOL_VERSION};
-
-/// The backend's name.
-pub const NAME: &str = "webgl:chromium";
 
 /// The page script (evaluated once per browser).
 const PAGE_JS: &str = include_str!("page.js");
@@ -83,6 +82,7 @@ impl TestFault {
 
 /// A browser with the page loaded.
 pub struct WebglWorker {
+    instance: &'static Instance,
     browser: Browser,
     pub page: PageInfo,
     info: GlInfo,
@@ -126,10 +126,12 @@ pub fn capabilities(enabled: &[String], extensions: &[String]) -> Capabilities {
 }
 
 impl WebglWorker {
-    /// Starts the browser, loads the page and creates its WebGL 2.0 context.
-    pub fn start() -> Result<WebglWorker, WebglError> {
+    /// Starts the browser as `instance` says, loads the page and creates its WebGL 2.0 context,
+    /// which must be on the instance's back end and driver (its renderer string).
+    pub fn start(instance: &'static Instance) -> Result<WebglWorker, WebglError> {
         let fault = TestFault::from_env()?;
-        let mut browser = Browser::start(&Launch::swiftshader())?;
+        instance.installed()?;
+        let mut browser = Browser::start(&(instance.launch)())?;
         browser.evaluate(PAGE_JS)?;
         let v = browser.evaluate("shadowcheck.init()")?;
         let page: PageInfo = serde_json::from_value(v.clone())
@@ -137,6 +139,7 @@ impl WebglWorker {
         if let Some(e) = &page.error {
             return Err(WebglError::Context(e.clone()));
         }
+        instance.check_renderer(&page.renderer)?;
         let info = GlInfo {
             api: ContextApi::Es3,
             es: true,
@@ -150,6 +153,7 @@ impl WebglWorker {
         };
         let caps = capabilities(&page.enabled, &page.extensions);
         Ok(WebglWorker {
+            instance,
             browser,
             page,
             info,
@@ -159,11 +163,15 @@ impl WebglWorker {
     }
 
     /// E.g. `webgl:chromium (WebGL 2.0 (OpenGL ES 3.0 Chromium); ANGLE (Google, Vulkan 1.3.0
-    /// (SwiftShader Device (Subzero) ...)); Chrome/156.0.8078.79)`.
+    /// (SwiftShader Device (Subzero) ...)); Chrome/156.0.8078.79)`, or `webgl:chromium-gles
+    /// (...; ANGLE (Mesa/X.org, llvmpipe (LLVM 15.0.6 256 bits), OpenGL ES 3.2); ...)`.
     pub fn display_name(&self) -> String {
         format!(
-            "{NAME} ({}; {}; {})",
-            self.page.version, self.page.renderer, self.browser.product
+            "{} ({}; {}; {})",
+            self.instance.name(),
+            self.page.version,
+            self.page.renderer,
+            self.browser.product
         )
     }
 
@@ -285,8 +293,8 @@ impl Serve for WebglWorker {
 }
 
 /// `--probe`: start the browser and the page; `ok <name>` or `unavailable: <reason>`.
-pub fn probe_line() -> (bool, String) {
-    match WebglWorker::start() {
+pub fn probe_line(instance: &'static Instance) -> (bool, String) {
+    match WebglWorker::start(instance) {
         Ok(w) => (true, format!("ok {}", w.display_name())),
         Err(e) => (false, format!("unavailable: {e}")),
     }

@@ -25,7 +25,8 @@ SESSION = "FAKESESSION"
 PAGE = {
     "version": "WebGL 2.0 (OpenGL ES 3.0 fake)",
     "glsl": "WebGL GLSL ES 3.00 (fake)",
-    "renderer": "fake renderer",
+    # The worker checks the renderer names webgl:chromium's back end and driver.
+    "renderer": "ANGLE (fake, Vulkan 1.3.0 (SwiftShader Device (fake)), SwiftShader driver)",
     "vendor": "fake",
     "extensions": ["EXT_color_buffer_float"],
     "enabled": ["EXT_color_buffer_float"],

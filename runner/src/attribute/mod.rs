@@ -1,6 +1,10 @@
 //! Layer attribution (`shadowcheck attribute`): for a failure on a layered implementation (GL on
-//! Vulkan through zink, WebGL on Vulkan through ANGLE, WebGPU on Vulkan through Dawn), which layer
-//! broke the lookup.
+//! Vulkan through zink, WebGL on Vulkan or on OpenGL ES through ANGLE, WebGPU on Vulkan through
+//! Dawn), which layer broke the lookup.
+//!
+//! Where the lower layer is an OpenGL ES driver ([`Counterpart::SameTest`]: ANGLE's OpenGL ES back
+//! end on Mesa's llvmpipe), the counterpart is the same test (case and `es300` path) on that
+//! driver's backend, and the classification below is the same.
 //!
 //! The plan of a GL, GL ES or WebGPU case is API-neutral: the same texture, sampler state and lookup as a
 //! Vulkan case ([`vulkan_counterpart`]) where Vulkan 1.3 defines it (the oracle's `vulkan` rules
@@ -27,52 +31,86 @@ use serde::Serialize;
 use shadowcheck_model::{ApiPath, Case, CompareMode, Spec};
 use std::collections::{BTreeMap, HashMap};
 
-/// A layered implementation: the backends of the upper layer and the Vulkan backend of the driver
-/// under it.
+/// A layered implementation: the backends of the upper layer and the backend of the driver under
+/// it.
 #[derive(Debug, Clone, Copy)]
 pub struct Layering {
-    /// Backend names starting with this are the upper layer.
+    /// The upper layer's backends: this name, or names starting with it followed by `:` (a prefix
+    /// ending in `:` takes any name after it).
     pub upper_prefix: &'static str,
-    /// The Vulkan backend of the driver the upper layer runs on.
+    /// The backend of the driver the upper layer runs on.
     pub lower: &'static str,
+    /// What the lower backend is asked for a failure.
+    pub counterpart: Counterpart,
     pub what: &'static str,
 }
 
+/// How a failure's counterpart on the lower layer is found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Counterpart {
+    /// The same lookup recast as a Vulkan case ([`vulkan_counterpart`]): a Vulkan driver.
+    Vulkan,
+    /// The same test (case id and API path): an OpenGL ES driver under a layer that runs the
+    /// same ES cases.
+    SameTest,
+}
+
 /// The layerings shadowcheck runs: zink on lavapipe (Mesa's default zink here), zink on
-/// SwiftShader's Vulkan driver, ANGLE's Vulkan back end on SwiftShader (WebGL in Chromium), Dawn's
-/// Vulkan back end on SwiftShader (WebGPU in Chromium). The first entry whose prefix a backend
-/// name starts with is its layering, so a longer prefix comes before a shorter one it extends.
+/// SwiftShader's Vulkan driver, WebGL 2.0 in Chromium on three ANGLE back ends (Vulkan on
+/// SwiftShader, Vulkan on lavapipe, OpenGL ES on Mesa's llvmpipe: the same `es300` tests on
+/// `egl:llvmpipe:es3`), and WebGPU in Chromium on Dawn's Vulkan back end on SwiftShader.
 pub const LAYERS: &[Layering] = &[
     Layering {
         upper_prefix: "egl:zink+swiftshader:",
         lower: "vk:swiftshader",
+        counterpart: Counterpart::Vulkan,
         what: "zink on SwiftShader's Vulkan driver",
     },
     Layering {
         upper_prefix: "egl:zink:",
         lower: "vk:lavapipe",
+        counterpart: Counterpart::Vulkan,
         what: "zink on lavapipe",
     },
     Layering {
         upper_prefix: "osmesa:zink",
         lower: "vk:lavapipe",
+        counterpart: Counterpart::Vulkan,
         what: "zink on lavapipe",
     },
     Layering {
         upper_prefix: "webgl:chromium",
         lower: "vk:swiftshader",
+        counterpart: Counterpart::Vulkan,
         what: "ANGLE's Vulkan back end on SwiftShader",
+    },
+    Layering {
+        upper_prefix: "webgl:chromium-lavapipe",
+        lower: "vk:lavapipe",
+        counterpart: Counterpart::Vulkan,
+        what: "ANGLE's Vulkan back end on lavapipe",
+    },
+    Layering {
+        upper_prefix: "webgl:chromium-gles",
+        lower: "egl:llvmpipe:es3",
+        counterpart: Counterpart::SameTest,
+        what: "ANGLE's OpenGL ES back end on Mesa's llvmpipe",
     },
     Layering {
         upper_prefix: "webgpu:chromium",
         lower: "vk:swiftshader",
+        counterpart: Counterpart::Vulkan,
         what: "Dawn's Vulkan back end on SwiftShader",
     },
 ];
 
 /// The layering a backend belongs to, if it is an upper layer.
 pub fn layering_of(backend: &str) -> Option<&'static Layering> {
-    LAYERS.iter().find(|l| backend.starts_with(l.upper_prefix))
+    LAYERS.iter().find(|l| {
+        backend.strip_prefix(l.upper_prefix).is_some_and(|rest| {
+            l.upper_prefix.ends_with(':') || rest.is_empty() || rest.starts_with(':')
+        })
+    })
 }
 
 /// Which layer a failure is attributed to.
@@ -141,7 +179,8 @@ fn own_id(vk: &Case, gl: &Case) -> String {
 pub fn counterparts_to_run(results: &Results, cases: &HashMap<String, Case>) -> Vec<Case> {
     let mut out: Vec<Case> = Vec::new();
     for t in &results.results {
-        if layering_of(&t.backend).is_none() || !matches!(t.outcome, Outcome::Fail | Outcome::Warn)
+        if !matches!(layering_of(&t.backend), Some(l) if l.counterpart == Counterpart::Vulkan)
+            || !matches!(t.outcome, Outcome::Fail | Outcome::Warn)
         {
             continue;
         }
@@ -265,6 +304,19 @@ pub fn attribute(results: &Results, cases: &HashMap<String, Case>) -> Vec<Attrib
             layer: Layer::NoEquivalent,
             why: String::new(),
         };
+        if layering.counterpart == Counterpart::SameTest {
+            // The lower backend ran this very case on the same API path: no recasting and no
+            // fixture check; its record decides as a Vulkan counterpart's does.
+            row.counterpart = Some(t.test.clone());
+            (row.layer, row.why) = classify(
+                layering.lower,
+                t,
+                results.get(layering.lower, &t.test),
+                &t.test,
+            );
+            out.push(row);
+            continue;
+        }
         let Some(case) = cases.get(&t.case_id) else {
             row.why = format!("case `{}` is not in the fixtures read", t.case_id);
             out.push(row);
@@ -337,48 +389,51 @@ pub fn attribute(results: &Results, cases: &HashMap<String, Case>) -> Vec<Attrib
                 continue;
             }
         }
-        let Some(low) = results.get(layering.lower, &name) else {
-            row.why = format!("no result of {} for {name} in the runs", layering.lower);
-            out.push(row);
-            continue;
-        };
-        (row.layer, row.why) = match low.outcome {
-            Outcome::Pass => (
-                Layer::Upper,
-                format!("{} passes the same lookup", layering.lower),
-            ),
-            Outcome::Skip => (
-                Layer::Upper,
-                format!(
-                    "{} cannot run the same lookup ({}): the layer emulates it",
-                    layering.lower,
-                    low.reason.as_deref().unwrap_or("skipped")
-                ),
-            ),
-            Outcome::Fail | Outcome::Warn => match (r_of(t), r_of(low)) {
-                (Some(a), Some(b)) if (a - b).abs() <= 1e-6 => (
-                    Layer::Lower,
-                    format!("{} returns the same r = {b}", layering.lower),
-                ),
-                (a, b) => (
-                    Layer::Both,
-                    format!(
-                        "{} fails it too, with r = {} (upper: {})",
-                        layering.lower,
-                        b.map_or("?".into(), |v| v.to_string()),
-                        a.map_or("?".into(), |v| v.to_string())
-                    ),
-                ),
-            },
-            other => (
-                Layer::NoEquivalent,
-                format!("{} gave no answer ({})", layering.lower, other.as_str()),
-            ),
-        };
+        (row.layer, row.why) =
+            classify(layering.lower, t, results.get(layering.lower, &name), &name);
         row.why += &differs;
         out.push(row);
     }
     out
+}
+
+/// The layer of the failure `t` given the lower backend's record `low` of its counterpart `name`.
+fn classify(lower: &str, t: &TestResult, low: Option<&TestResult>, name: &str) -> (Layer, String) {
+    let Some(low) = low else {
+        return (
+            Layer::NoEquivalent,
+            format!("no result of {lower} for {name} in the runs"),
+        );
+    };
+    match low.outcome {
+        Outcome::Pass => (Layer::Upper, format!("{lower} passes the same lookup")),
+        Outcome::Skip => (
+            Layer::Upper,
+            format!(
+                "{} cannot run the same lookup ({}): the layer emulates it",
+                lower,
+                low.reason.as_deref().unwrap_or("skipped")
+            ),
+        ),
+        Outcome::Fail | Outcome::Warn => match (r_of(t), r_of(low)) {
+            (Some(a), Some(b)) if (a - b).abs() <= 1e-6 => {
+                (Layer::Lower, format!("{lower} returns the same r = {b}"))
+            }
+            (a, b) => (
+                Layer::Both,
+                format!(
+                    "{} fails it too, with r = {} (upper: {})",
+                    lower,
+                    b.map_or("?".into(), |v| v.to_string()),
+                    a.map_or("?".into(), |v| v.to_string())
+                ),
+            ),
+        },
+        other => (
+            Layer::NoEquivalent,
+            format!("{lower} gave no answer ({})", other.as_str()),
+        ),
+    }
 }
 
 /// report.md's "Layer attribution" section, when the run holds a layered backend with failures
@@ -415,7 +470,7 @@ pub fn report_section(
     let mut s = markdown(&rows).replacen("# Layer attribution", "## Layer attribution", 1);
     s = s.replacen(
         "\n\n",
-        "\n\nEach Fail and Warn of a layered backend against the Vulkan driver's answer to the same lookup in this run (`shadowcheck attribute`, runner/README.md).\n\n",
+        "\n\nEach Fail and Warn of a layered backend against the lower layer's answer in this run: the Vulkan driver's to the same lookup, or, under ANGLE's OpenGL ES back end, the OpenGL ES driver's to the same test (`shadowcheck attribute`, runner/README.md).\n\n",
         1,
     );
     Some(s)
@@ -493,7 +548,7 @@ pub fn classes(rows: &[Attribution]) -> Vec<Class<'_>> {
 pub fn markdown(rows: &[Attribution]) -> String {
     let mut s = String::from("# Layer attribution\n\n");
     if rows.is_empty() {
-        s += "No failure of a layered backend (zink, WebGL) in the runs read.\n";
+        s += "No failure of a layered backend (zink, WebGL on ANGLE) in the runs read.\n";
         return s;
     }
     s += "| backend | lower layer | upper | lower | both | no equivalent |\n|---|---|---:|---:|---:|---:|\n";
@@ -512,7 +567,7 @@ pub fn markdown(rows: &[Attribution]) -> String {
             n(Layer::NoEquivalent)
         );
     }
-    s += "\nFailure classes (the reason with its case ids and values left out), largest first per backend; every failure is in the JSON output (`--json`).\n\n| backend | layer | tests | why | example (Vulkan counterpart) |\n|---|---|---:|---|---|\n";
+    s += "\nFailure classes (the reason with its case ids and values left out), largest first per backend; every failure is in the JSON output (`--json`).\n\n| backend | layer | tests | why | example (counterpart) |\n|---|---|---:|---|---|\n";
     for c in classes(rows) {
         s += &format!(
             "| {} | {} | {} | {} | `{}`{} |\n",
@@ -527,11 +582,17 @@ pub fn markdown(rows: &[Attribution]) -> String {
                 .map_or(String::new(), |v| format!(" (`{v}`)"))
         );
     }
-    if rows
-        .iter()
-        .any(|r| matches!(r.layer, Layer::Lower | Layer::Both))
-    {
+    let confirm = |c: Counterpart| {
+        rows.iter().any(|r| {
+            matches!(r.layer, Layer::Lower | Layer::Both)
+                && layering_of(&r.backend).is_some_and(|l| l.counterpart == c)
+        })
+    };
+    if confirm(Counterpart::Vulkan) {
         s += "\nA lower or both class is the Vulkan driver's to confirm: `shadowcheck repro -b <lower layer> --case '<Vulkan counterpart>'` writes the standalone Vulkan program of the same lookup (runner/README.md, \"Reproducers\").\n";
+    }
+    if confirm(Counterpart::SameTest) {
+        s += "\nUnder ANGLE's OpenGL ES back end a lower or both class is the OpenGL ES driver's to confirm: `shadowcheck repro -b <lower layer> --case '<counterpart>'` writes the standalone EGL + OpenGL ES program of the same test (runner/README.md, \"Reproducers\").\n";
     }
     s
 }

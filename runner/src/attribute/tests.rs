@@ -205,6 +205,81 @@ fn a_counterpart_keeps_the_lookup_and_refuses_what_vulkan_lacks() {
         Some("vk:swiftshader")
     );
     assert!(layering_of("egl:llvmpipe:core").is_none());
+    // The WebGL instances by their whole name: `webgl:chromium` is not a prefix of its siblings.
+    for (b, lower) in [
+        ("webgl:chromium", "vk:swiftshader"),
+        ("webgl:chromium-lavapipe", "vk:lavapipe"),
+        ("webgl:chromium-gles", "egl:llvmpipe:es3"),
+    ] {
+        assert_eq!(layering_of(b).map(|l| l.lower), Some(lower), "{b}");
+    }
+    assert!(layering_of("webgl:chromium-other").is_none());
+    assert!(layering_of("osmesa:zink:core").is_some());
+}
+
+#[test]
+fn under_angles_gles_back_end_the_lower_layer_answers_the_same_test() {
+    let cases = fixtures();
+    let mut ids: Vec<&String> = cases
+        .keys()
+        .filter(|k| k.starts_with("gles32/2d/d24/"))
+        .collect();
+    ids.sort();
+    let es = &cases[ids[0]];
+    let attribute_with = |lower: Option<(Outcome, f64)>| {
+        let mut res = Results::default();
+        res.insert(record(
+            "webgl:chromium-gles",
+            es,
+            ApiPath::Es300,
+            Outcome::Fail,
+            0.25,
+        ));
+        // The Vulkan drivers' records are not asked.
+        res.insert(record(
+            "vk:lavapipe",
+            es,
+            ApiPath::Vulkan,
+            Outcome::Pass,
+            1.0,
+        ));
+        if let Some((o, r)) = lower {
+            res.insert(record("egl:llvmpipe:es3", es, ApiPath::Es300, o, r));
+        }
+        let rows = attribute(&res, &cases);
+        assert_eq!(rows.len(), 1, "{rows:?}");
+        assert_eq!(rows[0].lower, "egl:llvmpipe:es3");
+        assert_eq!(
+            rows[0].counterpart.as_deref(),
+            Some(TestResult::name(&es.id, ApiPath::Es300).as_str())
+        );
+        rows[0].clone()
+    };
+    let pass = attribute_with(Some((Outcome::Pass, 1.0)));
+    assert_eq!(pass.layer, Layer::Upper);
+    assert!(pass.why.contains("egl:llvmpipe:es3 passes"), "{}", pass.why);
+    let lower = attribute_with(Some((Outcome::Fail, 0.25)));
+    assert_eq!(lower.layer, Layer::Lower);
+    assert_eq!(
+        attribute_with(Some((Outcome::Warn, 0.5))).layer,
+        Layer::Both
+    );
+    assert_eq!(attribute_with(None).layer, Layer::NoEquivalent);
+    // Nothing to write for it: its counterpart is a test of the committed fixtures already.
+    let mut res = Results::default();
+    res.insert(record(
+        "webgl:chromium-gles",
+        es,
+        ApiPath::Es300,
+        Outcome::Fail,
+        0.25,
+    ));
+    assert!(counterparts_to_run(&res, &cases).is_empty());
+    let md = markdown(&[lower]);
+    assert!(
+        md.contains("| webgl:chromium-gles | egl:llvmpipe:es3 | 0 | 1 | 0 | 0 |"),
+        "{md}"
+    );
 }
 
 #[test]

@@ -61,10 +61,10 @@ pub const GL_WORKER: Worker = Worker {
     subcommand: "gl-worker",
     about: "(internal) A GL worker process speaking runner/PROTOCOL.md on stdin/stdout.",
 };
-/// `webgl:chromium`'s child: headless Chromium with a WebGL 2.0 page (shadowcheck-webgl).
+/// The `webgl:*` backends' child: headless Chromium with a WebGL 2.0 page (shadowcheck-webgl).
 pub const WEBGL_WORKER: Worker = Worker {
     subcommand: "webgl-worker",
-    about: "(internal) The `webgl:chromium` worker: headless Chromium speaking runner/PROTOCOL.md.",
+    about: "(internal) The `webgl:*` worker: headless Chromium speaking runner/PROTOCOL.md.",
 };
 /// The Vulkan drivers' child: one Vulkan device through ash (shadowcheck-vk).
 pub const VK_WORKER: Worker = Worker {
@@ -145,10 +145,10 @@ pub const KINDS: &[BackendKind] = &[
     },
     BackendKind {
         prefix: "webgl",
-        pattern: "webgl:chromium",
-        help: "WebGL 2.0 in headless Chromium (ANGLE on SwiftShader), the es300 path",
+        pattern: "webgl:*",
+        help: "webgl:chromium|chromium-gles|chromium-lavapipe, WebGL 2.0 in headless Chromium on ANGLE's Vulkan back end on SwiftShader, its OpenGL ES back end on Mesa's llvmpipe, its Vulkan back end on Mesa's lavapipe, the es300 path",
         open: open_webgl,
-        defaults: DefaultInstances::Probed(webgl::probe_kind, "webgl:chromium when Chromium is installed"),
+        defaults: DefaultInstances::Probed(webgl::probe_kind, "webgl:chromium when Chromium is installed, webgl:chromium-gles and webgl:chromium-lavapipe when Mesa's llvmpipe and lavapipe are too"),
         worker: Some(WEBGL_WORKER),
         missing_hint: no_hint,
         fast_compile: false,
@@ -348,14 +348,15 @@ mod tests {
     fn the_unknown_backend_error_lists_every_kind() {
         assert_eq!(
             patterns(),
-            "soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, webgl:chromium, vk:*, mock:<script>"
+            "soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, webgl:*, vk:*, mock:<script>"
         );
         assert!(kind_of("egl:llvmpipe:core").is_some_and(|k| k.prefix == "egl"));
         assert!(kind_of("soft").is_some_and(|k| k.prefix == "soft"));
         assert!(kind_of("nonsense:x").is_none());
         assert!(kind_of("egl@/opt/vendor/lib:native:es3").is_some_and(|k| k.prefix == "egl"));
         assert_eq!(help().lines().count(), KINDS.len() + 1);
-        assert!(help().contains("\n  webgl:chromium: WebGL 2.0 in headless Chromium (ANGLE on SwiftShader), the es300 path, in a webgl-worker child\n"));
+        assert!(help().contains("\n  webgl:*: webgl:chromium|chromium-gles|chromium-lavapipe, WebGL 2.0 in headless Chromium on ANGLE's Vulkan back end on SwiftShader, its OpenGL ES back end on Mesa's llvmpipe, its Vulkan back end on Mesa's lavapipe, the es300 path, in a webgl-worker child\n"));
+        assert!(kind_of("webgl:chromium-lavapipe").is_some_and(|k| k.prefix == "webgl"));
         assert!(help().ends_with("\n  mock:<script>: a scripted implementation for testing the runner itself, in a mock-worker child"));
     }
 
@@ -364,12 +365,14 @@ mod tests {
         assert_eq!(
             default_help(),
             "soft, every EGL driver found on this machine, every OSMesa driver found on this \
-             machine, webgl:chromium when Chromium is installed, vk:lavapipe and vk:swiftshader \
-             when their ICDs are installed"
+             machine, webgl:chromium when Chromium is installed, webgl:chromium-gles and \
+             webgl:chromium-lavapipe when Mesa's llvmpipe and lavapipe are too, vk:lavapipe and \
+             vk:swiftshader when their ICDs are installed"
         );
         assert!(help().lines().next().is_some_and(|l| l.ends_with(
             "Default: soft, every EGL driver found on this machine, every OSMesa driver found on \
-             this machine, webgl:chromium when Chromium is installed, vk:lavapipe and \
+             this machine, webgl:chromium when Chromium is installed, webgl:chromium-gles and \
+             webgl:chromium-lavapipe when Mesa's llvmpipe and lavapipe are too, vk:lavapipe and \
              vk:swiftshader when their ICDs are installed."
         )));
     }
@@ -408,6 +411,7 @@ mod tests {
         assert_eq!(of("egl:llvmpipe:core"), Some(GL_WORKER));
         assert_eq!(of("osmesa:llvmpipe:core"), Some(GL_WORKER));
         assert_eq!(of("webgl:chromium"), Some(WEBGL_WORKER));
+        assert_eq!(of("webgl:chromium-gles"), Some(WEBGL_WORKER));
         assert_eq!(of("mock:pass"), Some(MOCK_WORKER));
         assert_eq!(of("soft"), None);
         assert_eq!(of("exec:./impl"), None);
@@ -433,8 +437,24 @@ mod tests {
     #[test]
     fn a_webgl_default_is_absent_or_runs_never_missing() {
         let found = webgl::probe_kind("webgl");
-        assert_eq!(found.len(), 1);
-        assert_eq!(found[0].0, "webgl:chromium");
-        assert!(matches!(found[0].1, Found::Runs | Found::Absent(_)));
+        let names: Vec<&str> = found.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(
+            names,
+            [
+                "webgl:chromium",
+                "webgl:chromium-gles",
+                "webgl:chromium-lavapipe"
+            ]
+        );
+        for (name, f) in &found {
+            match f {
+                Found::Runs => {}
+                // What is missing, with the command that installs the browser and the driver.
+                Found::Absent(why) => {
+                    assert!(why.contains("apt-get install -y chromium"), "{name}: {why}")
+                }
+                other => panic!("{name}: {other:?}"),
+            }
+        }
     }
 }

@@ -197,8 +197,9 @@ pub type Unavailable = (String, String);
 /// The backends of a run that names none, and those left out of it, each list with the reason.
 #[derive(Debug, Default)]
 pub struct Defaults {
-    /// Run: `soft`, every GL backend a machine with Mesa offers and `webgl:chromium` when
-    /// Chromium is installed (each kind's [`kinds::DefaultInstances`]).
+    /// Run: `soft`, every GL backend a machine with Mesa offers, `webgl:chromium` when Chromium
+    /// is installed and its `-gles` / `-lavapipe` siblings when Mesa's llvmpipe / lavapipe are
+    /// too, and the Vulkan drivers (each kind's [`kinds::DefaultInstances`]).
     pub run: Vec<String>,
     /// Cannot start here (a driver not installed or hidden): the run goes on without them and exits
     /// 96 unless `--skip-missing`. Combinations that can never work (OSMesa with ES, OSMesa with

@@ -1,6 +1,7 @@
 //! `shadowcheck attribute RUN_DIR...`: which layer broke each failure of a layered backend (zink,
-//! WebGL), from the answers of the Vulkan driver under it to the same lookups in the same runs (the
-//! rules are `shadowcheck_runner::attribute`). Markdown on stdout, or JSON with `--json`;
+//! WebGL on ANGLE), from the answers of the driver under it in the same runs: a Vulkan driver's to
+//! the same lookups, or, under ANGLE's OpenGL ES back end, `egl:llvmpipe:es3`'s to the same tests
+//! (the rules are `shadowcheck_runner::attribute`). Markdown on stdout, or JSON with `--json`;
 //! `--markdown FILE` also writes the Markdown to FILE.
 //!
 //! Exit 0 when the attribution was made (with or without failures to attribute); 96 on bad input
@@ -18,9 +19,9 @@ use std::process::ExitCode;
 #[derive(clap::Args)]
 pub struct Args {
     /// `shadowcheck run --out` directories (each holding results.jsonl), or results.jsonl files:
-    /// together they must hold the layered backend's results and the Vulkan driver's (e.g.
-    /// `run -b egl:zink:core -b vk:lavapipe`); a later input's record of the same (backend,
-    /// test) replaces an earlier.
+    /// together they must hold the layered backend's results and the lower driver's (e.g.
+    /// `run -b egl:zink:core -b vk:lavapipe`, `run -b webgl:chromium-gles -b egl:llvmpipe:es3`);
+    /// a later input's record of the same (backend, test) replaces an earlier.
     #[arg(required = true, value_name = "RUN_DIR")]
     runs: Vec<PathBuf>,
     /// The fixtures holding the runs' cases, GL and Vulkan (file or directory, repeatable).

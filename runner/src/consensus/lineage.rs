@@ -92,6 +92,18 @@ pub const LINEAGE: &[Lineage] = &[
         front_end: "angle",
         why: "ANGLE over SwiftShader: ANGLE translates, the lookups are SwiftShader's",
     },
+    Lineage {
+        prefix: "webgl:chromium-gles",
+        unit: "gallivm",
+        front_end: "angle",
+        why: "ANGLE's OpenGL ES back end over Mesa's llvmpipe: ANGLE translates (and Mesa's GLES front end validates under it), the lookups are gallivm's",
+    },
+    Lineage {
+        prefix: "webgl:chromium-lavapipe",
+        unit: "gallivm",
+        front_end: "angle",
+        why: "ANGLE's Vulkan back end over lavapipe: ANGLE translates, the lookups are gallivm's",
+    },
 ];
 
 /// The lineage rule of `backend`, if one names it.

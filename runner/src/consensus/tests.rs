@@ -288,6 +288,8 @@ fn lineage_maps_shared_samplers_to_one_unit_and_the_rest_to_themselves() {
         ("egl:swiftshader:es3", "swiftshader"),
         ("egl:zink+swiftshader:compat", "swiftshader"),
         ("webgl:chromium", "swiftshader"),
+        ("webgl:chromium-gles", "gallivm"),
+        ("webgl:chromium-lavapipe", "gallivm"),
         (
             "egl@/opt/vendor/lib:native:es3",
             "egl@/opt/vendor/lib:native:es3",
@@ -313,6 +315,8 @@ fn front_ends_say_which_units_share_the_gl_front_end() {
         ("egl:zink+swiftshader:compat", "mesa"),
         ("egl:swiftshader:es3", "swiftshader-gles"),
         ("webgl:chromium", "angle"),
+        ("webgl:chromium-gles", "angle"),
+        ("webgl:chromium-lavapipe", "angle"),
         ("soft", "soft"),
         // A Vulkan driver driven directly has no GL front end: its own name stands for it.
         ("vk:lavapipe", "vk:lavapipe"),

@@ -1,5 +1,6 @@
 //! The page's "Layer attribution" section: the failure classes of `crate::attribute` when the
-//! inputs hold a layered backend (zink, WebGL) with failures and the Vulkan driver under it.
+//! inputs hold a layered backend (zink, WebGL on ANGLE) with failures and the driver under it
+//! (a Vulkan driver, or the OpenGL ES driver under ANGLE's OpenGL ES back end).
 
 use super::geometry::Geometry;
 use super::load::ReportInput;
@@ -24,7 +25,7 @@ pub fn render(input: &ReportInput, geo: &Geometry, o: &mut String) {
     if rows.is_empty() {
         return;
     }
-    o.push_str("<h2 id=\"s-layers\">Layer attribution</h2>\n<p class=\"note\">Each Warn and Fail of a layered backend against the Vulkan driver's answer to the same lookup (<code>shadowcheck attribute</code>): upper (the layer; also where Vulkan has no such lookup and the layer emulates it), lower (the driver fails it the same way), both, or no equivalent.</p>\n<table><tr><th>backend</th><th>lower layer</th><th>upper</th><th>lower</th><th>both</th><th>no equivalent</th></tr>\n");
+    o.push_str("<h2 id=\"s-layers\">Layer attribution</h2>\n<p class=\"note\">Each Warn and Fail of a layered backend against the lower layer's answer: the Vulkan driver's to the same lookup, or the OpenGL ES driver's to the same test under ANGLE's OpenGL ES back end (<code>shadowcheck attribute</code>): upper (the layer; also where Vulkan has no such lookup and the layer emulates it), lower (the driver fails it the same way), both, or no equivalent.</p>\n<table><tr><th>backend</th><th>lower layer</th><th>upper</th><th>lower</th><th>both</th><th>no equivalent</th></tr>\n");
     let t = attribute::tally(&rows);
     let mut backends: Vec<&str> = rows.iter().map(|r| r.backend.as_str()).collect();
     backends.sort();
