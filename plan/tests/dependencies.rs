@@ -58,3 +58,17 @@ fn the_webgl_worker_draws_from_the_plan_not_from_the_gl_worker() {
         "{deps:?}"
     );
 }
+
+#[test]
+fn the_webgpu_worker_draws_from_the_plan_not_from_the_gl_worker() {
+    let webgpu = Path::new(env!("CARGO_MANIFEST_DIR")).join("../webgpu/Cargo.toml");
+    let deps = dependencies(&webgpu);
+    assert!(
+        deps.iter().any(|d| d == "shadowcheck-plan.workspace"),
+        "{deps:?}"
+    );
+    assert!(
+        !deps.iter().any(|d| d.starts_with("shadowcheck-gl")),
+        "{deps:?}"
+    );
+}

@@ -169,7 +169,13 @@ mod tests {
         assert_eq!(hidden, table);
         assert_eq!(
             table.iter().map(|(s, _)| s.as_str()).collect::<Vec<_>>(),
-            ["gl-worker", "webgl-worker", "vk-worker", "mock-worker"]
+            [
+                "gl-worker",
+                "webgl-worker",
+                "vk-worker",
+                "webgpu-worker",
+                "mock-worker"
+            ]
         );
     }
 }

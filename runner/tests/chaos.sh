@@ -4,7 +4,7 @@
 #   attack | what was seen | exit code | OK (contract kept) or BROKEN
 # Usage, from the repository root:  bash runner/tests/chaos.sh [path/to/shadowcheck]
 # Needs python3; the GL attacks need Mesa (as installed by .ci/run) and are SKIPPED without it, the
-# WebGL kills need Chromium and are SKIPPED without it; the full-disk attack needs a tmpfs mount
+# WebGL and WebGPU kills need Chromium and are SKIPPED without it; the full-disk attack needs a tmpfs mount
 # (root) and is SKIPPED without one. Takes a few minutes.
 # It only reports: its exit status is the number of BROKEN lines.
 set -u
@@ -261,6 +261,35 @@ else
   line "webgl: kill -9 Chromium's GPU process" "SKIPPED (no Chromium)" - SKIPPED
   line "webgl: kill -9 the page's renderer" "SKIPPED (no Chromium)" - SKIPPED
   line "webgl: kill -9 the worker (profile folder)" "SKIPPED (no Chromium)" - SKIPPED
+fi
+# WebGPU backend (webgpu:chromium): Chromium's GPU process (Dawn's device) and the page's renderer
+# killed by PID during a run: the worker ends without answering what was in flight, the runner
+# re-runs it in a fresh browser, and the verdicts are a clean run's. SKIPPED without an adapter.
+kill_in_webgpu_run() { # DIR WHAT, as kill_in_run
+  "$SC" run -v -b webgpu:chromium --fixtures cases/fixtures/webgpu/2d --baseline "$T/g0/failures.csv" \
+    -o "$1" >"$1.out" 2>&1 &
+  local p=$! i victims=""
+  for i in $(seq 600); do
+    [ "$(cat "$1/results.jsonl" 2>/dev/null | wc -l)" -gt 1 ] && break
+    sleep 0.05
+  done
+  victims=$(descendants $p | grep -- "$2" | grep -v -- '--top-chrome' | awk '{print $1}')
+  [ -n "$victims" ] && kill -9 $victims
+  wait $p; echo "$? $(echo $victims | wc -w)"
+}
+if "$SC" webgpu-worker --probe >/dev/null 2>&1; then
+  "$SC" run -b webgpu:chromium --fixtures cases/fixtures/webgpu/2d -o "$T/g0" >/dev/null 2>&1
+  read -r c n <<<"$(kill_in_webgpu_run "$T/g1" '--type=gpu-process')"
+  lost=$(grep -c -e 'the WebGPU device is gone' -e "renderer process died" -e 'closed the DevTools pipe' "$T/g1.out")
+  same=$(cmp -s <(statuses "$T/g0") <(statuses "$T/g1") && echo same || echo different)
+  line "webgpu: kill -9 Chromium's GPU process" "$n killed, $lost device-gone exits, verdicts $same as a clean run's" $c "$(ok_if "[ $c = 0 ] && [ $n -ge 1 ] && [ $lost -ge 1 ] && [ $same = same ]")"
+  read -r c n <<<"$(kill_in_webgpu_run "$T/g2" '--type=renderer')"
+  died=$(grep -c "the page's renderer process died" "$T/g2.out")
+  same=$(cmp -s <(statuses "$T/g0") <(statuses "$T/g2") && echo same || echo different)
+  line "webgpu: kill -9 the page's renderer" "$n killed, $died renderer-died exits, verdicts $same" $c "$(ok_if "[ $c = 0 ] && [ $n -ge 1 ] && [ $died -ge 1 ] && [ $same = same ]")"
+else
+  line "webgpu: kill -9 Chromium's GPU process" "SKIPPED (no Chromium or no WebGPU adapter)" - SKIPPED
+  line "webgpu: kill -9 the page's renderer" "SKIPPED (no Chromium or no WebGPU adapter)" - SKIPPED
 fi
 printf '#!/bin/sh\necho "chaos-chromium: error while loading shared libraries" >&2\nsleep 40 &\nexit 127\n' >"$T/nochrome"
 chmod +x "$T/nochrome"

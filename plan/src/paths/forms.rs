@@ -176,7 +176,8 @@ pub fn offset_available_with(
 /// 2D-array shadow sampler, textureOffset / textureLodOffset on a 2D-array shadow sampler.
 pub fn uses_shadow_lod(key: &ShaderKey) -> bool {
     use Target::*;
-    key.kind == SamplerKind::Shadow
+    key.path != ApiPath::Wgsl
+        && key.kind == SamplerKind::Shadow
         && !key.proj
         && key.gather.is_none()
         && match key.form {

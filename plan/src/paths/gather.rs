@@ -11,7 +11,12 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
     let t = case.texture.target;
     // GLSL 4.50 for Vulkan has GLSL 4.50's gathers (SPIR-V OpImageDrefGather; the four offsets
     // of textureGatherOffsets need shaderImageGatherExtended, which the Vulkan worker checks).
-    if !matches!(path, ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan) {
+    // WGSL §17.7 textureGatherCompare: texture_depth_2d (with an optional const offset),
+    // _2d_array (likewise), _cube and _cube_array; no four-offset form.
+    if !matches!(
+        path,
+        ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan | ApiPath::Wgsl
+    ) {
         return Err(format!("{path} has no shadow textureGather"));
     }
     let kind = sampler_kind(case);
@@ -23,13 +28,22 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
         Target::T2d | Target::T2dArray | Target::Cube | Target::CubeArray
     );
     let gl_target = es_target || t == Target::Rect;
-    if !(gl_target && (path != ApiPath::Es300 || es_target)) || l.projective {
+    if !(gl_target && (!matches!(path, ApiPath::Es300 | ApiPath::Wgsl) || es_target))
+        || l.projective
+    {
         return Err(format!(
             "{path} has no shadow textureGather on a {t} texture"
         ));
     }
     let i8s = |v: i32| i8::try_from(v).map_err(|_| format!("gather offset {v} out of range"));
-    let offset = [i8s(l.offset[0])?, i8s(l.offset[1])?];
+    if path == ApiPath::Wgsl && l.gather.as_ref().is_some_and(|g| g.offsets.is_some()) {
+        return Err("WGSL has no textureGatherCompare with four offsets (WGSL §17.7)".into());
+    }
+    let offset = if path == ApiPath::Wgsl && l.offset != [0; 3] && !t.is_cube() {
+        super::wgsl::offset(l.offset)?
+    } else {
+        [i8s(l.offset[0])?, i8s(l.offset[1])?]
+    };
     let call = match l.gather.as_ref().and_then(|g| g.offsets) {
         Some(o) => {
             let mut k = [[0i8; 2]; 4];
@@ -76,10 +90,11 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
         x: dref,
         dx,
         dy,
-        note: if derivs {
-            "textureGather, coordinate varying by the case's λ gradients (ignored by gather)".into()
-        } else {
-            "textureGather".into()
+        note: match (path == ApiPath::Wgsl, derivs) {
+            (true, true) => "textureGatherCompare, coordinate varying by the case's λ gradients (ignored by gather)".into(),
+            (true, false) => "textureGatherCompare".into(),
+            (false, true) => "textureGather, coordinate varying by the case's λ gradients (ignored by gather)".into(),
+            (false, false) => "textureGather".into(),
         },
     })
 }

@@ -160,6 +160,11 @@ pub fn plan_in(
     prefer: LookupForm,
     shadow_lod: bool,
 ) -> Result<Plan, String> {
+    if path == ApiPath::Wgsl {
+        if let Some(why) = wgsl::unexpressible(case, l) {
+            return Err(why);
+        }
+    }
     if l.gather.is_some() {
         return gather::plan(path, case, l);
     }
@@ -178,6 +183,8 @@ pub fn plan_in(
     };
     let how = if uses_shadow_lod(&key) {
         format!("{how} (EXT_texture_shadow_lod overload)")
+    } else if path == ApiPath::Wgsl {
+        wgsl::note(form).to_string()
     } else {
         how.to_string()
     };
@@ -210,6 +217,8 @@ pub fn plan_in(
 fn texel_offset(path: ApiPath, t: Target, l: &Lookup) -> Result<[i8; 2], String> {
     if l.offset == [0; 3] {
         Ok([0, 0])
+    } else if path == ApiPath::Wgsl && !t.is_cube() {
+        wgsl::offset(l.offset)
     } else if !matches!(
         path,
         ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
@@ -263,6 +272,10 @@ fn choose_form(
     };
     // Stable: the preferred form first, the others in their usual order.
     forms.sort_by_key(|(f, _)| !preferred(f));
+    if path == ApiPath::Wgsl && !wgsl::level_zero_equivalent(case, l) {
+        // textureSampleCompareLevel reads level 0 only (`wgsl.rs`).
+        forms.retain(|(f, _)| *f != LodForm::Lod);
+    }
     let ext_for = |f: &LodForm| {
         shadow_lod
             && match prefer {
@@ -396,6 +409,7 @@ mod forms;
 mod gather;
 #[cfg(test)]
 mod tests;
+pub mod wgsl;
 
 pub use forms::{
     available, available_with, offset_available, offset_available_with, uses_shadow_lod,

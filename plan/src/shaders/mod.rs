@@ -527,3 +527,4 @@ pub fn arbfp_unit_weights(unit: usize, units: usize) -> Vec<[f32; 4]> {
 #[cfg(test)]
 mod tests;
 pub mod vulkan;
+pub mod wgsl;

@@ -7,7 +7,7 @@
 //! Adding a kind: README.md, "Adding a backend".
 
 use super::exec::{self, ExecBackend, ProcessCommand};
-use super::{gl, mock, soft, vk, webgl, Backend, BackendError, Options};
+use super::{gl, mock, soft, vk, webgl, webgpu, Backend, BackendError, Options};
 
 /// Opens a backend of one kind: the full name, the part after the first `:` (empty when none),
 /// and the options of child-process backends.
@@ -71,6 +71,12 @@ pub const VK_WORKER: Worker = Worker {
     subcommand: "vk-worker",
     about:
         "(internal) A Vulkan worker process (`vk:*`) speaking runner/PROTOCOL.md on stdin/stdout.",
+};
+/// The WebGPU backends' child: headless Chromium with a WebGPU page (shadowcheck-webgpu).
+pub const WEBGPU_WORKER: Worker = Worker {
+    subcommand: "webgpu-worker",
+    about:
+        "(internal) The `webgpu:*` worker: WebGPU in headless Chromium speaking runner/PROTOCOL.md.",
 };
 /// `mock:<script>`'s child: the scripted implementation of [`mock`].
 pub const MOCK_WORKER: Worker = Worker {
@@ -161,6 +167,16 @@ pub const KINDS: &[BackendKind] = &[
         defaults: DefaultInstances::Probed(vk::probe_kind, "vk:lavapipe and vk:swiftshader when their ICDs are installed"),
         worker: Some(VK_WORKER),
         missing_hint: vk::missing_hint,
+        fast_compile: false,
+    },
+    BackendKind {
+        prefix: "webgpu",
+        pattern: "webgpu:chromium, webgpu:chromium-compat",
+        help: "WebGPU in headless Chromium (Dawn on SwiftShader; -compat: Dawn's OpenGL ES backend on ANGLE, compatibility mode), the wgsl path",
+        open: open_webgpu,
+        defaults: DefaultInstances::Probed(webgpu::probe_kind, "webgpu:chromium when Chromium is installed"),
+        worker: Some(WEBGPU_WORKER),
+        missing_hint: webgpu_hint,
         fast_compile: false,
     },
     BackendKind {
@@ -278,6 +294,10 @@ fn no_hint(_: &str) -> Option<&'static str> {
     None
 }
 
+fn webgpu_hint(_: &str) -> Option<&'static str> {
+    Some("the WebGPU backends need Chromium: apt-get install -y chromium")
+}
+
 fn setup(name: &str, msg: impl ToString) -> BackendError {
     BackendError::Setup {
         backend: name.into(),
@@ -327,6 +347,11 @@ fn open_vk(name: &str, _: &str, opts: &Options) -> Result<Box<dyn Backend>, Back
     Ok(Box::new(ExecBackend::start(name, cmd, opts)?))
 }
 
+fn open_webgpu(name: &str, _: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
+    let cmd = webgpu::worker_command(name).map_err(|e| setup(name, e))?;
+    Ok(Box::new(ExecBackend::start(name, cmd, opts)?))
+}
+
 fn open_mock(name: &str, rest: &str, opts: &Options) -> Result<Box<dyn Backend>, BackendError> {
     let exe = std::env::current_exe().map_err(|e| setup(name, e))?;
     mock::Script::parse(rest).map_err(|msg| setup(name, msg))?;
@@ -348,7 +373,7 @@ mod tests {
     fn the_unknown_backend_error_lists_every_kind() {
         assert_eq!(
             patterns(),
-            "soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, webgl:*, vk:*, mock:<script>"
+            "soft, soft:<spec>, exec:<command>, egl:*, osmesa:*, webgl:*, vk:*, webgpu:chromium, webgpu:chromium-compat, mock:<script>"
         );
         assert!(kind_of("egl:llvmpipe:core").is_some_and(|k| k.prefix == "egl"));
         assert!(kind_of("soft").is_some_and(|k| k.prefix == "soft"));
@@ -367,13 +392,15 @@ mod tests {
             "soft, every EGL driver found on this machine, every OSMesa driver found on this \
              machine, webgl:chromium when Chromium is installed, webgl:chromium-gles and \
              webgl:chromium-lavapipe when Mesa's llvmpipe and lavapipe are too, vk:lavapipe and \
-             vk:swiftshader when their ICDs are installed"
+             vk:swiftshader when their ICDs are installed, webgpu:chromium when Chromium is \
+             installed"
         );
         assert!(help().lines().next().is_some_and(|l| l.ends_with(
             "Default: soft, every EGL driver found on this machine, every OSMesa driver found on \
              this machine, webgl:chromium when Chromium is installed, webgl:chromium-gles and \
              webgl:chromium-lavapipe when Mesa's llvmpipe and lavapipe are too, vk:lavapipe and \
-             vk:swiftshader when their ICDs are installed."
+             vk:swiftshader when their ICDs are installed, webgpu:chromium when Chromium is \
+             installed."
         )));
     }
 
@@ -405,7 +432,18 @@ mod tests {
 
     #[test]
     fn workers_are_listed_once_each() {
-        assert_eq!(workers(), [GL_WORKER, WEBGL_WORKER, VK_WORKER, MOCK_WORKER]);
+        assert_eq!(
+            workers(),
+            [
+                GL_WORKER,
+                WEBGL_WORKER,
+                VK_WORKER,
+                WEBGPU_WORKER,
+                MOCK_WORKER
+            ]
+        );
+        assert_eq!(of_kind("webgpu:chromium"), Some(WEBGPU_WORKER));
+        assert_eq!(of_kind("webgpu:chromium-compat"), Some(WEBGPU_WORKER));
         assert_eq!(of_kind("vk:lavapipe"), Some(VK_WORKER));
         let of = of_kind;
         assert_eq!(of("egl:llvmpipe:core"), Some(GL_WORKER));
@@ -428,10 +466,12 @@ mod tests {
         assert_eq!(hint("webgl:chromium"), None);
         assert!(hint("vk:swiftshader").is_some_and(|h| h.contains("apt-get install -y chromium")));
         assert_eq!(hint("vk:native"), None);
+        assert!(hint("webgpu:chromium").is_some_and(|h| h.contains("apt-get install -y chromium")));
         assert_eq!(hint("mock:crash"), None);
         let fast = |n: &str| kind_of(n).is_some_and(|k| k.fast_compile);
         assert!(fast("egl:llvmpipe:core") && fast("osmesa:llvmpipe:core"));
         assert!(!fast("soft") && !fast("webgl:chromium") && !fast("mock:x"));
+        assert!(!fast("webgpu:chromium"));
     }
 
     #[test]

@@ -5,7 +5,7 @@
 //! case in order. The names (`--backend`) and everything else the runner knows about each kind of
 //! backend (how it opens, its default instances, its worker subcommand, its help) are one table,
 //! [`kinds::KINDS`]; each kind with code of its own has a module here (`soft`, `exec`, `gl`,
-//! `webgl`, `mock`).
+//! `webgl`, `vk`, `webgpu`, `mock`).
 
 mod answer;
 pub mod command;
@@ -18,6 +18,7 @@ pub mod soft;
 pub mod sweep;
 pub mod vk;
 pub mod webgl;
+pub mod webgpu;
 
 use shadowcheck_model::{ApiPath, Case, StateCase, StateObserved, Texels};
 pub use shadowcheck_protocol::{Capabilities, Support};
@@ -197,9 +198,10 @@ pub type Unavailable = (String, String);
 /// The backends of a run that names none, and those left out of it, each list with the reason.
 #[derive(Debug, Default)]
 pub struct Defaults {
-    /// Run: `soft`, every GL backend a machine with Mesa offers, `webgl:chromium` when Chromium
-    /// is installed and its `-gles` / `-lavapipe` siblings when Mesa's llvmpipe / lavapipe are
-    /// too, and the Vulkan drivers (each kind's [`kinds::DefaultInstances`]).
+    /// Run: `soft`, every GL backend a machine with Mesa offers, the Vulkan drivers found,
+    /// `webgl:chromium` when Chromium is installed and its `-gles` / `-lavapipe` siblings when
+    /// Mesa's llvmpipe / lavapipe are too, and `webgpu:chromium` when Chromium is installed (each
+    /// kind's [`kinds::DefaultInstances`]).
     pub run: Vec<String>,
     /// Cannot start here (a driver not installed or hidden): the run goes on without them and exits
     /// 96 unless `--skip-missing`. Combinations that can never work (OSMesa with ES, OSMesa with

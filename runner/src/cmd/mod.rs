@@ -19,6 +19,8 @@ pub mod summarize;
 pub mod vk_worker;
 #[allow(clippy::print_stdout)]
 pub mod webgl_worker;
+#[allow(clippy::print_stdout)]
+pub mod webgpu_worker;
 pub mod workers;
 
 /// Writes `text` to stdout. A reader that went away (`shadowcheck explain ... | head`) is not an

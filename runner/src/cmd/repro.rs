@@ -22,7 +22,7 @@ use std::process::ExitCode;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The backend the test failed on (egl:*, osmesa:* or vk:*, as in `run -b`).
+    /// The backend the test failed on (egl:*, osmesa:*, vk:* or webgpu:*, as in `run -b`).
     #[arg(
         long = "backend",
         short = 'b',
@@ -31,7 +31,7 @@ pub struct Args {
     )]
     backend: Option<String>,
     /// The test: `<case id>@<api>` as in results and baselines (api: ff, arbfp, glsl120, glsl130,
-    /// core, es100, es300, vk).
+    /// core, es100, es300, vk, wgsl).
     #[arg(
         long = "case",
         value_name = "ID",
@@ -116,7 +116,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         super::outln!(
             "wrote {}/{{{},{},{},{}}}",
             dir.display(),
-            repro::REPRO_C,
+            repro::program_file(&s),
             repro::BUILD_SH,
             repro::OUTPUT_TXT,
             repro::REPORT_MD
@@ -129,7 +129,7 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         judged.outcome.as_str(),
         s.backend,
         repro::REPORT_MD,
-        repro::REPRO_C,
+        repro::program_file(&s),
         repro::BUILD_SH,
         dir.display()
     );

@@ -1,8 +1,10 @@
 //! The hidden worker subcommands: the child processes of the backend kinds whose table entry
 //! names a [`Worker`](shadowcheck_runner::backend::kinds::Worker) (`shadowcheck_runner::backend::kinds::KINDS`).
 //! Each subcommand's name and description come from the table; the variant says which code runs.
-use super::{gl_worker, mock_worker, vk_worker, webgl_worker};
-use shadowcheck_runner::backend::kinds::{GL_WORKER, MOCK_WORKER, VK_WORKER, WEBGL_WORKER};
+use super::{gl_worker, mock_worker, vk_worker, webgl_worker, webgpu_worker};
+use shadowcheck_runner::backend::kinds::{
+    GL_WORKER, MOCK_WORKER, VK_WORKER, WEBGL_WORKER, WEBGPU_WORKER,
+};
 use std::process::ExitCode;
 
 #[derive(clap::Subcommand)]
@@ -13,6 +15,8 @@ pub enum WorkerCommand {
     Webgl(webgl_worker::Args),
     #[command(name = VK_WORKER.subcommand, about = VK_WORKER.about, hide = true)]
     Vk(vk_worker::Args),
+    #[command(name = WEBGPU_WORKER.subcommand, about = WEBGPU_WORKER.about, hide = true)]
+    Webgpu(webgpu_worker::Args),
     #[command(name = MOCK_WORKER.subcommand, about = MOCK_WORKER.about, hide = true)]
     Mock(mock_worker::Args),
 }
@@ -23,6 +27,7 @@ impl WorkerCommand {
             WorkerCommand::Gl(a) => gl_worker::main(a),
             WorkerCommand::Webgl(a) => webgl_worker::main(a),
             WorkerCommand::Vk(a) => vk_worker::main(a),
+            WorkerCommand::Webgpu(a) => webgpu_worker::main(a),
             WorkerCommand::Mock(a) => mock_worker::main(a),
         }
     }

@@ -22,8 +22,7 @@ pub struct Lineage {
 /// `osmesa:llvmpipe` are two kinds of one lineage; a per-kind column could not say either. No
 /// opener needs the lineage either: only this argument about independence does.
 ///
-/// A backend no rule names (`exec:...`, `mock:...`, `egl@DIR:native:*`, a future `vk:*` or
-/// `webgpu:*`) is its own unit, named by its backend string: unknown code is assumed independent.
+/// A backend no rule names (`exec:...`, `mock:...`, `egl@DIR:native:*`, `vk:native`) is its own unit, named by its backend string: unknown code is assumed independent.
 /// `egl@DIR:` is matched as `egl:` (another build of the same driver is the same code).
 pub const LINEAGE: &[Lineage] = &[
     Lineage {
@@ -103,6 +102,18 @@ pub const LINEAGE: &[Lineage] = &[
         unit: "gallivm",
         front_end: "angle",
         why: "ANGLE's Vulkan back end over lavapipe: ANGLE translates, the lookups are gallivm's",
+    },
+    Lineage {
+        prefix: "webgpu:chromium",
+        unit: "swiftshader",
+        front_end: "dawn",
+        why: "Dawn's Vulkan backend over SwiftShader: Dawn validates and translates WGSL, the lookups are SwiftShader's",
+    },
+    Lineage {
+        prefix: "webgpu:chromium-compat",
+        unit: "swiftshader",
+        front_end: "dawn-angle",
+        why: "Dawn's OpenGL ES backend over ANGLE's Vulkan back end over SwiftShader: the lookups are SwiftShader's",
     },
 ];
 

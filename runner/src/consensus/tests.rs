@@ -290,6 +290,9 @@ fn lineage_maps_shared_samplers_to_one_unit_and_the_rest_to_themselves() {
         ("webgl:chromium", "swiftshader"),
         ("webgl:chromium-gles", "gallivm"),
         ("webgl:chromium-lavapipe", "gallivm"),
+        // Dawn on SwiftShader's Vulkan driver (or on ANGLE over it) samples with SwiftShader.
+        ("webgpu:chromium", "swiftshader"),
+        ("webgpu:chromium-compat", "swiftshader"),
         (
             "egl@/opt/vendor/lib:native:es3",
             "egl@/opt/vendor/lib:native:es3",
@@ -317,6 +320,8 @@ fn front_ends_say_which_units_share_the_gl_front_end() {
         ("webgl:chromium", "angle"),
         ("webgl:chromium-gles", "angle"),
         ("webgl:chromium-lavapipe", "angle"),
+        ("webgpu:chromium", "dawn"),
+        ("webgpu:chromium-compat", "dawn-angle"),
         ("soft", "soft"),
         // A Vulkan driver driven directly has no GL front end: its own name stands for it.
         ("vk:lavapipe", "vk:lavapipe"),

@@ -105,7 +105,7 @@ fn intervals(a: Option<&Acceptance>) -> (String, usize) {
     (format!("{{{body}}}"), n)
 }
 
-fn layout_char(c: Channel) -> char {
+pub(super) fn layout_char(c: Channel) -> char {
     match c {
         Channel::R => 'r',
         Channel::Zero => '0',

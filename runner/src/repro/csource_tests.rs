@@ -51,7 +51,9 @@ fn subject() -> Subject {
 fn gl(s: &Subject) -> BackendName {
     match s.backend {
         super::super::Backend::Gl(b) => b,
-        super::super::Backend::Vk(_) => panic!("a GL subject"),
+        super::super::Backend::Vk(_) | super::super::Backend::Webgpu(_) => {
+            panic!("a GL subject")
+        }
     }
 }
 

@@ -1,7 +1,8 @@
 //! `shadowcheck repro`: from one failing test to a standalone reproducer and a bug report.
 //!
 //! For a Vulkan backend (`vk:*`) the program is [`vulkan`]'s (Vulkan C, with the SPIR-V built from
-//! the GLSL files beside it); the rest below is the same. For a GL backend (`egl:*`, `osmesa:*`)
+//! the GLSL files beside it); for a WebGPU backend (`webgpu:*`) it is [`webgpu`]'s page
+//! (`repro.html`, run by build.sh in headless Chromium); the rest below is the same. For a GL backend (`egl:*`, `osmesa:*`)
 //! and a test `<case id>@<api>` this writes into a directory:
 //! - `repro.c` ([`csource`]): a C program that creates the worker's context, texture, sampler state
 //!   and lookup, draws once, prints expected (from the oracle, as constants) and observed, and exits 1
@@ -19,6 +20,7 @@ pub mod csource;
 pub mod report;
 mod tokens;
 pub mod vulkan;
+pub mod webgpu;
 
 use shadowcheck_gl::{BackendName, Driver};
 use shadowcheck_model::{ApiPath, Case, Expectation};
@@ -27,7 +29,7 @@ use std::process::Command;
 
 #[derive(Debug, thiserror::Error)]
 pub enum ReproError {
-    #[error("bad test id `{0}`: expected `<case id>@<api>` with api one of ff, arbfp, glsl120, glsl130, core, es100, es300, vk")]
+    #[error("bad test id `{0}`: expected `<case id>@<api>` with api one of ff, arbfp, glsl120, glsl130, core, es100, es300, vk, wgsl")]
     BadTestId(String),
     #[error("{0}")]
     BadBackend(String),
@@ -76,11 +78,13 @@ fn io(what: impl Into<String>) -> impl FnOnce(std::io::Error) -> ReproError {
     move |source| ReproError::Io { what, source }
 }
 
-/// The backend a reproducer is written for: a GL one (EGL or OSMesa) or a Vulkan driver.
+/// The backend a reproducer is written for: a GL one (EGL or OSMesa), a Vulkan driver, or WebGPU
+/// in headless Chromium.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Backend {
     Gl(BackendName),
     Vk(shadowcheck_vk::Driver),
+    Webgpu(shadowcheck_webgpu::launch::Variant),
 }
 
 impl std::fmt::Display for Backend {
@@ -88,14 +92,25 @@ impl std::fmt::Display for Backend {
         match self {
             Backend::Gl(b) => b.fmt(f),
             Backend::Vk(d) => write!(f, "vk:{}", d.key()),
+            Backend::Webgpu(v) => f.write_str(&v.name()),
         }
     }
 }
 
 impl std::str::FromStr for Backend {
     type Err = ReproError;
-    /// `vk:<driver>` is a Vulkan backend; anything else must be a GL backend name.
+    /// `vk:<driver>` is a Vulkan backend, `webgpu:<variant>` a WebGPU one; anything else must be
+    /// a GL backend name.
     fn from_str(s: &str) -> Result<Backend, ReproError> {
+        if s.starts_with("webgpu:") {
+            return shadowcheck_webgpu::launch::parse_backend(s)
+                .map(Backend::Webgpu)
+                .ok_or_else(|| {
+                    ReproError::BadBackend(format!(
+                        "unknown WebGPU backend `{s}` (expected webgpu:chromium or webgpu:chromium-compat)"
+                    ))
+                });
+        }
         if s.starts_with("vk:") {
             return shadowcheck_vk::parse_backend(s)
                 .map(Backend::Vk)
@@ -103,7 +118,7 @@ impl std::str::FromStr for Backend {
         }
         s.parse().map(Backend::Gl).map_err(|e: shadowcheck_gl::WorkerError| {
             ReproError::BadBackend(format!(
-                "{e} (repro writes C programs for the GL backends egl:* and osmesa:* and the Vulkan backends vk:*)"
+                "{e} (repro writes C programs for the GL backends egl:* and osmesa:* and the Vulkan backends vk:*, and pages for the WebGPU backends webgpu:*)"
             ))
         })
     }
@@ -115,6 +130,7 @@ impl Backend {
         match self {
             Backend::Gl(b) => b.api.paths(),
             Backend::Vk(_) => &[ApiPath::Vulkan],
+            Backend::Webgpu(_) => &[ApiPath::Wgsl],
         }
     }
 }
@@ -169,6 +185,7 @@ pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subjec
             }
         }
         Backend::Vk(d) => vulkan::check_driver(d)?,
+        Backend::Webgpu(_) => webgpu::check_browser()?,
     }
     let (id, api) = parse_test_id(test)?;
     if !name.paths().contains(&api) {
@@ -233,6 +250,7 @@ pub fn packages(s: &Subject) -> (String, String) {
     let b = match s.backend {
         Backend::Gl(b) => b,
         Backend::Vk(d) => return vulkan::packages(d),
+        Backend::Webgpu(_) => return webgpu::packages(),
     };
     let dev = match (b.platform, b.api.is_es()) {
         (Platform::Osmesa, _) => "gcc libosmesa6-dev libgl-dev",
@@ -257,6 +275,7 @@ pub fn build_line(s: &Subject) -> String {
     match s.backend {
         Backend::Gl(b) => csource::build_line(b),
         Backend::Vk(_) => vulkan::BUILD_LINE.to_string(),
+        Backend::Webgpu(_) => webgpu::BUILD_LINE.to_string(),
     }
 }
 
@@ -265,6 +284,7 @@ pub fn env_words(s: &Subject) -> String {
     match s.backend {
         Backend::Gl(b) => csource::env_words(b),
         Backend::Vk(d) => vulkan::env_words(d),
+        Backend::Webgpu(_) => String::new(),
     }
 }
 
@@ -274,12 +294,16 @@ pub fn driver_fields(s: &Subject) -> &'static [&'static str] {
     match s.backend {
         Backend::Gl(_) => &["GL_RENDERER", "GL_VERSION", "GL_SHADING_LANGUAGE_VERSION"],
         Backend::Vk(_) => &vulkan::FIELDS,
+        Backend::Webgpu(_) => &webgpu::FIELDS,
     }
 }
 
 /// The text of build.sh: build, then run with the driver's environment; its exit status is the
 /// reproducer's.
 pub fn build_sh(s: &Subject) -> String {
+    if let Backend::Webgpu(v) = s.backend {
+        return webgpu::run_script(s, v);
+    }
     let (dev, run) = packages(s);
     let env = env_words(s);
     format!(
@@ -331,11 +355,31 @@ pub const BUILD_SH: &str = "build.sh";
 pub const OUTPUT_TXT: &str = "output.txt";
 pub const REPORT_MD: &str = "REPORT.md";
 
+/// The program file of a reproducer: repro.c, or the WebGPU page repro.html.
+pub fn program_file(s: &Subject) -> &'static str {
+    match s.backend {
+        Backend::Webgpu(_) => webgpu::REPRO_HTML,
+        _ => REPRO_C,
+    }
+}
+
+/// How the reproducer is run, after build.sh has built it (for REPORT.md).
+pub fn run_hint(s: &Subject) -> String {
+    match s.backend {
+        Backend::Webgpu(_) => format!(
+            "it runs {} in headless Chromium with the backend's flags",
+            webgpu::REPRO_HTML
+        ),
+        _ => format!("{}; then {} ./repro", build_line(s), env_words(s)),
+    }
+}
+
 /// Writes repro.c and build.sh (and, for Vulkan, the GLSL) into `dir` (created).
 pub fn write_sources(s: &Subject, dir: &Path) -> Result<(), ReproError> {
     let c = match s.backend {
         Backend::Gl(b) => csource::program(s, b).map_err(ReproError::NotPlanned)?,
         Backend::Vk(_) => return vulkan::write_sources(s, dir),
+        Backend::Webgpu(v) => return webgpu::write_sources(s, v, dir),
     };
     std::fs::create_dir_all(dir).map_err(io(format!("creating {}", dir.display())))?;
     std::fs::write(dir.join(REPRO_C), c).map_err(io("writing repro.c"))?;
@@ -371,6 +415,19 @@ pub fn build_and_run(s: &Subject, dir: &Path) -> Result<RunOutput, ReproError> {
     std::fs::write(dir.join(OUTPUT_TXT), text).map_err(io("writing output.txt"))?;
     if r.code != 0 && r.code != 1 {
         let started = driver_fields(s).iter().any(|k| r.field(k).is_some());
+        if let Backend::Webgpu(_) = s.backend {
+            if r.stderr.contains("chromium not found") {
+                return Err(ReproError::Missing {
+                    missing: "chromium is not installed".into(),
+                    package: "chromium".into(),
+                    log: r.stderr,
+                });
+            }
+            return Err(ReproError::Setup {
+                code: r.code,
+                log: format!("{}{}", r.stdout, r.stderr),
+            });
+        }
         if !started && !dir.join("repro").exists() {
             if let Backend::Vk(_) = s.backend {
                 return Err(vulkan::build_error(&r.stderr));

@@ -196,7 +196,7 @@ pub fn program(s: &Subject) -> Result<Program, String> {
 fn driver(s: &Subject) -> Driver {
     match s.backend {
         super::Backend::Vk(d) => d,
-        super::Backend::Gl(_) => Driver::Native,
+        super::Backend::Gl(_) | super::Backend::Webgpu(_) => Driver::Native,
     }
 }
 

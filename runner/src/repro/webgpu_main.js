@@ -1,0 +1,157 @@
+// The fixed part of the page (after the generated constants): adapter and device, the texture
+// written through frag_depth, the sampler and view, one draw of slot 0's quad, the read-back and
+// the verdict. Everything runs inside pushErrorScope("validation"): an error is printed and no
+// verdict is given. Each line goes to the page and to the console (build.sh reads the browser's
+// console log); END is the last line.
+const out = document.getElementById("out");
+const END = "shadowcheck-repro: end";
+function print(s) {
+  out.textContent += s + "\n";
+  for (const line of s.split("\n")) console.log(line);
+}
+
+function inSet(v, set) {
+  return set.some(([lo, hi]) => v >= lo && v <= hi);
+}
+
+// Does channel value v meet the layout's rule for channel c under the given set (a gather
+// component 'g0'..'g3': under its own set of `gather`)?
+function channelOk(c, v, set, gather) {
+  if (c[0] === "g") return gather !== null && inSet(v, gather[Number(c[1])]);
+  switch (c) {
+    case "r": return inSet(v, set);
+    case "z": return v === 0 || inSet(v, set);
+    case "0": return v === 0;
+    case "1": return v === 1;
+    default: return true;
+  }
+}
+
+// Accepted when one reading of the layout accepts every channel (each tier on its own).
+function judge(px) {
+  let ok = false;
+  let strictOk = false;
+  for (const l of LAYOUTS) {
+    ok ||= [0, 1, 2, 3].every((i) => channelOk(l[i], px[i], ACCEPTED, GATHER_ACCEPTED));
+    strictOk ||= [0, 1, 2, 3].every((i) => channelOk(l[i], px[i], STRICT, GATHER_STRICT));
+  }
+  const g = (v) => Number(v.toPrecision(9)).toString();
+  print("test:      " + TEST);
+  print("expected:  " + SPEC_VALUE + " (spec value); accepted: r in " + ACCEPTED_TEXT + " (strict: " + STRICT_TEXT + ")");
+  if (GATHER_ACCEPTED !== null) {
+    const show = (sets) => sets.map((s) => "{" + s.map(([lo, hi]) => (lo === hi ? lo : "[" + lo + ", " + hi + "]")).join(", ") + "}").join(", ");
+    print("gather:    components accepted in " + show(GATHER_ACCEPTED) + " (strict: " + show(GATHER_STRICT) + ")");
+  }
+  print("layout:    (" + LAYOUTS[0].join(", ") + ")  ('r' the result, '0'/'1' exactly, 'z' r or 0, '-' unused, 'gi' gather component i)");
+  for (let k = 1; k < LAYOUTS.length; k++) {
+    print("           (" + LAYOUTS[k].join(", ") + ")  also accepted: the other reading " + READINGS[k]);
+  }
+  print("observed:  (" + px.map(g).join(", ") + ")");
+  if (!ok) {
+    LAYOUTS.forEach((l, k) =>
+      [0, 1, 2, 3].forEach((i) => {
+        if (!channelOk(l[i], px[i], ACCEPTED, GATHER_ACCEPTED)) {
+          print("           " + "rgba"[i] + " = " + g(px[i]) + " is outside what channel '" + l[i] + "' allows (" + READINGS[k] + " reading)");
+        }
+      }),
+    );
+  }
+  print("verdict:   " + (!ok ? 'FAIL (outside the accepted set: a "shall" is violated)'
+    : strictOk ? "pass" : "warn (inside the accepted set, outside the strict tier)"));
+}
+
+// A buffer holding `data` (a typed array), for `usage`.
+function upload(device, data, usage) {
+  const size = Math.max(4, Math.ceil(data.byteLength / 4) * 4);
+  const b = device.createBuffer({ size, usage, mappedAtCreation: true });
+  new Uint8Array(b.getMappedRange()).set(new Uint8Array(data.buffer, data.byteOffset, data.byteLength));
+  b.unmap();
+  return b;
+}
+
+async function main() {
+  if (!navigator.gpu) throw new Error("no navigator.gpu (WebGPU disabled, or not a secure context)");
+  const adapter = await navigator.gpu.requestAdapter({ featureLevel: FEATURE_LEVEL });
+  if (!adapter) throw new Error("requestAdapter({featureLevel: '" + FEATURE_LEVEL + "'}) returned null");
+  const info = adapter.info || {};
+  print("WEBGPU_ADAPTER: " + [info.vendor, info.architecture, info.device, info.description].filter((x) => x).join(", ") +
+    (info.isFallbackAdapter ? " (fallback adapter)" : ""));
+  print("BROWSER: " + navigator.userAgent);
+  const requiredFeatures = [];
+  if (TEXTURE.format === "depth32float-stencil8") {
+    if (!adapter.features.has("depth32float-stencil8")) throw new Error("the adapter lacks the depth32float-stencil8 feature");
+    requiredFeatures.push("depth32float-stencil8");
+  }
+  const device = await adapter.requestDevice({ requiredFeatures });
+  device.pushErrorScope("validation");
+  const enc = device.createCommandEncoder();
+  // The texture, every level and layer written by points whose fragments write frag_depth.
+  const tex = device.createTexture({
+    size: [TEXTURE.width, TEXTURE.height, TEXTURE.layers],
+    mipLevelCount: TEXTURE.levels,
+    format: TEXTURE.format,
+    usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.RENDER_ATTACHMENT,
+    textureBindingViewDimension: TEXTURE.view,
+  });
+  const writerModule = device.createShaderModule({ code: WRITER });
+  const writer = device.createRenderPipeline({
+    layout: "auto",
+    vertex: {
+      module: writerModule,
+      entryPoint: "vs",
+      buffers: [{ arrayStride: 12, attributes: [
+        { shaderLocation: 0, format: "float32x2", offset: 0 },
+        { shaderLocation: 1, format: "float32", offset: 8 },
+      ] }],
+    },
+    fragment: { module: writerModule, entryPoint: "fs", targets: [] },
+    primitive: { topology: "point-list" },
+    depthStencil: { format: TEXTURE.format, depthWriteEnabled: true, depthCompare: "always" },
+  });
+  const points = upload(device, POINTS, GPUBufferUsage.VERTEX);
+  for (const s of TEXTURE.subresources) {
+    const view = tex.createView({ dimension: "2d", baseMipLevel: s.level, mipLevelCount: 1, baseArrayLayer: s.layer, arrayLayerCount: 1 });
+    const ds = { view, depthClearValue: 0, depthLoadOp: "clear", depthStoreOp: "store" };
+    if (TEXTURE.hasStencil) Object.assign(ds, { stencilClearValue: 0, stencilLoadOp: "clear", stencilStoreOp: "store" });
+    const pass = enc.beginRenderPass({ colorAttachments: [], depthStencilAttachment: ds });
+    pass.setPipeline(writer);
+    pass.setVertexBuffer(0, points);
+    pass.draw(s.count, 1, s.first, 0);
+    pass.end();
+  }
+  // The lookup: the case's sampler and view, slot 0's quad in a 2x2 RGBA32F target.
+  const group = device.createBindGroupLayout({ entries: [
+    { binding: 0, visibility: GPUShaderStage.FRAGMENT, texture: { sampleType: "depth", viewDimension: TEXTURE.view } },
+    { binding: 1, visibility: GPUShaderStage.FRAGMENT, sampler: { type: "comparison" } },
+  ] });
+  const module = device.createShaderModule({ code: LOOKUP });
+  const pipeline = device.createRenderPipeline({
+    layout: device.createPipelineLayout({ bindGroupLayouts: [group] }),
+    vertex: { module, entryPoint: "vs", buffers: [{ arrayStride: 4 * INSTANCE.length, stepMode: "instance",
+      attributes: ATTRIBUTES.map(([shaderLocation, format, at]) => ({ shaderLocation, format, offset: 4 * at })) }] },
+    fragment: { module, entryPoint: "fs", targets: [{ format: "rgba32float" }] },
+    primitive: { topology: "triangle-list" },
+  });
+  const bind = device.createBindGroup({ layout: group, entries: [
+    { binding: 0, resource: tex.createView({ dimension: TEXTURE.view, aspect: "depth-only", baseMipLevel: 0, mipLevelCount: TEXTURE.viewLevels }) },
+    { binding: 1, resource: device.createSampler(SAMPLER) },
+  ] });
+  const target = device.createTexture({ size: [2, 2], format: "rgba32float", usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
+  const pass = enc.beginRenderPass({ colorAttachments: [{ view: target.createView(), clearValue: [-1, -1, -1, -1], loadOp: "clear", storeOp: "store" }] });
+  pass.setPipeline(pipeline);
+  pass.setBindGroup(0, bind);
+  pass.setVertexBuffer(0, upload(device, INSTANCE, GPUBufferUsage.VERTEX));
+  pass.draw(6, 1, 0, 0);
+  pass.end();
+  const read = device.createBuffer({ size: 512, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
+  enc.copyTextureToBuffer({ texture: target }, { buffer: read, bytesPerRow: 256, rowsPerImage: 2 }, [2, 2, 1]);
+  device.queue.submit([enc.finish()]);
+  const err = await device.popErrorScope();
+  if (err) throw new Error("validation error: " + err.message);
+  await read.mapAsync(GPUMapMode.READ);
+  judge([...new Float32Array(read.getMappedRange(), 0, 4)]);
+}
+
+main()
+  .catch((e) => print("setup failed: " + e))
+  .finally(() => console.log(END));
