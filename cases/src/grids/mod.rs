@@ -165,6 +165,10 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             |x| d.spec != Spec::WebGpu || array_layer(&x.lookup, x.texture.target).is_none_or(|a| a.fract() == 0.0),
         )
         .filter(
+            "WebGPU: GPUSamplerDescriptor has no border colour and GPUAddressMode no clamp-to-border (WebGPU, Samplers)",
+            |x| d.spec != Spec::WebGpu || x.sampler.in_effect().border == [0.0; 4],
+        )
+        .filter(
             "WebGPU: WGSL has no projective texture built-in (WGSL texture built-in functions)",
             |x| d.spec != Spec::WebGpu || !x.lookup.projective,
         )

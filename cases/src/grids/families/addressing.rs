@@ -244,6 +244,8 @@ fn wrap_pairs(d: &SpecDims) -> Vec<Draft> {
         (ClampToBorder, MirroredRepeat),
         (Clamp, Repeat),
     ];
+    // WebGPU has no border colour (GPUSamplerDescriptor): its pairs keep the default.
+    let border: u8 = if d.spec == Spec::WebGpu { 0 } else { 1 };
     for (ws, wt) in pairs
         .into_iter()
         .filter(|(a, b)| d.wraps.contains(a) && d.wraps.contains(b))
@@ -257,11 +259,11 @@ fn wrap_pairs(d: &SpecDims) -> Vec<Draft> {
                     c,
                     tex.clone(),
                     lookup(Target::T2d, At::st(s, t), w, h, 0.5),
-                    format!("wrap_s={ws}/wrap_t={wt}/st={s}_{t}/border=1/ref=0.5"),
+                    format!("wrap_s={ws}/wrap_t={wt}/st={s}_{t}/border={border}/ref=0.5"),
                 );
                 x.sampler.wrap_s = ws;
                 x.sampler.wrap_t = wt;
-                x.sampler.border = [1.0, 0.0, 0.0, 0.0];
+                x.sampler.border = [f32::from(border), 0.0, 0.0, 0.0];
                 out.push(x);
             }
         }
