@@ -9,7 +9,8 @@
 //   PAGES_FILE     one page a line, relative to SDK_TESTS_DIR, with its query string
 //                  (e.g. conformance2/samplers/samplers.html?webglVersion=2); '#' comments
 //   --playwright   a folder whose node_modules holds playwright-core (default: this folder)
-// Writes OUT_DIR/<config>/results.json (probe + one entry per page) and console.log.
+// Writes OUT_DIR/<config>/results.json (probe + one entry per page), console.log (the pages'
+// console messages) and browser.log (the browser's stderr, each line tagged with the page open).
 //
 // How results are collected: the pages' js-test-pre.js reports every PASS/FAIL/SKIP to
 // `window.parent.webglTestHarness.reportResults(url, success, msg, skipped)` and calls
@@ -19,9 +20,26 @@
 // window.webglTestHarness before the page's scripts run: the same calls the official runner
 // counts are counted here. dEQP skip-list warnings (not reported to the harness) and the
 // "TEST COMPLETE: n PASS, m FAIL" line are read from the DOM at the end.
+// Also recorded per page: webglcontextlost events, and browser stderr lines about the GPU process.
 // A page ends when it calls notifyFinished, when no result arrives for --idle-timeout seconds
 // (the official runner uses 20 s), when it runs --page-timeout seconds, or when it crashes.
 'use strict';
+// Browser stderr (GPU process exits etc.) is only reachable through playwright's debug log
+// 'pw:browser': enable it here and divert those lines from our stderr to OUT_DIR/<config>/browser.log.
+process.env.DEBUG = (process.env.DEBUG ? process.env.DEBUG + ',' : '') + 'pw:browser';
+const browserLines = { sink: null, page: '(startup)', events: [] };
+{
+  const origWrite = process.stderr.write.bind(process.stderr);
+  process.stderr.write = (chunk, ...rest) => {
+    const s = String(chunk);
+    if (!s.includes('pw:browser')) return origWrite(chunk, ...rest);
+    if (browserLines.sink) browserLines.sink.write(`[${browserLines.page}] ${s.replace(/\n$/, '')}\n`);
+    if (/GPU process|GPU state invalid|context lost|lost context|VK_ERROR|DEVICE_LOST|Received signal|segmentation/i.test(s)) {
+      browserLines.events.push(s.replace(/^.*?\[err\] /, '').trim().slice(0, 300));
+    }
+    return true;
+  };
+}
 const fs = require('fs');
 const http = require('http');
 const path = require('path');
@@ -122,13 +140,14 @@ function evalT(page, fn, ms) {
 
 // Defined before the page's own scripts; js-test-pre.js picks it up as window.parent.webglTestHarness.
 const kInitScript = `
-  window.__wgl = { pass: 0, fail: 0, skip: 0, fails: [], skips: [], passes: [], last: Date.now(),
-                   finished: 0, finishCalls: 0 };
+  window.__wgl = { pass: 0, fail: 0, skip: 0, fails: [], skips: [], last: Date.now(),
+                   finished: 0, finishCalls: 0, contextLost: 0 };
+  window.addEventListener('webglcontextlost', () => { window.__wgl.contextLost++; }, true);
   window.webglTestHarness = {
     reportResults(url, success, msg, skipped) {
       const w = window.__wgl; w.last = Date.now();
       if (skipped) { w.skip++; w.skips.push(String(msg)); }
-      else if (success) { w.pass++; if (w.passes.length < 2000) w.passes.push(String(msg)); }
+      else if (success) { w.pass++; }
       else { w.fail++; w.fails.push(String(msg)); }
     },
     notifyFinished(url) { const w = window.__wgl; w.finishCalls++; if (!w.finished) w.finished = Date.now(); },
@@ -143,6 +162,7 @@ async function main() {
   const outDir = path.join(args.out, args.config);
   fs.mkdirSync(outDir, { recursive: true });
   const consoleLog = fs.createWriteStream(path.join(outDir, 'console.log'));
+  browserLines.sink = fs.createWriteStream(path.join(outDir, 'browser.log'));
   const server = await serve(args.tests);
   const origin = `http://127.0.0.1:${server.address().port}`;
   const flags = [
@@ -179,7 +199,9 @@ async function main() {
               `renderer ${p2.unmaskedRenderer || (result.probe.webgl1 || {}).unmaskedRenderer || result.probe.error}`);
   save();
 
+  result.startupBrowserEvents = browserLines.events.splice(0);
   for (const rel of pages) {
+    browserLines.page = rel;
     const page = await context.newPage();
     const run = { page: rel, pass: 0, fail: 0, skip: 0, fails: [], skips: [],
                   pageErrors: [], finished: false, timedOut: null, crashed: false };
@@ -203,7 +225,7 @@ async function main() {
           console.log(`  ${rel}: ${((Date.now() - start) / 1000).toFixed(0)} s, ${st.pass} pass, ${st.fail} fail`);
           lastPrint = Date.now();
         }
-        await sleep(250);
+        await sleep(150);
       }
       if (!crashed) {
         const r = await evalT(page, () => {
@@ -228,8 +250,10 @@ async function main() {
           dom.failContext = failContext;
           const desc = document.getElementById('description');
           const m = desc && desc.textContent.match(/TEST COMPLETE: \d+ PASS, \d+ FAIL/);
+          // The whole visible output of pages with a FAIL line (capped), to read failures in order.
+          const consoleText = dom.fail.length ? lines.slice(0, 3000).map(l => l.slice(0, 400)) : undefined;
           return { pass: w.pass, fail: w.fail, skip: w.skip, fails: w.fails, skips: w.skips,
-                   passes: w.passes, finishCalls: w.finishCalls, dom, deqpCases: cases,
+                   finishCalls: w.finishCalls, contextLost: w.contextLost, dom, deqpCases: cases, consoleText,
                    domSummary: m ? m[0] : null, title: document.title };
         }, 60000);
         Object.assign(run, r);
@@ -239,12 +263,15 @@ async function main() {
     }
     run.crashed = crashed;
     run.seconds = (Date.now() - start) / 1000;
+    await sleep(100); // let the browser's stderr for this page arrive
+    run.browserEvents = browserLines.events.splice(0);
     result.pages.push(run);
     const d = run.dom || { pass: [], fail: [], warn: [] };
     console.log(`[${args.config}] ${rel}: shown ${d.pass.length} PASS, ${d.fail.length} FAIL, ${d.warn.length} WARNING; ` +
       `harness ${run.pass} pass, ${run.fail} fail, ${run.skip} skip, ` +
       `${run.seconds.toFixed(1)} s${run.finished ? '' : ' NOT FINISHED'}${run.timedOut ? ' TIMEOUT(' + run.timedOut + ')' : ''}` +
-      `${crashed ? ' CRASHED' : ''}${run.error ? ' ERROR ' + run.error : ''}`);
+      `${crashed ? ' CRASHED' : ''}${run.contextLost ? ' CONTEXT LOST x' + run.contextLost : ''}` +
+      `${run.browserEvents.length ? ' BROWSER: ' + run.browserEvents.join(' | ') : ''}${run.error ? ' ERROR ' + run.error : ''}`);
     save();
     await page.close({ runBeforeUnload: false }).catch(() => {});
   }
@@ -253,6 +280,7 @@ async function main() {
   await browser.close().catch(() => {});
   server.close();
   consoleLog.end();
+  browserLines.sink.end();
 }
 
 // Hard stop: nothing here may outlive its budget.

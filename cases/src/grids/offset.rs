@@ -209,8 +209,13 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
     // bilinear footprint of both levels (GL 4.6 §8.14.2 (8.10) for each level's u, v). Each level
     // is hot at its offset texel, so an offset dropped or applied in base-level texels on one level
     // shows. Under WebGPU this is textureSampleCompare with an offset and implicit derivatives.
-    if d.filters.contains(&Filter::LinearMipmapLinear) {
-        let c = cell2d(Filter::LinearMipmapLinear, CompareMode::Compare);
+    // In D16 too, which every Vulkan driver has (SwiftShader's has no D24).
+    let between_formats = [fixed_fmt(d), Format::D16];
+    for fmt in between_formats
+        .into_iter()
+        .filter(|_| d.filters.contains(&Filter::LinearMipmapLinear))
+    {
+        let c = cell(d, Target::T2d, fmt, Filter::LinearMipmapLinear, main_func(d));
         for o in [[1, 0], [0, 1], [-1, -1]] {
             let hot0 = (
                 wrapped(1, o[0], SIZE, Wrap::Repeat),
