@@ -9,10 +9,10 @@ use crate::WebgpuError;
 use serde::Deserialize;
 use serde_json::{json, Value};
 use shadowcheck_model::{ApiPath, Case, Format, Spec, Target};
-use shadowcheck_plan::serve::Serve;
+use shadowcheck_plan::serve::{self, Serve};
 use shadowcheck_plan::shaders::wgsl::TEXEL_WRITER;
 use shadowcheck_plan::{sweep, Answer};
-use shadowcheck_protocol::{Capabilities, Hello, PathSkip, Support, PROTOCOL_VERSION};
+use shadowcheck_protocol::{Capabilities, Hello, PROTOCOL_VERSION};
 use shadowcheck_webgl::browser::Browser;
 use std::time::{Duration, Instant};
 
@@ -306,56 +306,14 @@ impl Serve for WebgpuWorker {
 
     fn draw_batch(&mut self, cases: Vec<Case>) -> std::io::Result<Vec<Answer>> {
         // Admission: the declared capabilities decide, as the runner's did before sending.
-        let mut runnable: Vec<Case> = Vec::new();
-        let mut left_out: Vec<Vec<PathSkip>> = Vec::new();
-        let mut early: Vec<Option<Answer>> = Vec::new();
-        for mut c in cases {
-            match self.caps.support(&c) {
-                Support::Skip(r) | Support::NotApplicable(r) => {
-                    early.extend((0..c.lookup_count()).map(|_| Some(Answer::Skip(r.clone()))))
-                }
-                Support::Run { apis, others } => {
-                    let skips = c
-                        .api
-                        .iter()
-                        .filter(|a| !apis.contains(a))
-                        .map(|a| PathSkip {
-                            api: a.key().to_string(),
-                            reason: others.clone().unwrap_or_default(),
-                        })
-                        .collect();
-                    c.api = apis;
-                    early.extend((0..c.lookup_count()).map(|_| None));
-                    left_out.push(skips);
-                    runnable.push(c);
-                }
-            }
-        }
+        let serve::Admission {
+            runnable,
+            early,
+            left_out,
+        } = serve::admit(&self.caps, cases);
         let jobs = sweep::jobs(&runnable);
         let answers = self.plan_and_draw(&jobs)?;
-        // The paths left out of a case go with the answer for its own lookup.
-        let mut skips = left_out.into_iter();
-        let mut answers = answers.into_iter().zip(&jobs).map(|(a, j)| {
-            let a = a.unwrap_or_else(|| Answer::Error("internal: missing answer".into()));
-            match (a, j.point) {
-                (Answer::Observation(r, mut s), false) => {
-                    s.extend(skips.next().unwrap_or_default());
-                    Answer::Observation(r, s)
-                }
-                (other, false) => {
-                    skips.next();
-                    other
-                }
-                (other, true) => other,
-            }
-        });
-        Ok(early
-            .into_iter()
-            .map(|a| {
-                a.or_else(|| answers.next())
-                    .unwrap_or_else(|| Answer::Error("internal: missing answer".into()))
-            })
-            .collect())
+        Ok(serve::assemble(early, left_out, &jobs, answers))
     }
 }
 
