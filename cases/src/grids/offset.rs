@@ -215,7 +215,13 @@ pub fn offset(d: &SpecDims) -> Vec<Draft> {
         .into_iter()
         .filter(|_| d.filters.contains(&Filter::LinearMipmapLinear))
     {
-        let c = cell(d, Target::T2d, fmt, Filter::LinearMipmapLinear, main_func(d));
+        let c = cell(
+            d,
+            Target::T2d,
+            fmt,
+            Filter::LinearMipmapLinear,
+            main_func(d),
+        );
         for o in [[1, 0], [0, 1], [-1, -1]] {
             let hot0 = (
                 wrapped(1, o[0], SIZE, Wrap::Repeat),
