@@ -101,6 +101,10 @@ fn webgl2_in_headless_chromium_passes_the_d16_and_d32f_fixtures_and_skips_what_i
                 status == "Skip" && reason.contains(w),
                 "{test}: {status} {reason}"
             ),
+            // SwiftShader's offset between two mip levels (reports/README.md, WG2): a Warn.
+            None if test.contains("/offset/between/") => {
+                assert!(status == "Warn", "{test}: {status} {reason}")
+            }
             None => assert!(status == "Pass", "{test}: {status} {reason}"),
         }
     }

@@ -26,7 +26,7 @@ pub struct DeviceCaps {
     pub d32fs8: bool,
     /// "cube-array" view dimensions: core WebGPU has them; compatibility mode does not.
     pub cube_array: bool,
-    /// The device's maxTextureDimension2D and maxTextureArrayLayers (WebGPU §3.6.2 "Limits");
+    /// The device's maxTextureDimension2D and maxTextureArrayLayers (WebGPU "Limits");
     /// 0: not known, no check.
     pub max_dimension: u32,
     pub max_layers: u32,

@@ -1,7 +1,7 @@
 //! How the browser is started for each WebGPU backend, and which adapter the page asks for.
 //!
 //! Measured with Chromium 156 headless (no GPU on the machine): `navigator.gpu` exists only with
-//! `--enable-unsafe-webgpu` and only in a secure context (WebGPU §4.1 "navigator.gpu" is
+//! `--enable-unsafe-webgpu` and only in a secure context (WebGPU "navigator.gpu" is
 //! `[SecureContext]`; about:blank is not one, so the worker loads a file:// page, see
 //! `worker.rs`). Every flag set tried then gives Dawn's Vulkan backend on SwiftShader (adapter
 //! info vendor `google`, architecture `swiftshader`, isFallbackAdapter true), with or without
@@ -72,7 +72,7 @@ impl Variant {
         }
     }
 
-    /// The `GPURequestAdapterOptions.featureLevel` the page asks for (WebGPU §4.2.2).
+    /// The `GPURequestAdapterOptions.featureLevel` the page asks for (WebGPU).
     pub fn feature_level(self) -> &'static str {
         match self {
             Variant::Core => "core",

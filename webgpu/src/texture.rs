@@ -1,6 +1,6 @@
 //! A case's texture as WebGPU objects: the `GPUTextureDescriptor` (format, size, levels), the
 //! sampled view (dimension, mip range, the depth aspect) and the `GPUSamplerDescriptor` of the
-//! sampler in effect (WebGPU §7.1.1), or why WebGPU cannot express it; and the texel values the
+//! sampler in effect (WebGPU), or why WebGPU cannot express it; and the texel values the
 //! page writes with `frag_depth` (see `shadowcheck_plan::shaders::wgsl::TEXEL_WRITER`).
 //! Whatever cannot be expressed is Skip with the reason, never drawn with other state and never
 //! a call that would be a validation error.
@@ -11,7 +11,7 @@ use shadowcheck_plan::paths::sampler_kind;
 use shadowcheck_plan::shaders::wgsl::{texel_point, view_dimension, TEXEL_FLOATS};
 use shadowcheck_plan::SamplerKind;
 
-/// The `GPUTextureFormat` of a model format (WebGPU §26.1.2 "Depth-stencil formats"); `None`
+/// The `GPUTextureFormat` of a model format (WebGPU "Depth-stencil formats"); `None`
 /// for formats WebGPU has no depth format of (32-bit unorm, unsized depth, colour).
 pub fn format_name(f: Format) -> Option<&'static str> {
     Some(match f {
@@ -25,7 +25,7 @@ pub fn format_name(f: Format) -> Option<&'static str> {
 }
 
 /// Bytes per texel of the depth aspect copied to a buffer, for the formats whose depth is a
-/// valid texel copy source (WebGPU §26.1.2: depth16unorm, depth32float and depth32float-stencil8;
+/// valid texel copy source (WebGPU: depth16unorm, depth32float and depth32float-stencil8;
 /// depth24plus's representation is opaque, so it is never read back).
 pub fn readback_bytes(f: Format) -> Option<u32> {
     match f {
@@ -35,7 +35,7 @@ pub fn readback_bytes(f: Format) -> Option<u32> {
     }
 }
 
-/// `GPUSamplerDescriptor` (WebGPU §7.1.1), serialized as the page passes it to createSampler.
+/// `GPUSamplerDescriptor` (WebGPU), serialized as the page passes it to createSampler.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct SamplerDesc {
@@ -106,8 +106,8 @@ fn address(w: Wrap) -> Result<&'static str, String> {
         Wrap::MirroredRepeat => "mirror-repeat",
         Wrap::ClampToBorder | Wrap::MirrorClampToEdge | Wrap::Clamp => {
             return Err(format!(
-            "wrap {w} is no GPUAddressMode (WebGPU §7.1.1: clamp-to-edge, repeat, mirror-repeat)"
-        ))
+                "wrap {w} is no GPUAddressMode (WebGPU: clamp-to-edge, repeat, mirror-repeat)"
+            ))
         }
     })
 }
@@ -133,7 +133,7 @@ pub fn sampler(case: &Case) -> Result<(SamplerDesc, u32), String> {
         return Err("DEPTH_TEXTURE_MODE has no WebGPU equivalent".into());
     }
     if s.lod_bias != 0.0 {
-        return Err("GPUSamplerDescriptor has no LOD bias (WebGPU §7.1.1)".into());
+        return Err("GPUSamplerDescriptor has no LOD bias (WebGPU)".into());
     }
     if s.mag_filter.is_mipmap() {
         return Err(format!(
@@ -200,7 +200,7 @@ pub fn sampler(case: &Case) -> Result<(SamplerDesc, u32), String> {
 }
 
 /// Checks that the levels of `case` form a WebGPU texture: every level the mip level of level
-/// base (WebGPU §6.1 "mipLevelCount": level i is max(1, size >> i)), the layers the same in
+/// base (WebGPU "mipLevelCount": level i is max(1, size >> i)), the layers the same in
 /// every level, a cube square with 6 layers per cube.
 fn shape(case: &Case) -> Result<(u32, u32, u32), String> {
     let t = &case.texture;

@@ -20,7 +20,7 @@ use std::time::{Duration, Instant};
 const PAGE_JS: &str = include_str!("page.js");
 
 /// The page the script runs in: a file in the browser's profile folder (a file:// URL is a
-/// secure context, WebGPU §4.1 "navigator.gpu" is `[SecureContext]`; about:blank is not one).
+/// secure context, WebGPU "navigator.gpu" is `[SecureContext]`; about:blank is not one).
 const PAGE_FILE: &str = "shadowcheck-webgpu.html";
 const PAGE_HTML: &str = "<!doctype html><meta charset=utf-8><title>shadowcheck webgpu</title>\n";
 

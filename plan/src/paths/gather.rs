@@ -11,7 +11,7 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
     let t = case.texture.target;
     // GLSL 4.50 for Vulkan has GLSL 4.50's gathers (SPIR-V OpImageDrefGather; the four offsets
     // of textureGatherOffsets need shaderImageGatherExtended, which the Vulkan worker checks).
-    // WGSL §17.7 textureGatherCompare: texture_depth_2d (with an optional const offset),
+    // WGSL textureGatherCompare: texture_depth_2d (with an optional const offset),
     // _2d_array (likewise), _cube and _cube_array; no four-offset form.
     if !matches!(
         path,
@@ -37,7 +37,10 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
     }
     let i8s = |v: i32| i8::try_from(v).map_err(|_| format!("gather offset {v} out of range"));
     if path == ApiPath::Wgsl && l.gather.as_ref().is_some_and(|g| g.offsets.is_some()) {
-        return Err("WGSL has no textureGatherCompare with four offsets (WGSL §17.7)".into());
+        return Err(
+            "WGSL has no textureGatherCompare with four offsets (WGSL texture built-in functions)"
+                .into(),
+        );
     }
     let offset = if path == ApiPath::Wgsl && l.offset != [0; 3] && !t.is_cube() {
         super::wgsl::offset(l.offset)?

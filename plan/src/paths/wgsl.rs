@@ -1,4 +1,4 @@
-//! What WGSL's depth-comparison built-ins (WGSL §17.7 "Texture Built-in Functions") can express
+//! What WGSL's depth-comparison built-ins ("Texture Built-in Functions" of WGSL) can express
 //! of a case, beyond the per-dialect table of `forms.rs`:
 //! - `textureSampleCompareLevel` "always samples texels from mip level 0", so it realizes the
 //!   case only where the case's own level of detail is that one: lod = 0, no shader bias, and a
@@ -8,7 +8,7 @@
 //! - `array_index` is an integer (i32 or u32), so a layer coordinate that is not one has no WGSL
 //!   lookup (the conversion would be the shader's, not the texture unit's);
 //! - an offset is a const-expression `vec2<i32>` whose components "must be at least -8 and at
-//!   most 7" (WGSL §17.7 textureSampleCompare, textureGatherCompare: "offset"), else the shader
+//!   most 7" (WGSL textureSampleCompare, textureGatherCompare: "offset"), else the shader
 //!   does not compile.
 
 use super::LodForm;
@@ -24,7 +24,7 @@ pub fn note(form: LodForm) -> &'static str {
     }
 }
 
-/// WGSL §17.7: the offset components' range.
+/// WGSL texture built-in functions: the offset components' range.
 pub const OFFSET_RANGE: (i32, i32) = (-8, 7);
 
 /// May `textureSampleCompareLevel` (level 0) realize lookup `l` of `case`?
@@ -36,12 +36,14 @@ pub fn level_zero_equivalent(case: &Case, l: &Lookup) -> bool {
 pub fn unexpressible(case: &Case, l: &Lookup) -> Option<String> {
     if l.bias != 0.0 {
         return Some(format!(
-            "WGSL has no compare lookup with a bias (WGSL §17.7: textureSampleCompare, textureSampleCompareLevel and textureGatherCompare take none); the case's bias is {}",
+            "WGSL has no compare lookup with a bias (WGSL texture built-in functions: textureSampleCompare, textureSampleCompareLevel and textureGatherCompare take none); the case's bias is {}",
             l.bias
         ));
     }
     if l.projective {
-        return Some("WGSL has no projective compare lookup (WGSL §17.7)".into());
+        return Some(
+            "WGSL has no projective compare lookup (WGSL texture built-in functions)".into(),
+        );
     }
     let layer = match case.texture.target {
         Target::T2dArray => Some(l.coord[2]),
@@ -50,7 +52,7 @@ pub fn unexpressible(case: &Case, l: &Lookup) -> Option<String> {
     };
     match layer {
         Some(v) if v.fract() != 0.0 || v.abs() > i32::MAX as f64 => Some(format!(
-            "WGSL's array_index is an integer (WGSL §17.7: \"array_index: The 0-based texture array index to sample\", an i32 or u32); the case's layer coordinate {v} is not one, and converting it would be the shader's rounding, not the texture unit's"
+            "WGSL's array_index is an integer (WGSL textureSampleCompare: \"array_index: The 0-based texture array index to sample\", an i32 or u32); the case's layer coordinate {v} is not one, and converting it would be the shader's rounding, not the texture unit's"
         )),
         _ => None,
     }
@@ -68,7 +70,7 @@ pub fn offset(o: [i32; 3]) -> Result<[i8; 2], String> {
     match (ok(o[0]) && ok(o[1]), i8::try_from(o[0]), i8::try_from(o[1])) {
         (true, Ok(a), Ok(b)) => Ok([a, b]),
         _ => Err(format!(
-            "WGSL offset components must be in [{lo}, {hi}] (WGSL §17.7 \"offset\"); the case's offset is {o:?}"
+            "WGSL offset components must be in [{lo}, {hi}] (WGSL \"offset\"); the case's offset is {o:?}"
         )),
     }
 }

@@ -25,7 +25,7 @@
 //! increasing y) is row r of [`crate::layout`]'s pixels, as for Vulkan.
 //!
 //! [`TEXEL_WRITER`] is the module that writes texels: no texel copy writes depth24plus or the
-//! depth of depth32float and the combined formats (WebGPU §26.1.2 "Depth-stencil formats":
+//! depth of depth32float and the combined formats (WebGPU "Depth-stencil formats":
 //! only depth16unorm's depth is a valid texel copy destination), so every format's texels are
 //! points whose fragments write `@builtin(frag_depth)`, one way for all.
 
@@ -66,7 +66,7 @@ pub fn texture_type(target: Target) -> Option<&'static str> {
     }
 }
 
-/// The `GPUTextureViewDimension` a target is sampled through (WebGPU §6.1 "GPUTextureViewDimension").
+/// The `GPUTextureViewDimension` a target is sampled through (WebGPU "GPUTextureViewDimension").
 pub fn view_dimension(target: Target) -> Option<&'static str> {
     match target {
         Target::T2d => Some("2d"),
@@ -77,7 +77,7 @@ pub fn view_dimension(target: Target) -> Option<&'static str> {
     }
 }
 
-/// The lookup call on `t` and `s` (WGSL §17.7). P comes from `p` (varied across the quad for
+/// The lookup call on `t` and `s` (WGSL texture built-in functions). P comes from `p` (varied across the quad for
 /// implicit derivatives), the array index from the flat `v.p` (an integer, never varied), the
 /// reference from P or, on cube arrays, from `v.x` (the plan's layout, `paths::shader_values`).
 fn call(key: &ShaderKey) -> String {
