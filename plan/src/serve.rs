@@ -273,6 +273,80 @@ pub fn state_reply(
     }
 }
 
+/// A worker's batch as its capabilities admit it ([`Capabilities::support`], the runner's own
+/// decision before sending): the cases it draws, their API paths cut to those it runs; per lookup
+/// of the batch (a case's own, then its sweep points) a Skip answered at once or `None` (drawn);
+/// per drawn case the paths it leaves out.
+pub struct Admission {
+    pub runnable: Vec<Case>,
+    pub early: Vec<Option<Answer>>,
+    pub left_out: Vec<Vec<PathSkip>>,
+}
+
+/// Admits `cases` by `caps` ([`Admission`]).
+pub fn admit(caps: &Capabilities, cases: Vec<Case>) -> Admission {
+    let mut a = Admission {
+        runnable: Vec::new(),
+        early: Vec::new(),
+        left_out: Vec::new(),
+    };
+    for mut c in cases {
+        match caps.support(&c) {
+            Support::Skip(r) | Support::NotApplicable(r) => a
+                .early
+                .extend((0..c.lookup_count()).map(|_| Some(Answer::Skip(r.clone())))),
+            Support::Run { apis, others } => {
+                let skips = c
+                    .api
+                    .iter()
+                    .filter(|x| !apis.contains(x))
+                    .map(|x| PathSkip {
+                        api: x.key().to_string(),
+                        reason: others.clone().unwrap_or_default(),
+                    })
+                    .collect();
+                c.api = apis;
+                a.early.extend((0..c.lookup_count()).map(|_| None));
+                a.left_out.push(skips);
+                a.runnable.push(c);
+            }
+        }
+    }
+    a
+}
+
+/// Every lookup's answer in the batch's order: its early Skip, else the next of `drawn` (the
+/// answers to `jobs`, [`crate::sweep::jobs`] of the admitted cases, in order; `None`: none came,
+/// an internal error). The paths a case leaves out go with the answer to its own lookup.
+pub fn assemble(
+    early: Vec<Option<Answer>>,
+    left_out: Vec<Vec<PathSkip>>,
+    jobs: &[crate::sweep::Job<'_>],
+    drawn: Vec<Option<Answer>>,
+) -> Vec<Answer> {
+    let missing = || Answer::Error("internal: missing answer".into());
+    let mut skips = left_out.into_iter();
+    let mut drawn =
+        drawn
+            .into_iter()
+            .zip(jobs)
+            .map(|(a, j)| match (a.unwrap_or_else(missing), j.point) {
+                (Answer::Observation(r, mut s), false) => {
+                    s.extend(skips.next().unwrap_or_default());
+                    Answer::Observation(r, s)
+                }
+                (other, false) => {
+                    skips.next();
+                    other
+                }
+                (other, true) => other,
+            });
+    early
+        .into_iter()
+        .map(|a| a.or_else(|| drawn.next()).unwrap_or_else(missing))
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -426,78 +500,4 @@ mod tests {
         // Only the valid case reached the worker, in one batch.
         assert_eq!(worker.0, vec![1]);
     }
-}
-
-/// A worker's batch as its capabilities admit it ([`Capabilities::support`], the runner's own
-/// decision before sending): the cases it draws, their API paths cut to those it runs; per lookup
-/// of the batch (a case's own, then its sweep points) a Skip answered at once or `None` (drawn);
-/// per drawn case the paths it leaves out.
-pub struct Admission {
-    pub runnable: Vec<Case>,
-    pub early: Vec<Option<Answer>>,
-    pub left_out: Vec<Vec<PathSkip>>,
-}
-
-/// Admits `cases` by `caps` ([`Admission`]).
-pub fn admit(caps: &Capabilities, cases: Vec<Case>) -> Admission {
-    let mut a = Admission {
-        runnable: Vec::new(),
-        early: Vec::new(),
-        left_out: Vec::new(),
-    };
-    for mut c in cases {
-        match caps.support(&c) {
-            Support::Skip(r) | Support::NotApplicable(r) => a
-                .early
-                .extend((0..c.lookup_count()).map(|_| Some(Answer::Skip(r.clone())))),
-            Support::Run { apis, others } => {
-                let skips = c
-                    .api
-                    .iter()
-                    .filter(|x| !apis.contains(x))
-                    .map(|x| PathSkip {
-                        api: x.key().to_string(),
-                        reason: others.clone().unwrap_or_default(),
-                    })
-                    .collect();
-                c.api = apis;
-                a.early.extend((0..c.lookup_count()).map(|_| None));
-                a.left_out.push(skips);
-                a.runnable.push(c);
-            }
-        }
-    }
-    a
-}
-
-/// Every lookup's answer in the batch's order: its early Skip, else the next of `drawn` (the
-/// answers to `jobs`, [`crate::sweep::jobs`] of the admitted cases, in order; `None`: none came,
-/// an internal error). The paths a case leaves out go with the answer to its own lookup.
-pub fn assemble(
-    early: Vec<Option<Answer>>,
-    left_out: Vec<Vec<PathSkip>>,
-    jobs: &[crate::sweep::Job<'_>],
-    drawn: Vec<Option<Answer>>,
-) -> Vec<Answer> {
-    let missing = || Answer::Error("internal: missing answer".into());
-    let mut skips = left_out.into_iter();
-    let mut drawn =
-        drawn
-            .into_iter()
-            .zip(jobs)
-            .map(|(a, j)| match (a.unwrap_or_else(missing), j.point) {
-                (Answer::Observation(r, mut s), false) => {
-                    s.extend(skips.next().unwrap_or_default());
-                    Answer::Observation(r, s)
-                }
-                (other, false) => {
-                    skips.next();
-                    other
-                }
-                (other, true) => other,
-            });
-    early
-        .into_iter()
-        .map(|a| a.or_else(|| drawn.next()).unwrap_or_else(missing))
-        .collect()
 }
