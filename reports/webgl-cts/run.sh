@@ -17,10 +17,11 @@
 #      PAGE_TIMEOUT_S (default 300, per page), IDLE_TIMEOUT_S (default 120, no new result),
 #      WEBGL_CTS_HARD_LIMIT_S (default 3600, per configuration).
 # Needs: chromium, node, npm; Mesa llvmpipe (EGL) and lavapipe (Vulkan ICD) for the last two.
+# The flags and environment of each configuration are in backends.sh.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-[ $# -ge 2 ] || { sed -n 2,21p "$0"; exit 2; }
+[ $# -ge 2 ] || { sed -n 2,22p "$0"; exit 2; }
 webgl="$(cd "$1" && pwd)"
 tests="$webgl/sdk/tests"
 [ -f "$tests/js/js-test-pre.js" ] || { echo "$tests/js/js-test-pre.js not found" >&2; exit 2; }
@@ -50,29 +51,16 @@ if [ -z "$pw" ]; then
   fi
 fi
 
-common=(--flag=--headless --flag=--no-sandbox --flag=--disable-quic --flag=--no-first-run
-        --flag=--disable-background-networking --flag=--disable-component-update
-        --flag=--disable-sync --flag=--disable-extensions)
+# shellcheck source=backends.sh
+. "$here/backends.sh"
 for c in "${configs[@]}"; do
-  envs=()
-  case "$c" in
-    swiftshader)
-      flags=(--flag=--use-angle=swiftshader --flag=--enable-unsafe-swiftshader --flag=--disable-gpu) ;;
-    gles-llvmpipe)
-      flags=(--flag=--use-angle=gles-egl --flag=--ignore-gpu-blocklist)
-      envs=(LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe EGL_PLATFORM=surfaceless) ;;
-    vulkan-lavapipe)
-      flags=(--flag=--use-angle=vulkan --flag=--ignore-gpu-blocklist
-             --flag=--disable-gpu-driver-bug-workarounds)
-      envs=(VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json) ;;
-    *) echo "unknown config $c" >&2; exit 2 ;;
-  esac
+  backend_setup "$c" || exit 2
   start=$(date +%s)
   mkdir -p "$out/$c"
   env "${envs[@]}" node "$here/run_webgl_cts.js" --playwright "$pw" --tests "$tests" --out "$out" \
     --config "$c" --pages "$pages" --chromium "$chromium_bin" \
     --page-timeout "${PAGE_TIMEOUT_S:-300}" --idle-timeout "${IDLE_TIMEOUT_S:-120}" \
-    "${common[@]}" "${flags[@]}" 2>&1 | tee "$out/$c/run.log" ||
+    "${flags[@]}" 2>&1 | tee "$out/$c/run.log" ||
     echo "run_webgl_cts.js for $c failed" >&2
   echo "$c took $(( $(date +%s) - start )) s" | tee -a "$out/$c/run.log"
 done

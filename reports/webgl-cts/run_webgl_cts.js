@@ -165,11 +165,11 @@ async function main() {
   browserLines.sink = fs.createWriteStream(path.join(outDir, 'browser.log'));
   const server = await serve(args.tests);
   const origin = `http://127.0.0.1:${server.address().port}`;
-  const flags = [
+  const flags = [...new Set([
     '--no-sandbox', '--disable-quic', '--no-first-run', '--disable-background-networking',
     '--disable-component-update', '--disable-sync', '--disable-extensions',
     '--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1', ...args.flags,
-  ];
+  ])];
   const t0 = Date.now();
   const browser = await chromium.launch({ executablePath: which(args.chromium), headless: true,
                                           args: flags, timeout: 120000 });
@@ -234,15 +234,21 @@ async function main() {
           const lines = [...document.querySelectorAll('#console > span')].map(s => s.textContent);
           const dom = { pass: [], fail: [], warn: [], skip: [] };
           const cases = [];
-          const failContext = []; // the last 3 non-result lines (debug output) before each FAIL
-          let recent = [];
+          // Per FAIL: the last section heading ("Testing ...", "checking ...") and the last other
+          // non-result (debug output) line before it.
+          const failContext = [];
+          let recent = [], heading = '';
           for (const l of lines) {
             const m = l.match(/^(PASS|FAIL|WARNING|SKIP) ([\s\S]*)$/);
             if (m) {
               dom[{ PASS: 'pass', FAIL: 'fail', WARNING: 'warn', SKIP: 'skip' }[m[1]]].push(m[2]);
-              if (m[1] === 'FAIL') failContext.push(recent.slice());
+              if (m[1] === 'FAIL') {
+                const last = recent[recent.length - 1];
+                failContext.push(heading && heading !== last ? [heading].concat(last ? [last] : []) : recent.slice(-1));
+              }
             } else if (l.trim()) {
               recent.push(l.trim().slice(0, 300)); if (recent.length > 3) recent.shift();
+              if (/^(testing|checking|test:|Start testcase)/i.test(l.trim())) heading = l.trim().slice(0, 300);
             }
             const c = l.match(/^Start testcase: (.*)$/);
             if (c) cases.push(c[1].trim());

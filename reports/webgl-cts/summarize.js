@@ -37,7 +37,8 @@ function pageStats(run) {
   const st = { shownPass: dom.pass.length, shownFail: dom.fail.length, warn: dom.warn.length,
                harnessPass: run.pass, harnessFail: run.fail, skip: run.skip, seconds: run.seconds,
                finished: run.finished, timedOut: run.timedOut, crashed: run.crashed, error: run.error,
-               pageErrors: run.pageErrors || [], domSummary: run.domSummary };
+               pageErrors: run.pageErrors || [], domSummary: run.domSummary,
+               contextLost: run.contextLost || 0, browserEvents: run.browserEvents || [] };
   if (run.deqpCases) {
     const cases = run.deqpCases;
     const failed = new Set();
@@ -58,6 +59,8 @@ function status(st) {
   if (st.crashed) f.push('crashed');
   if (st.error) f.push('error');
   if (st.pageErrors.length) f.push(`${st.pageErrors.length} page error(s)`);
+  if (st.contextLost) f.push('WebGL context lost');
+  if (st.browserEvents.some(e => /GPU process exited/.test(e))) f.push('GPU process crashed');
   return f.join(', ');
 }
 function cell(st) {
@@ -142,7 +145,7 @@ if (shadowPages.length) {
   w('');
   const groups = {};
   for (const p of shadowPages) {
-    const m = p.match(/textureshadow\/(2d_array|2d|cube)_(.*)_(less_or_equal|greater_or_equal|less|greater|equal|not_equal|always|never)\.html/);
+    const m = p.match(/textureshadow\/(2d_array|2d|cube)_((?:nearest|linear)(?:_mipmap_(?:nearest|linear))?)_(less_or_equal|greater_or_equal|not_equal|less|greater|equal|always|never)\.html/);
     const k = m ? `${m[1]} ${m[2]}` : p;
     (groups[k] = groups[k] || []).push(p);
   }
@@ -210,8 +213,12 @@ for (const p of allPages) {
   for (const [c, n, cnt] of per) {
     w(`- **${c}**: ${n} FAIL line(s)`);
     for (const [k, e] of cnt) {
-      w(`  - ${e.n} x \`${md(k)}\``);
-      for (const [ck, cn] of e.ctx) if (ck) w(`    - ${cn} x after: ${md(ck)}`);
+      const ctxs = [...e.ctx].filter(([ck]) => ck);
+      if (ctxs.length === 1) w(`  - ${e.n} x \`${md(k)}\` (after: ${md(ctxs[0][0])})`);
+      else {
+        w(`  - ${e.n} x \`${md(k)}\``);
+        for (const [ck, cn] of ctxs) w(`    - ${cn} x after: ${md(ck)}`);
+      }
     }
   }
   w('');
@@ -244,6 +251,7 @@ for (const p of allPages) {
     if (!x) continue;
     anyProb = true;
     w(`- \`${md(pageName(p))}\` on \`${c}\`: ${x}, ${st.seconds.toFixed(0)} s${st.error ? `; error: \`${md(short(st.error, 300))}\`` : ''}` +
+      `${st.browserEvents.length ? `; browser stderr: ${st.browserEvents.map(e => `\`${md(short(e, 200))}\``).join(', ')}` : ''}` +
       `${st.pageErrors.length ? `; page errors: ${st.pageErrors.map(e => `\`${md(short(e, 200))}\``).join(', ')}` : ''}`);
   }
 }
