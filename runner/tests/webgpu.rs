@@ -278,20 +278,11 @@ fn a_validation_error_fails_its_batch_and_a_lost_device_is_a_crash() {
 
 #[test]
 fn the_default_run_includes_webgpu_chromium_when_installed_and_announces_it_when_absent() {
-    // SHADOWCHECK_EXE pointing nowhere: no worker starts, so the run is quick and shows which
-    // backends it tried; --skip-missing keeps it going with `soft`.
+    // No worker starts: the run shows which backends it tried; --skip-missing keeps it going
+    // with `soft`.
     let (dir, fx) = cases_dir("webgpu-default", 4);
     let out = dir.join("out");
-    let default_run = |chromium: Option<&str>| {
-        let mut c = bin();
-        c.args(["run", "--skip-missing", "--fixtures", &fx, "--out"])
-            .arg(&out)
-            .env("SHADOWCHECK_EXE", "/nonexistent/shadowcheck");
-        if let Some(p) = chromium {
-            c.env(shadowcheck_webgl::browser::CHROMIUM_ENV, p);
-        }
-        Run::of(c.output().unwrap())
-    };
+    let default_run = |chromium: Option<&str>| default_run_without_workers(&fx, &out, chromium);
     // Absent: a note with the install command, not an error; the compat variant is never in it.
     let r = default_run(Some("/nonexistent/chromium"));
     assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);

@@ -182,6 +182,20 @@ impl Run {
     }
 }
 
+/// A default run (no `--backend`, `--skip-missing`) of the fixtures `fx` into `out` in which no
+/// worker can start (`SHADOWCHECK_EXE` points nowhere), so it is quick and shows which backends it
+/// tried; with `chromium` as the browser where given.
+pub fn default_run_without_workers(fx: &str, out: &Path, chromium: Option<&str>) -> Run {
+    let mut c = bin();
+    c.args(["run", "--skip-missing", "--fixtures", fx, "--out"])
+        .arg(out)
+        .env("SHADOWCHECK_EXE", "/nonexistent/shadowcheck");
+    if let Some(p) = chromium {
+        c.env(shadowcheck_webgl::browser::CHROMIUM_ENV, p);
+    }
+    Run::of(c.output().unwrap())
+}
+
 /// `shadowcheck run ARGS` and its outcome.
 pub fn run(args: &[&str]) -> Run {
     Run::of(bin().arg("run").args(args).output().unwrap())
