@@ -17,22 +17,10 @@ pub struct Args {
 pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     let name: BackendName = args.backend.parse()?;
     if args.probe {
-        let (ok, line) = worker::probe_line(name);
-        println!("{line}");
-        return Ok(if ok {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        });
+        return Ok(super::workers::probe_exit(worker::probe_line(name)));
     }
     let mut w = worker::Worker::start(name)?;
-    let stdin = std::io::stdin();
-    let stdout = std::io::stdout();
-    shadowcheck_plan::serve::serve(
-        &mut w,
-        std::io::BufReader::with_capacity(1 << 16, stdin),
-        std::io::BufWriter::new(stdout.lock()),
-    )?;
+    super::workers::serve_stdio(&mut w)?;
     // The last stderr line: what was compiled and drawn (the runner shows it with `-v`; the
     // bench reads it).
     shadowcheck_runner::errln!("{}", w.stats());

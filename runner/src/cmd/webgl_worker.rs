@@ -1,7 +1,6 @@
 //! `shadowcheck webgl-worker --backend webgl:chromium-gles`: headless Chromium with a WebGL 2.0
 //! page on the instance's ANGLE back end and driver, speaking runner/PROTOCOL.md on stdin/stdout
 //! (the `webgl:*` backends' child; `backend::webgl::worker_command`).
-use shadowcheck_plan::serve::serve;
 use shadowcheck_webgl::instance;
 use shadowcheck_webgl::worker::{probe_line, WebglWorker};
 use std::process::ExitCode;
@@ -20,21 +19,9 @@ pub struct Args {
 pub fn main(args: Args) -> anyhow::Result<ExitCode> {
     let inst = instance::of_backend(&args.backend)?;
     if args.probe {
-        let (ok, line) = probe_line(inst);
-        println!("{line}");
-        return Ok(if ok {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        });
+        return Ok(super::workers::probe_exit(probe_line(inst)));
     }
     let mut w = WebglWorker::start(inst)?;
-    let stdin = std::io::stdin();
-    let stdout = std::io::stdout();
-    serve(
-        &mut w,
-        std::io::BufReader::with_capacity(1 << 16, stdin),
-        std::io::BufWriter::new(stdout.lock()),
-    )?;
+    super::workers::serve_stdio(&mut w)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -24,22 +24,10 @@ pub fn main(args: Args) -> anyhow::Result<ExitCode> {
         )
     })?;
     if args.probe {
-        let (ok, line) = probe_line(variant);
-        println!("{line}");
-        return Ok(if ok {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        });
+        return Ok(super::workers::probe_exit(probe_line(variant)));
     }
     let mut w = WebgpuWorker::start(variant)?;
-    let stdin = std::io::stdin();
-    let stdout = std::io::stdout();
-    shadowcheck_plan::serve::serve(
-        &mut w,
-        std::io::BufReader::with_capacity(1 << 16, stdin),
-        std::io::BufWriter::new(stdout.lock()),
-    )?;
+    super::workers::serve_stdio(&mut w)?;
     // The last stderr line: what was drawn (the runner shows it with `-v`).
     shadowcheck_runner::errln!("{}", w.stats());
     Ok(ExitCode::SUCCESS)

@@ -32,3 +32,26 @@ impl WorkerCommand {
         }
     }
 }
+
+/// A worker's `--probe` answer: its line on stdout, exit 0 when the implementation starts here,
+/// else 1. (The workers' stdout is their protocol pipe to the runner, hence `println!`.)
+#[allow(clippy::print_stdout)]
+pub fn probe_exit((ok, line): (bool, String)) -> ExitCode {
+    println!("{line}");
+    if ok {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+/// Serves runner/PROTOCOL.md with `w` on stdin/stdout until the runner closes stdin.
+pub fn serve_stdio(w: &mut impl shadowcheck_plan::serve::Serve) -> std::io::Result<()> {
+    let stdin = std::io::stdin();
+    let stdout = std::io::stdout();
+    shadowcheck_plan::serve::serve(
+        w,
+        std::io::BufReader::with_capacity(1 << 16, stdin),
+        std::io::BufWriter::new(stdout.lock()),
+    )
+}
