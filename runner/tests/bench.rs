@@ -59,26 +59,31 @@ fn quick_json_has_every_row_with_positive_finite_values() {
     positive(&rep, "suite_peak_rss_mib", Some("soft"));
     // Checks per compiled state for every API path of the fixtures.
     for path in [
-        "ff", "arbfp", "glsl120", "glsl130", "core", "es100", "es300", "vk",
+        "ff", "arbfp", "glsl120", "glsl130", "core", "es100", "es300", "vk", "wgsl",
     ] {
         positive(&rep, "checks_per_compiled_state", Some(path));
     }
 
-    // Vulkan rows exist exactly when the driver starts; otherwise the report says why.
-    for vk in ["vk:lavapipe", "vk:swiftshader"] {
+    // Vulkan and WebGPU rows exist exactly when the backend starts; otherwise the report says why.
+    for (vk, prefix) in [
+        ("vk:lavapipe", "vk"),
+        ("vk:swiftshader", "vk"),
+        ("webgpu:chromium", "webgpu"),
+    ] {
+        let cold = format!("{prefix}_e2e_cases_per_s");
         let ran = rep["rows"]
             .as_array()
             .unwrap()
             .iter()
-            .any(|r| r["id"] == "vk_e2e_cases_per_s" && r["backend"] == vk);
+            .any(|r| r["id"] == cold.as_str() && r["backend"] == vk);
         if ran {
             for id in [
-                "vk_e2e_cases_per_s",
-                "vk_e2e_warm_cases_per_s",
-                "vk_e2e_cached_cases_per_s",
-                "vk_warm_us_per_check",
+                "e2e_cases_per_s",
+                "e2e_warm_cases_per_s",
+                "e2e_cached_cases_per_s",
+                "warm_us_per_check",
             ] {
-                positive(&rep, id, Some(vk));
+                positive(&rep, &format!("{prefix}_{id}"), Some(vk));
             }
         } else {
             let why = rep["unavailable"].as_array().expect("unavailable");

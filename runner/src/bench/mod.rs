@@ -7,6 +7,7 @@
 //! driver. A row carries its target (a goal of the benchmark, never a test assertion) and whether
 //! this run met it. Nothing here prints: `cmd/bench.rs` renders the [`BenchReport`].
 
+pub mod api_grids;
 pub mod cold;
 pub mod cpu;
 pub mod floor;
@@ -15,7 +16,6 @@ pub mod machine;
 pub mod markdown;
 pub mod run;
 pub mod suite;
-pub mod vulkan;
 
 use serde::{Deserialize, Serialize};
 
@@ -149,11 +149,16 @@ pub mod ids {
     pub const GL_E2E_WARM: &str = "gl_e2e_warm_cases_per_s";
     pub const GL_E2E_CACHED: &str = "gl_e2e_cached_cases_per_s";
     pub const GL_RATIO: &str = "gl_e2e_over_floor";
-    /// The Vulkan backends over the `vulkan/` fixtures (`bench::vulkan`).
+    /// The Vulkan backends over the `vulkan/` fixtures (`bench::api_grids`).
     pub const VK_E2E: &str = "vk_e2e_cases_per_s";
     pub const VK_E2E_WARM: &str = "vk_e2e_warm_cases_per_s";
     pub const VK_E2E_CACHED: &str = "vk_e2e_cached_cases_per_s";
     pub const VK_PER_CHECK: &str = "vk_warm_us_per_check";
+    /// WebGPU in headless Chromium over the `webgpu/` fixtures (`bench::api_grids`).
+    pub const WEBGPU_E2E: &str = "webgpu_e2e_cases_per_s";
+    pub const WEBGPU_E2E_WARM: &str = "webgpu_e2e_warm_cases_per_s";
+    pub const WEBGPU_E2E_CACHED: &str = "webgpu_e2e_cached_cases_per_s";
+    pub const WEBGPU_PER_CHECK: &str = "webgpu_warm_us_per_check";
     pub const SUITE_WALL: &str = "suite_wall_s";
     pub const SUITE_RSS: &str = "suite_peak_rss_mib";
     pub const SUITE_WALL_CACHED: &str = "suite_wall_cached_s";

@@ -17,8 +17,8 @@ pub struct BenchOptions {
     /// Seconds instead of minutes: fewer cases, shorter timings, only `egl:llvmpipe:core` unless
     /// backends are named, the suite rows over the 2D NEAREST fixtures only.
     pub quick: bool,
-    /// The GL and Vulkan backends to measure, named as in `run --backend` (`egl:zink:core`,
-    /// `vk:lavapipe`); empty = all.
+    /// The GL, Vulkan and WebGPU backends to measure, named as in `run --backend`
+    /// (`egl:zink:core`, `vk:lavapipe`, `webgpu:chromium`); empty = all.
     pub backends: Vec<String>,
     /// The fixtures (directories or files; `--fixtures` repeated).
     pub fixtures: Vec<PathBuf>,
@@ -96,9 +96,9 @@ pub fn run(o: &BenchOptions, progress: &mut dyn FnMut(&str)) -> BenchReport {
     let e2e_fixtures = e2e_fixtures(o);
     let (available, gl_version) = gl_rows(o, &e2e_fixtures, &mut found, progress);
     llvmpipe_one_thread_rows(o, &available, &mut found, progress);
-    let (vk_rows, vk_missing) = super::vulkan::rows(o, progress);
-    found.rows.extend(vk_rows);
-    found.unavailable.extend(vk_missing);
+    let (grid_rows, grid_missing) = super::api_grids::rows(o, progress);
+    found.rows.extend(grid_rows);
+    found.unavailable.extend(grid_missing);
 
     let costs = cold::compile_rows(
         o,

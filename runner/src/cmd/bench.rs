@@ -17,9 +17,10 @@ pub struct Args {
     /// Print the report as JSON on stdout instead of the table.
     #[arg(long)]
     json: bool,
-    /// GL or Vulkan backend to measure (repeatable), named as in `run --backend`:
-    /// `egl:llvmpipe:core`, `vk:lavapipe`. Default: every GL backend found (with --quick:
-    /// egl:llvmpipe:core) and vk:lavapipe, vk:swiftshader where they start.
+    /// GL, Vulkan or WebGPU backend to measure (repeatable), named as in `run --backend`:
+    /// `egl:llvmpipe:core`, `vk:lavapipe`, `webgpu:chromium`. Default: every GL backend found
+    /// (with --quick: egl:llvmpipe:core) and vk:lavapipe, vk:swiftshader, webgpu:chromium where
+    /// they start.
     #[arg(long = "backend", short = 'b', value_name = "B")]
     backends: Vec<String>,
     /// Fixture file or directory (repeatable). Default: cases/fixtures.
@@ -55,8 +56,14 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     for b in &a.backends {
+        if bench::api_grids::is_measured(b) {
+            continue;
+        }
         b.parse::<BackendName>().with_context(|| {
-            format!("--backend {b}: bench measures GL backends, named as in `run --backend` (egl:llvmpipe:core, osmesa:softpipe:compat, ...)")
+            format!(
+                "--backend {b}: bench measures GL backends, named as in `run --backend` (egl:llvmpipe:core, osmesa:softpipe:compat, ...), and {}",
+                bench::api_grids::names().join(", ")
+            )
         })?;
     }
     let exe = std::env::current_exe().context("locating the shadowcheck executable")?;
