@@ -17,5 +17,5 @@ mkdir -p "$DIR"
 unzip -o -j -q "$T"/cef_capi_py-131.3.5-*.whl 'cef_capi/runtime/libEGL.so' \
   'cef_capi/runtime/libGLESv2.so' 'cef_capi/runtime/libvulkan.so.1' 'cef_capi/version.py' -d "$DIR"
 rm -rf "$T"
-grep CEF_VERSION "$DIR/version.py" | head -1
+grep '^CEF_VERSION =' "$DIR/version.py"
 ls -l "$DIR"

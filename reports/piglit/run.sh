@@ -32,7 +32,8 @@ OUT=$(cd "$OUT" && pwd)
 # The subset: every test whose name speaks of shadow or depth textures, seamless cubes, sampler
 # objects, stencil texturing or ext_texture_swizzle (1121 tests of the `quick` profile). Serial (-1): with
 # -j 2 under one Xvfb, 33 tests fail to connect to the X server and report "fail" without running
-# (reports/piglit/README.md). About 5-10 minutes per implementation on 2 shared cores.
+# (reports/piglit/README.md). About 5-10 minutes per implementation on 2 shared cores, 28 for
+# zink-swiftshader (its tex-miplevel-selection variants take up to 90 s each).
 FILTER='shadow|depth|seamless|sampler_objects|stencil_texturing|ext_texture_swizzle@'
 SS_DIR=${SHADOWCHECK_SWIFTSHADER_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/shadowcheck/swiftshader-4.0.0.3}
 VK_SS_ICD=${SHADOWCHECK_VK_SWIFTSHADER_ICD:-/usr/lib/chromium/vk_swiftshader_icd.json}
