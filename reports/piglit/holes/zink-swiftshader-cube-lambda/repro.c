@@ -7,14 +7,18 @@
  * MAG_FILTER NEAREST, TEXTURE_CUBE_MAP_SEAMLESS disabled (the default), then enabled.
  * Three units hold the same texture: `plain` (COMPARE_MODE NONE: the texel read names the level),
  * `lo` (COMPARE_REF_TO_TEXTURE, LESS, Dref = d - 0.05) and `hi` (GREATER, Dref = d + 0.05) with
- * d = (F + 1) / 10, so lo * hi = 1 exactly when level F is read (piglit's test).
+ * d = (F + 1) / 10, so lo = hi = 1 exactly when level F is read (piglit multiplies them); lo = 1,
+ * hi = 0 means a texel >= d + 0.05 (a higher level), lo = 0 one <= d - 0.05. The three lookups have
+ * the same coordinates (and gradients), so the same lambda (GL 4.6 §8.14.1: rho is a function of
+ * the coordinates' derivatives; compare state does not enter it).
  * Geometry (piglit's draw_quad): a 3x3 pixel quad with cube coordinates (2s - 1, -1, 2t - 1); the
  * probe is pixel (x + 1, y + 1), on the -Y face (sc = rx, tc = -rz, ma = ry: GL 4.6 §8.13 Table
  * 8.19, s = (sc/|ma| + 1) / 2, t likewise).
  * - implicit (texture()/shadowCube): s, t run from 0 to 3 * 2^F / 32 across the quad, so on -Y one
  *   pixel step changes u = 32 s by 2^F: lambda = F. For F = 4 the probe's 2x2 quad partner lies on
  *   +X (x + 1 even) and/or +Z (y + 1 even); F = 3 stays on -Y. How derivatives across a face edge
- *   enter rho is not said by GL 4.6 §8.14.1: these rows are reported, not judged.
+ *   enter rho is not said by GL 4.6 §8.14.1: these rows are reported, not judged (but the three
+ *   lookups of one row must agree with each other).
  * - grad (textureGrad/shadowCubeGrad, piglit's derivatives): dPdx = (2 / (32 >> F), 0, 0),
  *   dPdy = (0, 0, 2 / (32 >> F)), s, t from 0 to 3/32 (every pixel on -Y): |du/dx| = |dv/dy| =
  *   2^F, the other two 0, so rho = 2^F (8.11), and an approximation f may lie in
@@ -42,19 +46,19 @@ static const char *fs[2][2] = {
     {"#version 130\n"
      "uniform samplerCube plain; uniform samplerCubeShadow lo, hi; uniform float d; uniform vec3 dx, dy;\n"
      "void main() { vec3 c = gl_TexCoord[0].xyz;\n"
-     "  gl_FragColor = vec4(texture(plain, c).r, texture(lo, vec4(c, d - 0.05)) * texture(hi, vec4(c, d + 0.05)), 0.0, 1.0); }\n",
+     "  gl_FragColor = vec4(texture(plain, c).r, texture(lo, vec4(c, d - 0.05)), texture(hi, vec4(c, d + 0.05)), 1.0); }\n",
      "#version 120\n#extension GL_EXT_gpu_shader4 : require\n"
      "uniform samplerCube plain; uniform samplerCubeShadow lo, hi; uniform float d; uniform vec3 dx, dy;\n"
      "void main() { vec3 c = gl_TexCoord[0].xyz;\n"
-     "  gl_FragColor = vec4(textureCube(plain, c).r, shadowCube(lo, vec4(c, d - 0.05)).r * shadowCube(hi, vec4(c, d + 0.05)).r, 0.0, 1.0); }\n"},
+     "  gl_FragColor = vec4(textureCube(plain, c).r, shadowCube(lo, vec4(c, d - 0.05)).r, shadowCube(hi, vec4(c, d + 0.05)).r, 1.0); }\n"},
     {"#version 130\n"
      "uniform samplerCube plain; uniform samplerCubeShadow lo, hi; uniform float d; uniform vec3 dx, dy;\n"
      "void main() { vec3 c = gl_TexCoord[0].xyz;\n"
-     "  gl_FragColor = vec4(textureGrad(plain, c, dx, dy).r, textureGrad(lo, vec4(c, d - 0.05), dx, dy) * textureGrad(hi, vec4(c, d + 0.05), dx, dy), 0.0, 1.0); }\n",
+     "  gl_FragColor = vec4(textureGrad(plain, c, dx, dy).r, textureGrad(lo, vec4(c, d - 0.05), dx, dy), textureGrad(hi, vec4(c, d + 0.05), dx, dy), 1.0); }\n",
      "#version 120\n#extension GL_EXT_gpu_shader4 : require\n"
      "uniform samplerCube plain; uniform samplerCubeShadow lo, hi; uniform float d; uniform vec3 dx, dy;\n"
      "void main() { vec3 c = gl_TexCoord[0].xyz;\n"
-     "  gl_FragColor = vec4(textureCubeGrad(plain, c, dx, dy).r, shadowCubeGrad(lo, vec4(c, d - 0.05), dx, dy).r * shadowCubeGrad(hi, vec4(c, d + 0.05), dx, dy).r, 0.0, 1.0); }\n"}};
+     "  gl_FragColor = vec4(textureCubeGrad(plain, c, dx, dy).r, shadowCubeGrad(lo, vec4(c, d - 0.05), dx, dy).r, shadowCubeGrad(hi, vec4(c, d + 0.05), dx, dy).r, 1.0); }\n"}};
 
 static GLuint make_cube(GLenum mode, GLenum func) {
     GLuint t;
@@ -133,7 +137,7 @@ int main(void) {
     glActiveTexture(GL_TEXTURE2); make_cube(GL_COMPARE_REF_TO_TEXTURE, GL_GREATER);
 
     int bad = 0;
-    printf("lookup    seamless  F  quad(x,y)  partner-x      partner-y      plain (level)  lo*hi  expected\n");
+    printf("lookup    seamless  F  quad(x,y)  partner-x      partner-y      plain (level)  lo hi  expected\n");
     /* grad 0: implicit; 1: piglit's gradients along x (dx) and z (dy); 2: dx only, dy = 0 */
     for (int grad = 0; grad < 3; grad++) {
         GLuint prog = progs[grad ? 1 : 0];
@@ -154,7 +158,7 @@ int main(void) {
                     glReadPixels(x + 1, y + 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
                     float plain = px[0] / 255.0f;
                     int level = (int)(plain * 10 + 0.5f) - 1;
-                    int shadow = px[1] > 127;
+                    int lo = px[1] > 127, hi = px[2] > 127, shadow = lo && hi;
                     int wrong = level != F || !shadow;
                     if (grad == 2)
                         bad |= wrong;
@@ -162,10 +166,10 @@ int main(void) {
                     float step = 2.0f * (grad ? 1 : 1 << F) / SIZE;
                     float px_ = ((x + 1) % 2) ? -1 + 0.5f * step : -1 + 2.5f * step;
                     float pz_ = ((y + 1) % 2) ? -1 + 0.5f * step : -1 + 2.5f * step;
-                    printf("%-8s  %-8s  %d  (%d,%d)      %-14s %-14s %.3f (%d)      %d      level %d, 1%s\n",
+                    printf("%-8s  %-8s  %d  (%d,%d)      %-14s %-14s %.3f (%d)      %d  %d   level %d, 1 1%s\n",
                            grad == 2 ? "grad-x" : grad ? "grad" : "implicit", seamless ? "on" : "off", F, x, y,
                            px_ > 1 ? "+X face" : "-Y face", pz_ > 1 ? "+Z face" : "-Y face",
-                           plain, level, shadow, F, wrong ? "   <-- differs" : "");
+                           plain, level, lo, hi, F, wrong ? "   <-- differs" : "");
                 }
         }
     }
