@@ -97,6 +97,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             .extend(families::mip(d))
             .extend(families::cube(d))
             .extend(families::cube_wraps(d))
+            .extend(families::cube_mip(d))
             .extend(families::layer(d))
             .extend(families::mixfilter(d))
             .extend(families::incomplete(d))

@@ -8,9 +8,11 @@ use crate::build::{self, num, nums, At, Stored};
 use shadowcheck_model::*;
 
 mod addressing;
+mod cube_mip;
 mod state;
 mod unitstate;
 pub use addressing::{cube, cube_wraps, layer, mip, mixfilter, wrap, CUBE_WRAPS};
+pub use cube_mip::cube_mip;
 pub use state::{ambient, dtm, incomplete, proj, stencil};
 pub use unitstate::{sampler_object, seamless, swizzle};
 
