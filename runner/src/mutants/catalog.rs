@@ -137,6 +137,9 @@ pub fn about(f: Fault) -> &'static str {
         F::SamplerObjectRectComplete => {
             "a sampler object's rectangle-illegal state (REPEAT / MIRRORED_REPEAT / MIRROR_CLAMP_TO_EDGE, mipmap min filter) used as if legal instead of making the texture incomplete (GL 4.6 §8.2)"
         }
+        F::GatherIgnoresSamplerObject => {
+            "a shadow gather sampled with the texture's own compare function and wraps although a sampler object is bound (GL 4.6 §8.17.1): a gather x sampler object interaction only the `interact` covering array combines"
+        }
         #[allow(unreachable_patterns)]
         _ => "",
     }
