@@ -177,8 +177,8 @@ impl PairCoverage {
             s.push_str(
                 "| factor pair | allowed | by `interact` | by all cases |\n|---|---:|---:|---:|\n",
             );
-            for i in 0..FACTORS.len() {
-                for j in i + 1..FACTORS.len() {
+            for (i, fi) in FACTORS.iter().enumerate() {
+                for (j, fj) in FACTORS.iter().enumerate().skip(i + 1) {
                     if levels(i) < 2 || levels(j) < 2 {
                         continue;
                     }
@@ -189,9 +189,7 @@ impl PairCoverage {
                     };
                     let _ = writeln!(
                         s,
-                        "| {} x {} | {} | {} | {} |",
-                        FACTORS[i],
-                        FACTORS[j],
+                        "| {fi} x {fj} | {} | {} | {} |",
                         of(&allowed),
                         of(&own),
                         of(&all)

@@ -199,6 +199,10 @@ pub fn grid_change(f: Fault) -> Option<&'static str> {
              (ARB_shadow_ambient: the value is clamped to [0,1] when specified)"
         }
         Fault::LayerTruncated => "cases/src/grids/families.rs `layer`: layer coordinates with a fraction of at least 0.5 (e.g. 1.5)",
+        Fault::GatherIgnoresSamplerObject => {
+            "cases/src/grids/interact.rs `interact`: a shadow gather with a bound sampler object whose compare function \
+             differs from the texture's (GEQUAL against LEQUAL, a footprint split by rows); no other family combines them"
+        }
         Fault::CubeNegYFlipped => "cases/src/grids/families.rs `cube`: -Y face lookups whose rows differ",
         Fault::OffsetInBaseLevelTexels | Fault::OffsetAfterWrap | Fault::OffsetIgnored => {
             "cases/src/grids/families.rs `offset`: offset lookups on a mip level above the base and with REPEAT \
