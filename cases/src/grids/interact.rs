@@ -361,6 +361,91 @@ mod tests {
         assert!(n > 0 && n * 10 < all, "{n} of {all}");
     }
 
+    /// What a test checks of an expectation: the value, the gather components, the layouts.
+    fn outcome(d: &SpecDims, cfg: &Config) -> String {
+        let x = draft(d, cfg).unwrap_or_else(|| panic!("{cfg:?}: no draft"));
+        let c = x.into_case();
+        let e = shadowcheck_oracle::evaluate(&c)
+            .unwrap_or_else(|e| panic!("{}: {e}", c.id))
+            .expect;
+        format!("{:?}", (e.spec_value, e.accept, e.gather, e.layout))
+    }
+
+    #[test]
+    fn each_factor_changes_the_expected_result() {
+        let d = specs::dims(Spec::Gl46);
+        let base = Config {
+            gather: GatherLevel::None,
+            swizzle: None,
+            sampler_object: false,
+            seamless: None,
+            dtm: None,
+            target: Target::T2d,
+        };
+        let gather = Config {
+            gather: GatherLevel::Gather,
+            ..base
+        };
+        let cube = |g: GatherLevel, on: bool| Config {
+            gather: g,
+            seamless: Some(on),
+            target: Target::Cube,
+            ..base
+        };
+        let flips: [(Config, Config); 7] = [
+            // The sampler object's GEQUAL, on a filtered lookup and on a gather.
+            (
+                base,
+                Config {
+                    sampler_object: true,
+                    ..base
+                },
+            ),
+            (
+                gather,
+                Config {
+                    sampler_object: true,
+                    ..gather
+                },
+            ),
+            // Post-swizzle R from GREEN, on a filtered lookup and on a gather.
+            (
+                base,
+                Config {
+                    swizzle: Some(SWIZZLES[0]),
+                    ..base
+                },
+            ),
+            (
+                gather,
+                Config {
+                    swizzle: Some(SWIZZLES[0]),
+                    ..gather
+                },
+            ),
+            // The seamless enable at +Z's edge, filtered and gathered.
+            (
+                cube(GatherLevel::None, false),
+                cube(GatherLevel::None, true),
+            ),
+            (
+                cube(GatherLevel::Gather, false),
+                cube(GatherLevel::Gather, true),
+            ),
+            // DEPTH_TEXTURE_MODE ALPHA against the LUMINANCE default (compatibility paths).
+            (
+                base,
+                Config {
+                    dtm: Some(DepthTextureMode::Alpha),
+                    ..base
+                },
+            ),
+        ];
+        for (a, b) in flips {
+            assert_ne!(outcome(&d, &a), outcome(&d, &b), "{a:?} vs {b:?}");
+        }
+    }
+
     #[test]
     fn a_gather_with_a_dtm_reaches_no_path_and_is_no_candidate() {
         let d = specs::dims(Spec::Gl46);
