@@ -49,6 +49,8 @@ pub struct Coverage {
     pub state: BTreeMap<(ApiPath, StatePname), (usize, bool, bool)>,
     /// Per API path: tests per unit-state column ([`UNIT_STATE`]).
     pub unit_state: BTreeMap<ApiPath, [usize; UNIT_STATE.len()]>,
+    /// The unit-state interaction factors' levels of every test ([`crate::pairs`]).
+    pub pairs: crate::pairs::PairCoverage,
 }
 
 /// (spec, API path, target, gather function).
@@ -193,6 +195,7 @@ impl Coverage {
             *cov.counts.entry(key).or_default() += 1;
             cov.total += 1;
             cov.features.add(c);
+            cov.pairs.add(c);
             for &api in &c.api {
                 let d = cov.per_path.entry(api).or_default();
                 d.tests += 1;
@@ -412,6 +415,8 @@ impl Coverage {
         }
         s.push('\n');
         s.push_str(&self.unit_state_markdown());
+        s.push('\n');
+        s.push_str(&self.pairs.markdown());
         s
     }
 

@@ -8,6 +8,7 @@
 //!   case's `expect` with the linked oracle, `recheck`);
 //! - [`coverage`]: cases per spec x target x format x filter x func, checks per compiled state;
 //! - [`features`]: cases per feature (mixed filters, per-coordinate wraps, ...) and spec;
+//! - [`pairs`]: pairwise coverage of the unit-state interactions (the `interact` covering array);
 //! - [`markers`]: generated sections of hand-written Markdown (README tables).
 //!
 //! The format is documented in cases/README.md; its JSON Schema is cases/schema/fixture.schema.json.
@@ -20,6 +21,7 @@ mod fixture_error;
 pub mod fixtures;
 pub mod grids;
 pub mod markers;
+pub mod pairs;
 mod recheck;
 
 pub use grids::GridError;

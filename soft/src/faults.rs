@@ -183,6 +183,11 @@ faults! {
     /// MIRROR_CLAMP_TO_EDGE or a mipmap min filter) used as if legal instead of making the
     /// texture incomplete (GL 4.6 §8.2): the unit samples a rectangle texture with REPEAT.
     SamplerObjectRectComplete = "sampler-object-rect-complete",
+    /// A shadow gather samples with the texture's own parameters although a sampler object is
+    /// bound (GL 4.6 §8.17.1: the unit's sampling state is the sampler object's), as by a unit
+    /// whose gather path builds its sampler state from the texture object: a pair interaction
+    /// (gather x sampler object) that neither feature's own cases show.
+    GatherIgnoresSamplerObject = "gather-ignores-sampler-object",
     // --- storage ---
     /// Unorm conversion c / 2^b instead of c / (2^b - 1).
     UnormDividedByPowerOfTwo = "unorm-divided-by-power-of-two",

@@ -90,7 +90,9 @@ pub fn effective(
             what: "sampler objects",
         });
     }
-    if faults.has(Fault::SamplerObjectIgnored) {
+    if faults.has(Fault::SamplerObjectIgnored)
+        || (faults.has(Fault::GatherIgnoresSamplerObject) && case.lookup.gather.is_some())
+    {
         return Ok((Cow::Borrowed(s), StateSource::Texture));
     }
     let mut eff = s.clone();

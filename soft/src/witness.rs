@@ -376,6 +376,16 @@ fn sampler_object_greater() -> Case {
     c
 }
 
+/// `gather4` (LEQUAL: (1, 1, 0, 0)) with a bound sampler object whose GEQUAL gives (0, 0, 1, 1)
+/// (GL 4.6 §8.17.1); the faulty unit gathers with the texture's LEQUAL.
+fn gather_with_sampler_object() -> Case {
+    let mut c = gather4();
+    let mut o = SamplerObject::from_sampler(&c.sampler);
+    o.compare_func = CompareFunc::Gequal;
+    c.sampler.sampler_object = Some(o);
+    c
+}
+
 /// Fixed function, DEPTH_TEXTURE_MODE ALPHA, the texel passes: Table 16.1 gives (0, 0, 0, 1);
 /// swizzle (ALPHA, ONE, RED, ZERO) makes it (1, 1, 0, 0) (§15.2.1). The faulty unit returns
 /// (0, 0, 0, 1).
@@ -437,6 +447,7 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         Fault::IncompleteNotZero | Fault::MipmapCompletenessIgnored => mip_incomplete(),
         Fault::EsDepthFilterCompletenessIgnored => es_linear_depth(),
         Fault::SamplerObjectRectComplete => rect_with_repeat_sampler_object(),
+        Fault::GatherIgnoresSamplerObject => gather_with_sampler_object(),
         // Coordinates, addressing and filtering (§8.13, §8.14).
         Fault::ProjectiveDivideMissing | Fault::RefNotDividedByQ => projective(),
         Fault::LayerTruncated => layer_one_and_a_half(),
@@ -553,6 +564,7 @@ mod tests {
         assert_eq!(r(Fault::GatherSwizzlesVector), [0.0; 4]);
         assert_eq!(r(Fault::CompatSwizzleDropped), [1.0, 1.0, 0.0, 0.0]);
         assert_eq!(r(Fault::SamplerObjectRectComplete), [0.0, 0.0, 0.0, 1.0]);
+        assert_eq!(r(Fault::GatherIgnoresSamplerObject), [0.0, 0.0, 1.0, 1.0]);
         // WebGPU (Samplers: GPUCompareFunction, WGSL array_index clamp, cube views).
         assert_eq!(r(Fault::WgpuCompareOperandsSwapped), [1.0, 0.0, 0.0, 1.0]);
         assert_eq!(r(Fault::WgpuArrayIndexWrapped)[0], 0.0);

@@ -6,6 +6,7 @@ pub mod draft;
 pub mod exhaustive;
 pub mod families;
 pub mod gather;
+pub mod interact;
 pub mod offset;
 pub mod random;
 pub mod specs;
@@ -112,6 +113,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
         .extend(families::dtm(d))
         .extend(families::stencil(d))
         .extend(families::ambient(d))
+        .extend(interact::interact(d))
         .extend(random::random(d, seed, RANDOM_PER_SPEC))
         .filter(
             "ES 2.0 has no TEXTURE_MIN_LOD / MAX_LOD / BASE_LEVEL / MAX_LEVEL (added by GL 1.2 and ES 3.0; INVALID_ENUM)",

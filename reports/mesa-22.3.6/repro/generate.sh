@@ -3,7 +3,8 @@
 # build.sh, output.txt, REPORT.md), one known Fail per "shall"-level Mesa cause of reports/README.md.
 # Run from the repository root after `cargo build --release`; needs gcc and the GL dev packages
 # (apt-get install -y gcc libegl-dev libgles-dev libgl-dev libosmesa6-dev). The hand-written
-# reproducers (linear-layer-tie/, compat-layouts/) are not touched.
+# reproducers (linear-layer-tie/, compat-layouts/, gather-softpipe-cube-array/,
+# interact-softpipe-gather-swizzle-sampler-object/) are not touched.
 set -e
 S=${SHADOWCHECK:-target/release/shadowcheck}
 D=reports/mesa-22.3.6/repro
@@ -26,3 +27,6 @@ gen i16-cause6-zink-sampler-object egl:zink:compat 'gl46/2d/d24/nearest/lequal/s
 # cause 6 reached through the swizzle on zink's compatibility paths.
 gen cause11-rect-sampler-object-incomplete egl:llvmpipe:core 'gl46/rect/d24/nearest/lequal/sampler_object/so_rect_wrap=repeat/u=2.5/ref=0.5@core'
 gen r2-cause6-zink-swizzle egl:zink:compat 'gl46/2d/d24/nearest/lequal/swizzle/swizzle=zero_green_blue_alpha/texel1/ref=0.5@glsl120'
+# The `interact` covering array: cause 7 reached through a swizzled *shadow* lookup (the
+# hand-written interact-softpipe-gather-swizzle-sampler-object/ is not touched).
+gen interact-cause7-shadow-swizzle-alpha egl:llvmpipe:compat 'gl46/cube/d24/linear/lequal/interact/swizzle=gbar+seamless=off+dtm=alpha@glsl130'

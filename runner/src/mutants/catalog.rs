@@ -137,6 +137,9 @@ pub fn about(f: Fault) -> &'static str {
         F::SamplerObjectRectComplete => {
             "a sampler object's rectangle-illegal state (REPEAT / MIRRORED_REPEAT / MIRROR_CLAMP_TO_EDGE, mipmap min filter) used as if legal instead of making the texture incomplete (GL 4.6 §8.2)"
         }
+        F::GatherIgnoresSamplerObject => {
+            "a shadow gather sampled with the texture's own compare function and wraps although a sampler object is bound (GL 4.6 §8.17.1): a gather x sampler object interaction only the `interact` covering array combines"
+        }
         #[allow(unreachable_patterns)]
         _ => "",
     }
@@ -196,6 +199,10 @@ pub fn grid_change(f: Fault) -> Option<&'static str> {
              (ARB_shadow_ambient: the value is clamped to [0,1] when specified)"
         }
         Fault::LayerTruncated => "cases/src/grids/families.rs `layer`: layer coordinates with a fraction of at least 0.5 (e.g. 1.5)",
+        Fault::GatherIgnoresSamplerObject => {
+            "cases/src/grids/interact.rs `interact`: a shadow gather with a bound sampler object whose compare function \
+             differs from the texture's (GEQUAL against LEQUAL, a footprint split by rows); no other family combines them"
+        }
         Fault::CubeNegYFlipped => "cases/src/grids/families.rs `cube`: -Y face lookups whose rows differ",
         Fault::OffsetInBaseLevelTexels | Fault::OffsetAfterWrap | Fault::OffsetIgnored => {
             "cases/src/grids/families.rs `offset`: offset lookups on a mip level above the base and with REPEAT \

@@ -278,3 +278,22 @@ fn rect_legal_sampler_object_state_samples_normally() {
         })
     );
 }
+
+/// GL 4.6 §8.17.1: with a sampler object bound, "the sampling state for that unit is taken from
+/// the sampler object", for a gather too: its GEQUAL turns the LEQUAL pattern (1, 1, 0, 0) into
+/// (0, 0, 1, 1). The fault `gather-ignores-sampler-object` gathers with the texture's LEQUAL,
+/// and leaves a filtered lookup alone.
+#[test]
+fn a_gather_takes_the_bound_sampler_objects_compare_function() {
+    let core = ApiPath::GlslCore;
+    let mut c = gather(Spec::Gl46, RED);
+    c.sampler.swizzle = None;
+    let mut o = SamplerObject::from_sampler(&c.sampler);
+    o.compare_func = CompareFunc::Gequal;
+    c.sampler.sampler_object = Some(o);
+    assert_eq!(rgba(&c, core), [0.0, 0.0, 1.0, 1.0]);
+    let f = Fault::GatherIgnoresSamplerObject;
+    assert_eq!(faulty(&c, core, f), [1.0, 1.0, 0.0, 0.0]);
+    c.lookup.gather = None;
+    assert_eq!(faulty(&c, core, f), rgba(&c, core));
+}
