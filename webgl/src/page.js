@@ -83,7 +83,8 @@ globalThis.shadowcheck = (() => {
     const buf = u8.buffer.slice(u8.byteOffset, u8.byteOffset + u8.byteLength);
     switch (type) {
       case gl.UNSIGNED_BYTE: return new Uint8Array(buf);
-      case gl.UNSIGNED_SHORT: return new Uint16Array(buf);
+      case gl.UNSIGNED_SHORT:
+      case gl.UNSIGNED_SHORT_4_4_4_4: return new Uint16Array(buf);
       case gl.UNSIGNED_INT:
       case gl.UNSIGNED_INT_24_8: return new Uint32Array(buf);
       case gl.FLOAT: return new Float32Array(buf);
