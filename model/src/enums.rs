@@ -429,7 +429,9 @@ keyed_enum! {
         /// compatibility context with DEPTH_TEXTURE_MODE ALPHA: contradiction `compat-float-alpha`).
         ROrZero = "r|0",
         /// Shadow textureGather: the comparison result of the texel τi0j1 (component R of the
-        /// result vector), read from [`crate::Expectation::gather`]`[0]`.
+        /// result vector), read from [`crate::Expectation::gather`]`[0]`. The four `g` channels
+        /// also read the components of a result with a set per component: a colour texture's base
+        /// colour Cb (R, G, B, A), or the alpha of an incomplete usampler read (`g3`).
         G0 = "g0",
         /// Gather component G: texel τi1j1 (`gather[1]`).
         G1 = "g1",

@@ -50,7 +50,15 @@ pub fn layout(
         // supported combination (DEPTH_STENCIL in STENCIL_INDEX mode, usampler): the
         // "(0.0, 0.0, 0.0, 1.0) ... for a non-shadow sampler" of §11.1.3.5 with all four channels
         // checked; the sentence's "undefined values" are for unsupported combinations only.
-        let vec4_0001 = matches!(kind, Kind::Depth | Kind::Colour | Kind::Stencil)
+        if kind == Kind::Stencil && !legacy {
+            // A = 1 or the bits of 1.0f (contradiction `incomplete-uint-alpha`): channel `g3`
+            // reads the set holding both (`engine::incomplete_texture`).
+            return (
+                [R, Zero, Zero, Channel::G3],
+                "GL 4.6 / ES 3.2 §11.1.3.5: incomplete → (0,0,0,1) \"in floating-point\" for a non-shadow sampler, here an unsigned integer one",
+            );
+        }
+        let vec4_0001 = matches!(kind, Kind::Depth | Kind::Colour)
             || (rules.incomplete == Incomplete::Legacy0001 && kind != Kind::Compare);
         if legacy || vec4_0001 {
             return (

@@ -93,7 +93,7 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     };
     let layouts = layouts(&mut e, &rules, case, kind, incomplete.is_some(), components);
     if let Some(why) = incomplete {
-        return Ok(incomplete_texture(e, &rules, &why, layouts));
+        return Ok(incomplete_texture(e, &rules, &why, layouts, kind));
     }
     if components > 1 {
         return Ok(colour::run(e, &rules, case, layouts, components));
@@ -272,7 +272,13 @@ impl Layouts {
 }
 
 /// An incomplete texture: r = 0 under every profile.
-fn incomplete_texture(mut e: Eval, rules: &Rules, why: &str, layouts: Layouts) -> Evaluation {
+fn incomplete_texture(
+    mut e: Eval,
+    rules: &Rules,
+    why: &str,
+    layouts: Layouts,
+    kind: Kind,
+) -> Evaluation {
     let cite = match rules.incomplete {
         Incomplete::Legacy0001 => {
             "GL 2.1 §3.11.2 / ARB_fragment_program_shadow / ES 2.0 §3.8.2: (0,0,0,1)"
@@ -287,15 +293,35 @@ fn incomplete_texture(mut e: Eval, rules: &Rules, why: &str, layouts: Layouts) -
     } else {
         "GL 4.6 §8.17"
     });
+    let uint_alpha = kind == Kind::Stencil && layouts.main.values().any(|l| l[3] == Channel::G3);
+    if uint_alpha {
+        e.note(format!(
+            "the alpha of an incomplete texture read through an unsigned integer sampler is 1 or the bits of 1.0f, {ONE_F32_BITS} (contradiction `incomplete-uint-alpha`)"
+        ));
+    }
     let acc = Acceptance(vec![Interval::point(0.0)]);
-    finish(
+    let mut ev = finish(
         e,
         Some(0.0),
-        vec![acc; PROFILES.len()],
+        vec![acc.clone(); PROFILES.len()],
         layouts,
         Footprint::default(),
-    )
+    );
+    if uint_alpha {
+        let set = |a: Acceptance| -> KeyMap<Profile, Acceptance> {
+            PROFILES.iter().map(|p| (p.profile, a.clone())).collect()
+        };
+        let alpha = Acceptance(vec![
+            Interval::point(1.0),
+            Interval::point(ONE_F32_BITS),
+        ]);
+        ev.expect.gather = Some([set(acc.clone()), set(acc.clone()), set(acc), set(alpha)]);
+    }
+    ev
 }
+
+/// 1.0f's bits as an unsigned integer, 0x3F800000.
+const ONE_F32_BITS: f64 = 1065353216.0;
 
 /// A lookup whose texel selection the spec leaves undefined: every value r can take (`iv`) is
 /// accepted.
