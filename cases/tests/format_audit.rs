@@ -20,7 +20,10 @@ fn committed() -> Vec<Case> {
     let mut out = Vec::new();
     for p in fixtures::fixture_paths(&dir).unwrap() {
         let rel = p.strip_prefix(&dir).unwrap().to_string_lossy().to_string();
-        if format_audit::SPECS.iter().any(|s| rel.starts_with(&format!("{s}/"))) {
+        if format_audit::SPECS
+            .iter()
+            .any(|s| rel.starts_with(&format!("{s}/")))
+        {
             out.extend(fixtures::load_file(&p).unwrap().cases);
         }
     }

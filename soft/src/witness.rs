@@ -163,9 +163,13 @@ fn colour(format: Format, texel: [u32; 4]) -> Case {
     c
 }
 
-/// A one-level D24S8 texture read as STENCIL_INDEX with a mipmap filter: incomplete, (0,0,0,1).
+/// A one-level 2x1 D24S8 texture read as STENCIL_INDEX with a mipmap filter: incomplete (level 1
+/// is missing), (0,0,0,1).
 fn stencil_incomplete() -> Case {
-    let mut c = stencil_index();
+    let mut c = gl(vec![0, 0], 2, CompareFunc::Lequal);
+    c.texture.format = Format::D24S8;
+    c.texture.levels[0].stencil = Some(vec![7, 7]);
+    c.sampler.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
     c.sampler.compare_mode = CompareMode::None;
     c.sampler.min_filter = Filter::NearestMipmapNearest;
     c

@@ -311,10 +311,7 @@ fn incomplete_texture(
         let set = |a: Acceptance| -> KeyMap<Profile, Acceptance> {
             PROFILES.iter().map(|p| (p.profile, a.clone())).collect()
         };
-        let alpha = Acceptance(vec![
-            Interval::point(1.0),
-            Interval::point(ONE_F32_BITS),
-        ]);
+        let alpha = Acceptance(vec![Interval::point(1.0), Interval::point(ONE_F32_BITS)]);
         ev.expect.gather = Some([set(acc.clone()), set(acc.clone()), set(acc), set(alpha)]);
     }
     ev
