@@ -27,7 +27,7 @@ pub(super) fn run(
 ) -> Evaluation {
     let mut sets: Vec<Vec<Acceptance>> = Vec::with_capacity(4);
     let mut first: Option<(Option<f64>, Footprint)> = None;
-    for c in 0..components {
+    for (c, name) in NAMES.iter().enumerate().take(components) {
         // Component 0's derivation is the case's; the others add one step each (their texel
         // selection, λ and weights are component 0's).
         let mut scratch = Eval {
@@ -45,7 +45,7 @@ pub(super) fn run(
                     e.step(
                         format!(
                             "component {} of Cb: {} (filtered like R, from component {c} of the texels and of TEXTURE_BORDER_COLOR)",
-                            NAMES[c],
+                            name,
                             spec_value.map_or("no single value".to_string(), |v| v.to_string())
                         ),
                         "GL 4.6 §11.1.3.5 (τ computed per §8.14, §8.15), Table 15.1",

@@ -104,6 +104,9 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     })
 }
 
+/// The spec value, the acceptance set per profile (in `PROFILES` order) and the footprint of r.
+type Value = (Option<f64>, Vec<Acceptance>, Footprint);
+
 /// r of one component (0 but for a colour texture of several components): the spec value, the
 /// acceptance set per profile (in `PROFILES` order) and the footprint; or, where the spec leaves
 /// the texel selection undefined, every value r can take and why.
@@ -113,7 +116,7 @@ fn value(
     case: &Case,
     kind: Kind,
     component: usize,
-) -> Result<(Option<f64>, Vec<Acceptance>, Footprint), (Interval, &'static str)> {
+) -> Result<Value, (Interval, &'static str)> {
     let coords = inputs::coords(case);
     let mut tcx = inputs::texel_ctx(e, rules, case, kind, &coords);
     tcx.component = component;
