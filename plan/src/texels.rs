@@ -233,4 +233,40 @@ mod tests {
         assert_eq!(b.len(), 8);
         assert_eq!(decode_stored(Format::D32fS8, &b), Texels::Float(vec![0.25]));
     }
+
+    #[test]
+    fn colour_texels_upload_their_components_and_decode_back() {
+        let lvl = |texels: Vec<[u32; 4]>| Level {
+            width: texels.len() as u32,
+            height: 1,
+            layers: 1,
+            depth: Texels::Colour(texels),
+            stencil: None,
+        };
+        // RGB8: three bytes a texel, A (absent) not uploaded.
+        let rgb = lvl(vec![[1, 2, 3, 0], [4, 5, 6, 0]]);
+        let b = level_bytes(Format::Rgb8, &rgb).unwrap();
+        assert_eq!(b, vec![1, 2, 3, 4, 5, 6]);
+        assert_eq!(decode_stored(Format::Rgb8, &b), rgb.depth);
+        assert_eq!(transfer(Format::Rgb8).3, 3);
+        // RGBA4: UNSIGNED_SHORT_4_4_4_4, R in the top four bits.
+        let rgba4 = lvl(vec![[0xA, 0xB, 0xC, 0xD]]);
+        let b = level_bytes(Format::Rgba4, &rgba4).unwrap();
+        assert_eq!(u16::from_ne_bytes([b[0], b[1]]), 0xABCD);
+        assert_eq!(decode_stored(Format::Rgba4, &b), rgba4.depth);
+        // RG8 and RGBA8.
+        let rg = lvl(vec![[9, 8, 0, 0]]);
+        assert_eq!(level_bytes(Format::Rg8, &rg).unwrap(), vec![9, 8]);
+        let rgba = lvl(vec![[9, 8, 7, 6]]);
+        assert_eq!(level_bytes(Format::Rgba8, &rgba).unwrap(), vec![9, 8, 7, 6]);
+        // Unorm texels are no colour encoding.
+        assert!(level_bytes(
+            Format::Rgba8,
+            &Level {
+                depth: Texels::Unorm(vec![1]),
+                ..rgba
+            }
+        )
+        .is_err());
+    }
 }
