@@ -64,8 +64,34 @@ pub fn f32_next_down(v: f64) -> f64 {
     -f32_next_up(-v)
 }
 
-/// Texels of one level from nominal values.
+/// The nominal components (R, G, B, A) of a colour texel of nominal value `v`: R = v, G = 1 − v,
+/// B = v / 2, A = (1 + v) / 2, so that every component of a footprint differs from the others
+/// and a channel read from the wrong component shows.
+pub fn colour_components(v: f64) -> [f64; 4] {
+    [v, 1.0 - v, v / 2.0, (1.0 + v) / 2.0]
+}
+
+/// A colour texel of a format of several components from nominal components (absent ones 0).
+pub fn colour_texel(format: Format, comps: [f64; 4]) -> [u32; 4] {
+    let n = format.components();
+    let b = format.unorm_bits().unwrap_or(8);
+    let mut t = [0u32; 4];
+    for (i, v) in comps.iter().enumerate().take(n) {
+        t[i] = (v.clamp(0.0, 1.0) * unorm_max(b) as f64).round() as u32;
+    }
+    t
+}
+
+/// Texels of one level from nominal values (a colour format of several components: the
+/// components of [`colour_components`]).
 pub fn texels(format: Format, vals: &[f64]) -> Texels {
+    if format.is_multi_colour() {
+        return Texels::Colour(
+            vals.iter()
+                .map(|v| colour_texel(format, colour_components(*v)))
+                .collect(),
+        );
+    }
     if format.unorm_bits().is_some() {
         Texels::Unorm(
             vals.iter()
@@ -82,6 +108,20 @@ pub fn texels(format: Format, vals: &[f64]) -> Texels {
 
 /// Texels given directly as stored unorm integers (or f32 values for float formats).
 pub fn texels_exact(format: Format, vals: &[Stored]) -> Texels {
+    if format.is_multi_colour() {
+        // The stored integer in every component the format has.
+        let n = format.components();
+        return Texels::Colour(
+            vals.iter()
+                .map(|s| {
+                    let c = if let Stored::Unorm(c) = s { *c } else { 0 };
+                    let mut t = [0u32; 4];
+                    t.iter_mut().take(n).for_each(|x| *x = c);
+                    t
+                })
+                .collect(),
+        );
+    }
     if format.unorm_bits().is_some() {
         Texels::Unorm(
             vals.iter()

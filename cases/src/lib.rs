@@ -19,6 +19,7 @@ pub mod dsl;
 pub mod features;
 mod fixture_error;
 pub mod fixtures;
+pub mod format_audit;
 pub mod grids;
 pub mod markers;
 pub mod pairs;

@@ -16,6 +16,10 @@ pub enum Texels {
     Unorm(Vec<u32>),
     /// Floating-point depth (D32F, D32F_S8). Finite values; the upload clamps them to [0,1].
     Float(Vec<f32>),
+    /// A colour format of more than one component (RG8, RGB8, RGBA8, RGBA4): per texel the unorm
+    /// integers (R, G, B, A) at the format's bits per component; the components the base format
+    /// lacks (B and A of RG, A of RGB) are 0 and not uploaded.
+    Colour(Vec<[u32; 4]>),
 }
 
 impl Texels {
@@ -23,6 +27,16 @@ impl Texels {
         match self {
             Texels::Unorm(v) => v.len(),
             Texels::Float(v) => v.len(),
+            Texels::Colour(v) => v.len(),
+        }
+    }
+    /// One component of colour texels as unorm integers (component 0 of [`Texels::Unorm`] is the
+    /// texels themselves); `None` for float texels or a component out of range.
+    pub fn component(&self, i: usize) -> Option<Vec<u32>> {
+        match self {
+            Texels::Unorm(v) if i == 0 => Some(v.clone()),
+            Texels::Colour(v) if i < 4 => Some(v.iter().map(|c| c[i]).collect()),
+            _ => None,
         }
     }
     pub fn is_empty(&self) -> bool {

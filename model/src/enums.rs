@@ -238,6 +238,15 @@ keyed_enum! {
         DepthUnsized = "depth",
         /// A colour texture (R8 / LUMINANCE8): comparison is bypassed.
         R8 = "r8",
+        /// RGBA8 colour (base format RGBA, 8 bits a component): comparison is bypassed, the
+        /// result is the base colour Cb = (R, G, B, A) (GL 4.6 Table 15.1).
+        Rgba8 = "rgba8",
+        /// RGB8 colour (base RGB): Cb = (R, G, B, 1).
+        Rgb8 = "rgb8",
+        /// RGBA4 colour (base RGBA, 4 bits a component): Cb = (R, G, B, A).
+        Rgba4 = "rgba4",
+        /// RG8 colour (base RG, GL 3.0 / ES 3.0): Cb = (R, G, 0, 1).
+        Rg8 = "rg8",
     }
 }
 
@@ -253,22 +262,47 @@ impl Format {
             Format::D32fS8 => 0x8CAD,
             Format::DepthUnsized => 0x1902,
             Format::R8 => 0x8229,
+            Format::Rgba8 => 0x8058,
+            Format::Rgb8 => 0x8051,
+            Format::Rgba4 => 0x8056,
+            Format::Rg8 => 0x822B,
         }
     }
-    /// Bits of the stored unorm integer; `None` for floating-point depth.
-    /// For the unsized format this is the bits of the uploaded integers (16).
+    /// Bits of the stored unorm integer (of each component for a colour format); `None` for
+    /// floating-point depth. For the unsized format this is the bits of the uploaded integers (16).
     pub fn unorm_bits(self) -> Option<u32> {
         match self {
             Format::D16 | Format::DepthUnsized => Some(16),
             Format::D24 | Format::D24S8 => Some(24),
             Format::D32 => Some(32),
-            Format::R8 => Some(8),
+            Format::R8 | Format::Rgba8 | Format::Rgb8 | Format::Rg8 => Some(8),
+            Format::Rgba4 => Some(4),
             Format::D32f | Format::D32fS8 => None,
         }
     }
     /// Base internal format is DEPTH_COMPONENT or DEPTH_STENCIL.
     pub fn is_depth(self) -> bool {
-        !matches!(self, Format::R8)
+        !self.is_colour()
+    }
+    /// A colour format (comparison is bypassed: GL 4.6 §8.23 "Otherwise ... texture comparison is
+    /// bypassed").
+    pub fn is_colour(self) -> bool {
+        self.components() > 0
+    }
+    /// Components of a colour format's base internal format (RED 1, RG 2, RGB 3, RGBA 4); 0 for
+    /// depth formats. A colour format with more than one stores [`crate::Texels::Colour`].
+    pub fn components(self) -> usize {
+        match self {
+            Format::R8 => 1,
+            Format::Rg8 => 2,
+            Format::Rgb8 => 3,
+            Format::Rgba8 | Format::Rgba4 => 4,
+            _ => 0,
+        }
+    }
+    /// A colour format of more than one component (its texels are [`crate::Texels::Colour`]).
+    pub fn is_multi_colour(self) -> bool {
+        self.components() > 1
     }
     /// Has a stencil component (base format DEPTH_STENCIL).
     pub fn has_stencil(self) -> bool {
@@ -395,7 +429,9 @@ keyed_enum! {
         /// compatibility context with DEPTH_TEXTURE_MODE ALPHA: contradiction `compat-float-alpha`).
         ROrZero = "r|0",
         /// Shadow textureGather: the comparison result of the texel τi0j1 (component R of the
-        /// result vector), read from [`crate::Expectation::gather`]`[0]`.
+        /// result vector), read from [`crate::Expectation::gather`]`[0]`. The four `g` channels
+        /// also read the components of a result with a set per component: a colour texture's base
+        /// colour Cb (R, G, B, A), or the alpha of an incomplete usampler read (`g3`).
         G0 = "g0",
         /// Gather component G: texel τi1j1 (`gather[1]`).
         G1 = "g1",

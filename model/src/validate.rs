@@ -165,7 +165,44 @@ fn validate_texels(case: &Case, i: usize, lvl: &Level) -> Result<(), ModelError>
             format!("{} values for {} texels", lvl.depth.len(), n),
         ));
     }
+    let multi = tex.format.is_multi_colour();
     match (&lvl.depth, bits) {
+        (Texels::Colour(v), Some(b)) if multi => {
+            let max = (1u32 << b) - 1;
+            let n = tex.format.components();
+            for (j, c) in v.iter().enumerate() {
+                for (k, &x) in c.iter().enumerate() {
+                    let bad = if k < n {
+                        (x > max).then(|| format!("{x} exceeds {b}-bit unorm maximum {max}"))
+                    } else {
+                        (x != 0).then(|| format!("component {k} is {x}, but format {} has {n} components (an absent component is 0)", tex.format))
+                    };
+                    if let Some(why) = bad {
+                        return Err(invalid(case, format!("{}[{j}][{k}]", f("depth")), why));
+                    }
+                }
+            }
+        }
+        (Texels::Colour(_), _) => {
+            return Err(invalid(
+                case,
+                f("depth"),
+                format!(
+                    "format {} is not a colour format of several components, got colour texels",
+                    tex.format
+                ),
+            ));
+        }
+        (_, Some(_)) if multi => {
+            return Err(invalid(
+                case,
+                f("depth"),
+                format!(
+                    "format {} stores colour texels ({{\"colour\": [[r,g,b,a], ...]}})",
+                    tex.format
+                ),
+            ));
+        }
         (Texels::Unorm(v), Some(b)) => {
             let max = if b == 32 { u32::MAX } else { (1u32 << b) - 1 };
             if let Some((j, x)) = v.iter().enumerate().find(|(_, x)| **x > max) {

@@ -96,6 +96,11 @@ pub const LEGACY_FORMATS: &[Format] = &[
     Format::D24S8,
     Format::DepthUnsized,
     Format::R8,
+    // GL 1.1's sized colour formats (GL 2.1 Table 3.16): ARB_shadow "Otherwise, the texture unit
+    // operates in the normal manner" for them too. RG8 is GL 3.0's (ARB_texture_rg).
+    Format::Rgba8,
+    Format::Rgb8,
+    Format::Rgba4,
 ];
 
 /// The TexParameter state of ARB_shadow (with ARB_depth_texture's DEPTH_TEXTURE_MODE, and

@@ -19,6 +19,13 @@ pub struct Contradiction {
 
 pub const ALL: &[Contradiction] = &[
     Contradiction {
+        id: "incomplete-uint-alpha",
+        title: "Alpha of an incomplete texture read through an unsigned integer sampler (STENCIL_INDEX)",
+        defended: "Both readings are accepted (the channel's set holds 1 and 1065353216), labelled implementation-defined: §11.1.3.5 gives \"(0.0, 0.0, 0.0, 1.0), in floating-point, ... for a non-shadow sampler\", and a usampler reading a DEPTH_STENCIL texture in STENCIL_INDEX mode is a non-shadow sampler on a supported combination (the sentence's \"undefined values\" are for unsupported ones), so R, G and B are 0 under either reading.",
+        other: "\"in floating-point\" read literally: the alpha word holds the bits of 1.0f, 0x3F800000 = 1065353216 as an unsigned integer; or read as the value one: the integer 1 (GLSL ES 3.20 §8.9.4: incomplete textures \"return a texture source color of (0,0,0,1)\").",
+        sources: "GL 4.6 §11.1.3.5, ES 3.2 §11.1.3.5 (incomplete textures); GLSL ES 3.20 §8.9.4",
+    },
+    Contradiction {
         id: "sgix-lequal-direction",
         title: "Direction of TEXTURE_LEQUAL_R_SGIX",
         defended: "SGIX_shadow's own text: TEXTURE_LEQUAL_R_SGIX passes if texel <= R (GEQUAL_R: texel >= R). The normative extension body is the only definition of its tokens.",

@@ -93,6 +93,11 @@ pub fn rules() -> Rules {
             Format::D32fS8,
             Format::DepthUnsized,
             Format::R8,
+            // ES 3.2 Table 8.10's colour formats a compare mode can meet: comparison is bypassed.
+            Format::Rgba8,
+            Format::Rgb8,
+            Format::Rgba4,
+            Format::Rg8,
         ],
         mode_pname: state::TEXTURE_COMPARE_MODE,
         func_pname: state::TEXTURE_COMPARE_FUNC,

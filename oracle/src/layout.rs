@@ -46,6 +46,18 @@ pub fn layout(
         // A vec4 (non-shadow) result: (0,0,0,1) under ES 2.0 and GL 2.1, and under GL 4.6 / ES 3.2
         // §11.1.3.5 too: "(0.0, 0.0, 0.0, 1.0), in floating-point, will be returned for a non-shadow
         // sampler and 0 for a shadow sampler". G, B and A are checked, not only r.
+        // A stencil read goes through an unsigned integer sampler, a non-shadow sampler reading a
+        // supported combination (DEPTH_STENCIL in STENCIL_INDEX mode, usampler): the
+        // "(0.0, 0.0, 0.0, 1.0) ... for a non-shadow sampler" of §11.1.3.5 with all four channels
+        // checked; the sentence's "undefined values" are for unsupported combinations only.
+        if kind == Kind::Stencil && !legacy {
+            // A = 1 or the bits of 1.0f (contradiction `incomplete-uint-alpha`): channel `g3`
+            // reads the set holding both (`engine::incomplete_texture`).
+            return (
+                [R, Zero, Zero, Channel::G3],
+                "GL 4.6 / ES 3.2 §11.1.3.5: incomplete → (0,0,0,1) \"in floating-point\" for a non-shadow sampler, here an unsigned integer one",
+            );
+        }
         let vec4_0001 = matches!(kind, Kind::Depth | Kind::Colour)
             || (rules.incomplete == Incomplete::Legacy0001 && kind != Kind::Compare);
         if legacy || vec4_0001 {
@@ -157,6 +169,52 @@ pub fn layout(
             }
         }
     }
+}
+
+/// The base colour Cb of a colour texture of `components` (2, 3, 4) components, read through a
+/// non-shadow sampler: component i of Cb is the filtered component i (the `g0`..`g3` channels read
+/// the per-component sets of [`shadowcheck_model::Expectation::gather`]); the components the base
+/// format lacks are 0 (G, B) and 1 (A). GL 4.6 Table 15.1 / ES 3.2 Table 14.1 (RG (Rt,Gt,0) 1;
+/// RGB (Rt,Gt,Bt) 1; RGBA (Rt,Gt,Bt) At), the same rows as GL 2.1 Table 3.20 and compatibility
+/// Table 16.1, so fixed function (COMBINE REPLACE of (Cs, As)) reads it too.
+pub fn colour_base(components: usize) -> [Channel; 4] {
+    use Channel::{G0, G1, G2, G3};
+    match components {
+        2 => [G0, G1, Zero, One],
+        3 => [G0, G1, G2, One],
+        _ => [G0, G1, G2, G3],
+    }
+}
+
+/// The readings of a complete lookup of a colour texture of several components on `api`: Cb
+/// ([`colour_base`]), then the texture swizzle where the spec has one (§15.2.1: "Cs[i] = Cb[...]";
+/// compatibility §16.1 for fixed function). Comparison is bypassed (§8.23 / ES §8.20: "the texture
+/// unit operates in the normal manner"), so the path's shadow layout never applies: the lookup is
+/// made through a non-shadow sampler (a shadow sampler on a colour texture is undefined,
+/// §11.1.3.5, and is not drawn).
+pub fn colour_readings(
+    rules: &Rules,
+    api: ApiPath,
+    components: usize,
+    sw: Option<[Swizzle; 4]>,
+) -> Readings {
+    let base = colour_base(components);
+    let cite = if api == ApiPath::FixedFunction {
+        "GL 2.1 Table 3.20 / compatibility Table 16.1 (colour texture, comparison bypassed: Cb of its base format); §3.8.13 COMBINE REPLACE of (Cs, As)"
+    } else {
+        "GL 4.6 §8.23.1 / ES 3.2 §8.20.1 (comparison bypassed); GL 4.6 Table 15.1 / ES 3.2 Table 14.1 (Cb of the colour's base format), every component checked"
+    };
+    let mut out = Readings {
+        main: base,
+        cite,
+        unswizzled: None,
+        others: Vec::new(),
+    };
+    if let Some(sw) = sw.filter(|_| rules.swizzle.is_some()) {
+        out.unswizzled = Some(base);
+        out.main = swizzled(base, sw);
+    }
+    out
 }
 
 /// Contradiction `compat-depth-cb`: the texture base colour of a GLSL 1.30 lookup of depth data in

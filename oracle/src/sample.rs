@@ -130,6 +130,10 @@ pub struct TexelCtx<'a> {
     /// r for a passing / failing texel.
     pub pass_v: f64,
     pub fail_v: f64,
+    /// The component of a colour texture's texels and border colour this evaluation reads (0:
+    /// R; a colour format of several components is evaluated once per component, GL 4.6
+    /// Table 15.1 building Cb from them). 0 for every other format.
+    pub component: usize,
 }
 
 struct Source {
@@ -178,9 +182,17 @@ impl TexelCtx<'_> {
                 },
             };
         }
+        let colour = match &l.depth {
+            Texels::Colour(v) => Some(v.get(idx).map_or(0, |c| c[self.component.min(3)])),
+            _ => None,
+        };
         match &l.depth {
-            Texels::Unorm(v) => {
-                let c = v.get(idx).copied().unwrap_or(0) as u64;
+            Texels::Unorm(_) | Texels::Colour(_) => {
+                let c = match (&l.depth, colour) {
+                    (_, Some(c)) => c as u64,
+                    (Texels::Unorm(v), None) => v.get(idx).copied().unwrap_or(0) as u64,
+                    _ => 0,
+                };
                 let bits = tex.format.unorm_bits().unwrap_or(16);
                 let value = Exact::Q {
                     c,
@@ -223,7 +235,9 @@ impl TexelCtx<'_> {
     }
 
     fn border(&self) -> Source {
-        let b = self.case.sampler.border[0] as f64;
+        // TEXTURE_BORDER_COLOR: its first component for a depth texture (§8.14.2), the component
+        // being evaluated for a colour texture ("the border values are used as the texel").
+        let b = self.case.sampler.border[self.component.min(3)] as f64;
         let fixed = self.fixed();
         if self.kind == Kind::Stencil {
             return Source {

@@ -17,6 +17,14 @@ pub const DEPTH24_STENCIL8: u32 = 0x88F0;
 pub const DEPTH32F_STENCIL8: u32 = 0x8CAD;
 pub const FLOAT_32_UNSIGNED_INT_24_8_REV: u32 = 0x8DAD;
 pub const R8: u32 = 0x8229;
+pub const RG: u32 = 0x8227;
+pub const RGB: u32 = 0x1907;
+pub const RGBA: u32 = 0x1908;
+pub const RG8: u32 = 0x822B;
+pub const RGB8: u32 = 0x8051;
+pub const RGBA8: u32 = 0x8058;
+pub const RGBA4: u32 = 0x8056;
+pub const UNSIGNED_SHORT_4_4_4_4: u32 = 0x8033;
 
 pub const TEXTURE_BORDER_COLOR: u32 = 0x1004;
 pub const TEXTURE_MAG_FILTER: u32 = 0x2800;

@@ -71,6 +71,13 @@ pub fn transfer(format: Format) -> (i32, u32, u32, usize) {
             8,
         ),
         Format::R8 => (gl::R8 as i32, gl::RED, gl::UNSIGNED_BYTE, 1),
+        // The colour formats of several components: one byte a component, RGBA4 as one packed
+        // UNSIGNED_SHORT_4_4_4_4 (R in the top four bits, GL 4.6 Table 8.8), so the stored
+        // integers are the case's (§8.4.4.2: a packed component of b bits is c / (2^b - 1)).
+        Format::Rg8 => (gl::RG8 as i32, gl::RG, gl::UNSIGNED_BYTE, 2),
+        Format::Rgb8 => (gl::RGB8 as i32, gl::RGB, gl::UNSIGNED_BYTE, 3),
+        Format::Rgba8 => (gl::RGBA8 as i32, gl::RGBA, gl::UNSIGNED_BYTE, 4),
+        Format::Rgba4 => (gl::RGBA4 as i32, gl::RGBA, gl::UNSIGNED_SHORT_4_4_4_4, 2),
     }
 }
 
@@ -114,6 +121,15 @@ pub fn level_bytes(format: Format, level: &Level) -> Result<Vec<u8>, PlanError> 
             .enumerate()
             .for_each(|(i, &c)| out.extend_from_slice(&((c << 8) | stencil(i)).to_ne_bytes())),
         (Texels::Unorm(v), Format::R8) => v.iter().for_each(|&c| out.push(c as u8)),
+        (Texels::Colour(v), Format::Rg8 | Format::Rgb8 | Format::Rgba8) => {
+            let n = format.components();
+            v.iter()
+                .for_each(|c| out.extend(c[..n].iter().map(|&x| x as u8)))
+        }
+        (Texels::Colour(v), Format::Rgba4) => v.iter().for_each(|c| {
+            let packed = c.iter().fold(0u16, |acc, &x| (acc << 4) | (x as u16 & 0xF));
+            out.extend_from_slice(&packed.to_ne_bytes())
+        }),
         (Texels::Float(v), Format::D32f) => v
             .iter()
             .for_each(|&f| out.extend_from_slice(&f.to_ne_bytes())),
@@ -146,6 +162,28 @@ pub fn decode_stored(format: Format, bytes: &[u8]) -> Texels {
         Format::D32f => Texels::Float(u32s(4).map(f32::from_bits).collect()),
         Format::D32fS8 => Texels::Float(u32s(8).map(f32::from_bits).collect()),
         Format::R8 => Texels::Unorm(bytes.iter().map(|&b| b as u32).collect()),
+        Format::Rg8 | Format::Rgb8 | Format::Rgba8 => {
+            let n = format.components();
+            Texels::Colour(
+                bytes
+                    .chunks_exact(n)
+                    .map(|c| {
+                        let mut t = [0u32; 4];
+                        c.iter().enumerate().for_each(|(i, &b)| t[i] = b as u32);
+                        t
+                    })
+                    .collect(),
+            )
+        }
+        Format::Rgba4 => Texels::Colour(
+            bytes
+                .chunks_exact(2)
+                .map(|c| {
+                    let p = u16::from_ne_bytes([c[0], c[1]]) as u32;
+                    [(p >> 12) & 0xF, (p >> 8) & 0xF, (p >> 4) & 0xF, p & 0xF]
+                })
+                .collect(),
+        ),
     }
 }
 
@@ -194,5 +232,41 @@ mod tests {
         let b = level_bytes(Format::D32fS8, &f).unwrap();
         assert_eq!(b.len(), 8);
         assert_eq!(decode_stored(Format::D32fS8, &b), Texels::Float(vec![0.25]));
+    }
+
+    #[test]
+    fn colour_texels_upload_their_components_and_decode_back() {
+        let lvl = |texels: Vec<[u32; 4]>| Level {
+            width: texels.len() as u32,
+            height: 1,
+            layers: 1,
+            depth: Texels::Colour(texels),
+            stencil: None,
+        };
+        // RGB8: three bytes a texel, A (absent) not uploaded.
+        let rgb = lvl(vec![[1, 2, 3, 0], [4, 5, 6, 0]]);
+        let b = level_bytes(Format::Rgb8, &rgb).unwrap();
+        assert_eq!(b, vec![1, 2, 3, 4, 5, 6]);
+        assert_eq!(decode_stored(Format::Rgb8, &b), rgb.depth);
+        assert_eq!(transfer(Format::Rgb8).3, 3);
+        // RGBA4: UNSIGNED_SHORT_4_4_4_4, R in the top four bits.
+        let rgba4 = lvl(vec![[0xA, 0xB, 0xC, 0xD]]);
+        let b = level_bytes(Format::Rgba4, &rgba4).unwrap();
+        assert_eq!(u16::from_ne_bytes([b[0], b[1]]), 0xABCD);
+        assert_eq!(decode_stored(Format::Rgba4, &b), rgba4.depth);
+        // RG8 and RGBA8.
+        let rg = lvl(vec![[9, 8, 0, 0]]);
+        assert_eq!(level_bytes(Format::Rg8, &rg).unwrap(), vec![9, 8]);
+        let rgba = lvl(vec![[9, 8, 7, 6]]);
+        assert_eq!(level_bytes(Format::Rgba8, &rgba).unwrap(), vec![9, 8, 7, 6]);
+        // Unorm texels are no colour encoding.
+        assert!(level_bytes(
+            Format::Rgba8,
+            &Level {
+                depth: Texels::Unorm(vec![1]),
+                ..rgba
+            }
+        )
+        .is_err());
     }
 }

@@ -173,6 +173,22 @@ pub fn outside_upload_allowance(
                 .find(|(_, (a, b))| !ok(**a, **b))
                 .map(|(i, (a, b))| format!("texel {i}: fixture {a}, stored {b}"))
         }
+        // A colour format of several components: each component an integer of the format's
+        // bits, stored as uploaded or as a neighbour (§2.3.5.2 (2.3)).
+        (Texels::Colour(f), Texels::Colour(s)) => {
+            if f.len() != s.len() {
+                return Some(format!(
+                    "{} texels in the fixture, {} stored",
+                    f.len(),
+                    s.len()
+                ));
+            }
+            f.iter()
+                .zip(s)
+                .enumerate()
+                .find(|(_, (a, b))| a.iter().zip(b.iter()).any(|(x, y)| x.abs_diff(*y) > 1))
+                .map(|(i, (a, b))| format!("texel {i}: fixture {a:?}, stored {b:?}"))
+        }
         _ => Some("the stored texels are of another type than the fixture's".to_string()),
     }
 }

@@ -79,6 +79,11 @@ faults! {
     // --- which textures take part ---
     /// Comparison applied to a colour (R8) texture instead of being bypassed.
     CompareAppliedToColour = "compare-applied-to-colour",
+    /// A colour texture of several components (RG8, RGB8, RGBA8, RGBA4) read as RED: (R, 0, 0, 1),
+    /// the other components dropped (Table 15.1 not followed past R).
+    ColourAsRed = "colour-as-red",
+    /// The A of an RG / RGB colour texture read as 0 instead of 1 (Table 15.1: Ab = 1).
+    ColourAlphaZero = "colour-alpha-zero",
     /// DEPTH_STENCIL_TEXTURE_MODE = STENCIL_INDEX ignored (depth returned).
     StencilModeIgnored = "stencil-mode-ignored",
     /// STENCIL_INDEX mode honoured, but with TEXTURE_COMPARE_MODE on the stencil index is compared
@@ -87,6 +92,9 @@ faults! {
     // --- completeness (§8.17, §11.1.3.5) ---
     /// An incomplete texture is sampled as if complete instead of returning 0 / (0,0,0,1).
     IncompleteNotZero = "incomplete-not-zero",
+    /// An incomplete texture read through an unsigned integer sampler (STENCIL_INDEX) returns
+    /// (0, 0, 0, 0) instead of the (0, 0, 0, 1) of a non-shadow sampler (§11.1.3.5).
+    IncompleteStencilAlphaZero = "incomplete-stencil-alpha-zero",
     /// Missing mip levels not detected (mipmap filters sample what exists).
     MipmapCompletenessIgnored = "mipmap-completeness-ignored",
     /// The ES rule "sized depth, compare NONE, non-NEAREST filter is incomplete" ignored.

@@ -21,6 +21,7 @@
 //! WGSL's integer array index), `faults`.
 
 pub mod bench;
+mod colour;
 pub mod compare;
 pub mod cube;
 mod defined;
@@ -482,6 +483,9 @@ impl SoftUnit {
                 self.faults,
             ));
         }
+        if case.texture.format.is_multi_colour() {
+            return colour::sample(self.spec, case, api, tex, st, c, self.faults);
+        }
         let lay = layout::resolve(
             self.spec,
             api,
@@ -490,6 +494,9 @@ impl SoftUnit {
             self.faults,
         )?;
         if !st.complete {
+            if st.kind == Kind::Stencil && self.faults.has(Fault::IncompleteStencilAlphaZero) {
+                return Ok([0.0; 4]);
+            }
             return Ok(layout::INCOMPLETE);
         }
         let rgba = lay.apply(tex.lookup(st, c));
@@ -541,6 +548,7 @@ impl SoftUnit {
                                     .map_or(0.0, |&v| v as f64),
                                 (Texels::Unorm(v), _) => v.get(i).map_or(0.0, |&c| c as f64),
                                 (Texels::Float(v), _) => v.get(i).map_or(0.0, |&d| d as f64),
+                                (Texels::Colour(v), _) => v.get(i).map_or(0.0, |c| c[0] as f64),
                             }
                         })
                     }

@@ -33,6 +33,9 @@ pub struct PreparedTexture {
     pub(crate) data: Vec<f32>,
     /// Stencil indices, same indexing as `data`; empty when the texture has none.
     pub(crate) stencil: Vec<u8>,
+    /// A colour texture of several components: every texel's (R, G, B, A) as f32, same indexing
+    /// as `data` (which holds R); empty for every other texture.
+    pub(crate) colour: Vec<[f32; 4]>,
     /// Number of levels, from the base, whose dimensions follow the mipmap sequence of §8.14.3.
     pub(crate) chain_len: u32,
 }
@@ -55,6 +58,7 @@ impl PreparedTexture {
         self.levels.clear();
         self.data.clear();
         self.stencil.clear();
+        self.colour.clear();
         let total: usize = tex.levels.iter().map(|l| l.texel_count()).sum();
         self.data.reserve(total);
         let has_stencil =
@@ -109,6 +113,15 @@ impl PreparedTexture {
                 };
                 self.data.extend(v.iter().map(|&c| unorm_to_f32(c, div)));
             }
+            (Texels::Colour(v), Some(b)) if format.is_multi_colour() => {
+                // Each component by eq. (2.1) with the format's bits per component.
+                let div = ((1u64 << b) - 1) as f64;
+                for c in v {
+                    let t = c.map(|x| unorm_to_f32(x, div));
+                    self.data.push(t[0]);
+                    self.colour.push(t);
+                }
+            }
             (Texels::Float(v), None) => {
                 // §8.5: depth is clamped to [0, 1] at upload, for every depth format.
                 if faults.has(Fault::UploadNotClamped) {
@@ -130,6 +143,16 @@ impl PreparedTexture {
             }
         }
         Ok(())
+    }
+
+    /// The texture with component `i` (0..4) of a colour texture of several components in place
+    /// of its R (the sampler filters each component the same way); a copy of `self` otherwise.
+    pub fn component(&self, i: usize) -> PreparedTexture {
+        let mut t = self.clone();
+        if !self.colour.is_empty() {
+            t.data = self.colour.iter().map(|c| c[i.min(3)]).collect();
+        }
+        t
     }
 
     pub fn target(&self) -> Target {

@@ -155,6 +155,26 @@ fn r8(texel: u32, mode: CompareMode) -> Case {
     c
 }
 
+/// One texel of a colour texture of several components, compare mode on (bypassed).
+fn colour(format: Format, texel: [u32; 4]) -> Case {
+    let mut c = gl(vec![0], 1, CompareFunc::Lequal);
+    c.texture.format = format;
+    c.texture.levels[0].depth = Texels::Colour(vec![texel]);
+    c
+}
+
+/// A one-level 2x1 D24S8 texture read as STENCIL_INDEX with a mipmap filter: incomplete (level 1
+/// is missing), (0,0,0,1).
+fn stencil_incomplete() -> Case {
+    let mut c = gl(vec![0, 0], 2, CompareFunc::Lequal);
+    c.texture.format = Format::D24S8;
+    c.texture.levels[0].stencil = Some(vec![7, 7]);
+    c.sampler.depth_stencil_mode = Some(DepthStencilMode::StencilIndex);
+    c.sampler.compare_mode = CompareMode::None;
+    c.sampler.min_filter = Filter::NearestMipmapNearest;
+    c
+}
+
 /// A 2x2 single-level texture with a mipmap filter: mipmap-incomplete.
 fn mip_incomplete() -> Case {
     let mut c = case(Spec::Gl46, 2, 2, vec![65535; 4], CompareFunc::Lequal);
@@ -443,6 +463,11 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         Fault::CompareAppliedToColour => r8(51, CompareMode::Compare),
         // R8 102: exactly 102/255 (eq. (2.1)); the fault reads 102/256.
         Fault::ColourDividedBy256 => r8(102, CompareMode::None),
+        // RGBA8 (51, 102, 153, 204) reads (0.2, 0.4, 0.6, 0.8); the fault drops G, B, A.
+        Fault::ColourAsRed => colour(Format::Rgba8, [51, 102, 153, 204]),
+        // RGB8 reads A = 1 (Table 15.1); the fault reads 0.
+        Fault::ColourAlphaZero => colour(Format::Rgb8, [51, 102, 153, 0]),
+        Fault::IncompleteStencilAlphaZero => stencil_incomplete(),
         // Completeness (§8.17).
         Fault::IncompleteNotZero | Fault::MipmapCompletenessIgnored => mip_incomplete(),
         Fault::EsDepthFilterCompletenessIgnored => es_linear_depth(),

@@ -501,12 +501,12 @@ impl Browser {
         self.send("Page.crash", json!({}), true).map(|_| ())
     }
 
-    /// Evaluates `expression` in the page and returns its value (JSON); a thrown exception is an
-    /// error with its text.
+    /// Evaluates `expression` in the page and returns its value (JSON), awaiting it when it is a
+    /// promise; a thrown exception (or a rejected promise) is an error with its text.
     pub fn evaluate(&mut self, expression: &str) -> Result<Value, WebglError> {
         let r = self.call(
             "Runtime.evaluate",
-            json!({"expression": expression, "returnByValue": true}),
+            json!({"expression": expression, "returnByValue": true, "awaitPromise": true}),
             true,
         )?;
         if let Some(ex) = r.get("exceptionDetails") {

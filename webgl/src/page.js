@@ -83,7 +83,8 @@ globalThis.shadowcheck = (() => {
     const buf = u8.buffer.slice(u8.byteOffset, u8.byteOffset + u8.byteLength);
     switch (type) {
       case gl.UNSIGNED_BYTE: return new Uint8Array(buf);
-      case gl.UNSIGNED_SHORT: return new Uint16Array(buf);
+      case gl.UNSIGNED_SHORT:
+      case gl.UNSIGNED_SHORT_4_4_4_4: return new Uint16Array(buf);
       case gl.UNSIGNED_INT:
       case gl.UNSIGNED_INT_24_8: return new Uint32Array(buf);
       case gl.FLOAT: return new Float32Array(buf);
@@ -274,14 +275,44 @@ globalThis.shadowcheck = (() => {
   // of slots x RGBA32F, errors: {case: message}}; a pixel no draw wrote stays -1. With a lost
   // context (before, during or after the job, an exception it caused included): {lost: why}.
   // opts.lose: the test fault, the context lost once the first bundle is drawn.
+  // A promise: the answer once the GPU has carried the job out. A GPU process that dies while
+  // drawing (ANGLE's Vulkan back end on lavapipe, sampling a colour texture with the compare mode
+  // on: reports/README.md) leaves readPixels returning zeros and isContextLost() false; the loss
+  // arrives later, as an event. So a fence is polled between tasks until it signals (the draws
+  // ran) or the context is lost (the answer is then {lost}, never the zeros), for at most
+  // SETTLE_MS, and then for GRACE_MS more: on lavapipe the fence may signal before the loss
+  // arrives (a NEAREST RGBA8 lookup with the compare mode on).
   function run(job, opts) {
+    let answer;
     try {
-      const answer = runJob(job, opts || {});
-      return lostNow() ? { lost } : answer;
+      answer = runJob(job, opts || {});
     } catch (e) {
-      if (lostNow()) return { lost };
+      if (lostNow()) return Promise.resolve({ lost });
       throw e;
     }
+    return settle(answer);
+  }
+
+  const SETTLE_MS = 5000;
+  const GRACE_MS = 150;
+
+  async function settle(answer) {
+    if (lostNow() || answer.lost) return { lost: lost || answer.lost };
+    const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    gl.flush();
+    const t0 = performance.now();
+    while (sync && performance.now() - t0 < SETTLE_MS) {
+      await new Promise((r) => setTimeout(r, 2));
+      if (lostNow()) return { lost };
+      const status = gl.getSyncParameter(sync, gl.SYNC_STATUS);
+      if (status === gl.SIGNALED) break;
+    }
+    if (sync && !lostNow()) gl.deleteSync(sync);
+    const t1 = performance.now();
+    while (!lostNow() && performance.now() - t1 < GRACE_MS) {
+      await new Promise((r) => setTimeout(r, 10));
+    }
+    return lostNow() ? { lost } : answer;
   }
 
   function runJob(job, opts) {

@@ -24,13 +24,18 @@ pub const TARGETS: [Target; 3] = [Target::T2d, Target::Cube, Target::T2dArray];
 /// Formats whose texels WebGL 2.0 can upload from the fixture: not DEPTH_COMPONENT32 (no ES
 /// format), not unsized DEPTH_COMPONENT (ES 3.0 Table 3.2 has no unsized depth format), and not
 /// DEPTH32F_STENCIL8: WebGL 2.0 §3.7.6 (texImage2D/texImage3D) accepts type
-/// FLOAT_32_UNSIGNED_INT_24_8_REV only with null pixels (INVALID_OPERATION otherwise).
-pub const FORMATS: [Format; 5] = [
+/// FLOAT_32_UNSIGNED_INT_24_8_REV only with null pixels (INVALID_OPERATION otherwise). The colour
+/// formats are ES 3.0 Table 3.2's (RGBA4 uploaded as UNSIGNED_SHORT_4_4_4_4).
+pub const FORMATS: [Format; 9] = [
     Format::D16,
     Format::D24,
     Format::D24S8,
     Format::D32f,
     Format::R8,
+    Format::Rgba8,
+    Format::Rgb8,
+    Format::Rgba4,
+    Format::Rg8,
 ];
 
 /// What `shadowcheck.init()` answers.

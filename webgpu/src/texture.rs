@@ -12,7 +12,9 @@ use shadowcheck_plan::shaders::wgsl::{texel_point, view_dimension, TEXEL_FLOATS}
 use shadowcheck_plan::SamplerKind;
 
 /// The `GPUTextureFormat` of a model format (WebGPU "Depth-stencil formats"); `None`
-/// for formats WebGPU has no depth format of (32-bit unorm, unsized depth, colour).
+/// for formats WebGPU has no depth format of (32-bit unorm, unsized depth, colour: a
+/// `sampler_comparison` takes only a `texture_depth_*`, WGSL texture built-in functions, so a
+/// colour texture never meets a compare state and such a case is not applicable).
 pub fn format_name(f: Format) -> Option<&'static str> {
     Some(match f {
         Format::D16 => "depth16unorm",
@@ -20,7 +22,13 @@ pub fn format_name(f: Format) -> Option<&'static str> {
         Format::D24S8 => "depth24plus-stencil8",
         Format::D32f => "depth32float",
         Format::D32fS8 => "depth32float-stencil8",
-        Format::D32 | Format::DepthUnsized | Format::R8 => return None,
+        Format::D32
+        | Format::DepthUnsized
+        | Format::R8
+        | Format::Rgba8
+        | Format::Rgb8
+        | Format::Rgba4
+        | Format::Rg8 => return None,
     })
 }
 

@@ -112,6 +112,7 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
     g.extend(families::wrap(d))
         .extend(families::dtm(d))
         .extend(families::stencil(d))
+        .extend(families::formats(d))
         .extend(families::ambient(d))
         .extend(interact::interact(d))
         .extend(random::random(d, seed, RANDOM_PER_SPEC))
@@ -193,7 +194,7 @@ fn array_layer(l: &shadowcheck_model::Lookup, target: shadowcheck_model::Target)
 fn floats_in_unit_range(t: &shadowcheck_model::Texture) -> bool {
     t.levels.iter().all(|l| match &l.depth {
         shadowcheck_model::Texels::Float(v) => v.iter().all(|d| (0.0..=1.0).contains(d)),
-        shadowcheck_model::Texels::Unorm(_) => true,
+        shadowcheck_model::Texels::Unorm(_) | shadowcheck_model::Texels::Colour(_) => true,
     })
 }
 

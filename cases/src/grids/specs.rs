@@ -111,7 +111,18 @@ pub fn dims(spec: Spec) -> SpecDims {
             spec,
             funcs: CORE_FUNCS,
             targets: Target::ALL,
-            formats: Format::ALL,
+            // The main product's formats; the colour formats of several components are the
+            // `formats` family's (grids/families/formats.rs).
+            formats: &[
+                Fo::D16,
+                Fo::D24,
+                Fo::D32,
+                Fo::D32f,
+                Fo::D24S8,
+                Fo::D32fS8,
+                Fo::DepthUnsized,
+                Fo::R8,
+            ],
             filters: ALL_FILTERS,
             dtms: &[M::Luminance, M::Intensity, M::Alpha, M::Red],
             wraps: &[

@@ -252,6 +252,7 @@ pub(super) fn texel_ctx<'a>(
         dref_cands,
         pass_v,
         fail_v,
+        component: 0,
     }
 }
 

@@ -8,6 +8,7 @@
 //! - `footprint`: the spec's own texels, weights and outcomes;
 //! - acceptance: `accept::finalize` turns the per-profile intervals into the acceptance sets.
 
+mod colour;
 mod footprint;
 mod gather;
 mod geometry;
@@ -17,7 +18,7 @@ mod levels;
 use crate::accept;
 use crate::profile::PROFILES;
 use crate::rules::{Incomplete, Rules};
-use crate::sample::{Kind, TexelCtx};
+use crate::sample::Kind;
 use crate::select::build;
 use crate::{check, contradictions, layout, lod, Evaluation, OracleError, Step};
 use shadowcheck_model::{
@@ -84,40 +85,76 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     }
     let kind = inputs::kind(&mut e, &rules, case);
     let incomplete = incomplete(kind == Kind::Stencil);
-    let layouts = layouts(&mut e, &rules, case, kind, incomplete.is_some());
+    // A colour format of several components: every component of Cb is judged (Table 15.1).
+    let components = if kind == Kind::Colour && incomplete.is_none() {
+        case.texture.format.components().max(1)
+    } else {
+        1
+    };
+    let layouts = layouts(&mut e, &rules, case, kind, incomplete.is_some(), components);
     if let Some(why) = incomplete {
-        return Ok(incomplete_texture(e, &rules, &why, layouts));
+        return Ok(incomplete_texture(e, &rules, &why, layouts, kind));
     }
+    if components > 1 {
+        return Ok(colour::run(e, &rules, case, layouts, components));
+    }
+    Ok(match value(&mut e, &rules, case, kind, 0) {
+        Ok((spec_value, acc, fp)) => finish(e, spec_value, acc, layouts, fp),
+        Err((iv, why)) => undefined(e, iv, layouts, why),
+    })
+}
+
+/// The spec value, the acceptance set per profile (in `PROFILES` order) and the footprint of r.
+type Value = (Option<f64>, Vec<Acceptance>, Footprint);
+
+/// r of one component (0 but for a colour texture of several components): the spec value, the
+/// acceptance set per profile (in `PROFILES` order) and the footprint; or, where the spec leaves
+/// the texel selection undefined, every value r can take and why.
+fn value(
+    e: &mut Eval,
+    rules: &Rules,
+    case: &Case,
+    kind: Kind,
+    component: usize,
+) -> Result<Value, (Interval, &'static str)> {
     let coords = inputs::coords(case);
-    let tcx = inputs::texel_ctx(&mut e, &rules, case, kind, &coords);
-    if let Some(why) = inputs::undefined_request(&rules, case, kind) {
-        return Ok(undefined(e, &tcx, layouts, why));
+    let mut tcx = inputs::texel_ctx(e, rules, case, kind, &coords);
+    tcx.component = component;
+    let open = || match kind {
+        // ALWAYS / NEVER: 1.0 / 0.0 whatever the texel (Tables 8.22/8.23).
+        Kind::Compare => {
+            let p = tcx.open_outcome();
+            Interval::new(p.lo, p.hi)
+        }
+        Kind::Stencil => Interval::new(0.0, 255.0),
+        _ => Interval::new(0.0, 1.0),
+    };
+    if let Some(why) = inputs::undefined_request(rules, case, kind) {
+        return Err((open(), why));
     }
     // Choices the spec leaves to the implementation; labelled only where they change the result.
     let mut choices: Vec<&'static str> = Vec::new();
-    let lod = levels::lod(&mut e, &rules, case);
+    let lod = levels::lod(e, rules, case);
     let linear = match lod.spec_pick {
         lod::Pick::One { linear, .. } | lod::Pick::Two { linear, .. } => linear,
     };
-    let geos = geometry::geometries(&mut e, &rules, case, &coords, linear, &mut choices);
+    let geos = geometry::geometries(e, rules, case, &coords, linear, &mut choices);
     let finite = geos.iter().all(|g| g.s.is_finite() && g.t.is_finite());
     let Some(&spec_geo) = geos.first().filter(|_| finite) else {
-        return Ok(undefined(
-            e,
-            &tcx,
-            layouts,
+        return Err((
+            open(),
             "the texture coordinates are not finite or the cube direction is zero: the texel selection is undefined",
         ));
     };
     let mut texels = Vec::new();
-    let spec_scen = build(&rules, case, &tcx, &mut texels, spec_geo, lod.spec_pick);
-    let sets = levels::profile_intervals(&rules, &tcx, &geos, &lod, &mut texels, &mut choices);
+    let spec_scen = build(rules, case, &tcx, &mut texels, spec_geo, lod.spec_pick);
+    let sets = levels::profile_intervals(rules, &tcx, &geos, &lod, &mut texels, &mut choices);
     let spec_value = if lod.lam.spec.is_nan() {
         None
     } else {
         accept::spec_value(&spec_scen, &texels)
     };
-    let fp = footprint::footprint(&mut e, &rules, &tcx, &spec_scen, &texels);
+    let fp = footprint::footprint(e, rules, &tcx, &spec_scen, &texels);
     // Only a filtered colour value may come back at the format's precision; one texel is exactly
     // c/(2^b − 1) (eq. (2.1)).
     let colour_bits = if kind == Kind::Colour && spec_scen.filtered() {
@@ -134,22 +171,33 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     if !matches!((spec_value, acc.first()), (Some(v), Some(s)) if s.0 == [Interval::point(v)]) {
         choices.into_iter().for_each(|n| e.note(n));
     }
-    Ok(finish(e, spec_value, acc, layouts, fp))
+    Ok((spec_value, acc, fp))
 }
 
 /// The layout of r on each of the case's API paths, with a step each, and the other readings of
 /// it the texts allow.
-fn layouts(e: &mut Eval, rules: &Rules, case: &Case, kind: Kind, incomplete: bool) -> Layouts {
+fn layouts(
+    e: &mut Eval,
+    rules: &Rules,
+    case: &Case,
+    kind: Kind,
+    incomplete: bool,
+    components: usize,
+) -> Layouts {
     let mut layouts = Layouts::default();
     for &api in &case.api {
-        let r = layout::readings(
-            rules,
-            api,
-            kind,
-            case.sampler.depth_texture_mode,
-            case.sampler.swizzle,
-            incomplete,
-        );
+        let r = if components > 1 {
+            layout::colour_readings(rules, api, components, case.sampler.swizzle)
+        } else {
+            layout::readings(
+                rules,
+                api,
+                kind,
+                case.sampler.depth_texture_mode,
+                case.sampler.swizzle,
+                incomplete,
+            )
+        };
         if let (Some(sw), Some(before), Some(sw_cite)) =
             (case.sampler.swizzle, r.unswizzled, rules.swizzle)
         {
@@ -227,7 +275,13 @@ impl Layouts {
 }
 
 /// An incomplete texture: r = 0 under every profile.
-fn incomplete_texture(mut e: Eval, rules: &Rules, why: &str, layouts: Layouts) -> Evaluation {
+fn incomplete_texture(
+    mut e: Eval,
+    rules: &Rules,
+    why: &str,
+    layouts: Layouts,
+    kind: Kind,
+) -> Evaluation {
     let cite = match rules.incomplete {
         Incomplete::Legacy0001 => {
             "GL 2.1 §3.11.2 / ARB_fragment_program_shadow / ES 2.0 §3.8.2: (0,0,0,1)"
@@ -242,28 +296,37 @@ fn incomplete_texture(mut e: Eval, rules: &Rules, why: &str, layouts: Layouts) -
     } else {
         "GL 4.6 §8.17"
     });
+    let uint_alpha = kind == Kind::Stencil && layouts.main.values().any(|l| l[3] == Channel::G3);
+    if uint_alpha {
+        e.note(format!(
+            "the alpha of an incomplete texture read through an unsigned integer sampler is 1 or the bits of 1.0f, {ONE_F32_BITS} (contradiction `incomplete-uint-alpha`)"
+        ));
+    }
     let acc = Acceptance(vec![Interval::point(0.0)]);
-    finish(
+    let mut ev = finish(
         e,
         Some(0.0),
-        vec![acc; PROFILES.len()],
+        vec![acc.clone(); PROFILES.len()],
         layouts,
         Footprint::default(),
-    )
+    );
+    if uint_alpha {
+        let set = |a: Acceptance| -> KeyMap<Profile, Acceptance> {
+            PROFILES.iter().map(|p| (p.profile, a.clone())).collect()
+        };
+        let alpha = Acceptance(vec![Interval::point(1.0), Interval::point(ONE_F32_BITS)]);
+        ev.expect.gather = Some([set(acc.clone()), set(acc.clone()), set(acc), set(alpha)]);
+    }
+    ev
 }
 
-/// A lookup whose texel selection the spec leaves undefined: every value r can take is accepted.
-fn undefined(mut e: Eval, tcx: &TexelCtx, layouts: Layouts, why: &str) -> Evaluation {
+/// 1.0f's bits as an unsigned integer, 0x3F800000.
+const ONE_F32_BITS: f64 = 1065353216.0;
+
+/// A lookup whose texel selection the spec leaves undefined: every value r can take (`iv`) is
+/// accepted.
+fn undefined(mut e: Eval, iv: Interval, layouts: Layouts, why: &str) -> Evaluation {
     e.note(why);
-    let iv = match tcx.kind {
-        // ALWAYS / NEVER: 1.0 / 0.0 whatever the texel (Tables 8.22/8.23).
-        Kind::Compare => {
-            let p = tcx.open_outcome();
-            Interval::new(p.lo, p.hi)
-        }
-        Kind::Stencil => Interval::new(0.0, 255.0),
-        _ => Interval::new(0.0, 1.0),
-    };
     let acc = Acceptance(vec![iv]);
     finish(
         e,

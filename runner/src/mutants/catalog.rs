@@ -56,6 +56,13 @@ pub fn about(f: Fault) -> &'static str {
         }
         F::Glsl120IgnoresDepthMode => "vec4 shadow2D (GLSL 1.20) ignoring DEPTH_TEXTURE_MODE",
         F::CompareAppliedToColour => "comparison applied to a colour (R8) texture",
+        F::ColourAsRed => {
+            "a colour texture of several components read as RED, (R,0,0,1) (Table 15.1 not followed past R)"
+        }
+        F::ColourAlphaZero => "the alpha of an RG / RGB colour texture read as 0 instead of 1 (Table 15.1)",
+        F::IncompleteStencilAlphaZero => {
+            "an incomplete texture read through a usampler (STENCIL_INDEX) returns (0,0,0,0), ANGLE's Vulkan back end (reports/webgl-cts)"
+        }
         F::StencilModeIgnored => "DEPTH_STENCIL_TEXTURE_MODE STENCIL_INDEX ignored (depth sampled)",
         F::StencilCompared => "stencil index sampled with the comparison on under STENCIL_INDEX",
         F::IncompleteNotZero => "incomplete texture sampled instead of returning 0",

@@ -277,7 +277,7 @@ fn texel_array(ty: u32, bytes: &[u8]) -> (&'static str, Vec<String>) {
     let words = |n: usize| bytes.chunks_exact(n);
     match ty {
         glow::UNSIGNED_BYTE => ("GLubyte", bytes.iter().map(|b| b.to_string()).collect()),
-        glow::UNSIGNED_SHORT => (
+        glow::UNSIGNED_SHORT | glow::UNSIGNED_SHORT_4_4_4_4 => (
             "GLushort",
             words(2)
                 .map(|c| u16::from_ne_bytes([c[0], c[1]]).to_string())

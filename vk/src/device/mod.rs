@@ -45,7 +45,9 @@ unsafe extern "system" fn on_message(
 }
 
 /// The model's depth formats as Vulkan formats (Vulkan 1.3 "Formats"); D32 (unorm) and
-/// unsized depth have none, R8 is a colour format this worker does not run.
+/// unsized depth have none; R8, RG8, RGB8, RGBA8 and RGBA4 are colour formats this worker does not
+/// run (Vulkan 1.3 §16 Depth Compare Operation: a Dref instruction needs a depth image, so no
+/// colour image meets compareEnable; such a case is not applicable).
 pub fn vk_format(f: Format) -> Option<vk::Format> {
     match f {
         Format::D16 => Some(vk::Format::D16_UNORM),
@@ -53,7 +55,13 @@ pub fn vk_format(f: Format) -> Option<vk::Format> {
         Format::D32f => Some(vk::Format::D32_SFLOAT),
         Format::D24S8 => Some(vk::Format::D24_UNORM_S8_UINT),
         Format::D32fS8 => Some(vk::Format::D32_SFLOAT_S8_UINT),
-        Format::D32 | Format::DepthUnsized | Format::R8 => None,
+        Format::D32
+        | Format::DepthUnsized
+        | Format::R8
+        | Format::Rgba8
+        | Format::Rgb8
+        | Format::Rgba4
+        | Format::Rg8 => None,
     }
 }
 

@@ -9,10 +9,12 @@ use shadowcheck_model::*;
 
 mod addressing;
 mod cube_mip;
+mod formats;
 mod state;
 mod unitstate;
 pub use addressing::{cube, cube_wraps, layer, mip, mixfilter, wrap, CUBE_WRAPS};
 pub use cube_mip::cube_mip;
+pub use formats::{formats, multi_colour_formats};
 pub use state::{ambient, dtm, incomplete, proj, stencil};
 pub use unitstate::{sampler_object, seamless, swizzle};
 
@@ -81,7 +83,7 @@ pub(super) fn cell(
 }
 
 /// A 1x1 2D texture holding `v` (exact stored value).
-fn one_texel(c: &Cell, v: Stored) -> Texture {
+pub(super) fn one_texel(c: &Cell, v: Stored) -> Texture {
     texture(c, vec![build::level_exact(c.format, 1, 1, 1, &[v])])
 }
 
