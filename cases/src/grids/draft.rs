@@ -165,6 +165,7 @@ pub fn lookup(target: Target, at: At, w: u32, h: u32, dref: f64) -> Lookup {
         bias: 0.0,
         offset: [0; 3],
         gather: None,
+        delivery: Default::default(),
     }
 }
 

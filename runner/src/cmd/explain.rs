@@ -245,6 +245,7 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
             bias: a.bias,
             offset,
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     })
