@@ -222,7 +222,6 @@ pub struct Lookup {
     pub delivery: Delivery,
 }
 
-
 /// The gather variant. `textureGather` has no offset; `textureGatherOffset` takes
 /// [`Lookup::offset`] (δu, δv); `textureGatherOffsets` takes one (δu, δv) per result component.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

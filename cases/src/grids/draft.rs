@@ -140,6 +140,10 @@ impl Draft {
                 )
             });
         }
+        if !self.lookup.delivery.is_literal() {
+            // Uniforms and flat inputs: GLSL 1.30+, GLSL ES 3.00+ (`validate::DELIVERY_PATHS`).
+            api.retain(|a| validate::DELIVERY_PATHS.contains(a));
+        }
         Case {
             sweep: vec![],
             id,

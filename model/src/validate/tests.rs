@@ -216,9 +216,7 @@ fn footprint_with_nan_reference_round_trips() {
 
 #[test]
 fn delivery_is_left_out_when_literal_and_rejected_where_the_language_wants_a_constant() {
-    assert!(!serde_json::to_string(&case())
-        .unwrap()
-        .contains("delivery"));
+    assert!(!serde_json::to_string(&case()).unwrap().contains("delivery"));
     let mut c = case();
     c.lookup.delivery = Delivery::PerFragment;
     validate(&c).unwrap();
