@@ -41,9 +41,11 @@ fn base(d: &SpecDims) -> Vec<Draft> {
     let cubes = families::cube(d)
         .into_iter()
         .filter(|x| x.cell.format == families::fixed_fmt(d));
+    // The layer ties (layer = 0.5) are left to the `layer` family: their one known failure
+    // (round-half-to-even under LINEAR, reports/README.md cause 9) is the same with every delivery.
     let layers = families::layer(d)
         .into_iter()
-        .filter(|x| x.cell.target == Target::T2dArray);
+        .filter(|x| x.cell.target == Target::T2dArray && !x.tags.contains("layer=0.5/"));
     gathers.chain(mips).chain(cubes).chain(layers).collect()
 }
 
