@@ -160,7 +160,8 @@ pub fn plan_for(
         return Err("textureGatherOffsets needs GLSL ES 3.20 (GLSL ES 3.10 has textureGather and textureGatherOffset only)".into());
     }
     let plan = plan_in(path, case, lookup, info.form, info.shadow_lod())?;
-    if plan.key.gather == Some(GatherCall::Variable) && info.glsl < if info.es { 320 } else { 400 } {
+    if plan.key.gather == Some(GatherCall::Variable) && info.glsl < if info.es { 320 } else { 400 }
+    {
         return Err(format!(
             "a variable textureGatherOffset offset needs GLSL 4.00 / GLSL ES 3.20 (this context: GLSL{} {})",
             if info.es { " ES" } else { "" },

@@ -116,7 +116,9 @@ pub(super) fn after_lookup(key: &ShaderKey) -> &'static str {
 pub(super) fn flat_vertex_shader(lang: &Language, key: &ShaderKey, units: usize) -> String {
     let (header, vin) = (&lang.header, lang.vin);
     let mut decl = format!("{vin} vec2 a_pos;\nuniform vec4 u_p;\nuniform float u_x;\nuniform vec4 u_dx;\nuniform vec4 u_dy;\nflat out vec4 v_p;\nflat out float v_x;\nflat out vec4 v_dx;\nflat out vec4 v_dy;\n");
-    let mut body = "gl_Position = vec4(a_pos, 0.0, 1.0); v_p = u_p; v_x = u_x; v_dx = u_dx; v_dy = u_dy;".to_string();
+    let mut body =
+        "gl_Position = vec4(a_pos, 0.0, 1.0); v_p = u_p; v_x = u_x; v_dx = u_dx; v_dy = u_dy;"
+            .to_string();
     if variable_offset(key) {
         decl += "uniform ivec2 u_o;\nflat out ivec2 v_o;\n";
         body += " v_o = u_o;";
@@ -163,7 +165,10 @@ mod tests {
     #[test]
     fn a_literal_gather_offset_is_a_constant_and_a_delivered_one_a_value() {
         let lit = plan(ApiPath::GlslCore, &gather(Delivery::Literal)).expect("literal");
-        assert_eq!((lit.key.gather, lit.key.offset), (Some(GatherCall::Single), [1, -2]));
+        assert_eq!(
+            (lit.key.gather, lit.key.offset),
+            (Some(GatherCall::Single), [1, -2])
+        );
         let core = info(ContextApi::Core, 460);
         for d in [Delivery::Uniform, Delivery::Flat, Delivery::PerFragment] {
             let c = gather(d);
@@ -172,7 +177,10 @@ mod tests {
             assert_eq!((p.key.offset, p.o), ([0, 0], [1, -2]), "{d}");
             assert!(!batchable(&p.key), "{d}: one case a draw");
             let (vs, fs) = glsl(&core, &p.key, None, 1);
-            assert!(fs.contains("textureGatherOffset(u_tex, p.xy, p.z, u_o)"), "{fs}");
+            assert!(
+                fs.contains("textureGatherOffset(u_tex, p.xy, p.z, u_o)"),
+                "{fs}"
+            );
             match d {
                 Delivery::Uniform => {
                     assert!(fs.contains("uniform ivec2 u_o;") && !vs.contains("u_o"));
@@ -190,8 +198,13 @@ mod tests {
         }
         // GLSL 3.30 and GLSL ES 3.10 have no variable gather offset.
         let c = gather(Delivery::Uniform);
-        let why = plan_for(&info(ContextApi::Core, 330), ApiPath::GlslCore, &c, &c.lookup)
-            .expect_err("GLSL 3.30");
+        let why = plan_for(
+            &info(ContextApi::Core, 330),
+            ApiPath::GlslCore,
+            &c,
+            &c.lookup,
+        )
+        .expect_err("GLSL 3.30");
         assert!(why.contains("GLSL 4.00"), "{why}");
         let mut es = gather(Delivery::Flat);
         es.api = vec![ApiPath::Es300];
@@ -208,7 +221,10 @@ mod tests {
         c.lookup.lod = 0.5;
         let p = plan_for(&core, ApiPath::GlslCore, &c, &c.lookup).expect("lod");
         let (_, fs) = glsl(&core, &p.key, None, 1);
-        assert!(fs.contains("p = m ? p : p + vec4(0.25, 0.25, 0.25, 0.25);"), "{fs}");
+        assert!(
+            fs.contains("p = m ? p : p + vec4(0.25, 0.25, 0.25, 0.25);"),
+            "{fs}"
+        );
         assert!(fs.contains("u_x = m ? u_x : u_x + 0.25;"), "{fs}");
         // Implicit derivatives on a cube: only the reference (P.w) changes.
         let mut c = case(Target::Cube, 4, 4, 6);
@@ -218,7 +234,10 @@ mod tests {
         implicit.form = crate::LookupForm::Implicit;
         let p = plan_for(&implicit, ApiPath::GlslCore, &c, &c.lookup).expect("cube");
         let (_, fs) = glsl(&implicit, &p.key, None, 1);
-        assert!(fs.contains("p = m ? p : p + vec4(0.0, 0.0, 0.0, 0.25);"), "{fs}");
+        assert!(
+            fs.contains("p = m ? p : p + vec4(0.0, 0.0, 0.0, 0.25);"),
+            "{fs}"
+        );
         assert!(!fs.contains("u_x = m"), "{fs}");
         // Vulkan and WGSL are not given a delivered case.
         c.api = vec![ApiPath::Vulkan];

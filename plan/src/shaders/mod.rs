@@ -387,7 +387,10 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
             } else {
                 format!("vec4 p = {u_p};")
             };
-            format!("{NEVER_DISCARD}{read}\n  {p}{}", delivery::per_fragment(key))
+            format!(
+                "{NEVER_DISCARD}{read}\n  {p}{}",
+                delivery::per_fragment(key)
+            )
         }
     };
     let mut uniforms = if batched.is_some() {
@@ -460,7 +463,9 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
         })
         .collect();
     let after = delivery::after_lookup(key);
-    format!("{header}{samplers}{uniforms}{out_decl}void main() {{\n  {p_line}\n  {lookup}{after}\n}}\n")
+    format!(
+        "{header}{samplers}{uniforms}{out_decl}void main() {{\n  {p_line}\n  {lookup}{after}\n}}\n"
+    )
 }
 
 /// The single-case GLSL program's discard that is never taken (`u_c`, the pixel centre, is never
