@@ -62,15 +62,19 @@ fn delivery(e: &mut Eval, case: &Case) {
     if d.is_literal() {
         return;
     }
-    let what = if case.lookup.gather.is_some() && case.lookup.offset != [0; 3] {
-        format!("delivery `{d}`: the offset \"can be variable (non constant)\"; the lookup is the one with these values")
+    let es = case.spec == shadowcheck_model::Spec::Gles32;
+    let (what, cite) = if case.lookup.gather.is_some() && case.lookup.offset != [0; 3] {
+        (
+            format!("delivery `{d}`: the offset \"can be variable (non constant)\"; the lookup is the one with these values"),
+            if es { "GLSL ES 3.20 §8.9.4" } else { "GLSL 4.60 §8.9.4" },
+        )
     } else {
-        format!("delivery `{d}`: the values are not constant expressions; the lookup is the one with these values")
-    };
-    let cite = if case.spec == shadowcheck_model::Spec::Gles32 {
-        "GLSL ES 3.20 §8.9.4"
-    } else {
-        "GLSL 4.60 §8.9.4"
+        // §8.9's functions take P, the reference, the LOD and the gradients as ordinary
+        // arguments; only the offsets are required to be constant expressions.
+        (
+            format!("delivery `{d}`: the values are not constant expressions; the lookup is the one with these values"),
+            if es { "GLSL ES 3.20 §8.9" } else { "GLSL 4.60 §8.9" },
+        )
     };
     e.step(what, cite);
 }
