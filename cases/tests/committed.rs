@@ -87,10 +87,11 @@ fn committed_size_is_within_budget() {
         .sum();
     // The sweeps (`sweep` in cases/README.md) take most of it: ~94,000 points of ~200 bytes each
     // (coordinates, reference and exact acceptance intervals). The Vulkan grid adds about 8 MiB,
-    // the WebGPU grid about 6.5 MiB.
+    // the WebGPU grid about 6.5 MiB; the coverage round of interactions, deliveries, colour
+    // formats and cube chains about 3.7 MiB.
     assert!(
-        total <= 56 * 1024 * 1024,
-        "{total} bytes committed (budget 56 MiB)"
+        total <= 60 * 1024 * 1024,
+        "{total} bytes committed (budget 60 MiB)"
     );
 }
 

@@ -18,6 +18,8 @@ pub(super) struct Program {
     pub(super) u_dx: Option<glow::UniformLocation>,
     pub(super) u_dy: Option<glow::UniformLocation>,
     pub(super) u_c: Option<glow::UniformLocation>,
+    /// A variable gather offset (`GatherCall::Variable`).
+    pub(super) u_o: Option<glow::UniformLocation>,
     pub(super) u_base: Option<glow::UniformLocation>,
 }
 
@@ -89,6 +91,7 @@ unsafe fn compile(
                 u_dx: u("u_dx"),
                 u_dy: u("u_dy"),
                 u_c: u("u_c"),
+                u_o: u("u_o"),
                 u_base: u("u_base"),
             }))
         }

@@ -230,6 +230,10 @@ pub struct Lookup {
     /// `None`: a filtered lookup (every other function).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gather: Option<Gather>,
+    /// How the shader receives the lookup's values ([`Delivery`]); `literal` (the default, not
+    /// written) is what every case without the field means.
+    #[serde(default, skip_serializing_if = "Delivery::is_literal")]
+    pub delivery: Delivery,
 }
 
 /// The gather variant. `textureGather` has no offset; `textureGatherOffset` takes

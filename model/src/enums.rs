@@ -490,3 +490,34 @@ impl Swizzle {
         }
     }
 }
+
+keyed_enum! {
+    /// How the lookup's values (coordinates, reference, LOD or bias, gradients and a gather's
+    /// texel offset) reach the lookup function in the shader. The expected value never depends on
+    /// it: values are values (GLSL 4.60 §8.9.4 textureGatherOffset: "the offset can be variable
+    /// (non constant)"); what changes is the code path a compiler takes.
+    #[derive(Default)]
+    Delivery {
+        /// The offsets are constant expressions in the shader text; the other values are
+        /// per-case constants in the form the API path chooses (uniforms, or flat inputs of a
+        /// batched draw). Every case without a `delivery` field.
+        #[default]
+        Literal = "literal",
+        /// Every value from a uniform of the program (a gather's offset a `uniform ivec2`).
+        Uniform = "uniform",
+        /// Every value from a `flat` input of the fragment shader, written by the vertex shader.
+        Flat = "flat",
+        /// As `flat`, but the values differ between the fragments of the 2x2 pixel quad: the
+        /// measured (lower-left) fragment gets the case's values, the three others a changed
+        /// reference and offset (and changed coordinates and LOD where the lookup function takes
+        /// no implicit derivatives), so that a value taken from another fragment shows.
+        PerFragment = "per_fragment",
+    }
+}
+
+impl Delivery {
+    /// The default, which fixtures leave out.
+    pub fn is_literal(&self) -> bool {
+        *self == Delivery::Literal
+    }
+}

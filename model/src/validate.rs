@@ -334,7 +334,7 @@ fn validate_lookup(case: &Case) -> Result<(), ModelError> {
     if l.offset != [0; 3] {
         validate_offset(case)?;
     }
-    Ok(())
+    lookup_dims::validate_delivery(case)
 }
 
 /// A sweep's points: a bounded number, on a filtered lookup (a gather answers four values, a
@@ -431,5 +431,7 @@ fn validate_offset(case: &Case) -> Result<(), ModelError> {
     Ok(())
 }
 
+mod lookup_dims;
+pub use lookup_dims::DELIVERY_PATHS;
 #[cfg(test)]
 mod tests;

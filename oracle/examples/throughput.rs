@@ -49,6 +49,7 @@ fn case(filter: Filter, i: usize) -> Case {
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     }

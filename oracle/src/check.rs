@@ -6,7 +6,9 @@
 use crate::rules::Rules;
 use crate::state::{self, Ctx, GlErrorKind, Value};
 use crate::OracleError;
-use shadowcheck_model::{ApiPath, Case, CompareMode, Filter, Sampler, Spec, Target, Wrap};
+use shadowcheck_model::{
+    ApiPath, Case, CompareMode, Delivery, Filter, Sampler, Spec, Target, Wrap,
+};
 
 /// The context an API path runs in.
 pub fn ctx_of(api: ApiPath) -> Ctx {
@@ -167,7 +169,34 @@ fn check_state(case: &Case, rules: &Rules, effective: bool) -> Result<(), Oracle
     if case.lookup.gather.is_some() {
         check_gather(case, rules)?;
     }
+    check_delivery(case, rules)?;
     check_rect(case, rules, effective)
+}
+
+/// A lookup whose values are not constant expressions ([`Delivery`] other than `literal`): the
+/// values are values, so the expectation is the literal's (GLSL 4.60 §8.9: the functions take
+/// their arguments as values; §8.9.4 textureGatherOffset: "the offset can be variable (non
+/// constant)"). The forms the language wants constant are rejected by the model (textureOffset's
+/// offset "must be a constant expression", §8.9.2; textureGatherOffsets' "must be constant
+/// integral expressions", §8.9.4). A variable gather offset exists in GLSL 4.00+ and GLSL ES 3.20
+/// (GLSL ES 3.20 §8.9.4 has the same sentence; GLSL ES 3.10's textureGatherOffset takes a
+/// constant offset), so under the other specs it is not applicable.
+fn check_delivery(case: &Case, rules: &Rules) -> Result<(), OracleError> {
+    let l = &case.lookup;
+    if l.delivery == Delivery::Literal || l.gather.is_none() || l.offset == [0; 3] {
+        return Ok(());
+    }
+    if !matches!(rules.spec, Spec::Gl46 | Spec::Gles32) {
+        return Err(not_applicable(
+            case,
+            rules,
+            format!(
+                "a variable textureGatherOffset offset (delivery `{}`) is GLSL 4.00+ / GLSL ES 3.20 only, not {}",
+                l.delivery, rules.doc
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// Whether the spec defines the case's API paths (and their shadow lookup of its target), its

@@ -245,6 +245,7 @@ fn wide_case() -> impl Strategy<Value = Case> {
                         bias,
                         offset: [0; 3],
                         gather: None,
+                        delivery: Default::default(),
                     },
                     expect: None,
                 }

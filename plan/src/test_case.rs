@@ -32,6 +32,7 @@ pub fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     }

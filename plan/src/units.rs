@@ -305,6 +305,7 @@ mod tests {
             mode: None,
             offset: [0, 0],
             gather: None,
+            delivery: shadowcheck_model::Delivery::Literal,
         }
     }
 

@@ -428,6 +428,7 @@ mod tests {
                 bias: 0.0,
                 offset: [0; 3],
                 gather: None,
+                delivery: Default::default(),
             },
             expect,
         }

@@ -145,6 +145,11 @@ faults! {
     GatherIgnoresRef = "gather-ignores-ref",
     /// Gather reads the level the filters' λ selects instead of level base.
     GatherUsesLodLevel = "gather-uses-lod-level",
+    /// textureGatherOffset with an offset that is not a constant expression (a uniform, a flat
+    /// input or a per-fragment value; GLSL 4.60 §8.9.4: "the offset can be variable (non
+    /// constant)") gathers at offset (0, 0), as by a compiler that folds only constant offsets
+    /// into its gather instruction and drops the rest.
+    VariableGatherOffsetZero = "variable-gather-offset-zero",
     // --- unit state: swizzle, seamless enable, sampler objects (GL 3.2 / 3.3, ES 3.0) ---
     /// TEXTURE_SWIZZLE_* ignored (the unswizzled base colour returned).
     SwizzleIgnored = "swizzle-ignored",

@@ -253,7 +253,14 @@ impl SoftUnit {
             dref,
             lambda_base: l.lod as f32,
             bias: l.bias as f32,
-            offset: [l.offset[0], l.offset[1]],
+            offset: if f.has(Fault::VariableGatherOffsetZero)
+                && l.gather.is_some()
+                && !l.delivery.is_literal()
+            {
+                [0, 0]
+            } else {
+                [l.offset[0], l.offset[1]]
+            },
         })
     }
 

@@ -45,6 +45,7 @@ fn case(spec: Spec, w: u32, h: u32, texels: Vec<u32>, func: CompareFunc) -> Case
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     }
@@ -111,6 +112,25 @@ fn gather4() -> Case {
     let mut c = gl(vec![0, d16(0.25), d16(0.75), 65535], 2, CompareFunc::Lequal);
     c.texture.levels[0].height = 2;
     c.lookup.gather = Some(Gather { offsets: None });
+    c
+}
+
+/// [`gather4`] on a 4x2 image [0, ¼, 1, 1 / ¾, 1, 1, 1] moved one texel right by an offset
+/// delivered as a uniform: the footprint is texels 1 and 2 of both rows, (τi0j1, τi1j1, τi1j0,
+/// τi0j0) = (1, 1, 1, ¼) → (1, 1, 1, 0); at offset 0 it is texels 0 and 1, (¾, 1, ¼, 0) →
+/// (1, 1, 0, 0).
+fn gather_offset_from_a_uniform() -> Case {
+    let one = 65535;
+    let mut c = gl(
+        vec![0, d16(0.25), one, one, d16(0.75), one, one, one],
+        4,
+        CompareFunc::Lequal,
+    );
+    c.texture.levels[0].height = 2;
+    c.lookup.coord[0] = 0.25;
+    c.lookup.gather = Some(Gather { offsets: None });
+    c.lookup.offset = [1, 0, 0];
+    c.lookup.delivery = Delivery::Uniform;
     c
 }
 
@@ -504,6 +524,7 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         // Shadow gather (§8.14.2).
         Fault::GatherOrderRotated | Fault::GatherIgnoresRef => gather4(),
         Fault::GatherUsesLodLevel => gather_at_lod_one(),
+        Fault::VariableGatherOffsetZero => gather_offset_from_a_uniform(),
         // `gather4` compares to (1, 1, 0, 0); TEXTURE_SWIZZLE_R = ALPHA takes the post-swizzle
         // R of each texel's (Rt, 0, 0, 1), i.e. 1 for every texel (GL 4.6 §8.14.2): (1, 1, 1, 1).
         // The faulty unit returns the unswizzled (1, 1, 0, 0).
@@ -577,6 +598,7 @@ mod tests {
         // Shadow gather (GL 4.6 §8.14.2): (τi0j1, τi1j1, τi1j0, τi0j0) compared with Dref.
         assert_eq!(r(Fault::GatherOrderRotated), [1.0, 1.0, 0.0, 0.0]);
         assert_eq!(r(Fault::GatherUsesLodLevel), [0.0; 4]); // level base, not λ's level 1
+        assert_eq!(r(Fault::VariableGatherOffsetZero), [1.0, 1.0, 1.0, 0.0]);
         assert_eq!(r(Fault::OffsetInBaseLevelTexels)[0], 0.0);
         assert_eq!(r(Fault::OffsetAfterWrap)[0], 0.0);
         // Swizzle, seamless enable, sampler object (GL 4.6 §15.2.1, §8.13.1, §8.17.1).

@@ -94,7 +94,16 @@ struct Draw {
     x: Js,
     dx: [Js; 4],
     dy: [Js; 4],
+    /// A variable gather offset (the program's `u_o`), where the lookup has one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    o: Option<[i32; 2]>,
+    /// The viewport (x, y, width, height) of the draw (`shaders::single_draw_viewport`): the slot's
+    /// pixel, or the 2x2 quad holding it for a per-fragment delivery.
+    viewport: [i32; 4],
 }
+
+/// Width of the page's framebuffer in pixels (`FB` in page.js): slot s is pixel (s % FB, s / FB).
+const FB: usize = 256;
 
 /// An f32 as the page reads it: a JSON number when finite (shortest round-trip text, so the
 /// page's `Number` and WebGL's conversion to float give the same f32), else `"Infinity"`,
@@ -255,6 +264,12 @@ pub fn build(info: &GlInfo, cases: &[Case]) -> Built {
                         x: Js(p.x),
                         dx: js4(p.dx),
                         dy: js4(p.dy),
+                        o: (p.key.gather == Some(shadowcheck_plan::GatherCall::Variable))
+                            .then_some(p.o),
+                        viewport: shaders::single_draw_viewport(
+                            &p.key,
+                            ((slot % FB) as i32, (slot / FB) as i32),
+                        ),
                     });
                 }
             }

@@ -168,7 +168,15 @@ globalThis.shadowcheck = (() => {
       throw new Error("program link failed: " + gl.getProgramInfoLog(prog));
     }
     const u = (n) => gl.getUniformLocation(prog, n);
-    p = { prog, u_p: u("u_p"), u_x: u("u_x"), u_dx: u("u_dx"), u_dy: u("u_dy"), u_c: u("u_c") };
+    p = {
+      prog,
+      u_p: u("u_p"),
+      u_x: u("u_x"),
+      u_dx: u("u_dx"),
+      u_dy: u("u_dy"),
+      u_c: u("u_c"),
+      u_o: u("u_o"),
+    };
     gl.useProgram(prog);
     // One sampler `u_tex` on unit 0, or `u_tex0`, `u_tex1`, ... on units 0, 1, ... (units.rs).
     const t = u("u_tex");
@@ -257,7 +265,8 @@ globalThis.shadowcheck = (() => {
     const p = program(src);
     const x = d.slot % FB;
     const y = Math.floor(d.slot / FB);
-    gl.viewport(x, y, 1, 1);
+    // The slot's pixel, or the 2x2 quad holding it (per-fragment values, job.rs).
+    gl.viewport(d.viewport[0], d.viewport[1], d.viewport[2], d.viewport[3]);
     gl.useProgram(p.prog);
     gl.vertexAttrib1f(5, d.unit);
     // Numbers, or "Infinity" / "-Infinity" / "NaN" (job.rs, Js).
@@ -266,12 +275,13 @@ globalThis.shadowcheck = (() => {
     gl.uniform4fv(p.u_dx, d.dx.map(Number));
     gl.uniform4fv(p.u_dy, d.dy.map(Number));
     gl.uniform2f(p.u_c, x + 0.5, y + 0.5);
+    if (d.o) gl.uniform2i(p.u_o, d.o[0], d.o[1]);
     gl.bindVertexArray(vao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
   }
 
   // job: {programs: [[vs, fs]], slots, groups: [{cases: [i], texture: {...}}], bundles: [{states:
-  // [group], draws: [{case, api, slot, program, unit, p, x, dx, dy}]}]}. Answer: {pixels: base64
+  // [group], draws: [{case, api, slot, program, unit, p, x, dx, dy, o?, viewport}]}]}. Answer: {pixels: base64
   // of slots x RGBA32F, errors: {case: message}}; a pixel no draw wrote stays -1. With a lost
   // context (before, during or after the job, an exception it caused included): {lost: why}.
   // opts.lose: the test fault, the context lost once the first bundle is drawn.

@@ -140,6 +140,10 @@ impl Draft {
                 )
             });
         }
+        if !self.lookup.delivery.is_literal() {
+            // Uniforms and flat inputs: GLSL 1.30+, GLSL ES 3.00+ (`validate::DELIVERY_PATHS`).
+            api.retain(|a| validate::DELIVERY_PATHS.contains(a));
+        }
         Case {
             sweep: vec![],
             id,
@@ -165,6 +169,7 @@ pub fn lookup(target: Target, at: At, w: u32, h: u32, dref: f64) -> Lookup {
         bias: 0.0,
         offset: [0; 3],
         gather: None,
+        delivery: Default::default(),
     }
 }
 

@@ -2,6 +2,7 @@
 //! fixture files with the oracle's expectations filled in.
 
 pub mod cells;
+pub mod delivery;
 pub mod draft;
 pub mod exhaustive;
 pub mod families;
@@ -107,7 +108,8 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             .extend(families::seamless(d))
             .extend(families::sampler_object(d))
             .extend(offset::offset(d))
-            .extend(gather::gather(d));
+            .extend(gather::gather(d))
+            .extend(delivery::delivery(d));
     }
     g.extend(families::wrap(d))
         .extend(families::dtm(d))

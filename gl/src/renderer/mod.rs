@@ -26,7 +26,7 @@ use crate::WorkerError;
 use glow::HasContext;
 use shadowcheck_model::{ApiPath, Target, Texels};
 use shadowcheck_plan::layout::{pixel, CAPACITY, FB_SIZE};
-use shadowcheck_plan::shaders::{arbfp_unit_weights, ARBFP_WEIGHTS, UNIT_ATTRIB};
+use shadowcheck_plan::shaders::{self, arbfp_unit_weights, ARBFP_WEIGHTS, UNIT_ATTRIB};
 use shadowcheck_plan::units::{self as plan_units, ProgramKey};
 use shadowcheck_plan::{Answer, GlInfo, Job, LodForm, Plan, ShaderKey};
 use shadowcheck_protocol::{PathResult, PathSkip};
@@ -233,7 +233,8 @@ impl Renderer {
             .get(&self.gl, &self.info, self.legacy.as_ref(), pk, None)?;
         let (x, y) = pixel(slot);
         let gl = &self.gl;
-        gl.viewport(x, y, 1, 1);
+        let [vx, vy, vw, vh] = shaders::single_draw_viewport(&plan.key, (x, y));
+        gl.viewport(vx, vy, vw, vh);
         let centre = [x as f32 + 0.5, y as f32 + 0.5];
         match compiled {
             Compiled::Glsl(p) => {
@@ -247,6 +248,9 @@ impl Renderer {
                 gl.uniform_4_f32_slice(p.u_dx.as_ref(), &plan.dx);
                 gl.uniform_4_f32_slice(p.u_dy.as_ref(), &plan.dy);
                 gl.uniform_2_f32(p.u_c.as_ref(), centre[0], centre[1]);
+                if p.u_o.is_some() {
+                    gl.uniform_2_i32(p.u_o.as_ref(), plan.o[0], plan.o[1]);
+                }
                 gl.bind_vertex_array(Some(self.vao));
                 gl.draw_arrays(glow::TRIANGLES, 0, 3);
             }

@@ -31,6 +31,7 @@ fn case() -> Case {
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     }
@@ -211,4 +212,36 @@ fn footprint_with_nan_reference_round_trips() {
     let back: Footprint = serde_json::from_str(&json).unwrap();
     assert!(back.dref.is_nan());
     assert_eq!(back.texels[0].dt, f64::INFINITY);
+}
+
+#[test]
+fn delivery_is_left_out_when_literal_and_rejected_where_the_language_wants_a_constant() {
+    assert!(!serde_json::to_string(&case()).unwrap().contains("delivery"));
+    let mut c = case();
+    c.lookup.delivery = Delivery::PerFragment;
+    validate(&c).unwrap();
+    let json = serde_json::to_string(&c).unwrap();
+    assert!(json.contains("\"delivery\":\"per_fragment\""), "{json}");
+    assert_eq!(serde_json::from_str::<Case>(&json).unwrap(), c);
+    // textureOffset's offset is a constant expression.
+    c.lookup.offset = [1, 0, 0];
+    let e = validate(&c).unwrap_err().to_string();
+    assert!(
+        e.contains("lookup.delivery") && e.contains("must be a constant expression"),
+        "{e}"
+    );
+    // textureGatherOffset's may be variable; textureGatherOffsets' may not.
+    c.lookup.gather = Some(Gather { offsets: None });
+    validate(&c).unwrap();
+    c.lookup.gather = Some(Gather {
+        offsets: Some([[0, 0], [1, 0], [0, 1], [1, 1]]),
+    });
+    let e = validate(&c).unwrap_err().to_string();
+    assert!(e.contains("constant integral expressions"), "{e}");
+    // Drawn on the GLSL 1.30+ / ES 3.00 paths only.
+    let mut c = case();
+    c.lookup.delivery = Delivery::Uniform;
+    c.api = vec![ApiPath::GlslCore, ApiPath::Vulkan];
+    let e = validate(&c).unwrap_err().to_string();
+    assert!(e.contains("`vk`") && e.contains("lookup.delivery"), "{e}");
 }

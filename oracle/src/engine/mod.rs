@@ -54,6 +54,32 @@ impl Eval {
     }
 }
 
+/// How the values reach the lookup function changes nothing in the expectation: a uniform, a
+/// flat input or a value that differs between the fragments of a quad is the same value at the
+/// fragment that is read (GLSL 4.60 / GLSL ES 3.20 §8.9.4, textureGatherOffset: "the offset can
+/// be variable (non constant)"); the derivation says so, with the sentence.
+fn delivery(e: &mut Eval, case: &Case) {
+    let d = case.lookup.delivery;
+    if d.is_literal() {
+        return;
+    }
+    let es = case.spec == shadowcheck_model::Spec::Gles32;
+    let (what, cite) = if case.lookup.gather.is_some() && case.lookup.offset != [0; 3] {
+        (
+            format!("delivery `{d}`: the offset \"can be variable (non constant)\"; the lookup is the one with these values"),
+            if es { "GLSL ES 3.20 §8.9.4" } else { "GLSL 4.60 §8.9.4" },
+        )
+    } else {
+        // §8.9's functions take P, the reference, the LOD and the gradients as ordinary
+        // arguments; only the offsets are required to be constant expressions.
+        (
+            format!("delivery `{d}`: the values are not constant expressions; the lookup is the one with these values"),
+            if es { "GLSL ES 3.20 §8.9" } else { "GLSL 4.60 §8.9" },
+        )
+    };
+    e.step(what, cite);
+}
+
 /// Evaluates `case` under `rules` (the spec's own, or an alternative reading from `contradictions`).
 pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
     check::check(case, &rules)?;
@@ -62,6 +88,7 @@ pub fn run(case: &Case, rules: Rules) -> Result<Evaluation, OracleError> {
         cites: Vec::new(),
         notes: Vec::new(),
     };
+    delivery(&mut e, case);
     // The effective sampling state (sampler object, seamless enable); it must be legal too.
     let (case, rules, object_refused) = inputs::effective(&mut e, rules, case);
     let case: &Case = &case;

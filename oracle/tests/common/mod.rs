@@ -82,6 +82,7 @@ pub fn case2d(
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     }

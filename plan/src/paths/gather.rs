@@ -47,6 +47,7 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
     } else {
         [i8s(l.offset[0])?, i8s(l.offset[1])?]
     };
+    let variable = !l.delivery.is_literal() && l.offset != [0; 3];
     let call = match l.gather.as_ref().and_then(|g| g.offsets) {
         Some(o) => {
             let mut k = [[0i8; 2]; 4];
@@ -55,6 +56,7 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
             }
             GatherCall::Offsets(k)
         }
+        None if variable => GatherCall::Variable,
         None => GatherCall::Single,
     };
     if t.is_cube() && (offset != [0, 0] || call != GatherCall::Single) {
@@ -71,8 +73,10 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
         form: LodForm::Gather(derivs),
         proj: false,
         mode: None,
-        offset,
+        // A variable offset is the plan's `o`, not part of the program.
+        offset: if variable { [0, 0] } else { offset },
         gather: Some(call),
+        delivery: l.delivery,
     };
     let c = l.coord.map(|v| v as f32);
     let dref = l.dref as f32;
@@ -93,11 +97,19 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
         x: dref,
         dx,
         dy,
-        note: match (path == ApiPath::Wgsl, derivs) {
-            (true, true) => "textureGatherCompare, coordinate varying by the case's λ gradients (ignored by gather)".into(),
-            (true, false) => "textureGatherCompare".into(),
-            (false, true) => "textureGather, coordinate varying by the case's λ gradients (ignored by gather)".into(),
-            (false, false) => "textureGather".into(),
+        o: if variable {
+            [i32::from(offset[0]), i32::from(offset[1])]
+        } else {
+            [0, 0]
         },
+        note: super::delivery_note(
+            match (path == ApiPath::Wgsl, derivs) {
+                (true, true) => "textureGatherCompare, coordinate varying by the case's λ gradients (ignored by gather)".into(),
+                (true, false) => "textureGatherCompare".into(),
+                (false, true) => "textureGather, coordinate varying by the case's λ gradients (ignored by gather)".into(),
+                (false, false) => "textureGather".into(),
+            },
+            l.delivery,
+        ),
     })
 }

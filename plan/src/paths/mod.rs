@@ -15,7 +15,8 @@
 
 use crate::{GlInfo, LookupForm};
 use shadowcheck_model::{
-    ApiPath, Case, CompareMode, DepthStencilMode, DepthTextureMode, Filter, Lookup, Target,
+    ApiPath, Case, CompareMode, Delivery, DepthStencilMode, DepthTextureMode, Filter, Lookup,
+    Target,
 };
 
 /// The GLSL sampler family.
@@ -51,6 +52,10 @@ pub enum GatherCall {
     Single,
     /// `textureGatherOffsets` with these four constant offsets (R, G, B, A).
     Offsets([[i8; 2]; 4]),
+    /// `textureGatherOffset` with an offset that is not a constant expression: the plan's `o`,
+    /// delivered as the key's [`Delivery`] says (GLSL 4.00+ / GLSL ES 3.20 §8.9.4: "the offset can
+    /// be variable (non constant)").
+    Variable,
 }
 
 /// The shader variant: programs are cached by this key.
@@ -69,6 +74,11 @@ pub struct ShaderKey {
     pub offset: [i8; 2],
     /// Shadow gather (`form` is [`LodForm::Gather`]); `None` for every other lookup.
     pub gather: Option<GatherCall>,
+    /// How the values reach the lookup (the case's [`Lookup::delivery`]): `literal` as always;
+    /// the others draw one case per draw ([`crate::shaders::batchable`]) from uniforms, or from
+    /// flat inputs written by the vertex shader (per fragment: changed on the quad's other three
+    /// fragments, `shaders::per_fragment`).
+    pub delivery: Delivery,
 }
 
 /// One API path's plan for one case.
@@ -81,6 +91,8 @@ pub struct Plan {
     pub x: f32,
     pub dx: [f32; 4],
     pub dy: [f32; 4],
+    /// The offset of a [`GatherCall::Variable`] gather (the uniform `u_o`); [0, 0] otherwise.
+    pub o: [i32; 2],
     pub note: String,
 }
 
@@ -147,7 +159,16 @@ pub fn plan_for(
     if offsets && info.es && info.glsl < 320 {
         return Err("textureGatherOffsets needs GLSL ES 3.20 (GLSL ES 3.10 has textureGather and textureGatherOffset only)".into());
     }
-    plan_in(path, case, lookup, info.form, info.shadow_lod())
+    let plan = plan_in(path, case, lookup, info.form, info.shadow_lod())?;
+    if plan.key.gather == Some(GatherCall::Variable) && info.glsl < if info.es { 320 } else { 400 }
+    {
+        return Err(format!(
+            "a variable textureGatherOffset offset needs GLSL 4.00 / GLSL ES 3.20 (this context: GLSL{} {})",
+            if info.es { " ES" } else { "" },
+            info.glsl
+        ));
+    }
+    Ok(plan)
 }
 
 /// `shadow_lod`: the extension's overloads may be used, and only where the preferred form asks
@@ -165,6 +186,12 @@ pub fn plan_in(
             return Err(why);
         }
     }
+    if !l.delivery.is_literal() && !shadowcheck_model::validate::DELIVERY_PATHS.contains(&path) {
+        return Err(format!(
+            "delivery `{}` is drawn on the GLSL 1.30+ / GLSL ES 3.00 paths only, not on {path}",
+            l.delivery
+        ));
+    }
     if l.gather.is_some() {
         return gather::plan(path, case, l);
     }
@@ -180,6 +207,7 @@ pub fn plan_in(
         mode: case.sampler.depth_texture_mode,
         offset,
         gather: None,
+        delivery: l.delivery,
     };
     let how = if uses_shadow_lod(&key) {
         format!("{how} (EXT_texture_shadow_lod overload)")
@@ -199,6 +227,7 @@ pub fn plan_in(
             x,
             dx,
             dy,
+            o: [0, 0],
             note: format!("ARB fp TXB, {how}"),
         });
     }
@@ -208,8 +237,19 @@ pub fn plan_in(
         x,
         dx,
         dy,
-        note: how,
+        o: [0, 0],
+        note: delivery_note(how, l.delivery),
     })
+}
+
+/// The plan's note with the delivery, where it is not the literal one.
+pub(crate) fn delivery_note(how: String, d: Delivery) -> String {
+    match d {
+        Delivery::Literal => how,
+        Delivery::Uniform => format!("{how}, values from uniforms"),
+        Delivery::Flat => format!("{how}, values from flat inputs"),
+        Delivery::PerFragment => format!("{how}, values differing across the pixel quad"),
+    }
 }
 
 /// The lookup's texel offset as the shader writes it: none, or (u, v) on the paths whose

@@ -20,7 +20,7 @@
 use crate::paths::uses_shadow_lod;
 use crate::units::sampler_name;
 use crate::{GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
-use shadowcheck_model::{ApiPath, Target};
+use shadowcheck_model::{ApiPath, Delivery, Target};
 
 fn sampler_type(kind: SamplerKind, target: Target) -> String {
     let base = match target {
@@ -84,6 +84,7 @@ fn gather_call(key: &ShaderKey, call: GatherCall, tex: &str) -> String {
             )
         }
         GatherCall::Single => format!("textureGather({tex}, {p}, {refz})"),
+        GatherCall::Variable => format!("textureGatherOffset({tex}, {p}, {refz}, u_o)"),
     }
 }
 
@@ -171,6 +172,19 @@ pub fn batchable(key: &ShaderKey) -> bool {
         key.path,
         ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
     ) && key.form != LodForm::Constant
+        && key.delivery.is_literal()
+}
+
+/// The viewport (x, y, width, height) of a single-case draw of this key whose result is read at
+/// pixel `at`: the 2x2 pixel quad at even window coordinates that holds it where the values
+/// differ between the fragments of the quad (`per_fragment` delivery, see `delivery.rs`; the
+/// other three fragments are discarded after their lookups), else the one pixel.
+pub fn single_draw_viewport(key: &ShaderKey, at: (i32, i32)) -> [i32; 4] {
+    if key.delivery == Delivery::PerFragment {
+        [at.0 & !1, at.1 & !1, 2, 2]
+    } else {
+        [at.0, at.1, 1, 1]
+    }
 }
 
 /// (vertex source, fragment source) for a GLSL path. `batched`: case k of a draw is the case in
@@ -197,10 +211,13 @@ pub fn glsl(
     }
     let lang = language(info, key);
     let units = units.max(1);
-    (
-        vertex_shader(&lang, batched, units),
-        fragment_shader(&lang, key, batched, units),
-    )
+    let vs = match key.delivery {
+        Delivery::Flat | Delivery::PerFragment if batched.is_none() => {
+            delivery::flat_vertex_shader(&lang, key, units)
+        }
+        _ => vertex_shader(&lang, batched, units),
+    };
+    (vs, fragment_shader(&lang, key, batched, units))
 }
 
 /// What a GLSL dialect's program text starts with and how it names its inputs and result.
@@ -363,15 +380,23 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
             l
         }
         // `u_c` is a pixel centre, never negative: the discard is never taken (module docs).
-        (None, _) if implicit => {
-            format!("{NEVER_DISCARD}\n  vec4 p = u_p + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;")
+        (None, _) => {
+            let (read, u_p) = delivery::read_values(key);
+            let p = if implicit {
+                format!("vec4 p = {u_p} + (gl_FragCoord.x - u_c.x) * u_dx + (gl_FragCoord.y - u_c.y) * u_dy;")
+            } else {
+                format!("vec4 p = {u_p};")
+            };
+            format!(
+                "{NEVER_DISCARD}{read}\n  {p}{}",
+                delivery::per_fragment(key)
+            )
         }
-        (None, _) => format!("{NEVER_DISCARD}\n  vec4 p = u_p;"),
     };
     let mut uniforms = if batched.is_some() {
         "uniform int u_base;\nflat in vec4 v_p;\nflat in vec4 v_dx;\nflat in vec4 v_dy;\nflat in float v_x;\n".to_string()
     } else {
-        "uniform vec4 u_p;\nuniform float u_x;\nuniform vec4 u_dx;\nuniform vec4 u_dy;\nuniform vec2 u_c;\n".to_string()
+        delivery::fragment_inputs(key)
     };
     let unit = match (units > 1, batched.is_some()) {
         (false, _) => "",
@@ -437,7 +462,10 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
             )
         })
         .collect();
-    format!("{header}{samplers}{uniforms}{out_decl}void main() {{\n  {p_line}\n  {lookup}\n}}\n")
+    let after = delivery::after_lookup(key);
+    format!(
+        "{header}{samplers}{uniforms}{out_decl}void main() {{\n  {p_line}\n  {lookup}{after}\n}}\n"
+    )
 }
 
 /// The single-case GLSL program's discard that is never taken (`u_c`, the pixel centre, is never
@@ -524,6 +552,7 @@ pub fn arbfp_unit_weights(unit: usize, units: usize) -> Vec<[f32; 4]> {
         .collect()
 }
 
+mod delivery;
 #[cfg(test)]
 mod tests;
 pub mod vulkan;

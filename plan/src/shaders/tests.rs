@@ -28,6 +28,7 @@ fn shadow_2d(path: ApiPath, form: LodForm) -> ShaderKey {
         mode: None,
         offset: [0, 0],
         gather: None,
+        delivery: shadowcheck_model::Delivery::Literal,
     }
 }
 
@@ -91,6 +92,7 @@ fn shadow_lod_overloads_enable_the_extension() {
         mode: None,
         offset: [0, 0],
         gather: None,
+        delivery: shadowcheck_model::Delivery::Literal,
     };
     assert_eq!(
         modern_call(&k, "u_tex"),
@@ -120,6 +122,7 @@ fn gather_calls_split_p_and_ref_z() {
         mode: None,
         offset: [0, 0],
         gather: Some(GatherCall::Single),
+        delivery: shadowcheck_model::Delivery::Literal,
     };
     assert_eq!(modern_call(&k, "u_tex"), "textureGather(u_tex, p.xy, p.z)");
     let k = ShaderKey {
@@ -235,6 +238,7 @@ fn legacy_calls_use_the_glsl_120_names() {
         mode: None,
         offset: [0, 0],
         gather: None,
+        delivery: shadowcheck_model::Delivery::Literal,
     };
     assert_eq!(legacy_call(&k, "u_tex"), "shadow2DRectProj(u_tex, p)");
     let k = ShaderKey {

@@ -81,6 +81,10 @@ pub struct Args {
     /// Texel offset du,dv[,dw] of the GLSL `*Offset` lookups (GLSL >= 1.30 / ES 3.00 paths; -8..=7).
     #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
     offset: Vec<i32>,
+    /// How the shader receives the values: literal, uniform, flat, per_fragment (glsl130, core,
+    /// es300 paths; changes no expectation, the derivation says why).
+    #[arg(long, default_value = "literal")]
+    delivery: String,
     /// TEXTURE_COMPARE_FAIL_VALUE_ARB / SHADOW_AMBIENT_SGIX.
     #[arg(long)]
     fail: Option<f32>,
@@ -245,6 +249,7 @@ fn case_from_flags(a: &Args) -> anyhow::Result<Case> {
             bias: a.bias,
             offset,
             gather: None,
+            delivery: key(&a.delivery)?,
         },
         expect: None,
     })

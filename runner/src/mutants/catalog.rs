@@ -98,6 +98,9 @@ pub fn about(f: Fault) -> &'static str {
         }
         F::GatherIgnoresRef => "shadow textureGather returns depths, refZ ignored (no comparison)",
         F::GatherUsesLodLevel => "textureGather reads the level λ selects instead of level base",
+        F::VariableGatherOffsetZero => {
+            "a non-constant textureGatherOffset offset (uniform, flat, per fragment) dropped"
+        }
         F::WrongInitialCompareFunc => {
             "a new texture's TEXTURE_COMPARE_FUNC is LESS, not LEQUAL (GL 4.6 Table 23.15): seen by state cases"
         }

@@ -33,6 +33,7 @@ fn subject() -> Subject {
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     };

@@ -41,6 +41,7 @@ fn subject(format: Format, wrap: Wrap, border: [f32; 4]) -> Subject {
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     };

@@ -112,6 +112,7 @@ fn case(id: &str, spec: Spec, api: Vec<ApiPath>) -> Case {
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: Some(Expectation {
             spec_value: Some(1.0),

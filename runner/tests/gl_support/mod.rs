@@ -221,6 +221,7 @@ pub fn d16_case(id: &str, spec: Spec, api: &[ApiPath], target: Target, c: u32, d
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     }

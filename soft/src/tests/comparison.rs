@@ -315,6 +315,7 @@ fn projective_divide() {
         bias: 0.0,
         offset: [0; 3],
         gather: None,
+        delivery: Default::default(),
     };
     // Dt = d16(0.6)/65535 = 39321/65535 = 0.6 exactly representable? 0.6*65535 = 39321 -> Dt = 0.6 (f32),
     // Dref = f32(1.2)/2 = f32(0.6): equal -> LEQUAL passes.

@@ -59,6 +59,7 @@ pub(super) fn case2d(
             bias: 0.0,
             offset: [0; 3],
             gather: None,
+            delivery: Default::default(),
         },
         expect: None,
     }

@@ -16,6 +16,7 @@ fn key(target: Target, form: LodForm) -> ShaderKey {
         mode: None,
         offset: [0, 0],
         gather: None,
+        delivery: shadowcheck_model::Delivery::Literal,
     }
 }
 

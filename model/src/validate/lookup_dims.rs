@@ -1,0 +1,51 @@
+//! The shader-side dimensions of a lookup: how its values reach the lookup function
+//! ([`Delivery`]). The forms the shading languages do not allow are rejected here, naming the
+//! sentence; which GLSL version a context needs for the rest is the plan's business
+//! (`shadowcheck-plan`, `paths::plan_for`).
+
+use super::invalid;
+use crate::{ApiPath, Case, Delivery, ModelError};
+
+/// The API paths that draw a non-literal delivery: GLSL 1.30+ and GLSL ES 3.00+ (uniforms and
+/// `flat` inputs, GLSL 1.30 §4.3.6). Vulkan and WebGPU answer such a case as not applicable.
+pub const DELIVERY_PATHS: [ApiPath; 3] = [ApiPath::Glsl130, ApiPath::GlslCore, ApiPath::Es300];
+
+/// A non-literal delivery: on a path that has it, never a non-gather texel offset (GLSL 4.60
+/// §8.9.2 textureOffset: "The offset value must be a constant expression"), never
+/// textureGatherOffsets (GLSL 4.60 §8.9.4: "The specified values in offsets must be constant
+/// integral expressions"); textureGatherOffset's offset "can be variable (non constant)" (GLSL
+/// 4.60 / GLSL ES 3.20 §8.9.4).
+pub(super) fn validate_delivery(case: &Case) -> Result<(), ModelError> {
+    let l = &case.lookup;
+    let d = l.delivery;
+    if d == Delivery::Literal {
+        return Ok(());
+    }
+    if let Some(api) = case.api.iter().find(|a| !DELIVERY_PATHS.contains(a)) {
+        return Err(invalid(
+            case,
+            "lookup.delivery",
+            format!(
+                "delivery `{d}` is drawn on the GLSL 1.30+ and GLSL ES 3.00+ paths only (glsl130, core, es300), not on `{}`",
+                api.key()
+            ),
+        ));
+    }
+    match &l.gather {
+        None if l.offset != [0; 3] => Err(invalid(
+            case,
+            "lookup.delivery",
+            format!(
+                "delivery `{d}` with a texel offset on a non-gather lookup: the offset of textureOffset & co. \"must be a constant expression\" (GLSL 4.60 §8.9.2); only textureGatherOffset's may be variable"
+            ),
+        )),
+        Some(g) if g.offsets.is_some() => Err(invalid(
+            case,
+            "lookup.delivery",
+            format!(
+                "delivery `{d}` with textureGatherOffsets: \"The specified values in offsets must be constant integral expressions\" (GLSL 4.60 §8.9.4)"
+            ),
+        )),
+        _ => Ok(()),
+    }
+}
