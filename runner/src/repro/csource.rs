@@ -16,7 +16,9 @@
 use super::tokens::Tokens;
 use super::Subject;
 use shadowcheck_gl::{BackendName, Platform};
-use shadowcheck_model::{Acceptance, ApiPath, Channel, Format, Profile, Swizzle, Target};
+use shadowcheck_model::{
+    Acceptance, ApiPath, Channel, Expectation, Format, Profile, Swizzle, Target,
+};
 use shadowcheck_plan::texels::{level_bytes, transfer_for};
 use shadowcheck_plan::unit::{sampler_params, tex_params, ParamValue};
 use shadowcheck_plan::{gl, paths, shaders, ContextApi, GlInfo, LodForm, Plan, SamplerKind};
@@ -112,8 +114,12 @@ pub(super) fn layout_char(c: Channel) -> char {
         Channel::One => '1',
         Channel::Unused => '-',
         Channel::ROrZero => 'z',
-        // Gather cases are refused before a program is written (`repro` has no gather draw).
-        Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => 'g',
+        // A gather's four comparisons: 'A'..'D' read gather value 0..3, each judged by its own
+        // accepted set (`GATHER_ACCEPTED` in the program).
+        Channel::G0 => 'A',
+        Channel::G1 => 'B',
+        Channel::G2 => 'C',
+        Channel::G3 => 'D',
     }
 }
 
@@ -138,9 +144,6 @@ pub fn env_words(b: BackendName) -> String {
 
 /// The program text, or why this path cannot be planned for this case (the worker would Skip it).
 pub fn program(s: &Subject, b: BackendName) -> Result<String, String> {
-    if s.case.lookup.gather.is_some() {
-        return Err("shadowcheck repro does not write textureGather programs yet (its C check reads one r, a gather returns four comparisons): write one by hand from the case's JSON (`shadowcheck explain`)".into());
-    }
     // As the GL worker on a driver with EXT_texture_shadow_lod (`paths::plan_for`): a backend
     // name asking for `lod` / `implicit` gets that extension's overloads (the shader requires it).
     let plan = paths::plan_in(s.api, &s.case, &s.case.lookup, b.form, true)?;
@@ -221,8 +224,12 @@ pub(super) fn expectation(s: &Subject) -> String {
             .map(|a| a.to_string())
             .unwrap_or_else(|| "(none)".into())
     };
+    let (gather, gather_strict) = (
+        gather_sets(e, Profile::loosest()),
+        gather_sets(e, Profile::strictest()),
+    );
     format!(
-        "/* Expected, from shadowcheck's oracle (`shadowcheck explain` shows the derivation). The accepted\n * set is what a conforming implementation may return for r (the `{q}` tier: outside it a \"shall\"\n * is violated); inside the `{st}` tier too is a plain pass. Layout per channel: 'r' the result,\n * '0'/'1' exactly that, 'z' r or 0, '-' not produced by this path. */\nstatic const char *TEST = \"{test}\";\nstatic const char *SPEC_VALUE = \"{spec_value}\";\nstatic const char *ACCEPTED_TEXT = \"{qt}\";\nstatic const char *STRICT_TEXT = \"{stt}\";\nstatic const double ACCEPTED[][2] = {quality};\nstatic const int N_ACCEPTED = {nq};\nstatic const double STRICT[][2] = {strict};\nstatic const int N_STRICT = {ns};\nstatic const char LAYOUT[4] = {{{layout}}};\n/* Every reading of the layout the texts allow, the spec value's first (READINGS names each). */\nstatic const char LAYOUTS[][4] = {{{layouts}}};\nstatic const char *READINGS[] = {{{readings}}};\nstatic const int N_LAYOUTS = {n_layouts};\n\n",
+        "/* Expected, from shadowcheck's oracle (`shadowcheck explain` shows the derivation). The accepted\n * set is what a conforming implementation may return for r (the `{q}` tier: outside it a \"shall\"\n * is violated); inside the `{st}` tier too is a plain pass. Layout per channel: 'r' the result,\n * '0'/'1' exactly that, 'z' r or 0, '-' not produced by this path, 'A'..'D' gather value 0..3 (a\n * textureGather's four comparisons, each judged by its own set in GATHER_ACCEPTED). */\nstruct set {{ const double (*v)[2]; int n; }};\nstatic const char *TEST = \"{test}\";\nstatic const char *SPEC_VALUE = \"{spec_value}\";\nstatic const char *ACCEPTED_TEXT = \"{qt}\";\nstatic const char *STRICT_TEXT = \"{stt}\";\nstatic const double ACCEPTED[][2] = {quality};\nstatic const int N_ACCEPTED = {nq};\nstatic const double STRICT[][2] = {strict};\nstatic const int N_STRICT = {ns};\n{gather}{gather_strict}static const char LAYOUT[4] = {{{layout}}};\n/* Every reading of the layout the texts allow, the spec value's first (READINGS names each). */\nstatic const char LAYOUTS[][4] = {{{layouts}}};\nstatic const char *READINGS[] = {{{readings}}};\nstatic const int N_LAYOUTS = {n_layouts};\n\n",
         q = Profile::loosest(),
         st = Profile::strictest(),
         test = s.test(),
@@ -232,6 +239,41 @@ pub(super) fn expectation(s: &Subject) -> String {
         readings = readings.join(", "),
         n_layouts = layouts.len(),
     )
+}
+
+/// A gather's four accepted sets under `p` as C (`GATHER_ACCEPTED` for the loosest tier,
+/// `GATHER_STRICT` for the strictest), with `GATHER_TEXT` / `GATHER_STRICT_TEXT` (NULL for a
+/// lookup that is no gather: its sets are empty and no layout reads them).
+fn gather_sets(e: &Expectation, p: Profile) -> String {
+    let name = if p == Profile::loosest() {
+        "GATHER_ACCEPTED"
+    } else {
+        "GATHER_STRICT"
+    };
+    let mut out = String::new();
+    let mut refs = vec![];
+    let mut texts = vec![];
+    for i in 0..4 {
+        let acc = e.gather.as_ref().and_then(|g| g[i].get(&p));
+        let (body, n) = intervals(acc);
+        let _ = writeln!(out, "static const double {name}_{i}[][2] = {body};");
+        refs.push(format!("{{{name}_{i}, {n}}}"));
+        texts.push(
+            acc.map(|a| a.to_string())
+                .unwrap_or_else(|| "(none)".into()),
+        );
+    }
+    let text = if e.gather.is_some() {
+        format!("\"{}\"", texts.join(", ").replace('"', "'"))
+    } else {
+        "NULL".into()
+    };
+    let _ = writeln!(
+        out,
+        "static const struct set {name}[4] = {{{}}};\nstatic const char *{name}_TEXT = {text};",
+        refs.join(", ")
+    );
+    out
 }
 
 /// The versions the worker tries, highest first (`gl::egl::versions`), as a C initializer.
