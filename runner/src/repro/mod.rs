@@ -18,6 +18,7 @@
 pub mod classes;
 pub mod csource;
 pub mod report;
+pub mod state;
 mod tokens;
 pub mod vulkan;
 pub mod webgpu;
@@ -172,6 +173,19 @@ pub fn parse_test_id(test: &str) -> Result<(String, ApiPath), ReproError> {
 
 /// Finds the case, checks the backend runs the path, and asks the oracle.
 pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subject, ReproError> {
+    match reproducer(backend, test, fixtures)? {
+        Reproducer::Lookup(s) => Ok(s),
+        Reproducer::State(s) => Err(ReproError::StateCase { id: s.case.id }),
+    }
+}
+
+/// Finds the case (a lookup case or a TexParameter state case), checks the backend runs the path,
+/// and asks the oracle.
+pub fn reproducer(
+    backend: &str,
+    test: &str,
+    fixtures: &[PathBuf],
+) -> Result<Reproducer, ReproError> {
     let name: Backend = backend.parse()?;
     match name {
         Backend::Gl(b) => {
@@ -196,8 +210,8 @@ pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subjec
         });
     }
     let set = crate::run::load_cases(fixtures);
-    if set.states.iter().any(|l| l.case.id == id) {
-        return Err(ReproError::StateCase { id });
+    if let Some(l) = set.states.iter().find(|l| l.case.id == id) {
+        return state_subject(name, l, &set.files[l.file], api).map(Reproducer::State);
     }
     let loaded = set
         .cases
@@ -229,7 +243,7 @@ pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subjec
         )));
     }
     let explain = shadowcheck_oracle::explain::render(&bare, &Ok(ev.clone()));
-    Ok(Subject {
+    Ok(Reproducer::Lookup(Subject {
         backend: name,
         case,
         api,
@@ -237,6 +251,38 @@ pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subjec
         steps: ev.steps,
         explain,
         fixture,
+    }))
+}
+
+/// The subject of a state case: a GL backend, a path the case lists, the oracle's expectation.
+fn state_subject(
+    name: Backend,
+    l: &crate::run::LoadedState,
+    file: &str,
+    api: ApiPath,
+) -> Result<state::StateSubject, ReproError> {
+    let case = l.case.clone();
+    let Backend::Gl(backend) = name else {
+        return Err(ReproError::BadBackend(format!(
+            "`{}` is a TexParameter state case: it runs on the GL backends (egl:*, osmesa:*), not on {name}",
+            case.id
+        )));
+    };
+    if !case.api.contains(&api) {
+        return Err(ReproError::NoPath {
+            id: case.id,
+            api: api.key().into(),
+            listed: keys(&case.api),
+        });
+    }
+    let expect =
+        shadowcheck_oracle::state::expect_state(&case).map_err(ReproError::NoExpectation)?;
+    Ok(state::StateSubject {
+        backend,
+        case,
+        api,
+        expect,
+        fixture: PathBuf::from(file),
     })
 }
 
@@ -246,8 +292,13 @@ fn keys(paths: &[ApiPath]) -> String {
 
 /// The Debian packages the build needs (headers and link libraries) and those the run needs.
 pub fn packages(s: &Subject) -> (String, String) {
+    backend_packages(s.backend)
+}
+
+/// [`packages`] of a backend.
+pub fn backend_packages(backend: Backend) -> (String, String) {
     use shadowcheck_gl::Platform;
-    let b = match s.backend {
+    let b = match backend {
         Backend::Gl(b) => b,
         Backend::Vk(d) => return vulkan::packages(d),
         Backend::Webgpu(_) => return webgpu::packages(),
@@ -291,7 +342,11 @@ pub fn env_words(s: &Subject) -> String {
 /// The `key: value` lines the program prints about the implementation it ran on (the GL
 /// context's strings; the Vulkan device, API version and driver), first the one naming it.
 pub fn driver_fields(s: &Subject) -> &'static [&'static str] {
-    match s.backend {
+    backend_fields(s.backend)
+}
+
+fn backend_fields(backend: Backend) -> &'static [&'static str] {
+    match backend {
         Backend::Gl(_) => &["GL_RENDERER", "GL_VERSION", "GL_SHADING_LANGUAGE_VERSION"],
         Backend::Vk(_) => &vulkan::FIELDS,
         Backend::Webgpu(_) => &webgpu::FIELDS,
@@ -304,13 +359,14 @@ pub fn build_sh(s: &Subject) -> String {
     if let Backend::Webgpu(v) = s.backend {
         return webgpu::run_script(s, v);
     }
-    let (dev, run) = packages(s);
-    let env = env_words(s);
+    c_build_sh(&s.test(), s.backend, &build_line(s), &env_words(s))
+}
+
+/// build.sh of a C reproducer: build, then run with the driver's environment.
+fn c_build_sh(test: &str, backend: Backend, build: &str, env: &str) -> String {
+    let (dev, run) = backend_packages(backend);
     format!(
         "#!/bin/sh\n# shadowcheck reproducer for {test} on {backend}.\n# Debian 12: apt-get install -y {dev} {run}\ncd \"$(dirname \"$0\")\" || exit 2\n{build} || exit 2\nexec {env}./repro\n",
-        test = s.test(),
-        backend = s.backend,
-        build = build_line(s),
         env = if env.is_empty() {
             String::new()
         } else {
@@ -390,6 +446,11 @@ pub fn write_sources(s: &Subject, dir: &Path) -> Result<(), ReproError> {
 /// Runs `sh build.sh` in `dir` and keeps what it printed in output.txt. A build failure (exit 2
 /// before the program printed anything) and a setup failure of the program are errors.
 pub fn build_and_run(s: &Subject, dir: &Path) -> Result<RunOutput, ReproError> {
+    run_build_sh(s.backend, dir)
+}
+
+/// [`build_and_run`] for a reproducer of `backend` already written in `dir`.
+fn run_build_sh(backend: Backend, dir: &Path) -> Result<RunOutput, ReproError> {
     // A binary left from an earlier build must not run when this build fails.
     let _ = std::fs::remove_file(dir.join("repro"));
     let out = Command::new("sh")
@@ -414,8 +475,8 @@ pub fn build_and_run(s: &Subject, dir: &Path) -> Result<RunOutput, ReproError> {
     );
     std::fs::write(dir.join(OUTPUT_TXT), text).map_err(io("writing output.txt"))?;
     if r.code != 0 && r.code != 1 {
-        let started = driver_fields(s).iter().any(|k| r.field(k).is_some());
-        if let Backend::Webgpu(_) = s.backend {
+        let started = backend_fields(backend).iter().any(|k| r.field(k).is_some());
+        if let Backend::Webgpu(_) = backend {
             if r.stderr.contains("chromium not found") {
                 return Err(ReproError::Missing {
                     missing: "chromium is not installed".into(),
@@ -429,11 +490,11 @@ pub fn build_and_run(s: &Subject, dir: &Path) -> Result<RunOutput, ReproError> {
             });
         }
         if !started && !dir.join("repro").exists() {
-            if let Backend::Vk(_) = s.backend {
+            if let Backend::Vk(_) = backend {
                 return Err(vulkan::build_error(&r.stderr));
             }
             return Err(ReproError::Build {
-                packages: format!("apt-get install -y {}", packages(s).0),
+                packages: format!("apt-get install -y {}", backend_packages(backend).0),
                 log: r.stderr,
             });
         }
@@ -443,4 +504,106 @@ pub fn build_and_run(s: &Subject, dir: &Path) -> Result<RunOutput, ReproError> {
         });
     }
     Ok(r)
+}
+
+/// A reproducer's subject: a lookup case or a TexParameter state case.
+#[derive(Debug, Clone)]
+pub enum Reproducer {
+    Lookup(Subject),
+    State(state::StateSubject),
+}
+
+/// The runner's verdict on what a reproducer printed.
+#[derive(Debug, Clone)]
+pub enum Judgement {
+    Lookup(crate::verdict::Judged),
+    State(crate::records::Outcome, Option<String>),
+}
+
+impl Judgement {
+    pub fn outcome(&self) -> crate::records::Outcome {
+        match self {
+            Judgement::Lookup(j) => j.outcome,
+            Judgement::State(o, _) => *o,
+        }
+    }
+}
+
+impl Reproducer {
+    /// `<case id>@<api>`.
+    pub fn test(&self) -> String {
+        match self {
+            Reproducer::Lookup(s) => s.test(),
+            Reproducer::State(s) => s.test(),
+        }
+    }
+    pub fn backend(&self) -> Backend {
+        match self {
+            Reproducer::Lookup(s) => s.backend,
+            Reproducer::State(s) => Backend::Gl(s.backend),
+        }
+    }
+    /// The program file: repro.c or repro.html.
+    pub fn program_file(&self) -> &'static str {
+        match self {
+            Reproducer::Lookup(s) => program_file(s),
+            Reproducer::State(_) => REPRO_C,
+        }
+    }
+    /// Writes the program and build.sh into `dir` (created).
+    pub fn write_sources(&self, dir: &Path) -> Result<(), ReproError> {
+        let s = match self {
+            Reproducer::Lookup(s) => return write_sources(s, dir),
+            Reproducer::State(s) => s,
+        };
+        std::fs::create_dir_all(dir).map_err(io(format!("creating {}", dir.display())))?;
+        std::fs::write(dir.join(REPRO_C), state::program(s)).map_err(io("writing repro.c"))?;
+        let sh = c_build_sh(
+            &s.test(),
+            Backend::Gl(s.backend),
+            &csource::build_line(s.backend),
+            &csource::env_words(s.backend),
+        );
+        std::fs::write(dir.join(BUILD_SH), sh).map_err(io("writing build.sh"))?;
+        Ok(())
+    }
+    /// Runs the reproducer written in `dir` and judges what it printed as the runner does.
+    pub fn run(&self, dir: &Path) -> Result<(RunOutput, Judgement), ReproError> {
+        let run = run_build_sh(self.backend(), dir)?;
+        let unread = || ReproError::Setup {
+            code: run.code,
+            log: format!(
+                "the reproducer printed no `observed:` line the verdict can read:\n{}{}",
+                run.stdout, run.stderr
+            ),
+        };
+        let judged = match self {
+            Reproducer::Lookup(s) => {
+                let observed = run.observed().ok_or_else(unread)?;
+                Judgement::Lookup(crate::verdict::judge(&s.case, s.api, observed, None))
+            }
+            Reproducer::State(s) => {
+                let (o, why) = state::judge(s, &run).ok_or_else(unread)?;
+                Judgement::State(o, why)
+            }
+        };
+        Ok((run, judged))
+    }
+    /// REPORT.md.
+    pub fn report(&self, run: &RunOutput, j: &Judgement) -> String {
+        match (self, j) {
+            (Reproducer::Lookup(s), Judgement::Lookup(judged)) => {
+                report::render(s, run, judged, &report::package_versions(s))
+            }
+            (Reproducer::State(s), Judgement::State(_, reason)) => state::report(
+                s,
+                run,
+                reason.as_deref().unwrap_or("as required"),
+                &report::versions_of(&backend_packages(Backend::Gl(s.backend))),
+            ),
+            // A judgement of the other kind is never made ([`Reproducer::run`]).
+            (Reproducer::Lookup(_), Judgement::State(..))
+            | (Reproducer::State(_), Judgement::Lookup(_)) => String::new(),
+        }
+    }
 }
