@@ -45,6 +45,7 @@ fn subject() -> Subject {
         steps: ev.steps,
         explain: String::new(),
         fixture: "unit.json".into(),
+        lib_dir: None,
     }
 }
 

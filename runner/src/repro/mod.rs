@@ -17,6 +17,7 @@
 
 pub mod classes;
 pub mod csource;
+pub mod egl14;
 pub mod report;
 pub mod state;
 mod tokens;
@@ -150,6 +151,8 @@ pub struct Subject {
     pub explain: String,
     /// The fixture file the case came from.
     pub fixture: PathBuf,
+    /// The EGL library's directory of an `egl@<dir>:...` backend ([`egl14`]).
+    pub lib_dir: Option<PathBuf>,
 }
 
 impl Subject {
@@ -186,16 +189,28 @@ pub fn reproducer(
     test: &str,
     fixtures: &[PathBuf],
 ) -> Result<Reproducer, ReproError> {
-    let name: Backend = backend.parse()?;
+    // `egl@<dir>:<driver>:<api>`: the library's directory, and the name without it.
+    let (lib_dir, plain) = shadowcheck_gl::libdir::split_lib_dir(backend)
+        .map_err(|e| ReproError::BadBackend(e.to_string()))?;
+    let name: Backend = plain.parse()?;
     match name {
         Backend::Gl(b) => {
             if let Some(why) = b.static_unavailability() {
                 return Err(ReproError::BadBackend(why));
             }
-            if matches!(b.driver, Driver::Swiftshader | Driver::Native) {
-                return Err(ReproError::BadBackend(format!(
-                    "{b}: repro writes programs for Mesa's drivers (llvmpipe, softpipe, zink, zink+swiftshader) on EGL surfaceless or OSMesa; SwiftShader's own GLES and a native EGL (EGL 1.4 pbuffer contexts) are not supported yet"
-                )));
+            match &lib_dir {
+                Some(dir) if !shadowcheck_gl::libdir::libegl_in(dir).is_file() => {
+                    return Err(ReproError::BadBackend(format!(
+                        "{backend}: no libEGL.so or libEGL.so.1 in {}",
+                        dir.display()
+                    )));
+                }
+                Some(_) => {}
+                None => {
+                    if let Err(e) = shadowcheck_gl::context::check_files(b) {
+                        return Err(ReproError::BadBackend(e.to_string()));
+                    }
+                }
             }
         }
         Backend::Vk(d) => vulkan::check_driver(d)?,
@@ -211,7 +226,7 @@ pub fn reproducer(
     }
     let set = crate::run::load_cases(fixtures);
     if let Some(l) = set.states.iter().find(|l| l.case.id == id) {
-        return state_subject(name, l, &set.files[l.file], api).map(Reproducer::State);
+        return state_subject(name, l, &set.files[l.file], api, lib_dir).map(Reproducer::State);
     }
     let loaded = set
         .cases
@@ -251,6 +266,7 @@ pub fn reproducer(
         steps: ev.steps,
         explain,
         fixture,
+        lib_dir,
     }))
 }
 
@@ -260,6 +276,7 @@ fn state_subject(
     l: &crate::run::LoadedState,
     file: &str,
     api: ApiPath,
+    lib_dir: Option<PathBuf>,
 ) -> Result<state::StateSubject, ReproError> {
     let case = l.case.clone();
     let Backend::Gl(backend) = name else {
@@ -283,6 +300,7 @@ fn state_subject(
         api,
         expect,
         fixture: PathBuf::from(file),
+        lib_dir,
     })
 }
 
@@ -316,6 +334,9 @@ pub fn backend_packages(backend: Backend) -> (String, String) {
         Driver::Zink => run.push("mesa-vulkan-drivers"),
         // SwiftShader's Vulkan ICD (VK_ICD_FILENAMES in the run line).
         Driver::ZinkSwiftshader => run.push("chromium-common"),
+        // SwiftShader's own GLES is fetched (`sh gl/fetch-swiftshader.sh`), a native EGL is the
+        // vendor's: the headers are the only packages.
+        Driver::Swiftshader | Driver::Native => run.clear(),
         _ => {}
     }
     (dev.to_string(), run.join(" "))
@@ -324,7 +345,7 @@ pub fn backend_packages(backend: Backend) -> (String, String) {
 /// The build command (one line).
 pub fn build_line(s: &Subject) -> String {
     match s.backend {
-        Backend::Gl(b) => csource::build_line(b),
+        Backend::Gl(b) => csource::build_line(b, s.lib_dir.as_deref()),
         Backend::Vk(_) => vulkan::BUILD_LINE.to_string(),
         Backend::Webgpu(_) => webgpu::BUILD_LINE.to_string(),
     }
@@ -333,7 +354,7 @@ pub fn build_line(s: &Subject) -> String {
 /// The environment that picks the driver, as `NAME=value` words (the worker's).
 pub fn env_words(s: &Subject) -> String {
     match s.backend {
-        Backend::Gl(b) => csource::env_words(b),
+        Backend::Gl(b) => csource::env_words(b, s.lib_dir.as_deref()),
         Backend::Vk(d) => vulkan::env_words(d),
         Backend::Webgpu(_) => String::new(),
     }
@@ -359,14 +380,39 @@ pub fn build_sh(s: &Subject) -> String {
     if let Backend::Webgpu(v) = s.backend {
         return webgpu::run_script(s, v);
     }
-    c_build_sh(&s.test(), s.backend, &build_line(s), &env_words(s))
+    c_build_sh(
+        &s.test(),
+        s.backend,
+        s.lib_dir.as_deref(),
+        &build_line(s),
+        &env_words(s),
+    )
 }
 
 /// build.sh of a C reproducer: build, then run with the driver's environment.
-fn c_build_sh(test: &str, backend: Backend, build: &str, env: &str) -> String {
+fn c_build_sh(
+    test: &str,
+    backend: Backend,
+    lib_dir: Option<&Path>,
+    build: &str,
+    env: &str,
+) -> String {
     let (dev, run) = backend_packages(backend);
+    let dir = match backend {
+        Backend::Gl(b) => egl14::dir_line(b, lib_dir).unwrap_or_default(),
+        _ => String::new(),
+    };
+    let label = match (backend, lib_dir) {
+        (Backend::Gl(b), Some(d)) => {
+            b.to_string()
+                .replacen("egl:", &format!("egl@{}:", d.display()), 1)
+        }
+        _ => backend.to_string(),
+    };
+    let packages = format!("{dev} {run}");
     format!(
-        "#!/bin/sh\n# shadowcheck reproducer for {test} on {backend}.\n# Debian 12: apt-get install -y {dev} {run}\ncd \"$(dirname \"$0\")\" || exit 2\n{build} || exit 2\nexec {env}./repro\n",
+        "#!/bin/sh\n# shadowcheck reproducer for {test} on {label}.\n# Debian 12: apt-get install -y {}\ncd \"$(dirname \"$0\")\" || exit 2\n{dir}{build} || exit 2\nexec {env}./repro\n",
+        packages.trim(),
         env = if env.is_empty() {
             String::new()
         } else {
@@ -558,11 +604,13 @@ impl Reproducer {
         };
         std::fs::create_dir_all(dir).map_err(io(format!("creating {}", dir.display())))?;
         std::fs::write(dir.join(REPRO_C), state::program(s)).map_err(io("writing repro.c"))?;
+        let lib_dir = s.lib_dir.as_deref();
         let sh = c_build_sh(
             &s.test(),
             Backend::Gl(s.backend),
-            &csource::build_line(s.backend),
-            &csource::env_words(s.backend),
+            lib_dir,
+            &csource::build_line(s.backend, lib_dir),
+            &csource::env_words(s.backend, lib_dir),
         );
         std::fs::write(dir.join(BUILD_SH), sh).map_err(io("writing build.sh"))?;
         Ok(())

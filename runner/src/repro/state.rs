@@ -32,6 +32,8 @@ pub struct StateSubject {
     /// Evaluated by the oracle now (not read from the fixture).
     pub expect: StateExpect,
     pub fixture: PathBuf,
+    /// The EGL library's directory of an `egl@<dir>:...` backend.
+    pub lib_dir: Option<PathBuf>,
 }
 
 impl StateSubject {
@@ -113,7 +115,8 @@ pub fn program(s: &StateSubject) -> String {
     {
         let _ = writeln!(cites, " *   {}", t.replace("*/", "* /"));
     }
-    let run = format!("{} ./repro", env_words(b));
+    let lib_dir = s.lib_dir.as_deref();
+    let run = format!("{} ./repro", env_words(b, lib_dir));
     format!(
         r#"/* shadowcheck reproducer: {test} on {backend}
  *
@@ -247,8 +250,8 @@ int main(void) {{
 "#,
         test = s.test(),
         backend = b,
-        build = super::csource::build_line(b),
-        ctx = context_words(b),
+        build = super::csource::build_line(b, lib_dir),
+        ctx = context_words(b, lib_dir),
         target_name = target_name(c),
         pname_name = c.pname.name(),
         call_words = match c.call {
@@ -265,7 +268,7 @@ int main(void) {{
         read_back = i32::from(c.read_back),
         call_c = cstr(&c.call.to_string()),
         initial = i32::from(c.call == StateCall::Initial),
-        context = context_fn(b),
+        context = context_fn(b, lib_dir),
     )
 }
 
@@ -378,7 +381,7 @@ pub fn report(
     for k in ["GL_RENDERER", "GL_VERSION"] {
         let _ = writeln!(o, "- {k}: `{}`", run.field(k).unwrap_or("(not printed)"));
     }
-    let env = env_words(s.backend);
+    let env = env_words(s.backend, s.lib_dir.as_deref());
     let _ = writeln!(
         o,
         "- driver selected by: `{}`",
@@ -407,8 +410,8 @@ pub fn report(
         o,
         "## Reproduce\n\n```sh\nsh {}     # {}; then {} ./repro\n```\n\nExit status 1: not the error and value the spec requires; 0: as required; 2: setup failed.\n",
         super::BUILD_SH,
-        super::csource::build_line(s.backend),
-        env_words(s.backend)
+        super::csource::build_line(s.backend, s.lib_dir.as_deref()),
+        env_words(s.backend, s.lib_dir.as_deref())
     );
     let _ = writeln!(
         o,

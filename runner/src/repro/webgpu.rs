@@ -287,6 +287,7 @@ mod tests {
             steps: vec![],
             explain: String::new(),
             fixture: "f.json".into(),
+            lib_dir: None,
         }
     }
 
