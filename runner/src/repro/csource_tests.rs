@@ -52,7 +52,9 @@ fn subject() -> Subject {
 fn gl(s: &Subject) -> BackendName {
     match s.backend {
         super::super::Backend::Gl(b) => b,
-        super::super::Backend::Vk(_) | super::super::Backend::Webgpu(_) => {
+        super::super::Backend::Vk(_)
+        | super::super::Backend::Webgpu(_)
+        | super::super::Backend::Webgl(_) => {
             panic!("a GL subject")
         }
     }

@@ -22,6 +22,7 @@ pub mod report;
 pub mod state;
 mod tokens;
 pub mod vulkan;
+pub mod webgl;
 pub mod webgpu;
 
 use shadowcheck_gl::{BackendName, Driver};
@@ -87,6 +88,8 @@ pub enum Backend {
     Gl(BackendName),
     Vk(shadowcheck_vk::Driver),
     Webgpu(shadowcheck_webgpu::launch::Variant),
+    /// A `webgl:<key>` instance (`webgl/src/instance.rs`), by its key.
+    Webgl(&'static str),
 }
 
 impl std::fmt::Display for Backend {
@@ -95,6 +98,7 @@ impl std::fmt::Display for Backend {
             Backend::Gl(b) => b.fmt(f),
             Backend::Vk(d) => write!(f, "vk:{}", d.key()),
             Backend::Webgpu(v) => f.write_str(&v.name()),
+            Backend::Webgl(k) => write!(f, "webgl:{k}"),
         }
     }
 }
@@ -113,6 +117,9 @@ impl std::str::FromStr for Backend {
                     ))
                 });
         }
+        if let Some(key) = s.strip_prefix("webgl:") {
+            return webgl::instance(key).map(|i| Backend::Webgl(i.key));
+        }
         if s.starts_with("vk:") {
             return shadowcheck_vk::parse_backend(s)
                 .map(Backend::Vk)
@@ -120,7 +127,7 @@ impl std::str::FromStr for Backend {
         }
         s.parse().map(Backend::Gl).map_err(|e: shadowcheck_gl::WorkerError| {
             ReproError::BadBackend(format!(
-                "{e} (repro writes C programs for the GL backends egl:* and osmesa:* and the Vulkan backends vk:*, and pages for the WebGPU backends webgpu:*)"
+                "{e} (repro writes C programs for the GL backends egl:*, egl@DIR:* and osmesa:* and the Vulkan backends vk:*, and pages for the WebGPU backends webgpu:* and the WebGL backends webgl:*)"
             ))
         })
     }
@@ -133,6 +140,7 @@ impl Backend {
             Backend::Gl(b) => b.api.paths(),
             Backend::Vk(_) => &[ApiPath::Vulkan],
             Backend::Webgpu(_) => &[ApiPath::Wgsl],
+            Backend::Webgl(_) => &[ApiPath::Es300],
         }
     }
 }
@@ -215,6 +223,7 @@ pub fn reproducer(
         }
         Backend::Vk(d) => vulkan::check_driver(d)?,
         Backend::Webgpu(_) => webgpu::check_browser()?,
+        Backend::Webgl(k) => webgl::check_installed(k)?,
     }
     let (id, api) = parse_test_id(test)?;
     if !name.paths().contains(&api) {
@@ -320,6 +329,7 @@ pub fn backend_packages(backend: Backend) -> (String, String) {
         Backend::Gl(b) => b,
         Backend::Vk(d) => return vulkan::packages(d),
         Backend::Webgpu(_) => return webgpu::packages(),
+        Backend::Webgl(k) => return webgl::packages(k),
     };
     let dev = match (b.platform, b.api.is_es()) {
         (Platform::Osmesa, _) => "gcc libosmesa6-dev libgl-dev",
@@ -348,6 +358,7 @@ pub fn build_line(s: &Subject) -> String {
         Backend::Gl(b) => csource::build_line(b, s.lib_dir.as_deref()),
         Backend::Vk(_) => vulkan::BUILD_LINE.to_string(),
         Backend::Webgpu(_) => webgpu::BUILD_LINE.to_string(),
+        Backend::Webgl(_) => webgl::BUILD_LINE.to_string(),
     }
 }
 
@@ -357,6 +368,16 @@ pub fn env_words(s: &Subject) -> String {
         Backend::Gl(b) => csource::env_words(b, s.lib_dir.as_deref()),
         Backend::Vk(d) => vulkan::env_words(d),
         Backend::Webgpu(_) => String::new(),
+        Backend::Webgl(k) => webgl::instance(k)
+            .map(|i| {
+                (i.launch)()
+                    .env
+                    .iter()
+                    .map(|(k, v)| format!("{k}={v}"))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            })
+            .unwrap_or_default(),
     }
 }
 
@@ -371,14 +392,17 @@ fn backend_fields(backend: Backend) -> &'static [&'static str] {
         Backend::Gl(_) => &["GL_RENDERER", "GL_VERSION", "GL_SHADING_LANGUAGE_VERSION"],
         Backend::Vk(_) => &vulkan::FIELDS,
         Backend::Webgpu(_) => &webgpu::FIELDS,
+        Backend::Webgl(_) => &webgl::FIELDS,
     }
 }
 
 /// The text of build.sh: build, then run with the driver's environment; its exit status is the
 /// reproducer's.
 pub fn build_sh(s: &Subject) -> String {
-    if let Backend::Webgpu(v) = s.backend {
-        return webgpu::run_script(s, v);
+    match s.backend {
+        Backend::Webgpu(v) => return webgpu::run_script(s, v),
+        Backend::Webgl(k) => return webgl::run_script(s, k),
+        Backend::Gl(_) | Backend::Vk(_) => {}
     }
     c_build_sh(
         &s.test(),
@@ -460,7 +484,7 @@ pub const REPORT_MD: &str = "REPORT.md";
 /// The program file of a reproducer: repro.c, or the WebGPU page repro.html.
 pub fn program_file(s: &Subject) -> &'static str {
     match s.backend {
-        Backend::Webgpu(_) => webgpu::REPRO_HTML,
+        Backend::Webgpu(_) | Backend::Webgl(_) => webgpu::REPRO_HTML,
         _ => REPRO_C,
     }
 }
@@ -468,7 +492,7 @@ pub fn program_file(s: &Subject) -> &'static str {
 /// How the reproducer is run, after build.sh has built it (for REPORT.md).
 pub fn run_hint(s: &Subject) -> String {
     match s.backend {
-        Backend::Webgpu(_) => format!(
+        Backend::Webgpu(_) | Backend::Webgl(_) => format!(
             "it runs {} in headless Chromium with the backend's flags",
             webgpu::REPRO_HTML
         ),
@@ -482,6 +506,7 @@ pub fn write_sources(s: &Subject, dir: &Path) -> Result<(), ReproError> {
         Backend::Gl(b) => csource::program(s, b).map_err(ReproError::NotPlanned)?,
         Backend::Vk(_) => return vulkan::write_sources(s, dir),
         Backend::Webgpu(v) => return webgpu::write_sources(s, v, dir),
+        Backend::Webgl(k) => return webgl::write_sources(s, k, dir),
     };
     std::fs::create_dir_all(dir).map_err(io(format!("creating {}", dir.display())))?;
     std::fs::write(dir.join(REPRO_C), c).map_err(io("writing repro.c"))?;
@@ -522,7 +547,7 @@ fn run_build_sh(backend: Backend, dir: &Path) -> Result<RunOutput, ReproError> {
     std::fs::write(dir.join(OUTPUT_TXT), text).map_err(io("writing output.txt"))?;
     if r.code != 0 && r.code != 1 {
         let started = backend_fields(backend).iter().any(|k| r.field(k).is_some());
-        if let Backend::Webgpu(_) = backend {
+        if let Backend::Webgpu(_) | Backend::Webgl(_) = backend {
             if r.stderr.contains("chromium not found") {
                 return Err(ReproError::Missing {
                     missing: "chromium is not installed".into(),

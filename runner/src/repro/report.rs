@@ -113,6 +113,7 @@ pub fn render(s: &Subject, run: &RunOutput, judged: &Judged, versions: &[String]
         Backend::Gl(_) => "context",
         Backend::Vk(_) => "Vulkan device",
         Backend::Webgpu(_) => "WebGPU adapter",
+        Backend::Webgl(_) => "WebGL 2.0 context",
     };
     let _ = writeln!(
         o,

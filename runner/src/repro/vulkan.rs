@@ -193,7 +193,9 @@ pub fn program(s: &Subject) -> Result<Program, String> {
 fn driver(s: &Subject) -> Driver {
     match s.backend {
         super::Backend::Vk(d) => d,
-        super::Backend::Gl(_) | super::Backend::Webgpu(_) => Driver::Native,
+        super::Backend::Gl(_) | super::Backend::Webgpu(_) | super::Backend::Webgl(_) => {
+            Driver::Native
+        }
     }
 }
 
