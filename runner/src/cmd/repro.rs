@@ -1,5 +1,6 @@
-//! `shadowcheck repro`: a standalone C reproducer and a bug report for a failing test on a GL
-//! or Vulkan backend, or one per failure class of a results directory (`--all-failures`). The
+//! `shadowcheck repro`: a standalone reproducer (a C program, or a page for WebGPU and WebGL) and a
+//! bug report for a failing test (a lookup or a TexParameter state case) on a GL, Vulkan, WebGPU or
+//! WebGL backend, or one per failure class of a results directory (`--all-failures`). The
 //! generator is `shadowcheck_runner::repro`; this file parses the flags, runs it and prints what
 //! was written.
 //!
@@ -21,7 +22,8 @@ use std::process::ExitCode;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The backend the test failed on (egl:*, osmesa:*, vk:* or webgpu:*, as in `run -b`).
+    /// The backend the test failed on (egl:*, egl@DIR:*, osmesa:*, vk:*, webgpu:* or webgl:*, as in
+    /// `run -b`).
     #[arg(
         long = "backend",
         short = 'b',

@@ -1,12 +1,14 @@
 //! `shadowcheck repro`: from one failing test to a standalone reproducer and a bug report.
 //!
 //! For a Vulkan backend (`vk:*`) the program is [`vulkan`]'s (Vulkan C, with the SPIR-V built from
-//! the GLSL files beside it); for a WebGPU backend (`webgpu:*`) it is [`webgpu`]'s page
-//! (`repro.html`, run by build.sh in headless Chromium); the rest below is the same. For a GL backend (`egl:*`, `osmesa:*`)
-//! and a test `<case id>@<api>` this writes into a directory:
-//! - `repro.c` ([`csource`]): a C program that creates the worker's context, texture, sampler state
-//!   and lookup, draws once, prints expected (from the oracle, as constants) and observed, and exits 1
-//!   when the observation is outside the accepted set;
+//! the GLSL files beside it); for a WebGPU backend (`webgpu:*`) it is [`webgpu`]'s page and for a
+//! WebGL one (`webgl:*`) [`webgl`]'s (`repro.html`, run by build.sh in headless Chromium); the rest
+//! below is the same. For a GL backend (`egl:*`, `egl@<dir>:*`, `osmesa:*`; the EGL 1.4 ones through
+//! [`egl14`]) and a test `<case id>@<api>` this writes into a directory:
+//! - `repro.c` ([`csource`]; a TexParameter state case's from [`state`]): a C program that creates
+//!   the worker's context, texture, sampler state and lookup (gathers included), draws once, prints
+//!   expected (from the oracle, as constants) and observed, and exits 1 when the observation is
+//!   outside the accepted set;
 //! - `build.sh`: the one-line build command (also at the top of repro.c) and the run line with the
 //!   environment that picks the driver (the worker's, `BackendName::env`);
 //! - `output.txt`: what the program printed when [`build_and_run`] ran it here;
@@ -38,7 +40,7 @@ pub enum ReproError {
     BadBackend(String),
     #[error("case `{id}` not found in {fixtures}")]
     NoCase { id: String, fixtures: String },
-    #[error("`{id}` is a TexParameter state case: repro writes C programs for lookup cases only; a state case's call is one TexParameter and one GetTexParameter on a fresh texture (its id and fixture line say which), small enough to write by hand")]
+    #[error("`{id}` is a TexParameter state case, not a lookup case: `repro::reproducer` writes its program ([`state`])")]
     StateCase { id: String },
     #[error("case `{id}` does not list API path `{api}` (it lists: {listed})")]
     NoPath {
@@ -185,8 +187,10 @@ pub fn parse_test_id(test: &str) -> Result<(String, ApiPath), ReproError> {
 /// Finds the case, checks the backend runs the path, and asks the oracle.
 pub fn subject(backend: &str, test: &str, fixtures: &[PathBuf]) -> Result<Subject, ReproError> {
     match reproducer(backend, test, fixtures)? {
-        Reproducer::Lookup(s) => Ok(s),
-        Reproducer::State(s) => Err(ReproError::StateCase { id: s.case.id }),
+        Reproducer::Lookup(s) => Ok(*s),
+        Reproducer::State(s) => Err(ReproError::StateCase {
+            id: s.case.id.clone(),
+        }),
     }
 }
 
@@ -235,7 +239,8 @@ pub fn reproducer(
     }
     let set = crate::run::load_cases(fixtures);
     if let Some(l) = set.states.iter().find(|l| l.case.id == id) {
-        return state_subject(name, l, &set.files[l.file], api, lib_dir).map(Reproducer::State);
+        return state_subject(name, l, &set.files[l.file], api, lib_dir)
+            .map(|s| Reproducer::State(Box::new(s)));
     }
     let loaded = set
         .cases
@@ -267,7 +272,7 @@ pub fn reproducer(
         )));
     }
     let explain = shadowcheck_oracle::explain::render(&bare, &Ok(ev.clone()));
-    Ok(Reproducer::Lookup(Subject {
+    Ok(Reproducer::Lookup(Box::new(Subject {
         backend: name,
         case,
         api,
@@ -276,7 +281,7 @@ pub fn reproducer(
         explain,
         fixture,
         lib_dir,
-    }))
+    })))
 }
 
 /// The subject of a state case: a GL backend, a path the case lists, the oracle's expectation.
@@ -290,7 +295,7 @@ fn state_subject(
     let case = l.case.clone();
     let Backend::Gl(backend) = name else {
         return Err(ReproError::BadBackend(format!(
-            "`{}` is a TexParameter state case: it runs on the GL backends (egl:*, osmesa:*), not on {name}",
+            "`{}` is a TexParameter state case: repro writes its program for the GL backends (egl:*, egl@DIR:*, osmesa:*), not yet for {name}",
             case.id
         )));
     };
@@ -580,8 +585,8 @@ fn run_build_sh(backend: Backend, dir: &Path) -> Result<RunOutput, ReproError> {
 /// A reproducer's subject: a lookup case or a TexParameter state case.
 #[derive(Debug, Clone)]
 pub enum Reproducer {
-    Lookup(Subject),
-    State(state::StateSubject),
+    Lookup(Box<Subject>),
+    State(Box<state::StateSubject>),
 }
 
 /// The runner's verdict on what a reproducer printed.

@@ -111,9 +111,11 @@ fn typed(ty: u32, bytes: &[u8]) -> Result<(&'static str, Vec<String>), String> {
                 .collect(),
         ),
         // As the worker's page (`view`): WebGL 2.0 takes no other array for these uploads.
-        t => return Err(format!(
+        t => {
+            return Err(format!(
             "no typed array for pixel type 0x{t:04X} (the WebGL worker answers this case an error)"
-        )),
+        ))
+        }
     })
 }
 
