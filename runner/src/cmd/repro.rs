@@ -176,7 +176,7 @@ fn all_failures(
             fixtures.push(PathBuf::from(super::run::DEFAULT_FIXTURES));
         }
         let mut sources = false;
-        let result = repro::reproducer(&r.backend, &r.test, &fixtures)
+        let result = repro::reproducer(&r.backend, &repro::failing_test(r), &fixtures)
             .map_err(anyhow::Error::from)
             .and_then(|s| {
                 s.write_sources(&dir)?;

@@ -242,20 +242,33 @@ pub fn reproducer(
         return state_subject(name, l, &set.files[l.file], api, lib_dir)
             .map(|s| Reproducer::State(Box::new(s)));
     }
+    let no_case = || ReproError::NoCase {
+        id: id.clone(),
+        fixtures: fixtures
+            .iter()
+            .map(|p| p.display().to_string())
+            .collect::<Vec<_>>()
+            .join(", "),
+    };
+    // `<case id>/sweep=<k>`: sweep point k of the case as a case of its own (`Case::point_case`),
+    // the lookup a sweep's Fail is about (its record holds the point's RGBA).
+    let (case_id, point) = match set.cases.iter().any(|l| l.case.id == id) {
+        true => (id.as_str(), None),
+        false => match shadowcheck_model::sweep::split_point_id(&id) {
+            Some((c, k)) => (c, Some(k)),
+            None => (id.as_str(), None),
+        },
+    };
     let loaded = set
         .cases
-        .into_iter()
-        .find(|l| l.case.id == id)
-        .ok_or_else(|| ReproError::NoCase {
-            id: id.clone(),
-            fixtures: fixtures
-                .iter()
-                .map(|p| p.display().to_string())
-                .collect::<Vec<_>>()
-                .join(", "),
-        })?;
+        .iter()
+        .find(|l| l.case.id == case_id)
+        .ok_or_else(no_case)?;
     let fixture = PathBuf::from(&set.files[loaded.file]);
-    let case = loaded.case;
+    let case = match point {
+        Some(k) => loaded.case.point_case(k).ok_or_else(no_case)?,
+        None => loaded.case.clone(),
+    };
     if !case.api.contains(&api) {
         return Err(ReproError::NoPath {
             id,
@@ -683,5 +696,26 @@ impl Reproducer {
             (Reproducer::Lookup(_), Judgement::State(..))
             | (Reproducer::State(_), Judgement::Lookup(_)) => String::new(),
         }
+    }
+}
+
+/// The test a reproducer of a Fail record is written for: the record's own, or, when the verdict
+/// found the Fail at a sweep point (`sweep point <k> (...)`, `verdict::judge_sweep`), that point's
+/// (`<case id>/sweep=<k>@<api>`), whose lookup gave the RGBA the record holds.
+pub fn failing_test(r: &crate::records::TestResult) -> String {
+    let k = r
+        .reason
+        .as_deref()
+        .and_then(|why| why.strip_prefix("sweep point "))
+        .and_then(|rest| rest.split_once(' '))
+        .and_then(|(k, _)| k.parse::<usize>().ok());
+    match k {
+        Some(k) => format!(
+            "{}{}{k}@{}",
+            r.case_id,
+            shadowcheck_model::sweep::SWEEP_ID_TAG,
+            r.api.key()
+        ),
+        None => r.test.clone(),
     }
 }

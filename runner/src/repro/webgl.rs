@@ -248,7 +248,10 @@ mod tests {
         assert!(p.contains("sampler2DShadow"), "{p}");
         // D24 as UNSIGNED_INT (c << 8 | low byte), the compare mode set by name and number.
         assert!(p.contains("type: 0x1405"), "{p}");
-        assert!(p.contains("width: 2, height: 2, layers: 1, data: new Uint32Array(["), "{p}");
+        assert!(
+            p.contains("width: 2, height: 2, layers: 1, data: new Uint32Array(["),
+            "{p}"
+        );
         assert!(p.contains("pname: 0x884C, int: 34894"), "{p}");
         assert!(p.contains("\"OpenGL ES\", \"llvmpipe\""), "{p}");
         let sh = run_script(&s, "chromium-gles");
