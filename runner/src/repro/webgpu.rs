@@ -82,6 +82,7 @@ browser=${{SHADOWCHECK_CHROMIUM:-chromium}}
 command -v "$browser" >/dev/null 2>&1 || {{ echo "chromium not found: apt-get install -y chromium" >&2; exit 2; }}
 profile=$(mktemp -d)
 log="$profile.log"
+: >"$log"
 {env}"$browser" --headless --no-sandbox {flags} --no-first-run --disable-background-networking   --disable-component-update --disable-sync --user-data-dir="$profile" --enable-logging=stderr --v=0   "file://$(pwd)/{REPRO_HTML}" 2>"$log" &
 pid=$!
 i=0
