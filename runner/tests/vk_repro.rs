@@ -100,7 +100,11 @@ fn check(driver: &str, test: &str) -> Option<PathBuf> {
     let backend = format!("vk:{driver}");
     let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
     let fixtures = grid_fixture_file(&id);
-    let out = common::tmpdir(&format!("vk-repro-{driver}"));
+    // One directory per test: the lavapipe tests run in parallel.
+    let tag = test
+        .bytes()
+        .fold(0u32, |h, b| h.wrapping_mul(31).wrapping_add(b as u32));
+    let out = common::tmpdir(&format!("vk-repro-{driver}-{tag:08x}"));
     let run_dir = out.join("run");
     let r = common::run(&[
         "--backend",
