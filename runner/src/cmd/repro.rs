@@ -32,7 +32,7 @@ pub struct Args {
     )]
     backend: Option<String>,
     /// The test: `<case id>@<api>` as in results and baselines (api: ff, arbfp, glsl120, glsl130,
-    /// core, es100, es300, vk, wgsl).
+    /// core, es100, es300, vk, wgsl); `<case id>/sweep=<k>@<api>`: the case's sweep point k.
     #[arg(
         long = "case",
         value_name = "ID",
