@@ -149,3 +149,84 @@ fn a_webgl_pass_reproduces_on_chromium_gles_and_a_wrong_set_fails() {
     assert_eq!(o.status.code(), Some(1), "{s}");
     assert!(s.contains("verdict:   FAIL"), "{s}");
 }
+
+/// A TexParameter state case on `webgl:chromium`: the page makes the worker's call and read-back
+/// and agrees with the harness (a Pass: INVALID_ENUM, the state unchanged, ES 3.2 §8.10); with the
+/// expected error made INVALID_VALUE the same page exits 1.
+#[test]
+fn a_webgl_state_case_reproduces_and_a_wrong_expectation_fails() {
+    let backend = "webgl:chromium";
+    if !installed_or_skip(backend) {
+        return;
+    }
+    let test = "state/gles32/es/2d/compare_func/set=0x1234@es300";
+    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
+    let fixtures =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures/state/gles32.json");
+    let out = tmpdir("webgl-repro-state");
+    let run_dir = out.join("run");
+    let r = run(&[
+        "--backend",
+        backend,
+        "--fixtures",
+        fixtures.to_str().unwrap(),
+        "--cases",
+        &format!("^{}$", regex::escape(&id)),
+        "--no-rerun",
+        "--out",
+        run_dir.to_str().unwrap(),
+    ]);
+    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
+    let rec = results
+        .get(backend, test)
+        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    assert_eq!(rec.outcome, Outcome::Pass, "{:?}", rec.reason);
+    let dir = out.join("repro");
+    let rc = Run::of(
+        bin()
+            .args([
+                "repro",
+                "-b",
+                backend,
+                "--case",
+                test,
+                "--allow-pass",
+                "--fixtures",
+            ])
+            .arg(&fixtures)
+            .arg("-o")
+            .arg(&dir)
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
+    let sh = |dir: &std::path::Path| {
+        let o = Command::new("sh")
+            .arg(dir.join("build.sh"))
+            .output()
+            .unwrap();
+        (
+            o.status.code(),
+            String::from_utf8_lossy(&o.stdout).into_owned(),
+        )
+    };
+    let (code, text) = sh(&dir);
+    assert_eq!(code, Some(0), "{text}");
+    assert!(
+        text.contains(
+            "expected:  GL_INVALID_ENUM, value 0x0203\nobserved:  GL_INVALID_ENUM, value 0x0203\n"
+        ),
+        "{text}"
+    );
+    let page = std::fs::read_to_string(dir.join("repro.html")).unwrap();
+    let base = "  { extension: null, error: 1280, value: 515,";
+    assert!(page.contains(base), "{page}");
+    std::fs::write(
+        dir.join("repro.html"),
+        page.replace(base, "  { extension: null, error: 1281, value: 515,"),
+    )
+    .unwrap();
+    let (code, text) = sh(&dir);
+    assert_eq!(code, Some(1), "{text}");
+    assert!(text.contains("verdict:   FAIL"), "{text}");
+}

@@ -306,12 +306,13 @@ fn state_subject(
     lib_dir: Option<PathBuf>,
 ) -> Result<state::StateSubject, ReproError> {
     let case = l.case.clone();
-    let Backend::Gl(backend) = name else {
+    if !matches!(name, Backend::Gl(_) | Backend::Webgl(_)) {
         return Err(ReproError::BadBackend(format!(
-            "`{}` is a TexParameter state case: repro writes its program for the GL backends (egl:*, egl@DIR:*, osmesa:*), not yet for {name}",
+            "`{}` is a TexParameter state case: it runs on the GL and WebGL backends, not on {name}",
             case.id
         )));
-    };
+    }
+    let backend = name;
     if !case.api.contains(&api) {
         return Err(ReproError::NoPath {
             id: case.id,
@@ -382,8 +383,13 @@ pub fn build_line(s: &Subject) -> String {
 
 /// The environment that picks the driver, as `NAME=value` words (the worker's).
 pub fn env_words(s: &Subject) -> String {
-    match s.backend {
-        Backend::Gl(b) => csource::env_words(b, s.lib_dir.as_deref()),
+    backend_env_words(s.backend, s.lib_dir.as_deref())
+}
+
+/// [`env_words`] of a backend.
+pub fn backend_env_words(backend: Backend, lib_dir: Option<&Path>) -> String {
+    match backend {
+        Backend::Gl(b) => csource::env_words(b, lib_dir),
         Backend::Vk(d) => vulkan::env_words(d),
         Backend::Webgpu(_) => String::new(),
         Backend::Webgl(k) => webgl::instance(k)
@@ -629,13 +635,14 @@ impl Reproducer {
     pub fn backend(&self) -> Backend {
         match self {
             Reproducer::Lookup(s) => s.backend,
-            Reproducer::State(s) => Backend::Gl(s.backend),
+            Reproducer::State(s) => s.backend,
         }
     }
     /// The program file: repro.c or repro.html.
     pub fn program_file(&self) -> &'static str {
         match self {
             Reproducer::Lookup(s) => program_file(s),
+            Reproducer::State(s) if matches!(s.backend, Backend::Webgl(_)) => webgpu::REPRO_HTML,
             Reproducer::State(_) => REPRO_C,
         }
     }
@@ -646,14 +653,31 @@ impl Reproducer {
             Reproducer::State(s) => s,
         };
         std::fs::create_dir_all(dir).map_err(io(format!("creating {}", dir.display())))?;
-        std::fs::write(dir.join(REPRO_C), state::program(s)).map_err(io("writing repro.c"))?;
+        let b = match s.backend {
+            Backend::Gl(b) => b,
+            Backend::Webgl(k) => {
+                let page = state::page(s, k).map_err(ReproError::NotPlanned)?;
+                std::fs::write(dir.join(webgpu::REPRO_HTML), page)
+                    .map_err(io("writing repro.html"))?;
+                std::fs::write(dir.join(BUILD_SH), webgl::script(&s.test(), k))
+                    .map_err(io("writing build.sh"))?;
+                return Ok(());
+            }
+            Backend::Vk(_) | Backend::Webgpu(_) => {
+                return Err(ReproError::BadBackend(format!(
+                    "a state case does not run on {}",
+                    s.backend
+                )))
+            }
+        };
+        std::fs::write(dir.join(REPRO_C), state::program(s, b)).map_err(io("writing repro.c"))?;
         let lib_dir = s.lib_dir.as_deref();
         let sh = c_build_sh(
             &s.test(),
-            Backend::Gl(s.backend),
+            s.backend,
             lib_dir,
-            &csource::build_line(s.backend, lib_dir),
-            &csource::env_words(s.backend, lib_dir),
+            &csource::build_line(b, lib_dir),
+            &csource::env_words(b, lib_dir),
         );
         std::fs::write(dir.join(BUILD_SH), sh).map_err(io("writing build.sh"))?;
         Ok(())
@@ -690,7 +714,7 @@ impl Reproducer {
                 s,
                 run,
                 reason.as_deref().unwrap_or("as required"),
-                &report::versions_of(&backend_packages(Backend::Gl(s.backend))),
+                &report::versions_of(&backend_packages(s.backend)),
             ),
             // A judgement of the other kind is never made ([`Reproducer::run`]).
             (Reproducer::Lookup(_), Judgement::State(..))

@@ -25,7 +25,8 @@ use std::path::PathBuf;
 /// One state case on one GL backend, with the oracle's expectation.
 #[derive(Debug, Clone)]
 pub struct StateSubject {
-    pub backend: BackendName,
+    /// A GL backend, or a WebGL one (whose page [`page`] writes).
+    pub backend: super::Backend,
     pub case: StateCase,
     /// The context kind, as the API path only it has (`core`, `ff`, `es300`, ...).
     pub api: ApiPath,
@@ -62,9 +63,8 @@ fn value_c(v: Option<StateValue>) -> String {
     }
 }
 
-/// The program text.
-pub fn program(s: &StateSubject) -> String {
-    let b = s.backend;
+/// The program text on the GL backend `b`.
+pub fn program(s: &StateSubject, b: BackendName) -> String {
     let c = &s.case;
     let e = &s.expect;
     let pname = c.pname.gl();
@@ -358,7 +358,10 @@ pub fn report(
     versions: &[String],
 ) -> String {
     let mut o = String::new();
-    let renderer = run.field("GL_RENDERER").unwrap_or("?");
+    let renderer = run
+        .field("GL_RENDERER")
+        .or(run.field("WEBGL_RENDERER"))
+        .unwrap_or("?");
     let driver = renderer.split_whitespace().next().unwrap_or(renderer);
     let _ = writeln!(
         o,
@@ -375,13 +378,20 @@ pub fn report(
         s.test(),
         s.backend,
         s.fixture.display(),
-        super::REPRO_C
+        match s.backend {
+            super::Backend::Webgl(_) => super::webgpu::REPRO_HTML,
+            _ => super::REPRO_C,
+        }
     );
     let _ = writeln!(o, "## Driver\n");
-    for k in ["GL_RENDERER", "GL_VERSION"] {
+    let fields: &[&str] = match s.backend {
+        super::Backend::Webgl(_) => &super::webgl::FIELDS,
+        _ => &["GL_RENDERER", "GL_VERSION"],
+    };
+    for k in fields {
         let _ = writeln!(o, "- {k}: `{}`", run.field(k).unwrap_or("(not printed)"));
     }
-    let env = env_words(s.backend, s.lib_dir.as_deref());
+    let env = super::backend_env_words(s.backend, s.lib_dir.as_deref());
     let _ = writeln!(
         o,
         "- driver selected by: `{}`",
@@ -408,10 +418,8 @@ pub fn report(
     let _ = writeln!(o, "\n## Expected and observed\n\n{reason}\n");
     let _ = writeln!(
         o,
-        "## Reproduce\n\n```sh\nsh {}     # {}; then {} ./repro\n```\n\nExit status 1: not the error and value the spec requires; 0: as required; 2: setup failed.\n",
+        "## Reproduce\n\n```sh\nsh {}\n```\n\nExit status 1: not the error and value the spec requires; 0: as required; 2: setup failed.\n",
         super::BUILD_SH,
-        super::csource::build_line(s.backend, s.lib_dir.as_deref()),
-        env_words(s.backend, s.lib_dir.as_deref())
     );
     let _ = writeln!(
         o,
@@ -421,3 +429,81 @@ pub fn report(
     );
     o
 }
+
+/// The WebGL 2.0 page of a state case on `webgl:<key>`: what the WebGL worker's page does
+/// (`webgl/src/page.js` `state`, read back as `webgl/src/state.rs` does): a fresh texture bound to
+/// the target on unit 0, the call, getError, then getTexParameter and getError; the expectation's
+/// rows as constants (a row naming an extension applies when the context lists it: WebGL lists no
+/// desktop GL extension, so the spec's row does), the same `expected:` / `observed:` lines and exit
+/// codes as the C program.
+pub fn page(s: &StateSubject, key: &str) -> Result<String, String> {
+    use super::webgpu::{html_escape, jf, js};
+    let inst = super::webgl::instance(key).map_err(|e| e.to_string())?;
+    let c = &s.case;
+    let e = &s.expect;
+    let row =
+        |ext: Option<&str>, error: Option<GlErrorCode>, value: Option<StateValue>, text: String| {
+            let v = match value {
+                None => "null".to_string(),
+                Some(StateValue::Bool(b)) => i32::from(b).to_string(),
+                Some(StateValue::Enum(x)) => x.to_string(),
+                Some(StateValue::Float(f)) => jf(f),
+            };
+            format!(
+                "  {{ extension: {}, error: {}, value: {v}, text: {} }},",
+                ext.map_or("null".into(), js),
+                error.map_or(0, |e| e.gl()),
+                js(&text)
+            )
+        };
+    let mut rows: Vec<String> = e
+        .with_extension
+        .iter()
+        .map(|w| {
+            row(
+                Some(&w.extension),
+                w.error,
+                w.value,
+                format!("with {} exposed: {}", w.extension, words(w.error, w.value)),
+            )
+        })
+        .collect();
+    rows.push(row(None, e.error, e.value, state_verdict::expected_text(e)));
+    let (call, value) = match c.call {
+        StateCall::Initial => ("initial", "0".to_string()),
+        StateCall::SetInt(i) => ("int", i.to_string()),
+        StateCall::SetFloat(f) => ("float", jf(f)),
+    };
+    let kind = match c.pname.value_type() {
+        StateType::Bool => "b",
+        StateType::Enum => "e",
+        StateType::Float => "f",
+    };
+    let renderer: Vec<String> = inst.renderer.iter().map(|w| js(w)).collect();
+    Ok(format!(
+        "<!doctype html>\n<meta charset=utf-8>\n<title>shadowcheck reproducer: {title}</title>\n<!--\n  shadowcheck reproducer: {test} on {backend} ({what})\n  Run: sh {sh} (headless Chromium with the instance's flags and environment).\n\n  Generated by `shadowcheck repro`: what shadowcheck's WebGL worker does for this TexParameter\n  state case, with no shadowcheck code: a fresh texture bound to {target} on unit 0, {call_words},\n  getError, then getTexParameter of {pname}. Prints the expected error and value (shadowcheck's\n  oracle, oracle/src/state.rs, as constants) and the observed ones; the verdict.\n-->\n<pre id=\"out\"></pre>\n<script>\n\"use strict\";\nconst TEST = {test_js};\nconst INSTANCE = {inst_js};\nconst RENDERER_WORDS = [{renderer}];\n// The case: target, pname, the call (\"initial\": none), its value, whether the value is read back,\n// how the pname is stored ('b' boolean, 'e' enum, 'f' float).\nconst STATE = {{ target: 0x{t:04X}, pname: 0x{p:04X}, name: {name}, call: \"{call}\", value: {value}, read_back: {rb}, kind: \"{kind}\" }};\n// Expected, from shadowcheck's oracle: the first row whose extension the context lists, else the\n// last (the spec's own). error 0: none; value null: not read.\nconst EXPECT = [\n{rows}\n];\n\n{main}</script>\n",
+        title = html_escape(&s.test()),
+        test = html_escape(&s.test()).replace("--", "- -"),
+        backend = s.backend,
+        what = inst.what,
+        sh = super::BUILD_SH,
+        target = target_name(c),
+        call_words = match c.call {
+            StateCall::Initial => "no call".to_string(),
+            call => format!("{call}"),
+        },
+        pname = c.pname.name(),
+        test_js = js(&s.test()),
+        inst_js = js(&format!("{} ({})", inst.name(), inst.what)),
+        renderer = renderer.join(", "),
+        t = c.target.gl(),
+        p = c.pname.gl(),
+        name = js(c.pname.name()),
+        rb = c.read_back,
+        rows = rows.join("\n"),
+        main = STATE_MAIN,
+    ))
+}
+
+/// The fixed part of the WebGL state page.
+const STATE_MAIN: &str = include_str!("webgl_state.js");

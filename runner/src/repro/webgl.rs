@@ -68,13 +68,13 @@ fn webgl_info() -> GlInfo {
 
 /// The run script: headless Chromium with the instance's flags and environment.
 pub fn run_script(s: &Subject, key: &str) -> String {
+    script(&s.test(), key)
+}
+
+/// [`run_script`] of a test (a lookup or a state case) on `webgl:<key>`.
+pub fn script(test: &str, key: &str) -> String {
     let launch = instance(key).map(|i| (i.launch)()).unwrap_or_default();
-    webgpu::browser_script(
-        &s.test(),
-        &s.backend.to_string(),
-        &launch.flags,
-        &launch.env,
-    )
+    webgpu::browser_script(test, &format!("webgl:{key}"), &launch.flags, &launch.env)
 }
 
 /// Writes repro.html and build.sh into `dir` (created).
