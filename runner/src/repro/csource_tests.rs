@@ -1,6 +1,7 @@
 //! Unit tests of the C program text (no GL, no compiler).
 
 use super::*;
+use crate::repro::cexpect::cd;
 use shadowcheck_model::*;
 
 /// GL 4.6 core, 2x2 D16 (stored 0, 21845, 43690, 65535), NEAREST at the centre of texel (1,0)

@@ -17,10 +17,12 @@
 //! `--all-failures` groups the Fails of a results directory into classes ([`classes`]) and writes one
 //! reproducer per class with an index.
 
+mod cexpect;
 pub mod classes;
 pub mod csource;
 pub mod egl14;
 pub mod report;
+mod reproducer;
 pub mod state;
 mod tokens;
 pub mod vulkan;
@@ -31,6 +33,9 @@ use shadowcheck_gl::{BackendName, Driver};
 use shadowcheck_model::{ApiPath, Case, Expectation};
 use std::path::{Path, PathBuf};
 use std::process::Command;
+
+use reproducer::state_subject;
+pub use reproducer::{failing_test, Judgement, Reproducer};
 
 #[derive(Debug, thiserror::Error)]
 pub enum ReproError {
@@ -297,42 +302,7 @@ pub fn reproducer(
     })))
 }
 
-/// The subject of a state case: a GL backend, a path the case lists, the oracle's expectation.
-fn state_subject(
-    name: Backend,
-    l: &crate::run::LoadedState,
-    file: &str,
-    api: ApiPath,
-    lib_dir: Option<PathBuf>,
-) -> Result<state::StateSubject, ReproError> {
-    let case = l.case.clone();
-    if !matches!(name, Backend::Gl(_) | Backend::Webgl(_)) {
-        return Err(ReproError::BadBackend(format!(
-            "`{}` is a TexParameter state case: it runs on the GL and WebGL backends, not on {name}",
-            case.id
-        )));
-    }
-    let backend = name;
-    if !case.api.contains(&api) {
-        return Err(ReproError::NoPath {
-            id: case.id,
-            api: api.key().into(),
-            listed: keys(&case.api),
-        });
-    }
-    let expect =
-        shadowcheck_oracle::state::expect_state(&case).map_err(ReproError::NoExpectation)?;
-    Ok(state::StateSubject {
-        backend,
-        case,
-        api,
-        expect,
-        fixture: PathBuf::from(file),
-        lib_dir,
-    })
-}
-
-fn keys(paths: &[ApiPath]) -> String {
+pub(super) fn keys(paths: &[ApiPath]) -> String {
     paths.iter().map(|p| p.key()).collect::<Vec<_>>().join(", ")
 }
 
@@ -438,7 +408,7 @@ pub fn build_sh(s: &Subject) -> String {
 }
 
 /// build.sh of a C reproducer: build, then run with the driver's environment.
-fn c_build_sh(
+pub(super) fn c_build_sh(
     test: &str,
     backend: Backend,
     lib_dir: Option<&Path>,
@@ -545,7 +515,7 @@ pub fn build_and_run(s: &Subject, dir: &Path) -> Result<RunOutput, ReproError> {
 }
 
 /// [`build_and_run`] for a reproducer of `backend` already written in `dir`.
-fn run_build_sh(backend: Backend, dir: &Path) -> Result<RunOutput, ReproError> {
+pub(super) fn run_build_sh(backend: Backend, dir: &Path) -> Result<RunOutput, ReproError> {
     // A binary left from an earlier build must not run when this build fails.
     let _ = std::fs::remove_file(dir.join("repro"));
     let out = Command::new("sh")
@@ -599,147 +569,4 @@ fn run_build_sh(backend: Backend, dir: &Path) -> Result<RunOutput, ReproError> {
         });
     }
     Ok(r)
-}
-
-/// A reproducer's subject: a lookup case or a TexParameter state case.
-#[derive(Debug, Clone)]
-pub enum Reproducer {
-    Lookup(Box<Subject>),
-    State(Box<state::StateSubject>),
-}
-
-/// The runner's verdict on what a reproducer printed.
-#[derive(Debug, Clone)]
-pub enum Judgement {
-    Lookup(crate::verdict::Judged),
-    State(crate::records::Outcome, Option<String>),
-}
-
-impl Judgement {
-    pub fn outcome(&self) -> crate::records::Outcome {
-        match self {
-            Judgement::Lookup(j) => j.outcome,
-            Judgement::State(o, _) => *o,
-        }
-    }
-}
-
-impl Reproducer {
-    /// `<case id>@<api>`.
-    pub fn test(&self) -> String {
-        match self {
-            Reproducer::Lookup(s) => s.test(),
-            Reproducer::State(s) => s.test(),
-        }
-    }
-    pub fn backend(&self) -> Backend {
-        match self {
-            Reproducer::Lookup(s) => s.backend,
-            Reproducer::State(s) => s.backend,
-        }
-    }
-    /// The program file: repro.c or repro.html.
-    pub fn program_file(&self) -> &'static str {
-        match self {
-            Reproducer::Lookup(s) => program_file(s),
-            Reproducer::State(s) if matches!(s.backend, Backend::Webgl(_)) => webgpu::REPRO_HTML,
-            Reproducer::State(_) => REPRO_C,
-        }
-    }
-    /// Writes the program and build.sh into `dir` (created).
-    pub fn write_sources(&self, dir: &Path) -> Result<(), ReproError> {
-        let s = match self {
-            Reproducer::Lookup(s) => return write_sources(s, dir),
-            Reproducer::State(s) => s,
-        };
-        std::fs::create_dir_all(dir).map_err(io(format!("creating {}", dir.display())))?;
-        let b = match s.backend {
-            Backend::Gl(b) => b,
-            Backend::Webgl(k) => {
-                let page = state::page(s, k).map_err(ReproError::NotPlanned)?;
-                std::fs::write(dir.join(webgpu::REPRO_HTML), page)
-                    .map_err(io("writing repro.html"))?;
-                std::fs::write(dir.join(BUILD_SH), webgl::script(&s.test(), k))
-                    .map_err(io("writing build.sh"))?;
-                return Ok(());
-            }
-            Backend::Vk(_) | Backend::Webgpu(_) => {
-                return Err(ReproError::BadBackend(format!(
-                    "a state case does not run on {}",
-                    s.backend
-                )))
-            }
-        };
-        std::fs::write(dir.join(REPRO_C), state::program(s, b)).map_err(io("writing repro.c"))?;
-        let lib_dir = s.lib_dir.as_deref();
-        let sh = c_build_sh(
-            &s.test(),
-            s.backend,
-            lib_dir,
-            &csource::build_line(b, lib_dir),
-            &csource::env_words(b, lib_dir),
-        );
-        std::fs::write(dir.join(BUILD_SH), sh).map_err(io("writing build.sh"))?;
-        Ok(())
-    }
-    /// Runs the reproducer written in `dir` and judges what it printed as the runner does.
-    pub fn run(&self, dir: &Path) -> Result<(RunOutput, Judgement), ReproError> {
-        let run = run_build_sh(self.backend(), dir)?;
-        let unread = || ReproError::Setup {
-            code: run.code,
-            log: format!(
-                "the reproducer printed no `observed:` line the verdict can read:\n{}{}",
-                run.stdout, run.stderr
-            ),
-        };
-        let judged = match self {
-            Reproducer::Lookup(s) => {
-                let observed = run.observed().ok_or_else(unread)?;
-                Judgement::Lookup(crate::verdict::judge(&s.case, s.api, observed, None))
-            }
-            Reproducer::State(s) => {
-                let (o, why) = state::judge(s, &run).ok_or_else(unread)?;
-                Judgement::State(o, why)
-            }
-        };
-        Ok((run, judged))
-    }
-    /// REPORT.md.
-    pub fn report(&self, run: &RunOutput, j: &Judgement) -> String {
-        match (self, j) {
-            (Reproducer::Lookup(s), Judgement::Lookup(judged)) => {
-                report::render(s, run, judged, &report::package_versions(s))
-            }
-            (Reproducer::State(s), Judgement::State(_, reason)) => state::report(
-                s,
-                run,
-                reason.as_deref().unwrap_or("as required"),
-                &report::versions_of(&backend_packages(s.backend)),
-            ),
-            // A judgement of the other kind is never made ([`Reproducer::run`]).
-            (Reproducer::Lookup(_), Judgement::State(..))
-            | (Reproducer::State(_), Judgement::Lookup(_)) => String::new(),
-        }
-    }
-}
-
-/// The test a reproducer of a Fail record is written for: the record's own, or, when the verdict
-/// found the Fail at a sweep point (`sweep point <k> (...)`, `verdict::judge_sweep`), that point's
-/// (`<case id>/sweep=<k>@<api>`), whose lookup gave the RGBA the record holds.
-pub fn failing_test(r: &crate::records::TestResult) -> String {
-    let k = r
-        .reason
-        .as_deref()
-        .and_then(|why| why.strip_prefix("sweep point "))
-        .and_then(|rest| rest.split_once(' '))
-        .and_then(|(k, _)| k.parse::<usize>().ok());
-    match k {
-        Some(k) => format!(
-            "{}{}{k}@{}",
-            r.case_id,
-            shadowcheck_model::sweep::SWEEP_ID_TAG,
-            r.api.key()
-        ),
-        None => r.test.clone(),
-    }
 }
