@@ -127,11 +127,9 @@ fn same_rgba(a: [f64; 4], b: [f64; 4]) -> bool {
 
 /// A Mesa "shall" failure: the harness says Fail, `repro` writes REPORT.md (exit 0), the program
 /// exits 1 and prints what the harness observed.
-fn check_fail(cause: &str, backend: &str, test: &str) {
+fn check_fail(cause: &str, backend: &str, test: &str) -> Option<PathBuf> {
     let name = format!("repro-{}", cause.replace(' ', "-"));
-    let Some(b) = both(backend, test, &name, &[]) else {
-        return;
-    };
+    let b = both(backend, test, &name, &[])?;
     assert_eq!(
         b.harness,
         Outcome::Fail,
@@ -150,11 +148,12 @@ fn check_fail(cause: &str, backend: &str, test: &str) {
         report.contains(test) && report.contains("GL_RENDERER: `") && report.contains("**Fail**"),
         "{report}"
     );
+    Some(b.dir)
 }
 
 #[test]
 fn cause2_es_sized_depth_completeness() {
-    check_fail(
+    let _ = check_fail(
         "cause 2",
         "egl:llvmpipe:es3",
         "gles32/2d/d24/linear/none/a=0.25_0.5/read/dt=0.2_0.4_0.6_0.8@es300",
@@ -163,7 +162,7 @@ fn cause2_es_sized_depth_completeness() {
 
 #[test]
 fn cause3_softpipe_compare_after_filtering() {
-    check_fail(
+    let _ = check_fail(
         "cause 3",
         "egl:softpipe:core",
         "gl46/2d/d24/linear/equal/pcf/a=0.5_0.5/ref=0.5/dt=0.2_0.4_0.6_0.8@core",
@@ -172,7 +171,7 @@ fn cause3_softpipe_compare_after_filtering() {
 
 #[test]
 fn cause5_fixed_function_1d_compares_against_t() {
-    check_fail(
+    let _ = check_fail(
         "cause 5",
         "egl:llvmpipe:compat",
         "arb/1d/d16/nearest/lequal/texel1/ref=0.5/dt=0.2_0.4_0.6_0.8@ff",
@@ -181,7 +180,7 @@ fn cause5_fixed_function_1d_compares_against_t() {
 
 #[test]
 fn cause5_on_osmesa() {
-    check_fail(
+    let _ = check_fail(
         "cause 5 osmesa",
         "osmesa:llvmpipe:compat",
         "arb/1d/d16/nearest/lequal/texel1/ref=0.5/dt=0.2_0.4_0.6_0.8@ff",
@@ -190,7 +189,7 @@ fn cause5_on_osmesa() {
 
 #[test]
 fn cause6_zink_depth_texture_mode_layout() {
-    check_fail(
+    let _ = check_fail(
         "cause 6",
         "egl:zink:compat",
         "arb/2d/d24/linear/lequal/wrap/wrap=clamp/st=-0.25_0.25/border=1/ref=0.5@glsl120",
@@ -199,7 +198,7 @@ fn cause6_zink_depth_texture_mode_layout() {
 
 #[test]
 fn cause7_glsl130_alpha_becomes_intensity() {
-    check_fail(
+    let _ = check_fail(
         "cause 7",
         "egl:llvmpipe:compat",
         "gl46/2d/d24/nearest/none/dtm/dtm=alpha/texel1/ref=0.3@glsl130",
@@ -208,7 +207,7 @@ fn cause7_glsl130_alpha_becomes_intensity() {
 
 #[test]
 fn cause8_softpipe_texture_grad_drops_lod_bias() {
-    check_fail(
+    let _ = check_fail(
         "cause 8",
         "egl:softpipe:core:grad",
         "gl46/2d/d24/nmn/lequal/mip/lod_bias=1/lod=0/ref=0.5/levels=0.2_0.8_0.4@core",
@@ -217,10 +216,209 @@ fn cause8_softpipe_texture_grad_drops_lod_bias() {
 
 #[test]
 fn cause9_linear_array_layer_tie() {
-    check_fail(
+    let _ = check_fail(
         "cause 9",
         "egl:llvmpipe:core",
         "gl46/2darray/d24/linear/lequal/layer/layer=0.5/ref=0.6/layers=0.2_0.8_0.4@core",
+    );
+}
+
+/// A shadow textureGather whose four comparisons softpipe gets wrong on a cube-map array (the
+/// hand-written reproducer reports/mesa-22.3.6/repro/gather-softpipe-cube-array/ found it): the
+/// generated program judges each gather value by its own accepted set and prints all four.
+#[test]
+fn gather_softpipe_cube_array() {
+    let Some(dir) = check_fail(
+        "gather",
+        "egl:softpipe:es3",
+        "gles32/cubearray/d24/linear/lequal/gather/uv=1.75_2.25/ref=0.8645833333333334@es300",
+    ) else {
+        return;
+    };
+    let c = std::fs::read_to_string(dir.join("repro.c")).unwrap();
+    assert!(c.contains("textureGather(u_tex"), "no textureGather call");
+    assert!(c.contains("static const char LAYOUT[4] = {'A', 'B', 'C', 'D'};"));
+}
+
+/// textureGatherOffsets on llvmpipe passes: the program exits 0 with the harness's four values;
+/// with one gather value's accepted set emptied it exits 1.
+#[test]
+fn gather_offsets_pass_and_a_wrong_component_set_fails() {
+    let test = "gl46/2d/d24/nearest/lequal/gather/offsets=1/wrap=repeat/ref=0.5@core";
+    let Some(b) = both(
+        "egl:llvmpipe:core",
+        test,
+        "repro-gather-pass",
+        &["--allow-pass"],
+    ) else {
+        return;
+    };
+    assert_eq!(b.harness, Outcome::Pass);
+    assert_eq!((b.repro_cmd_exit, b.repro_exit), (0, 0));
+    assert!(same_rgba(b.harness_rgba, b.repro_rgba));
+    let c = std::fs::read_to_string(b.dir.join("repro.c")).unwrap();
+    assert!(
+        c.contains("textureGatherOffsets(u_tex"),
+        "no textureGatherOffsets call"
+    );
+    // Gather value 2 (blue) accepted nowhere: the same observation is now outside.
+    let set = regex::Regex::new(r"static const struct set GATHER_ACCEPTED\[4\] = \{\{GATHER_ACCEPTED_0, (\d)\}, \{GATHER_ACCEPTED_1, (\d)\}, \{GATHER_ACCEPTED_2, \d\}").unwrap();
+    assert!(set.is_match(&c), "no GATHER_ACCEPTED table");
+    let wrong = set.replace(&c, "static const struct set GATHER_ACCEPTED[4] = {{GATHER_ACCEPTED_0, $1}, {GATHER_ACCEPTED_1, $2}, {GATHER_ACCEPTED_2, 0}");
+    std::fs::write(b.dir.join("repro.c"), wrong.as_ref()).unwrap();
+    let own = Command::new("sh")
+        .arg("build.sh")
+        .current_dir(&b.dir)
+        .output()
+        .unwrap();
+    let out = String::from_utf8_lossy(&own.stdout);
+    assert_eq!(own.status.code(), Some(1), "{out}");
+    assert!(
+        out.contains("b = ") && out.contains("outside what channel 'C' allows"),
+        "{out}"
+    );
+}
+
+/// SwiftShader's own GLES (an EGL 1.4 library: pbuffer contexts only) clamps no reference before
+/// an EQUAL comparison (reports/swiftshader-4.0.0.3): the program opens the library as the worker
+/// does, through a pbuffer, and reproduces the harness's observation.
+#[test]
+fn swiftshader_gles_through_an_egl_1_4_pbuffer() {
+    let Some(dir) = check_fail(
+        "swiftshader pbuffer",
+        "egl:swiftshader:es3",
+        "gles32/2d/d24/nearest/equal/clamp/dt=0/ref=-0.1@es300",
+    ) else {
+        return;
+    };
+    let out = std::fs::read_to_string(dir.join("output.txt")).unwrap();
+    assert!(out.contains("egl:       EGL 1.4, pbuffer"), "{out}");
+    let sh = std::fs::read_to_string(dir.join("build.sh")).unwrap();
+    assert!(sh.contains("-L\"$dir\" -Wl,-rpath,\"$dir\""), "{sh}");
+    assert!(
+        !sh.contains("/root") && !sh.contains("/home"),
+        "a machine path in {sh}"
+    );
+}
+
+/// A TexParameter state case: the harness's verdict, then the reproducer on its own, which must
+/// print the observation the harness judged and exit 1 for a Fail, 0 for a Pass.
+fn check_state(backend: &str, test: &str, want: Outcome) -> Option<PathBuf> {
+    if let Err(e) = shadowcheck_runner::backend::gl::worker_command(backend) {
+        gl_support::unavailable(backend, &e.to_string());
+        return None;
+    }
+    if !can_build(backend) {
+        return None;
+    }
+    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
+    let spec = id.split('/').nth(1).unwrap();
+    let fixtures = root().join(format!("cases/fixtures/state/{spec}.json"));
+    let out = common::tmpdir(&format!("repro-state-{}", backend.replace(':', "-")));
+    let run_dir = out.join("run");
+    let r = common::run(&[
+        "--backend",
+        backend,
+        "--fixtures",
+        fixtures.to_str().unwrap(),
+        "--cases",
+        &format!("^{}$", regex::escape(&id)),
+        "--no-rerun",
+        "--out",
+        run_dir.to_str().unwrap(),
+    ]);
+    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
+    let rec = results
+        .get(backend, test)
+        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    assert_eq!(rec.outcome, want, "{test} on {backend}: {:?}", rec.reason);
+    let dir = out.join("repro");
+    let rc = common::Run::of(
+        common::bin()
+            .args([
+                "repro",
+                "--backend",
+                backend,
+                "--case",
+                test,
+                "--allow-pass",
+                "--fixtures",
+            ])
+            .arg(&fixtures)
+            .arg("--out")
+            .arg(&dir)
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
+    assert_eq!(dir.join("REPORT.md").is_file(), want == Outcome::Fail);
+    let own = Command::new("sh")
+        .arg("build.sh")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&own.stdout).into_owned();
+    let code = if want == Outcome::Fail { 1 } else { 0 };
+    assert_eq!(own.status.code(), Some(code), "{stdout}");
+    let observed = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("observed:"))
+        .map(str::trim)
+        .unwrap_or_else(|| panic!("no observed line: {stdout}"));
+    match &rec.reason {
+        // The harness's reason says what it got: the very observation of the program.
+        Some(why) if want == Outcome::Fail => {
+            assert!(
+                why.contains(&format!("got {observed};")),
+                "{why} / {observed}"
+            )
+        }
+        _ => assert!(
+            stdout.contains(&format!("expected:  {observed}\n")),
+            "{stdout}"
+        ),
+    }
+    Some(dir)
+}
+
+/// TEXTURE_COMPARE_FUNC set to a value that is no compare function: INVALID_ENUM and the state
+/// unchanged (ES 3.2 §8.10). llvmpipe does so; the program passes, and with the expected error made
+/// INVALID_VALUE it exits 1.
+#[test]
+fn a_state_case_passes_on_llvmpipe_and_a_wrong_expectation_fails() {
+    let Some(dir) = check_state(
+        "egl:llvmpipe:es3",
+        "state/gles32/es/2d/compare_func/set=0x1234@es300",
+        Outcome::Pass,
+    ) else {
+        return;
+    };
+    let c = std::fs::read_to_string(dir.join("repro.c")).unwrap();
+    assert!(c.contains("glTexParameteri(TARGET, PNAME, 0x1234);"), "{c}");
+    assert!(c.contains("{NULL, 0x0500, 1, 0x0203, 0.0f,"), "{c}");
+    let wrong = c.replace(
+        "{NULL, 0x0500, 1, 0x0203, 0.0f,",
+        "{NULL, 0x0501, 1, 0x0203, 0.0f,",
+    );
+    std::fs::write(dir.join("repro.c"), wrong).unwrap();
+    let own = Command::new("sh")
+        .arg("build.sh")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let out = String::from_utf8_lossy(&own.stdout);
+    assert_eq!(own.status.code(), Some(1), "{out}");
+    assert!(out.contains("verdict:   FAIL"), "{out}");
+}
+
+/// SwiftShader's GLES raises INVALID_VALUE where ES 3.2 §8.10 requires INVALID_ENUM (the committed
+/// swiftshader-4.0.0.3 report): the state reproducer, through its EGL 1.4 pbuffer, says the same.
+#[test]
+fn a_state_case_fails_on_swiftshader_gles() {
+    let _ = check_state(
+        "egl:swiftshader:es3",
+        "state/gles32/es/2d/compare_func/set=0x1234@es300",
+        Outcome::Fail,
     );
 }
 

@@ -77,15 +77,23 @@ fn state_cases_pass_on_every_mesa_context_through_run() {
     }
 }
 
+/// `repro::subject` is for lookup cases: a state case is named as such, and `repro::reproducer`
+/// gives its state reproducer (`runner/src/repro/state.rs`; built and run in tests/gl_repro.rs).
 #[test]
-fn repro_refuses_a_state_case_with_the_reason() {
-    let e = shadowcheck_runner::repro::subject(
+fn repro_writes_a_state_case_through_its_own_reproducer() {
+    let (backend, test) = (
         "egl:llvmpipe:core",
         "state/gl46/core/2d/compare_mode/initial@core",
-        &[fixtures().join("state")],
-    )
-    .err()
-    .map(|e| e.to_string())
-    .unwrap_or_default();
+    );
+    let fixtures = [fixtures().join("state")];
+    let e = shadowcheck_runner::repro::subject(backend, test, &fixtures)
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
     assert!(e.contains("TexParameter state case"), "{e}");
+    let r = shadowcheck_runner::repro::reproducer(backend, test, &fixtures);
+    assert!(
+        matches!(r, Ok(shadowcheck_runner::repro::Reproducer::State(_))),
+        "{r:?}"
+    );
 }

@@ -100,7 +100,11 @@ fn check(driver: &str, test: &str) -> Option<PathBuf> {
     let backend = format!("vk:{driver}");
     let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
     let fixtures = grid_fixture_file(&id);
-    let out = common::tmpdir(&format!("vk-repro-{driver}"));
+    // One directory per test: the lavapipe tests run in parallel.
+    let tag = test
+        .bytes()
+        .fold(0u32, |h, b| h.wrapping_mul(31).wrapping_add(b as u32));
+    let out = common::tmpdir(&format!("vk-repro-{driver}-{tag:08x}"));
     let run_dir = out.join("run");
     let r = common::run(&[
         "--backend",
@@ -171,6 +175,13 @@ fn check(driver: &str, test: &str) -> Option<PathBuf> {
     let accepted = regex::Regex::new(r"static const double ACCEPTED\[\]\[2\] = \{.*\};").unwrap();
     assert!(accepted.is_match(&c), "no ACCEPTED constant in repro.c");
     let wrong = accepted.replace(&c, "static const double ACCEPTED[][2] = {{2.0, 3.0}};");
+    // A gather's first value is judged by its own set (GATHER_ACCEPTED_0): the same wrong set.
+    let gather0 =
+        regex::Regex::new(r"static const double GATHER_ACCEPTED_0\[\]\[2\] = \{.*\};").unwrap();
+    let wrong = gather0.replace(
+        &wrong,
+        "static const double GATHER_ACCEPTED_0[][2] = {{2.0, 3.0}};",
+    );
     std::fs::write(dir.join("repro.c"), wrong.as_ref()).unwrap();
     let (code, stdout, stderr) = build_sh(&dir);
     assert_eq!(code, 1, "{stdout}{stderr}");
@@ -197,6 +208,28 @@ fn a_passing_case_reproduces_on_lavapipe() {
     ] {
         assert!(c.contains(want), "missing `{want}`");
     }
+}
+
+/// A shadow textureGatherOffsets (OpImageDrefGather with four constant offsets, which needs
+/// shaderImageGatherExtended) on lavapipe: the four comparisons, each judged by its own set.
+#[test]
+fn a_gather_reproduces_on_lavapipe() {
+    let Some(dir) = check(
+        "lavapipe",
+        "vulkan/2d/d24/nearest/lequal/gather/offsets=1/wrap=repeat/ref=0.5@vk",
+    ) else {
+        return;
+    };
+    let c = std::fs::read_to_string(dir.join("repro.c")).unwrap();
+    for want in [
+        "#define NEED_GATHER_EXTENDED 1",
+        "#define IS_GATHER 1",
+        "static const char LAYOUT[4] = {'A', 'B', 'C', 'D'};",
+    ] {
+        assert!(c.contains(want), "missing `{want}`");
+    }
+    let frag = std::fs::read_to_string(dir.join("frag.glsl")).unwrap();
+    assert!(frag.contains("textureGatherOffsets("), "{frag}");
 }
 
 /// A LINEAR 2D lookup on SwiftShader's Vulkan driver.

@@ -1,5 +1,6 @@
-//! `shadowcheck repro`: a standalone C reproducer and a bug report for a failing test on a GL
-//! or Vulkan backend, or one per failure class of a results directory (`--all-failures`). The
+//! `shadowcheck repro`: a standalone reproducer (a C program, or a page for WebGPU and WebGL) and a
+//! bug report for a failing test (a lookup or a TexParameter state case) on a GL, Vulkan, WebGPU or
+//! WebGL backend, or one per failure class of a results directory (`--all-failures`). The
 //! generator is `shadowcheck_runner::repro`; this file parses the flags, runs it and prints what
 //! was written.
 //!
@@ -14,15 +15,15 @@
 
 use anyhow::{bail, Context};
 use shadowcheck_runner::records::{exit, read_results, Outcome, RESULTS_FILE};
-use shadowcheck_runner::repro::{self, classes, report, RunOutput, Subject};
-use shadowcheck_runner::verdict::{self, Judged};
+use shadowcheck_runner::repro::{self, classes, Judgement, Reproducer, RunOutput};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The backend the test failed on (egl:*, osmesa:*, vk:* or webgpu:*, as in `run -b`).
+    /// The backend the test failed on (egl:*, egl@DIR:*, osmesa:*, vk:*, webgpu:* or webgl:*, as in
+    /// `run -b`).
     #[arg(
         long = "backend",
         short = 'b',
@@ -31,7 +32,7 @@ pub struct Args {
     )]
     backend: Option<String>,
     /// The test: `<case id>@<api>` as in results and baselines (api: ff, arbfp, glsl120, glsl130,
-    /// core, es100, es300, vk, wgsl).
+    /// core, es100, es300, vk, wgsl); `<case id>/sweep=<k>@<api>`: the case's sweep point k.
     #[arg(
         long = "case",
         value_name = "ID",
@@ -69,26 +70,13 @@ fn slug(s: &str) -> String {
 }
 
 /// Builds and runs the reproducer of `s` in `dir` and judges what it observed as the runner does.
-fn reproduce(s: &Subject, dir: &Path) -> anyhow::Result<(RunOutput, Judged)> {
-    repro::write_sources(s, dir)?;
-    run_written(s, dir)
+fn reproduce(s: &Reproducer, dir: &Path) -> anyhow::Result<(RunOutput, Judgement)> {
+    s.write_sources(dir)?;
+    Ok(s.run(dir)?)
 }
 
-/// Builds and runs the reproducer already written in `dir`, and judges what it observed.
-fn run_written(s: &Subject, dir: &Path) -> anyhow::Result<(RunOutput, Judged)> {
-    let run = repro::build_and_run(s, dir)?;
-    let Some(observed) = run.observed() else {
-        bail!(
-            "the reproducer printed no `observed:` line (see {})",
-            dir.join(repro::OUTPUT_TXT).display()
-        );
-    };
-    Ok((run.clone(), verdict::judge(&s.case, s.api, observed, None)))
-}
-
-fn write_report(s: &Subject, dir: &Path, run: &RunOutput, judged: &Judged) -> anyhow::Result<()> {
-    let text = report::render(s, run, judged, &report::package_versions(s));
-    std::fs::write(dir.join(repro::REPORT_MD), text).context("writing REPORT.md")
+fn write_report(s: &Reproducer, dir: &Path, run: &RunOutput, j: &Judgement) -> anyhow::Result<()> {
+    std::fs::write(dir.join(repro::REPORT_MD), s.report(run, j)).context("writing REPORT.md")
 }
 
 pub fn main(a: Args) -> anyhow::Result<ExitCode> {
@@ -103,20 +91,20 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     } else {
         a.fixtures.clone()
     };
-    let s = repro::subject(backend, test, &fixtures)?;
+    let s = repro::reproducer(backend, test, &fixtures)?;
     let dir = a.out.clone().unwrap_or_else(|| {
         Path::new("out/repro")
-            .join(slug(&s.backend.to_string()))
+            .join(slug(&s.backend().to_string()))
             .join(slug(&s.test()))
     });
     let (run, judged) = reproduce(&s, &dir)?;
     super::outln!("{}", run.stdout.trim_end())?;
-    if judged.outcome == Outcome::Fail {
+    if judged.outcome() == Outcome::Fail {
         write_report(&s, &dir, &run, &judged)?;
         super::outln!(
             "wrote {}/{{{},{},{},{}}}",
             dir.display(),
-            repro::program_file(&s),
+            s.program_file(),
             repro::BUILD_SH,
             repro::OUTPUT_TXT,
             repro::REPORT_MD
@@ -126,10 +114,10 @@ pub fn main(a: Args) -> anyhow::Result<ExitCode> {
     let what = format!(
         "{} is a {} on {} here, not a Fail: only a \"shall\" violation gets a bug report (no {} written; {} and {} are in {})",
         s.test(),
-        judged.outcome.as_str(),
-        s.backend,
+        judged.outcome().as_str(),
+        s.backend(),
         repro::REPORT_MD,
-        repro::program_file(&s),
+        s.program_file(),
         repro::BUILD_SH,
         dir.display()
     );
@@ -188,16 +176,16 @@ fn all_failures(
             fixtures.push(PathBuf::from(super::run::DEFAULT_FIXTURES));
         }
         let mut sources = false;
-        let result = repro::subject(&r.backend, &r.test, &fixtures)
+        let result = repro::reproducer(&r.backend, &repro::failing_test(r), &fixtures)
             .map_err(anyhow::Error::from)
             .and_then(|s| {
-                repro::write_sources(&s, &dir)?;
+                s.write_sources(&dir)?;
                 sources = true;
-                let (run, judged) = run_written(&s, &dir)?;
-                if judged.outcome == Outcome::Fail {
+                let (run, judged) = s.run(&dir)?;
+                if judged.outcome() == Outcome::Fail {
                     write_report(&s, &dir, &run, &judged)?;
                 }
-                Ok(judged.outcome)
+                Ok(judged.outcome())
             });
         let cell = match result {
             Ok(Outcome::Fail) => {

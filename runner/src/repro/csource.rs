@@ -13,14 +13,16 @@
 //! LOD; the reproducer passes the same values as uniforms (the shader key and the lookup call
 //! are the same).
 
+pub(super) use super::cexpect::expectation;
 use super::tokens::Tokens;
-use super::Subject;
+use super::{egl14, Subject};
 use shadowcheck_gl::{BackendName, Platform};
-use shadowcheck_model::{Acceptance, ApiPath, Channel, Format, Profile, Swizzle, Target};
+use shadowcheck_model::{ApiPath, Channel, Format, Swizzle, Target};
 use shadowcheck_plan::texels::{level_bytes, transfer_for};
 use shadowcheck_plan::unit::{sampler_params, tex_params, ParamValue};
 use shadowcheck_plan::{gl, paths, shaders, ContextApi, GlInfo, LodForm, Plan, SamplerKind};
 use std::fmt::Write;
+use std::path::Path;
 
 const SWIZZLE_PNAMES: [u32; 4] = [
     gl::TEXTURE_SWIZZLE_R,
@@ -62,17 +64,6 @@ pub(super) fn cf(v: f32) -> String {
     }
 }
 
-/// A C `double` literal that reads back as exactly `v`.
-fn cd(v: f64) -> String {
-    if v.is_nan() {
-        "NAN".into()
-    } else if v.is_infinite() {
-        if v > 0.0 { "INFINITY" } else { "-INFINITY" }.into()
-    } else {
-        format!("{v:?}")
-    }
-}
-
 /// A C string literal, one source line per line.
 fn cstr(s: &str, indent: &str) -> String {
     let esc = |l: &str| l.replace('\\', "\\\\").replace('"', "\\\"");
@@ -87,24 +78,6 @@ fn cstr(s: &str, indent: &str) -> String {
     }
 }
 
-fn intervals(a: Option<&Acceptance>) -> (String, usize) {
-    let v: Vec<String> = a
-        .map(|a| {
-            a.0.iter()
-                .map(|i| format!("{{{}, {}}}", cd(i.lo), cd(i.hi)))
-                .collect()
-        })
-        .unwrap_or_default();
-    let n = v.len();
-    // C has no empty initializer list: an empty set is one interval nothing lies in.
-    let body = if v.is_empty() {
-        "{1.0, 0.0}".to_string()
-    } else {
-        v.join(", ")
-    };
-    (format!("{{{body}}}"), n)
-}
-
 pub(super) fn layout_char(c: Channel) -> char {
     match c {
         Channel::R => 'r',
@@ -112,13 +85,20 @@ pub(super) fn layout_char(c: Channel) -> char {
         Channel::One => '1',
         Channel::Unused => '-',
         Channel::ROrZero => 'z',
-        // Gather cases are refused before a program is written (`repro` has no gather draw).
-        Channel::G0 | Channel::G1 | Channel::G2 | Channel::G3 => 'g',
+        // A gather's four comparisons: 'A'..'D' read gather value 0..3, each judged by its own
+        // accepted set (`GATHER_ACCEPTED` in the program).
+        Channel::G0 => 'A',
+        Channel::G1 => 'B',
+        Channel::G2 => 'C',
+        Channel::G3 => 'D',
     }
 }
 
-/// The build command (one line) for this platform and API.
-pub fn build_line(b: BackendName) -> String {
+/// The build command (one line) for this platform and API (an EGL 1.4 backend's: [`egl14`]).
+pub fn build_line(b: BackendName, lib_dir: Option<&Path>) -> String {
+    if egl14::applies(b, lib_dir) {
+        return egl14::build_line(b, lib_dir);
+    }
     let libs = match (b.platform, b.api.is_es()) {
         (Platform::Osmesa, _) => "-lOSMesa",
         (Platform::Egl, true) => "-lEGL -lGLESv2",
@@ -127,50 +107,66 @@ pub fn build_line(b: BackendName) -> String {
     format!("cc -std=c99 -O1 -Wall -o repro repro.c {libs} -lm")
 }
 
-/// The environment that picks the driver, as `NAME=value` words (the worker's, `BackendName::env`).
-pub fn env_words(b: BackendName) -> String {
-    b.env()
+/// The environment that picks the driver, as `NAME=value` words (the worker's, `BackendName::env`;
+/// for an EGL 1.4 backend the library's directory on the loader's path instead of the worker's
+/// `SHADOWCHECK_LIBEGL`: [`egl14::env_words`]).
+pub fn env_words(b: BackendName, lib_dir: Option<&Path>) -> String {
+    let egl = egl14::applies(b, lib_dir);
+    let mut words: Vec<String> = b
+        .env()
         .iter()
+        .filter(|(k, _)| {
+            !egl || (k != "LD_LIBRARY_PATH" && k != shadowcheck_gl::context::LIBEGL_ENV)
+        })
         .map(|(k, v)| format!("{k}={v}"))
-        .collect::<Vec<_>>()
-        .join(" ")
+        .collect();
+    if egl {
+        words.push(egl14::env_words(b, lib_dir));
+    }
+    words.retain(|w| !w.is_empty());
+    words.join(" ")
 }
 
 /// The program text, or why this path cannot be planned for this case (the worker would Skip it).
 pub fn program(s: &Subject, b: BackendName) -> Result<String, String> {
-    if s.case.lookup.gather.is_some() {
-        return Err("shadowcheck repro does not write textureGather programs yet (its C check reads one r, a gather returns four comparisons): write one by hand from the case's JSON (`shadowcheck explain`)".into());
-    }
     // As the GL worker on a driver with EXT_texture_shadow_lod (`paths::plan_for`): a backend
     // name asking for `lod` / `implicit` gets that extension's overloads (the shader requires it).
     let plan = paths::plan_in(s.api, &s.case, &s.case.lookup, b.form, true)?;
     let mut tok = Tokens::default();
     let mut body = String::new();
-    let es = b.api.is_es();
     let compat = b.api == ContextApi::Compat;
     let _ = write!(body, "{}", expectation(s));
-    let _ = write!(body, "{}", context_fn(b));
+    let lib_dir = s.lib_dir.as_deref();
+    let _ = write!(body, "{}", context_fn(b, lib_dir));
     let _ = write!(body, "{}", texture_fn(s, compat, &mut tok)?);
     let _ = write!(body, "{}", draw_fn(s, b, &plan, &mut tok));
     let _ = write!(body, "{VERDICT}{MAIN}");
-    let includes = match (b.platform, es) {
-        (_, true) => "#include <EGL/egl.h>\n#include <EGL/eglext.h>\n#include <GLES3/gl32.h>\n#include <GLES2/gl2ext.h>\n",
-        (Platform::Egl, false) => "#include <EGL/egl.h>\n#include <EGL/eglext.h>\n#include <GL/gl.h>\n#include <GL/glext.h>\n",
-        (Platform::Osmesa, false) => "#include <GL/osmesa.h>\n#include <GL/gl.h>\n#include <GL/glext.h>\n",
-    };
-    let run = format!("{} ./repro", env_words(b));
+    let includes = includes(b);
+    let run = format!("{} ./repro", env_words(b, lib_dir));
     Ok(format!(
         "/* shadowcheck reproducer: {test} on {backend}\n *\n * Build: {build}\n * Run:   {run}\n *\n * Generated by `shadowcheck repro`: what shadowcheck's GL worker does for this test, with no\n * shadowcheck code.\n * Context: {ctx}.\n * Texture: the integers the worker uploads, the same sampler state.\n * Lookup: {how}; one draw into a 1x1 viewport of an RGBA32F framebuffer.\n * Prints the expected result (spec value and accepted set, computed by\n * shadowcheck's oracle, written here as constants) and the observed RGBA; exits 1 when the\n * observation is outside the accepted set, 0 when inside, 2 when setup fails.\n */\n#define GL_GLEXT_PROTOTYPES 1\n{includes}#include <math.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n{defines}\n{body}",
         test = s.test(),
         backend = b,
-        build = build_line(b),
-        ctx = context_words(b),
+        build = build_line(b, lib_dir),
+        ctx = context_words(b, lib_dir),
         how = plan.note,
         defines = tok.defines(),
     ))
 }
 
-fn context_words(b: BackendName) -> String {
+/// The headers of a GL program on this platform and API.
+pub(super) fn includes(b: BackendName) -> &'static str {
+    match (b.platform, b.api.is_es()) {
+        (_, true) => "#include <EGL/egl.h>\n#include <EGL/eglext.h>\n#include <GLES3/gl32.h>\n#include <GLES2/gl2ext.h>\n",
+        (Platform::Egl, false) => "#include <EGL/egl.h>\n#include <EGL/eglext.h>\n#include <GL/gl.h>\n#include <GL/glext.h>\n",
+        (Platform::Osmesa, false) => "#include <GL/osmesa.h>\n#include <GL/gl.h>\n#include <GL/glext.h>\n",
+    }
+}
+
+pub(super) fn context_words(b: BackendName, lib_dir: Option<&Path>) -> String {
+    if egl14::applies(b, lib_dir) {
+        return egl14::context_words(b);
+    }
     let platform = match b.platform {
         Platform::Egl => "EGL, EGL_PLATFORM_SURFACELESS_MESA",
         Platform::Osmesa => "OSMesa",
@@ -183,57 +179,6 @@ fn context_words(b: BackendName) -> String {
     format!("{platform}, {api}, highest version first")
 }
 
-/// The expectation as C constants (shared with the Vulkan program: [`super::vulkan`]).
-pub(super) fn expectation(s: &Subject) -> String {
-    let e = &s.expect;
-    let (quality, nq) = intervals(e.accept.get(&Profile::loosest()));
-    let (strict, ns) = intervals(e.accept.get(&Profile::strictest()));
-    let chars = |l: &[Channel; 4]| {
-        l.iter()
-            .map(|c| format!("'{}'", layout_char(*c)))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let layout: String = e
-        .layout
-        .get(&s.api)
-        .map(chars)
-        .unwrap_or_else(|| "'-', '-', '-', '-'".into());
-    // The other readings of the layout the texts allow (`Expectation::other_layouts`): a result any
-    // of them accepts is accepted, as shadowcheck's verdict does.
-    let others: Vec<&shadowcheck_model::OtherLayout> =
-        e.other_layouts.get(&s.api).into_iter().flatten().collect();
-    let mut layouts = vec![format!("{{{layout}}}")];
-    layouts.extend(others.iter().map(|o| format!("{{{}}}", chars(&o.layout))));
-    let mut readings = vec!["\"the spec value's\"".to_string()];
-    readings.extend(
-        others
-            .iter()
-            .map(|o| format!("\"{}\"", o.reading.replace('"', "'"))),
-    );
-    let spec_value = e
-        .spec_value
-        .map(|v| format!("r = {v}"))
-        .unwrap_or_else(|| "no single value".into());
-    let show = |p: Profile| {
-        e.accept
-            .get(&p)
-            .map(|a| a.to_string())
-            .unwrap_or_else(|| "(none)".into())
-    };
-    format!(
-        "/* Expected, from shadowcheck's oracle (`shadowcheck explain` shows the derivation). The accepted\n * set is what a conforming implementation may return for r (the `{q}` tier: outside it a \"shall\"\n * is violated); inside the `{st}` tier too is a plain pass. Layout per channel: 'r' the result,\n * '0'/'1' exactly that, 'z' r or 0, '-' not produced by this path. */\nstatic const char *TEST = \"{test}\";\nstatic const char *SPEC_VALUE = \"{spec_value}\";\nstatic const char *ACCEPTED_TEXT = \"{qt}\";\nstatic const char *STRICT_TEXT = \"{stt}\";\nstatic const double ACCEPTED[][2] = {quality};\nstatic const int N_ACCEPTED = {nq};\nstatic const double STRICT[][2] = {strict};\nstatic const int N_STRICT = {ns};\nstatic const char LAYOUT[4] = {{{layout}}};\n/* Every reading of the layout the texts allow, the spec value's first (READINGS names each). */\nstatic const char LAYOUTS[][4] = {{{layouts}}};\nstatic const char *READINGS[] = {{{readings}}};\nstatic const int N_LAYOUTS = {n_layouts};\n\n",
-        q = Profile::loosest(),
-        st = Profile::strictest(),
-        test = s.test(),
-        qt = show(Profile::loosest()).replace('"', "'"),
-        stt = show(Profile::strictest()).replace('"', "'"),
-        layouts = layouts.join(", "),
-        readings = readings.join(", "),
-        n_layouts = layouts.len(),
-    )
-}
-
 /// The versions the worker tries, highest first (`gl::egl::versions`), as a C initializer.
 fn versions(api: ContextApi) -> String {
     let v: Vec<String> = shadowcheck_gl::egl::versions(api)
@@ -243,7 +188,10 @@ fn versions(api: ContextApi) -> String {
     format!("{{{}}}", v.join(", "))
 }
 
-fn context_fn(b: BackendName) -> String {
+pub(super) fn context_fn(b: BackendName, lib_dir: Option<&Path>) -> String {
+    if egl14::applies(b, lib_dir) {
+        return egl14::context_fn(b);
+    }
     let vs = versions(b.api);
     let create = match b.platform {
         Platform::Egl => {

@@ -1,6 +1,7 @@
 //! Unit tests of the C program text (no GL, no compiler).
 
 use super::*;
+use crate::repro::cexpect::cd;
 use shadowcheck_model::*;
 
 /// GL 4.6 core, 2x2 D16 (stored 0, 21845, 43690, 65535), NEAREST at the centre of texel (1,0)
@@ -46,13 +47,16 @@ fn subject() -> Subject {
         steps: ev.steps,
         explain: String::new(),
         fixture: "unit.json".into(),
+        lib_dir: None,
     }
 }
 
 fn gl(s: &Subject) -> BackendName {
     match s.backend {
         super::super::Backend::Gl(b) => b,
-        super::super::Backend::Vk(_) | super::super::Backend::Webgpu(_) => {
+        super::super::Backend::Vk(_)
+        | super::super::Backend::Webgpu(_)
+        | super::super::Backend::Webgl(_) => {
             panic!("a GL subject")
         }
     }

@@ -15,7 +15,11 @@ use std::process::Command;
 /// `package version` lines for the packages the reproducer needs, from dpkg-query; a line saying
 /// why where dpkg-query is missing or a package is not installed.
 pub fn package_versions(s: &Subject) -> Vec<String> {
-    let (dev, run) = packages(s);
+    versions_of(&packages(s))
+}
+
+/// [`package_versions`] of the (build, run) package lists.
+pub fn versions_of((dev, run): &(String, String)) -> Vec<String> {
     let names: Vec<&str> = run
         .split_whitespace()
         .chain(dev.split_whitespace())
@@ -109,6 +113,7 @@ pub fn render(s: &Subject, run: &RunOutput, judged: &Judged, versions: &[String]
         Backend::Gl(_) => "context",
         Backend::Vk(_) => "Vulkan device",
         Backend::Webgpu(_) => "WebGPU adapter",
+        Backend::Webgl(_) => "WebGL 2.0 context",
     };
     let _ = writeln!(
         o,

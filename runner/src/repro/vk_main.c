@@ -175,9 +175,14 @@ static void make_device(void) {
     if (NEED_MIRROR_CLAMP_TO_EDGE && !mirror) lacks("samplerMirrorClampToEdge");
     if (NEED_CUSTOM_BORDER_COLOR && !custom) lacks("VK_EXT_custom_border_color");
     if (fabsf(SAMPLER.mipLodBias) > props.limits.maxSamplerLodBias) lacks("a maxSamplerLodBias this large");
-    for (int i = 0; i < 2; i++)
-        if (TEXEL_OFFSET[i] < props.limits.minTexelOffset || (TEXEL_OFFSET[i] > 0 && (uint32_t)TEXEL_OFFSET[i] > props.limits.maxTexelOffset))
-            lacks("this texel offset within minTexelOffset..maxTexelOffset");
+    if (NEED_GATHER_EXTENDED && !f2.features.shaderImageGatherExtended) lacks("shaderImageGatherExtended (textureGatherOffsets)");
+    const int32_t min_offset = IS_GATHER ? props.limits.minTexelGatherOffset : props.limits.minTexelOffset;
+    const uint32_t max_offset = IS_GATHER ? props.limits.maxTexelGatherOffset : props.limits.maxTexelOffset;
+    for (unsigned k = 0; k < sizeof TEXEL_OFFSETS / sizeof TEXEL_OFFSETS[0]; k++)
+        for (int i = 0; i < 2; i++)
+            if (TEXEL_OFFSETS[k][i] < min_offset || (TEXEL_OFFSETS[k][i] > 0 && (uint32_t)TEXEL_OFFSETS[k][i] > max_offset))
+                lacks(IS_GATHER ? "this gather offset within minTexelGatherOffset..maxTexelGatherOffset"
+                                : "this texel offset within minTexelOffset..maxTexelOffset");
     VkFormatProperties fp;
     vkGetPhysicalDeviceFormatProperties(physical, IMAGE.format, &fp);
     VkFormatFeatureFlags f = fp.optimalTilingFeatures;

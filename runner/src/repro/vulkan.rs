@@ -25,7 +25,7 @@ use ash::vk;
 use shadowcheck_model::{ApiPath, Format};
 use shadowcheck_plan::layout::CORNERS;
 use shadowcheck_plan::shaders::{self, PARAM_ATTRIBS, PARAM_FLOATS};
-use shadowcheck_plan::{paths, LookupForm, Plan, SamplerKind};
+use shadowcheck_plan::{paths, GatherCall, LookupForm, Plan, SamplerKind};
 use shadowcheck_vk::device::{vk_format, FormatInfo, Support};
 use shadowcheck_vk::sampler::{self, SamplerState};
 use shadowcheck_vk::texture::{self, Shape};
@@ -145,9 +145,6 @@ fn full_support() -> Support {
 
 /// The program text and shaders, or why the worker would not draw this case (it Skips it).
 pub fn program(s: &Subject) -> Result<Program, String> {
-    if s.case.lookup.gather.is_some() {
-        return Err("shadowcheck repro does not write textureGather programs yet (its C check reads one r, a gather returns four comparisons): write one by hand from the case's JSON (`shadowcheck explain`)".into());
-    }
     if s.api != ApiPath::Vulkan {
         return Err(format!(
             "a Vulkan backend runs the `vk` path, not `{}`",
@@ -196,7 +193,9 @@ pub fn program(s: &Subject) -> Result<Program, String> {
 fn driver(s: &Subject) -> Driver {
     match s.backend {
         super::Backend::Vk(d) => d,
-        super::Backend::Gl(_) | super::Backend::Webgpu(_) => Driver::Native,
+        super::Backend::Gl(_) | super::Backend::Webgpu(_) | super::Backend::Webgl(_) => {
+            Driver::Native
+        }
     }
 }
 
@@ -291,16 +290,25 @@ fn image_and_sampler(
             v.join(", ")
         );
     }
+    let mut offsets = vec![plan.key.offset];
+    if let Some(GatherCall::Offsets(o)) = plan.key.gather {
+        offsets.extend(o);
+    }
+    let offsets: Vec<String> = offsets
+        .iter()
+        .map(|o| format!("{{{}, {}}}", o[0], o[1]))
+        .collect();
     let _ = write!(
         out,
-        "\n/* What the device must have for this test (checked at run time; without it the harness\n * answers the test Skip). */\n#define NEED_IMAGE_CUBE_ARRAY {}\n#define NEED_MIRROR_CLAMP_TO_EDGE {}\n#define NEED_CUSTOM_BORDER_COLOR {}\n/* LINEAR filtering without comparison needs SAMPLED_IMAGE_FILTER_LINEAR (\"Texel Filtering\"). */\n#define NEED_FILTER_LINEAR {}\n#define NEED_DEPTH_COMPARISON {}\n/* The lookup's texel offset (GLSL `*Offset`), within minTexelOffset..maxTexelOffset. */\nstatic const int TEXEL_OFFSET[2] = {{{}, {}}};\n\n",
+        "\n/* What the device must have for this test (checked at run time; without it the harness\n * answers the test Skip). */\n#define NEED_IMAGE_CUBE_ARRAY {}\n#define NEED_MIRROR_CLAMP_TO_EDGE {}\n#define NEED_CUSTOM_BORDER_COLOR {}\n/* LINEAR filtering without comparison needs SAMPLED_IMAGE_FILTER_LINEAR (\"Texel Filtering\"). */\n#define NEED_FILTER_LINEAR {}\n#define NEED_DEPTH_COMPARISON {}\n/* textureGatherOffsets' four offsets need shaderImageGatherExtended. */\n#define NEED_GATHER_EXTENDED {}\n/* The lookup's texel offsets (GLSL `*Offset`, and textureGatherOffsets' four), within\n * minTexelOffset..maxTexelOffset (a gather's: minTexelGatherOffset..maxTexelGatherOffset). */\n#define IS_GATHER {}\nstatic const int TEXEL_OFFSETS[][2] = {{{}}};\n\n",
         flag(shape.view_type == vk::ImageViewType::CUBE_ARRAY),
         flag(st.address.contains(&vk::SamplerAddressMode::MIRROR_CLAMP_TO_EDGE)),
         flag(st.custom_border.is_some()),
         flag(kind != SamplerKind::Shadow && linear),
         flag(kind == SamplerKind::Shadow),
-        plan.key.offset[0],
-        plan.key.offset[1],
+        flag(matches!(plan.key.gather, Some(GatherCall::Offsets(_)))),
+        flag(plan.key.gather.is_some()),
+        offsets.join(", "),
     );
     out
 }

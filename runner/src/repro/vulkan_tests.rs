@@ -54,6 +54,7 @@ fn subject(format: Format, wrap: Wrap, border: [f32; 4]) -> Subject {
         steps: ev.steps,
         explain: String::new(),
         fixture: "unit.json".into(),
+        lib_dir: None,
     }
 }
 

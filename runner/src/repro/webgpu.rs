@@ -52,7 +52,25 @@ pub fn packages() -> (String, String) {
 /// console logged to a file (`--enable-logging=stderr`) until the page's last line (or 60 s);
 /// prints the page's lines and exits with its verdict.
 pub fn run_script(s: &Subject, v: Variant) -> String {
-    let flags = v.launch().flags.join(" ");
+    browser_script(&s.test(), &s.backend.to_string(), &v.launch().flags, &[])
+}
+
+/// The run script of a page (the WebGPU and the WebGL one): headless Chromium with `flags` and
+/// the environment `env` on repro.html, its console logged to a file until the page's last line
+/// (or 60 s); prints the page's lines and exits with its verdict.
+pub(super) fn browser_script(
+    test: &str,
+    backend: &str,
+    flags: &[String],
+    env: &[(String, String)],
+) -> String {
+    let flags = flags.join(" ");
+    let env = if env.is_empty() {
+        String::new()
+    } else {
+        let words: Vec<String> = env.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        format!("env {} ", words.join(" "))
+    };
     format!(
         r#"#!/bin/sh
 # shadowcheck reproducer for {test} on {backend}: runs {REPRO_HTML} in headless Chromium
@@ -64,7 +82,8 @@ browser=${{SHADOWCHECK_CHROMIUM:-chromium}}
 command -v "$browser" >/dev/null 2>&1 || {{ echo "chromium not found: apt-get install -y chromium" >&2; exit 2; }}
 profile=$(mktemp -d)
 log="$profile.log"
-"$browser" --headless --no-sandbox {flags} --no-first-run --disable-background-networking   --disable-component-update --disable-sync --user-data-dir="$profile" --enable-logging=stderr --v=0   "file://$(pwd)/{REPRO_HTML}" 2>"$log" &
+: >"$log"
+{env}"$browser" --headless --no-sandbox {flags} --no-first-run --disable-background-networking   --disable-component-update --disable-sync --user-data-dir="$profile" --enable-logging=stderr --v=0   "file://$(pwd)/{REPRO_HTML}" 2>"$log" &
 pid=$!
 i=0
 while [ $i -lt 600 ] && ! grep -q '"{END}"' "$log" && kill -0 $pid 2>/dev/null; do
@@ -73,7 +92,7 @@ while [ $i -lt 600 ] && ! grep -q '"{END}"' "$log" && kill -0 $pid 2>/dev/null; 
 done
 kill $pid 2>/dev/null
 wait $pid 2>/dev/null
-text=$(sed -n 's/^.*:INFO:CONSOLE[^]]*\] "\(.*\)", source: .*$/\1/p' "$log" | grep -v '^{END}$')
+text=$(sed -n 's/^.*:INFO:CONSOLE[^]]*\] "\(.*\)", source: .*$/\1/p' "$log" | grep -v -e '^{END}$' -e '^\[\.WebGL-')
 rm -rf "$profile" "$log"
 printf '%s\n' "$text"
 case "$text" in
@@ -82,14 +101,12 @@ case "$text" in
 *) exit 2 ;;
 esac
 "#,
-        test = s.test(),
-        backend = s.backend,
         END = END,
     )
 }
 
 /// The page's last console line.
-const END: &str = "shadowcheck-repro: end";
+pub(super) const END: &str = "shadowcheck-repro: end";
 
 /// Writes repro.html and build.sh into `dir` (created).
 pub fn write_sources(s: &Subject, v: Variant, dir: &Path) -> Result<(), ReproError> {
@@ -102,12 +119,12 @@ pub fn write_sources(s: &Subject, v: Variant, dir: &Path) -> Result<(), ReproErr
 }
 
 /// A JavaScript string literal.
-fn js(s: &str) -> String {
+pub(super) fn js(s: &str) -> String {
     serde_json::to_string(s).unwrap_or_else(|_| "\"\"".into())
 }
 
 /// An f32 as JavaScript reads it back to the same f32 (shortest round-trip text).
-fn jf(v: f32) -> String {
+pub(super) fn jf(v: f32) -> String {
     if v.is_finite() {
         format!("{v:?}")
     } else if v.is_nan() {
@@ -133,7 +150,7 @@ fn layout_chars(l: &[Channel; 4]) -> String {
 }
 
 /// The expectation as JavaScript constants (the C programs' `csource::expectation`).
-fn expectation(s: &Subject) -> String {
+pub(super) fn expectation(s: &Subject) -> String {
     let e = &s.expect;
     let set = |p: Profile| -> String {
         let v: Vec<String> = e
@@ -258,14 +275,18 @@ pub fn page(s: &Subject, v: Variant) -> Result<String, String> {
     ))
 }
 
-fn html_escape(s: &str) -> String {
+pub(super) fn html_escape(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
 }
 
-/// Adapter, device, texture, lookup, read-back, verdict: the fixed part of the page.
-const MAIN: &str = include_str!("webgpu_main.js");
+/// Adapter, device, texture, lookup, read-back, verdict: the fixed part of the page (the verdict
+/// and the printing shared with the WebGL page, `page_verdict.js`, first).
+const MAIN: &str = concat!(
+    include_str!("page_verdict.js"),
+    include_str!("webgpu_main.js")
+);
 
 #[cfg(test)]
 mod tests {
@@ -287,6 +308,7 @@ mod tests {
             steps: vec![],
             explain: String::new(),
             fixture: "f.json".into(),
+            lib_dir: None,
         }
     }
 

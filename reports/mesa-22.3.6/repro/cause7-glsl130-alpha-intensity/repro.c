@@ -29,7 +29,9 @@
 /* Expected, from shadowcheck's oracle (`shadowcheck explain` shows the derivation). The accepted
  * set is what a conforming implementation may return for r (the `quality` tier: outside it a "shall"
  * is violated); inside the `strict` tier too is a plain pass. Layout per channel: 'r' the result,
- * '0'/'1' exactly that, 'z' r or 0, '-' not produced by this path. */
+ * '0'/'1' exactly that, 'z' r or 0, '-' not produced by this path, 'A'..'D' gather value 0..3 (a
+ * textureGather's four comparisons, each judged by its own set in GATHER_ACCEPTED). */
+struct set { const double (*v)[2]; int n; };
 static const char *TEST = "gl46/2d/d24/nearest/none/dtm/dtm=alpha/texel1/ref=0.3@glsl130";
 static const char *SPEC_VALUE = "r = 0.4";
 static const char *ACCEPTED_TEXT = "[0.3999694585800171, 0.4000305235385895]";
@@ -38,7 +40,23 @@ static const double ACCEPTED[][2] = {{0.3999694585800171, 0.4000305235385895}};
 static const int N_ACCEPTED = 1;
 static const double STRICT[][2] = {{0.3999999761581421, 0.4000000059604645}};
 static const int N_STRICT = 1;
+static const double GATHER_ACCEPTED_0[][2] = {{1.0, 0.0}};
+static const double GATHER_ACCEPTED_1[][2] = {{1.0, 0.0}};
+static const double GATHER_ACCEPTED_2[][2] = {{1.0, 0.0}};
+static const double GATHER_ACCEPTED_3[][2] = {{1.0, 0.0}};
+static const struct set GATHER_ACCEPTED[4] = {{GATHER_ACCEPTED_0, 0}, {GATHER_ACCEPTED_1, 0}, {GATHER_ACCEPTED_2, 0}, {GATHER_ACCEPTED_3, 0}};
+static const char *GATHER_ACCEPTED_TEXT = NULL;
+static const double GATHER_STRICT_0[][2] = {{1.0, 0.0}};
+static const double GATHER_STRICT_1[][2] = {{1.0, 0.0}};
+static const double GATHER_STRICT_2[][2] = {{1.0, 0.0}};
+static const double GATHER_STRICT_3[][2] = {{1.0, 0.0}};
+static const struct set GATHER_STRICT[4] = {{GATHER_STRICT_0, 0}, {GATHER_STRICT_1, 0}, {GATHER_STRICT_2, 0}, {GATHER_STRICT_3, 0}};
+static const char *GATHER_STRICT_TEXT = NULL;
 static const char LAYOUT[4] = {'0', '0', '0', 'r'};
+/* Every reading of the layout the texts allow, the spec value's first (READINGS names each). */
+static const char LAYOUTS[][4] = {{'0', '0', '0', 'r'}, {'r', '0', '0', '1'}};
+static const char *READINGS[] = {"the spec value's", "compat-depth-cb"};
+static const int N_LAYOUTS = 2;
 
 static void die(const char *what) {
     fprintf(stderr, "setup failed: %s\n", what);
@@ -95,7 +113,7 @@ static void make_texture(void) {
 
 /* The lookup: glsl130 path, Float sampler, explicit LOD. P = (0.75f, 0.25f, 0.0f, 1.0f), x (LOD / bias / compare value) = 0.0f,
  * dx = (0.5f, 0.0f, 0.0f, 0.0f), dy = (0.0f, 0.5f, 0.0f, 0.0f). */
-/* The shaders shadowcheck's worker compiles for this lookup (gl/src/shaders.rs):
+/* The shaders shadowcheck's worker compiles for this lookup (plan/src/shaders/mod.rs):
  * {minimum GLSL version x 100, vertex, fragment}. */
 static const struct { int min_glsl; const char *vs, *fs; } PROGRAMS[] = {
     {0,
@@ -111,6 +129,7 @@ static const struct { int min_glsl; const char *vs, *fs; } PROGRAMS[] = {
      "uniform vec2 u_c;\n"
      "out vec4 o;\n"
      "void main() {\n"
+     "  if (u_c.x < 0.0) discard;\n"
      "  vec4 p = u_p;\n"
      "  o = vec4(textureLod(u_tex, p.xy, u_x));\n"
      "}\n"},
@@ -153,23 +172,61 @@ static void draw(int glsl) {
     check("GLSL draw");
 }
 
+/* The verdict of the observed RGBA against the expectation's constants (TEST, SPEC_VALUE, ACCEPTED,
+ * STRICT, GATHER_*, LAYOUTS, ...), shared by the GL and the Vulkan reproducers: prints expected and
+ * observed and returns the exit status (0 inside the accepted set, 1 outside). */
 static int in_set(double v, const double set[][2], int n) {
     for (int i = 0; i < n; i++)
         if (v >= set[i][0] && v <= set[i][1]) return 1;
     return 0;
 }
 
-/* Does channel value v meet LAYOUT's rule for channel c under the given set? */
-static int channel_ok(char c, double v, const double set[][2], int n) {
+/* Does channel value v meet LAYOUT's rule for channel c under the given set (a gather value
+ * 'A'..'D': under its own set of `gather`)? */
+static int channel_ok(char c, double v, const double set[][2], int n, const struct set gather[4]) {
     switch (c) {
     case 'r': return in_set(v, set, n);
     case 'z': return v == 0.0 || in_set(v, set, n);
     case '0': return v == 0.0;
     case '1': return v == 1.0;
+    case 'A': case 'B': case 'C': case 'D': return in_set(v, gather[c - 'A'].v, gather[c - 'A'].n);
     default: return 1;
     }
 }
 
+static int judge(const float px[4]) {
+    const char *names = "rgba";
+    /* Accepted when one reading of the layout accepts every channel (each tier on its own). */
+    int strict_ok = 0, ok = 0;
+    for (int k = 0; k < N_LAYOUTS; k++) {
+        int a = 1, s = 1;
+        for (int i = 0; i < 4; i++) {
+            a &= channel_ok(LAYOUTS[k][i], px[i], ACCEPTED, N_ACCEPTED, GATHER_ACCEPTED);
+            s &= channel_ok(LAYOUTS[k][i], px[i], STRICT, N_STRICT, GATHER_STRICT);
+        }
+        ok |= a;
+        strict_ok |= s;
+    }
+    printf("test:      %s\n", TEST);
+    printf("expected:  %s (spec value); accepted: r in %s (strict: %s)\n", SPEC_VALUE, ACCEPTED_TEXT, STRICT_TEXT);
+    if (GATHER_ACCEPTED_TEXT)
+        printf("gather:    values 0..3 accepted in %s (strict: %s)\n", GATHER_ACCEPTED_TEXT, GATHER_STRICT_TEXT);
+    printf("layout:    (%c, %c, %c, %c)  ('r' the result, '0'/'1' exactly, 'z' r or 0, '-' unused, 'A'..'D' gather "
+           "value 0..3)\n",
+           LAYOUT[0], LAYOUT[1], LAYOUT[2], LAYOUT[3]);
+    for (int k = 1; k < N_LAYOUTS; k++)
+        printf("           (%c, %c, %c, %c)  also accepted: the other reading %s\n", LAYOUTS[k][0], LAYOUTS[k][1],
+               LAYOUTS[k][2], LAYOUTS[k][3], READINGS[k]);
+    printf("observed:  (%.9g, %.9g, %.9g, %.9g)\n", px[0], px[1], px[2], px[3]);
+    for (int k = 0; k < N_LAYOUTS && !ok; k++)
+        for (int i = 0; i < 4; i++)
+            if (!channel_ok(LAYOUTS[k][i], px[i], ACCEPTED, N_ACCEPTED, GATHER_ACCEPTED))
+                printf("           %c = %.9g is outside what channel '%c' allows (%s reading)\n", names[i], px[i],
+                       LAYOUTS[k][i], READINGS[k]);
+    printf("verdict:   %s\n", !ok ? "FAIL (outside the accepted set: a \"shall\" is violated)"
+                          : strict_ok ? "pass" : "warn (inside the accepted set, outside the strict tier)");
+    return ok ? 0 : 1;
+}
 int main(void) {
     make_context();
     const char *glsl_text = (const char *)glGetString(GL_SHADING_LANGUAGE_VERSION);
@@ -217,21 +274,5 @@ int main(void) {
     glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, px);
     check("glReadPixels");
 
-    const char *names = "rgba";
-    int strict_ok = 1, ok = 1;
-    for (int i = 0; i < 4; i++) {
-        ok &= channel_ok(LAYOUT[i], px[i], ACCEPTED, N_ACCEPTED);
-        strict_ok &= channel_ok(LAYOUT[i], px[i], STRICT, N_STRICT);
-    }
-    printf("test:      %s\n", TEST);
-    printf("expected:  %s (spec value); accepted: r in %s (strict: %s)\n", SPEC_VALUE, ACCEPTED_TEXT, STRICT_TEXT);
-    printf("layout:    (%c, %c, %c, %c)  ('r' the result, '0'/'1' exactly, 'z' r or 0, '-' unused)\n", LAYOUT[0],
-           LAYOUT[1], LAYOUT[2], LAYOUT[3]);
-    printf("observed:  (%.9g, %.9g, %.9g, %.9g)\n", px[0], px[1], px[2], px[3]);
-    for (int i = 0; i < 4; i++)
-        if (!channel_ok(LAYOUT[i], px[i], ACCEPTED, N_ACCEPTED))
-            printf("           %c = %.9g is outside what channel '%c' allows\n", names[i], px[i], LAYOUT[i]);
-    printf("verdict:   %s\n", !ok ? "FAIL (outside the accepted set: a \"shall\" is violated)"
-                          : strict_ok ? "pass" : "warn (inside the accepted set, outside the strict tier)");
-    return ok ? 0 : 1;
+    return judge(px);
 }

@@ -1,0 +1,28 @@
+#!/bin/sh
+# shadowcheck reproducer for gles32/2darray/d24/linear/lequal/layer/layer=0.5/ref=0.3/layers=0.2_0.8_0.4@es300 on webgl:chromium-gles: runs repro.html in headless Chromium
+# with the backend's flags and prints what the page wrote (its console lines). Debian 12:
+# apt-get install -y chromium
+# Exit 1: the observation is outside the accepted set; 0: inside; 2: setup failed.
+cd "$(dirname "$0")" || exit 2
+browser=${SHADOWCHECK_CHROMIUM:-chromium}
+command -v "$browser" >/dev/null 2>&1 || { echo "chromium not found: apt-get install -y chromium" >&2; exit 2; }
+profile=$(mktemp -d)
+log="$profile.log"
+: >"$log"
+env LIBGL_ALWAYS_SOFTWARE=1 GALLIUM_DRIVER=llvmpipe EGL_PLATFORM=surfaceless "$browser" --headless --no-sandbox --use-angle=gles-egl --ignore-gpu-blocklist --no-first-run --disable-background-networking   --disable-component-update --disable-sync --user-data-dir="$profile" --enable-logging=stderr --v=0   "file://$(pwd)/repro.html" 2>"$log" &
+pid=$!
+i=0
+while [ $i -lt 600 ] && ! grep -q '"shadowcheck-repro: end"' "$log" && kill -0 $pid 2>/dev/null; do
+  sleep 0.1
+  i=$((i + 1))
+done
+kill $pid 2>/dev/null
+wait $pid 2>/dev/null
+text=$(sed -n 's/^.*:INFO:CONSOLE[^]]*\] "\(.*\)", source: .*$/\1/p' "$log" | grep -v -e '^shadowcheck-repro: end$' -e '^\[\.WebGL-')
+rm -rf "$profile" "$log"
+printf '%s\n' "$text"
+case "$text" in
+*"verdict:   FAIL"*) exit 1 ;;
+*"verdict:"*) exit 0 ;;
+*) exit 2 ;;
+esac
