@@ -279,6 +279,38 @@ fn gather_offsets_pass_and_a_wrong_component_set_fails() {
     );
 }
 
+/// Delivered values (`lookup.delivery`): a variable textureGatherOffset offset reaches the program
+/// as the worker's uniform `u_o`, and values that differ between the fragments of the pixel quad
+/// are drawn over the worker's 2x2 quad; both reproduce the harness's RGBA.
+#[test]
+fn delivered_gather_offset_and_per_fragment_values_reproduce() {
+    let cases = [
+        (
+            "gl46/2d/d24/nearest/lequal/gather/delivery=uniform/offset=1_0/wrap=repeat/ref=0.5@core",
+            "glUniform2i(glGetUniformLocation(p, \"u_o\"), 1, 0);",
+        ),
+        (
+            "gl46/2d/d24/linear/lequal/gather/delivery=per_fragment/uv=1.75_2.25/ref=0.375@core",
+            "glViewport(0, 0, 2, 2);",
+        ),
+    ];
+    for (i, (test, call)) in cases.into_iter().enumerate() {
+        let Some(b) = both(
+            "egl:llvmpipe:core",
+            test,
+            &format!("repro-delivery-{i}"),
+            &["--allow-pass"],
+        ) else {
+            return;
+        };
+        assert_eq!(b.harness, Outcome::Pass, "{test}");
+        assert_eq!((b.repro_cmd_exit, b.repro_exit), (0, 0), "{test}");
+        assert!(same_rgba(b.harness_rgba, b.repro_rgba), "{test}");
+        let c = std::fs::read_to_string(b.dir.join("repro.c")).unwrap();
+        assert!(c.contains(call), "{test}: no `{call}` in repro.c");
+    }
+}
+
 /// SwiftShader's own GLES (an EGL 1.4 library: pbuffer contexts only) clamps no reference before
 /// an EQUAL comparison (reports/swiftshader-4.0.0.3): the program opens the library as the worker
 /// does, through a pbuffer, and reproduces the harness's observation.

@@ -38,7 +38,12 @@ fn check(backend: &str, test: &str, want: Outcome) -> Option<PathBuf> {
     }
     let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
     let fixtures = fixture_file(&id);
-    let out = tmpdir(&format!("webgl-repro-{}", backend.replace(':', "-")));
+    // One directory per (backend, test): the tests run in parallel, some on the same backend.
+    let slug: String = format!("{backend}-{test}")
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '-' })
+        .collect();
+    let out = tmpdir(&format!("webgl-repro-{slug}"));
     let run_dir = out.join("run");
     let r = run(&[
         "--backend",
@@ -229,4 +234,54 @@ fn a_webgl_state_case_reproduces_and_a_wrong_expectation_fails() {
     let (code, text) = sh(&dir);
     assert_eq!(code, Some(1), "{text}");
     assert!(text.contains("verdict:   FAIL"), "{text}");
+}
+
+/// A lookup whose values differ between the fragments of the pixel quad (`per_fragment` delivery)
+/// and a colour texture of four components: the page draws the worker's 2x2 quad and uploads the
+/// worker's texels, and prints the harness's RGBA.
+#[test]
+fn a_per_fragment_lookup_and_a_colour_texture_reproduce() {
+    let Some(dir) = check(
+        "webgl:chromium-gles",
+        "gles32/2d/d24/lml/lequal/mip/delivery=per_fragment/lod=0.5/ref=0.3/levels=0.2_0.8_0.4@es300",
+        Outcome::Pass,
+    ) else {
+        return;
+    };
+    let page = std::fs::read_to_string(dir.join("repro.html")).unwrap();
+    assert!(page.contains("viewport: [0, 0, 2, 2]"), "{page}");
+    check(
+        "webgl:chromium",
+        "gles32/2d/rgba8/linear/lequal/formats/bypass/a=0.25_0.5/ref=0.5/dt=0.2_0.4_0.6_0.8@es300",
+        Outcome::Fail,
+    );
+}
+
+/// A case the WebGL worker does not draw (a shadow gather: GLSL ES 3.00 has none) gets no page:
+/// `repro` says why, as the worker's Skip does, and writes nothing that would not run.
+#[test]
+fn a_case_the_webgl_worker_skips_gets_no_page() {
+    let backend = "webgl:chromium";
+    if !installed_or_skip(backend) {
+        return;
+    }
+    let id = "gles32/2d/d24/linear/lequal/gather/delivery=per_fragment/uv=1.75_2.25/ref=0.375";
+    let out = tmpdir("webgl-repro-skip");
+    let rc = Run::of(
+        bin()
+            .args(["repro", "-b", backend, "--case", &format!("{id}@es300")])
+            .arg("--fixtures")
+            .arg(fixture_file(id))
+            .arg("-o")
+            .arg(out.join("repro"))
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(rc.code, 96, "{}{}", rc.stdout, rc.stderr);
+    assert!(
+        rc.stderr.contains("does not draw this case") && rc.stderr.contains("gather"),
+        "{}",
+        rc.stderr
+    );
+    assert!(!out.join("repro").join("repro.html").exists());
 }

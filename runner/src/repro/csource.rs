@@ -503,13 +503,40 @@ fn glsl_draw(b: BackendName, plan: &Plan, centre: [f32; 2]) -> String {
         ""
     };
     format!(
-        "/* The shaders shadowcheck's worker compiles for this lookup (plan/src/shaders/mod.rs){uint}:\n * {{minimum GLSL version x 100, vertex, fragment}}. */\nstatic const struct {{ int min_glsl; const char *vs, *fs; }} PROGRAMS[] = {{\n{table}}};\n\nstatic GLuint shader(GLenum type, const char *src) {{\n    GLuint sh = glCreateShader(type);\n    glShaderSource(sh, 1, &src, NULL);\n    glCompileShader(sh);\n    GLint ok = 0;\n    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);\n    if (!ok) {{\n        char log[2048];\n        glGetShaderInfoLog(sh, sizeof log, NULL, log);\n        fprintf(stderr, \"shader compile failed: %s\\n%s\\n\", log, src);\n        exit(2);\n    }}\n    return sh;\n}}\n\nstatic void draw(int glsl) {{\n    unsigned v = 0;\n    while (v + 1 < sizeof PROGRAMS / sizeof PROGRAMS[0] && PROGRAMS[v].min_glsl > glsl) v++;\n    GLuint p = glCreateProgram();\n    glAttachShader(p, shader(GL_VERTEX_SHADER, PROGRAMS[v].vs));\n    glAttachShader(p, shader(GL_FRAGMENT_SHADER, PROGRAMS[v].fs));\n    glBindAttribLocation(p, 0, \"a_pos\");\n    glLinkProgram(p);\n    GLint ok = 0;\n    glGetProgramiv(p, GL_LINK_STATUS, &ok);\n    if (!ok) die(\"program link\");\n    glUseProgram(p);\n    glUniform1i(glGetUniformLocation(p, \"u_tex\"), 0);\n    glUniform4f(glGetUniformLocation(p, \"u_p\"), {p});\n    glUniform1f(glGetUniformLocation(p, \"u_x\"), {x});\n    glUniform4f(glGetUniformLocation(p, \"u_dx\"), {dx});\n    glUniform4f(glGetUniformLocation(p, \"u_dy\"), {dy});\n    glUniform2f(glGetUniformLocation(p, \"u_c\"), {cx}, {cy});\n    glDrawArrays(GL_TRIANGLES, 0, 3);\n    check(\"GLSL draw\");\n}}\n\n",
+        "/* The shaders shadowcheck's worker compiles for this lookup (plan/src/shaders/mod.rs){uint}:\n * {{minimum GLSL version x 100, vertex, fragment}}. */\nstatic const struct {{ int min_glsl; const char *vs, *fs; }} PROGRAMS[] = {{\n{table}}};\n\nstatic GLuint shader(GLenum type, const char *src) {{\n    GLuint sh = glCreateShader(type);\n    glShaderSource(sh, 1, &src, NULL);\n    glCompileShader(sh);\n    GLint ok = 0;\n    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);\n    if (!ok) {{\n        char log[2048];\n        glGetShaderInfoLog(sh, sizeof log, NULL, log);\n        fprintf(stderr, \"shader compile failed: %s\\n%s\\n\", log, src);\n        exit(2);\n    }}\n    return sh;\n}}\n\nstatic void draw(int glsl) {{\n    unsigned v = 0;\n    while (v + 1 < sizeof PROGRAMS / sizeof PROGRAMS[0] && PROGRAMS[v].min_glsl > glsl) v++;\n    GLuint p = glCreateProgram();\n    glAttachShader(p, shader(GL_VERTEX_SHADER, PROGRAMS[v].vs));\n    glAttachShader(p, shader(GL_FRAGMENT_SHADER, PROGRAMS[v].fs));\n    glBindAttribLocation(p, 0, \"a_pos\");\n    glLinkProgram(p);\n    GLint ok = 0;\n    glGetProgramiv(p, GL_LINK_STATUS, &ok);\n    if (!ok) die(\"program link\");\n    glUseProgram(p);\n    glUniform1i(glGetUniformLocation(p, \"u_tex\"), 0);\n    glUniform4f(glGetUniformLocation(p, \"u_p\"), {p});\n    glUniform1f(glGetUniformLocation(p, \"u_x\"), {x});\n    glUniform4f(glGetUniformLocation(p, \"u_dx\"), {dx});\n    glUniform4f(glGetUniformLocation(p, \"u_dy\"), {dy});\n    glUniform2f(glGetUniformLocation(p, \"u_c\"), {cx}, {cy});\n{offset}{viewport}    glDrawArrays(GL_TRIANGLES, 0, 3);\n    check(\"GLSL draw\");\n}}\n\n",
         p = vec4(plan.p),
         x = cf(plan.x),
         dx = vec4(plan.dx),
         dy = vec4(plan.dy),
         cx = cf(centre[0]),
         cy = cf(centre[1]),
+        offset = delivered_offset(plan),
+        viewport = delivered_viewport(plan),
+    )
+}
+
+/// The uniform `u_o` of a variable `textureGatherOffset` offset (`delivery` other than literal),
+/// set as the GL worker sets it; nothing for every other lookup.
+fn delivered_offset(plan: &Plan) -> String {
+    if plan.key.gather != Some(paths::GatherCall::Variable) {
+        return String::new();
+    }
+    format!(
+        "    /* The gather offset, delivered as a uniform (GLSL 4.60 §8.9.4: \"the offset can be variable (non constant)\"). */\n    glUniform2i(glGetUniformLocation(p, \"u_o\"), {}, {});\n",
+        plan.o[0], plan.o[1]
+    )
+}
+
+/// The viewport of the draw where it is not `main`'s one pixel: a `per_fragment` lookup covers the
+/// 2x2 pixel quad whose lower-left pixel is read (`shaders::single_draw_viewport`), the other three
+/// fragments doing their lookups with other values and then being discarded.
+fn delivered_viewport(plan: &Plan) -> String {
+    let [x, y, w, h] = shaders::single_draw_viewport(&plan.key, (0, 0));
+    if [w, h] == [1, 1] {
+        return String::new();
+    }
+    format!(
+        "    /* Values that differ between the fragments of the pixel quad: the draw covers it. */\n    glViewport({x}, {y}, {w}, {h});\n"
     )
 }
 

@@ -109,7 +109,9 @@ function main() {
   gl.uniform4fv(u("u_dx"), LOOKUP.dx);
   gl.uniform4fv(u("u_dy"), LOOKUP.dy);
   gl.uniform2f(u("u_c"), 0.5, 0.5);
-  gl.viewport(0, 0, 1, 1);
+  // One pixel, or the 2x2 pixel quad whose lower-left pixel is read where the values differ
+  // between the fragments of the quad (the other three are discarded after their lookups).
+  gl.viewport(LOOKUP.viewport[0], LOOKUP.viewport[1], LOOKUP.viewport[2], LOOKUP.viewport[3]);
   gl.drawArrays(gl.TRIANGLES, 0, 3);
   check("drawing");
   const px = new Float32Array(4);
