@@ -9,7 +9,7 @@
 # reproducer webgl2-compare/ is not touched.
 set -e
 S=${SHADOWCHECK:-target/release/shadowcheck}
-D=reports/webgl-chromium-156.0.8078.79/repro
+D=reports/webgl-chromium-156.0.8078.108/repro
 gen() { # dir backend test
   "$S" repro --backend "$2" --case "$3" -o "$D/$1"
 }

@@ -10,7 +10,7 @@
 #                            1.3.230 (llvmpipe (LLVM 15.0.6 256 bits) (0x00000000)), llvmpipe)"
 # Then the drivers under them on the same fixtures (egl:llvmpipe:es3, vk:lavapipe, vk:swiftshader)
 # and `shadowcheck attribute` over all of it: ATTRIBUTION.md.
-# Run from the repository root:  sh reports/webgl-chromium-156.0.8078.79/run.sh [OUTROOT]
+# Run from the repository root:  sh reports/webgl-chromium-156.0.8078.108/run.sh [OUTROOT]
 #
 # Binary: the commit that last changed this folder. Fixtures: the committed default set; only the
 # GLES 3.2 cases (es300 path) are tests of these backends, the rest are not applicable.
@@ -20,8 +20,8 @@
 # shader variant per program and sampler state; the cache is the user's, not the browser profile's).
 set -e
 cargo build --release -p shadowcheck-runner
-OUT=${1:-out/webgl-chromium-156.0.8078.79}
-HERE=reports/webgl-chromium-156.0.8078.79
+OUT=${1:-out/webgl-chromium-156.0.8078.108}
+HERE=reports/webgl-chromium-156.0.8078.108
 BACKENDS="webgl:chromium webgl:chromium-gles webgl:chromium-lavapipe"
 for b in $BACKENDS; do
   slug=$(echo "$b" | tr ':' '-')
