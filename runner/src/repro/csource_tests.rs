@@ -34,6 +34,7 @@ fn subject() -> Subject {
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     };
