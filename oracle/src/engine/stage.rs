@@ -24,17 +24,30 @@ use shadowcheck_model::{ApiPath, Case, Filter, Sampler, Stage};
 /// The contradiction's id.
 pub(super) const READING: &str = "vertex-base-texture";
 
-/// The section of the language of the case's API paths that says it.
-fn cite(case: &Case) -> &'static str {
-    match case.api.first() {
-        Some(ApiPath::Glsl120) => "GLSL 1.20 §8.7",
-        Some(ApiPath::Glsl130) => "GLSL 1.30 §8.7",
-        Some(ApiPath::Es300) if case.spec == shadowcheck_model::Spec::Gles32 => {
-            "GLSL ES 3.20 §8.9 (GLSL ES 3.00 §8.8)"
-        }
-        Some(ApiPath::Es300) => "GLSL ES 3.00 §8.8",
-        _ => "GLSL 4.60 §8.9",
+/// The section that says "as though the base level-of-detail were computed as zero" (reading A):
+/// GLSL 4.60 §8.9, GLSL ES 3.20 §8.9 (the earlier languages say only that it is not computed).
+fn cite_a(case: &Case) -> &'static str {
+    if case.spec == shadowcheck_model::Spec::Gles32 {
+        "GLSL ES 3.20 §8.9"
+    } else {
+        "GLSL 4.60 §8.9"
     }
+}
+
+/// The sections of the case's paths' languages that say "the base texture is used" (reading B).
+fn cite_b(case: &Case) -> String {
+    let mut v: Vec<&str> = case
+        .api
+        .iter()
+        .map(|a| match a {
+            ApiPath::Glsl120 => "GLSL 1.20 §8.7",
+            ApiPath::Glsl130 => "GLSL 1.30 §8.7",
+            ApiPath::Es300 => "GLSL ES 3.00 §8.8, GLSL ES 3.20 §8.9",
+            _ => "GLSL 4.60 §8.9",
+        })
+        .collect();
+    v.dedup();
+    v.join("; ")
 }
 
 /// λ_base and the shader bias the lookup gets: the case's in the fragment stage; (0, 0) in any
@@ -49,7 +62,7 @@ pub(super) fn lambda_inputs(e: &mut Eval, case: &Case) -> (f64, f64) {
             "{} stage: \"Other shaders operate as though the base level-of-detail were computed as zero\": λ_base = 0 (a fragment shader would compute {})",
             l.stage, l.lod
         ),
-        cite(case),
+        cite_a(case),
     );
     (0.0, 0.0)
 }
@@ -109,7 +122,7 @@ pub(super) fn other_picks(e: &mut Eval, rules: &Rules, case: &Case, spec: Pick) 
         format!(
             "{what}: \"If it is mipmapped and running in a non-fragment shader, then the base texture is used\": level base+0, by the magnification filter or the minification filter within a level (contradiction `{READING}`)"
         ),
-        cite(case),
+        &cite_b(case),
     );
     e.note(format!(
         "outside the fragment stage the texts give two readings: λ_base = 0 through the usual level-of-detail pipeline, or the base texture (contradiction `{READING}`)"
