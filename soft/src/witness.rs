@@ -609,7 +609,7 @@ mod tests {
         assert_eq!(r(Fault::GatherOrderRotated), [1.0, 1.0, 0.0, 0.0]);
         assert_eq!(r(Fault::GatherUsesLodLevel), [0.0; 4]); // level base, not λ's level 1
         assert_eq!(r(Fault::VariableGatherOffsetZero), [1.0, 1.0, 1.0, 0.0]);
-        assert_eq!(r(Fault::VertexLodFromDerivatives)[0], 1.0); // level 1, not λ_base 0's level 0
+        assert_eq!(r(Fault::VertexLodFromDerivatives)[0], 0.0); // λ_base 0: level 0 (the fault: level 1)
         assert_eq!(r(Fault::OffsetInBaseLevelTexels)[0], 0.0);
         assert_eq!(r(Fault::OffsetAfterWrap)[0], 0.0);
         // Swizzle, seamless enable, sampler object (GL 4.6 §15.2.1, §8.13.1, §8.17.1).

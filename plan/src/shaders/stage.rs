@@ -70,3 +70,78 @@ pub(super) fn program(lang: &Language, key: &ShaderKey, units: usize) -> (String
     );
     (vs, fs)
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::paths::plan;
+    use crate::shaders::{batchable, glsl};
+    use crate::test_case::case;
+    use crate::{ContextApi, GlInfo, LodForm};
+    use shadowcheck_model::{ApiPath, Delivery, Stage, Target};
+
+    fn info(api: ContextApi, glsl: u32) -> GlInfo {
+        GlInfo {
+            api,
+            es: api == ContextApi::Es3,
+            compat: api == ContextApi::Compat,
+            version: (4, 6),
+            glsl,
+            renderer: String::new(),
+            version_string: String::new(),
+            extensions: Default::default(),
+            form: Default::default(),
+        }
+    }
+
+    #[test]
+    fn the_vertex_shader_looks_up_and_the_fragment_shader_stores_its_result() {
+        let mut c = case(Target::T2d, 4, 4, 1);
+        c.lookup.stage = Stage::Vertex;
+        c.lookup.lod = 1.0;
+        for (api, ctx, glsl_v, call, out) in [
+            (
+                ApiPath::GlslCore,
+                ContextApi::Core,
+                460,
+                "v_r = vec4(texture(u_tex, p.xyz), 0.0, 0.0, 1.0);",
+                "flat out vec4 v_r;",
+            ),
+            (
+                ApiPath::Es300,
+                ContextApi::Es3,
+                300,
+                "v_r = vec4(texture(u_tex, p.xyz), 0.0, 0.0, 1.0);",
+                "flat out vec4 v_r;",
+            ),
+            (
+                ApiPath::Glsl120,
+                ContextApi::Compat,
+                460,
+                "v_r = vec4(shadow2D(u_tex, p.xyz));",
+                "varying vec4 v_r;",
+            ),
+        ] {
+            let p = plan(api, &c).expect("a vertex-stage plan");
+            assert_eq!(p.key.form, LodForm::Implicit(false), "{api}");
+            assert_eq!(p.key.stage, Stage::Vertex);
+            assert!(!batchable(&p.key), "{api}: one case a draw");
+            let (vs, fs) = glsl(&info(ctx, glsl_v), &p.key, None, 1);
+            assert!(vs.contains(call) && vs.contains(out), "{api}: {vs}");
+            assert!(!fs.contains("texture") && !fs.contains("shadow2D"), "{fs}");
+            assert!(fs.contains("v_r;\n"), "{fs}");
+            if api == ApiPath::Es300 {
+                assert!(vs.contains("uniform highp sampler2DShadow u_tex;"), "{vs}");
+            }
+            // Several units: the case's unit chosen in the vertex shader.
+            let (vs, _) = glsl(&info(ctx, glsl_v), &p.key, None, 2);
+            assert!(
+                vs.contains("int unit = int(a_unit + 0.5);") && vs.contains("u_tex1"),
+                "{vs}"
+            );
+        }
+        // No vertex-stage lookup on Vulkan; no gather or delivered values in this program.
+        assert!(plan(ApiPath::Vulkan, &c).is_err());
+        c.lookup.delivery = Delivery::Uniform;
+        assert!(plan(ApiPath::GlslCore, &c).is_err());
+    }
+}
