@@ -234,6 +234,10 @@ pub struct Lookup {
     /// written) is what every case without the field means.
     #[serde(default, skip_serializing_if = "Delivery::is_literal")]
     pub delivery: Delivery,
+    /// The shader stage of the lookup ([`Stage`]); `fragment` (the default, not written) is what
+    /// every case without the field means.
+    #[serde(default, skip_serializing_if = "Stage::is_fragment")]
+    pub stage: Stage,
 }
 
 /// The gather variant. `textureGather` has no offset; `textureGatherOffset` takes

@@ -521,3 +521,26 @@ impl Delivery {
         *self == Delivery::Literal
     }
 }
+
+keyed_enum! {
+    /// The shader stage the lookup runs in. GLSL 4.60 / GLSL ES 3.20 §8.9: "Texture lookup
+    /// functions are available in all shading stages. However, level-of-detail is implicitly
+    /// computed only for fragment shaders. Other shaders operate as though the base
+    /// level-of-detail were computed as zero."
+    #[derive(Default)]
+    Stage {
+        /// The fragment shader (every case without a `stage` field).
+        #[default]
+        Fragment = "fragment",
+        /// The vertex shader: an implicit-LOD lookup (`texture`, GLSL 1.20 `shadow2D`) with λ_base
+        /// 0; the case's `lod` is the λ_base the same lookup would get in a fragment shader.
+        Vertex = "vertex",
+    }
+}
+
+impl Stage {
+    /// The default, which fixtures leave out.
+    pub fn is_fragment(&self) -> bool {
+        *self == Stage::Fragment
+    }
+}

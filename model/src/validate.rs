@@ -334,7 +334,8 @@ fn validate_lookup(case: &Case) -> Result<(), ModelError> {
     if l.offset != [0; 3] {
         validate_offset(case)?;
     }
-    lookup_dims::validate_delivery(case)
+    lookup_dims::validate_delivery(case)?;
+    lookup_dims::validate_stage(case)
 }
 
 /// A sweep's points: a bounded number, on a filtered lookup (a gather answers four values, a
@@ -432,6 +433,6 @@ fn validate_offset(case: &Case) -> Result<(), ModelError> {
 }
 
 mod lookup_dims;
-pub use lookup_dims::DELIVERY_PATHS;
+pub use lookup_dims::{DELIVERY_PATHS, STAGE_PATHS};
 #[cfg(test)]
 mod tests;

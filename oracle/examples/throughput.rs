@@ -50,6 +50,7 @@ fn case(filter: Filter, i: usize) -> Case {
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     }

@@ -112,10 +112,14 @@ pub fn rules() -> Rules {
         // A colour texture is R8: Table 15.1, (Rt,0,0),1.
         colour_luminance: false,
         colour_note: None,
-        readings: &[Reading {
-            id: "mirror-parens",
-            other: None,
-        }],
+        vertex_base_texture: false,
+        readings: &[
+            Reading {
+                id: "mirror-parens",
+                other: None,
+            },
+            crate::rules::VERTEX_BASE_TEXTURE,
+        ],
     }
 }
 

@@ -147,7 +147,26 @@ pub struct Rules {
     pub colour_note: Option<&'static str>,
     /// The contradictions that concern this spec in particular and their other readings.
     pub readings: &'static [Reading],
+    /// A mipmapped lookup outside the fragment stage takes level_base by the magnification
+    /// filter as its spec value ("then the base texture is used", reading B of contradiction
+    /// `vertex-base-texture`) instead of λ_base = 0 through §8.14 (reading A, every spec's own):
+    /// the other reading, for `explain`; both are accepted either way.
+    pub vertex_base_texture: bool,
 }
+
+/// Contradiction `vertex-base-texture`'s other reading as rules.
+pub(crate) fn vertex_base_texture(r: Rules) -> Rules {
+    Rules {
+        vertex_base_texture: true,
+        ..r
+    }
+}
+
+/// The reading every spec with a vertex-stage lookup lists (`readings`).
+pub(crate) const VERTEX_BASE_TEXTURE: Reading = Reading {
+    id: "vertex-base-texture",
+    other: Some(vertex_base_texture),
+};
 
 /// The rules of a spec variant: the registry of spec modules.
 pub fn rules_for(spec: Spec) -> Rules {

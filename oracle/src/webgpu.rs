@@ -116,6 +116,7 @@ pub fn rules() -> Rules {
         fixed_depth_mode: None,
         colour_luminance: false,
         colour_note: None,
+        vertex_base_texture: false,
         readings: &[
             Reading {
                 id: "webgpu-depth24plus",

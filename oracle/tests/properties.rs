@@ -246,6 +246,7 @@ fn wide_case() -> impl Strategy<Value = Case> {
                         offset: [0; 3],
                         gather: None,
                         delivery: Default::default(),
+                        stage: Default::default(),
                     },
                     expect: None,
                 }

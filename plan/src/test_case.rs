@@ -33,6 +33,7 @@ pub fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     }

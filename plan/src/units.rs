@@ -306,6 +306,7 @@ mod tests {
             offset: [0, 0],
             gather: None,
             delivery: shadowcheck_model::Delivery::Literal,
+            stage: shadowcheck_model::Stage::Fragment,
         }
     }
 

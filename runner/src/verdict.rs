@@ -429,6 +429,7 @@ mod tests {
                 offset: [0; 3],
                 gather: None,
                 delivery: Default::default(),
+                stage: Default::default(),
             },
             expect,
         }

@@ -150,6 +150,11 @@ faults! {
     /// constant)") gathers at offset (0, 0), as by a compiler that folds only constant offsets
     /// into its gather instruction and drops the rest.
     VariableGatherOffsetZero = "variable-gather-offset-zero",
+    /// A vertex-stage lookup of an implicit-LOD function given the λ_base a fragment shader
+    /// would compute from the coordinates' derivatives, where GLSL 4.60 / GLSL ES 3.20 §8.9 says
+    /// "Other shaders operate as though the base level-of-detail were computed as zero" (a unit
+    /// that runs its fragment LOD path for every stage).
+    VertexLodFromDerivatives = "vertex-lod-from-derivatives",
     // --- unit state: swizzle, seamless enable, sampler objects (GL 3.2 / 3.3, ES 3.0) ---
     /// TEXTURE_SWIZZLE_* ignored (the unswizzled base colour returned).
     SwizzleIgnored = "swizzle-ignored",

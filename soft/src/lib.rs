@@ -32,6 +32,7 @@ pub mod layout;
 pub mod lod;
 pub mod observe;
 pub mod sampler;
+mod stage;
 pub mod storage;
 pub mod tex_param;
 pub mod unitstate;
@@ -251,7 +252,7 @@ impl SoftUnit {
             r,
             layer,
             dref,
-            lambda_base: l.lod as f32,
+            lambda_base: stage::lambda_base(l, f),
             bias: l.bias as f32,
             offset: if f.has(Fault::VariableGatherOffsetZero)
                 && l.gather.is_some()
@@ -279,6 +280,7 @@ impl SoftUnit {
         if api == ApiPath::Wgsl {
             webgpu::check_lookup(self.spec, case)?;
         }
+        stage::check(self.spec, api, &case.lookup)?;
         if case.lookup.offset != [0; 3]
             && !matches!(
                 api,

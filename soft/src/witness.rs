@@ -46,6 +46,7 @@ fn case(spec: Spec, w: u32, h: u32, texels: Vec<u32>, func: CompareFunc) -> Case
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     }
@@ -131,6 +132,14 @@ fn gather_offset_from_a_uniform() -> Case {
     c.lookup.gather = Some(Gather { offsets: None });
     c.lookup.offset = [1, 0, 0];
     c.lookup.delivery = Delivery::Uniform;
+    c
+}
+
+/// `mips` looked up in the vertex shader with a fragment λ_base of 1: λ_base is 0 there (GLSL
+/// 4.60 §8.9), so level 0 (Dt 0) fails LEQUAL ½; the fragment λ selects level 1 (Dt 1), which passes.
+fn vertex_stage_mips() -> Case {
+    let mut c = mips(Filter::NearestMipmapNearest, 1.0);
+    c.lookup.stage = Stage::Vertex;
     c
 }
 
@@ -525,6 +534,7 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         Fault::GatherOrderRotated | Fault::GatherIgnoresRef => gather4(),
         Fault::GatherUsesLodLevel => gather_at_lod_one(),
         Fault::VariableGatherOffsetZero => gather_offset_from_a_uniform(),
+        Fault::VertexLodFromDerivatives => vertex_stage_mips(),
         // `gather4` compares to (1, 1, 0, 0); TEXTURE_SWIZZLE_R = ALPHA takes the post-swizzle
         // R of each texel's (Rt, 0, 0, 1), i.e. 1 for every texel (GL 4.6 §8.14.2): (1, 1, 1, 1).
         // The faulty unit returns the unswizzled (1, 1, 0, 0).
@@ -599,6 +609,7 @@ mod tests {
         assert_eq!(r(Fault::GatherOrderRotated), [1.0, 1.0, 0.0, 0.0]);
         assert_eq!(r(Fault::GatherUsesLodLevel), [0.0; 4]); // level base, not λ's level 1
         assert_eq!(r(Fault::VariableGatherOffsetZero), [1.0, 1.0, 1.0, 0.0]);
+        assert_eq!(r(Fault::VertexLodFromDerivatives)[0], 0.0); // λ_base 0: level 0 (the fault: level 1)
         assert_eq!(r(Fault::OffsetInBaseLevelTexels)[0], 0.0);
         assert_eq!(r(Fault::OffsetAfterWrap)[0], 0.0);
         // Swizzle, seamless enable, sampler object (GL 4.6 §15.2.1, §8.13.1, §8.17.1).

@@ -144,6 +144,10 @@ impl Draft {
             // Uniforms and flat inputs: GLSL 1.30+, GLSL ES 3.00+ (`validate::DELIVERY_PATHS`).
             api.retain(|a| validate::DELIVERY_PATHS.contains(a));
         }
+        if !self.lookup.stage.is_fragment() {
+            // A vertex-shader lookup: GLSL 1.20+, GLSL ES 3.00+ (`validate::STAGE_PATHS`).
+            api.retain(|a| validate::STAGE_PATHS.contains(a));
+        }
         Case {
             sweep: vec![],
             id,
@@ -170,6 +174,7 @@ pub fn lookup(target: Target, at: At, w: u32, h: u32, dref: f64) -> Lookup {
         offset: [0; 3],
         gather: None,
         delivery: Default::default(),
+        stage: Default::default(),
     }
 }
 

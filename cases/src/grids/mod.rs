@@ -11,6 +11,7 @@ pub mod interact;
 pub mod offset;
 pub mod random;
 pub mod specs;
+pub mod stage;
 pub mod sweep;
 pub mod tex_params;
 
@@ -109,7 +110,8 @@ pub fn spec_grid(d: &specs::SpecDims, seed: u64) -> dsl::Grid<Draft> {
             .extend(families::sampler_object(d))
             .extend(offset::offset(d))
             .extend(gather::gather(d))
-            .extend(delivery::delivery(d));
+            .extend(delivery::delivery(d))
+            .extend(stage::stage(d));
     }
     g.extend(families::wrap(d))
         .extend(families::dtm(d))

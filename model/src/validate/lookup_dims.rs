@@ -1,10 +1,10 @@
 //! The shader-side dimensions of a lookup: how its values reach the lookup function
-//! ([`Delivery`]). The forms the shading languages do not allow are rejected here, naming the
+//! ([`Delivery`]) and the shader stage it runs in ([`Stage`]). The forms the shading languages do not allow are rejected here, naming the
 //! sentence; which GLSL version a context needs for the rest is the plan's business
 //! (`shadowcheck-plan`, `paths::plan_for`).
 
 use super::invalid;
-use crate::{ApiPath, Case, Delivery, ModelError};
+use crate::{ApiPath, Case, Delivery, ModelError, Stage};
 
 /// The API paths that draw a non-literal delivery: GLSL 1.30+ and GLSL ES 3.00+ (uniforms and
 /// `flat` inputs, GLSL 1.30 §4.3.6). Vulkan and WebGPU answer such a case as not applicable.
@@ -48,4 +48,46 @@ pub(super) fn validate_delivery(case: &Case) -> Result<(), ModelError> {
         )),
         _ => Ok(()),
     }
+}
+
+/// The API paths that have a shadow lookup in the vertex shader: GLSL 1.20 (§8.7: "available to
+/// both vertex and fragment shaders"), GLSL 1.30+ and GLSL ES 3.00+ (§8.9 / §8.7: "available in
+/// all shading stages" / "to vertex and fragment shaders"). The fixed-function, ARB program and
+/// ES 1.00 paths have no vertex-stage shadow lookup here; Vulkan and WebGPU answer such a case as
+/// not applicable.
+pub const STAGE_PATHS: [ApiPath; 4] = [
+    ApiPath::Glsl120,
+    ApiPath::Glsl130,
+    ApiPath::GlslCore,
+    ApiPath::Es300,
+];
+
+/// A lookup outside the fragment stage: on a path that has it, never with a bias (GLSL 4.60 /
+/// GLSL ES 3.20 §8.9: "The bias parameter is not accepted in any other shader stage").
+pub(super) fn validate_stage(case: &Case) -> Result<(), ModelError> {
+    let l = &case.lookup;
+    let st = l.stage;
+    if st == Stage::Fragment {
+        return Ok(());
+    }
+    if let Some(api) = case.api.iter().find(|a| !STAGE_PATHS.contains(a)) {
+        return Err(invalid(
+            case,
+            "lookup.stage",
+            format!(
+                "stage `{st}` is drawn on the GLSL 1.20+ and GLSL ES 3.00+ paths only (glsl120, glsl130, core, es300), not on `{}`",
+                api.key()
+            ),
+        ));
+    }
+    if l.bias != 0.0 {
+        return Err(invalid(
+            case,
+            "lookup.bias",
+            format!(
+                "a bias in the {st} stage: \"The bias parameter is not accepted in any other shader stage\" than the fragment shader (GLSL 4.60 / GLSL ES 3.20 §8.9)"
+            ),
+        ));
+    }
+    Ok(())
 }

@@ -32,6 +32,7 @@ fn case() -> Case {
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     }
@@ -244,4 +245,34 @@ fn delivery_is_left_out_when_literal_and_rejected_where_the_language_wants_a_con
     c.api = vec![ApiPath::GlslCore, ApiPath::Vulkan];
     let e = validate(&c).unwrap_err().to_string();
     assert!(e.contains("`vk`") && e.contains("lookup.delivery"), "{e}");
+}
+
+#[test]
+fn stage_is_left_out_when_fragment_and_takes_no_bias_outside_it() {
+    assert!(!serde_json::to_string(&case()).unwrap().contains("stage"));
+    let mut c = case();
+    c.lookup.stage = Stage::Vertex;
+    c.lookup.lod = 1.0;
+    validate(&c).unwrap();
+    let json = serde_json::to_string(&c).unwrap();
+    assert!(json.contains("\"stage\":\"vertex\""), "{json}");
+    assert_eq!(serde_json::from_str::<Case>(&json).unwrap(), c);
+    // "The bias parameter is not accepted in any other shader stage" (GLSL 4.60 §8.9).
+    c.lookup.bias = 0.5;
+    let e = validate(&c).unwrap_err().to_string();
+    assert!(
+        e.contains("lookup.bias") && e.contains("not accepted in any other shader stage"),
+        "{e}"
+    );
+    // Only the paths with a vertex-shader lookup: not the fixed function, not Vulkan.
+    for api in [ApiPath::FixedFunction, ApiPath::Vulkan] {
+        let mut c = case();
+        c.lookup.stage = Stage::Vertex;
+        c.api = vec![ApiPath::GlslCore, api];
+        let e = validate(&c).unwrap_err().to_string();
+        assert!(
+            e.contains(&format!("`{}`", api.key())) && e.contains("lookup.stage"),
+            "{e}"
+        );
+    }
 }

@@ -18,6 +18,8 @@ pub(super) struct Lod {
     pub lam: Lambda,
     pub q_rel: u32,
     pub spec_pick: Pick,
+    /// Picks another reading of the texts accepts too (`stage::other_picks`).
+    pub other: Vec<Pick>,
 }
 
 /// λ and the spec's pick of levels.
@@ -29,12 +31,8 @@ pub(super) fn lod(e: &mut Eval, rules: &Rules, case: &Case) -> Lod {
     } else {
         0.0
     };
-    let lam = lod::lambda(
-        f32r(case.lookup.lod),
-        texobj_bias,
-        f32r(case.lookup.bias),
-        s,
-    );
+    let (lod_base, shader_bias) = super::stage::lambda_inputs(e, case);
+    let lam = lod::lambda(f32r(lod_base), texobj_bias, f32r(shader_bias), s);
     if let Some(n) = lam.note {
         e.note(n);
     }
@@ -48,22 +46,29 @@ pub(super) fn lod(e: &mut Eval, rules: &Rules, case: &Case) -> Lod {
     } else {
         lam.spec
     };
-    let spec_pick = lod::spec_pick(s, spec_lambda, q_rel);
+    let mut spec_pick = lod::spec_pick(s, spec_lambda, q_rel);
     e.step(
         format!(
             "λ = {} (λ_base {} + biases, clamped to [{}, {}]) → {}",
             lam.spec,
-            f32r(case.lookup.lod),
+            f32r(lod_base),
             s.min_lod,
             s.max_lod,
             describe_pick(spec_pick, lam.spec)
         ),
         "GL 4.6 §8.14.1, §8.14.3 (8.14)-(8.16), §8.15",
     );
+    let other = super::stage::other_picks(e, rules, case, spec_pick);
+    if rules.vertex_base_texture {
+        if let Some(&b) = other.first() {
+            spec_pick = b;
+        }
+    }
     Lod {
         lam,
         q_rel,
         spec_pick,
+        other,
     }
 }
 
@@ -169,6 +174,13 @@ pub(super) fn profile_intervals(
         if pi == 0 && picks.len() > 1 {
             many_picks = true;
         }
+        let extra: Vec<Pick> = lod
+            .other
+            .iter()
+            .copied()
+            .filter(|p| !picks.contains(p))
+            .collect();
+        picks.extend(extra);
         if should_proportional && multi_texel_state(s) {
             let nearest: Vec<Pick> = picks.iter().filter_map(|p| as_linear(*p)).collect();
             if !nearest.is_empty() {

@@ -14,6 +14,9 @@ mod gather;
 mod geometry;
 mod inputs;
 mod levels;
+mod stage;
+
+pub(crate) use stage::touches as stage_touches;
 
 use crate::accept;
 use crate::profile::PROFILES;

@@ -83,6 +83,7 @@ pub fn case2d(
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     }

@@ -77,6 +77,7 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
         offset: if variable { [0, 0] } else { offset },
         gather: Some(call),
         delivery: l.delivery,
+        stage: shadowcheck_model::Stage::Fragment,
     };
     let c = l.coord.map(|v| v as f32);
     let dref = l.dref as f32;

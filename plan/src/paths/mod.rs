@@ -16,7 +16,7 @@
 use crate::{GlInfo, LookupForm};
 use shadowcheck_model::{
     ApiPath, Case, CompareMode, Delivery, DepthStencilMode, DepthTextureMode, Filter, Lookup,
-    Target,
+    Stage, Target,
 };
 
 /// The GLSL sampler family.
@@ -79,6 +79,10 @@ pub struct ShaderKey {
     /// flat inputs written by the vertex shader (per fragment: changed on the quad's other three
     /// fragments, `shaders::per_fragment`).
     pub delivery: Delivery,
+    /// The shader stage of the lookup (the case's [`Lookup::stage`]): `vertex` runs the lookup in
+    /// the vertex shader, which passes its result to the fragment shader as a flat output
+    /// (`shaders::stage`); one case per draw.
+    pub stage: Stage,
 }
 
 /// One API path's plan for one case.
@@ -192,12 +196,24 @@ pub fn plan_in(
             l.delivery
         ));
     }
+    if l.stage != Stage::Fragment {
+        stage_drawable(path, l)?;
+    }
     if l.gather.is_some() {
         return gather::plan(path, case, l);
     }
     let kind = sampler_kind(case);
     let offset = texel_offset(path, case.texture.target, l)?;
-    let (form, how) = choose_form(path, case, l, kind, offset, prefer, shadow_lod)?;
+    let (form, how) = if l.stage == Stage::Vertex {
+        // The implicit-LOD function, whose λ_base is 0 in the vertex shader (GLSL 4.60 §8.9):
+        // the case's `lod` is the fragment shader's, which this draw does not realize.
+        (
+            LodForm::Implicit(false),
+            "implicit LOD in the vertex shader",
+        )
+    } else {
+        choose_form(path, case, l, kind, offset, prefer, shadow_lod)?
+    };
     let key = ShaderKey {
         path,
         target: case.texture.target,
@@ -208,6 +224,7 @@ pub fn plan_in(
         offset,
         gather: None,
         delivery: l.delivery,
+        stage: l.stage,
     };
     let how = if uses_shadow_lod(&key) {
         format!("{how} (EXT_texture_shadow_lod overload)")
@@ -240,6 +257,24 @@ pub fn plan_in(
         o: [0, 0],
         note: delivery_note(how, l.delivery),
     })
+}
+
+/// What the vertex-stage program draws: a filtered lookup (no gather) with literal values, on a
+/// path whose language has the lookup in the vertex shader (`validate::STAGE_PATHS`).
+fn stage_drawable(path: ApiPath, l: &Lookup) -> Result<(), String> {
+    if !shadowcheck_model::validate::STAGE_PATHS.contains(&path) {
+        return Err(format!(
+            "stage `{}` is drawn on the GLSL 1.20+ / GLSL ES 3.00 paths only, not on {path}",
+            l.stage
+        ));
+    }
+    if l.gather.is_some() || !l.delivery.is_literal() {
+        return Err(format!(
+            "stage `{}` is drawn for filtered lookups with literal values only (no gather, no delivery)",
+            l.stage
+        ));
+    }
+    Ok(())
 }
 
 /// The plan's note with the delivery, where it is not the literal one.

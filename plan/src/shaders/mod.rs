@@ -20,7 +20,7 @@
 use crate::paths::uses_shadow_lod;
 use crate::units::sampler_name;
 use crate::{GatherCall, GlInfo, LodForm, SamplerKind, ShaderKey};
-use shadowcheck_model::{ApiPath, Delivery, Target};
+use shadowcheck_model::{ApiPath, Delivery, Stage, Target};
 
 fn sampler_type(kind: SamplerKind, target: Target) -> String {
     let base = match target {
@@ -173,6 +173,7 @@ pub fn batchable(key: &ShaderKey) -> bool {
         ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan
     ) && key.form != LodForm::Constant
         && key.delivery.is_literal()
+        && key.stage == Stage::Fragment
 }
 
 /// The viewport (x, y, width, height) of a single-case draw of this key whose result is read at
@@ -211,6 +212,9 @@ pub fn glsl(
     }
     let lang = language(info, key);
     let units = units.max(1);
+    if key.stage == Stage::Vertex {
+        return stage::program(&lang, key, units);
+    }
     let vs = match key.delivery {
         Delivery::Flat | Delivery::PerFragment if batched.is_none() => {
             delivery::flat_vertex_shader(&lang, key, units)
@@ -553,6 +557,7 @@ pub fn arbfp_unit_weights(unit: usize, units: usize) -> Vec<[f32; 4]> {
 }
 
 mod delivery;
+mod stage;
 #[cfg(test)]
 mod tests;
 pub mod vulkan;

@@ -29,6 +29,7 @@ fn shadow_2d(path: ApiPath, form: LodForm) -> ShaderKey {
         offset: [0, 0],
         gather: None,
         delivery: shadowcheck_model::Delivery::Literal,
+        stage: shadowcheck_model::Stage::Fragment,
     }
 }
 
@@ -93,6 +94,7 @@ fn shadow_lod_overloads_enable_the_extension() {
         offset: [0, 0],
         gather: None,
         delivery: shadowcheck_model::Delivery::Literal,
+        stage: shadowcheck_model::Stage::Fragment,
     };
     assert_eq!(
         modern_call(&k, "u_tex"),
@@ -123,6 +125,7 @@ fn gather_calls_split_p_and_ref_z() {
         offset: [0, 0],
         gather: Some(GatherCall::Single),
         delivery: shadowcheck_model::Delivery::Literal,
+        stage: shadowcheck_model::Stage::Fragment,
     };
     assert_eq!(modern_call(&k, "u_tex"), "textureGather(u_tex, p.xy, p.z)");
     let k = ShaderKey {
@@ -239,6 +242,7 @@ fn legacy_calls_use_the_glsl_120_names() {
         offset: [0, 0],
         gather: None,
         delivery: shadowcheck_model::Delivery::Literal,
+        stage: shadowcheck_model::Stage::Fragment,
     };
     assert_eq!(legacy_call(&k, "u_tex"), "shadow2DRectProj(u_tex, p)");
     let k = ShaderKey {

@@ -35,6 +35,7 @@ fn subject() -> Subject {
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     };

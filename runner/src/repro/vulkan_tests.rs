@@ -42,6 +42,7 @@ fn subject(format: Format, wrap: Wrap, border: [f32; 4]) -> Subject {
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     };

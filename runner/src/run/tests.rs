@@ -113,6 +113,7 @@ fn case(id: &str, spec: Spec, api: Vec<ApiPath>) -> Case {
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: Some(Expectation {
             spec_value: Some(1.0),

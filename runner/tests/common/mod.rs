@@ -124,6 +124,7 @@ pub fn nearest_case(func: CompareFunc, x: u32, y: u32, dref: f64) -> Case {
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: Some(Expectation {
             spec_value: Some(r),

@@ -222,6 +222,7 @@ pub fn d16_case(id: &str, spec: Spec, api: &[ApiPath], target: Target, c: u32, d
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     }

@@ -316,6 +316,7 @@ fn projective_divide() {
         offset: [0; 3],
         gather: None,
         delivery: Default::default(),
+        stage: Default::default(),
     };
     // Dt = d16(0.6)/65535 = 39321/65535 = 0.6 exactly representable? 0.6*65535 = 39321 -> Dt = 0.6 (f32),
     // Dref = f32(1.2)/2 = f32(0.6): equal -> LEQUAL passes.

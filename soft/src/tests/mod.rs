@@ -60,6 +60,7 @@ pub(super) fn case2d(
             offset: [0; 3],
             gather: None,
             delivery: Default::default(),
+            stage: Default::default(),
         },
         expect: None,
     }

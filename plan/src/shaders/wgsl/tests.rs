@@ -17,6 +17,7 @@ fn key(target: Target, form: LodForm) -> ShaderKey {
         offset: [0, 0],
         gather: None,
         delivery: shadowcheck_model::Delivery::Literal,
+        stage: shadowcheck_model::Stage::Fragment,
     }
 }
 

@@ -1,0 +1,147 @@
+//! The single-case program of a vertex-stage lookup ([`Stage::Vertex`]): the vertex shader does
+//! the lookup with the implicit-LOD function (`texture`, GLSL 1.20 `shadow2D` & co.) on `u_p`,
+//! where "the base level-of-detail" is "computed as zero" (GLSL 4.60 / GLSL ES 3.20 §8.9), and
+//! passes the result on as a flat output (GLSL 1.20: a varying, every vertex writing the same
+//! value); the fragment shader stores it. Every vertex of the full-screen triangle does the same
+//! lookup with the same values, so the provoking vertex's result is the lookup's.
+
+use super::{legacy_call, modern_call, sampler_type, Language, NEVER_DISCARD, UNIT_ATTRIB};
+use crate::units::sampler_name;
+use crate::{SamplerKind, ShaderKey};
+use shadowcheck_model::ApiPath;
+
+/// (vertex source, fragment source) of the key's vertex-stage program with `units` samplers
+/// (each case names its unit by the attribute [`UNIT_ATTRIB`], as in a fragment-stage program).
+pub(super) fn program(lang: &Language, key: &ShaderKey, units: usize) -> (String, String) {
+    let (header, vin, vout, fin) = (&lang.header, lang.vin, lang.vout, lang.fin);
+    let prec = if key.path == ApiPath::Es300 {
+        "highp "
+    } else {
+        ""
+    };
+    let vec4_result = key.path == ApiPath::Glsl120 || key.kind != SamplerKind::Shadow;
+    let store = |tex: &str| {
+        let call = match key.path {
+            ApiPath::Glsl120 => legacy_call(key, tex),
+            _ => modern_call(key, tex),
+        };
+        if vec4_result {
+            format!("v_r = vec4({call});")
+        } else {
+            format!("v_r = vec4({call}, 0.0, 0.0, 1.0);")
+        }
+    };
+    let samplers: String = (0..units)
+        .map(|u| {
+            format!(
+                "uniform {prec}{} {};\n",
+                sampler_type(key.kind, key.target),
+                sampler_name(u, units)
+            )
+        })
+        .collect();
+    let (unit_decl, lookup) = if units > 1 {
+        let chain = (0..units)
+            .map(|u| {
+                let s = store(&sampler_name(u, units));
+                if u == 0 {
+                    format!("if (unit == 0) {s}")
+                } else if u + 1 == units {
+                    format!("else {s}")
+                } else {
+                    format!("else if (unit == {u}) {s}")
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\n  ");
+        (
+            format!("{vin} float {};\n", UNIT_ATTRIB.1),
+            format!("int unit = int({} + 0.5);\n  {chain}", UNIT_ATTRIB.1),
+        )
+    } else {
+        (String::new(), store("u_tex"))
+    };
+    let vs = format!(
+        "{header}{vin} vec2 a_pos;\n{unit_decl}{samplers}uniform vec4 u_p;\nuniform float u_x;\n{vout} vec4 v_r;\nvoid main() {{\n  gl_Position = vec4(a_pos, 0.0, 1.0);\n  vec4 p = u_p;\n  {lookup}\n}}\n"
+    );
+    let (fout, out_decl) = (lang.fout, lang.out_decl);
+    let fs = format!(
+        "{header}uniform vec2 u_c;\n{fin} vec4 v_r;\n{out_decl}void main() {{\n  {NEVER_DISCARD}\n  {fout} = v_r;\n}}\n"
+    );
+    (vs, fs)
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::paths::plan;
+    use crate::shaders::{batchable, glsl};
+    use crate::test_case::case;
+    use crate::{ContextApi, GlInfo, LodForm};
+    use shadowcheck_model::{ApiPath, Delivery, Stage, Target};
+
+    fn info(api: ContextApi, glsl: u32) -> GlInfo {
+        GlInfo {
+            api,
+            es: api == ContextApi::Es3,
+            compat: api == ContextApi::Compat,
+            version: (4, 6),
+            glsl,
+            renderer: String::new(),
+            version_string: String::new(),
+            extensions: Default::default(),
+            form: Default::default(),
+        }
+    }
+
+    #[test]
+    fn the_vertex_shader_looks_up_and_the_fragment_shader_stores_its_result() {
+        let mut c = case(Target::T2d, 4, 4, 1);
+        c.lookup.stage = Stage::Vertex;
+        c.lookup.lod = 1.0;
+        for (api, ctx, glsl_v, call, out) in [
+            (
+                ApiPath::GlslCore,
+                ContextApi::Core,
+                460,
+                "v_r = vec4(texture(u_tex, p.xyz), 0.0, 0.0, 1.0);",
+                "flat out vec4 v_r;",
+            ),
+            (
+                ApiPath::Es300,
+                ContextApi::Es3,
+                300,
+                "v_r = vec4(texture(u_tex, p.xyz), 0.0, 0.0, 1.0);",
+                "flat out vec4 v_r;",
+            ),
+            (
+                ApiPath::Glsl120,
+                ContextApi::Compat,
+                460,
+                "v_r = vec4(shadow2D(u_tex, p.xyz));",
+                "varying vec4 v_r;",
+            ),
+        ] {
+            let p = plan(api, &c).expect("a vertex-stage plan");
+            assert_eq!(p.key.form, LodForm::Implicit(false), "{api}");
+            assert_eq!(p.key.stage, Stage::Vertex);
+            assert!(!batchable(&p.key), "{api}: one case a draw");
+            let (vs, fs) = glsl(&info(ctx, glsl_v), &p.key, None, 1);
+            assert!(vs.contains(call) && vs.contains(out), "{api}: {vs}");
+            assert!(!fs.contains("texture") && !fs.contains("shadow2D"), "{fs}");
+            assert!(fs.contains("v_r;\n"), "{fs}");
+            if api == ApiPath::Es300 {
+                assert!(vs.contains("uniform highp sampler2DShadow u_tex;"), "{vs}");
+            }
+            // Several units: the case's unit chosen in the vertex shader.
+            let (vs, _) = glsl(&info(ctx, glsl_v), &p.key, None, 2);
+            assert!(
+                vs.contains("int unit = int(a_unit + 0.5);") && vs.contains("u_tex1"),
+                "{vs}"
+            );
+        }
+        // No vertex-stage lookup on Vulkan; no gather or delivered values in this program.
+        assert!(plan(ApiPath::Vulkan, &c).is_err());
+        c.lookup.delivery = Delivery::Uniform;
+        assert!(plan(ApiPath::GlslCore, &c).is_err());
+    }
+}
