@@ -38,3 +38,18 @@ pub fn case(target: Target, w: u32, h: u32, layers: u32) -> Case {
         expect: None,
     }
 }
+
+/// A GL 4.6-era context of `api` with GLSL version `glsl` and no extensions.
+pub fn info(api: crate::ContextApi, glsl: u32) -> crate::GlInfo {
+    crate::GlInfo {
+        api,
+        es: api == crate::ContextApi::Es3,
+        compat: api == crate::ContextApi::Compat,
+        version: (4, 6),
+        glsl,
+        renderer: String::new(),
+        version_string: String::new(),
+        extensions: Default::default(),
+        form: Default::default(),
+    }
+}

@@ -135,23 +135,9 @@ pub(super) fn flat_vertex_shader(lang: &Language, key: &ShaderKey, units: usize)
 mod tests {
     use crate::paths::{plan, plan_for};
     use crate::shaders::{batchable, glsl, single_draw_viewport};
-    use crate::test_case::case;
-    use crate::{ContextApi, GatherCall, GlInfo};
+    use crate::test_case::{case, info};
+    use crate::{ContextApi, GatherCall};
     use shadowcheck_model::{ApiPath, Delivery, Gather, Target};
-
-    fn info(api: ContextApi, glsl: u32) -> GlInfo {
-        GlInfo {
-            api,
-            es: api == ContextApi::Es3,
-            compat: api == ContextApi::Compat,
-            version: (4, 6),
-            glsl,
-            renderer: String::new(),
-            version_string: String::new(),
-            extensions: Default::default(),
-            form: Default::default(),
-        }
-    }
 
     /// A 2D gather with offset (1, -2) delivered as `d`.
     fn gather(d: Delivery) -> shadowcheck_model::Case {

@@ -176,6 +176,25 @@ pub fn batchable(key: &ShaderKey) -> bool {
         && key.stage == Stage::Fragment
 }
 
+/// The statement that runs `store` on the sampler of the case's unit `var` (an int), one of
+/// `units` (> 1): an if-chain, since a sampler array indexed by a value that is not dynamically
+/// uniform is undefined (GLSL 4.60 §4.1.7).
+pub(crate) fn unit_chain(units: usize, var: &str, store: &dyn Fn(&str) -> String) -> String {
+    (0..units)
+        .map(|u| {
+            let s = store(&sampler_name(u, units));
+            if u == 0 {
+                format!("if ({var} == 0) {s}")
+            } else if u + 1 == units {
+                format!("else {s}")
+            } else {
+                format!("else if ({var} == {u}) {s}")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n  ")
+}
+
 /// The viewport (x, y, width, height) of a single-case draw of this key whose result is read at
 /// pixel `at`: the 2x2 pixel quad at even window coordinates that holds it where the values
 /// differ between the fragments of the quad (`per_fragment` delivery, see `delivery.rs`; the
@@ -440,19 +459,7 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
             format!("int unit = {unit};\n  ")
         };
         let unit = if unit == "v_unit" { "v_unit" } else { "unit" };
-        let chain = (0..units)
-            .map(|u| {
-                let s = store(&sampler_name(u, units));
-                if u == 0 {
-                    format!("if ({unit} == 0) {s}")
-                } else if u + 1 == units {
-                    format!("else {s}")
-                } else {
-                    format!("else if ({unit} == {u}) {s}")
-                }
-            })
-            .collect::<Vec<_>>()
-            .join("\n  ");
+        let chain = unit_chain(units, unit, &store);
         format!("{pick}{chain}")
     } else {
         store("u_tex")

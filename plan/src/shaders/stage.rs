@@ -41,19 +41,7 @@ pub(super) fn program(lang: &Language, key: &ShaderKey, units: usize) -> (String
         })
         .collect();
     let (unit_decl, lookup) = if units > 1 {
-        let chain = (0..units)
-            .map(|u| {
-                let s = store(&sampler_name(u, units));
-                if u == 0 {
-                    format!("if (unit == 0) {s}")
-                } else if u + 1 == units {
-                    format!("else {s}")
-                } else {
-                    format!("else if (unit == {u}) {s}")
-                }
-            })
-            .collect::<Vec<_>>()
-            .join("\n  ");
+        let chain = super::unit_chain(units, "unit", &store);
         (
             format!("{vin} float {};\n", UNIT_ATTRIB.1),
             format!("int unit = int({} + 0.5);\n  {chain}", UNIT_ATTRIB.1),
@@ -75,23 +63,9 @@ pub(super) fn program(lang: &Language, key: &ShaderKey, units: usize) -> (String
 mod tests {
     use crate::paths::plan;
     use crate::shaders::{batchable, glsl};
-    use crate::test_case::case;
-    use crate::{ContextApi, GlInfo, LodForm};
+    use crate::test_case::{case, info};
+    use crate::{ContextApi, LodForm};
     use shadowcheck_model::{ApiPath, Delivery, Stage, Target};
-
-    fn info(api: ContextApi, glsl: u32) -> GlInfo {
-        GlInfo {
-            api,
-            es: api == ContextApi::Es3,
-            compat: api == ContextApi::Compat,
-            version: (4, 6),
-            glsl,
-            renderer: String::new(),
-            version_string: String::new(),
-            extensions: Default::default(),
-            form: Default::default(),
-        }
-    }
 
     #[test]
     fn the_vertex_shader_looks_up_and_the_fragment_shader_stores_its_result() {
