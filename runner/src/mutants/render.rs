@@ -222,7 +222,7 @@ fn survivor(out: &mut String, m: &MutantResult) {
         };
         let _ = writeln!(
             out,
-            "Witness case (`mutants::witness`, from soft/src/witness.rs) on `{}`: correct unit {}, mutant {}: {}. {}\n",
+            "Witness case (`mutants::witness`, from soft/src/witness/) on `{}`: correct unit {}, mutant {}: {}. {}\n",
             w.api,
             w.correct,
             w.mutant,
