@@ -19,24 +19,6 @@ fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
-/// Can this machine build a reproducer (a C compiler and the EGL/GL headers)?
-fn can_build(backend: &str) -> bool {
-    let header = if backend.starts_with("osmesa:") {
-        "/usr/include/GL/osmesa.h"
-    } else {
-        "/usr/include/EGL/egl.h"
-    };
-    let cc = Command::new("cc").arg("--version").output();
-    if !matches!(cc, Ok(o) if o.status.success()) || !Path::new(header).is_file() {
-        gl_support::unavailable(
-            backend,
-            &format!("no C compiler or no {header} to build the reproducer (apt-get install -y gcc libegl-dev libgles-dev libgl-dev libosmesa6-dev)"),
-        );
-        return false;
-    }
-    true
-}
-
 /// What the harness and the reproducer said about one test.
 struct Both {
     harness: Outcome,
@@ -54,7 +36,7 @@ fn both(backend: &str, test: &str, name: &str, extra: &[&str]) -> Option<Both> {
         gl_support::unavailable(backend, &e.to_string());
         return None;
     }
-    if !can_build(backend) {
+    if !gl_support::can_build(backend) {
         return None;
     }
     let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
@@ -333,127 +315,6 @@ fn swiftshader_gles_through_an_egl_1_4_pbuffer() {
     );
 }
 
-/// A TexParameter state case: the harness's verdict, then the reproducer on its own, which must
-/// print the observation the harness judged and exit 1 for a Fail, 0 for a Pass.
-fn check_state(backend: &str, test: &str, want: Outcome) -> Option<PathBuf> {
-    if let Err(e) = shadowcheck_runner::backend::gl::worker_command(backend) {
-        gl_support::unavailable(backend, &e.to_string());
-        return None;
-    }
-    if !can_build(backend) {
-        return None;
-    }
-    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
-    let spec = id.split('/').nth(1).unwrap();
-    let fixtures = root().join(format!("cases/fixtures/state/{spec}.json"));
-    let out = common::tmpdir(&format!("repro-state-{}", backend.replace(':', "-")));
-    let run_dir = out.join("run");
-    let r = common::run(&[
-        "--backend",
-        backend,
-        "--fixtures",
-        fixtures.to_str().unwrap(),
-        "--cases",
-        &format!("^{}$", regex::escape(&id)),
-        "--no-rerun",
-        "--out",
-        run_dir.to_str().unwrap(),
-    ]);
-    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
-    let rec = results
-        .get(backend, test)
-        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
-    assert_eq!(rec.outcome, want, "{test} on {backend}: {:?}", rec.reason);
-    let dir = out.join("repro");
-    let rc = common::Run::of(
-        common::bin()
-            .args([
-                "repro",
-                "--backend",
-                backend,
-                "--case",
-                test,
-                "--allow-pass",
-                "--fixtures",
-            ])
-            .arg(&fixtures)
-            .arg("--out")
-            .arg(&dir)
-            .output()
-            .unwrap(),
-    );
-    assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
-    assert_eq!(dir.join("REPORT.md").is_file(), want == Outcome::Fail);
-    let own = Command::new("sh")
-        .arg("build.sh")
-        .current_dir(&dir)
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&own.stdout).into_owned();
-    let code = if want == Outcome::Fail { 1 } else { 0 };
-    assert_eq!(own.status.code(), Some(code), "{stdout}");
-    let observed = stdout
-        .lines()
-        .find_map(|l| l.strip_prefix("observed:"))
-        .map(str::trim)
-        .unwrap_or_else(|| panic!("no observed line: {stdout}"));
-    match &rec.reason {
-        // The harness's reason says what it got: the very observation of the program.
-        Some(why) if want == Outcome::Fail => {
-            assert!(
-                why.contains(&format!("got {observed};")),
-                "{why} / {observed}"
-            )
-        }
-        _ => assert!(
-            stdout.contains(&format!("expected:  {observed}\n")),
-            "{stdout}"
-        ),
-    }
-    Some(dir)
-}
-
-/// TEXTURE_COMPARE_FUNC set to a value that is no compare function: INVALID_ENUM and the state
-/// unchanged (ES 3.2 §8.10). llvmpipe does so; the program passes, and with the expected error made
-/// INVALID_VALUE it exits 1.
-#[test]
-fn a_state_case_passes_on_llvmpipe_and_a_wrong_expectation_fails() {
-    let Some(dir) = check_state(
-        "egl:llvmpipe:es3",
-        "state/gles32/es/2d/compare_func/set=0x1234@es300",
-        Outcome::Pass,
-    ) else {
-        return;
-    };
-    let c = std::fs::read_to_string(dir.join("repro.c")).unwrap();
-    assert!(c.contains("glTexParameteri(TARGET, PNAME, 0x1234);"), "{c}");
-    assert!(c.contains("{NULL, 0x0500, 1, 0x0203, 0.0f,"), "{c}");
-    let wrong = c.replace(
-        "{NULL, 0x0500, 1, 0x0203, 0.0f,",
-        "{NULL, 0x0501, 1, 0x0203, 0.0f,",
-    );
-    std::fs::write(dir.join("repro.c"), wrong).unwrap();
-    let own = Command::new("sh")
-        .arg("build.sh")
-        .current_dir(&dir)
-        .output()
-        .unwrap();
-    let out = String::from_utf8_lossy(&own.stdout);
-    assert_eq!(own.status.code(), Some(1), "{out}");
-    assert!(out.contains("verdict:   FAIL"), "{out}");
-}
-
-/// SwiftShader's GLES raises INVALID_VALUE where ES 3.2 §8.10 requires INVALID_ENUM (the committed
-/// swiftshader-4.0.0.3 report): the state reproducer, through its EGL 1.4 pbuffer, says the same.
-#[test]
-fn a_state_case_fails_on_swiftshader_gles() {
-    let _ = check_state(
-        "egl:swiftshader:es3",
-        "state/gles32/es/2d/compare_func/set=0x1234@es300",
-        Outcome::Fail,
-    );
-}
-
 /// A test that passes: without --allow-pass `repro` refuses (exit 1, no REPORT.md); with it, exit 0;
 /// the program exits 0 and prints what the harness observed.
 #[test]
@@ -488,7 +349,7 @@ fn a_closed_stdout_is_not_a_panic() {
         gl_support::unavailable(backend, &e.to_string());
         return;
     }
-    if !can_build(backend) {
+    if !gl_support::can_build(backend) {
         return;
     }
     let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
@@ -566,7 +427,9 @@ fn bad_arguments_exit_96() {
 #[test]
 fn all_failures_writes_one_reproducer_per_class() {
     let backend = "egl:llvmpipe:es3";
-    if shadowcheck_runner::backend::gl::worker_command(backend).is_err() || !can_build(backend) {
+    if shadowcheck_runner::backend::gl::worker_command(backend).is_err()
+        || !gl_support::can_build(backend)
+    {
         gl_support::unavailable(backend, "driver or toolchain missing");
         return;
     }

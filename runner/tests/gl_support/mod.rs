@@ -271,3 +271,21 @@ pub fn mip_case(
     c.lookup.bias = bias;
     c
 }
+
+/// Can this machine build a reproducer (a C compiler and the EGL/GL headers)?
+pub fn can_build(backend: &str) -> bool {
+    let header = if backend.starts_with("osmesa:") {
+        "/usr/include/GL/osmesa.h"
+    } else {
+        "/usr/include/EGL/egl.h"
+    };
+    let cc = std::process::Command::new("cc").arg("--version").output();
+    if !matches!(cc, Ok(o) if o.status.success()) || !std::path::Path::new(header).is_file() {
+        unavailable(
+            backend,
+            &format!("no C compiler or no {header} to build the reproducer (apt-get install -y gcc libegl-dev libgles-dev libgl-dev libosmesa6-dev)"),
+        );
+        return false;
+    }
+    true
+}
