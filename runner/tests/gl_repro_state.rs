@@ -8,7 +8,7 @@
 mod common;
 mod gl_support;
 
-use shadowcheck_runner::records::{read_results, Outcome, RESULTS_FILE};
+use shadowcheck_runner::records::Outcome;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -27,41 +27,8 @@ fn check_state(backend: &str, test: &str, want: Outcome) -> Option<PathBuf> {
     let fixtures =
         Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../cases/fixtures/state/{spec}.json"));
     let out = common::tmpdir(&format!("repro-state-{}", backend.replace(':', "-")));
-    let run_dir = out.join("run");
-    let r = common::run(&[
-        "--backend",
-        backend,
-        "--fixtures",
-        fixtures.to_str().unwrap(),
-        "--cases",
-        &format!("^{}$", regex::escape(&id)),
-        "--no-rerun",
-        "--out",
-        run_dir.to_str().unwrap(),
-    ]);
-    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
-    let rec = results
-        .get(backend, test)
-        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    let (rec, rc, dir) = common::harness_then_repro(backend, test, &fixtures, &out);
     assert_eq!(rec.outcome, want, "{test} on {backend}: {:?}", rec.reason);
-    let dir = out.join("repro");
-    let rc = common::Run::of(
-        common::bin()
-            .args([
-                "repro",
-                "--backend",
-                backend,
-                "--case",
-                test,
-                "--allow-pass",
-                "--fixtures",
-            ])
-            .arg(&fixtures)
-            .arg("--out")
-            .arg(&dir)
-            .output()
-            .unwrap(),
-    );
     assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
     assert_eq!(dir.join("REPORT.md").is_file(), want == Outcome::Fail);
     let own = Command::new("sh")

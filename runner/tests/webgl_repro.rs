@@ -9,7 +9,7 @@
 
 mod common;
 use common::*;
-use shadowcheck_runner::records::{read_results, Outcome, RESULTS_FILE};
+use shadowcheck_runner::records::Outcome;
 use std::path::PathBuf;
 use std::process::Command;
 
@@ -44,43 +44,9 @@ fn check(backend: &str, test: &str, want: Outcome) -> Option<PathBuf> {
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '-' })
         .collect();
     let out = tmpdir(&format!("webgl-repro-{slug}"));
-    let run_dir = out.join("run");
-    let r = run(&[
-        "--backend",
-        backend,
-        "--fixtures",
-        fixtures.to_str().unwrap(),
-        "--cases",
-        &format!("^{}$", regex::escape(&id)),
-        "--no-rerun",
-        "--full-report",
-        "--out",
-        run_dir.to_str().unwrap(),
-    ]);
-    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
-    let rec = results
-        .get(backend, test)
-        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    let (rec, rc, dir) = harness_then_repro(backend, test, &fixtures, &out);
     assert_eq!(rec.outcome, want, "{test} on {backend}: {:?}", rec.reason);
     let harness = rec.observed.as_ref().expect("harness observed nothing").0;
-    let dir = out.join("repro");
-    let rc = Run::of(
-        bin()
-            .args([
-                "repro",
-                "-b",
-                backend,
-                "--case",
-                test,
-                "--allow-pass",
-                "--fixtures",
-            ])
-            .arg(&fixtures)
-            .arg("-o")
-            .arg(&dir)
-            .output()
-            .unwrap(),
-    );
     assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
     assert_eq!(dir.join("REPORT.md").is_file(), want == Outcome::Fail);
     let page = std::fs::read_to_string(dir.join("repro.html")).unwrap();
@@ -165,45 +131,10 @@ fn a_webgl_state_case_reproduces_and_a_wrong_expectation_fails() {
         return;
     }
     let test = "state/gles32/es/2d/compare_func/set=0x1234@es300";
-    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
     let fixtures =
         PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../cases/fixtures/state/gles32.json");
-    let out = tmpdir("webgl-repro-state");
-    let run_dir = out.join("run");
-    let r = run(&[
-        "--backend",
-        backend,
-        "--fixtures",
-        fixtures.to_str().unwrap(),
-        "--cases",
-        &format!("^{}$", regex::escape(&id)),
-        "--no-rerun",
-        "--out",
-        run_dir.to_str().unwrap(),
-    ]);
-    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
-    let rec = results
-        .get(backend, test)
-        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    let (rec, rc, dir) = harness_then_repro(backend, test, &fixtures, &tmpdir("webgl-repro-state"));
     assert_eq!(rec.outcome, Outcome::Pass, "{:?}", rec.reason);
-    let dir = out.join("repro");
-    let rc = Run::of(
-        bin()
-            .args([
-                "repro",
-                "-b",
-                backend,
-                "--case",
-                test,
-                "--allow-pass",
-                "--fixtures",
-            ])
-            .arg(&fixtures)
-            .arg("-o")
-            .arg(&dir)
-            .output()
-            .unwrap(),
-    );
     assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
     let sh = |dir: &std::path::Path| {
         let o = Command::new("sh")

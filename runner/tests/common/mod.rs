@@ -288,3 +288,56 @@ pub fn repro_observed(stdout: &str) -> [f64; 4] {
         .collect();
     v.try_into().unwrap()
 }
+
+/// Runs `test` (`<case id>@<api>`) alone on `backend` in the harness (no re-run, full records) into
+/// `out/run`, then `shadowcheck repro --allow-pass` for it into `out/repro`: the harness's record
+/// of the test, `repro`'s own run, and the reproducer's directory. Panics, naming the test, when
+/// the harness has no record of it.
+pub fn harness_then_repro(
+    backend: &str,
+    test: &str,
+    fixtures: &Path,
+    out: &Path,
+) -> (shadowcheck_runner::records::TestResult, Run, PathBuf) {
+    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
+    let run_dir = out.join("run");
+    let r = run(&[
+        "--backend",
+        backend,
+        "--fixtures",
+        fixtures.to_str().unwrap(),
+        "--cases",
+        &format!("^{}$", regex::escape(&id)),
+        "--no-rerun",
+        "--full-report",
+        "--out",
+        run_dir.to_str().unwrap(),
+    ]);
+    let results = shadowcheck_runner::records::read_results(
+        &run_dir.join(shadowcheck_runner::records::RESULTS_FILE),
+    )
+    .unwrap();
+    let rec = results
+        .get(backend, test)
+        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr))
+        .clone();
+    let dir = out.join("repro");
+    let rc = Run::of(
+        bin()
+            .args([
+                "repro",
+                "-b",
+                backend,
+                "--case",
+                test,
+                "--allow-pass",
+                "--fixtures",
+            ])
+            .arg(fixtures)
+            .arg("-o")
+            .arg(&dir)
+            .output()
+            .unwrap(),
+    );
+    (rec, rc, dir)
+}
