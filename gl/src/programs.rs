@@ -1,4 +1,5 @@
-//! Programs per [`ShaderKey`]: GLSL (the lookup as a fragment shader, see `shaders/mod.rs`), ARB
+//! Programs per [`ShaderKey`]: GLSL (the lookup as a fragment shader, see `shaders/mod.rs`, or in
+//! a vertex or compute shader, `shaders/stage.rs`), ARB
 //! fragment programs, or nothing for fixed function; compiled on first use and cached in a
 //! [`ProgramCache`] (the renderer's) for the worker's life. Knows nothing of the renderer: it is
 //! handed the GL context, what the context offers and the result framebuffer's size.
@@ -21,6 +22,9 @@ pub(super) struct Program {
     /// A variable gather offset (`GatherCall::Variable`).
     pub(super) u_o: Option<glow::UniformLocation>,
     pub(super) u_base: Option<glow::UniformLocation>,
+    /// A compute-stage program's result pixel and unit (`shaders::stage`).
+    pub(super) u_at: Option<glow::UniformLocation>,
+    pub(super) u_unit: Option<glow::UniformLocation>,
 }
 
 /// What a [`ShaderKey`] compiles to on one path.
@@ -49,10 +53,16 @@ unsafe fn compile(
                 .map_err(|e| e.to_string())
         }
         _ => {
-            let (vs, fs) = shaders::glsl(info, key, batched, units);
+            let sources = match shaders::compute_glsl(info, key, units) {
+                Some(cs) => vec![(glow::COMPUTE_SHADER, cs)],
+                None => {
+                    let (vs, fs) = shaders::glsl(info, key, batched, units);
+                    vec![(glow::VERTEX_SHADER, vs), (glow::FRAGMENT_SHADER, fs)]
+                }
+            };
             let program = gl.create_program()?;
-            for (ty, src) in [(glow::VERTEX_SHADER, &vs), (glow::FRAGMENT_SHADER, &fs)] {
-                let sh = gl.create_shader(ty)?;
+            for (ty, src) in &sources {
+                let sh = gl.create_shader(*ty)?;
                 gl.shader_source(sh, src);
                 gl.compile_shader(sh);
                 if !gl.get_shader_compile_status(sh) {
@@ -71,8 +81,9 @@ unsafe fn compile(
             gl.bind_attrib_location(program, shaders::UNIT_ATTRIB.0, shaders::UNIT_ATTRIB.1);
             gl.link_program(program);
             if !gl.get_program_link_status(program) {
+                let last = sources.last().map(|(_, s)| s.as_str()).unwrap_or_default();
                 return Err(format!(
-                    "program link failed: {}\n{fs}",
+                    "program link failed: {}\n{last}",
                     gl.get_program_info_log(program).trim()
                 ));
             }
@@ -93,6 +104,8 @@ unsafe fn compile(
                 u_c: u("u_c"),
                 u_o: u("u_o"),
                 u_base: u("u_base"),
+                u_at: u("u_at"),
+                u_unit: u(shaders::stage::UNIT_UNIFORM),
             }))
         }
     }

@@ -94,15 +94,30 @@ pub fn error_name(e: u32) -> String {
 }
 
 /// The result framebuffer: an `size`x`size` RGBA32F colour texture ([`rgba32f`]) attached to a
-/// new framebuffer object, left bound to FRAMEBUFFER; an error if it is not complete.
+/// new framebuffer object, left bound to FRAMEBUFFER; an error if it is not complete. `storage`:
+/// the texture is made by TexStorage2D (immutable), which a compute shader's image store needs on
+/// ES (ES 3.2, "Texture Image Loads and Stores", BindImageTexture: "An INVALID_OPERATION error is
+/// generated if texture is not the name of an immutable texture object"); every context with
+/// compute shaders has TexStorage2D (GL 4.2, ES 3.0).
 ///
 /// # Safety
 /// `gl` must be current on this thread.
 pub unsafe fn rgba32f_framebuffer(
     gl: &glow::Context,
     size: i32,
-) -> Result<glow::Framebuffer, String> {
-    let color = rgba32f(gl, size, size)?;
+    storage: bool,
+) -> Result<(glow::Framebuffer, glow::Texture), String> {
+    let color = if storage {
+        let t = gl.create_texture()?;
+        gl.bind_texture(glow::TEXTURE_2D, Some(t));
+        gl.tex_storage_2d(glow::TEXTURE_2D, 1, glow::RGBA32F, size, size);
+        for pname in [glow::TEXTURE_MIN_FILTER, glow::TEXTURE_MAG_FILTER] {
+            gl.tex_parameter_i32(glow::TEXTURE_2D, pname, glow::NEAREST as i32);
+        }
+        t
+    } else {
+        rgba32f(gl, size, size)?
+    };
     let fbo = gl.create_framebuffer()?;
     gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
     gl.framebuffer_texture_2d(
@@ -118,7 +133,7 @@ pub unsafe fn rgba32f_framebuffer(
             "RGBA32F framebuffer incomplete (status 0x{status:04X})"
         ));
     }
-    Ok(fbo)
+    Ok((fbo, color))
 }
 
 /// A `w`×`h` RGBA32F texture with NEAREST filtering, bound to TEXTURE_2D of the active unit: the

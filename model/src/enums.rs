@@ -535,6 +535,9 @@ keyed_enum! {
         /// The vertex shader: an implicit-LOD lookup (`texture`, GLSL 1.20 `shadow2D`) with λ_base
         /// 0; the case's `lod` is the λ_base the same lookup would get in a fragment shader.
         Vertex = "vertex",
+        /// A compute shader (GL 4.3 / GLSL 4.30, ES 3.1 / GLSL ES 3.10): the same implicit-LOD
+        /// lookup with λ_base 0, its result written to an image; `lod` as for `Vertex`.
+        Compute = "compute",
     }
 }
 

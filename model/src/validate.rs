@@ -433,6 +433,6 @@ fn validate_offset(case: &Case) -> Result<(), ModelError> {
 }
 
 mod lookup_dims;
-pub use lookup_dims::{DELIVERY_PATHS, STAGE_PATHS};
+pub use lookup_dims::{COMPUTE_PATHS, DELIVERY_PATHS, STAGE_PATHS};
 #[cfg(test)]
 mod tests;

@@ -83,7 +83,7 @@ pub fn rules(spec: Spec) -> Rules {
         // A colour texture "operates in the normal manner": GL 2.1 knows it as LUMINANCE8 (Table 3.20).
         colour_luminance: true,
         colour_note: None,
-        vertex_base_texture: false,
+        non_fragment_base_texture: false,
         readings: &[crate::rules::VERTEX_BASE_TEXTURE],
     }
 }

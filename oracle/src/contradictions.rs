@@ -124,7 +124,7 @@ pub const ALL: &[Contradiction] = &[
         sources: "WebGPU Samplers: GPUSamplerDescriptor (compare), GPUCompareFunction",
     },
     Contradiction {
-        id: "vertex-base-texture",
+        id: "non-fragment-base-texture",
         title: "Level of detail of an implicit-LOD lookup outside the fragment stage",
         defended: "GLSL 4.60 / GLSL ES 3.20 §8.9: \"level-of-detail is implicitly computed only for fragment shaders. Other shaders operate as though the base level-of-detail were computed as zero\": λ_base = 0, then GL 4.6 / ES 3.2 §8.14.1 and §8.14.3 as for any λ (TEXTURE_LOD_BIAS, the MIN_LOD / MAX_LOD clamp, magnification for λ ≤ c, else minification by the mipmapped filter). The spec value follows it; the other reading is accepted too, named.",
         other: "The same section's next paragraph, and the only text of GLSL 1.20 / 1.30 §8.7 and GLSL ES 3.00 §8.8: \"If it is mipmapped and running in a non-fragment shader, then the base texture is used\": level_base whatever the biases and clamps; the sentence names no filter, so level_base by the magnification filter or by the minification filter within a level is accepted. The two differ where TEXTURE_LOD_BIAS or MIN_LOD > 0 selects another level, or where the magnification and minification filters differ.",
@@ -190,7 +190,7 @@ pub fn touching(case: &Case) -> Vec<&'static Contradiction> {
                         shadowcheck_model::Format::D24 | shadowcheck_model::Format::D24S8
                     )
             }
-            "vertex-base-texture" => crate::engine::stage_touches(case),
+            "non-fragment-base-texture" => crate::engine::stage_touches(case),
             "mirror-parens" => {
                 concerns(c.id) && [s.wrap_s, s.wrap_t, s.wrap_r].contains(&Wrap::MirroredRepeat)
             }

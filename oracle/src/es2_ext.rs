@@ -105,7 +105,7 @@ pub fn rules() -> Rules {
         // A colour texture is R8 / LUMINANCE8 read as (r,0,0,1), as in ES 3.x.
         colour_luminance: false,
         colour_note: None,
-        vertex_base_texture: false,
+        non_fragment_base_texture: false,
         readings: &[Reading {
             id: "es2-greater-row",
             other: Some(greater_row_funcs),

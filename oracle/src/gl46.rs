@@ -112,7 +112,7 @@ pub fn rules() -> Rules {
         // A colour texture is R8: Table 15.1, (Rt,0,0),1.
         colour_luminance: false,
         colour_note: None,
-        vertex_base_texture: false,
+        non_fragment_base_texture: false,
         readings: &[
             Reading {
                 id: "mirror-parens",

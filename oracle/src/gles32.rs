@@ -108,7 +108,7 @@ pub fn rules() -> Rules {
         // A colour texture is R8: (Rt,0,0),1.
         colour_luminance: false,
         colour_note: None,
-        vertex_base_texture: false,
+        non_fragment_base_texture: false,
         readings: &[crate::rules::VERTEX_BASE_TEXTURE],
     }
 }

@@ -149,23 +149,23 @@ pub struct Rules {
     pub readings: &'static [Reading],
     /// A mipmapped lookup outside the fragment stage takes level_base by the magnification
     /// filter as its spec value ("then the base texture is used", reading B of contradiction
-    /// `vertex-base-texture`) instead of λ_base = 0 through §8.14 (reading A, every spec's own):
+    /// `non-fragment-base-texture`) instead of λ_base = 0 through §8.14 (reading A, every spec's own):
     /// the other reading, for `explain`; both are accepted either way.
-    pub vertex_base_texture: bool,
+    pub non_fragment_base_texture: bool,
 }
 
-/// Contradiction `vertex-base-texture`'s other reading as rules.
-pub(crate) fn vertex_base_texture(r: Rules) -> Rules {
+/// Contradiction `non-fragment-base-texture`'s other reading as rules.
+pub(crate) fn non_fragment_base_texture(r: Rules) -> Rules {
     Rules {
-        vertex_base_texture: true,
+        non_fragment_base_texture: true,
         ..r
     }
 }
 
 /// The reading every spec with a vertex-stage lookup lists (`readings`).
 pub(crate) const VERTEX_BASE_TEXTURE: Reading = Reading {
-    id: "vertex-base-texture",
-    other: Some(vertex_base_texture),
+    id: "non-fragment-base-texture",
+    other: Some(non_fragment_base_texture),
 };
 
 /// The rules of a spec variant: the registry of spec modules.

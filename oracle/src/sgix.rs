@@ -126,7 +126,7 @@ pub fn rules(spec: Spec) -> Rules {
         fixed_depth_mode: Some(DepthTextureMode::Luminance),
         colour_luminance: true,
         colour_note: Some("SGIX_shadow defines its operators \"only for textures with internal format DEPTH_COMPONENT\"; the bypass is ARB_shadow's (issue 5)"),
-        vertex_base_texture: false,
+        non_fragment_base_texture: false,
         readings: if ambient { READINGS_AMBIENT } else { READINGS },
     }
 }

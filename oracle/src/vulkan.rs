@@ -134,7 +134,7 @@ pub fn rules() -> Rules {
         fixed_depth_mode: None,
         colour_luminance: false,
         colour_note: None,
-        vertex_base_texture: false,
+        non_fragment_base_texture: false,
         readings: &[Reading {
             id: "vk-filter-linear-bit",
             other: None,

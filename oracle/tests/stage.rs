@@ -1,7 +1,7 @@
 //! The vertex stage (GLSL 4.60 / GLSL ES 3.20 §8.9): "Other shaders operate as though the base
 //! level-of-detail were computed as zero" (reading A, the spec value) and "If it is mipmapped and
 //! running in a non-fragment shader, then the base texture is used" (reading B), both accepted
-//! (contradiction `vertex-base-texture`).
+//! (contradiction `non-fragment-base-texture`).
 
 mod common;
 
@@ -59,12 +59,12 @@ fn the_vertex_stage_takes_lambda_base_zero_whatever_the_fragment_lambda() {
             // Both readings give level 0 here: the case meets the contradiction, no note names it.
             assert!(contradictions::touching(&c)
                 .iter()
-                .any(|x| x.id == "vertex-base-texture"));
+                .any(|x| x.id == "non-fragment-base-texture"));
             let e = eval(&c).expect;
             assert!(
                 !e.implementation_defined
                     .as_deref()
-                    .is_some_and(|n| n.contains("vertex-base-texture")),
+                    .is_some_and(|n| n.contains("non-fragment-base-texture")),
                 "{:?}",
                 e.implementation_defined
             );
@@ -83,14 +83,14 @@ fn min_lod_one_tells_the_readings_apart_and_both_are_accepted() {
     assert!(
         e.implementation_defined
             .as_deref()
-            .is_some_and(|n| n.contains("vertex-base-texture")),
+            .is_some_and(|n| n.contains("non-fragment-base-texture")),
         "{:?}",
         e.implementation_defined
     );
     assert!(contradictions::touching(&c)
         .iter()
-        .any(|x| x.id == "vertex-base-texture"));
-    let other = evaluate_reading(&c, "vertex-base-texture")
+        .any(|x| x.id == "non-fragment-base-texture"));
+    let other = evaluate_reading(&c, "non-fragment-base-texture")
         .expect("an alternative rule")
         .expect("evaluates");
     assert_eq!(other.expect.spec_value, Some(0.0));
@@ -98,4 +98,27 @@ fn min_lod_one_tells_the_readings_apart_and_both_are_accepted() {
     let mut c = chain(Spec::Gl46, Stage::Vertex, 2.0);
     c.sampler.lod_bias = 1.0;
     assert_eq!((value(&c), accepts(&c)), (1.0, (true, true)));
+}
+
+#[test]
+fn the_compute_stage_reads_the_same_sentences_as_the_vertex_stage() {
+    // "Other shaders": a compute shader as much as a vertex shader (GLSL 4.60 / GLSL ES 3.20 §8.9).
+    for spec in [Spec::Gl46, Spec::Gles32] {
+        for lod in [0.5, 1.0, 2.0] {
+            let c = chain(spec, Stage::Compute, lod);
+            assert_eq!(value(&c), 0.0, "{spec} λ {lod}");
+            assert_eq!(accepts(&c), (true, false), "{spec} λ {lod}: level 0 only");
+        }
+    }
+    // MIN_LOD 1: reading A's level 1 and the base texture, both accepted and named.
+    let mut c = chain(Spec::Gles32, Stage::Compute, 2.0);
+    c.sampler.min_lod = 1.0;
+    assert_eq!((value(&c), accepts(&c)), (1.0, (true, true)));
+    let e = eval(&c).expect;
+    let cites = e.citations.join(" ");
+    assert!(cites.contains("GLSL ES 3.20 §8.9"), "{cites}");
+    assert!(
+        !cites.contains("GLSL ES 3.00 §8.8"),
+        "ES 3.00 has no compute shader: {cites}"
+    );
 }

@@ -135,6 +135,16 @@ impl GlInfo {
             self.glsl >= 400
         }
     }
+    /// Compute shaders (GLSL 4.30 §2.6 "Compute Processor", GLSL ES 3.10) with image stores of
+    /// an RGBA32F image: GL 4.3, ES 3.1 (ARB_compute_shader alone does not give GLSL 4.30's
+    /// `#version`, which the compute-stage program is written in).
+    pub fn compute(&self) -> bool {
+        if self.es {
+            self.at_least(3, 1) && self.glsl >= 310
+        } else {
+            self.at_least(4, 3) && self.glsl >= 430
+        }
+    }
     /// DEPTH_STENCIL_TEXTURE_MODE: GL 4.3 or ARB_stencil_texturing; ES 3.1.
     pub fn stencil_texturing(&self) -> bool {
         if self.es {

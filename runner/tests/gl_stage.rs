@@ -52,7 +52,7 @@ fn min_lod_one_in_the_vertex_stage_is_reading_a_or_b() {
     // The same chain with TEXTURE_MIN_LOD 1: λ_base 0 clamped to 1 selects level 1 (r = 1,
     // reading A, GLSL 4.60 §8.9 "as though the base level-of-detail were computed as zero");
     // "the base texture is used" reads level 0 (r = 0, reading B). Nothing else is accepted;
-    // which one each driver takes is printed (contradiction `vertex-base-texture`).
+    // which one each driver takes is printed (contradiction `non-fragment-base-texture`).
     for (ctx, spec, apis) in CONTEXTS {
         for b in backends(ctx, false) {
             let Some(mut s) = Session::start(&b) else {

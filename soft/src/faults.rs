@@ -155,6 +155,9 @@ faults! {
     /// "Other shaders operate as though the base level-of-detail were computed as zero" (a unit
     /// that runs its fragment LOD path for every stage).
     VertexLodFromDerivatives = "vertex-lod-from-derivatives",
+    /// The same in a compute shader: the compute-stage lookup given the fragment shader's λ_base
+    /// (GLSL 4.60 / GLSL ES 3.20 §8.9 names every stage but the fragment one alike).
+    ComputeLodFromDerivatives = "compute-lod-from-derivatives",
     // --- unit state: swizzle, seamless enable, sampler objects (GL 3.2 / 3.3, ES 3.0) ---
     /// TEXTURE_SWIZZLE_* ignored (the unswizzled base colour returned).
     SwizzleIgnored = "swizzle-ignored",

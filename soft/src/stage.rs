@@ -18,24 +18,31 @@ pub(crate) fn lambda_base(l: &Lookup, f: Faults) -> f32 {
         Stage::Fragment => l.lod as f32,
         // The seeded fault: the λ the fragment shader would have computed from derivatives.
         Stage::Vertex if f.has(Fault::VertexLodFromDerivatives) => l.lod as f32,
-        Stage::Vertex => 0.0,
+        Stage::Compute if f.has(Fault::ComputeLodFromDerivatives) => l.lod as f32,
+        Stage::Vertex | Stage::Compute => 0.0,
     }
 }
 
 /// A vertex-stage lookup exists on the GLSL paths whose language has the lookup functions in
 /// the vertex shader (GLSL 1.20 §8.7 "available to both vertex and fragment shaders", GLSL 1.30+,
-/// GLSL ES 3.00+), never with a bias argument.
+/// GLSL ES 3.00+), a compute-stage one where the language has compute shaders (GLSL 4.30, GLSL
+/// ES 3.10); neither with a bias argument.
 pub(crate) fn check(spec: Spec, api: ApiPath, l: &Lookup) -> Result<(), SoftError> {
     if l.stage == Stage::Fragment {
         return Ok(());
     }
-    if !matches!(
-        api,
-        ApiPath::Glsl120 | ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300
-    ) {
+    let has_stage = match l.stage {
+        // GLSL 4.30 §2.6 "Compute Processor", GLSL ES 3.10: no compute shader before them.
+        Stage::Compute => matches!(api, ApiPath::GlslCore | ApiPath::Es300),
+        _ => matches!(
+            api,
+            ApiPath::Glsl120 | ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300
+        ),
+    };
+    if !has_stage {
         return Err(SoftError::Undefined {
             spec,
-            what: "a vertex-stage lookup on a path without a vertex shader lookup function",
+            what: "a lookup in a shader stage the path's shading language does not have",
         });
     }
     if l.bias != 0.0 {

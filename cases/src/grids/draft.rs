@@ -144,9 +144,12 @@ impl Draft {
             // Uniforms and flat inputs: GLSL 1.30+, GLSL ES 3.00+ (`validate::DELIVERY_PATHS`).
             api.retain(|a| validate::DELIVERY_PATHS.contains(a));
         }
-        if !self.lookup.stage.is_fragment() {
+        match self.lookup.stage {
+            Stage::Fragment => {}
             // A vertex-shader lookup: GLSL 1.20+, GLSL ES 3.00+ (`validate::STAGE_PATHS`).
-            api.retain(|a| validate::STAGE_PATHS.contains(a));
+            Stage::Vertex => api.retain(|a| validate::STAGE_PATHS.contains(a)),
+            // A compute shader: GLSL 4.30, GLSL ES 3.10 (`validate::COMPUTE_PATHS`).
+            Stage::Compute => api.retain(|a| validate::COMPUTE_PATHS.contains(a)),
         }
         Case {
             sweep: vec![],

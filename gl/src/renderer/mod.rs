@@ -24,7 +24,7 @@ use crate::programs::{Compiled, ProgramCache};
 use crate::texture;
 use crate::WorkerError;
 use glow::HasContext;
-use shadowcheck_model::{ApiPath, Target, Texels};
+use shadowcheck_model::{ApiPath, Stage, Target, Texels};
 use shadowcheck_plan::layout::{pixel, CAPACITY, FB_SIZE};
 use shadowcheck_plan::shaders::{self, arbfp_unit_weights, ARBFP_WEIGHTS, UNIT_ATTRIB};
 use shadowcheck_plan::units::{self as plan_units, ProgramKey};
@@ -41,6 +41,9 @@ pub struct Renderer {
     pub info: GlInfo,
     pub(crate) legacy: Option<Legacy>,
     pub(crate) fbo: glow::Framebuffer,
+    /// The framebuffer's RGBA32F colour texture: the image a compute-stage lookup stores its
+    /// result in (image unit 0, `shaders::stage`).
+    pub(crate) colour: glow::Texture,
     pub(crate) vao: glow::VertexArray,
     /// The per-case values of batched draws (`batched.rs`) and the vertex array reading them as
     /// vertex attributes; created when a batch first needs them.
@@ -133,7 +136,8 @@ impl Renderer {
         info: GlInfo,
         legacy: Option<Legacy>,
     ) -> Result<Renderer, WorkerError> {
-        let fbo = texture::rgba32f_framebuffer(&gl, FB_SIZE).map_err(WorkerError::Gl)?;
+        let (fbo, colour) =
+            texture::rgba32f_framebuffer(&gl, FB_SIZE, info.compute()).map_err(WorkerError::Gl)?;
         gl.bind_texture(glow::TEXTURE_2D, None);
         let vao = gl.create_vertex_array().map_err(WorkerError::Gl)?;
         gl.bind_vertex_array(Some(vao));
@@ -153,6 +157,7 @@ impl Renderer {
             info,
             legacy,
             fbo,
+            colour,
             vao,
             params: None,
             // The colour texture's contents are undefined until the first clear.
@@ -237,6 +242,29 @@ impl Renderer {
         gl.viewport(vx, vy, vw, vh);
         let centre = [x as f32 + 0.5, y as f32 + 0.5];
         match compiled {
+            Compiled::Glsl(p) if plan.key.stage == Stage::Compute => {
+                // One invocation stores the result at the slot's pixel of the colour texture
+                // (image unit 0); the barrier makes the store visible to the framebuffer reads
+                // and clears that follow (GL 4.6 §7.13.2, MemoryBarrier).
+                gl.use_program(Some(p.program));
+                gl.bind_image_texture(
+                    0,
+                    Some(self.colour),
+                    0,
+                    false,
+                    0,
+                    glow::WRITE_ONLY,
+                    glow::RGBA32F,
+                );
+                if units > 1 {
+                    gl.uniform_1_i32(p.u_unit.as_ref(), unit as i32);
+                }
+                gl.uniform_4_f32_slice(p.u_p.as_ref(), &plan.p);
+                gl.uniform_1_f32(p.u_x.as_ref(), plan.x);
+                gl.uniform_2_i32(p.u_at.as_ref(), x, y);
+                gl.dispatch_compute(1, 1, 1);
+                gl.memory_barrier(glow::ALL_BARRIER_BITS);
+            }
             Compiled::Glsl(p) => {
                 gl.use_program(Some(p.program));
                 if units > 1 {

@@ -62,6 +62,11 @@ pub const STAGE_PATHS: [ApiPath; 4] = [
     ApiPath::Es300,
 ];
 
+/// The API paths that have a compute shader: the core path (GL 4.3, GLSL 4.30 §2.6 "Compute
+/// Processor") and the ES path (ES 3.1, GLSL ES 3.10); the context must offer them
+/// (`shadowcheck-plan`). The compatibility paths' languages (GLSL 1.20 / 1.30) have none.
+pub const COMPUTE_PATHS: [ApiPath; 2] = [ApiPath::GlslCore, ApiPath::Es300];
+
 /// A lookup outside the fragment stage: on a path that has it, never with a bias (GLSL 4.60 /
 /// GLSL ES 3.20 §8.9: "The bias parameter is not accepted in any other shader stage").
 pub(super) fn validate_stage(case: &Case) -> Result<(), ModelError> {
@@ -70,14 +75,22 @@ pub(super) fn validate_stage(case: &Case) -> Result<(), ModelError> {
     if st == Stage::Fragment {
         return Ok(());
     }
-    if let Some(api) = case.api.iter().find(|a| !STAGE_PATHS.contains(a)) {
+    let (paths, which): (&[ApiPath], &str) = if st == Stage::Compute {
+        (
+            &COMPUTE_PATHS,
+            "the GLSL 4.30+ and GLSL ES 3.10+ paths only (core, es300)",
+        )
+    } else {
+        (
+            &STAGE_PATHS,
+            "the GLSL 1.20+ and GLSL ES 3.00+ paths only (glsl120, glsl130, core, es300)",
+        )
+    };
+    if let Some(api) = case.api.iter().find(|a| !paths.contains(a)) {
         return Err(invalid(
             case,
             "lookup.stage",
-            format!(
-                "stage `{st}` is drawn on the GLSL 1.20+ and GLSL ES 3.00+ paths only (glsl120, glsl130, core, es300), not on `{}`",
-                api.key()
-            ),
+            format!("stage `{st}` is drawn on {which}, not on `{}`", api.key()),
         ));
     }
     if l.bias != 0.0 {

@@ -264,6 +264,21 @@ fn stage_is_left_out_when_fragment_and_takes_no_bias_outside_it() {
         e.contains("lookup.bias") && e.contains("not accepted in any other shader stage"),
         "{e}"
     );
+    // A compute lookup: the GLSL 4.30 / GLSL ES 3.10 paths only (no compute shader in GLSL
+    // 1.20 / 1.30), never with a bias.
+    let mut c = case();
+    c.lookup.stage = Stage::Compute;
+    c.api = vec![ApiPath::GlslCore, ApiPath::Es300];
+    validate(&c).unwrap();
+    assert!(serde_json::to_string(&c)
+        .unwrap()
+        .contains("\"stage\":\"compute\""));
+    c.lookup.bias = 0.25;
+    assert!(validate(&c).is_err());
+    c.lookup.bias = 0.0;
+    c.api = vec![ApiPath::GlslCore, ApiPath::Glsl130];
+    let e = validate(&c).unwrap_err().to_string();
+    assert!(e.contains("`glsl130`") && e.contains("GLSL 4.30"), "{e}");
     // Only the paths with a vertex-shader lookup: not the fixed function, not Vulkan.
     for api in [ApiPath::FixedFunction, ApiPath::Vulkan] {
         let mut c = case();

@@ -59,7 +59,7 @@ pub(super) fn lod(e: &mut Eval, rules: &Rules, case: &Case) -> Lod {
         "GL 4.6 §8.14.1, §8.14.3 (8.14)-(8.16), §8.15",
     );
     let other = super::stage::other_picks(e, rules, case, spec_pick);
-    if rules.vertex_base_texture {
+    if rules.non_fragment_base_texture {
         if let Some(&b) = other.first() {
             spec_pick = b;
         }

@@ -13,7 +13,7 @@
 //!   the minification filter's filtering within a level (the mipmapped filter with its level
 //!   fixed) are accepted.
 //!
-//! Both are accepted and named (contradiction `vertex-base-texture`); `Rules::vertex_base_texture`
+//! Both are accepted and named (contradiction `non-fragment-base-texture`); `Rules::non_fragment_base_texture`
 //! is reading B as the spec value, for `explain`.
 
 use super::Eval;
@@ -22,7 +22,7 @@ use crate::rules::Rules;
 use shadowcheck_model::{ApiPath, Case, Filter, Sampler, Stage};
 
 /// The contradiction's id.
-pub(super) const READING: &str = "vertex-base-texture";
+pub(super) const READING: &str = "non-fragment-base-texture";
 
 /// The section that says "as though the base level-of-detail were computed as zero" (reading A):
 /// GLSL 4.60 §8.9, GLSL ES 3.20 §8.9 (the earlier languages say only that it is not computed).
@@ -36,12 +36,15 @@ fn cite_a(case: &Case) -> &'static str {
 
 /// The sections of the case's paths' languages that say "the base texture is used" (reading B).
 fn cite_b(case: &Case) -> String {
+    // A compute shader exists from GLSL 4.30 and GLSL ES 3.10 on: the languages' current texts.
+    let compute = case.lookup.stage == Stage::Compute;
     let mut v: Vec<&str> = case
         .api
         .iter()
         .map(|a| match a {
             ApiPath::Glsl120 => "GLSL 1.20 §8.7",
             ApiPath::Glsl130 => "GLSL 1.30 §8.7",
+            ApiPath::Es300 if compute => "GLSL ES 3.20 §8.9",
             ApiPath::Es300 => "GLSL ES 3.00 §8.8, GLSL ES 3.20 §8.9",
             _ => "GLSL 4.60 §8.9",
         })
@@ -104,7 +107,7 @@ pub(super) fn base_texture_picks(s: &Sampler) -> Vec<Pick> {
 
 /// The picks reading B adds for this case (none where it does not apply), with a step and a note
 /// naming the readings where they add a pick reading A does not make; under
-/// `Rules::vertex_base_texture` reading B is the spec's own pick (the magnification filter's).
+/// `Rules::non_fragment_base_texture` reading B is the spec's own pick (the magnification filter's).
 pub(super) fn other_picks(e: &mut Eval, rules: &Rules, case: &Case, spec: Pick) -> Vec<Pick> {
     if !touches(case) {
         return Vec::new();
@@ -113,7 +116,7 @@ pub(super) fn other_picks(e: &mut Eval, rules: &Rules, case: &Case, spec: Pick) 
     if picks.iter().all(|p| *p == spec) {
         return Vec::new();
     }
-    let what = if rules.vertex_base_texture {
+    let what = if rules.non_fragment_base_texture {
         "reading B (the spec value here)"
     } else {
         "the other reading"

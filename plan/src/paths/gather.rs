@@ -64,8 +64,9 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
     }
     // λ plays no part; a case with a level of detail draws with the coordinate varying by its
     // gradients (unbatched), so that a level chosen by λ would show.
+    // Outside the fragment stage there are no derivatives: the case's P alone.
     let lod = (l.lod + l.bias) as f32;
-    let derivs = lod != 0.0;
+    let derivs = lod != 0.0 && l.stage == shadowcheck_model::Stage::Fragment;
     let key = ShaderKey {
         path,
         target: t,
@@ -77,7 +78,7 @@ pub(super) fn plan(path: ApiPath, case: &Case, l: &Lookup) -> Result<Plan, Strin
         offset: if variable { [0, 0] } else { offset },
         gather: Some(call),
         delivery: l.delivery,
-        stage: shadowcheck_model::Stage::Fragment,
+        stage: l.stage,
     };
     let c = l.coord.map(|v| v as f32);
     let dref = l.dref as f32;

@@ -80,8 +80,9 @@ pub struct ShaderKey {
     /// fragments, `shaders::per_fragment`).
     pub delivery: Delivery,
     /// The shader stage of the lookup (the case's [`Lookup::stage`]): `vertex` runs the lookup in
-    /// the vertex shader, which passes its result to the fragment shader as a flat output
-    /// (`shaders::stage`); one case per draw.
+    /// the vertex shader, which passes its result to the fragment shader as a flat output;
+    /// `compute` in a compute shader of one invocation, which stores it in the result image
+    /// (`shaders::stage`); one case per draw or dispatch.
     pub stage: Stage,
 }
 
@@ -163,6 +164,16 @@ pub fn plan_for(
     if offsets && info.es && info.glsl < 320 {
         return Err("textureGatherOffsets needs GLSL ES 3.20 (GLSL ES 3.10 has textureGather and textureGatherOffset only)".into());
     }
+    if lookup.stage == Stage::Compute && !info.compute() {
+        return Err(format!(
+            "a compute-stage lookup needs GL 4.3 / GLSL 4.30 or ES 3.1 / GLSL ES 3.10 (this context: {} {}.{}, GLSL{} {})",
+            if info.es { "ES" } else { "GL" },
+            info.version.0,
+            info.version.1,
+            if info.es { " ES" } else { "" },
+            info.glsl
+        ));
+    }
     let plan = plan_in(path, case, lookup, info.form, info.shadow_lod())?;
     if plan.key.gather == Some(GatherCall::Variable) && info.glsl < if info.es { 320 } else { 400 }
     {
@@ -204,12 +215,16 @@ pub fn plan_in(
     }
     let kind = sampler_kind(case);
     let offset = texel_offset(path, case.texture.target, l)?;
-    let (form, how) = if l.stage == Stage::Vertex {
-        // The implicit-LOD function, whose λ_base is 0 in the vertex shader (GLSL 4.60 §8.9):
-        // the case's `lod` is the fragment shader's, which this draw does not realize.
+    let (form, how) = if l.stage != Stage::Fragment {
+        // The implicit-LOD function, whose λ_base is 0 outside the fragment shader (GLSL 4.60
+        // §8.9): the case's `lod` is the fragment shader's, which this draw does not realize.
         (
             LodForm::Implicit(false),
-            "implicit LOD in the vertex shader",
+            if l.stage == Stage::Vertex {
+                "implicit LOD in the vertex shader"
+            } else {
+                "implicit LOD in a compute shader"
+            },
         )
     } else {
         choose_form(path, case, l, kind, offset, prefer, shadow_lod)?
@@ -259,14 +274,24 @@ pub fn plan_in(
     })
 }
 
-/// What the vertex-stage program draws: a filtered lookup (no gather) with literal values, on a
-/// path whose language has the lookup in the vertex shader (`validate::STAGE_PATHS`).
+/// What the programs of the other stages draw (`shaders::stage`): literal values, on a path
+/// whose language has the stage (`validate::STAGE_PATHS`, `validate::COMPUTE_PATHS`); a vertex
+/// shader a filtered lookup, a compute shader a filtered lookup or a gather.
 fn stage_drawable(path: ApiPath, l: &Lookup) -> Result<(), String> {
-    if !shadowcheck_model::validate::STAGE_PATHS.contains(&path) {
+    use shadowcheck_model::validate::{COMPUTE_PATHS, STAGE_PATHS};
+    let (paths, which) = if l.stage == Stage::Compute {
+        (&COMPUTE_PATHS[..], "the GLSL 4.30 / GLSL ES 3.10")
+    } else {
+        (&STAGE_PATHS[..], "the GLSL 1.20+ / GLSL ES 3.00")
+    };
+    if !paths.contains(&path) {
         return Err(format!(
-            "stage `{}` is drawn on the GLSL 1.20+ / GLSL ES 3.00 paths only, not on {path}",
+            "stage `{}` is drawn on {which} paths only, not on {path}",
             l.stage
         ));
+    }
+    if l.stage == Stage::Compute && l.delivery.is_literal() {
+        return Ok(());
     }
     if l.gather.is_some() || !l.delivery.is_literal() {
         return Err(format!(

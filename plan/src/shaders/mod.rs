@@ -231,8 +231,16 @@ pub fn glsl(
     }
     let lang = language(info, key);
     let units = units.max(1);
-    if key.stage == Stage::Vertex {
-        return stage::program(&lang, key, units);
+    match key.stage {
+        Stage::Vertex => return stage::program(&lang, key, units),
+        // No draw program: a compute-stage key's program is one compute shader
+        // (`compute_glsl`); a caller that draws it anyway gets a compile error saying so.
+        Stage::Compute => {
+            let fs = "#error a compute-stage key has no draw program: shaders::compute_glsl
+";
+            return (fs.to_string(), fs.to_string());
+        }
+        Stage::Fragment => {}
     }
     let vs = match key.delivery {
         Delivery::Flat | Delivery::PerFragment if batched.is_none() => {
@@ -241,6 +249,12 @@ pub fn glsl(
         _ => vertex_shader(&lang, batched, units),
     };
     (vs, fragment_shader(&lang, key, batched, units))
+}
+
+/// The compute shader of a compute-stage key ([`Stage::Compute`], `stage.rs`) on `units`
+/// samplers; `None` for a key of another stage (its program is [`glsl`]'s).
+pub fn compute_glsl(info: &GlInfo, key: &ShaderKey, units: usize) -> Option<String> {
+    (key.stage == Stage::Compute).then(|| stage::compute(&language(info, key), key, units.max(1)))
 }
 
 /// What a GLSL dialect's program text starts with and how it names its inputs and result.
@@ -264,6 +278,15 @@ fn language(info: &GlInfo, key: &ShaderKey) -> Language {
     let cube_array = key.target == Target::CubeArray;
     let rect = key.target == Target::Rect;
     let (header, vin, fout, out_decl) = match key.path {
+        ApiPath::GlslCore if key.stage == Stage::Compute => {
+            // Compute shaders and image stores: GLSL 4.30 (`GlInfo::compute`).
+            (
+                "#version 430 core\n".to_string(),
+                "in",
+                "o",
+                "out vec4 o;\n",
+            )
+        }
         ApiPath::GlslCore => {
             let v = if info.glsl >= 400 {
                 "#version 400 core\n"
@@ -287,8 +310,10 @@ fn language(info: &GlInfo, key: &ShaderKey) -> Language {
             (h, "in", "o", "out vec4 o;\n")
         }
         ApiPath::Es300 => {
-            let mut h = if key.gather.is_some() && !cube_array {
-                // Shadow gather: GLSL ES 3.10 (textureGatherOffsets: 3.20, `paths::plan_for`).
+            // Shadow gather and compute shaders: GLSL ES 3.10.
+            let es31 = key.gather.is_some() || key.stage == Stage::Compute;
+            let mut h = if es31 && !cube_array {
+                // textureGatherOffsets: 3.20 (`paths::plan_for`).
                 if info.glsl >= 320 {
                     "#version 320 es\n".to_string()
                 } else {
@@ -564,7 +589,7 @@ pub fn arbfp_unit_weights(unit: usize, units: usize) -> Vec<[f32; 4]> {
 }
 
 mod delivery;
-mod stage;
+pub mod stage;
 #[cfg(test)]
 mod tests;
 pub mod vulkan;

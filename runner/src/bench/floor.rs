@@ -133,7 +133,7 @@ unsafe fn draw_loop(
         return Err(format!("wrong driver: GL_RENDERER is `{renderer}`"));
     }
     // The result framebuffer, left bound for the draws below.
-    shadowcheck_gl::texture::rgba32f_framebuffer(gl, size)?;
+    shadowcheck_gl::texture::rgba32f_framebuffer(gl, size, false)?;
     // Depth texture: pseudo-random 24-bit values, NEAREST, LEQUAL, REPEAT.
     let n = BENCH_TEXTURE as i32;
     let mut x = 0x9E37_79B9u32;

@@ -85,8 +85,9 @@ pub struct Args {
     /// es300 paths; changes no expectation, the derivation says why).
     #[arg(long, default_value = "literal")]
     delivery: String,
-    /// The shader stage of the lookup: fragment, vertex (glsl120, glsl130, core, es300 paths; in
-    /// the vertex stage λ_base is 0 and --lod is the fragment shader's, GLSL 4.60 §8.9).
+    /// The shader stage of the lookup: fragment, vertex (glsl120, glsl130, core, es300 paths) or
+    /// compute (core, es300); outside the fragment stage λ_base is 0 and --lod is the fragment
+    /// shader's (GLSL 4.60 §8.9).
     #[arg(long, default_value = "fragment")]
     stage: String,
     /// TEXTURE_COMPARE_FAIL_VALUE_ARB / SHADOW_AMBIENT_SGIX.

@@ -104,6 +104,9 @@ pub fn about(f: Fault) -> &'static str {
         F::VertexLodFromDerivatives => {
             "a vertex-shader texture() given the fragment shader's λ_base, not 0 (GLSL 4.60 §8.9)"
         }
+        F::ComputeLodFromDerivatives => {
+            "a compute-shader texture() given the fragment shader's λ_base, not 0 (GLSL 4.60 §8.9)"
+        }
         F::WrongInitialCompareFunc => {
             "a new texture's TEXTURE_COMPARE_FUNC is LESS, not LEQUAL (GL 4.6 Table 23.15): seen by state cases"
         }

@@ -135,9 +135,11 @@ pub(super) fn gather_offset_from_a_uniform() -> Case {
 
 /// `mips` looked up in the vertex shader with a fragment λ_base of 1: λ_base is 0 there (GLSL
 /// 4.60 §8.9), so level 0 (Dt 0) fails LEQUAL ½; the fragment λ selects level 1 (Dt 1), which passes.
-pub(super) fn vertex_stage_mips() -> Case {
-    let mut c = mips(Filter::NearestMipmapNearest, 1.0);
-    c.lookup.stage = Stage::Vertex;
+/// `mips` at the fragment λ 1 drawn in stage `stage` (λ_base 0 there, GLSL 4.60 §8.9), on the
+/// core path (the one path with vertex and compute lookups alike).
+pub(super) fn stage_mips(stage: Stage) -> Case {
+    let mut c = with_api(mips(Filter::NearestMipmapNearest, 1.0), ApiPath::GlslCore);
+    c.lookup.stage = stage;
     c
 }
 

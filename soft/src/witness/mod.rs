@@ -85,7 +85,8 @@ pub fn witness(fault: Fault) -> (Case, ApiPath) {
         Fault::GatherOrderRotated | Fault::GatherIgnoresRef => gather4(),
         Fault::GatherUsesLodLevel => gather_at_lod_one(),
         Fault::VariableGatherOffsetZero => gather_offset_from_a_uniform(),
-        Fault::VertexLodFromDerivatives => vertex_stage_mips(),
+        Fault::VertexLodFromDerivatives => stage_mips(Stage::Vertex),
+        Fault::ComputeLodFromDerivatives => stage_mips(Stage::Compute),
         // `gather4` compares to (1, 1, 0, 0); TEXTURE_SWIZZLE_R = ALPHA takes the post-swizzle
         // R of each texel's (Rt, 0, 0, 1), i.e. 1 for every texel (GL 4.6 §8.14.2): (1, 1, 1, 1).
         // The faulty unit returns the unswizzled (1, 1, 0, 0).
@@ -161,6 +162,7 @@ mod tests {
         assert_eq!(r(Fault::GatherUsesLodLevel), [0.0; 4]); // level base, not λ's level 1
         assert_eq!(r(Fault::VariableGatherOffsetZero), [1.0, 1.0, 1.0, 0.0]);
         assert_eq!(r(Fault::VertexLodFromDerivatives)[0], 0.0); // λ_base 0: level 0 (the fault: level 1)
+        assert_eq!(r(Fault::ComputeLodFromDerivatives)[0], 0.0); // the same in a compute shader
         assert_eq!(r(Fault::OffsetInBaseLevelTexels)[0], 0.0);
         assert_eq!(r(Fault::OffsetAfterWrap)[0], 0.0);
         // Swizzle, seamless enable, sampler object (GL 4.6 §15.2.1, §8.13.1, §8.17.1).
