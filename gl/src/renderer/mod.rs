@@ -245,7 +245,12 @@ impl Renderer {
             Compiled::Glsl(p) if plan.key.stage == Stage::Compute => {
                 // One invocation stores the result at the slot's pixel of the colour texture
                 // (image unit 0); the barrier makes the store visible to the framebuffer reads
-                // and clears that follow (GL 4.6 §7.13.2, MemoryBarrier).
+                // and clears that follow (GL 4.6 / ES 3.2, "Shader Memory Access Synchronization":
+                // MemoryBarrier with FRAMEBUFFER_BARRIER_BIT).
+                // The framebuffer is unbound around the dispatch: softpipe (Mesa 22.3.6) keeps
+                // the texture's framebuffer tiles cached across the barrier and would read back
+                // what was there before the store (reports/README.md, "compute results").
+                gl.bind_framebuffer(glow::FRAMEBUFFER, None);
                 gl.use_program(Some(p.program));
                 gl.bind_image_texture(
                     0,
@@ -264,6 +269,7 @@ impl Renderer {
                 gl.uniform_2_i32(p.u_at.as_ref(), x, y);
                 gl.dispatch_compute(1, 1, 1);
                 gl.memory_barrier(glow::ALL_BARRIER_BITS);
+                gl.bind_framebuffer(glow::FRAMEBUFFER, Some(self.fbo));
             }
             Compiled::Glsl(p) => {
                 gl.use_program(Some(p.program));
