@@ -18,6 +18,7 @@ fn info(api: ContextApi, version: (u32, u32), glsl: u32, exts: &[&str]) -> GlInf
         renderer: "test".into(),
         version_string: "test".into(),
         extensions: exts.iter().map(|e| e.to_string()).collect::<HashSet<_>>(),
+        version_override: false,
         form: LookupForm::Auto,
     }
 }

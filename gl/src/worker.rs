@@ -142,6 +142,10 @@ impl Worker {
             version_string,
             extensions: gl.supported_extensions().clone(),
             form: name.form,
+            // The driver's environment ([`BackendName::env`]) or the user's.
+            version_override: ["MESA_GL_VERSION_OVERRIDE", "MESA_GLES_VERSION_OVERRIDE"]
+                .iter()
+                .any(|k| std::env::var_os(k).is_some()),
         };
         let legacy = if info.compat {
             Some(Legacy::load(&loader, info.arbfp_shadow())?)

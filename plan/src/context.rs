@@ -94,6 +94,10 @@ pub struct GlInfo {
     pub extensions: HashSet<String>,
     /// The preferred lookup function (from the backend name).
     pub form: LookupForm,
+    /// The version is raised by MESA_GL_VERSION_OVERRIDE / MESA_GLES_VERSION_OVERRIDE above what
+    /// the driver claims (`egl:zink+swiftshader:core|es3`, `gl/src/names.rs`): a feature of the
+    /// raised version that the driver does not claim by extension is not used ([`Self::compute`]).
+    pub version_override: bool,
 }
 
 impl GlInfo {
@@ -137,8 +141,14 @@ impl GlInfo {
     }
     /// Compute shaders (GLSL 4.30 §2.6 "Compute Processor", GLSL ES 3.10) with image stores of
     /// an RGBA32F image: GL 4.3, ES 3.1 (ARB_compute_shader alone does not give GLSL 4.30's
-    /// `#version`, which the compute-stage program is written in).
+    /// `#version`, which the compute-stage program is written in). Under a version override only
+    /// where the driver claims ARB_compute_shader (ES has no such extension): zink on SwiftShader
+    /// (native GL 2.1 / ES 2.0) does not, and its overridden GL 4.6 core context refuses
+    /// glCreateShader(GL_COMPUTE_SHADER).
     pub fn compute(&self) -> bool {
+        if self.version_override && (self.es || !self.has_ext("GL_ARB_compute_shader")) {
+            return false;
+        }
         if self.es {
             self.at_least(3, 1) && self.glsl >= 310
         } else {

@@ -50,6 +50,7 @@ pub fn info(api: crate::ContextApi, glsl: u32) -> crate::GlInfo {
         renderer: String::new(),
         version_string: String::new(),
         extensions: Default::default(),
+        version_override: false,
         form: Default::default(),
     }
 }

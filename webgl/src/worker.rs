@@ -155,6 +155,7 @@ impl WebglWorker {
             version_string: page.version.clone(),
             extensions: Default::default(),
             form: LookupForm::Auto,
+            version_override: false,
         };
         let caps = capabilities(&page.enabled, &page.extensions);
         Ok(WebglWorker {

@@ -165,6 +165,12 @@ pub fn plan_for(
         return Err("textureGatherOffsets needs GLSL ES 3.20 (GLSL ES 3.10 has textureGather and textureGatherOffset only)".into());
     }
     if lookup.stage == Stage::Compute && !info.compute() {
+        if info.version_override {
+            return Err(format!(
+                "a compute-stage lookup needs compute shaders, which this context's driver does not claim: its version ({}) is raised by MESA_GL(ES)_VERSION_OVERRIDE and it does not expose GL_ARB_compute_shader",
+                info.version_string
+            ));
+        }
         return Err(format!(
             "a compute-stage lookup needs GL 4.3 / GLSL 4.30 or ES 3.1 / GLSL ES 3.10 (this context: {} {}.{}, GLSL{} {})",
             if info.es { "ES" } else { "GL" },

@@ -217,6 +217,16 @@ mod tests {
         assert!(e.contains("GL 4.3") && e.contains("GLSL 420"), "{e}");
         assert!(plan_for(&info(ContextApi::Es3, 300), ApiPath::Es300, &c, &c.lookup).is_err());
         assert!(plan(ApiPath::Glsl130, &c).is_err());
+        // A version raised by an override: compute only where the driver claims it.
+        let mut raised = info(ContextApi::Core, 460);
+        raised.version_override = true;
+        let e = plan_for(&raised, ApiPath::GlslCore, &c, &c.lookup).unwrap_err();
+        assert!(e.contains("GL_ARB_compute_shader"), "{e}");
+        raised.extensions.insert("GL_ARB_compute_shader".into());
+        assert!(plan_for(&raised, ApiPath::GlslCore, &c, &c.lookup).is_ok());
+        let mut raised_es = info(ContextApi::Es3, 310);
+        raised_es.version_override = true;
+        assert!(plan_for(&raised_es, ApiPath::Es300, &c, &c.lookup).is_err());
         // A gather in a compute shader: the case's P, no derivatives.
         c.lookup.gather = Some(shadowcheck_model::Gather { offsets: None });
         let i = info(ContextApi::Core, 460);

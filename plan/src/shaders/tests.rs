@@ -13,6 +13,7 @@ fn info(api: crate::ContextApi, version: (u32, u32), glsl: u32) -> GlInfo {
         renderer: String::new(),
         version_string: String::new(),
         extensions: Default::default(),
+        version_override: false,
         form: Default::default(),
     }
 }

@@ -474,6 +474,7 @@ fn glsl_variants(b: BackendName, plan: &Plan) -> Vec<(u32, String, String)> {
         renderer: String::new(),
         version_string: String::new(),
         extensions: Default::default(),
+        version_override: false,
         form: b.form,
     };
     let (hi, lo) = if es { (320, 300) } else { (400, 330) };

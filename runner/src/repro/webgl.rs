@@ -62,6 +62,7 @@ fn webgl_info() -> GlInfo {
         renderer: String::new(),
         version_string: String::new(),
         extensions: Default::default(),
+        version_override: false,
         form: LookupForm::Auto,
     }
 }

@@ -28,6 +28,7 @@ fn es3() -> GlInfo {
         version_string: String::new(),
         extensions: Default::default(),
         form: LookupForm::Auto,
+        version_override: false,
     }
 }
 
