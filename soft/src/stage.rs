@@ -32,8 +32,12 @@ pub(crate) fn check(spec: Spec, api: ApiPath, l: &Lookup) -> Result<(), SoftErro
         return Ok(());
     }
     let has_stage = match l.stage {
-        // GLSL 4.30 §2.6 "Compute Processor", GLSL ES 3.10: no compute shader before them.
-        Stage::Compute => matches!(api, ApiPath::GlslCore | ApiPath::Es300),
+        // GLSL 4.30 §2.6 "Compute Processor", GLSL ES 3.10: no compute shader before them;
+        // Vulkan's GLCompute execution model; WGSL's compute shader stage.
+        Stage::Compute => matches!(
+            api,
+            ApiPath::GlslCore | ApiPath::Es300 | ApiPath::Vulkan | ApiPath::Wgsl
+        ),
         _ => matches!(
             api,
             ApiPath::Glsl120 | ApiPath::Glsl130 | ApiPath::GlslCore | ApiPath::Es300

@@ -26,7 +26,7 @@ pub fn check_compiler() -> Result<String, VkError> {
 
 static COUNTER: AtomicUsize = AtomicUsize::new(0);
 
-/// The SPIR-V words of `source` for `stage` (`vert` or `frag`).
+/// The SPIR-V words of `source` for `stage` (`vert`, `frag` or `comp`).
 pub fn compile(source: &str, stage: &str) -> Result<Vec<u32>, VkError> {
     let n = COUNTER.fetch_add(1, Ordering::Relaxed);
     let path = std::env::temp_dir().join(format!(
@@ -96,6 +96,26 @@ mod tests {
             let v = compile(&vs, "vert").expect("vertex");
             let f = compile(&fs, "frag").expect("fragment");
             assert_eq!((v[0], f[0]), (0x0723_0203, 0x0723_0203), "SPIR-V magic");
+            // The same lookup, and a gather where the target has one, in a compute shader.
+            let mut c = c;
+            c.lookup.stage = shadowcheck_model::Stage::Compute;
+            let mut keys = vec![paths::plan(ApiPath::Vulkan, &c).expect("compute plan").key];
+            if matches!(t, Target::T2d | Target::Cube | Target::CubeArray) {
+                c.lookup.gather = Some(shadowcheck_model::Gather { offsets: None });
+                keys.push(
+                    paths::plan(ApiPath::Vulkan, &c)
+                        .expect("compute gather")
+                        .key,
+                );
+            }
+            for key in keys {
+                let cs = shaders::vulkan::compute_glsl(&key);
+                assert_eq!(
+                    compile(&cs, "comp").expect("compute")[0],
+                    0x0723_0203,
+                    "{cs}"
+                );
+            }
         }
     }
 }

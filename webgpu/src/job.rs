@@ -90,6 +90,9 @@ pub struct PageAnswer {
 
 /// Plans job `j` on the `wgsl` path, with the module its key compiles to.
 fn plan_job(j: &Job, caps: &DeviceCaps) -> Result<(Plan, String), String> {
+    if j.lookup.stage == shadowcheck_model::Stage::Compute {
+        return Err("the WebGPU worker draws no compute-stage lookup yet".into());
+    }
     let plan = paths::plan_in(ApiPath::Wgsl, j.case, &j.lookup, LookupForm::Auto, false)?;
     if plan.key.target == Target::CubeArray && !caps.cube_array {
         return Err("cube-array texture views are not in WebGPU's compatibility mode (this device has no \"core-features-and-limits\")".into());

@@ -15,7 +15,9 @@
 //!   lookups, and the lookups at cube face edges and corners that a compute shader reaches by
 //!   other code than a fragment shader's: the `seamless` family at level 0 (LINEAR, each edge, a
 //!   corner and inside, seamless on and off), the `cube` family's LINEAR lookups near an edge
-//!   (cube and cube array), and the `gather` family's cube and cube-array gathers.
+//!   (cube and cube array), and the `gather` family's cube and cube-array gathers. Vulkan and
+//!   WebGPU get these cube lookups only (level 0, where every stage selects the same level: the
+//!   WebGPU CTS's compute-only failures are there).
 //!
 //! Ids carry `stage=vertex/` or `stage=compute/` before the family's own tags.
 
@@ -105,20 +107,28 @@ fn in_stage(x: Draft, stage: Stage) -> Draft {
 /// The `stage` cut of spec `d`: the vertex stage on GL 4.6, ES 3.2 and ARB_shadow, the compute
 /// stage on GL 4.6 and ES 3.2.
 pub fn stage(d: &SpecDims) -> Vec<Draft> {
-    if !matches!(d.spec, Spec::Gl46 | Spec::Gles32 | Spec::Arb) {
-        return Vec::new();
-    }
-    let vertex = base(d).into_iter().map(|x| in_stage(x, Stage::Vertex));
-    let compute: Vec<Draft> = if d.spec == Spec::Arb {
-        Vec::new()
-    } else {
-        base(d)
+    match d.spec {
+        Spec::Gl46 | Spec::Gles32 => {
+            let vertex = base(d).into_iter().map(|x| in_stage(x, Stage::Vertex));
+            let compute = base(d)
+                .into_iter()
+                .chain(cube_edges(d))
+                .map(|x| in_stage(x, Stage::Compute));
+            vertex.chain(compute).collect()
+        }
+        Spec::Arb => base(d)
             .into_iter()
-            .chain(cube_edges(d))
+            .map(|x| in_stage(x, Stage::Vertex))
+            .collect(),
+        // Level 0 only: a compute lookup there is `texture()` with an explicit LOD of 0 (SPIR-V
+        // ExplicitLod, GLSL 4.60 §8.9) or textureSampleCompareLevel (WGSL), the same level the
+        // fragment lookups of these cases select.
+        Spec::Vulkan | Spec::WebGpu => cube_edges(d)
+            .into_iter()
             .map(|x| in_stage(x, Stage::Compute))
-            .collect()
-    };
-    vertex.chain(compute).collect()
+            .collect(),
+        _ => Vec::new(),
+    }
 }
 
 /// The texels of one layer, then the same again (a second layer).

@@ -63,9 +63,16 @@ pub const STAGE_PATHS: [ApiPath; 4] = [
 ];
 
 /// The API paths that have a compute shader: the core path (GL 4.3, GLSL 4.30 §2.6 "Compute
-/// Processor") and the ES path (ES 3.1, GLSL ES 3.10); the context must offer them
-/// (`shadowcheck-plan`). The compatibility paths' languages (GLSL 1.20 / 1.30) have none.
-pub const COMPUTE_PATHS: [ApiPath; 2] = [ApiPath::GlslCore, ApiPath::Es300];
+/// Processor") and the ES path (ES 3.1, GLSL ES 3.10), where the context must offer them
+/// (`shadowcheck-plan`); Vulkan (the GLCompute execution model) and WebGPU (WGSL compute shader
+/// stage: `textureSampleCompareLevel` and `textureGatherCompare` "may be invoked in any shader
+/// stage"). The compatibility paths' languages (GLSL 1.20 / 1.30) have none.
+pub const COMPUTE_PATHS: [ApiPath; 4] = [
+    ApiPath::GlslCore,
+    ApiPath::Es300,
+    ApiPath::Vulkan,
+    ApiPath::Wgsl,
+];
 
 /// A lookup outside the fragment stage: on a path that has it, never with a bias (GLSL 4.60 /
 /// GLSL ES 3.20 §8.9: "The bias parameter is not accepted in any other shader stage").
@@ -78,7 +85,7 @@ pub(super) fn validate_stage(case: &Case) -> Result<(), ModelError> {
     let (paths, which): (&[ApiPath], &str) = if st == Stage::Compute {
         (
             &COMPUTE_PATHS,
-            "the GLSL 4.30+ and GLSL ES 3.10+ paths only (core, es300)",
+            "the GLSL 4.30+, GLSL ES 3.10+, Vulkan and WGSL paths only (core, es300, vk, wgsl)",
         )
     } else {
         (

@@ -264,8 +264,8 @@ fn stage_is_left_out_when_fragment_and_takes_no_bias_outside_it() {
         e.contains("lookup.bias") && e.contains("not accepted in any other shader stage"),
         "{e}"
     );
-    // A compute lookup: the GLSL 4.30 / GLSL ES 3.10 paths only (no compute shader in GLSL
-    // 1.20 / 1.30), never with a bias.
+    // A compute lookup: the GLSL 4.30 / GLSL ES 3.10, Vulkan and WGSL paths only (no compute
+    // shader in GLSL 1.20 / 1.30), never with a bias.
     let mut c = case();
     c.lookup.stage = Stage::Compute;
     c.api = vec![ApiPath::GlslCore, ApiPath::Es300];

@@ -25,12 +25,15 @@ use shadowcheck_model::{ApiPath, Case, Filter, Sampler, Stage};
 pub(super) const READING: &str = "non-fragment-base-texture";
 
 /// The section that says "as though the base level-of-detail were computed as zero" (reading A):
-/// GLSL 4.60 §8.9, GLSL ES 3.20 §8.9 (the earlier languages say only that it is not computed).
+/// GLSL 4.60 §8.9, GLSL ES 3.20 §8.9 (the earlier languages say only that it is not computed;
+/// GLSL 4.60 is also the language of Vulkan's shaders, GL_KHR_vulkan_glsl). WGSL has no implicit
+/// level of detail outside the fragment stage: its lookup there is textureSampleCompareLevel,
+/// which "always samples texels from mip level 0" (or a gather, which reads level 0 anyway).
 fn cite_a(case: &Case) -> &'static str {
-    if case.spec == shadowcheck_model::Spec::Gles32 {
-        "GLSL ES 3.20 §8.9"
-    } else {
-        "GLSL 4.60 §8.9"
+    match case.spec {
+        shadowcheck_model::Spec::Gles32 => "GLSL ES 3.20 §8.9",
+        shadowcheck_model::Spec::WebGpu => "WGSL textureSampleCompareLevel",
+        _ => "GLSL 4.60 §8.9",
     }
 }
 
@@ -60,9 +63,14 @@ pub(super) fn lambda_inputs(e: &mut Eval, case: &Case) -> (f64, f64) {
     if l.stage == Stage::Fragment {
         return (l.lod, l.bias);
     }
+    let sentence = if case.spec == shadowcheck_model::Spec::WebGpu {
+        "the lookup is textureSampleCompareLevel, which \"always samples texels from mip level 0\""
+    } else {
+        "\"Other shaders operate as though the base level-of-detail were computed as zero\""
+    };
     e.step(
         format!(
-            "{} stage: \"Other shaders operate as though the base level-of-detail were computed as zero\": λ_base = 0 (a fragment shader would compute {})",
+            "{} stage: {sentence}: λ_base = 0 (a fragment shader would compute {})",
             l.stage, l.lod
         ),
         cite_a(case),

@@ -221,7 +221,21 @@ pub fn plan_in(
     }
     let kind = sampler_kind(case);
     let offset = texel_offset(path, case.texture.target, l)?;
-    let (form, how) = if l.stage != Stage::Fragment {
+    let (form, how) = if l.stage == Stage::Compute && path == ApiPath::Wgsl {
+        // WGSL's one filtered compare outside the fragment stage (WGSL textureSampleCompareLevel:
+        // "may be invoked in any shader stage"), level 0 only.
+        if !wgsl::level_zero_equivalent(case, l) {
+            return Err(format!(
+                "a WGSL compute shader's lookup is textureSampleCompareLevel, which \"always samples texels from mip level 0\": it realizes a case at lod 0 with min_lod <= 0 only (this case: lod {}, min_lod {})",
+                l.lod,
+                case.sampler.in_effect().min_lod
+            ));
+        }
+        (
+            LodForm::Lod,
+            "textureSampleCompareLevel in a compute shader",
+        )
+    } else if l.stage != Stage::Fragment {
         // The implicit-LOD function, whose λ_base is 0 outside the fragment shader (GLSL 4.60
         // §8.9): the case's `lod` is the fragment shader's, which this draw does not realize.
         (

@@ -26,6 +26,30 @@ fn location(name: &str) -> u32 {
         .map_or(0, |a| a.0)
 }
 
+/// The compute shader of a compute-stage key ([`shadowcheck_model::Stage::Compute`]) on the `vk`
+/// path: one invocation (`local_size` 1) does the lookup on `u_tex` (set 0, binding 0) with the
+/// case's values from push constants ([`COMPUTE_PUSH_BYTES`]: `u_p` at offset 0, `u_x` at 16,
+/// `u_at` at 24, §15.9 "Push Constant Interface" with std430-like offsets), and stores the result
+/// with `imageStore` at `u_at`, the slot's pixel, in the result image (set 0, binding 1, an
+/// RGBA32F storage image). `texture()` outside the fragment stage is compiled with an explicit
+/// LOD of 0 (SPIR-V `OpImageSample*ExplicitLod`, `Lod` 0: "as though the base level-of-detail were
+/// computed as zero", GLSL 4.60 §8.9).
+pub fn compute_glsl(key: &ShaderKey) -> String {
+    let call = modern_call(key, "u_tex");
+    let store = if key.kind != SamplerKind::Shadow || key.gather.is_some() {
+        format!("r = vec4({call});")
+    } else {
+        format!("r = vec4({call}, 0.0, 0.0, 1.0);")
+    };
+    format!(
+        "#version 450\nlayout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;\nlayout(set = 0, binding = 0) uniform {} u_tex;\nlayout(set = 0, binding = 1, rgba32f) writeonly uniform image2D u_out;\nlayout(push_constant) uniform PC {{ vec4 u_p; float u_x; ivec2 u_at; }};\nvoid main() {{\n  vec4 p = u_p;\n  vec4 r = vec4(0.0);\n  {store}\n  imageStore(u_out, u_at, r);\n}}\n",
+        sampler_type(key.kind, key.target)
+    )
+}
+
+/// Bytes of the compute shader's push constants: P (16), x (4, padded to 8), the pixel (8).
+pub const COMPUTE_PUSH_BYTES: u32 = 32;
+
 /// The push-constant block of both stages (one `int`, at offset 0).
 const PUSH_CONSTANT: &str = "layout(push_constant) uniform PC { int u_base; };\n";
 

@@ -151,6 +151,9 @@ pub fn program(s: &Subject) -> Result<Program, String> {
             s.api
         ));
     }
+    if s.case.lookup.stage == shadowcheck_model::Stage::Compute {
+        return Err("no Vulkan reproducer for a compute-stage lookup: the reproducer draws the fragment-stage program".into());
+    }
     // As the worker plans a job (`worker::plan_job`): the preferred order, no EXT_texture_shadow_lod.
     let plan = paths::plan_in(
         ApiPath::Vulkan,

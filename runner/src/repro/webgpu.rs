@@ -232,6 +232,12 @@ pub fn page(s: &Subject, v: Variant) -> Result<String, String> {
             s.api
         ));
     }
+    if s.case.lookup.stage == shadowcheck_model::Stage::Compute {
+        return Err(
+            "no WebGPU page for a compute-stage lookup: the page draws the fragment-stage module"
+                .into(),
+        );
+    }
     // As the worker plans a job (`job::plan_job`).
     let plan = paths::plan_in(
         ApiPath::Wgsl,
