@@ -461,13 +461,12 @@ fn draw_fn(s: &Subject, b: BackendName, plan: &Plan, tok: &mut Tokens) -> String
     out
 }
 
-/// The GLSL program variants: `shaders::glsl` writes a different `#version` line above GLSL 4.00
-/// (desktop) and 3.20 (ES); the program picks the first whose minimum the context reaches.
-fn glsl_variants(b: BackendName, plan: &Plan) -> Vec<(u32, String, String)> {
-    let es = b.api.is_es();
-    let info = |glsl: u32| GlInfo {
+/// What the shader functions need to know of a context of this backend with GLSL version `glsl`
+/// (x 100): the program text depends on nothing else (the version itself is found at run time).
+fn gl_info(b: BackendName, glsl: u32) -> GlInfo {
+    GlInfo {
         api: b.api,
-        es,
+        es: b.api.is_es(),
         compat: b.api == ContextApi::Compat,
         version: (0, 0),
         glsl,
@@ -475,10 +474,19 @@ fn glsl_variants(b: BackendName, plan: &Plan) -> Vec<(u32, String, String)> {
         version_string: String::new(),
         extensions: Default::default(),
         form: b.form,
+    }
+}
+
+/// The GLSL program variants: `shaders::glsl` writes a different `#version` line above GLSL 4.00
+/// (desktop) and 3.20 (ES); the program picks the first whose minimum the context reaches.
+fn glsl_variants(b: BackendName, plan: &Plan) -> Vec<(u32, String, String)> {
+    let (hi, lo) = if b.api.is_es() {
+        (320, 300)
+    } else {
+        (400, 330)
     };
-    let (hi, lo) = if es { (320, 300) } else { (400, 330) };
-    let (vh, fh) = shaders::glsl(&info(hi), &plan.key, None, 1);
-    let (vl, fl) = shaders::glsl(&info(lo), &plan.key, None, 1);
+    let (vh, fh) = shaders::glsl(&gl_info(b, hi), &plan.key, None, 1);
+    let (vl, fl) = shaders::glsl(&gl_info(b, lo), &plan.key, None, 1);
     if (&vh, &fh) == (&vl, &fl) {
         vec![(0, vh, fh)]
     } else {
@@ -503,7 +511,7 @@ fn glsl_draw(b: BackendName, plan: &Plan, centre: [f32; 2]) -> String {
         ""
     };
     format!(
-        "/* The shaders shadowcheck's worker compiles for this lookup (plan/src/shaders/mod.rs){uint}:\n * {{minimum GLSL version x 100, vertex, fragment}}. */\nstatic const struct {{ int min_glsl; const char *vs, *fs; }} PROGRAMS[] = {{\n{table}}};\n\nstatic GLuint shader(GLenum type, const char *src) {{\n    GLuint sh = glCreateShader(type);\n    glShaderSource(sh, 1, &src, NULL);\n    glCompileShader(sh);\n    GLint ok = 0;\n    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);\n    if (!ok) {{\n        char log[2048];\n        glGetShaderInfoLog(sh, sizeof log, NULL, log);\n        fprintf(stderr, \"shader compile failed: %s\\n%s\\n\", log, src);\n        exit(2);\n    }}\n    return sh;\n}}\n\nstatic void draw(int glsl) {{\n    unsigned v = 0;\n    while (v + 1 < sizeof PROGRAMS / sizeof PROGRAMS[0] && PROGRAMS[v].min_glsl > glsl) v++;\n    GLuint p = glCreateProgram();\n    glAttachShader(p, shader(GL_VERTEX_SHADER, PROGRAMS[v].vs));\n    glAttachShader(p, shader(GL_FRAGMENT_SHADER, PROGRAMS[v].fs));\n    glBindAttribLocation(p, 0, \"a_pos\");\n    glLinkProgram(p);\n    GLint ok = 0;\n    glGetProgramiv(p, GL_LINK_STATUS, &ok);\n    if (!ok) die(\"program link\");\n    glUseProgram(p);\n    glUniform1i(glGetUniformLocation(p, \"u_tex\"), 0);\n    glUniform4f(glGetUniformLocation(p, \"u_p\"), {p});\n    glUniform1f(glGetUniformLocation(p, \"u_x\"), {x});\n    glUniform4f(glGetUniformLocation(p, \"u_dx\"), {dx});\n    glUniform4f(glGetUniformLocation(p, \"u_dy\"), {dy});\n    glUniform2f(glGetUniformLocation(p, \"u_c\"), {cx}, {cy});\n{offset}{viewport}    glDrawArrays(GL_TRIANGLES, 0, 3);\n    check(\"GLSL draw\");\n}}\n\n",
+        "/* The shaders shadowcheck's worker compiles for this lookup (plan/src/shaders/mod.rs){uint}:\n * {{minimum GLSL version x 100, vertex, fragment}}. */\nstatic const struct {{ int min_glsl; const char *vs, *fs; }} PROGRAMS[] = {{\n{table}}};\n\n{SHADER_FN}static void draw(int glsl) {{\n    unsigned v = 0;\n    while (v + 1 < sizeof PROGRAMS / sizeof PROGRAMS[0] && PROGRAMS[v].min_glsl > glsl) v++;\n    GLuint p = glCreateProgram();\n    glAttachShader(p, shader(GL_VERTEX_SHADER, PROGRAMS[v].vs));\n    glAttachShader(p, shader(GL_FRAGMENT_SHADER, PROGRAMS[v].fs));\n    glBindAttribLocation(p, 0, \"a_pos\");\n    glLinkProgram(p);\n    GLint ok = 0;\n    glGetProgramiv(p, GL_LINK_STATUS, &ok);\n    if (!ok) die(\"program link\");\n    glUseProgram(p);\n    glUniform1i(glGetUniformLocation(p, \"u_tex\"), 0);\n    glUniform4f(glGetUniformLocation(p, \"u_p\"), {p});\n    glUniform1f(glGetUniformLocation(p, \"u_x\"), {x});\n    glUniform4f(glGetUniformLocation(p, \"u_dx\"), {dx});\n    glUniform4f(glGetUniformLocation(p, \"u_dy\"), {dy});\n    glUniform2f(glGetUniformLocation(p, \"u_c\"), {cx}, {cy});\n{offset}{viewport}    glDrawArrays(GL_TRIANGLES, 0, 3);\n    check(\"GLSL draw\");\n}}\n\n",
         p = vec4(plan.p),
         x = cf(plan.x),
         dx = vec4(plan.dx),
@@ -539,6 +547,25 @@ fn delivered_viewport(plan: &Plan) -> String {
         "    /* Values that differ between the fragments of the pixel quad: the draw covers it. */\n    glViewport({x}, {y}, {w}, {h});\n"
     )
 }
+
+/// `shader`: one compiled shader of the program, or exit 2 with the compiler's log. A fragment of
+/// C.
+const SHADER_FN: &str = "static GLuint shader(GLenum type, const char *src) {
+    GLuint sh = glCreateShader(type);
+    glShaderSource(sh, 1, &src, NULL);
+    glCompileShader(sh);
+    GLint ok = 0;
+    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[2048];
+        glGetShaderInfoLog(sh, sizeof log, NULL, log);
+        fprintf(stderr, \"shader compile failed: %s\\n%s\\n\", log, src);
+        exit(2);
+    }
+    return sh;
+}
+
+";
 
 /// `main`: context, framebuffer (as `draw::Renderer::new`), texture, one draw, read-back,
 /// verdict. A fragment of C, not a program of its own.
