@@ -293,6 +293,50 @@ fn delivered_gather_offset_and_per_fragment_values_reproduce() {
     }
 }
 
+/// Compute-stage lookups (`lookup.stage`: compute; every one passes on llvmpipe): the program
+/// compiles the worker's compute shader, stores the result into the framebuffer's colour texture
+/// as image unit 0 and reads it back, printing the harness's RGBA: a cube gather's four values on
+/// GL 4.5 core, a LINEAR seamless cube edge's fraction on ES 3.2.
+#[test]
+fn compute_stage_lookups_reproduce() {
+    let cases = [
+        (
+            "egl:llvmpipe:core",
+            "gl46/cube/d24/linear/lequal/gather/stage=compute/uv=1.75_2.25/ref=0.75@core",
+            "#version 430 core",
+        ),
+        (
+            "egl:llvmpipe:es3",
+            "gles32/cube/d24/linear/lequal/seamless/stage=compute/seamless=es/wrap=edge/lod=0/edge_s/ref=0.5@es300",
+            "#version 310 es",
+        ),
+    ];
+    for (i, (backend, test, version)) in cases.into_iter().enumerate() {
+        let name = format!("repro-compute-{i}");
+        let Some(b) = both(backend, test, &name, &["--allow-pass"]) else {
+            continue;
+        };
+        assert_eq!(b.harness, Outcome::Pass, "{test} on {backend}");
+        assert_eq!((b.repro_cmd_exit, b.repro_exit), (0, 0), "{test}");
+        assert!(
+            same_rgba(b.harness_rgba, b.repro_rgba),
+            "{test}: harness observed {:?}, reproducer {:?}",
+            b.harness_rgba,
+            b.repro_rgba
+        );
+        let c = std::fs::read_to_string(b.dir.join("repro.c")).unwrap();
+        for call in [
+            version,
+            "imageStore(u_out, u_at, r);",
+            "glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, 16, 16);",
+            "glDispatchCompute(1, 1, 1);",
+            "glMemoryBarrier(GL_ALL_BARRIER_BITS);",
+        ] {
+            assert!(c.contains(call), "{test}: no `{call}` in repro.c");
+        }
+    }
+}
+
 /// SwiftShader's own GLES (an EGL 1.4 library: pbuffer contexts only) clamps no reference before
 /// an EQUAL comparison (reports/swiftshader-4.0.0.3): the program opens the library as the worker
 /// does, through a pbuffer, and reproduces the harness's observation.

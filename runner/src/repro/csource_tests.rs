@@ -125,3 +125,51 @@ fn every_reading_of_the_layout_goes_into_the_program() {
         assert!(c.contains(want), "missing `{want}` in\n{c}");
     }
 }
+
+/// A compute-stage lookup: the program compiles the worker's compute shader (the very text of
+/// `shaders::compute_glsl`) instead of a draw program, stores into the immutable colour texture
+/// bound as image unit 0, and makes the store visible before the read-back.
+#[test]
+fn a_compute_stage_lookup_dispatches_the_workers_compute_shader() {
+    for (backend, api, versions) in [
+        ("egl:llvmpipe:core", ApiPath::GlslCore, &["{430,"][..]),
+        ("egl:llvmpipe:es3", ApiPath::Es300, &["{320,", "{310,"][..]),
+    ] {
+        let mut s = subject();
+        s.backend = backend.parse().unwrap();
+        s.api = api;
+        s.case.api = vec![api];
+        s.case.lookup.stage = Stage::Compute;
+        let c = program(&s, gl(&s)).unwrap();
+        let plan = paths::plan_in(api, &s.case, &s.case.lookup, gl(&s).form, true).unwrap();
+        for glsl in [310, 320, 430] {
+            let cs = shaders::compute_glsl(&gl_info(gl(&s), glsl), &plan.key, 1).unwrap();
+            assert!(
+                c.contains(&cstr(&cs, "     ")),
+                "{backend}: {cs} not in\n{c}"
+            );
+        }
+        for want in versions.iter().copied().chain([
+            "#define COMPUTE_STAGE 1",
+            "glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, 16, 16);",
+            "shader(GL_COMPUTE_SHADER, PROGRAMS[v].cs)",
+            "glUniform2i(glGetUniformLocation(p, \"u_at\"), 0, 0);",
+            "glBindImageTexture(0, (GLuint)color, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);",
+            "glDispatchCompute(1, 1, 1);",
+            "glMemoryBarrier(GL_ALL_BARRIER_BITS);",
+            "imageStore(u_out, u_at, r);",
+        ]) {
+            assert!(c.contains(want), "{backend}: missing `{want}` in\n{c}");
+        }
+        assert!(
+            !c.contains("#error") && !c.contains("GL_VERTEX_SHADER"),
+            "{c}"
+        );
+    }
+    // A fragment-stage lookup keeps the mutable colour texture and the draw.
+    let c = program(&subject(), gl(&subject())).unwrap();
+    assert!(
+        !c.contains("#define COMPUTE_STAGE") && c.contains("glDrawArrays"),
+        "{c}"
+    );
+}

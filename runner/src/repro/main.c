@@ -15,7 +15,12 @@ int main(void) {
     GLuint color, fbo, vao, vbo;
     glGenTextures(1, &color);
     glBindTexture(GL_TEXTURE_2D, color);
+#ifdef COMPUTE_STAGE
+    /* Immutable: the compute shader stores into it as an image (see COMPUTE_STAGE above). */
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, 16, 16);
+#else
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 16, 16, 0, GL_RGBA, GL_FLOAT, NULL);
+#endif
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glGenFramebuffers(1, &fbo);

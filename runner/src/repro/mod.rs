@@ -3,12 +3,15 @@
 //! For a Vulkan backend (`vk:*`) the program is [`vulkan`]'s (Vulkan C, with the SPIR-V built from
 //! the GLSL files beside it); for a WebGPU backend (`webgpu:*`) it is [`webgpu`]'s page and for a
 //! WebGL one (`webgl:*`) [`webgl`]'s (`repro.html`, run by build.sh in headless Chromium); the rest
-//! below is the same. For a GL backend (`egl:*`, `egl@<dir>:*`, `osmesa:*`; the EGL 1.4 ones through
+//! below is the same. A compute-stage lookup is on the GL core and es300 paths only: WebGL 2.0
+//! (GLSL ES 3.00) has no compute shaders, and the Vulkan and WGSL paths have no such case, so
+//! those writers refuse it with the reason. For a GL backend (`egl:*`, `egl@<dir>:*`, `osmesa:*`; the EGL 1.4 ones through
 //! [`egl14`]) and a test `<case id>@<api>` this writes into a directory:
 //! - `repro.c` ([`csource`]; a TexParameter state case's from [`state`]): a C program that creates
-//!   the worker's context, texture, sampler state and lookup (gathers included), draws once, prints
-//!   expected (from the oracle, as constants) and observed, and exits 1 when the observation is
-//!   outside the accepted set;
+//!   the worker's context, texture, sampler state and lookup (gathers included), draws once (a
+//!   compute-stage lookup: dispatches one compute invocation, `compute.rs`), prints expected (from
+//!   the oracle, as constants) and observed, and exits 1 when the observation is outside the
+//!   accepted set;
 //! - `build.sh`: the one-line build command (also at the top of repro.c) and the run line with the
 //!   environment that picks the driver (the worker's, `BackendName::env`);
 //! - `output.txt`: what the program printed when [`build_and_run`] ran it here;
@@ -19,6 +22,7 @@
 
 mod cexpect;
 pub mod classes;
+mod compute;
 pub mod csource;
 pub mod egl14;
 pub mod report;

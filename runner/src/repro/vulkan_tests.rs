@@ -179,3 +179,15 @@ fn a_vulkan_report_names_the_device_the_driver_and_its_packages() {
     }
     assert!(!r.contains("GL_RENDERER"), "{r}");
 }
+
+/// Compute-stage lookups are on the GLSL 4.30 / GLSL ES 3.10 paths only: a case that asks for one
+/// on the Vulkan path gets the planner's reason, not a program (and no panic).
+#[test]
+fn a_compute_stage_case_is_refused_with_the_reason() {
+    let mut s = subject(Format::D16, Wrap::ClampToEdge, [0.0; 4]);
+    s.case.lookup.stage = Stage::Compute;
+    let why = program(&s)
+        .err()
+        .expect("no program for a compute-stage case");
+    assert!(why.contains("stage `compute`"), "{why}");
+}

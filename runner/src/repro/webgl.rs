@@ -17,7 +17,7 @@
 //! viewport of an RGBA32F target cleared to -1.
 
 use super::{io, webgpu, ReproError, Subject, BUILD_SH};
-use shadowcheck_model::ApiPath;
+use shadowcheck_model::{ApiPath, Stage};
 use shadowcheck_plan::texels::{level_bytes, transfer_for};
 use shadowcheck_plan::unit::{sampler_params, tex_params, ParamValue, TexParam};
 use shadowcheck_plan::{gl, paths, shaders, ContextApi, GlInfo, LookupForm};
@@ -148,6 +148,13 @@ pub fn page(s: &Subject, key: &str) -> Result<String, String> {
             s.api
         ));
     }
+    let info = webgl_info();
+    // The worker plans with the same context (`paths::plan_for`, `GlInfo::compute`): WebGL 2.0 is
+    // OpenGL ES 3.0, whose shading language, GLSL ES 3.00, has no compute shaders (they come with
+    // GLSL ES 3.10), so the worker skips a compute-stage case.
+    if s.case.lookup.stage == Stage::Compute && !info.compute() {
+        return Err("a compute-stage lookup (`lookup.stage`: compute) runs in a compute shader, and WebGL 2.0 has none (OpenGL ES 3.0, GLSL ES 3.00; compute shaders need ES 3.1, GLSL ES 3.10): the WebGL worker skips this case".into());
+    }
     let inst = instance(key).map_err(|e| e.to_string())?;
     // The worker's admission (`WebglWorker::admit`): WebGL 2.0's capabilities, stencil texturing
     // assumed offered (the page checks it).
@@ -159,7 +166,6 @@ pub fn page(s: &Subject, key: &str) -> Result<String, String> {
             return Err(format!("the WebGL worker does not draw this case: {why}"))
         }
     }
-    let info = webgl_info();
     let plan = paths::plan_for(&info, ApiPath::Es300, &s.case, &s.case.lookup)?;
     let (vs, fs) = shaders::glsl(&info, &plan.key, None, 1);
     let t = &s.case.texture;
@@ -274,5 +280,17 @@ mod tests {
         let mut es100 = s.clone();
         es100.api = ApiPath::Es100Ext;
         assert!(page(&es100, "chromium").unwrap_err().contains("es300"));
+    }
+
+    /// A compute-stage case is refused with the reason: WebGL 2.0 has no compute shaders.
+    #[test]
+    fn a_compute_stage_case_is_refused() {
+        let mut s = subject();
+        s.case.lookup.stage = Stage::Compute;
+        let why = page(&s, "chromium-gles").expect_err("no page for a compute-stage case");
+        assert!(
+            why.contains("WebGL 2.0 has none") && why.contains("GLSL ES 3.10"),
+            "{why}"
+        );
     }
 }

@@ -318,6 +318,16 @@ mod tests {
         }
     }
 
+    /// Compute-stage lookups are on the GLSL 4.30 / GLSL ES 3.10 paths only: on the WGSL path the
+    /// planner's reason, not a page (and no panic).
+    #[test]
+    fn a_compute_stage_case_is_refused_with_the_reason() {
+        let mut s = subject();
+        s.case.lookup.stage = shadowcheck_model::Stage::Compute;
+        let why = page(&s, Variant::Core).expect_err("no page for a compute-stage case");
+        assert!(why.contains("stage `compute`"), "{why}");
+    }
+
     #[test]
     fn the_page_holds_the_workers_module_texture_and_sampler() {
         let s = subject();
