@@ -11,7 +11,9 @@
 //!   BindImageTexture: "An INVALID_OPERATION error is generated if texture is not the name of an
 //!   immutable texture object");
 //! - glMemoryBarrier(GL_ALL_BARRIER_BITS) after the dispatch: an image store is visible to the
-//!   framebuffer read that follows only after a barrier (GL 4.6 §7.13.2, MemoryBarrier);
+//!   framebuffer read that follows only after a barrier (GL 4.6 / ES 3.2, "Shader Memory Access
+//!   Synchronization"), with the framebuffer unbound around the dispatch (softpipe, Mesa 22.3.6,
+//!   reads its cached tiles otherwise: reports/README.md, "compute results");
 //! - the context must have compute shaders, GLSL 4.30 or GLSL ES 3.10 (`GlInfo::compute`): below
 //!   that the worker skips the test, and the program exits 2 saying so.
 
@@ -85,9 +87,16 @@ static const struct {{ int min_glsl; const char *cs; }} PROGRAMS[] = {{
     GLint color = 0;
     glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &color);
     glBindImageTexture(0, (GLuint)color, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    /* The framebuffer unbound around the dispatch, as the worker does: softpipe (Mesa 22.3.6)
+     * otherwise reads back its cached tiles of the texture, not the store. */
+    GLint fbo = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDispatchCompute(1, 1, 1);
-    /* The store reaches glReadPixels only through a barrier (GL 4.6 §7.13.2, MemoryBarrier). */
+    /* The store reaches glReadPixels only through a barrier (GL 4.6 / ES 3.2, "Shader Memory
+     * Access Synchronization": MemoryBarrier with FRAMEBUFFER_BARRIER_BIT). */
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fbo);
     check("compute dispatch");
 }}
 
