@@ -277,3 +277,49 @@ fn a_run_with_zink_and_lavapipe_attributes_the_layer_tie_to_zink() {
         .unwrap_or_else(|| panic!("no layer section in the HTML report"));
     assert!(layers.contains("<td>upper</td>") && layers.contains("must emulate GL"));
 }
+
+/// The compute-stage cases of the committed Vulkan fixtures (cube face edges, corners and
+/// gathers at level 0, `stage=compute/`): each one dispatch of a compute pipeline storing into
+/// the result image, under the validation layer, which says nothing. lavapipe answers every one
+/// as the oracle accepts strictly or by quality, the gathers among them.
+#[test]
+fn lavapipe_runs_the_compute_stage_cases_under_validation() {
+    let (backend, icd) = ("vk:lavapipe", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
+    if !installed_or_skip(backend, icd, "apt-get install -y mesa-vulkan-drivers") {
+        return;
+    }
+    let tmp = tmpdir("vk-compute");
+    let out = bin()
+        .env("SHADOWCHECK_VK_VALIDATION", "1")
+        .args([
+            "run",
+            "-v",
+            "--full-report",
+            "--backend",
+            backend,
+            "--fixtures",
+        ])
+        .arg(repo().join("cases/fixtures/vulkan"))
+        .args(["--cases", "/stage=compute/", "--out"])
+        .arg(tmp.join("out"))
+        .output()
+        .unwrap();
+    let run = Run::of(out);
+    assert_eq!(run.code, 0, "{}\n{}", run.stdout, run.stderr);
+    assert!(!run.stderr.contains("vulkan validation"), "{}", run.stderr);
+    let rs = results(&tmp.join("out"));
+    assert!(rs.len() >= 40, "{} compute tests", rs.len());
+    for (test, (status, reason)) in &rs {
+        assert!(test.contains("/stage=compute/"), "{test}");
+        assert!(
+            status == "Pass"
+                || (status == "Warn" && reason.clone().unwrap_or_default().contains("quality")),
+            "{test}: {status}: {reason:?}"
+        );
+    }
+    assert!(
+        rs.keys().any(|t| t.contains("/gather/")),
+        "no compute gather among {} tests",
+        rs.len()
+    );
+}

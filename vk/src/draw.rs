@@ -3,13 +3,14 @@
 //! the result image and each texture's level base copied back (vkCmdCopyImageToBuffer), then one
 //! fence waited for (Vulkan 1.3 §7 "Synchronization and Cache Control").
 
+use crate::compute::ComputePrograms;
 use crate::device::{FormatInfo, Gpu};
 use crate::pipeline::{bind_image_memory, HostBuffer, Programs, ResultTarget};
 use crate::sampler::SamplerState;
 use crate::texture::{self, Shape};
 use crate::{Check, VkError};
 use ash::vk;
-use shadowcheck_model::{Case, Texels};
+use shadowcheck_model::{Case, Stage, Texels};
 use shadowcheck_plan::layout::{pixel, CASE_VERTICES, CORNERS, FB_SIZE};
 use shadowcheck_plan::shaders::PARAM_FLOATS;
 use shadowcheck_plan::Plan;
@@ -50,6 +51,7 @@ struct Made {
 pub struct Renderer {
     target: ResultTarget,
     programs: Programs,
+    compute: ComputePrograms,
     pool: vk::CommandPool,
     cmd: vk::CommandBuffer,
     fence: vk::Fence,
@@ -71,6 +73,7 @@ impl Renderer {
         let d = &gpu.device;
         let target = ResultTarget::new(&gpu)?;
         let programs = Programs::new(&gpu)?;
+        let compute = ComputePrograms::new(&gpu, programs.set_layout)?;
         // SAFETY: valid create infos; every object is destroyed in Drop.
         let (pool, cmd, fence, descriptors) = unsafe {
             let pci = vk::CommandPoolCreateInfo::default()
@@ -92,10 +95,16 @@ impl Renderer {
             let fence = d
                 .create_fence(&vk::FenceCreateInfo::default(), None)
                 .check("vkCreateFence")?;
-            let sizes = [vk::DescriptorPoolSize {
-                ty: vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
-                descriptor_count: MAX_TEXTURES as u32,
-            }];
+            let sizes = [
+                vk::DescriptorPoolSize {
+                    ty: vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
+                    descriptor_count: MAX_TEXTURES as u32,
+                },
+                vk::DescriptorPoolSize {
+                    ty: vk::DescriptorType::STORAGE_IMAGE,
+                    descriptor_count: MAX_TEXTURES as u32,
+                },
+            ];
             let dci = vk::DescriptorPoolCreateInfo::default()
                 .max_sets(MAX_TEXTURES as u32)
                 .pool_sizes(&sizes);
@@ -110,6 +119,7 @@ impl Renderer {
         Ok(Renderer {
             target,
             programs,
+            compute,
             pool,
             cmd,
             fence,
@@ -122,9 +132,9 @@ impl Renderer {
         })
     }
 
-    /// Pipelines compiled so far.
+    /// Pipelines compiled so far (graphics and compute).
     pub fn pipelines(&self) -> usize {
-        self.programs.count()
+        self.programs.count() + self.compute.count()
     }
 
     /// `buf` with room for `len` bytes (replaced by a larger one when it has not).
@@ -253,8 +263,12 @@ impl Renderer {
         let pipelines: Vec<Result<vk::Pipeline, String>> = lookups
             .iter()
             .map(|l| {
-                self.programs
-                    .get(&self.gpu, self.target.render_pass, &l.plan.key)
+                if l.plan.key.stage == Stage::Compute {
+                    self.compute.get(&self.gpu, &l.plan.key)
+                } else {
+                    self.programs
+                        .get(&self.gpu, self.target.render_pass, &l.plan.key)
+                }
             })
             .collect();
         self.record(textures, lookups, made, &regions, &back, &pipelines)?;
@@ -357,11 +371,24 @@ impl Renderer {
                 image_view: m.view,
                 image_layout: vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL,
             }];
-            let write = [vk::WriteDescriptorSet::default()
-                .dst_set(m.set)
-                .dst_binding(0)
-                .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
-                .image_info(&info)];
+            // The result image for a compute-stage lookup's store (`compute.rs`).
+            let result = [vk::DescriptorImageInfo {
+                sampler: vk::Sampler::null(),
+                image_view: self.target.view,
+                image_layout: vk::ImageLayout::GENERAL,
+            }];
+            let write = [
+                vk::WriteDescriptorSet::default()
+                    .dst_set(m.set)
+                    .dst_binding(0)
+                    .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
+                    .image_info(&info),
+                vk::WriteDescriptorSet::default()
+                    .dst_set(m.set)
+                    .dst_binding(1)
+                    .descriptor_type(vk::DescriptorType::STORAGE_IMAGE)
+                    .image_info(&result),
+            ];
             d.update_descriptor_sets(&write, &[]);
         }
         Ok(())
@@ -433,6 +460,7 @@ impl Drop for Renderer {
         self.staging.destroy(g);
         self.texels.destroy(g);
         self.programs.destroy(g);
+        self.compute.destroy(g);
         self.target.destroy(g);
     }
 }

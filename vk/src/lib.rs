@@ -11,6 +11,7 @@
 //! - [`draw`]: one submission: uploads, draws, read-backs;
 //! - [`worker`]: the hello and the batches ([`shadowcheck_plan::serve::Serve`]).
 
+pub mod compute;
 pub mod device;
 pub mod draw;
 pub mod pipeline;

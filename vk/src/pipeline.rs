@@ -141,7 +141,7 @@ pub fn bind_image_memory(gpu: &Gpu, image: vk::Image) -> Result<vk::DeviceMemory
 pub struct ResultTarget {
     pub image: vk::Image,
     memory: vk::DeviceMemory,
-    view: vk::ImageView,
+    pub view: vk::ImageView,
     pub render_pass: vk::RenderPass,
     pub framebuffer: vk::Framebuffer,
     pub readback: HostBuffer,
@@ -163,7 +163,13 @@ impl ResultTarget {
             .array_layers(1)
             .samples(vk::SampleCountFlags::TYPE_1)
             .tiling(vk::ImageTiling::OPTIMAL)
-            .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC)
+            // STORAGE: the compute-stage lookups store into it (`compute.rs`); RGBA32F has
+            // STORAGE_IMAGE in "Required Format Support".
+            .usage(
+                vk::ImageUsageFlags::COLOR_ATTACHMENT
+                    | vk::ImageUsageFlags::TRANSFER_SRC
+                    | vk::ImageUsageFlags::STORAGE,
+            )
             .initial_layout(vk::ImageLayout::UNDEFINED);
         // SAFETY: valid create infos; every object is destroyed in `destroy`.
         unsafe {
@@ -256,8 +262,10 @@ pub fn color_range() -> vk::ImageSubresourceRange {
     }
 }
 
-/// The descriptor set layout (one combined image sampler, binding 0, fragment stage), the
-/// pipeline layout (that set and the push constant `u_base`) and a pipeline per shader key.
+/// The descriptor set layout (the combined image sampler at binding 0, read by the fragment or
+/// compute shader; the result image as a storage image at binding 1, written by the compute
+/// shader of a compute-stage lookup, `compute.rs`), the graphics pipeline layout (that set and
+/// the push constant `u_base`) and a graphics pipeline per shader key.
 pub struct Programs {
     pub set_layout: vk::DescriptorSetLayout,
     pub layout: vk::PipelineLayout,
@@ -267,11 +275,18 @@ pub struct Programs {
 impl Programs {
     pub fn new(gpu: &Gpu) -> Result<Programs, VkError> {
         let d = &gpu.device;
-        let bindings = [vk::DescriptorSetLayoutBinding::default()
-            .binding(0)
-            .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
-            .descriptor_count(1)
-            .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
+        let bindings = [
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(0)
+                .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
+                .descriptor_count(1)
+                .stage_flags(vk::ShaderStageFlags::FRAGMENT | vk::ShaderStageFlags::COMPUTE),
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(1)
+                .descriptor_type(vk::DescriptorType::STORAGE_IMAGE)
+                .descriptor_count(1)
+                .stage_flags(vk::ShaderStageFlags::COMPUTE),
+        ];
         let sci = vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings);
         // SAFETY: valid create infos; destroyed in `destroy`.
         unsafe {

@@ -213,9 +213,6 @@ const FORM: LookupForm = LookupForm::Auto;
 /// Plans job `j` on the `vk` path (no EXT_texture_shadow_lod: glslang 12 has no such
 /// extension, and GLSL 4.50 lists none of its overloads).
 fn plan_job(j: &Job) -> Result<Plan, String> {
-    if j.lookup.stage == shadowcheck_model::Stage::Compute {
-        return Err("the Vulkan worker draws no compute-stage lookup yet".into());
-    }
     paths::plan_in(ApiPath::Vulkan, j.case, &j.lookup, FORM, false)
 }
 

@@ -3,9 +3,18 @@
 //! §7.6 "Pipeline Barriers", §7.9 "Host Write Ordering Guarantees", §20 "Copy Commands").
 
 use super::{full_range, Made, Renderer, TextureSpec};
+use crate::compute::{push_constants, result_barrier};
 use crate::{Check, VkError};
 use ash::vk;
+use shadowcheck_model::Stage;
 use shadowcheck_plan::layout::FB_SIZE;
+
+/// The stages that read the textures: the fragment shader of the draws, the compute shader of
+/// the compute-stage lookups.
+const SHADERS: vk::PipelineStageFlags = vk::PipelineStageFlags::from_raw(
+    vk::PipelineStageFlags::FRAGMENT_SHADER.as_raw()
+        | vk::PipelineStageFlags::COMPUTE_SHADER.as_raw(),
+);
 
 impl Renderer {
     #[allow(clippy::too_many_arguments)]
@@ -54,7 +63,7 @@ impl Renderer {
             d.begin_command_buffer(cmd, &bi)
                 .check("vkBeginCommandBuffer")?;
             // Uploads: UNDEFINED -> TRANSFER_DST, copy, -> SHADER_READ_ONLY for the fragment
-            // shader.
+            // and compute shaders.
             d.cmd_pipeline_barrier(
                 cmd,
                 vk::PipelineStageFlags::TOP_OF_PIPE,
@@ -81,7 +90,7 @@ impl Renderer {
             d.cmd_pipeline_barrier(
                 cmd,
                 vk::PipelineStageFlags::TRANSFER,
-                vk::PipelineStageFlags::FRAGMENT_SHADER,
+                SHADERS,
                 vk::DependencyFlags::empty(),
                 &[],
                 &[],
@@ -113,6 +122,9 @@ impl Renderer {
             let mut set: Option<vk::DescriptorSet> = None;
             for (k, (l, p)) in lookups.iter().zip(pipelines).enumerate() {
                 let Ok(p) = p else { continue };
+                if l.plan.key.stage == Stage::Compute {
+                    continue;
+                }
                 let Some(m) = made.get(l.texture) else {
                     continue;
                 };
@@ -142,11 +154,12 @@ impl Renderer {
                 d.cmd_draw(cmd, 6, 1, 6 * k as u32, 0);
             }
             d.cmd_end_render_pass(cmd);
+            self.record_dispatches(lookups, made, pipelines);
             // Read-backs: each texture's level base (depth aspect), then the result image (left
-            // in TRANSFER_SRC_OPTIMAL by the render pass).
+            // in TRANSFER_SRC_OPTIMAL by the render pass, or by the dispatches' barrier).
             d.cmd_pipeline_barrier(
                 cmd,
-                vk::PipelineStageFlags::FRAGMENT_SHADER,
+                SHADERS,
                 vk::PipelineStageFlags::TRANSFER,
                 vk::DependencyFlags::empty(),
                 &[],
@@ -212,5 +225,98 @@ impl Renderer {
             d.end_command_buffer(cmd).check("vkEndCommandBuffer")?;
         }
         Ok(())
+    }
+
+    /// The compute-stage lookups (`crate::compute`): the result image from the render pass's
+    /// TRANSFER_SRC_OPTIMAL to GENERAL, after its clear and the draws' writes; one dispatch of one
+    /// invocation per lookup, storing at its slot's pixel; back to TRANSFER_SRC_OPTIMAL for the
+    /// read-back, after the stores. Nothing is recorded when the submission has none.
+    fn record_dispatches(
+        &self,
+        lookups: &[super::Lookup],
+        made: &[Made],
+        pipelines: &[Result<vk::Pipeline, String>],
+    ) {
+        let d = &self.gpu.device;
+        let cmd = self.cmd;
+        let compute: Vec<(usize, &super::Lookup, vk::Pipeline)> = lookups
+            .iter()
+            .zip(pipelines)
+            .enumerate()
+            .filter_map(|(k, (l, p))| match p {
+                Ok(p) if l.plan.key.stage == Stage::Compute => Some((k, l, *p)),
+                _ => None,
+            })
+            .collect();
+        if compute.is_empty() {
+            return;
+        }
+        let image = self.target.image;
+        let to_general = [result_barrier(
+            image,
+            (
+                vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+                vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
+            ),
+            (vk::ImageLayout::GENERAL, vk::AccessFlags::SHADER_WRITE),
+        )];
+        let to_transfer = [result_barrier(
+            image,
+            (vk::ImageLayout::GENERAL, vk::AccessFlags::SHADER_WRITE),
+            (
+                vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+                vk::AccessFlags::TRANSFER_READ,
+            ),
+        )];
+        // SAFETY: as in `record`: every handle is alive until the fence is waited for, and the
+        // command buffer is recording.
+        unsafe {
+            // TRANSFER too: the render pass's final layout transition happens before the TRANSFER
+            // stage of its external dependency, and this barrier's scope chains after it.
+            d.cmd_pipeline_barrier(
+                cmd,
+                vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT | vk::PipelineStageFlags::TRANSFER,
+                vk::PipelineStageFlags::COMPUTE_SHADER,
+                vk::DependencyFlags::empty(),
+                &[],
+                &[],
+                &to_general,
+            );
+            let mut bound: Option<vk::Pipeline> = None;
+            for (k, l, p) in compute {
+                let Some(m) = made.get(l.texture) else {
+                    continue;
+                };
+                if bound != Some(p) {
+                    d.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::COMPUTE, p);
+                    bound = Some(p);
+                }
+                d.cmd_bind_descriptor_sets(
+                    cmd,
+                    vk::PipelineBindPoint::COMPUTE,
+                    self.compute.layout,
+                    0,
+                    &[m.set],
+                    &[],
+                );
+                d.cmd_push_constants(
+                    cmd,
+                    self.compute.layout,
+                    vk::ShaderStageFlags::COMPUTE,
+                    0,
+                    &push_constants(l.plan, k),
+                );
+                d.cmd_dispatch(cmd, 1, 1, 1);
+            }
+            d.cmd_pipeline_barrier(
+                cmd,
+                vk::PipelineStageFlags::COMPUTE_SHADER,
+                vk::PipelineStageFlags::TRANSFER,
+                vk::DependencyFlags::empty(),
+                &[],
+                &[],
+                &to_transfer,
+            );
+        }
     }
 }

@@ -128,6 +128,20 @@ fn seamless_tag(d: &SpecDims, on: Option<bool>) -> &'static str {
 /// Map Edge Handling (always across faces); WebGPU's cube views ("Sampling is done seamlessly
 /// across the faces of the cubemap").
 pub fn seamless(d: &SpecDims) -> Vec<Draft> {
+    // Vulkan requires one of its 24-bit depth formats or D32_SFLOAT, not both ("Required Format
+    // Support"): SwiftShader has no D24, so the D32F copy is what runs there.
+    let mut formats = vec![fixed_fmt(d)];
+    if d.spec == Spec::Vulkan && d.formats.contains(&Format::D32f) {
+        formats.push(Format::D32f);
+    }
+    formats
+        .into_iter()
+        .flat_map(|f| seamless_in(d, f))
+        .collect()
+}
+
+/// [`seamless`] in format `fmt`.
+fn seamless_in(d: &SpecDims, fmt: Format) -> Vec<Draft> {
     let mut out = Vec::new();
     if !d.targets.contains(&Target::Cube)
         || !(has_gl33_state(d) || matches!(d.spec, Spec::Vulkan | Spec::WebGpu))
@@ -139,7 +153,6 @@ pub fn seamless(d: &SpecDims) -> Vec<Draft> {
     } else {
         &[None]
     };
-    let fmt = fixed_fmt(d);
     let func = main_func(d);
     let points = [
         ("edge_s", 0.05, 0.5),
