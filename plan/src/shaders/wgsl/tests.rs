@@ -265,7 +265,7 @@ fn a_compute_key_is_one_workgroup_per_lookup_reading_its_values_and_writing_its_
     let mut i = key(Target::Cube, LodForm::Implicit(false));
     i.stage = shadowcheck_model::Stage::Compute;
     assert!(module(&i, 256).unwrap_err().contains("derivatives"));
-    let mut gi = g.clone();
+    let mut gi = g;
     gi.form = LodForm::Gather(true);
     assert!(module(&gi, 256).is_err());
     let mut v = key(Target::Cube, LodForm::Lod);
