@@ -23,11 +23,21 @@ for b in webgpu:chromium webgpu:chromium-compat; do
 done
 PKGS=$(dpkg-query -W -f '${Package} ${Version}, ' chromium chromium-common 2>/dev/null | sed 's/, $//')
 target/release/shadowcheck summarize -o "$HERE" "$OUT"/r-webgpu-* --platform "WebGPU in headless Chromium 156: Dawn on SwiftShader, and Dawn's OpenGL ES backend on ANGLE on SwiftShader in compatibility mode (Debian 12: ${PKGS:-package versions unknown})" --update-readme README.md
+# Compute-stage cube lookups at face edges vary from run to run (flakes.txt in each backend's
+# folder, committed by hand; ../README.md "Lookups outside the fragment stage"): kept out of the
+# baselines, excused in the checks.
+for d in "$HERE"/*/; do
+  [ -f "$d/flakes.txt" ] || continue
+  grep -v '^#' "$d/flakes.txt" | sed 's/\$$/,/' > "$OUT/flakes.re"
+  grep -vEf "$OUT/flakes.re" "$d/failures.csv" > "$OUT/f.csv" || true
+  cp "$OUT/f.csv" "$d/failures.csv"
+done
 # Check: every backend passes with its own baseline (exit 0).
 for d in "$HERE"/*/; do
   [ -f "$d/failures.csv" ] || continue
   b=$(basename "$d" | sed 's/^webgpu-/webgpu:/')
-  target/release/shadowcheck run --backend "$b" --baseline "$d/failures.csv" --out "$OUT/check-$(basename "$d")"
+  fl=""; [ -f "$d/flakes.txt" ] && fl="--flakes $d/flakes.txt"
+  target/release/shadowcheck run --backend "$b" --baseline "$d/failures.csv" $fl --out "$OUT/check-$(basename "$d")"
 done
 # Layer attribution: the same lookups recast as Vulkan cases on SwiftShader's Vulkan driver.
 [ -f "$OUT/r-vk-swiftshader/results.jsonl" ] || target/release/shadowcheck run -b vk:swiftshader --out "$OUT/r-vk-swiftshader" || true

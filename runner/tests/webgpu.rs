@@ -432,3 +432,114 @@ fn the_standalone_page_reproduces_the_harness_observation() {
         let _ = std::fs::remove_dir_all(&dir);
     }
 }
+
+/// The observed RGBA of every result in a `--full-report` run's results.jsonl, by test name.
+fn observed(dir: &std::path::Path) -> BTreeMap<String, Vec<f64>> {
+    std::fs::read_to_string(dir.join("results.jsonl"))
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str::<Value>(l).unwrap())
+        .filter(|v| v["kind"] == "result")
+        .map(|v| {
+            let rgba = v["observed"].as_array().unwrap().iter();
+            let rgba = rgba.map(|x| x.as_f64().unwrap()).collect();
+            (v["test"].as_str().unwrap().to_string(), rgba)
+        })
+        .collect()
+}
+
+/// Compute-stage lookups on webgpu:chromium (one workgroup per lookup, the result copied into
+/// its slot): a face-centre lookup (`inside`, every texel of the footprint on one face: 1 at ref
+/// 0.5, 0 at ref 0.7), a face-edge lookup whose value the fragment stage gives too (face 2 of the
+/// `cube` family: 0.7 x 0.5 of the face's texels pass, the neighbour face's fail: 0.35) and a
+/// cube gather give the oracle's values, as the fixtures' `expect` states them. Without
+/// Chromium: skipped loudly, failed under CI=true (`webgpu_or_skip`); an explicit run of the
+/// compute cases with no browser fails and says why.
+#[test]
+fn compute_stage_lookups_on_webgpu_chromium_give_the_oracles_values() {
+    let centre = "webgpu/cube/d24/linear/lequal/seamless/stage=compute/seamless=always/wrap=edge/lod=0/inside/ref=0.5";
+    let centre_fail = "webgpu/cube/d24/linear/lequal/seamless/stage=compute/seamless=always/wrap=edge/lod=0/inside/ref=0.7";
+    let edge = "webgpu/cube/d32f/linear/lequal/cube/stage=compute/face=2/edge/ref=0.39";
+    let gather = "webgpu/cube/d32f/nearest/lequal/gather/stage=compute/uv=1.75_2.25/ref=0.75";
+    let cases: BTreeMap<String, Value> = all_cases()
+        .into_iter()
+        .map(|c| (c["id"].as_str().unwrap().to_string(), c))
+        .collect();
+    // The values the oracle gives, from the fixtures (and by hand, for the scalar ones).
+    let want: Vec<(&str, Vec<f64>)> = vec![
+        (centre, vec![1.0]),
+        (centre_fail, vec![0.0]),
+        (edge, vec![0.35]),
+        (gather, vec![1.0, 1.0, 0.0, 0.0]),
+    ];
+    for (id, w) in &want {
+        let e = &cases.get(*id).unwrap_or_else(|| panic!("no fixture {id}"))["expect"];
+        assert_eq!(
+            e["accept"]["strict"].as_array().map(Vec::len),
+            Some(1),
+            "{id}: {e}"
+        );
+        if w.len() == 1 {
+            let s = &e["accept"]["strict"][0];
+            let (lo, hi) = (s["lo"].as_f64().unwrap(), s["hi"].as_f64().unwrap());
+            assert!(lo <= w[0] + 1e-6 && w[0] - 1e-6 <= hi, "{id}: {e}");
+        }
+    }
+    let ids: Vec<String> = want.iter().map(|(i, _)| i.to_string()).collect();
+    // No browser: an explicit run of these cases is an error that names the install, not a pass.
+    let tmp = tmpdir("webgpu-compute-nobrowser");
+    let out = bin()
+        .args(["run", "--backend", "webgpu:chromium", "--fixtures"])
+        .arg(fixtures())
+        .args(["--cases", &pattern(ids.iter()), "--out"])
+        .arg(&tmp)
+        .env(
+            shadowcheck_webgl::browser::CHROMIUM_ENV,
+            "/nonexistent/chromium",
+        )
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{stderr}");
+    assert!(stderr.contains("/nonexistent/chromium"), "{stderr}");
+    let _ = std::fs::remove_dir_all(&tmp);
+    if !webgpu_or_skip("the webgpu:chromium compute-stage test") {
+        return;
+    }
+    let tmp = tmpdir("webgpu-compute");
+    let out = bin()
+        .args([
+            "run",
+            "--full-report",
+            "--no-rerun",
+            "--backend",
+            "webgpu:chromium",
+            "--fixtures",
+        ])
+        .arg(fixtures())
+        .args(["--cases", &pattern(ids.iter()), "--out"])
+        .arg(&tmp)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let r = results(&tmp);
+    let seen = observed(&tmp);
+    for (id, w) in &want {
+        let test = format!("{id}@wgsl");
+        let (status, reason) = r
+            .get(&test)
+            .unwrap_or_else(|| panic!("no result for {test}"));
+        assert_eq!(status, "Pass", "{test}: {reason:?}");
+        let got = seen
+            .get(&test)
+            .unwrap_or_else(|| panic!("no observation of {test}"));
+        for (i, w) in w.iter().enumerate() {
+            assert!(
+                (got[i] - w).abs() < 1e-6,
+                "{test}: observed {got:?}, want {w} in channel {i}"
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&tmp);
+}

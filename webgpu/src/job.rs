@@ -4,14 +4,17 @@
 //! (`shaders::wgsl::module`), the slot of each lookup in the result image (`layout`), the texel
 //! values and the sampler descriptor of each texture (`texture.rs`). Consecutive lookups on equal
 //! textures (a case and its sweep points) share one texture; consecutive lookups of one texture
-//! and one module are one instanced draw.
+//! and one module are one instanced draw, or, for a compute-stage module, one dispatch of one
+//! workgroup per lookup. A texture's fragment-stage lookups take their slots first and its
+//! compute-stage ones after them, so the fragment draws are the ones the batch would have without
+//! the compute lookups.
 
 use crate::texture::{self, TextureDesc};
 use base64::Engine;
 use serde::{Deserialize, Serialize};
-use shadowcheck_model::{ApiPath, Format, Target};
+use shadowcheck_model::{ApiPath, Format, Stage, Target};
 use shadowcheck_plan::layout::{CAPACITY, FB_SIZE};
-use shadowcheck_plan::shaders::wgsl::{self, INSTANCE_ATTRIBS, INSTANCE_FLOATS};
+use shadowcheck_plan::shaders::wgsl::{self, COMPUTE_BINDINGS, INSTANCE_ATTRIBS, INSTANCE_FLOATS};
 use shadowcheck_plan::{paths, Answer, Job, LookupForm, Plan};
 use shadowcheck_protocol::{PathResult, Rgba};
 
@@ -32,15 +35,19 @@ pub struct DeviceCaps {
     pub max_layers: u32,
 }
 
-/// One module of a page job: its WGSL and the view dimension its texture binding takes.
+/// One module of a page job: its WGSL, the view dimension its texture binding takes, and whether
+/// it is a compute-stage module (entry point `cs`, dispatched) or a fragment-stage one (`vs` and
+/// `fs`, drawn).
 #[derive(Debug, Clone, Serialize)]
 pub struct Module {
     pub wgsl: String,
     pub view: &'static str,
+    pub compute: bool,
 }
 
-/// One instanced draw: `count` lookups of texture `texture` with module `module`, slots `first`
-/// and on (instance i is slot i).
+/// One instanced draw (or, with a compute module, one dispatch of `count` workgroups): `count`
+/// lookups of texture `texture` with module `module`, slots `first` and on (instance or
+/// workgroup i is slot first + i).
 #[derive(Debug, Clone, Serialize)]
 pub struct Draw {
     pub texture: usize,
@@ -59,6 +66,9 @@ pub struct PageJob {
     /// The lookups' instance values, base64 of little-endian f32 ([`INSTANCE_FLOATS`] a slot).
     pub instances: String,
     pub attributes: [(u32, &'static str, usize); 4],
+    /// The compute modules' buffer bindings (`wgsl::COMPUTE_BINDINGS`).
+    #[serde(rename = "computeBindings")]
+    pub compute_bindings: [(&'static str, u32, &'static str); 3],
     /// Bytes per instance.
     pub stride: usize,
     pub draws: Vec<Draw>,
@@ -90,9 +100,6 @@ pub struct PageAnswer {
 
 /// Plans job `j` on the `wgsl` path, with the module its key compiles to.
 fn plan_job(j: &Job, caps: &DeviceCaps) -> Result<(Plan, String), String> {
-    if j.lookup.stage == shadowcheck_model::Stage::Compute {
-        return Err("the WebGPU worker draws no compute-stage lookup yet".into());
-    }
     let plan = paths::plan_in(ApiPath::Wgsl, j.case, &j.lookup, LookupForm::Auto, false)?;
     if plan.key.target == Target::CubeArray && !caps.cube_array {
         return Err("cube-array texture views are not in WebGPU's compatibility mode (this device has no \"core-features-and-limits\")".into());
@@ -163,6 +170,7 @@ impl Filling {
                 points: b64(&self.points),
                 instances: b64(&self.instances),
                 attributes: INSTANCE_ATTRIBS,
+                compute_bindings: COMPUTE_BINDINGS,
                 stride: 4 * INSTANCE_FLOATS,
                 draws: self.draws,
                 slots: self.slots.len(),
@@ -190,13 +198,19 @@ impl Filling {
         let texture = self.textures.len();
         self.textures.push(desc);
         self.formats.push(format);
-        for (job, plan, wgsl_text) in lookups {
+        // Fragment lookups first, compute lookups after (a stable partition): the fragment draws
+        // are not split by compute lookups between them.
+        let (fragment, compute): (Vec<_>, Vec<_>) = lookups
+            .into_iter()
+            .partition(|(_, plan, _)| plan.key.stage != Stage::Compute);
+        for (job, plan, wgsl_text) in fragment.into_iter().chain(compute) {
             let module = match self.modules.iter().position(|m| m.wgsl == wgsl_text) {
                 Some(m) => m,
                 None => {
                     self.modules.push(Module {
                         wgsl: wgsl_text,
                         view,
+                        compute: plan.key.stage == Stage::Compute,
                     });
                     self.modules.len() - 1
                 }

@@ -5,6 +5,14 @@
 // descriptors, instance values, which slot each lookup writes); this page only makes the WebGPU
 // calls and reads the results back.
 //
+// Fragment-stage lookups are instanced draws into the RGBA32F result image (slot s the 2x2 quad at
+// column 2*(s % 128), row 2*(s / 128)). Compute-stage lookups (modules with `compute`) are
+// dispatches of one workgroup per lookup, after the render pass: entry point "cs" reads its
+// slot's values from the instance floats (a read-only storage buffer) and writes its RGBA to
+// results[slot] of a storage buffer; after the image is copied to the read-back buffer, each
+// compute slot's 16 bytes are copied over its pixel there (copyBufferToBuffer), so every slot is
+// read back from the same place. Fragment draws do not change when a job has compute lookups.
+//
 // Errors: each batch runs inside pushErrorScope("validation"), ("internal") and
 // ("out-of-memory") (WebGPU "Error Scopes"); whatever they catch is answered as {errors: [...]}
 // and the worker makes every lookup of the batch an error with the message (a validation error is
@@ -19,7 +27,8 @@ globalThis.shadowcheck = (() => {
   const uncaptured = [];
   let target = null;
   const layouts = new Map(); // view dimension -> {group, pipeline}
-  const pipelines = new Map(); // WGSL text -> GPURenderPipeline
+  const pipelines = new Map(); // WGSL text -> GPURenderPipeline or GPUComputePipeline
+  const computeLayouts = new Map(); // view dimension -> {group, pipeline}
   const writers = new Map(); // depth format -> GPURenderPipeline
   let writerModule = null;
 
@@ -97,6 +106,37 @@ globalThis.shadowcheck = (() => {
       layouts.set(view, l);
     }
     return l;
+  }
+
+  // The bind group layout and pipeline layout of a compute module of a sampled view dimension:
+  // the texture and the sampler, and the buffers of job.computeBindings ([name, binding, type]).
+  function computeLayoutFor(view, bindings) {
+    let l = computeLayouts.get(view);
+    if (!l) {
+      const group = device.createBindGroupLayout({
+        entries: [
+          { binding: 0, visibility: GPUShaderStage.COMPUTE, texture: { sampleType: "depth", viewDimension: view } },
+          { binding: 1, visibility: GPUShaderStage.COMPUTE, sampler: { type: "comparison" } },
+        ].concat(bindings.map(([, binding, type]) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type } }))),
+      });
+      l = { group, pipeline: device.createPipelineLayout({ bindGroupLayouts: [group] }) };
+      computeLayouts.set(view, l);
+    }
+    return l;
+  }
+
+  // The compute pipeline of a compute module, cached by its text.
+  function computePipelineFor(m, bindings) {
+    let p = pipelines.get(m.wgsl);
+    if (!p) {
+      const module = device.createShaderModule({ code: m.wgsl });
+      p = device.createComputePipeline({
+        layout: computeLayoutFor(m.view, bindings).pipeline,
+        compute: { module, entryPoint: "cs" },
+      });
+      pipelines.set(m.wgsl, p);
+    }
+    return p;
   }
 
   // The lookup pipeline of a module (job.modules[i]), cached by its text.
@@ -185,7 +225,8 @@ globalThis.shadowcheck = (() => {
     return Promise.race([promise.finally(() => clearTimeout(timer)), late]);
   }
 
-  // job: {modules: [{wgsl, view}], textures: [...], points, instances, attributes, stride,
+  // job: {modules: [{wgsl, view, compute}], textures: [...], points, instances, attributes, stride,
+  // computeBindings,
   // draws: [{texture, module, first, count}], slots}; opts: {fault}.
   async function runJob(job, opts) {
     if (lost) return { lost };
@@ -203,6 +244,8 @@ globalThis.shadowcheck = (() => {
       buffers.push(points, instances);
       const enc = device.createCommandEncoder();
       const groups = [];
+      const views = [];
+      const samplers = [];
       for (const t of job.textures) {
         let usage = GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.RENDER_ATTACHMENT;
         if (t.readback) usage |= GPUTextureUsage.COPY_SRC;
@@ -224,6 +267,8 @@ globalThis.shadowcheck = (() => {
           baseMipLevel: 0,
           mipLevelCount: t.viewLevels,
         });
+        views.push(view);
+        samplers.push(sampler);
         groups.push(
           device.createBindGroup({
             layout: layoutFor(t.view).group,
@@ -240,12 +285,55 @@ globalThis.shadowcheck = (() => {
         ],
       });
       pass.setVertexBuffer(0, instances);
-      for (const d of job.draws) {
+      const draws = job.draws.filter((d) => !job.modules[d.module].compute);
+      const dispatches = job.draws.filter((d) => job.modules[d.module].compute);
+      for (const d of draws) {
         pass.setPipeline(pipelineFor(job.modules[d.module], job.attributes, job.stride));
         pass.setBindGroup(0, groups[d.texture]);
         pass.draw(6, d.count, 0, d.first);
       }
       pass.end();
+      // The compute lookups: one dispatch per compute draw, workgroup i is slot d.first + i; the
+      // dispatch's first slot is a uniform (one 256-byte entry each, the offset alignment).
+      let computed = null;
+      if (dispatches.length > 0) {
+        const lookups = upload(bytes(job.instances), GPUBufferUsage.STORAGE);
+        computed = device.createBuffer({
+          size: job.slots * 16,
+          usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC,
+        });
+        const align = device.limits.minUniformBufferOffsetAlignment;
+        const firsts = new Uint32Array((dispatches.length * align) / 4);
+        dispatches.forEach((d, k) => (firsts[(k * align) / 4] = d.first));
+        const first = upload(new Uint8Array(firsts.buffer), GPUBufferUsage.UNIFORM);
+        buffers.push(lookups, computed, first);
+        const buffersOf = { lookups, results: computed, first };
+        const cpass = enc.beginComputePass();
+        dispatches.forEach((d, k) => {
+          const m = job.modules[d.module];
+          cpass.setPipeline(computePipelineFor(m, job.computeBindings));
+          cpass.setBindGroup(
+            0,
+            device.createBindGroup({
+              layout: computeLayoutFor(m.view, job.computeBindings).group,
+              entries: [
+                { binding: 0, resource: views[d.texture] },
+                { binding: 1, resource: samplers[d.texture] },
+              ].concat(
+                job.computeBindings.map(([name, binding]) => ({
+                  binding,
+                  resource:
+                    name === "first"
+                      ? { buffer: first, offset: k * align, size: 16 }
+                      : { buffer: buffersOf[name] },
+                })),
+              ),
+            }),
+          );
+          cpass.dispatchWorkgroups(d.count);
+        });
+        cpass.end();
+      }
       // The rows of the result image that hold slots, then level 0 of each texture read back.
       const rows = Math.min(FB, 2 * Math.ceil(job.slots / (FB / 2)));
       const result = device.createBuffer({
@@ -255,6 +343,14 @@ globalThis.shadowcheck = (() => {
       buffers.push(result);
       if (rows > 0) {
         enc.copyTextureToBuffer({ texture: target }, { buffer: result, bytesPerRow: FB * 16, rowsPerImage: rows }, [FB, rows, 1]);
+      }
+      // Each compute slot's result over its pixel (x, y) = (2 * (s % 128), 2 * (s / 128)).
+      for (const d of dispatches) {
+        for (let s = d.first; s < d.first + d.count; s++) {
+          const x = 2 * (s % (FB / 2));
+          const y = 2 * Math.floor(s / (FB / 2));
+          enc.copyBufferToBuffer(computed, s * 16, result, (y * FB + x) * 16, 16);
+        }
       }
       const stored = [];
       job.textures.forEach((t, i) => {

@@ -1,5 +1,6 @@
 //! WGSL, the `wgsl` path's program text (the WebGPU worker's shader modules). One module per
-//! [`ShaderKey`], with a vertex entry point `vs` and a fragment entry point `fs`:
+//! [`ShaderKey`]: for a fragment-stage key a vertex entry point `vs` and a fragment entry point
+//! `fs`, for a compute-stage key a compute entry point `cs` only (see the last items):
 //! - the depth texture is `t` (`texture_depth_2d`, `_2d_array`, `_cube` or `_cube_array`), group
 //!   0 binding 0 (WGSL §6.6.6 "Depth Texture Types"), and the comparison sampler `s`
 //!   (`sampler_comparison`), group 0 binding 1;
@@ -16,7 +17,15 @@
 //!   shader has no branch), `textureGatherCompare` for a gather; an offset is a const-expression
 //!   `vec2i(a, b)` in the call (one module per offset);
 //! - with implicit derivatives P varies across the quad by the plan's gradients and is exactly
-//!   the case's P at the quad's written pixel, as in the GLSL programs (`super::vulkan`).
+//!   the case's P at the quad's written pixel, as in the GLSL programs (`super::vulkan`);
+//! - a compute-stage key (`textureSampleCompareLevel` at level 0 or `textureGatherCompare`, the
+//!   forms without derivatives) is `@compute @workgroup_size(1) fn cs`: one workgroup per lookup,
+//!   as the GLSL compute programs (`super::stage`); it reads its slot's values bit for bit from
+//!   the instance floats bound as a read-only storage buffer and writes its RGBA to a storage
+//!   buffer, one vec4f per slot ([`COMPUTE_BINDINGS`]), which the page copies into the slot's
+//!   pixel of the read-back image (storage buffers in the compute stage are in core WebGPU and
+//!   in compatibility mode alike, whose maxStorageBuffersIn{Vertex,Fragment}Stage limits only the
+//!   other stages).
 //!
 //! WebGPU's framebuffer origin is the top left and its normalized device y points up (WebGPU
 //! §3.3 "Coordinate Systems": framebuffer y down; the viewport transform flips NDC y), so the
@@ -128,6 +137,12 @@ pub fn module(key: &ShaderKey, fb_width: i32) -> Result<String, String> {
         return Err("WGSL cube lookups take no offset".into());
     }
     let quads = fb_width / 2;
+    if key.stage == shadowcheck_model::Stage::Compute {
+        return compute_module(key, ty);
+    }
+    if key.stage != shadowcheck_model::Stage::Fragment {
+        return Err(format!("the wgsl path draws no {}-stage lookup", key.stage));
+    }
     let implicit = matches!(key.form, LodForm::Implicit(_) | LodForm::Gather(true));
     let vary = if implicit {
         "\n  let c = vec2f((vec2u(v.pos.xy) / 2u) * 2u) + 0.5;\n  p = p + (v.pos.x - c.x) * v.dx + (v.pos.y - c.y) * v.dy;"
@@ -167,6 +182,60 @@ pub fn module(key: &ShaderKey, fb_width: i32) -> Result<String, String> {
          }}\n"
     ))
 }
+
+/// The module of a compute-stage key: entry point `cs` only (WGSL §13.3.2 "Compute Shaders and
+/// Workgroups"), one workgroup of one invocation per lookup, as the GLSL compute programs do
+/// (`super::stage`): the lookup of slot `first.x + workgroup_id.x` reads its values bit for bit
+/// from `lookups` ([`COMPUTE_BINDINGS`]: the instance buffer's floats, [`INSTANCE_FLOATS`] a slot,
+/// laid out as [`INSTANCE_ATTRIBS`] says) and writes its RGBA to `results[slot]`, which the page
+/// copies into the slot's pixel of the read-back image. Only the forms that need no derivatives
+/// (`textureSampleCompareLevel`, `textureGatherCompare`: WGSL "may be invoked in any shader
+/// stage"); `textureSampleCompare` is fragment-only (WGSL §17.7 "Texture Built-in Functions").
+fn compute_module(key: &ShaderKey, ty: &str) -> Result<String, String> {
+    if !matches!(key.form, LodForm::Lod | LodForm::Gather(false)) {
+        return Err(format!(
+            "a WGSL compute shader has no derivatives: no compare lookup of the form {:?}",
+            key.form
+        ));
+    }
+    let value = if key.gather.is_some() {
+        call(key)
+    } else {
+        format!("vec4f({}, 0.0, 0.0, 1.0)", call(key))
+    };
+    let n = INSTANCE_FLOATS;
+    let x = INSTANCE_ATTRIBS[3].2;
+    let [(_, lookups, _), (_, results, _), (_, first, _)] = COMPUTE_BINDINGS;
+    Ok(format!(
+        "@group(0) @binding(0) var t: {ty};\n\
+         @group(0) @binding(1) var s: sampler_comparison;\n\
+         @group(0) @binding({lookups}) var<storage, read> lookups: array<f32>;\n\
+         @group(0) @binding({results}) var<storage, read_write> results: array<vec4f>;\n\
+         @group(0) @binding({first}) var<uniform> first: vec4u;\n\
+         \n\
+         struct Lookup {{\n  p: vec4f,\n  x: f32,\n}}\n\
+         \n\
+         @compute @workgroup_size(1)\n\
+         fn cs(@builtin(workgroup_id) id: vec3u) {{\n  \
+           let slot = first.x + id.x;\n  \
+           let i = {n}u * slot;\n  \
+           let v = Lookup(vec4f(lookups[i], lookups[i + 1u], lookups[i + 2u], lookups[i + 3u]), lookups[i + {x}u]);\n  \
+           let p = v.p;\n  \
+           results[slot] = {value};\n\
+         }}\n"
+    ))
+}
+
+/// The compute module's bindings beyond `t` (0) and `s` (1), group 0: (name, binding, the
+/// `GPUBufferBindingType` the page's layout gives it). `lookups`: the job's instance values
+/// (read-only storage); `results`: one vec4f per slot of the job (storage); `first`: the
+/// dispatch's first slot in `.x` (uniform, one 256-byte aligned entry per dispatch: WebGPU
+/// "minUniformBufferOffsetAlignment").
+pub const COMPUTE_BINDINGS: [(&str, u32, &str); 3] = [
+    ("lookups", 2, "read-only-storage"),
+    ("results", 3, "storage"),
+    ("first", 4, "uniform"),
+];
 
 /// The values passed from the vertex to the fragment stage.
 const VALUES: &str = "struct Values {\n  @builtin(position) pos: vec4f,\n  @location(0) @interpolate(flat, either) p: vec4f,\n  @location(1) @interpolate(flat, either) dx: vec4f,\n  @location(2) @interpolate(flat, either) dy: vec4f,\n  @location(3) @interpolate(flat, either) x: f32,\n}\n";

@@ -233,8 +233,11 @@ pub fn page(s: &Subject, v: Variant) -> Result<String, String> {
         ));
     }
     if s.case.lookup.stage == shadowcheck_model::Stage::Compute {
+        // The worker dispatches these (`wgsl::module`'s `cs`); this page draws a render pipeline
+        // only. A standalone compute page: reports/webgpu-chromium-156.0.8078.108/repro/
+        // compute-cube-edge/.
         return Err(
-            "no WebGPU page for a compute-stage lookup: the page draws the fragment-stage module"
+            "no WebGPU reproducer page for stage `compute` yet: the page draws the fragment-stage module only (the worker dispatches compute lookups; a standalone compute page is reports/webgpu-chromium-156.0.8078.108/repro/compute-cube-edge/)"
                 .into(),
         );
     }
@@ -318,8 +321,8 @@ mod tests {
         }
     }
 
-    /// Compute-stage lookups are on the GLSL 4.30 / GLSL ES 3.10 paths only: on the WGSL path the
-    /// planner's reason, not a page (and no panic).
+    /// A compute-stage case: no page (this page draws a render pipeline only), a reason that
+    /// says so, and no panic.
     #[test]
     fn a_compute_stage_case_is_refused_with_the_reason() {
         let mut s = subject();

@@ -123,3 +123,60 @@ fn answers_read_each_slot_and_errors_fail_the_whole_job() {
     );
     assert!(a.iter().all(|(_, x)| matches!(x, Answer::Error(m) if m.contains("bad sampler") && m.contains("harness bug"))));
 }
+
+#[test]
+fn compute_lookups_are_dispatches_after_their_textures_fragment_draw() {
+    use shadowcheck_model::Stage;
+    let frag = wgpu_case(Target::Cube, 6);
+    let mut comp = frag.clone();
+    comp.lookup.stage = Stage::Compute;
+    let mut frag2 = frag.clone();
+    frag2.lookup.dref = 0.25;
+    let cases = vec![frag, comp, frag2];
+    let jobs = sweep::jobs(&cases);
+    let (early, built) = build(&jobs, &core());
+    assert!(early.iter().all(Option::is_none), "{early:?}");
+    assert_eq!(built.len(), 1);
+    let p = &built[0].page;
+    assert_eq!((p.textures.len(), p.slots, p.modules.len()), (1, 3, 2));
+    // The two fragment lookups stay one instanced draw (slots 0 and 1); the compute lookup
+    // takes the slot after them, in a compute module.
+    assert_eq!(p.draws.len(), 2);
+    assert_eq!(
+        (p.draws[0].module, p.draws[0].first, p.draws[0].count),
+        (0, 0, 2)
+    );
+    assert_eq!(
+        (p.draws[1].module, p.draws[1].first, p.draws[1].count),
+        (1, 2, 1)
+    );
+    assert!(!p.modules[0].compute && p.modules[0].wgsl.contains("fn fs("));
+    assert!(p.modules[1].compute && p.modules[1].wgsl.contains("fn cs("));
+    assert_eq!(p.compute_bindings, COMPUTE_BINDINGS);
+    let json = serde_json::to_string(p).expect("json");
+    assert!(
+        json.contains("\"computeBindings\":[[\"lookups\",2,\"read-only-storage\"]"),
+        "{json}"
+    );
+    // Slot 2's pixel answers job 1 (the compute case), slot 1's job 2.
+    let px: Vec<u8> = [0.5f32, 0.25, 1.0]
+        .iter()
+        .flat_map(|r| [*r, 0.0, 0.0, 1.0])
+        .flat_map(f32::to_le_bytes)
+        .collect();
+    let b = built.into_iter().next().expect("one job");
+    let answer = PageAnswer {
+        lost: None,
+        errors: vec![],
+        pixels: Some(base64::engine::general_purpose::STANDARD.encode(px)),
+        stored: vec![],
+    };
+    let got: Vec<(usize, f64)> = answers(b, &jobs, answer)
+        .into_iter()
+        .map(|(j, a)| match a {
+            Answer::Observation(r, _) => (j, r[0].rgba.0[0]),
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(got, vec![(0, 0.5), (2, 0.25), (1, 1.0)]);
+}

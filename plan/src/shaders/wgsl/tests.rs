@@ -201,3 +201,91 @@ fn instance_values_and_texel_points_are_laid_out_as_declared() {
     assert_eq!(texel_point(1, 1, 2, 2), [0.5, -0.5]);
     assert_eq!(texel_point(0, 0, 1, 1), [0.0, 0.0]);
 }
+
+#[test]
+fn a_compute_key_is_one_workgroup_per_lookup_reading_its_values_and_writing_its_slot() {
+    let mut k = key(Target::Cube, LodForm::Lod);
+    k.stage = shadowcheck_model::Stage::Compute;
+    let m = module_of(&k);
+    // Only the compute entry point: no vertex or fragment stage, no derivatives.
+    assert!(
+        m.contains("@compute @workgroup_size(1)\nfn cs(@builtin(workgroup_id) id: vec3u) {"),
+        "{m}"
+    );
+    assert!(
+        !m.contains("@vertex") && !m.contains("@fragment") && !m.contains("dx"),
+        "{m}"
+    );
+    // The same call as the fragment module's, on the values read from the instance floats.
+    let frag = module_of(&key(Target::Cube, LodForm::Lod));
+    assert!(
+        frag.contains("textureSampleCompareLevel(t, s, p.xyz, p.w)"),
+        "{frag}"
+    );
+    assert!(
+        m.contains(
+            "results[slot] = vec4f(textureSampleCompareLevel(t, s, p.xyz, p.w), 0.0, 0.0, 1.0);"
+        ),
+        "{m}"
+    );
+    assert!(
+        m.contains("let slot = first.x + id.x;\n  let i = 13u * slot;"),
+        "{m}"
+    );
+    assert!(
+        m.contains("let v = Lookup(vec4f(lookups[i], lookups[i + 1u], lookups[i + 2u], lookups[i + 3u]), lookups[i + 12u]);"),
+        "{m}"
+    );
+    for (name, binding, _) in COMPUTE_BINDINGS {
+        assert!(
+            m.contains(&format!("@group(0) @binding({binding}) var")),
+            "{m}"
+        );
+        assert!(m.contains(&format!("> {name}: ")), "{name}: {m}");
+    }
+    assert!(m.contains("var<storage, read> lookups: array<f32>;"), "{m}");
+    assert!(
+        m.contains("var<storage, read_write> results: array<vec4f>;"),
+        "{m}"
+    );
+    // The layout the shader reads is the one instance_values writes: P at 0, x at 12.
+    assert_eq!((INSTANCE_ATTRIBS[0].2, INSTANCE_ATTRIBS[3].2), (0, 12));
+    assert_eq!(INSTANCE_FLOATS, 13);
+    // A cube-array gather: all four comparisons, the layer and the reference from the values.
+    let mut g = key(Target::CubeArray, LodForm::Gather(false));
+    g.gather = Some(GatherCall::Single);
+    g.stage = shadowcheck_model::Stage::Compute;
+    let m = module_of(&g);
+    assert!(
+        m.contains("results[slot] = textureGatherCompare(t, s, p.xyz, i32(v.p.w), v.x);"),
+        "{m}"
+    );
+    assert!(m.contains("var t: texture_depth_cube_array;"), "{m}");
+    // Forms that need derivatives, and the vertex stage, are no compute module.
+    let mut i = key(Target::Cube, LodForm::Implicit(false));
+    i.stage = shadowcheck_model::Stage::Compute;
+    assert!(module(&i, 256).unwrap_err().contains("derivatives"));
+    let mut gi = g;
+    gi.form = LodForm::Gather(true);
+    assert!(module(&gi, 256).is_err());
+    let mut v = key(Target::Cube, LodForm::Lod);
+    v.stage = shadowcheck_model::Stage::Vertex;
+    assert!(module(&v, 256).is_err());
+}
+
+#[test]
+fn the_plan_of_a_compute_case_gives_a_compute_module_with_the_cases_values() {
+    let mut c = wgsl_case(Target::Cube, 6);
+    c.lookup.stage = shadowcheck_model::Stage::Compute;
+    let p = paths::plan(ApiPath::Wgsl, &c).expect("plan");
+    assert_eq!(
+        (p.key.stage, p.key.form),
+        (shadowcheck_model::Stage::Compute, LodForm::Lod)
+    );
+    let m = module_of(&p.key);
+    assert!(m.contains("fn cs("), "{m}");
+    // The instance floats are the plan's P and x, unchanged, for the shader to read bit for bit.
+    let v = instance_values(&p);
+    assert_eq!(v[0..4], p.p);
+    assert_eq!(v[12].to_bits(), p.x.to_bits());
+}
