@@ -489,7 +489,17 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
     } else {
         store("u_tex")
     };
-    let samplers: String = (0..units)
+    let samplers = sampler_decls(prec, key, units);
+    let after = delivery::after_lookup(key);
+    format!(
+        "{header}{samplers}{uniforms}{out_decl}void main() {{\n  {p_line}\n  {lookup}{after}\n}}\n"
+    )
+}
+
+/// The declarations of the key's `units` samplers, `u_tex` or `u_tex0` .. (`units.rs`), with the
+/// precision qualifier `prec` (ES: `highp `).
+pub(super) fn sampler_decls(prec: &str, key: &ShaderKey, units: usize) -> String {
+    (0..units)
         .map(|u| {
             format!(
                 "uniform {prec}{} {};\n",
@@ -497,11 +507,7 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
                 sampler_name(u, units)
             )
         })
-        .collect();
-    let after = delivery::after_lookup(key);
-    format!(
-        "{header}{samplers}{uniforms}{out_decl}void main() {{\n  {p_line}\n  {lookup}{after}\n}}\n"
-    )
+        .collect()
 }
 
 /// The single-case GLSL program's discard that is never taken (`u_c`, the pixel centre, is never

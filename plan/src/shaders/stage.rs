@@ -12,8 +12,7 @@
 //!   read back like a drawn pixel). A case on one of several units names it by the uniform
 //!   `u_unit` (a compute shader has no vertex attributes).
 
-use super::{legacy_call, modern_call, sampler_type, Language, NEVER_DISCARD, UNIT_ATTRIB};
-use crate::units::sampler_name;
+use super::{legacy_call, modern_call, Language, NEVER_DISCARD, UNIT_ATTRIB};
 use crate::{SamplerKind, ShaderKey};
 use shadowcheck_model::ApiPath;
 #[cfg(doc)]
@@ -34,21 +33,9 @@ pub(super) fn program(lang: &Language, key: &ShaderKey, units: usize) -> (String
             ApiPath::Glsl120 => legacy_call(key, tex),
             _ => modern_call(key, tex),
         };
-        if vec4_result {
-            format!("v_r = vec4({call});")
-        } else {
-            format!("v_r = vec4({call}, 0.0, 0.0, 1.0);")
-        }
+        as_vec4("v_r", &call, vec4_result)
     };
-    let samplers: String = (0..units)
-        .map(|u| {
-            format!(
-                "uniform {prec}{} {};\n",
-                sampler_type(key.kind, key.target),
-                sampler_name(u, units)
-            )
-        })
-        .collect();
+    let samplers = super::sampler_decls(prec, key, units);
     let (unit_decl, lookup) = if units > 1 {
         let chain = super::unit_chain(units, "unit", &store);
         (
@@ -68,6 +55,16 @@ pub(super) fn program(lang: &Language, key: &ShaderKey, units: usize) -> (String
     (vs, fs)
 }
 
+/// `var = ` the lookup `call` as a vec4: as it is (`vec4_result`: a gather, a colour or GLSL
+/// 1.20's vec4 result), else the shadow lookup's float as (r, 0, 0, 1).
+fn as_vec4(var: &str, call: &str, vec4_result: bool) -> String {
+    if vec4_result {
+        format!("{var} = vec4({call});")
+    } else {
+        format!("{var} = vec4({call}, 0.0, 0.0, 1.0);")
+    }
+}
+
 /// The uniform naming the case's unit in a compute shader of several samplers.
 pub const UNIT_UNIFORM: &str = "u_unit";
 
@@ -76,23 +73,8 @@ pub(super) fn compute(lang: &Language, key: &ShaderKey, units: usize) -> String 
     let es = key.path == ApiPath::Es300;
     let prec = if es { "highp " } else { "" };
     let vec4_result = key.kind != SamplerKind::Shadow || key.gather.is_some();
-    let store = |tex: &str| {
-        let call = modern_call(key, tex);
-        if vec4_result {
-            format!("r = vec4({call});")
-        } else {
-            format!("r = vec4({call}, 0.0, 0.0, 1.0);")
-        }
-    };
-    let samplers: String = (0..units)
-        .map(|u| {
-            format!(
-                "uniform {prec}{} {};\n",
-                sampler_type(key.kind, key.target),
-                sampler_name(u, units)
-            )
-        })
-        .collect();
+    let store = |tex: &str| as_vec4("r", &modern_call(key, tex), vec4_result);
+    let samplers = super::sampler_decls(prec, key, units);
     let (unit_decl, lookup) = if units > 1 {
         let chain = super::unit_chain(units, UNIT_UNIFORM, &store);
         (format!("uniform int {UNIT_UNIFORM};\n"), chain)
