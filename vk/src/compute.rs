@@ -113,23 +113,6 @@ pub fn push_constants(plan: &Plan, k: usize) -> Vec<u8> {
     b
 }
 
-/// A layout transition of the whole result image, with the accesses it orders.
-pub fn result_barrier(
-    image: vk::Image,
-    (from, src): (vk::ImageLayout, vk::AccessFlags),
-    (to, dst): (vk::ImageLayout, vk::AccessFlags),
-) -> vk::ImageMemoryBarrier<'static> {
-    vk::ImageMemoryBarrier::default()
-        .src_access_mask(src)
-        .dst_access_mask(dst)
-        .old_layout(from)
-        .new_layout(to)
-        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-        .image(image)
-        .subresource_range(crate::pipeline::color_range())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -496,6 +496,16 @@ fn fragment_shader(lang: &Language, key: &ShaderKey, batched: Option<i32>, units
     )
 }
 
+/// `var = ` the lookup `call` as a vec4: as it is (`vec4_result`: a gather, a colour or GLSL
+/// 1.20's vec4 result), else the shadow lookup's float as (r, 0, 0, 1).
+pub(super) fn as_vec4(var: &str, call: &str, vec4_result: bool) -> String {
+    if vec4_result {
+        format!("{var} = vec4({call});")
+    } else {
+        format!("{var} = vec4({call}, 0.0, 0.0, 1.0);")
+    }
+}
+
 /// The declarations of the key's `units` samplers, `u_tex` or `u_tex0` .. (`units.rs`), with the
 /// precision qualifier `prec` (ES: `highp `).
 pub(super) fn sampler_decls(prec: &str, key: &ShaderKey, units: usize) -> String {

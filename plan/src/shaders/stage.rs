@@ -12,7 +12,7 @@
 //!   read back like a drawn pixel). A case on one of several units names it by the uniform
 //!   `u_unit` (a compute shader has no vertex attributes).
 
-use super::{legacy_call, modern_call, Language, NEVER_DISCARD, UNIT_ATTRIB};
+use super::{as_vec4, legacy_call, modern_call, Language, NEVER_DISCARD, UNIT_ATTRIB};
 use crate::{SamplerKind, ShaderKey};
 use shadowcheck_model::ApiPath;
 #[cfg(doc)]
@@ -53,16 +53,6 @@ pub(super) fn program(lang: &Language, key: &ShaderKey, units: usize) -> (String
         "{header}uniform vec2 u_c;\n{fin} vec4 v_r;\n{out_decl}void main() {{\n  {NEVER_DISCARD}\n  {fout} = v_r;\n}}\n"
     );
     (vs, fs)
-}
-
-/// `var = ` the lookup `call` as a vec4: as it is (`vec4_result`: a gather, a colour or GLSL
-/// 1.20's vec4 result), else the shadow lookup's float as (r, 0, 0, 1).
-fn as_vec4(var: &str, call: &str, vec4_result: bool) -> String {
-    if vec4_result {
-        format!("{var} = vec4({call});")
-    } else {
-        format!("{var} = vec4({call}, 0.0, 0.0, 1.0);")
-    }
 }
 
 /// The uniform naming the case's unit in a compute shader of several samplers.

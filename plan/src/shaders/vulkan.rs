@@ -15,7 +15,7 @@
 //! image read back (vkCmdCopyImageToBuffer, rows in increasing y) is row r of [`crate::layout`]'s
 //! pixels, as GL's bottom-up glReadPixels rows are. `gl_FragCoord` is the pixel centre in both.
 
-use super::{modern_call, sampler_type, PARAM_ATTRIBS};
+use super::{as_vec4, modern_call, sampler_type, PARAM_ATTRIBS};
 use crate::{LodForm, SamplerKind, ShaderKey};
 
 /// The location of a batched program's vertex input `name` ([`PARAM_ATTRIBS`]).
@@ -35,16 +35,16 @@ fn location(name: &str) -> u32 {
 /// LOD of 0 (SPIR-V `OpImageSample*ExplicitLod`, `Lod` 0: "as though the base level-of-detail were
 /// computed as zero", GLSL 4.60 §8.9).
 pub fn compute_glsl(key: &ShaderKey) -> String {
-    let call = modern_call(key, "u_tex");
-    let store = if key.kind != SamplerKind::Shadow || key.gather.is_some() {
-        format!("r = vec4({call});")
-    } else {
-        format!("r = vec4({call}, 0.0, 0.0, 1.0);")
-    };
+    let store = as_vec4("r", &modern_call(key, "u_tex"), vec4_result(key));
     format!(
         "#version 450\nlayout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;\nlayout(set = 0, binding = 0) uniform {} u_tex;\nlayout(set = 0, binding = 1, rgba32f) writeonly uniform image2D u_out;\nlayout(push_constant) uniform PC {{ vec4 u_p; float u_x; ivec2 u_at; }};\nvoid main() {{\n  vec4 p = u_p;\n  vec4 r = vec4(0.0);\n  {store}\n  imageStore(u_out, u_at, r);\n}}\n",
         sampler_type(key.kind, key.target)
     )
+}
+
+/// Whether the key's lookup returns a vec4 (a gather, a lookup without comparison), not a float.
+fn vec4_result(key: &ShaderKey) -> bool {
+    key.kind != SamplerKind::Shadow || key.gather.is_some()
 }
 
 /// Bytes of the compute shader's push constants: P (16), x (4, padded to 8), the pixel (8).
@@ -94,12 +94,7 @@ fn fragment_shader(key: &ShaderKey) -> String {
     if implicit {
         p_line += "\n  ivec2 q = ivec2(gl_FragCoord.xy) / 2;\n  vec2 c = vec2(q * 2) + 0.5;\n  p = p + (gl_FragCoord.x - c.x) * u_dx + (gl_FragCoord.y - c.y) * u_dy;";
     }
-    let call = modern_call(key, "u_tex");
-    let store = if key.kind != SamplerKind::Shadow || key.gather.is_some() {
-        format!("o = vec4({call});")
-    } else {
-        format!("o = vec4({call}, 0.0, 0.0, 1.0);")
-    };
+    let store = as_vec4("o", &modern_call(key, "u_tex"), vec4_result(key));
     format!(
         "#version 450\nlayout(set = 0, binding = 0) uniform {} u_tex;\n{PUSH_CONSTANT}{}layout(location = 0) out vec4 o;\nvoid main() {{\n  {p_line}\n  {store}\n}}\n",
         sampler_type(key.kind, key.target),

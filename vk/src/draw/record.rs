@@ -3,7 +3,8 @@
 //! §7.6 "Pipeline Barriers", §7.9 "Host Write Ordering Guarantees", §20 "Copy Commands").
 
 use super::{full_range, Made, Renderer, TextureSpec};
-use crate::compute::{push_constants, result_barrier};
+use crate::compute::push_constants;
+use crate::pipeline::color_range;
 use crate::{Check, VkError};
 use ash::vk;
 use shadowcheck_model::Stage;
@@ -35,15 +36,7 @@ impl Renderer {
                        to: vk::ImageLayout,
                        src: vk::AccessFlags,
                        dst: vk::AccessFlags| {
-            vk::ImageMemoryBarrier::default()
-                .src_access_mask(src)
-                .dst_access_mask(dst)
-                .old_layout(from)
-                .new_layout(to)
-                .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-                .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-                .image(m.image)
-                .subresource_range(full_range(t))
+            image_barrier(m.image, full_range(t), (from, src), (to, dst))
         };
         let all = |from, to, src, dst| -> Vec<vk::ImageMemoryBarrier> {
             textures
@@ -252,16 +245,18 @@ impl Renderer {
             return;
         }
         let image = self.target.image;
-        let to_general = [result_barrier(
+        let to_general = [image_barrier(
             image,
+            color_range(),
             (
                 vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
                 vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
             ),
             (vk::ImageLayout::GENERAL, vk::AccessFlags::SHADER_WRITE),
         )];
-        let to_transfer = [result_barrier(
+        let to_transfer = [image_barrier(
             image,
+            color_range(),
             (vk::ImageLayout::GENERAL, vk::AccessFlags::SHADER_WRITE),
             (
                 vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
@@ -319,4 +314,23 @@ impl Renderer {
             );
         }
     }
+}
+
+/// A layout transition of `range` of `image`, with the accesses it orders (§7.6.2 "Image Memory
+/// Barriers"; no queue family transfer).
+fn image_barrier(
+    image: vk::Image,
+    range: vk::ImageSubresourceRange,
+    (from, src): (vk::ImageLayout, vk::AccessFlags),
+    (to, dst): (vk::ImageLayout, vk::AccessFlags),
+) -> vk::ImageMemoryBarrier<'static> {
+    vk::ImageMemoryBarrier::default()
+        .src_access_mask(src)
+        .dst_access_mask(dst)
+        .old_layout(from)
+        .new_layout(to)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .image(image)
+        .subresource_range(range)
 }
