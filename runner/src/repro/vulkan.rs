@@ -1,19 +1,35 @@
 //! The Vulkan reproducer of a `vk:*` test: `repro.c`, a C program against `<vulkan/vulkan.h>` that
-//! does for one case what the Vulkan worker (shadowcheck-vk) does for it, and `vert.glsl` /
-//! `frag.glsl`, the worker's shaders for the case's lookup, which build.sh compiles to SPIR-V with
-//! glslangValidator (Vulkan 1.3 "Shader Modules" takes SPIR-V only).
+//! does for one case what the Vulkan worker (shadowcheck-vk) does for it, and the worker's shaders
+//! for the case's lookup, which build.sh compiles to SPIR-V with glslangValidator (Vulkan 1.3
+//! "Shader Modules" takes SPIR-V only): `vert.glsl` / `frag.glsl` for a fragment-stage lookup
+//! (`shaders::vulkan::glsl`), `comp.glsl` for a compute-stage one (`shaders::vulkan::compute_glsl`).
 //!
 //! What it mirrors, and from where: the instance and device (`vk/src/device/`: API version
 //! min(loader, 1.3), the same optional features enabled where the device has them), the image
 //! (`texture::shape`: image type, extent, levels, layers, CUBE_COMPATIBLE; the format of
 //! `device::vk_format`) with the bytes `texture::depth_bytes` / `texture::stencil_bytes` give
 //! (uploaded with vkCmdCopyBufferToImage, "Copying Data Between Buffers and Images"), the image
-//! view and sampler of `sampler::state` ("Image Views", "Samplers"), the pipeline of the plan's
-//! `vk` shaders (`shaders::vulkan::glsl`), one descriptor set, the push constant `u_base` = 0 and
-//! the six vertices of slot 0 exactly as `vk/src/draw.rs` stages them. One difference: the worker
-//! draws into a 256x256 image (slot k a 2x2 quad), the reproducer into a 2x2 one (the shaders
-//! written for a framebuffer 2 pixels wide: one quad per row); slot 0's quad and its pixel (0, 0)
-//! are the same pixels either way.
+//! view and sampler of `sampler::state` ("Image Views", "Samplers"), one descriptor set; this part
+//! is `vk_common.c`, the same for both stages. Then, by the lookup's stage:
+//!
+//! - fragment (`vk_fragment.c`): the graphics pipeline of the plan's shaders, the push constant
+//!   `u_base` = 0 and the six vertices of slot 0 exactly as `vk/src/draw.rs` stages them, drawn in
+//!   a render pass that clears the colour target to -1;
+//! - compute (`vk_compute.c`): the compute pipeline of `compute_glsl` (`vk/src/compute.rs`), the
+//!   descriptor set with the sampler at binding 0 and the result image as a storage image at
+//!   binding 1 (GENERAL layout), the push constants `compute::push_constants(plan, 0)` gives (P, x,
+//!   padding, pixel (0, 0): written as those bytes' fields), one vkCmdDispatch(1, 1, 1), and the
+//!   barriers of `record_dispatches` around it. The worker clears the result image in the render
+//!   pass of its draws before the dispatches; the reproducer, which draws nothing, clears it with
+//!   vkCmdClearColorImage (the same -1 in every texel, made visible to the compute shader by a
+//!   barrier). It records no draw before the dispatch on purpose: on SwiftShader a dispatch after
+//!   a draw that sampled the same image gives a different (correct) result
+//!   (reports/vulkan/repro/compute-cube-edge).
+//!
+//! Both read back pixel (0, 0) and judge it. One difference from the worker: it renders or stores
+//! into a 256x256 image (slot k a 2x2 quad), the reproducer into a 2x2 one (the shaders written
+//! for a framebuffer 2 pixels wide: one quad per row); slot 0's quad and its pixel (0, 0) are the
+//! same pixels either way.
 //!
 //! What the device must have (a format feature, `imageCubeArray`, a border colour only
 //! VK_EXT_custom_border_color gives, ...) is checked by the program at run time: the generator
