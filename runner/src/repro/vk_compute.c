@@ -92,9 +92,9 @@ int main(void) {
      * -1 to every texel of the result image (and to nothing else), and the barrier after it makes
      * those writes visible to the compute shader in the GENERAL layout, as the worker's barrier
      * does for the render pass's clear. The dispatch sees the same image contents either way. No
-     * draw is recorded: in the worker's submission no draw samples this test's texture before its
-     * dispatch, and on SwiftShader a dispatch that follows a draw sampling the same image gives a
-     * different (correct) result (reports/vulkan/repro/compute-cube-edge). */
+     * draw is recorded before the dispatch: on SwiftShader a dispatch that follows a draw sampling
+     * the same image gives a different (correct) result (reports/vulkan/repro/compute-cube-edge),
+     * and the harness's observation is that of a dispatch with no such draw before it. */
     VkImageMemoryBarrier b = image_barrier(result, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT);
     b.subresourceRange.levelCount = 1;
