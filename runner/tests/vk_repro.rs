@@ -75,6 +75,16 @@ fn same_rgba(a: [f64; 4], b: [f64; 4]) -> bool {
     a.iter().zip(b).all(|(x, y)| (*x as f32) == (y as f32))
 }
 
+/// The shaders a reproducer of `test` has beside repro.c, and those it must not have: a
+/// compute-stage lookup's comp.glsl, a fragment-stage one's vert.glsl and frag.glsl.
+fn shader_files(test: &str) -> (&'static [&'static str], &'static [&'static str]) {
+    if test.contains("/stage=compute/") {
+        (&["comp.glsl"], &["vert.glsl", "frag.glsl"])
+    } else {
+        (&["vert.glsl", "frag.glsl"], &["comp.glsl"])
+    }
+}
+
 /// `sh build.sh` in `dir`: (exit status, stdout, stderr).
 fn build_sh(dir: &Path) -> (i32, String, String) {
     let o = Command::new("sh")
@@ -148,14 +158,12 @@ fn check(driver: &str, test: &str) -> Option<PathBuf> {
     assert_eq!(rc.code, 1, "{}{}", rc.stdout, rc.stderr);
     let rc = repro(&["--allow-pass"]);
     assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
-    for f in [
-        "repro.c",
-        "vert.glsl",
-        "frag.glsl",
-        "build.sh",
-        "output.txt",
-    ] {
+    let (shaders, not_written) = shader_files(test);
+    for f in ["repro.c", "build.sh", "output.txt"].iter().chain(shaders) {
         assert!(dir.join(f).is_file(), "no {f}: {}{}", rc.stdout, rc.stderr);
+    }
+    for f in not_written {
+        assert!(!dir.join(f).exists(), "{f} written for {test}");
     }
     assert!(!dir.join("REPORT.md").exists());
 
@@ -346,4 +354,146 @@ fn bad_vulkan_arguments_exit_96() {
         assert_eq!(r.code, 96, "{args:?}: {}", r.stderr);
         assert!(r.stderr.contains(says), "{args:?}: {}", r.stderr);
     }
+}
+
+/// The Khronos validation layer's manifest, or a loud skip (a failure under CI=true).
+fn validation_layer_or_skip() -> bool {
+    let manifest = "/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json";
+    if Path::new(manifest).is_file() {
+        return true;
+    }
+    let what =
+        format!("the validation run needs {manifest}: apt-get install -y vulkan-validationlayers");
+    if std::env::var("CI").is_ok_and(|v| v == "true") {
+        panic!("CI=true but {what}: .ci/run must install it");
+    }
+    use std::io::Write as _;
+    let _ = writeln!(
+        std::io::stderr(),
+        "\n*** SKIPPED (not a pass): {what} ***\n"
+    );
+    false
+}
+
+/// The compute-stage Fail of SwiftShader's Vulkan driver (V1: no cube map edge handling in a
+/// compute shader, reports/vulkan/repro/compute-cube-edge).
+const COMPUTE_CUBE_EDGE: &str = "vulkan/cube/d32f/linear/lequal/seamless/stage=compute/seamless=always/wrap=edge/x0=0.9/edge_s/ref=0.5@vk";
+
+/// On vk:swiftshader the harness answers the compute-stage cube-edge case Fail; its reproducer
+/// (comp.glsl, one dispatch) builds, exits 1 and prints the harness's RGBA bit for bit, and run
+/// under the validation layer it says nothing and exits 1 with the same RGBA.
+#[test]
+fn a_compute_stage_fail_reproduces_on_swiftshader_under_the_validation_layer() {
+    if !installed_or_skip("swiftshader") || !validation_layer_or_skip() {
+        return;
+    }
+    let backend = "vk:swiftshader";
+    let test = COMPUTE_CUBE_EDGE;
+    let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
+    let fixtures = grid_fixture_file(&id);
+    let out = common::tmpdir("vk-repro-swiftshader-compute-fail");
+    let run_dir = out.join("run");
+    let r = common::run(&[
+        "--backend",
+        backend,
+        "--fixtures",
+        fixtures.to_str().unwrap(),
+        "--cases",
+        &format!("^{}$", regex::escape(&id)),
+        "--no-rerun",
+        "--full-report",
+        "--out",
+        run_dir.to_str().unwrap(),
+    ]);
+    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
+    let rec = results
+        .get(backend, test)
+        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    assert_eq!(rec.outcome, Outcome::Fail, "{:?}", rec.reason);
+    let harness = rec.observed.as_ref().expect("harness observed nothing").0;
+
+    // A Fail: `repro` writes the reproducer and REPORT.md without --allow-pass.
+    let dir = out.join("repro");
+    let rc = common::Run::of(
+        common::bin()
+            .args(["repro", "--backend", backend, "--case", test, "--fixtures"])
+            .arg(&fixtures)
+            .arg("--out")
+            .arg(&dir)
+            .output()
+            .unwrap(),
+    );
+    assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
+    for f in [
+        "repro.c",
+        "comp.glsl",
+        "build.sh",
+        "output.txt",
+        "REPORT.md",
+    ] {
+        assert!(dir.join(f).is_file(), "no {f}: {}{}", rc.stdout, rc.stderr);
+    }
+    for f in ["vert.glsl", "frag.glsl"] {
+        assert!(
+            !dir.join(f).exists(),
+            "{f} written for a compute-stage case"
+        );
+    }
+    let c = std::fs::read_to_string(dir.join("repro.c")).unwrap();
+    for want in [
+        "vkCmdDispatch(cmd, 1, 1, 1);",
+        "shader_module(\"comp.spv\")",
+    ] {
+        assert!(c.contains(want), "missing `{want}`");
+    }
+    assert!(!c.contains("vkCmdDraw("));
+
+    // On its own, as a driver developer runs it: exit 1, the harness's RGBA.
+    let (code, stdout, stderr) = build_sh(&dir);
+    assert_eq!(code, 1, "{stdout}{stderr}");
+    assert!(stdout.contains("verdict:   FAIL"), "{stdout}");
+    let observed = repro_observed(&stdout);
+    assert!(
+        same_rgba(harness, observed),
+        "harness observed {harness:?}, reproducer {observed:?}"
+    );
+
+    // Under the validation layer: no message, the same exit status and RGBA.
+    let o = Command::new("./repro")
+        .current_dir(&dir)
+        .env(
+            "VK_ICD_FILENAMES",
+            "/usr/lib/chromium/vk_swiftshader_icd.json",
+        )
+        .env("VK_INSTANCE_LAYERS", "VK_LAYER_KHRONOS_validation")
+        .output()
+        .unwrap();
+    let (vout, verr) = (
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    );
+    assert_eq!(o.status.code(), Some(1), "{vout}{verr}");
+    // The layer writes its messages to stdout, the loader its own to stderr: the run prints
+    // exactly what the plain run printed, and nothing on stderr but the loader's note that
+    // VK_INSTANCE_LAYERS added the layer.
+    assert_eq!(vout, stdout, "the validation run printed more: {verr}");
+    let messages: Vec<&str> = verr
+        .lines()
+        .filter(|l| !l.starts_with("(general message"))
+        .collect();
+    assert!(messages.is_empty(), "validation messages: {messages:#?}");
+    assert!(same_rgba(observed, repro_observed(&vout)), "{vout}");
+}
+
+/// On vk:lavapipe, where every compute-stage case passes, the same case's reproducer passes with
+/// the harness's RGBA (`repro --allow-pass`), and exits 1 with an accepted set nothing lies in.
+#[test]
+fn a_compute_stage_case_reproduces_as_a_pass_on_lavapipe() {
+    let Some(dir) = check("lavapipe", COMPUTE_CUBE_EDGE) else {
+        return;
+    };
+    let c = std::fs::read_to_string(dir.join("repro.c")).unwrap();
+    assert!(c.contains("vkCmdDispatch(cmd, 1, 1, 1);"));
+    let comp = std::fs::read_to_string(dir.join("comp.glsl")).unwrap();
+    assert!(comp.contains("imageStore(u_out, u_at, r)"), "{comp}");
 }

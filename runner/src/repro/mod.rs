@@ -349,7 +349,7 @@ pub fn backend_packages(backend: Backend) -> (String, String) {
 pub fn build_line(s: &Subject) -> String {
     match s.backend {
         Backend::Gl(b) => csource::build_line(b, s.lib_dir.as_deref()),
-        Backend::Vk(_) => vulkan::BUILD_LINE.to_string(),
+        Backend::Vk(_) => vulkan::build_line(s).to_string(),
         Backend::Webgpu(_) => webgpu::BUILD_LINE.to_string(),
         Backend::Webgl(_) => webgl::BUILD_LINE.to_string(),
     }

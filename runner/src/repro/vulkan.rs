@@ -1,19 +1,35 @@
 //! The Vulkan reproducer of a `vk:*` test: `repro.c`, a C program against `<vulkan/vulkan.h>` that
-//! does for one case what the Vulkan worker (shadowcheck-vk) does for it, and `vert.glsl` /
-//! `frag.glsl`, the worker's shaders for the case's lookup, which build.sh compiles to SPIR-V with
-//! glslangValidator (Vulkan 1.3 "Shader Modules" takes SPIR-V only).
+//! does for one case what the Vulkan worker (shadowcheck-vk) does for it, and the worker's shaders
+//! for the case's lookup, which build.sh compiles to SPIR-V with glslangValidator (Vulkan 1.3
+//! "Shader Modules" takes SPIR-V only): `vert.glsl` / `frag.glsl` for a fragment-stage lookup
+//! (`shaders::vulkan::glsl`), `comp.glsl` for a compute-stage one (`shaders::vulkan::compute_glsl`).
 //!
 //! What it mirrors, and from where: the instance and device (`vk/src/device/`: API version
 //! min(loader, 1.3), the same optional features enabled where the device has them), the image
 //! (`texture::shape`: image type, extent, levels, layers, CUBE_COMPATIBLE; the format of
 //! `device::vk_format`) with the bytes `texture::depth_bytes` / `texture::stencil_bytes` give
 //! (uploaded with vkCmdCopyBufferToImage, "Copying Data Between Buffers and Images"), the image
-//! view and sampler of `sampler::state` ("Image Views", "Samplers"), the pipeline of the plan's
-//! `vk` shaders (`shaders::vulkan::glsl`), one descriptor set, the push constant `u_base` = 0 and
-//! the six vertices of slot 0 exactly as `vk/src/draw.rs` stages them. One difference: the worker
-//! draws into a 256x256 image (slot k a 2x2 quad), the reproducer into a 2x2 one (the shaders
-//! written for a framebuffer 2 pixels wide: one quad per row); slot 0's quad and its pixel (0, 0)
-//! are the same pixels either way.
+//! view and sampler of `sampler::state` ("Image Views", "Samplers"), one descriptor set; this part
+//! is `vk_common.c`, the same for both stages. Then, by the lookup's stage:
+//!
+//! - fragment (`vk_fragment.c`): the graphics pipeline of the plan's shaders, the push constant
+//!   `u_base` = 0 and the six vertices of slot 0 exactly as `vk/src/draw.rs` stages them, drawn in
+//!   a render pass that clears the colour target to -1;
+//! - compute (`vk_compute.c`): the compute pipeline of `compute_glsl` (`vk/src/compute.rs`), the
+//!   descriptor set with the sampler at binding 0 and the result image as a storage image at
+//!   binding 1 (GENERAL layout), the push constants `compute::push_constants(plan, 0)` gives (P, x,
+//!   padding, pixel (0, 0): written as those bytes' fields), one vkCmdDispatch(1, 1, 1), and the
+//!   barriers of `record_dispatches` around it. The worker clears the result image in the render
+//!   pass of its draws before the dispatches; the reproducer, which draws nothing, clears it with
+//!   vkCmdClearColorImage (the same -1 in every texel, made visible to the compute shader by a
+//!   barrier). It records no draw before the dispatch on purpose: on SwiftShader a dispatch after
+//!   a draw that sampled the same image gives a different (correct) result
+//!   (reports/vulkan/repro/compute-cube-edge).
+//!
+//! Both read back pixel (0, 0) and judge it. One difference from the worker: it renders or stores
+//! into a 256x256 image (slot k a 2x2 quad), the reproducer into a 2x2 one (the shaders written
+//! for a framebuffer 2 pixels wide: one quad per row); slot 0's quad and its pixel (0, 0) are the
+//! same pixels either way.
 //!
 //! What the device must have (a format feature, `imageCubeArray`, a border colour only
 //! VK_EXT_custom_border_color gives, ...) is checked by the program at run time: the generator
@@ -22,8 +38,9 @@
 
 use super::{csource, io, ReproError, Subject, REPRO_C};
 use ash::vk;
-use shadowcheck_model::{ApiPath, Format};
+use shadowcheck_model::{ApiPath, Format, Stage};
 use shadowcheck_plan::layout::CORNERS;
+use shadowcheck_plan::shaders::vulkan::COMPUTE_PUSH_BYTES;
 use shadowcheck_plan::shaders::{self, PARAM_ATTRIBS, PARAM_FLOATS};
 use shadowcheck_plan::{paths, GatherCall, LookupForm, Plan, SamplerKind};
 use shadowcheck_vk::device::{vk_format, FormatInfo, Support};
@@ -33,12 +50,26 @@ use shadowcheck_vk::Driver;
 use std::fmt::Write;
 use std::path::Path;
 
-/// The shader sources written beside repro.c.
+/// The shader sources written beside repro.c: a fragment-stage lookup's two, a compute-stage
+/// lookup's one.
 pub const VERT_GLSL: &str = "vert.glsl";
 pub const FRAG_GLSL: &str = "frag.glsl";
+pub const COMP_GLSL: &str = "comp.glsl";
 
-/// The build command: the two shaders to SPIR-V, then the program.
+/// The build command of a fragment-stage lookup: the two shaders to SPIR-V, then the program.
 pub const BUILD_LINE: &str = "glslangValidator --quiet -V -S vert -o vert.spv vert.glsl && glslangValidator --quiet -V -S frag -o frag.spv frag.glsl && gcc -std=c99 -O1 -Wall -o repro repro.c -lvulkan -lm";
+
+/// The build command of a compute-stage lookup: the compute shader to SPIR-V, then the program.
+pub const COMPUTE_BUILD_LINE: &str = "glslangValidator --quiet -V -S comp -o comp.spv comp.glsl && gcc -std=c99 -O1 -Wall -o repro repro.c -lvulkan -lm";
+
+/// The build command of `s`'s reproducer.
+pub fn build_line(s: &Subject) -> &'static str {
+    if s.case.lookup.stage == Stage::Compute {
+        COMPUTE_BUILD_LINE
+    } else {
+        BUILD_LINE
+    }
+}
 
 /// The `key: value` lines the program prints about the device (`RunOutput::field`).
 pub const FIELDS: [&str; 3] = ["VK_DEVICE", "VK_API_VERSION", "VK_DRIVER"];
@@ -107,23 +138,40 @@ pub fn build_error(log: &str) -> ReproError {
     }
 }
 
-/// The three sources of a reproducer.
+/// The sources of a reproducer: the program and its shaders, `vert` and `frag` for a
+/// fragment-stage lookup, `comp` for a compute-stage one (the shaders the lookup does not use
+/// are empty and not written).
 pub struct Program {
     pub c: String,
     pub vert: String,
     pub frag: String,
+    pub comp: String,
 }
 
-/// Writes repro.c, vert.glsl, frag.glsl and build.sh into `dir` (created).
+impl Program {
+    /// The shader files to write beside repro.c, by name.
+    pub fn shaders(&self) -> Vec<(&'static str, &str)> {
+        [
+            (VERT_GLSL, self.vert.as_str()),
+            (FRAG_GLSL, self.frag.as_str()),
+            (COMP_GLSL, self.comp.as_str()),
+        ]
+        .into_iter()
+        .filter(|(_, text)| !text.is_empty())
+        .collect()
+    }
+}
+
+/// Writes repro.c, the shaders (vert.glsl and frag.glsl, or comp.glsl) and build.sh into `dir`
+/// (created).
 pub fn write_sources(s: &Subject, dir: &Path) -> Result<(), ReproError> {
     let p = program(s).map_err(ReproError::NotPlanned)?;
     std::fs::create_dir_all(dir).map_err(io(format!("creating {}", dir.display())))?;
-    for (name, text) in [
-        (REPRO_C, &p.c),
-        (VERT_GLSL, &p.vert),
-        (FRAG_GLSL, &p.frag),
-        (super::BUILD_SH, &super::build_sh(s)),
-    ] {
+    let build = super::build_sh(s);
+    let mut files = vec![(REPRO_C, p.c.as_str())];
+    files.extend(p.shaders());
+    files.push((super::BUILD_SH, build.as_str()));
+    for (name, text) in files {
         std::fs::write(dir.join(name), text).map_err(io(format!("writing {name}")))?;
     }
     Ok(())
@@ -151,9 +199,6 @@ pub fn program(s: &Subject) -> Result<Program, String> {
             s.api
         ));
     }
-    if s.case.lookup.stage == shadowcheck_model::Stage::Compute {
-        return Err("no Vulkan reproducer for a compute-stage lookup: the reproducer draws the fragment-stage program".into());
-    }
     // As the worker plans a job (`worker::plan_job`): the preferred order, no EXT_texture_shadow_lod.
     let plan = paths::plan_in(
         ApiPath::Vulkan,
@@ -174,23 +219,48 @@ pub fn program(s: &Subject) -> Result<Program, String> {
     let kind = paths::sampler_kind(&s.case);
     let state = sampler::state(&s.case, kind, &info, &full_support())?;
     let shape = texture::shape(&s.case)?;
-    let (vert, frag) = shaders::vulkan::glsl(&plan.key, FB);
+    let compute = plan.key.stage == Stage::Compute;
     let run = format!("{} ./repro", env_words(driver(s)))
         .trim()
         .to_string();
+    let lookup = if compute {
+        "\n * comp.glsl is the worker's compute shader (build.sh compiles it to comp.spv), dispatched once\n * (one invocation) with slot 0's push constants; it stores its result at pixel (0, 0) of a 2x2\n * RGBA32F storage image cleared to -1"
+    } else {
+        " vert.glsl / frag.glsl are the worker's shaders (build.sh compiles them to\n * vert.spv / frag.spv), drawn as slot 0's 2x2 quad into a 2x2 RGBA32F image cleared to -1"
+    };
     let mut c = format!(
-        "/* shadowcheck reproducer: {test} on {backend}\n *\n * Build: {BUILD_LINE}\n * Run:   {run}\n *        (add VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation to run it under the validation layer)\n *\n * Generated by `shadowcheck repro`: what shadowcheck's Vulkan worker does for this test, with no\n * shadowcheck code. Device: the loader's (the driver VK_ICD_FILENAMES names; of several, a GPU\n * before a CPU, as the worker picks for vk:native), with the worker's features. Image: the texel bytes the worker copies, the same view and sampler.\n * Lookup: {how}; vert.glsl / frag.glsl are the worker's shaders (build.sh compiles them to\n * vert.spv / frag.spv), drawn as slot 0's 2x2 quad into a 2x2 RGBA32F image cleared to -1.\n * Prints the device, the expected result (spec value and accepted set, computed by shadowcheck's\n * oracle, written here as constants) and the observed RGBA of pixel (0, 0); exits 1 when the\n * observation is outside the accepted set, 0 when inside, 2 when setup fails or the device lacks\n * what the test needs.\n */\n#include <vulkan/vulkan.h>\n#include <math.h>\n#include <stdint.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n",
+        "/* shadowcheck reproducer: {test} on {backend}\n *\n * Build: {build}\n * Run:   {run}\n *        (add VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation to run it under the validation layer)\n *\n * Generated by `shadowcheck repro`: what shadowcheck's Vulkan worker does for this test, with no\n * shadowcheck code. Device: the loader's (the driver VK_ICD_FILENAMES names; of several, a GPU\n * before a CPU, as the worker picks for vk:native), with the worker's features. Image: the texel bytes the worker copies, the same view and sampler.\n * Lookup: {how};{lookup}.\n * Prints the device, the expected result (spec value and accepted set, computed by shadowcheck's\n * oracle, written here as constants) and the observed RGBA of pixel (0, 0); exits 1 when the\n * observation is outside the accepted set, 0 when inside, 2 when setup fails or the device lacks\n * what the test needs.\n */\n#include <vulkan/vulkan.h>\n#include <math.h>\n#include <stdint.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n",
         test = s.test(),
         backend = s.backend,
+        build = build_line(s),
         how = plan.note,
     );
     c += &csource::expectation(s);
     c += csource::VERDICT;
     c += &image_and_sampler(&shape, vkf, &state, kind, &plan);
     c += &texels(s, &shape, format)?;
+    if compute {
+        c += &push_constants(&plan)?;
+        c += MAIN;
+        c += COMPUTE_MAIN;
+        let comp = shaders::vulkan::compute_glsl(&plan.key);
+        return Ok(Program {
+            c,
+            vert: String::new(),
+            frag: String::new(),
+            comp,
+        });
+    }
+    let (vert, frag) = shaders::vulkan::glsl(&plan.key, FB);
     c += &vertices(&plan);
     c += MAIN;
-    Ok(Program { c, vert, frag })
+    c += FRAGMENT_MAIN;
+    Ok(Program {
+        c,
+        vert,
+        frag,
+        comp: String::new(),
+    })
 }
 
 fn driver(s: &Subject) -> Driver {
@@ -436,9 +506,48 @@ fn vertices(plan: &Plan) -> String {
     )
 }
 
-/// Device, target, pipeline, upload, draw, read-back, verdict: the fixed part of the program. A
-/// fragment of C, not a program of its own.
-const MAIN: &str = include_str!("vk_main.c");
+/// The push constants of slot 0's compute-stage lookup, exactly the bytes the worker pushes
+/// (`shadowcheck_vk::compute::push_constants(plan, 0)`, read back into their fields: P at offset
+/// 0, x at 16, 4 bytes of padding, the pixel at 24), and the result image's size.
+fn push_constants(plan: &Plan) -> Result<String, String> {
+    let b = shadowcheck_vk::compute::push_constants(plan, 0);
+    let word = |i: usize| -> Result<[u8; 4], String> {
+        b.get(i..i + 4)
+            .and_then(|w| w.try_into().ok())
+            .ok_or_else(|| {
+                format!(
+                    "the worker's push constants are {} bytes, not {COMPUTE_PUSH_BYTES}",
+                    b.len()
+                )
+            })
+    };
+    if b.len() != COMPUTE_PUSH_BYTES as usize {
+        return Err(format!(
+            "the worker's push constants are {} bytes, not {COMPUTE_PUSH_BYTES}",
+            b.len()
+        ));
+    }
+    let f = |i: usize| word(i).map(|w| csource::cf(f32::from_ne_bytes(w)));
+    let n = |i: usize| word(i).map(i32::from_ne_bytes);
+    let p = [f(0)?, f(4)?, f(8)?, f(12)?].join(", ");
+    let x = f(16)?;
+    let pad = u32::from_ne_bytes(word(20)?);
+    let (ax, ay) = (n(24)?, n(28)?);
+    Ok(format!(
+        "/* Slot 0's push constants, the bytes shadowcheck's worker pushes for it (vk/src/compute.rs\n * `push_constants`): comp.glsl's block `vec4 u_p; float u_x; ivec2 u_at;` at offsets 0, 16 and\n * 24 ({COMPUTE_PUSH_BYTES} bytes; 4 bytes of padding align the ivec2 to 8).\n * P = ({p}), x (LOD / bias / compare value) = {x},\n * the pixel slot 0's invocation stores at = ({ax}, {ay}). */\n#define FB {FB}\nstatic const struct {{\n    float u_p[4];\n    float u_x;\n    uint32_t padding;\n    int32_t u_at[2];\n}} PUSH = {{{{{p}}}, {x}, {pad}u, {{{ax}, {ay}}}}};\ntypedef char push_constants_are_{COMPUTE_PUSH_BYTES}_bytes[sizeof PUSH == {COMPUTE_PUSH_BYTES} ? 1 : -1];\n\n"
+    ))
+}
+
+/// Device, image, view, sampler, descriptor set, upload, read-back, verdict: the fixed part of
+/// the program that both stages share. A fragment of C, not a program of its own.
+const MAIN: &str = include_str!("vk_common.c");
+
+/// The fragment stage's target, graphics pipeline and commands (the draw of slot 0's quad).
+const FRAGMENT_MAIN: &str = include_str!("vk_fragment.c");
+
+/// The compute stage's result image, compute pipeline and commands (the dispatch of slot 0's
+/// lookup).
+const COMPUTE_MAIN: &str = include_str!("vk_compute.c");
 
 #[cfg(test)]
 #[path = "vulkan_tests.rs"]

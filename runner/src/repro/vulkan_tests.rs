@@ -180,14 +180,85 @@ fn a_vulkan_report_names_the_device_the_driver_and_its_packages() {
     assert!(!r.contains("GL_RENDERER"), "{r}");
 }
 
-/// Compute-stage lookups are on the GLSL 4.30 / GLSL ES 3.10 paths only: a case that asks for one
-/// on the Vulkan path gets the planner's reason, not a program (and no panic).
+/// A compute-stage lookup: comp.glsl is the worker's compute shader (`compute_glsl`), no vertex
+/// or fragment shader is written, build.sh compiles `-S comp`, and the program dispatches it with
+/// the worker's push constants of slot 0 into a storage image cleared by vkCmdClearColorImage
+/// (no render pass, no draw before the dispatch).
 #[test]
-fn a_compute_stage_case_is_refused_with_the_reason() {
+fn a_compute_stage_case_dispatches_the_workers_compute_shader() {
     let mut s = subject(Format::D16, Wrap::ClampToEdge, [0.0; 4]);
     s.case.lookup.stage = Stage::Compute;
-    let why = program(&s)
-        .err()
-        .expect("no program for a compute-stage case");
-    assert!(why.contains("stage `compute`"), "{why}");
+    let p = program(&s).unwrap();
+    let plan = paths::plan_in(
+        ApiPath::Vulkan,
+        &s.case,
+        &s.case.lookup,
+        LookupForm::Auto,
+        false,
+    )
+    .unwrap();
+    assert_eq!(p.comp, shaders::vulkan::compute_glsl(&plan.key));
+    assert!(p.comp.contains("imageStore(u_out, u_at, r)"), "{}", p.comp);
+    assert!(p.vert.is_empty() && p.frag.is_empty());
+    let names: Vec<&str> = p.shaders().iter().map(|(n, _)| *n).collect();
+    assert_eq!(names, [COMP_GLSL]);
+    assert_eq!(build_line(&s), COMPUTE_BUILD_LINE);
+    assert!(COMPUTE_BUILD_LINE.contains("-S comp -o comp.spv comp.glsl"));
+    for want in [
+        // P = (s, t, Dref, 1), x = 0, padding, pixel (0, 0): compute::push_constants(plan, 0).
+        "} PUSH = {{0.75f, 0.25f, 0.5f, 1.0f}, 0.0f, 0u, {0, 0}};",
+        "typedef char push_constants_are_32_bytes[sizeof PUSH == 32 ? 1 : -1];",
+        "#define FB 2",
+        "Build: glslangValidator --quiet -V -S comp -o comp.spv comp.glsl && gcc",
+        "comp.glsl is the worker's compute shader",
+        "ci.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;",
+        "bindings[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;",
+        "VkPushConstantRange pc = {VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof PUSH};",
+        "ci.stage.module = shader_module(\"comp.spv\");",
+        "VkDescriptorSet set = make_set(set_layout, result_view);",
+        "record_upload(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);",
+        "vkCmdClearColorImage(cmd, result, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1, &b.subresourceRange);",
+        "b.newLayout = VK_IMAGE_LAYOUT_GENERAL;",
+        "vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof PUSH, &PUSH);",
+        "vkCmdDispatch(cmd, 1, 1, 1);",
+        "b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;",
+        "record_read_back(cmd, result, readback.buffer);",
+        "static const double ACCEPTED[][2] = {{0.0, 0.0}};",
+        "return judge(px);",
+    ] {
+        assert!(p.c.contains(want), "missing `{want}` in\n{}", p.c);
+    }
+    // The clear, then the dispatch; nothing of the fragment path.
+    let at = |w: &str| p.c.find(w).unwrap_or(usize::MAX);
+    assert!(at("vkCmdClearColorImage(") < at("vkCmdDispatch("));
+    for absent in [
+        "vkCmdDraw(",
+        "vkCmdBeginRenderPass(",
+        "VERTICES",
+        "vert.spv",
+        "frag.spv",
+    ] {
+        assert!(!p.c.contains(absent), "`{absent}` in\n{}", p.c);
+    }
+}
+
+/// The fragment path keeps its program: a render pass and a draw, no dispatch.
+#[test]
+fn a_fragment_stage_case_draws_and_dispatches_nothing() {
+    let s = subject(Format::D16, Wrap::ClampToEdge, [0.0; 4]);
+    let p = program(&s).unwrap();
+    assert!(p.comp.is_empty());
+    assert_eq!(build_line(&s), BUILD_LINE);
+    let names: Vec<&str> = p.shaders().iter().map(|(n, _)| *n).collect();
+    assert_eq!(names, [VERT_GLSL, FRAG_GLSL]);
+    for want in [
+        "vkCmdDraw(cmd, 6, 1, 0, 0);",
+        "record_upload(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);",
+        "VkDescriptorSet set = make_set(set_layout, VK_NULL_HANDLE);",
+    ] {
+        assert!(p.c.contains(want), "missing `{want}` in\n{}", p.c);
+    }
+    for absent in ["vkCmdDispatch(", "comp.spv", "PUSH"] {
+        assert!(!p.c.contains(absent), "`{absent}` in\n{}", p.c);
+    }
 }
