@@ -11,6 +11,17 @@
 //! k a 2x2 quad), the reproducer into a 2x2 one (the module written for a framebuffer 2 pixels
 //! wide); slot 0's quad and its pixel (0, 0) are the same pixels either way.
 //!
+//! A compute-stage case (`lookup.stage` `compute`) is dispatched as the worker dispatches it
+//! (`webgpu/src/page.js`): the same texture, view and sampler; the worker's compute module
+//! (`wgsl::module` of the compute key, entry point `cs`; its text does not depend on the image
+//! width) with the buffers of `wgsl::COMPUTE_BINDINGS` (slot 0's instance values as the
+//! read-only storage buffer `lookups`, the first slot 0 in a uniform `first` entry of
+//! minUniformBufferOffsetAlignment bytes, `results` one vec4f); a render pass that only clears
+//! the target (the worker's, which draws only fragment-stage lookups), then one compute pass with
+//! one dispatch of one workgroup, and `results[0]` copied over pixel (0, 0) of the read-back.
+//! No draw samples the texture before the dispatch: on SwiftShader one would change the result
+//! (reports/README.md "V1").
+//!
 //! `build.sh` loads the page in headless Chromium with its console logged to a file, waits for the
 //! page's last line (`shadowcheck-repro: end`; at most 60 s), prints the page's lines and exits 1
 //! when the page's verdict is FAIL, 0 for pass or warn, 2 when the page printed no verdict (setup
