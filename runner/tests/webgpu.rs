@@ -433,6 +433,60 @@ fn the_standalone_page_reproduces_the_harness_observation() {
     }
 }
 
+/// The compute-stage cube-edge case (reports/README.md "V1": SwiftShader's compute shaders have
+/// no cube map edge handling until a draw has sampled the image; a Flake in full runs, order
+/// dependent, deterministic alone): run alone in the harness, then `repro`. The generated page
+/// dispatches the worker's compute module (no draw of the lookup before the dispatch), prints the
+/// RGBA the harness observed bit for bit and gives the harness's verdict: a Fail (REPORT.md,
+/// build.sh exit 1), or a pass where the harness passed it in this run. Without Chromium:
+/// skipped loudly, failed under CI=true.
+#[test]
+fn the_compute_stage_page_reproduces_the_harness_observation() {
+    if !webgpu_or_skip("the webgpu:chromium compute-stage repro test") {
+        return;
+    }
+    use shadowcheck_runner::records::Outcome;
+    let test = "webgpu/cube/d24/linear/lequal/seamless/stage=compute/seamless=always/wrap=edge/x0=0.9/edge_s/ref=0.5@wgsl";
+    let out = tmpdir("webgpu-repro-compute");
+    let (rec, rc, dir) = harness_then_repro("webgpu:chromium", test, &fixtures(), &out);
+    assert_eq!(rc.code, 0, "{}{}", rc.stdout, rc.stderr);
+    let page = std::fs::read_to_string(dir.join("repro.html")).unwrap();
+    assert!(
+        !page.contains("shadowcheck."),
+        "the page calls no shadowcheck code"
+    );
+    assert!(
+        page.contains("@compute @workgroup_size(1)")
+            && page.contains("const COMPUTE_BINDINGS = [[")
+    );
+    let harness = rec.observed.as_ref().expect("harness observed nothing").0;
+    let text = std::fs::read_to_string(dir.join("output.txt")).unwrap();
+    let observed = repro_observed(&text);
+    assert!(
+        harness
+            .iter()
+            .zip(observed)
+            .all(|(h, o)| (*h as f32).to_bits() == (o as f32).to_bits()),
+        "harness observed {harness:?}, page {observed:?}\n{text}"
+    );
+    let (verdict, code) = match rec.outcome {
+        Outcome::Fail => ("verdict:   FAIL", 1),
+        Outcome::Pass => ("verdict:   pass", 0),
+        o => panic!("{test}: the harness says {o:?} ({:?})", rec.reason),
+    };
+    assert!(text.contains(verdict), "{text}");
+    assert_eq!(dir.join("REPORT.md").is_file(), code == 1);
+    // On its own, as a driver developer runs it: the same verdict as exit status.
+    let o = std::process::Command::new("sh")
+        .arg(dir.join("build.sh"))
+        .output()
+        .unwrap();
+    let s = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(code), "{s}");
+    assert!(s.contains(verdict), "{s}");
+    let _ = std::fs::remove_dir_all(&out);
+}
+
 /// The observed RGBA of every result in a `--full-report` run's results.jsonl, by test name.
 fn observed(dir: &std::path::Path) -> BTreeMap<String, Vec<f64>> {
     std::fs::read_to_string(dir.join("results.jsonl"))
