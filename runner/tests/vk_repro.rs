@@ -13,7 +13,7 @@
 mod common;
 use common::{grid_fixture_file, repro_observed};
 
-use shadowcheck_runner::records::{read_results, Outcome, RESULTS_FILE};
+use shadowcheck_runner::records::Outcome;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -115,23 +115,7 @@ fn check(driver: &str, test: &str) -> Option<PathBuf> {
         .bytes()
         .fold(0u32, |h, b| h.wrapping_mul(31).wrapping_add(b as u32));
     let out = common::tmpdir(&format!("vk-repro-{driver}-{tag:08x}"));
-    let run_dir = out.join("run");
-    let r = common::run(&[
-        "--backend",
-        &backend,
-        "--fixtures",
-        fixtures.to_str().unwrap(),
-        "--cases",
-        &format!("^{}$", regex::escape(&id)),
-        "--no-rerun",
-        "--full-report",
-        "--out",
-        run_dir.to_str().unwrap(),
-    ]);
-    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
-    let rec = results
-        .get(&backend, test)
-        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    let rec = common::harness_record(&backend, test, &fixtures, &out);
     assert!(
         matches!(rec.outcome, Outcome::Pass | Outcome::Warn),
         "{test} on {backend}: {:?} {:?}",
@@ -392,23 +376,7 @@ fn a_compute_stage_fail_reproduces_on_swiftshader_under_the_validation_layer() {
     let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
     let fixtures = grid_fixture_file(&id);
     let out = common::tmpdir("vk-repro-swiftshader-compute-fail");
-    let run_dir = out.join("run");
-    let r = common::run(&[
-        "--backend",
-        backend,
-        "--fixtures",
-        fixtures.to_str().unwrap(),
-        "--cases",
-        &format!("^{}$", regex::escape(&id)),
-        "--no-rerun",
-        "--full-report",
-        "--out",
-        run_dir.to_str().unwrap(),
-    ]);
-    let results = read_results(&run_dir.join(RESULTS_FILE)).unwrap();
-    let rec = results
-        .get(backend, test)
-        .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr));
+    let rec = common::harness_record(backend, test, &fixtures, &out);
     assert_eq!(rec.outcome, Outcome::Fail, "{:?}", rec.reason);
     let harness = rec.observed.as_ref().expect("harness observed nothing").0;
 

@@ -290,15 +290,14 @@ pub fn repro_observed(stdout: &str) -> [f64; 4] {
 }
 
 /// Runs `test` (`<case id>@<api>`) alone on `backend` in the harness (no re-run, full records) into
-/// `out/run`, then `shadowcheck repro --allow-pass` for it into `out/repro`: the harness's record
-/// of the test, `repro`'s own run, and the reproducer's directory. Panics, naming the test, when
-/// the harness has no record of it.
-pub fn harness_then_repro(
+/// `out/run`: the harness's record of the test. Panics, naming the test, when the harness has no
+/// record of it.
+pub fn harness_record(
     backend: &str,
     test: &str,
     fixtures: &Path,
     out: &Path,
-) -> (shadowcheck_runner::records::TestResult, Run, PathBuf) {
+) -> shadowcheck_runner::records::TestResult {
     let (id, _) = shadowcheck_runner::repro::parse_test_id(test).unwrap();
     let run_dir = out.join("run");
     let r = run(&[
@@ -317,10 +316,21 @@ pub fn harness_then_repro(
         &run_dir.join(shadowcheck_runner::records::RESULTS_FILE),
     )
     .unwrap();
-    let rec = results
+    results
         .get(backend, test)
         .unwrap_or_else(|| panic!("{test} not in the run's results: {}", r.stderr))
-        .clone();
+        .clone()
+}
+
+/// [`harness_record`], then `shadowcheck repro --allow-pass` for the test into `out/repro`: the
+/// harness's record of the test, `repro`'s own run, and the reproducer's directory.
+pub fn harness_then_repro(
+    backend: &str,
+    test: &str,
+    fixtures: &Path,
+    out: &Path,
+) -> (shadowcheck_runner::records::TestResult, Run, PathBuf) {
+    let rec = harness_record(backend, test, fixtures, out);
     let dir = out.join("repro");
     let rc = Run::of(
         bin()
