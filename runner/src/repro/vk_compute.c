@@ -9,30 +9,10 @@ static VkImage result;
 static VkImageView result_view;
 
 static void make_result(void) {
-    VkImageCreateInfo ci = {VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    ci.imageType = VK_IMAGE_TYPE_2D;
-    ci.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-    ci.extent.width = FB;
-    ci.extent.height = FB;
-    ci.extent.depth = 1;
-    ci.mipLevels = 1;
-    ci.arrayLayers = 1;
-    ci.samples = VK_SAMPLE_COUNT_1_BIT;
-    ci.tiling = VK_IMAGE_TILING_OPTIMAL;
-    ci.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     VkFormatProperties fp;
-    vkGetPhysicalDeviceFormatProperties(physical, ci.format, &fp);
+    vkGetPhysicalDeviceFormatProperties(physical, VK_FORMAT_R32G32B32A32_SFLOAT, &fp);
     if (!(fp.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT)) lacks("STORAGE_IMAGE on VK_FORMAT_R32G32B32A32_SFLOAT");
-    CHECK(vkCreateImage(device, &ci, NULL, &result));
-    bind_image(result);
-    VkImageViewCreateInfo vci = {VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    vci.image = result;
-    vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    vci.format = ci.format;
-    vci.subresourceRange.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
-    vci.subresourceRange.levelCount = 1;
-    vci.subresourceRange.layerCount = 1;
-    CHECK(vkCreateImageView(device, &vci, NULL, &result_view));
+    make_rgba32f(VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, &result, &result_view);
 }
 
 /* The worker's descriptor set layout (vk/src/pipeline.rs `Programs::new`): binding 0 the combined

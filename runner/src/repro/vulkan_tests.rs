@@ -211,7 +211,7 @@ fn a_compute_stage_case_dispatches_the_workers_compute_shader() {
         "#define FB 2",
         "Build: glslangValidator --quiet -V -S comp -o comp.spv comp.glsl && gcc",
         "comp.glsl is the worker's compute shader",
-        "ci.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;",
+        "make_rgba32f(VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, &result, &result_view);",
         "bindings[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;",
         "VkPushConstantRange pc = {VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof PUSH};",
         "ci.stage.module = shader_module(\"comp.spv\");",

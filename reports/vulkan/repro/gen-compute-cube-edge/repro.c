@@ -279,6 +279,32 @@ static void bind_image(VkImage image) {
     CHECK(vkBindImageMemory(device, image, allocate(req, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT), 0));
 }
 
+/* The result image of both stages: FB x FB RGBA32F (every result exact), with `usage`, in device
+ * memory, and its 2D colour view, as vk/src/pipeline.rs makes it. */
+static void make_rgba32f(VkImageUsageFlags usage, VkImage *image, VkImageView *view) {
+    VkImageCreateInfo ci = {VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    ci.imageType = VK_IMAGE_TYPE_2D;
+    ci.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    ci.extent.width = FB;
+    ci.extent.height = FB;
+    ci.extent.depth = 1;
+    ci.mipLevels = 1;
+    ci.arrayLayers = 1;
+    ci.samples = VK_SAMPLE_COUNT_1_BIT;
+    ci.tiling = VK_IMAGE_TILING_OPTIMAL;
+    ci.usage = usage;
+    CHECK(vkCreateImage(device, &ci, NULL, image));
+    bind_image(*image);
+    VkImageViewCreateInfo vci = {VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    vci.image = *image;
+    vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    vci.format = ci.format;
+    vci.subresourceRange.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+    vci.subresourceRange.levelCount = 1;
+    vci.subresourceRange.layerCount = 1;
+    CHECK(vkCreateImageView(device, &vci, NULL, view));
+}
+
 /* The rank of a device type (the worker's, for vk:native): a real GPU first, a CPU last. With
  * VK_ICD_FILENAMES naming one driver there is one device. */
 static int rank(VkPhysicalDeviceType t) {
@@ -624,30 +650,10 @@ static VkImage result;
 static VkImageView result_view;
 
 static void make_result(void) {
-    VkImageCreateInfo ci = {VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    ci.imageType = VK_IMAGE_TYPE_2D;
-    ci.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-    ci.extent.width = FB;
-    ci.extent.height = FB;
-    ci.extent.depth = 1;
-    ci.mipLevels = 1;
-    ci.arrayLayers = 1;
-    ci.samples = VK_SAMPLE_COUNT_1_BIT;
-    ci.tiling = VK_IMAGE_TILING_OPTIMAL;
-    ci.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     VkFormatProperties fp;
-    vkGetPhysicalDeviceFormatProperties(physical, ci.format, &fp);
+    vkGetPhysicalDeviceFormatProperties(physical, VK_FORMAT_R32G32B32A32_SFLOAT, &fp);
     if (!(fp.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT)) lacks("STORAGE_IMAGE on VK_FORMAT_R32G32B32A32_SFLOAT");
-    CHECK(vkCreateImage(device, &ci, NULL, &result));
-    bind_image(result);
-    VkImageViewCreateInfo vci = {VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    vci.image = result;
-    vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    vci.format = ci.format;
-    vci.subresourceRange.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
-    vci.subresourceRange.levelCount = 1;
-    vci.subresourceRange.layerCount = 1;
-    CHECK(vkCreateImageView(device, &vci, NULL, &result_view));
+    make_rgba32f(VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, &result, &result_view);
 }
 
 /* The worker's descriptor set layout (vk/src/pipeline.rs `Programs::new`): binding 0 the combined
